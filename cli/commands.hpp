@@ -1,0 +1,11 @@
+#pragma once
+// Each subcommand family registers itself on the top-level app; main.cpp calls these in order.
+namespace CLI {
+class App;
+}
+
+namespace fspm::cli {
+
+void add_tree_commands(CLI::App& app);
+
+}  // namespace fspm::cli

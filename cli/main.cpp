@@ -1,0 +1,42 @@
+// fspm: the command line. Exit codes: 0 success, 1 user error (one clear message on stderr),
+// 2 internal error.
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
+#include "fspm/error.hpp"
+
+int main(int argc, char** argv) {
+  // Logs and progress go to stderr so stdout stays machine-readable.
+  spdlog::set_default_logger(spdlog::stderr_color_mt("fspm"));
+  spdlog::set_pattern("%^[%l]%$ %v");
+
+  CLI::App app{"fspm: functional-structural plant modelling", "fspm"};
+  app.set_version_flag("--version", std::string("fspm ") + FSPM_VERSION);
+  app.require_subcommand(1);
+  int verbose = 0;
+  bool quiet = false;
+  app.add_flag("-v,--verbose", verbose, "More log output on stderr (repeat for more)");
+  app.add_flag("-q,--quiet", quiet, "Only warnings and errors on stderr");
+  app.parse_complete_callback([&] { fspm::cli::set_verbosity(quiet ? 0 : (verbose > 0 ? 2 : 1)); });
+
+  fspm::cli::add_tree_commands(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 1;
+  } catch (const fspm::Error& e) {
+    std::cerr << "fspm: error: " << e.what() << '\n';
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "fspm: internal error: " << e.what() << '\n';
+    return 2;
+  }
+  return 0;
+}

@@ -1,0 +1,92 @@
+// fspm tree info | convert: inspect and convert tree graph files.
+#include <CLI/CLI.hpp>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
+#include "fspm/tree_file.hpp"
+#include "fspm/tree_summary.hpp"
+
+namespace fspm::cli {
+namespace {
+
+struct InfoOptions {
+  std::string file;
+  std::string format;
+  bool json = false;
+};
+
+struct ConvertOptions {
+  std::string in;
+  std::string out;
+  std::string from;
+  std::string to;
+};
+
+nlohmann::json summary_json(const std::string& file, const TreeGraph& tree) {
+  const TreeSummary s = summarize(tree);
+  return {{"file", file},
+          {"nodes", s.nodes},
+          {"internodes", s.internodes},
+          {"leaves", s.leaves},
+          {"flowers", s.flowers},
+          {"buds", s.buds},
+          {"tips", s.tips},
+          {"max_order", s.max_order},
+          {"max_depth", s.max_depth},
+          {"height", s.height_m},
+          {"total_length", s.total_length_m},
+          {"bbox_min", {s.bbox_min.x(), s.bbox_min.y(), s.bbox_min.z()}},
+          {"bbox_max", {s.bbox_max.x(), s.bbox_max.y(), s.bbox_max.z()}},
+          {"attributes", tree.attribute_names()}};
+}
+
+void run_info(const InfoOptions& o) {
+  const TreeGraph tree = read_tree_file(o.file, o.format);
+  const nlohmann::json j = summary_json(o.file, tree);
+  if (o.json) {
+    print_json(j);
+    return;
+  }
+  std::cout << o.file << '\n';
+  for (const char* key : {"nodes", "internodes", "leaves", "flowers", "buds", "tips", "max_order",
+                          "max_depth", "height", "total_length"}) {
+    std::cout << "  " << key << ": " << j[key].dump() << '\n';
+  }
+  std::cout << "  attributes: " << j["attributes"].dump() << '\n';
+}
+
+void run_convert(const ConvertOptions& o) {
+  const TreeGraph tree = read_tree_file(o.in, o.from);
+  write_tree_file(tree, o.out, o.to);
+  if (verbosity() > 0) {
+    std::cerr << "wrote " << o.out << " (" << tree.size() << " nodes)\n";
+  }
+}
+
+}  // namespace
+
+void add_tree_commands(CLI::App& app) {
+  CLI::App* tree = app.add_subcommand("tree", "Inspect and convert tree graph files");
+  tree->require_subcommand(1);
+  const std::string formats = "tree, treeb, nwk or mtg (default: from the extension)";
+
+  auto info = std::make_shared<InfoOptions>();
+  CLI::App* i = tree->add_subcommand("info", "Print the summary of a tree file");
+  i->add_option("FILE", info->file, "Tree file (.tree, .treeb, .nwk)")->required();
+  i->add_option("--format", info->format, "Input format: " + formats);
+  i->add_flag("--json", info->json, "Machine-readable JSON on stdout");
+  i->callback([info] { run_info(*info); });
+
+  auto conv = std::make_shared<ConvertOptions>();
+  CLI::App* c = tree->add_subcommand("convert", "Convert a tree file to another format");
+  c->add_option("IN", conv->in, "Input tree file")->required();
+  c->add_option("OUT", conv->out, "Output tree file (.tree, .treeb, .nwk, .mtg)")->required();
+  c->add_option("--from", conv->from, "Input format: " + formats);
+  c->add_option("--format,--to", conv->to, "Output format: " + formats);
+  c->callback([conv] { run_convert(*conv); });
+}
+
+}  // namespace fspm::cli

@@ -1,0 +1,42 @@
+#include "fspm/atomic_file.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+#include "fspm/error.hpp"
+
+namespace fspm {
+
+void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,
+                           bool binary) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  if (target.filename().empty()) throw IoError("output path names no file", path);
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) {
+    throw IoError("cannot write: directory '" + dir.string() + "' does not exist", path);
+  }
+  // A random suffix keeps concurrent writers (threads, MPI ranks) of the same target apart.
+  std::random_device rd;
+  const fs::path tmp =
+      dir / ("." + target.filename().string() + ".tmp" + std::to_string(rd() % 1000000));
+  try {
+    {
+      std::ofstream out(tmp, binary ? std::ios::binary | std::ios::trunc : std::ios::trunc);
+      if (!out) throw IoError("cannot open for writing (permission denied?)", path);
+      out.exceptions(std::ios::badbit);
+      write(out);
+      out.flush();
+      if (!out) throw IoError("write failed (disk full?)", path);
+    }
+    fs::rename(tmp, target, ec);
+    if (ec) throw IoError("cannot replace the file: " + ec.message(), path);
+  } catch (...) {
+    fs::remove(tmp, ec);
+    throw;
+  }
+}
+
+}  // namespace fspm

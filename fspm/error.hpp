@@ -1,0 +1,46 @@
+#pragma once
+// Errors raised for user mistakes (bad files, bad parameters). The library never exits or aborts;
+// the CLI turns these into one clear message and exit code 1, Python into exceptions.
+#include <stdexcept>
+#include <string>
+
+namespace fspm {
+
+// Base of every user-facing error. Carries where the problem is (file, line, column: 0 = unknown)
+// and what was expected, so a message can point at the exact spot.
+class Error : public std::runtime_error {
+ public:
+  explicit Error(const std::string& message, std::string file = {}, int line = 0, int column = 0);
+
+  const std::string& file() const { return file_; }
+  int line() const { return line_; }
+  int column() const { return column_; }
+  // The bare message, without the "file:line:column: " prefix that what() carries.
+  const std::string& message() const { return message_; }
+
+ private:
+  std::string message_;
+  std::string file_;
+  int line_;
+  int column_;
+};
+
+// A malformed input text (tree file, Newick string, grammar, TOML, CSV ...).
+class ParseError : public Error {
+ public:
+  using Error::Error;
+};
+
+// A file that cannot be opened, read or written.
+class IoError : public Error {
+ public:
+  using Error::Error;
+};
+
+// A parameter outside its valid range, an unknown name, an impossible request.
+class ValueError : public Error {
+ public:
+  using Error::Error;
+};
+
+}  // namespace fspm

@@ -1,0 +1,89 @@
+#include "fspm/tree_file.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "fspm/atomic_file.hpp"
+#include "fspm/binary_tree_format.hpp"
+#include "fspm/error.hpp"
+#include "fspm/mtg_format.hpp"
+#include "fspm/newick_format.hpp"
+#include "fspm/text_tree_format.hpp"
+
+namespace fspm {
+
+TreeFormat tree_format_for(const std::string& path, std::string_view name) {
+  std::string key(name);
+  if (key.empty()) {
+    key = std::filesystem::path(path).extension().string();
+    if (!key.empty() && key.front() == '.') key.erase(0, 1);
+  }
+  if (key == "tree" || key == "text") return TreeFormat::kText;
+  if (key == "treeb" || key == "binary") return TreeFormat::kBinary;
+  if (key == "nwk" || key == "newick") return TreeFormat::kNewick;
+  if (key == "mtg") return TreeFormat::kMtg;
+  throw ValueError("unknown tree format '" + key +
+                       "': expected .tree (text), .treeb (binary), .nwk (Newick) or .mtg",
+                   path);
+}
+
+std::string_view tree_format_name(TreeFormat format) {
+  switch (format) {
+    case TreeFormat::kText:
+      return "tree";
+    case TreeFormat::kBinary:
+      return "treeb";
+    case TreeFormat::kNewick:
+      return "nwk";
+    case TreeFormat::kMtg:
+      return "mtg";
+  }
+  return "tree";
+}
+
+TreeGraph read_tree_file(const std::string& path, std::string_view format) {
+  const TreeFormat f = tree_format_for(path, format);
+  if (f == TreeFormat::kMtg) {
+    throw ValueError("MTG is an export format: fspm writes .mtg files but does not read them",
+                     path);
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError("cannot open the file for reading (does it exist?)", path);
+  switch (f) {
+    case TreeFormat::kText:
+      return read_tree_text(in, path);
+    case TreeFormat::kBinary:
+      return read_tree_binary(in, path);
+    default: {
+      std::ostringstream text;
+      text << in.rdbuf();
+      return parse_newick(text.str(), path);
+    }
+  }
+}
+
+void write_tree_file(const TreeGraph& tree, const std::string& path, std::string_view format) {
+  const TreeFormat f = tree_format_for(path, format);
+  write_file_atomically(
+      path,
+      [&](std::ostream& out) {
+        switch (f) {
+          case TreeFormat::kText:
+            write_tree_text(tree, out);
+            break;
+          case TreeFormat::kBinary:
+            write_tree_binary(tree, out);
+            break;
+          case TreeFormat::kNewick:
+            out << to_newick(tree) << '\n';
+            break;
+          case TreeFormat::kMtg:
+            write_mtg(tree, out);
+            break;
+        }
+      },
+      f == TreeFormat::kBinary);
+}
+
+}  // namespace fspm

@@ -1,0 +1,263 @@
+#include "fspm/tree_graph.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cstring>
+
+#include "fspm/error.hpp"
+
+namespace fspm {
+
+std::string_view organ_kind_name(OrganKind kind) {
+  switch (kind) {
+    case OrganKind::kInternode:
+      return "internode";
+    case OrganKind::kLeaf:
+      return "leaf";
+    case OrganKind::kFlower:
+      return "flower";
+    case OrganKind::kBud:
+      return "bud";
+  }
+  return "internode";
+}
+
+OrganKind organ_kind_from_name(std::string_view name) {
+  for (OrganKind k :
+       {OrganKind::kInternode, OrganKind::kLeaf, OrganKind::kFlower, OrganKind::kBud}) {
+    if (organ_kind_name(k) == name) return k;
+  }
+  throw ValueError("unknown organ kind '" + std::string(name) +
+                   "', expected internode, leaf, flower or bud");
+}
+
+NodeId TreeGraph::add_node(NodeId parent, const NodeData& d) {
+  const NodeId id = static_cast<NodeId>(size());
+  if (parent == kNoNode) {
+    if (!empty())
+      throw ValueError("a tree graph has one root; node " + std::to_string(id) +
+                       " was given no parent");
+  } else if (parent >= size()) {
+    throw ValueError("parent " + std::to_string(parent) + " of node " + std::to_string(id) +
+                     " does not exist");
+  }
+  if (size() >= kNoNode - 1) throw ValueError("tree graph is full (2^32 - 2 nodes)");
+  parent_.push_back(parent);
+  first_child_.push_back(kNoNode);
+  last_child_.push_back(kNoNode);
+  next_sibling_.push_back(kNoNode);
+  if (parent != kNoNode) {
+    if (last_child_[parent] == kNoNode) {
+      first_child_[parent] = id;
+    } else {
+      next_sibling_[last_child_[parent]] = id;
+    }
+    last_child_[parent] = id;
+  }
+  start_.push_back(d.start);
+  end_.push_back(d.end);
+  const Eigen::Vector3d seg = d.end - d.start;
+  const double seg_len = seg.norm();
+  length_.push_back(d.length < 0.0 ? seg_len : d.length);
+  if (d.direction.squaredNorm() > 0.0) {
+    direction_.push_back(d.direction);
+  } else if (seg_len > 0.0) {
+    direction_.push_back(seg / seg_len);
+  } else {
+    direction_.push_back(Eigen::Vector3d::UnitZ());
+  }
+  radius_.push_back(d.radius);
+  birth_time_.push_back(d.birth_time);
+  physiological_age_.push_back(d.physiological_age);
+  order_.push_back(d.order);
+  kind_.push_back(d.kind);
+  for (Attribute& a : attributes_) a.values.push_back(a.default_value);
+  return id;
+}
+
+void TreeGraph::reserve(std::size_t n) {
+  parent_.reserve(n);
+  first_child_.reserve(n);
+  last_child_.reserve(n);
+  next_sibling_.reserve(n);
+  start_.reserve(n);
+  end_.reserve(n);
+  direction_.reserve(n);
+  length_.reserve(n);
+  radius_.reserve(n);
+  birth_time_.reserve(n);
+  physiological_age_.reserve(n);
+  order_.reserve(n);
+  kind_.reserve(n);
+  for (Attribute& a : attributes_) a.values.reserve(n);
+}
+
+void TreeGraph::clear() { *this = TreeGraph(); }
+
+NodeData TreeGraph::data(NodeId n) const {
+  NodeData d;
+  d.start = start_[n];
+  d.end = end_[n];
+  d.direction = direction_[n];
+  d.length = length_[n];
+  d.radius = radius_[n];
+  d.birth_time = birth_time_[n];
+  d.physiological_age = physiological_age_[n];
+  d.order = order_[n];
+  d.kind = kind_[n];
+  return d;
+}
+
+std::size_t TreeGraph::child_count(NodeId n) const {
+  std::size_t c = 0;
+  for (NodeId m = first_child_[n]; m != kNoNode; m = next_sibling_[m]) ++c;
+  return c;
+}
+
+void TreeGraph::set_segment(NodeId n, const Eigen::Vector3d& s, const Eigen::Vector3d& e) {
+  start_[n] = s;
+  end_[n] = e;
+  const Eigen::Vector3d seg = e - s;
+  length_[n] = seg.norm();
+  if (length_[n] > 0.0) direction_[n] = seg / length_[n];
+}
+
+const TreeGraph::Attribute* TreeGraph::find_attribute(std::string_view name) const {
+  for (const Attribute& a : attributes_) {
+    if (a.name == name) return &a;
+  }
+  return nullptr;
+}
+
+void TreeGraph::add_attribute(const std::string& name, double default_value) {
+  if (name.empty()) throw ValueError("attribute names must not be empty");
+  if (find_attribute(name) != nullptr) return;
+  attributes_.push_back({name, default_value, std::vector<double>(size(), default_value)});
+}
+
+bool TreeGraph::has_attribute(std::string_view name) const {
+  return find_attribute(name) != nullptr;
+}
+
+std::span<double> TreeGraph::attribute(std::string_view name) {
+  const Attribute* a = find_attribute(name);
+  if (a == nullptr) throw ValueError("the tree has no attribute '" + std::string(name) + "'");
+  return const_cast<Attribute*>(a)->values;
+}
+
+std::span<const double> TreeGraph::attribute(std::string_view name) const {
+  const Attribute* a = find_attribute(name);
+  if (a == nullptr) throw ValueError("the tree has no attribute '" + std::string(name) + "'");
+  return a->values;
+}
+
+double TreeGraph::attribute_default(std::string_view name) const {
+  const Attribute* a = find_attribute(name);
+  if (a == nullptr) throw ValueError("the tree has no attribute '" + std::string(name) + "'");
+  return a->default_value;
+}
+
+void TreeGraph::remove_attribute(std::string_view name) {
+  std::erase_if(attributes_, [&](const Attribute& a) { return a.name == name; });
+}
+
+std::vector<std::string> TreeGraph::attribute_names() const {
+  std::vector<std::string> names;
+  names.reserve(attributes_.size());
+  for (const Attribute& a : attributes_) names.push_back(a.name);
+  return names;
+}
+
+std::vector<NodeId> TreeGraph::remove_subtree(NodeId n) {
+  if (n >= size())
+    throw ValueError("remove_subtree: node " + std::to_string(n) + " does not exist");
+  // Parents precede children, so one forward pass marks the whole subtree.
+  std::vector<char> removed(size(), 0);
+  removed[n] = 1;
+  for (NodeId i = n + 1; i < size(); ++i) {
+    if (parent_[i] != kNoNode && removed[parent_[i]]) removed[i] = 1;
+  }
+  std::vector<NodeId> remap(size(), kNoNode);
+  TreeGraph out;
+  out.reserve(size());
+  for (const Attribute& a : attributes_) out.add_attribute(a.name, a.default_value);
+  for (NodeId i = 0; i < size(); ++i) {
+    if (removed[i]) continue;
+    const NodeData d = data(i);
+    const NodeId p = parent_[i] == kNoNode ? kNoNode : remap[parent_[i]];
+    remap[i] = out.add_node(p, d);
+    for (std::size_t k = 0; k < attributes_.size(); ++k) {
+      out.attributes_[k].values[remap[i]] = attributes_[k].values[i];
+    }
+  }
+  *this = std::move(out);
+  return remap;
+}
+
+TreeGraph TreeGraph::copy_subtree(NodeId n) const {
+  if (n >= size()) throw ValueError("copy_subtree: node " + std::to_string(n) + " does not exist");
+  std::vector<NodeId> remap(size(), kNoNode);
+  TreeGraph out;
+  for (const Attribute& a : attributes_) out.add_attribute(a.name, a.default_value);
+  for (NodeId i = n; i < size(); ++i) {
+    NodeId p = kNoNode;
+    if (i != n) {
+      if (parent_[i] == kNoNode || remap[parent_[i]] == kNoNode) continue;
+      p = remap[parent_[i]];
+    }
+    const NodeData d = data(i);
+    remap[i] = out.add_node(p, d);
+    for (std::size_t k = 0; k < attributes_.size(); ++k) {
+      out.attributes_[k].values[remap[i]] = attributes_[k].values[i];
+    }
+  }
+  return out;
+}
+
+NodeId TreeGraph::append_subtree(NodeId parent, const TreeGraph& other) {
+  if (other.empty()) throw ValueError("append_subtree: the appended graph is empty");
+  for (const Attribute& a : other.attributes_) add_attribute(a.name, a.default_value);
+  const NodeId offset = static_cast<NodeId>(size());
+  for (NodeId i = 0; i < other.size(); ++i) {
+    const NodeData d = other.data(i);
+    const NodeId p = i == 0 ? parent : other.parent_[i] + offset;
+    const NodeId id = add_node(p, d);
+    for (const Attribute& a : other.attributes_) {
+      attribute(a.name)[id] = a.values[i];
+    }
+  }
+  return offset;
+}
+
+namespace {
+
+template <typename T>
+bool bitwise_equal(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() &&
+         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+}  // namespace
+
+bool TreeGraph::identical(const TreeGraph& o) const {
+  if (attributes_.size() != o.attributes_.size()) return false;
+  for (std::size_t k = 0; k < attributes_.size(); ++k) {
+    const Attribute& a = attributes_[k];
+    const Attribute& b = o.attributes_[k];
+    if (a.name != b.name ||
+        std::bit_cast<std::uint64_t>(a.default_value) !=
+            std::bit_cast<std::uint64_t>(b.default_value) ||
+        !bitwise_equal(a.values, b.values)) {
+      return false;
+    }
+  }
+  return bitwise_equal(parent_, o.parent_) && bitwise_equal(first_child_, o.first_child_) &&
+         bitwise_equal(next_sibling_, o.next_sibling_) && bitwise_equal(start_, o.start_) &&
+         bitwise_equal(end_, o.end_) && bitwise_equal(direction_, o.direction_) &&
+         bitwise_equal(length_, o.length_) && bitwise_equal(radius_, o.radius_) &&
+         bitwise_equal(birth_time_, o.birth_time_) &&
+         bitwise_equal(physiological_age_, o.physiological_age_) &&
+         bitwise_equal(order_, o.order_) && bitwise_equal(kind_, o.kind_);
+}
+
+}  // namespace fspm

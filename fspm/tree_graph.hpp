@@ -1,0 +1,177 @@
+#pragma once
+// TreeGraph: the explicit skeleton of a plant. One node per internode (metamer) or organ (leaf,
+// flower, bud), stored as a structure of arrays so a 10-million-node tree fits in memory:
+// 117 bytes per node without user attributes, plus 8 bytes per node per user attribute
+// (see docs/formats.md). Node ids are dense indices 0..size()-1, and a parent always has a smaller
+// id than its children, so a forward loop over ids is a valid pre-order-compatible topological
+// order (parents before children) and files can be streamed.
+#include <Eigen/Core>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fspm {
+
+using NodeId = std::uint32_t;
+inline constexpr NodeId kNoNode = std::numeric_limits<NodeId>::max();
+
+enum class OrganKind : std::uint8_t { kInternode = 0, kLeaf = 1, kFlower = 2, kBud = 3 };
+
+// "internode", "leaf", "flower", "bud".
+std::string_view organ_kind_name(OrganKind kind);
+// Inverse of organ_kind_name; throws ValueError on an unknown name.
+OrganKind organ_kind_from_name(std::string_view name);
+
+// What one node is made of when it is added. Length and direction are derived from start and end
+// when left at their defaults (length < 0, direction zero); give them explicitly for organs whose
+// extent is not their segment (a leaf attached at a point, a bud).
+struct NodeData {
+  Eigen::Vector3d start = Eigen::Vector3d::Zero();
+  Eigen::Vector3d end = Eigen::Vector3d::Zero();
+  Eigen::Vector3d direction = Eigen::Vector3d::Zero();
+  double length = -1.0;
+  double radius = 0.0;
+  double birth_time = 0.0;
+  std::uint16_t physiological_age = 1;
+  std::uint16_t order = 0;  // branching order: 0 on the trunk, +1 at each lateral branch
+  OrganKind kind = OrganKind::kInternode;
+};
+
+class TreeGraph {
+ public:
+  // Forward range over the children of one node, in the order they were added.
+  class ChildRange {
+   public:
+    class iterator {
+     public:
+      using iterator_category = std::forward_iterator_tag;
+      using value_type = NodeId;
+      using difference_type = std::ptrdiff_t;
+      using pointer = const NodeId*;
+      using reference = NodeId;
+      iterator() = default;
+      iterator(const TreeGraph* g, NodeId n) : g_(g), n_(n) {}
+      NodeId operator*() const { return n_; }
+      iterator& operator++() {
+        n_ = g_->next_sibling_[n_];
+        return *this;
+      }
+      iterator operator++(int) {
+        iterator old = *this;
+        ++*this;
+        return old;
+      }
+      bool operator==(const iterator& o) const { return n_ == o.n_; }
+
+     private:
+      const TreeGraph* g_ = nullptr;
+      NodeId n_ = kNoNode;
+    };
+    ChildRange(const TreeGraph* g, NodeId first) : g_(g), first_(first) {}
+    iterator begin() const { return {g_, first_}; }
+    iterator end() const { return {g_, kNoNode}; }
+    bool empty() const { return first_ == kNoNode; }
+
+   private:
+    const TreeGraph* g_;
+    NodeId first_;
+  };
+
+  TreeGraph() = default;
+
+  // Adds a node under `parent` (kNoNode for the root; a graph has exactly one root, id 0).
+  // Throws ValueError for an unknown parent or a second root.
+  NodeId add_node(NodeId parent, const NodeData& data);
+  void reserve(std::size_t nodes);
+  void clear();
+
+  std::size_t size() const { return parent_.size(); }
+  bool empty() const { return parent_.empty(); }
+  NodeId root() const { return empty() ? kNoNode : 0; }
+
+  NodeId parent(NodeId n) const { return parent_[n]; }
+  ChildRange children(NodeId n) const { return {this, first_child_[n]}; }
+  NodeId first_child(NodeId n) const { return first_child_[n]; }
+  NodeId next_sibling(NodeId n) const { return next_sibling_[n]; }
+  std::size_t child_count(NodeId n) const;
+  bool is_tip(NodeId n) const { return first_child_[n] == kNoNode; }
+
+  const Eigen::Vector3d& start(NodeId n) const { return start_[n]; }
+  const Eigen::Vector3d& end(NodeId n) const { return end_[n]; }
+  const Eigen::Vector3d& direction(NodeId n) const { return direction_[n]; }
+  double length(NodeId n) const { return length_[n]; }
+  double radius(NodeId n) const { return radius_[n]; }
+  double birth_time(NodeId n) const { return birth_time_[n]; }
+  std::uint16_t physiological_age(NodeId n) const { return physiological_age_[n]; }
+  std::uint16_t order(NodeId n) const { return order_[n]; }
+  OrganKind kind(NodeId n) const { return kind_[n]; }
+  // All fixed columns of one node (not the user attributes).
+  NodeData data(NodeId n) const;
+
+  // Setters keep length and direction as given; call set_segment to move a node's ends and
+  // recompute both.
+  void set_segment(NodeId n, const Eigen::Vector3d& start, const Eigen::Vector3d& end);
+  void set_radius(NodeId n, double radius) { radius_[n] = radius; }
+  void set_birth_time(NodeId n, double t) { birth_time_[n] = t; }
+  void set_physiological_age(NodeId n, std::uint16_t age) { physiological_age_[n] = age; }
+  void set_order(NodeId n, std::uint16_t order) { order_[n] = order; }
+  void set_kind(NodeId n, OrganKind kind) { kind_[n] = kind; }
+  void set_direction(NodeId n, const Eigen::Vector3d& d) { direction_[n] = d; }
+  void set_length(NodeId n, double length) { length_[n] = length; }
+
+  // Whole columns, for fast loops and zero-copy export (Python, writers).
+  std::span<const NodeId> parents() const { return parent_; }
+  std::span<const Eigen::Vector3d> starts() const { return start_; }
+  std::span<const Eigen::Vector3d> ends() const { return end_; }
+  std::span<const Eigen::Vector3d> directions() const { return direction_; }
+  std::span<const double> lengths() const { return length_; }
+  std::span<const double> radii() const { return radius_; }
+  std::span<const double> birth_times() const { return birth_time_; }
+  std::span<const std::uint16_t> physiological_ages() const { return physiological_age_; }
+  std::span<const std::uint16_t> orders() const { return order_; }
+  std::span<const OrganKind> kinds() const { return kind_; }
+
+  // User attributes: named columns of doubles, one value per node. New nodes get the column's
+  // default value. Adding an existing name keeps its values.
+  void add_attribute(const std::string& name, double default_value = 0.0);
+  bool has_attribute(std::string_view name) const;
+  // Throws ValueError when there is no such attribute.
+  std::span<double> attribute(std::string_view name);
+  std::span<const double> attribute(std::string_view name) const;
+  double attribute_default(std::string_view name) const;
+  void remove_attribute(std::string_view name);
+  std::vector<std::string> attribute_names() const;
+
+  // Removes the subtree rooted at n (n included; removing the root empties the graph). Ids are
+  // compacted keeping their relative order; returns the map old id -> new id (kNoNode if removed).
+  std::vector<NodeId> remove_subtree(NodeId n);
+  // Copy of the subtree rooted at n as a new graph whose root is n's copy.
+  TreeGraph copy_subtree(NodeId n) const;
+  // Appends `other` under `parent` (kNoNode only if this graph is empty); returns the new id of
+  // other's root. Attributes missing on either side are added with their defaults.
+  NodeId append_subtree(NodeId parent, const TreeGraph& other);
+
+  // Exact equality of structure, all columns and attributes (bitwise for doubles, so NaN == NaN).
+  bool identical(const TreeGraph& other) const;
+
+ private:
+  struct Attribute {
+    std::string name;
+    double default_value;
+    std::vector<double> values;
+  };
+  const Attribute* find_attribute(std::string_view name) const;
+
+  std::vector<NodeId> parent_, first_child_, last_child_, next_sibling_;
+  std::vector<Eigen::Vector3d> start_, end_, direction_;
+  std::vector<double> length_, radius_, birth_time_;
+  std::vector<std::uint16_t> physiological_age_, order_;
+  std::vector<OrganKind> kind_;
+  std::vector<Attribute> attributes_;
+};
+
+}  // namespace fspm

@@ -1,0 +1,26 @@
+#pragma once
+// Summary figures of a tree, as `fspm tree info` prints them.
+#include <cstddef>
+
+#include "fspm/tree_graph.hpp"
+
+namespace fspm {
+
+struct TreeSummary {
+  std::size_t nodes = 0;
+  std::size_t internodes = 0;
+  std::size_t leaves = 0;  // organ kind leaf
+  std::size_t flowers = 0;
+  std::size_t buds = 0;
+  std::size_t tips = 0;  // nodes without children
+  std::size_t max_order = 0;
+  std::size_t max_depth = 0;    // edges on the longest root-to-tip path
+  double height_m = 0.0;        // highest z of any node end minus the root's start z
+  double total_length_m = 0.0;  // summed length of internodes
+  Eigen::Vector3d bbox_min = Eigen::Vector3d::Zero();
+  Eigen::Vector3d bbox_max = Eigen::Vector3d::Zero();
+};
+
+TreeSummary summarize(const TreeGraph& tree);
+
+}  // namespace fspm
