@@ -4,15 +4,15 @@
 function(fspm_add_module name)
   cmake_parse_arguments(ARG "" "" "DEPS;PRIVATE_DEPS" ${ARGN})
   file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
-  if(sources)
-    add_library(fspm_${name} STATIC ${sources})
-    target_include_directories(fspm_${name} PUBLIC ${PROJECT_SOURCE_DIR})
-    target_link_libraries(fspm_${name} PUBLIC ${ARG_DEPS} PRIVATE fspm_warnings ${ARG_PRIVATE_DEPS})
-  else()
-    add_library(fspm_${name} INTERFACE)
-    target_include_directories(fspm_${name} INTERFACE ${PROJECT_SOURCE_DIR})
-    target_link_libraries(fspm_${name} INTERFACE ${ARG_DEPS})
+  if(NOT sources)
+    # A module without sources yet is still a static library, so targets can link to it and
+    # add sources conditionally.
+    set(sources ${CMAKE_CURRENT_BINARY_DIR}/fspm_${name}_empty.cpp)
+    file(WRITE ${sources} "// empty module\n")
   endif()
+  add_library(fspm_${name} STATIC ${sources})
+  target_include_directories(fspm_${name} PUBLIC ${PROJECT_SOURCE_DIR})
+  target_link_libraries(fspm_${name} PUBLIC ${ARG_DEPS} PRIVATE fspm_warnings ${ARG_PRIVATE_DEPS})
   add_library(fspm::${name} ALIAS fspm_${name})
 endfunction()
 
