@@ -34,7 +34,7 @@ TEST(TreeGraphBgl, BreadthFirstSearchVisitsByDepth) {
   std::vector<boost::default_color_type> colors(t.size());
   boost::breadth_first_search(t, 0,
                               boost::visitor(vis).color_map(boost::make_iterator_property_map(
-                                  colors.begin(), boost::get(boost::vertex_index, t))));
+                                  colors.begin(), get(boost::vertex_index, t))));
   ASSERT_EQ(order.size(), t.size());
   // Independent depth: walk up the parent links.
   for (NodeId n = 0; n < t.size(); ++n) {
@@ -55,9 +55,9 @@ TEST(TreeGraphBgl, DijkstraGivesPathLengthFromRoot) {
   boost::dijkstra_shortest_paths(t, NodeId{0},
                                  boost::weight_map(edge_length_map(t))
                                      .distance_map(boost::make_iterator_property_map(
-                                         dist.begin(), boost::get(boost::vertex_index, t)))
+                                         dist.begin(), get(boost::vertex_index, t)))
                                      .predecessor_map(boost::make_iterator_property_map(
-                                         pred.begin(), boost::get(boost::vertex_index, t))));
+                                         pred.begin(), get(boost::vertex_index, t))));
   for (NodeId n = 1; n < t.size(); ++n) {
     double expected = 0.0;
     for (NodeId m = n; m != 0; m = t.parent(m)) expected += t.length(m);
