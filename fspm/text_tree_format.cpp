@@ -48,10 +48,9 @@ class Reader {
 
   // Next line that is neither blank nor a comment; false at end of input.
   bool next(std::vector<Token>& tokens) {
-    std::string line;
-    while (std::getline(in_, line)) {
+    while (std::getline(in_, line_)) {
       ++line_no_;
-      tokens = split(line);
+      tokens = split(line_);
       if (tokens.empty() || tokens[0].text.front() == '#') continue;
       return true;
     }
@@ -88,6 +87,7 @@ class Reader {
  private:
   std::istream& in_;
   const std::string& source_;
+  std::string line_;  // tokens point into it until the next call of next()
   int line_no_ = 0;
 };
 

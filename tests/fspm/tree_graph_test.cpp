@@ -45,8 +45,14 @@ TEST(TreeGraph, DerivesLengthAndDirectionFromSegment) {
   const TreeGraph t = small_tree();
   EXPECT_DOUBLE_EQ(t.length(1), 2.0);
   EXPECT_DOUBLE_EQ(t.direction(1).z(), 1.0);
-  EXPECT_DOUBLE_EQ(t.length(2), std::sqrt(2.0));
-  EXPECT_NEAR(t.direction(2).x(), std::sqrt(0.5), 1e-15);
+  EXPECT_DOUBLE_EQ(t.length(2), 1.0);
+  EXPECT_DOUBLE_EQ(t.direction(2).x(), 1.0);
+  TreeGraph u;
+  NodeData d;
+  d.end = {1, 1, 0};
+  u.add_node(kNoNode, d);
+  EXPECT_DOUBLE_EQ(u.length(0), std::sqrt(2.0));
+  EXPECT_NEAR(u.direction(0).y(), std::sqrt(0.5), 1e-15);
 }
 
 TEST(TreeGraph, RejectsSecondRootAndUnknownParent) {
