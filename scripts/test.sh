@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds everything and runs every test: formatting, the main build
+# (warnings as errors) with CTest, a clang AddressSanitizer + UndefinedBehaviorSanitizer build of
+# the core libraries with their tests and brief fuzzing, and the Python tests when present.
+# Exits non-zero on any failure; the output ends with the CTest summary of the main build.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+jobs=$(nproc)
+
+echo "== dependencies"
+scripts/deps.sh
+
+echo "== clang-format check"
+git ls-files '*.cpp' '*.hpp' | xargs -r clang-format --dry-run -Werror
+
+echo "== sanitizer build (clang, ASan + UBSan, core libraries and fuzz targets)"
+CC=clang CXX=clang++ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug \
+  -DCMAKE_CXX_FLAGS="-O1" -DFSPM_CORE_ONLY=ON -DFSPM_SANITIZE=ON -DFSPM_FUZZ=ON \
+  -DFSPM_BUILD_BENCH=OFF > build-asan.log 2>&1 || { cat build-asan.log; exit 1; }
+cmake --build build-asan -j "$jobs"
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+ctest --test-dir build-asan --output-on-failure -j "$jobs" | tail -n 4
+for fuzzer in build-asan/bin/fspm_*_fuzz; do
+  [ -x "$fuzzer" ] || continue
+  name=$(basename "$fuzzer")
+  corpus="fuzz/corpus/${name#fspm_}"
+  work=$(mktemp -d)
+  [ -d "$corpus" ] && cp -r "$corpus"/. "$work"/
+  echo "fuzzing $name for 20 s"
+  "$fuzzer" -max_total_time=20 -rss_limit_mb=2048 -max_len=4096 "$work" > "$work.log" 2>&1 \
+    || { tail -n 40 "$work.log"; exit 1; }
+  rm -rf "$work" "$work.log"
+done
+
+echo "== main build (Release, warnings as errors)"
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release > build.log 2>&1 \
+  || { cat build.log; exit 1; }
+grep -E "^-- fspm:" build.log || true
+cmake --build build -j "$jobs"
+
+if [ -d python/tests ] && [ -f build/python/fspm/__init__.py ]; then
+  echo "== Python tests"
+  PYTHONPATH="$root/build/python" /usr/bin/python3 -m pytest -q python/tests
+fi
+
+echo "== CTest (main build)"
+ctest --test-dir build --output-on-failure -j "$jobs"

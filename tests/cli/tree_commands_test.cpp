@@ -1,0 +1,79 @@
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "tests/cli/run_command.hpp"
+
+namespace fspm {
+namespace {
+
+using testing::run_fspm;
+using testing::scratch_dir;
+
+void write_text(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream(p) << text;
+}
+
+std::string read_text(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+TEST(TreeCli, NewickSurvivesConversionThroughEveryFormat) {
+  const auto dir = scratch_dir("convert");
+  const std::string nwk = "((1,2)3,(4.5,(5,6e-3)7)8)9;";
+  write_text(dir / "x.nwk", nwk + "\n");
+  auto r = run_fspm("tree convert " + (dir / "x.nwk").string() + " " + (dir / "x.tree").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_fspm("tree convert " + (dir / "x.tree").string() + " " + (dir / "x.treeb").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_fspm("tree convert " + (dir / "x.treeb").string() + " " + (dir / "y.nwk").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_text(dir / "y.nwk"), nwk + "\n");
+  r = run_fspm("tree convert " + (dir / "x.tree").string() + " " + (dir / "x.mtg").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(read_text(dir / "x.mtg").find("MTG:"), std::string::npos);
+}
+
+TEST(TreeCli, InfoJsonCountsNodes) {
+  const auto dir = scratch_dir("info");
+  write_text(dir / "x.nwk", "((1,2)3,(4,(5,6)7)8)9;\n");
+  const auto r = run_fspm("tree info --json " + (dir / "x.nwk").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["nodes"], 9);
+  EXPECT_EQ(j["tips"], 5);
+  EXPECT_EQ(j["max_depth"], 3);
+}
+
+TEST(TreeCli, MalformedFileExitsOneWithFileAndLine) {
+  const auto dir = scratch_dir("bad");
+  const auto bad = dir / "bad.tree";
+  write_text(bad, "fspm-tree 1\nnodes 2\n0 - internode 1 0 0 0 0 0 0 1 0 0 1 1 0.1 0\noops\n");
+  auto r = run_fspm("tree info " + bad.string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find(bad.string() + ":4"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty());
+
+  write_text(dir / "bad.nwk", "((1,2)3,(4;\n");
+  r = run_fspm("tree convert " + (dir / "bad.nwk").string() + " " + (dir / "out.tree").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("bad.nwk:1:"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.tree"));
+}
+
+TEST(TreeCli, UsageErrorsExitOneAndHelpExitsZero) {
+  EXPECT_EQ(run_fspm("--help").exit_code, 0);
+  EXPECT_EQ(run_fspm("tree info --help").exit_code, 0);
+  const auto v = run_fspm("--version");
+  EXPECT_EQ(v.exit_code, 0);
+  EXPECT_NE(v.out.find("fspm "), std::string::npos);
+  EXPECT_EQ(run_fspm("tree info").exit_code, 1);
+  EXPECT_EQ(run_fspm("no-such-command").exit_code, 1);
+  EXPECT_EQ(run_fspm("tree info /no/such/file.tree").exit_code, 1);
+  EXPECT_EQ(run_fspm("tree convert a.nwk b.xyz").exit_code, 1);
+}
+
+}  // namespace
+}  // namespace fspm
