@@ -22,7 +22,7 @@ std::string read_text(const std::filesystem::path& p) {
 
 TEST(TreeCli, NewickSurvivesConversionThroughEveryFormat) {
   const auto dir = scratch_dir("convert");
-  const std::string nwk = "((1,2)3,(4.5,(5,6e-3)7)8)9;";
+  const std::string nwk = "((1,2)3,(4.5,(5,0.006)7)8)9;";
   write_text(dir / "x.nwk", nwk + "\n");
   auto r = run_fspm("tree convert " + (dir / "x.nwk").string() + " " + (dir / "x.tree").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
