@@ -1,0 +1,347 @@
+#include "environment/light_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace fspm::environment {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr std::size_t kMaxAnalyticCaps = 16;
+
+// Squared shadow-volume radius of an occluder with bounding radius r and translucency g: the
+// distance beyond which it removes less than `significance` of the light (see header).
+double shadow_reach2(double r, double g, double significance) {
+  if (g >= 1.0) return -1.0;
+  if (significance <= 0.0) return kInf;
+  const double q = significance / (3.0 * (1.0 - g));
+  if (q >= 1.0) return -1.0;
+  const double cos_min = 1.0 - q;
+  const double sin2_min = 1.0 - cos_min * cos_min;
+  return r * r / sin2_min;
+}
+
+double top_z(const Box& b) {
+  double h = 0.0;
+  for (int j = 0; j < 3; ++j) h += std::abs(b.rotation(2, j)) * b.half_extent[j];
+  return b.center.z() + h;
+}
+
+}  // namespace
+
+struct LightModel::Cap {
+  Eigen::Vector3d axis;
+  double cos_a;
+  double sin_a;
+  double gamma;
+};
+
+LightModel::LightModel(const Scene& scene) : scene_(scene), dirs_(scene.sky.directions) {
+  Eigen::Vector3d b = scene_.sky.brightest;
+  b = b.norm() > 0 ? Eigen::Vector3d(b.normalized()) : Eigen::Vector3d::UnitZ();
+  scene_.sky.brightest = b;
+  weight_.resize(dirs_.size());
+  Eigen::Vector3d m = Eigen::Vector3d::Zero();
+  for (int i = 0; i < dirs_.size(); ++i) {
+    const double c = dirs_.direction(i).dot(b);
+    weight_[i] = c * c;  // Pirk: I = cos^2(angle to the brightest point)
+    weight_sum_ += weight_[i];
+    m += weight_[i] * dirs_.direction(i);
+  }
+  open_direction_ = m.norm() > 0 ? Eigen::Vector3d(m.normalized()) : Eigen::Vector3d::UnitZ();
+  for (auto& mesh : scene_.meshes) mesh.update_bounds();
+
+  const double eps = scene_.sky.significance;
+  const std::size_t n = scene_.spheres.size();
+  reach2_.resize(n);
+  double max_finite = 0.0;
+  bool any_infinite = false;
+  std::vector<double> finite;
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(kInf), hi = -lo;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& s = scene_.spheres[i];
+    reach2_[i] = shadow_reach2(s.radius_m, s.translucency, eps);
+    if (reach2_[i] < 0) continue;
+    all_spheres_.push_back(static_cast<std::uint32_t>(i));
+    lo = lo.cwiseMin(s.center - Eigen::Vector3d::Constant(s.radius_m));
+    hi = hi.cwiseMax(s.center + Eigen::Vector3d::Constant(s.radius_m));
+    if (std::isinf(reach2_[i])) {
+      any_infinite = true;
+    } else {
+      finite.push_back(std::sqrt(reach2_[i]));
+      max_finite = std::max(max_finite, finite.back());
+    }
+  }
+  for (const auto& box : scene_.boxes) {
+    box_reach2_.push_back(shadow_reach2(box.bounding_radius(), box.translucency, eps));
+  }
+  for (const auto& mesh : scene_.meshes) {
+    mesh_reach2_.push_back(shadow_reach2(mesh.bounding_radius_m, mesh.translucency, eps));
+  }
+  if (all_spheres_.empty()) return;
+
+  // The grid covers every shadow volume, unbounded ones clamped to a margin around the spheres;
+  // points outside the grid fall back to visiting every sphere, which is always correct.
+  const double clamp = any_infinite ? std::max(max_finite, (hi - lo).norm()) : max_finite;
+  auto volume_box = [&](std::size_t i, Eigen::Vector3d& a, Eigen::Vector3d& z) {
+    const auto& s = scene_.spheres[i];
+    const double r = std::min(std::sqrt(reach2_[i]), clamp);
+    a = s.center - Eigen::Vector3d(r, r, r);
+    z = s.center + Eigen::Vector3d(r, r, s.radius_m);
+  };
+  grid_lo_ = Eigen::Vector3d::Constant(kInf);
+  grid_hi_ = -grid_lo_;
+  for (auto i : all_spheres_) {
+    Eigen::Vector3d a, z;
+    volume_box(i, a, z);
+    grid_lo_ = grid_lo_.cwiseMin(a);
+    grid_hi_ = grid_hi_.cwiseMax(z);
+  }
+  const Eigen::Vector3d extent = (grid_hi_ - grid_lo_).cwiseMax(1e-9);
+  if (!finite.empty()) {
+    std::nth_element(finite.begin(), finite.begin() + finite.size() / 2, finite.end());
+    cell_ = 0.5 * finite[finite.size() / 2];
+  } else {
+    cell_ = extent.maxCoeff() / 16.0;
+  }
+  cell_ = std::max(cell_, extent.maxCoeff() / 128.0);
+  auto cells_of = [&](double h) {
+    return (extent / h).array().ceil().cast<int>().max(1).matrix().eval();
+  };
+  // Keep the index within a few million entries.
+  for (;;) {
+    const Eigen::Vector3i g = cells_of(cell_);
+    double entries = 0.0;
+    for (auto i : all_spheres_) {
+      Eigen::Vector3d a, z;
+      volume_box(i, a, z);
+      entries += ((z - a) / cell_ + Eigen::Vector3d::Constant(2.0)).prod();
+    }
+    if (static_cast<double>(g.prod()) <= (1 << 21) && entries <= 8e6) break;
+    cell_ *= 1.5;
+  }
+  grid_n_ = cells_of(cell_);
+  auto cell_range = [&](std::size_t i, Eigen::Vector3i& c0, Eigen::Vector3i& c1) {
+    Eigen::Vector3d a, z;
+    volume_box(i, a, z);
+    for (int k = 0; k < 3; ++k) {
+      c0[k] =
+          std::clamp(static_cast<int>(std::floor((a[k] - grid_lo_[k]) / cell_)), 0, grid_n_[k] - 1);
+      c1[k] =
+          std::clamp(static_cast<int>(std::floor((z[k] - grid_lo_[k]) / cell_)), 0, grid_n_[k] - 1);
+    }
+  };
+  const std::size_t cells = static_cast<std::size_t>(grid_n_.prod());
+  cell_start_.assign(cells + 1, 0);
+  auto cell_id = [&](int x, int y, int z) {
+    return (static_cast<std::size_t>(z) * grid_n_.y() + y) * grid_n_.x() + x;
+  };
+  for (int pass = 0; pass < 2; ++pass) {
+    std::vector<std::uint32_t> fill;
+    if (pass == 1) {
+      for (std::size_t c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
+      cell_items_.resize(cell_start_[cells]);
+      fill.assign(cell_start_.begin(), cell_start_.end() - 1);
+    }
+    for (auto i : all_spheres_) {
+      Eigen::Vector3i c0, c1;
+      cell_range(i, c0, c1);
+      for (int z = c0.z(); z <= c1.z(); ++z) {
+        for (int y = c0.y(); y <= c1.y(); ++y) {
+          for (int x = c0.x(); x <= c1.x(); ++x) {
+            const std::size_t id = cell_id(x, y, z);
+            if (pass == 0) {
+              ++cell_start_[id + 1];
+            } else {
+              cell_items_[fill[id]++] = i;
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
+bool LightModel::box_relevant(std::size_t i, const Eigen::Vector3d& p) const {
+  const Box& b = scene_.boxes[i];
+  if (box_reach2_[i] < 0 || top_z(b) <= p.z()) return false;
+  return (b.center - p).squaredNorm() <= box_reach2_[i];
+}
+
+LightSample LightModel::evaluate(const Eigen::Vector3d& p, std::uint32_t ignore) const {
+  thread_local std::vector<Cap> caps;
+  caps.clear();
+  double all = 1.0;
+  if (scene_.ground && p.z() < scene_.ground->height_m) all *= scene_.ground->translucency;
+
+  std::span<const std::uint32_t> candidates = all_spheres_;
+  if (grid_n_.x() > 0) {
+    const Eigen::Vector3d u = (p - grid_lo_) / cell_;
+    const int x = static_cast<int>(std::floor(u.x()));
+    const int y = static_cast<int>(std::floor(u.y()));
+    const int z = static_cast<int>(std::floor(u.z()));
+    if (x >= 0 && y >= 0 && z >= 0 && x < grid_n_.x() && y < grid_n_.y() && z < grid_n_.z()) {
+      const std::size_t id = (static_cast<std::size_t>(z) * grid_n_.y() + y) * grid_n_.x() + x;
+      candidates = std::span<const std::uint32_t>(cell_items_.data() + cell_start_[id],
+                                                  cell_start_[id + 1] - cell_start_[id]);
+    }
+  }
+  for (const std::uint32_t i : candidates) {
+    if (i == ignore) continue;
+    const Sphere& s = scene_.spheres[i];
+    if (s.center.z() + s.radius_m <= p.z()) continue;  // entirely below p's horizon
+    const Eigen::Vector3d d = s.center - p;
+    const double d2 = d.squaredNorm();
+    if (d2 > reach2_[i]) continue;  // outside the shadow volume
+    const double r2 = s.radius_m * s.radius_m;
+    if (d2 <= r2) {
+      all *= s.translucency;  // every ray from inside crosses the cluster
+      continue;
+    }
+    const double dist = std::sqrt(d2);
+    caps.push_back({d / dist, std::sqrt(d2 - r2) / dist, s.radius_m / dist, s.translucency});
+  }
+  bool boxes = false;
+  for (std::size_t i = 0; i < scene_.boxes.size() && !boxes; ++i) boxes = box_relevant(i, p);
+  for (std::size_t i = 0; i < scene_.meshes.size() && !boxes; ++i) {
+    const auto& m = scene_.meshes[i];
+    boxes = mesh_reach2_[i] >= 0 && m.center.z() + m.bounding_radius_m > p.z() &&
+            (m.center - p).squaredNorm() <= mesh_reach2_[i];
+  }
+
+  if (scene_.sky.analytic && !boxes && caps.size() <= kMaxAnalyticCaps) {
+    bool exact = true;
+    for (std::size_t i = 0; i < caps.size() && exact; ++i) {
+      // Whole cap above the horizon: elevation of the axis >= half angle.
+      if (caps[i].axis.z() < caps[i].sin_a) exact = false;
+      for (std::size_t j = 0; j < i && exact; ++j) {
+        // Disjoint caps: angle between axes >= alpha_i + alpha_j.
+        const double cos_sum = caps[i].cos_a * caps[j].cos_a - caps[i].sin_a * caps[j].sin_a;
+        if (caps[i].axis.dot(caps[j].axis) > cos_sum) exact = false;
+      }
+    }
+    if (exact) {
+      // Closed forms over the hemisphere: integral of (b.d)^2 is 2 pi / 3, and of (b.d)^2 d is
+      // (pi/2 bx bz, pi/2 by bz, pi/4 (bx^2 + by^2) + pi/2 bz^2). Over a cap of half angle alpha
+      // around c, with beta = b.c and a = cos alpha:
+      //   F = 2 pi beta^2 (1 - a^3)/3 + pi (1 - beta^2) ((1 - a) - (1 - a^3)/3),
+      //   M = (2 pi beta^2 A + pi (1 - beta^2) B) c + 2 pi beta B (b - beta c),
+      // with A = (1 - a^4)/4 and B = (1 - a^2)^2 / 4.
+      const double pi = std::numbers::pi;
+      const Eigen::Vector3d& b = scene_.sky.brightest;
+      double f = 2.0 * pi / 3.0;
+      Eigen::Vector3d m(0.5 * pi * b.x() * b.z(), 0.5 * pi * b.y() * b.z(),
+                        0.25 * pi * (b.x() * b.x() + b.y() * b.y()) + 0.5 * pi * b.z() * b.z());
+      const double total = f;
+      for (const Cap& c : caps) {
+        const double beta = b.dot(c.axis);
+        const double a = c.cos_a;
+        const double a3 = a * a * a;
+        const double cap_f = 2.0 * pi * beta * beta * (1.0 - a3) / 3.0 +
+                             pi * (1.0 - beta * beta) * ((1.0 - a) - (1.0 - a3) / 3.0);
+        const double big_a = 0.25 * (1.0 - a3 * a);
+        const double big_b = 0.25 * (1.0 - a * a) * (1.0 - a * a);
+        const Eigen::Vector3d cap_m =
+            (2.0 * pi * beta * beta * big_a + pi * (1.0 - beta * beta) * big_b) * c.axis +
+            2.0 * pi * beta * big_b * (b - beta * c.axis);
+        f -= (1.0 - c.gamma) * cap_f;
+        m -= (1.0 - c.gamma) * cap_m;
+      }
+      LightSample out;
+      out.light = std::clamp(all * f / total, 0.0, 1.0);
+      out.direction =
+          m.norm() > 1e-300 && out.light > 0 ? Eigen::Vector3d(m.normalized()) : open_direction_;
+      return out;
+    }
+  }
+  return sampled(p, caps, all, boxes);
+}
+
+LightSample LightModel::sampled(const Eigen::Vector3d& p, std::span<const Cap> caps,
+                                double all_factor, bool boxes) const {
+  thread_local std::vector<double> vis;
+  vis.assign(dirs_.size(), all_factor);
+  for (const Cap& c : caps) {
+    const double g = c.gamma;
+    dirs_.for_each_in_cap(c.axis, c.cos_a, [&](int i) { vis[i] *= g; });
+  }
+  return finish(p, vis, boxes);
+}
+
+LightSample LightModel::finish(const Eigen::Vector3d& p, std::vector<double>& vis,
+                               bool boxes) const {
+  if (boxes) {
+    for (std::size_t k = 0; k < scene_.boxes.size(); ++k) {
+      if (!box_relevant(k, p)) continue;
+      const Box& b = scene_.boxes[k];
+      const Eigen::Vector3d d = b.center - p;
+      const double dist = d.norm();
+      const double r = b.bounding_radius();
+      auto hit = [&](int i) {
+        if (b.ray_entry(p, dirs_.direction(i)) >= 0.0) vis[i] *= b.translucency;
+      };
+      if (dist <= r) {
+        for (int i = 0; i < dirs_.size(); ++i) hit(i);
+      } else {
+        dirs_.for_each_in_cap(d / dist, std::sqrt(dist * dist - r * r) / dist, hit);
+      }
+    }
+    for (std::size_t k = 0; k < scene_.meshes.size(); ++k) {
+      const auto& m = scene_.meshes[k];
+      if (mesh_reach2_[k] < 0 || m.center.z() + m.bounding_radius_m <= p.z() ||
+          (m.center - p).squaredNorm() > mesh_reach2_[k]) {
+        continue;
+      }
+      const Eigen::Vector3d d = m.center - p;
+      const double dist = d.norm();
+      const double r = m.bounding_radius_m;
+      auto hit = [&](int i) {
+        const int n = m.crossings(p, dirs_.direction(i));
+        if (n > 0) vis[i] *= std::pow(m.translucency, n);
+      };
+      if (dist <= r) {
+        for (int i = 0; i < dirs_.size(); ++i) hit(i);
+      } else {
+        dirs_.for_each_in_cap(d / dist, std::sqrt(dist * dist - r * r) / dist, hit);
+      }
+    }
+  }
+  double sum = 0.0;
+  Eigen::Vector3d m = Eigen::Vector3d::Zero();
+  for (int i = 0; i < dirs_.size(); ++i) {
+    const double w = vis[i] * weight_[i];
+    sum += w;
+    m += w * dirs_.direction(i);
+  }
+  LightSample out;
+  out.light = weight_sum_ > 0 ? std::clamp(sum / weight_sum_, 0.0, 1.0) : 0.0;
+  out.direction = m.norm() > 1e-300 ? Eigen::Vector3d(m.normalized()) : open_direction_;
+  return out;
+}
+
+void LightModel::evaluate(std::span<const Eigen::Vector3d> points,
+                          std::span<LightSample> out) const {
+  for (std::size_t i = 0; i < points.size() && i < out.size(); ++i) out[i] = evaluate(points[i]);
+}
+
+LightSample LightModel::evaluate_brute_force(const Eigen::Vector3d& p) const {
+  std::vector<double> vis(dirs_.size(), 1.0);
+  for (int i = 0; i < dirs_.size(); ++i) {
+    const Eigen::Vector3d& d = dirs_.direction(i);
+    if (scene_.ground && p.z() < scene_.ground->height_m) vis[i] *= scene_.ground->translucency;
+    for (const auto& s : scene_.spheres) {
+      if (ray_hits_sphere(p, d, s.center, s.radius_m)) vis[i] *= s.translucency;
+    }
+    for (const auto& b : scene_.boxes) {
+      if (b.ray_entry(p, d) >= 0.0) vis[i] *= b.translucency;
+    }
+    for (const auto& m : scene_.meshes) {
+      const int n = m.crossings(p, d);
+      if (n > 0) vis[i] *= std::pow(m.translucency, n);
+    }
+  }
+  return finish(p, vis, false);
+}
+
+}  // namespace fspm::environment

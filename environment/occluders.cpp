@@ -1,0 +1,109 @@
+#include "environment/occluders.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace fspm::environment {
+
+double cluster_translucency(double radius_m, double gamma0) { return std::pow(gamma0, radius_m); }
+
+Box Box::from_min_max(const Eigen::Vector3d& min, const Eigen::Vector3d& max) {
+  Box b;
+  b.center = 0.5 * (min + max);
+  b.half_extent = 0.5 * (max - min);
+  return b;
+}
+
+Box Box::wall(const Eigen::Vector2d& from, const Eigen::Vector2d& to, double base_z_m,
+              double height_m, double thickness_m) {
+  Box b;
+  const Eigen::Vector2d along = to - from;
+  const double length = along.norm();
+  const Eigen::Vector2d u = length > 0 ? Eigen::Vector2d(along / length) : Eigen::Vector2d(1, 0);
+  b.rotation.col(0) = Eigen::Vector3d(u.x(), u.y(), 0);
+  b.rotation.col(1) = Eigen::Vector3d(-u.y(), u.x(), 0);
+  b.rotation.col(2) = Eigen::Vector3d::UnitZ();
+  const Eigen::Vector2d mid = 0.5 * (from + to);
+  b.center = Eigen::Vector3d(mid.x(), mid.y(), base_z_m + 0.5 * height_m);
+  b.half_extent = Eigen::Vector3d(0.5 * length, 0.5 * thickness_m, 0.5 * height_m);
+  return b;
+}
+
+bool Box::contains(const Eigen::Vector3d& p) const {
+  const Eigen::Vector3d local = rotation.transpose() * (p - center);
+  return (local.cwiseAbs().array() <= half_extent.array()).all();
+}
+
+double Box::ray_entry(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir) const {
+  // Slab test in the box frame.
+  const Eigen::Vector3d o = rotation.transpose() * (origin - center);
+  const Eigen::Vector3d d = rotation.transpose() * dir;
+  double t0 = 0.0;
+  double t1 = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    if (std::abs(d[i]) < 1e-300) {
+      if (std::abs(o[i]) > half_extent[i]) return -1.0;
+      continue;
+    }
+    const double inv = 1.0 / d[i];
+    double a = (-half_extent[i] - o[i]) * inv;
+    double b = (half_extent[i] - o[i]) * inv;
+    if (a > b) std::swap(a, b);
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, b);
+    if (t0 > t1) return -1.0;
+  }
+  return t0;
+}
+
+void TriangleMesh::update_bounds() {
+  if (vertices.empty()) return;
+  Eigen::Vector3d lo = vertices.front(), hi = vertices.front();
+  for (const auto& v : vertices) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  center = 0.5 * (lo + hi);
+  bounding_radius_m = 0.0;
+  for (const auto& v : vertices)
+    bounding_radius_m = std::max(bounding_radius_m, (v - center).norm());
+}
+
+int TriangleMesh::crossings(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
+                            double max_t) const {
+  // Moeller-Trumbore.
+  int count = 0;
+  for (const auto& tri : triangles) {
+    const Eigen::Vector3d& a = vertices[tri[0]];
+    const Eigen::Vector3d e1 = vertices[tri[1]] - a;
+    const Eigen::Vector3d e2 = vertices[tri[2]] - a;
+    const Eigen::Vector3d p = dir.cross(e2);
+    const double det = e1.dot(p);
+    if (std::abs(det) < 1e-14) continue;
+    const double inv = 1.0 / det;
+    const Eigen::Vector3d s = origin - a;
+    const double u = s.dot(p) * inv;
+    if (u < 0.0 || u > 1.0) continue;
+    const Eigen::Vector3d q = s.cross(e1);
+    const double v = dir.dot(q) * inv;
+    if (v < 0.0 || u + v > 1.0) continue;
+    const double t = e2.dot(q) * inv;
+    if (t > 0.0 && t <= max_t) ++count;
+  }
+  return count;
+}
+
+bool ray_hits_sphere(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
+                     const Eigen::Vector3d& center, double radius, double max_t) {
+  const Eigen::Vector3d oc = center - origin;
+  const double c = oc.squaredNorm() - radius * radius;
+  if (c < 0.0) return true;  // origin inside
+  const double b = oc.dot(dir);
+  if (b <= 0.0) return false;
+  const double disc = b * b - c;
+  if (disc < 0.0) return false;
+  return b - std::sqrt(disc) <= max_t;
+}
+
+}  // namespace fspm::environment

@@ -1,0 +1,25 @@
+#pragma once
+// The sky of Pirk eq. 4.3: intensity I = cos^2(angle to the brightest point), z up, x east, y
+// north.
+#include <Eigen/Core>
+
+namespace fspm::environment {
+
+struct Sky {
+  Eigen::Vector3d brightest = Eigen::Vector3d::UnitZ();  // unit vector to the brightest sky point
+  int directions = 256;        // stratified sample directions over the upper hemisphere
+  double significance = 1e-3;  // shadow-volume cutoff: max ignored share of light per occluder
+  bool analytic = true;        // exact sphere-cap integrals where they are exact (see light_model)
+};
+
+// Unit direction from elevation above the horizon and azimuth clockwise from north (degrees).
+Eigen::Vector3d direction_from_elevation_azimuth(double elevation_deg, double azimuth_deg);
+
+// Solar declination (Cooper 1969): 23.45 deg * sin(360/365 * (284 + day)).
+double solar_declination_deg(int day_of_year);
+
+// The sun at solar noon for a latitude (north positive) and day of year (1..366): elevation
+// 90 - |latitude - declination|, due south when the sun culminates south of the zenith, else north.
+Eigen::Vector3d noon_sun_direction(double latitude_deg, int day_of_year);
+
+}  // namespace fspm::environment
