@@ -1,0 +1,47 @@
+#pragma once
+// Mesh files for other tools: OBJ + MTL (Blender, MeshLab), binary PLY (attributes as extra
+// vertex properties), VTK XML PolyData .vtp (attributes as point-data arrays, for ParaView),
+// ParaView .pvd growth sequences (one .vtp per age) and binary glTF 2.0 .glb. Every file is
+// written atomically: a failed write leaves no partial output.
+#include <span>
+#include <string>
+#include <vector>
+
+#include "fspm/tree_graph.hpp"
+#include "graphics/tree_mesher.hpp"
+#include "graphics/triangle_mesh.hpp"
+
+namespace fspm::graphics {
+
+enum class MeshFormat { kObj, kPly, kVtp, kPvd, kGlb };
+
+// From the extension of `path` (.obj, .ply, .vtp, .pvd, .glb); throws ValueError otherwise.
+MeshFormat mesh_format_for(const std::string& path);
+
+// Writes `path` and, beside it, the material library with the same stem and extension .mtl.
+void write_obj(const TriangleMesh& mesh, const std::string& path);
+void write_ply(const TriangleMesh& mesh, const std::string& path);
+void write_vtp(const TriangleMesh& mesh, const std::string& path);
+void write_glb(const TriangleMesh& mesh, const std::string& path);
+
+// Any single-mesh format by extension (not .pvd).
+void write_mesh(const TriangleMesh& mesh, const std::string& path);
+
+struct PvdFrame {
+  double age = 0.0;
+  std::string vtp_path;
+  std::size_t vertices = 0;
+  std::size_t triangles = 0;
+};
+
+// Growth sequence: for each age, the tree restricted to nodes born at or before it
+// (MeshOptions::max_birth_time), written as <stem>_<index>.vtp beside `path`, then the .pvd
+// collection listing them with their ages as time steps. Ages must be finite; they are sorted.
+std::vector<PvdFrame> write_pvd(const TreeGraph& tree, const MeshOptions& options,
+                                std::vector<double> ages, const std::string& path);
+
+// Ages for a growth sequence when none are given: every distinct birth time when there are at
+// most `max_frames`, else `max_frames` evenly spaced ages from the first to the last birth.
+std::vector<double> default_ages(const TreeGraph& tree, std::size_t max_frames = 20);
+
+}  // namespace fspm::graphics

@@ -1,0 +1,64 @@
+// Wavefront OBJ with an MTL material library: one material per organ kind (bark, leaf).
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <ostream>
+
+#include "fspm/atomic_file.hpp"
+#include "graphics/mesh_writers.hpp"
+
+namespace fspm::graphics {
+namespace {
+
+void write_mtl(const std::string& path) {
+  write_file_atomically(path, [](std::ostream& out) {
+    out << "# fspm materials\n"
+           "newmtl bark\nKa 0 0 0\nKd 0.45 0.32 0.20\nKs 0.05 0.05 0.05\nNs 10\nillum 2\n\n"
+           "newmtl leaf\nKa 0 0 0\nKd 0.25 0.55 0.15\nKs 0.10 0.10 0.10\nNs 20\nillum 2\n";
+  });
+}
+
+}  // namespace
+
+void write_obj(const TriangleMesh& mesh, const std::string& path) {
+  const std::filesystem::path obj(path);
+  std::filesystem::path mtl = obj;
+  mtl.replace_extension(".mtl");
+  write_mtl(mtl.string());
+  write_file_atomically(path, [&](std::ostream& out) {
+    fmt::memory_buffer buf;
+    auto flush = [&] {
+      out.write(buf.data(), static_cast<std::streamsize>(buf.size()));
+      buf.clear();
+    };
+    fmt::format_to(std::back_inserter(buf), "# fspm mesh: {} vertices, {} triangles\nmtllib {}\n",
+                   mesh.vertex_count(), mesh.triangle_count(), mtl.filename().string());
+    for (const auto& p : mesh.positions) {
+      fmt::format_to(std::back_inserter(buf), "v {} {} {}\n", p.x(), p.y(), p.z());
+      if (buf.size() > (1 << 20)) flush();
+    }
+    for (const auto& n : mesh.normals) {
+      fmt::format_to(std::back_inserter(buf), "vn {} {} {}\n", n.x(), n.y(), n.z());
+      if (buf.size() > (1 << 20)) flush();
+    }
+    for (const auto& t : mesh.uvs) {
+      fmt::format_to(std::back_inserter(buf), "vt {} {}\n", t.x(), t.y());
+      if (buf.size() > (1 << 20)) flush();
+    }
+    int current = -1;
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+      const Material m = i < mesh.materials.size() ? mesh.materials[i] : Material::kBark;
+      if (static_cast<int>(m) != current) {
+        current = static_cast<int>(m);
+        fmt::format_to(std::back_inserter(buf), "usemtl {}\n", material_name(m));
+      }
+      const auto& t = mesh.triangles[i];
+      fmt::format_to(std::back_inserter(buf), "f {0}/{0}/{0} {1}/{1}/{1} {2}/{2}/{2}\n", t[0] + 1,
+                     t[1] + 1, t[2] + 1);
+      if (buf.size() > (1 << 20)) flush();
+    }
+    flush();
+  });
+}
+
+}  // namespace fspm::graphics

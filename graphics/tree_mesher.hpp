@@ -1,0 +1,64 @@
+#pragma once
+// Meshing a TreeGraph: every chain of internodes becomes one generalized cylinder (a tube of
+// rings swept along the chain with parallel transport frames, Pirk 6.1.2), closed by a cap at
+// each end; leaf nodes become quads (optionally bent) placed on their metamer. Node columns and
+// user attributes are carried to the vertices as named float attributes.
+#include <Eigen/Core>
+#include <cstddef>
+#include <limits>
+#include <optional>
+
+#include "fspm/tree_graph.hpp"
+#include "graphics/triangle_mesh.hpp"
+
+namespace fspm::graphics {
+
+struct MeshOptions {
+  // Ring resolution from radius: sides = ceil(2 pi r / edge_length_m), clamped to
+  // [min_sides, max_sides]. One resolution per chain, taken from its base radius.
+  double edge_length_m = 0.01;
+  int min_sides = 3;
+  int max_sides = 16;
+  // Radii below this are raised to it so twigs never give degenerate triangles.
+  double min_radius_m = 1e-4;
+  // Level of detail from a camera: beyond lod_distance_m the target edge length grows in
+  // proportion to the distance from the camera to the chain base.
+  std::optional<Eigen::Vector3d> camera_m;
+  double lod_distance_m = 5.0;
+  // Close every tube with a cap at its base and its tip.
+  bool caps = true;
+
+  bool leaves = false;
+  double leaf_width_ratio = 0.5;  // leaf blade width / leaf length
+  // Droop of the blade tip as a fraction of its length (0 = flat quad).
+  double leaf_bend = 0.0;
+  int leaf_bend_segments = 4;
+
+  // Growth sequences: nodes born after this time (and their subtrees) are left out, and the
+  // "age" attribute is measured from it. Infinity = keep all, age measured from the latest birth.
+  double max_birth_time = std::numeric_limits<double>::infinity();
+};
+
+// Per-vertex attributes every mesh carries, followed by the tree's user attributes.
+inline constexpr const char* kAttributeAge = "age";
+inline constexpr const char* kAttributeBirthTime = "birth_time";
+inline constexpr const char* kAttributeOrder = "order";
+inline constexpr const char* kAttributePhysiologicalAge = "physiological_age";
+
+struct MeshCounts {
+  std::size_t vertices = 0;
+  std::size_t triangles = 0;
+  std::size_t tubes = 0;
+  std::size_t leaves = 0;
+};
+
+// Ring resolution for a radius at a distance from the camera (0 without a camera).
+int sides_for_radius(double radius_m, const MeshOptions& options, double distance_m = 0.0);
+
+// What mesh_tree will produce, without building it. Throws ValueError for bad options.
+MeshCounts count_mesh(const TreeGraph& tree, const MeshOptions& options = {});
+
+// Throws ValueError for bad options or more than 2^32 vertices.
+TriangleMesh mesh_tree(const TreeGraph& tree, const MeshOptions& options = {});
+
+}  // namespace fspm::graphics

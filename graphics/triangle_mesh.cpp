@@ -1,0 +1,91 @@
+#include "graphics/triangle_mesh.hpp"
+
+#include <algorithm>
+
+#include "fspm/error.hpp"
+
+namespace fspm::graphics {
+
+std::string_view material_name(Material material) {
+  return material == Material::kLeaf ? "leaf" : "bark";
+}
+
+std::vector<float>& TriangleMesh::add_attribute(const std::string& name) {
+  for (auto& a : attributes) {
+    if (a.name == name) return a.values;
+  }
+  attributes.push_back({name, std::vector<float>(positions.size(), 0.0f)});
+  return attributes.back().values;
+}
+
+bool TriangleMesh::has_attribute(std::string_view name) const {
+  return std::any_of(attributes.begin(), attributes.end(),
+                     [&](const VertexAttribute& a) { return a.name == name; });
+}
+
+std::span<const float> TriangleMesh::attribute(std::string_view name) const {
+  for (const auto& a : attributes) {
+    if (a.name == name) return a.values;
+  }
+  std::string known;
+  for (const auto& a : attributes) known += (known.empty() ? "" : ", ") + a.name;
+  throw ValueError("unknown mesh attribute '" + std::string(name) +
+                   "' (expected one of: " + (known.empty() ? std::string("none") : known) + ")");
+}
+
+std::vector<std::string> TriangleMesh::attribute_names() const {
+  std::vector<std::string> names;
+  names.reserve(attributes.size());
+  for (const auto& a : attributes) names.push_back(a.name);
+  return names;
+}
+
+std::size_t TriangleMesh::triangle_count(Material material) const {
+  return static_cast<std::size_t>(std::count(materials.begin(), materials.end(), material));
+}
+
+void TriangleMesh::append(const TriangleMesh& other) {
+  const auto offset = static_cast<std::uint32_t>(positions.size());
+  const std::size_t old_vertices = positions.size();
+  positions.insert(positions.end(), other.positions.begin(), other.positions.end());
+  normals.insert(normals.end(), other.normals.begin(), other.normals.end());
+  uvs.insert(uvs.end(), other.uvs.begin(), other.uvs.end());
+  triangles.reserve(triangles.size() + other.triangles.size());
+  for (const Triangle& t : other.triangles) {
+    triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  }
+  materials.insert(materials.end(), other.materials.begin(), other.materials.end());
+  for (const auto& a : other.attributes) {
+    if (!has_attribute(a.name)) {
+      attributes.push_back({a.name, std::vector<float>(old_vertices, 0.0f)});
+    }
+  }
+  for (auto& a : attributes) {
+    a.values.resize(old_vertices, 0.0f);
+    bool found = false;
+    for (const auto& b : other.attributes) {
+      if (b.name == a.name) {
+        a.values.insert(a.values.end(), b.values.begin(), b.values.end());
+        found = true;
+        break;
+      }
+    }
+    if (!found) a.values.resize(positions.size(), 0.0f);
+  }
+}
+
+Eigen::Vector3f TriangleMesh::bbox_min() const {
+  if (positions.empty()) return Eigen::Vector3f::Zero();
+  Eigen::Vector3f lo = positions.front();
+  for (const auto& p : positions) lo = lo.cwiseMin(p);
+  return lo;
+}
+
+Eigen::Vector3f TriangleMesh::bbox_max() const {
+  if (positions.empty()) return Eigen::Vector3f::Zero();
+  Eigen::Vector3f hi = positions.front();
+  for (const auto& p : positions) hi = hi.cwiseMax(p);
+  return hi;
+}
+
+}  // namespace fspm::graphics

@@ -1,0 +1,59 @@
+#pragma once
+// TriangleMesh: the indexed triangle soup every exporter and renderer consumes. Positions,
+// normals and texture coordinates are per vertex; named float attributes (age, order, light,
+// pruned, ...) are per vertex too so colouring survives interpolation in any viewer. Each
+// triangle carries a material (bark or leaf) so OBJ/MTL and glTF can split the two.
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fspm::graphics {
+
+enum class Material : std::uint8_t { kBark = 0, kLeaf = 1 };
+
+// "bark", "leaf".
+std::string_view material_name(Material material);
+
+struct VertexAttribute {
+  std::string name;
+  std::vector<float> values;  // one per vertex
+};
+
+class TriangleMesh {
+ public:
+  using Triangle = std::array<std::uint32_t, 3>;
+
+  std::vector<Eigen::Vector3f> positions;
+  std::vector<Eigen::Vector3f> normals;  // unit length
+  std::vector<Eigen::Vector2f> uvs;
+  std::vector<Triangle> triangles;  // counter-clockwise seen from outside
+  std::vector<Material> materials;  // one per triangle
+  std::vector<VertexAttribute> attributes;
+
+  std::size_t vertex_count() const { return positions.size(); }
+  std::size_t triangle_count() const { return triangles.size(); }
+  bool empty() const { return triangles.empty(); }
+
+  // Adds (or returns the existing) attribute column; new columns are sized to the vertices.
+  std::vector<float>& add_attribute(const std::string& name);
+  bool has_attribute(std::string_view name) const;
+  // Throws ValueError naming the known attributes when there is no such column.
+  std::span<const float> attribute(std::string_view name) const;
+  std::vector<std::string> attribute_names() const;
+
+  // Triangles of one material, in order (the mesher emits bark first, then leaves).
+  std::size_t triangle_count(Material material) const;
+
+  // Appends `other`, offsetting its indices; attributes missing on either side are filled with 0.
+  void append(const TriangleMesh& other);
+
+  // Axis-aligned bounds of the positions (zero when empty).
+  Eigen::Vector3f bbox_min() const;
+  Eigen::Vector3f bbox_max() const;
+};
+
+}  // namespace fspm::graphics

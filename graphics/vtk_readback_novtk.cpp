@@ -1,0 +1,12 @@
+#include "fspm/error.hpp"
+#include "graphics/vtk_readback.hpp"
+
+namespace fspm::graphics {
+
+bool vtk_available() { return false; }
+
+PolyDataInfo read_vtp_with_vtk(const std::string& path) {
+  throw ValueError("fspm was built without VTK (FSPM_WITH_VTK=OFF)", path);
+}
+
+}  // namespace fspm::graphics
