@@ -1,0 +1,311 @@
+#include "greenlab/reconstruction.hpp"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <numbers>
+
+#include "fspm/error.hpp"
+
+namespace fspm::greenlab {
+namespace {
+
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+
+std::string age_key(int p, const char* name) { return "age." + std::to_string(p) + "." + name; }
+
+// Local frame of a turtle: columns heading, left, up (heading x left = up).
+struct Frame {
+  Eigen::Matrix3d axes;
+  Eigen::Vector3d position;
+};
+
+// Per-age rotations precomputed once: phyllotaxy about the heading, branching towards the left.
+struct AgeRotations {
+  Eigen::Matrix3d phyllotaxy;
+  Eigen::Matrix3d branching;
+};
+
+Eigen::Matrix3d plagiotropic_frame(const Eigen::Vector3d& heading, const Eigen::Vector3d& left) {
+  // Massart: lateral axes lie in the horizontal plane, whatever their insertion.
+  Eigen::Vector3d h(heading.x(), heading.y(), 0.0);
+  if (h.squaredNorm() < 1e-12) h = Eigen::Vector3d(left.x(), left.y(), 0.0);
+  if (h.squaredNorm() < 1e-12) h = Eigen::Vector3d::UnitX();
+  h.normalize();
+  const Eigen::Vector3d u = Eigen::Vector3d::UnitZ();
+  Eigen::Matrix3d m;
+  m.col(0) = h;
+  m.col(1) = u.cross(h);
+  m.col(2) = u;
+  return m;
+}
+
+}  // namespace
+
+const AgeGeometry& ReconstructionParams::age(int p) const {
+  static const AgeGeometry kDefault{};
+  if (p < 1 || static_cast<std::size_t>(p) > ages.size()) return kDefault;
+  return ages[static_cast<std::size_t>(p - 1)];
+}
+
+std::map<std::string, double> geometry_metadata(const PlantParams& params) {
+  std::map<std::string, double> m;
+  m["age.count"] = static_cast<double>(params.ages.size());
+  for (const auto& a : params.ages) {
+    const int p = a.index;
+    m[age_key(p, "leaf_life_span")] = a.leaf_life_span;
+    m[age_key(p, "axis_life_span")] = a.axis_life_span;
+    m[age_key(p, "pruning_period")] = a.pruning_period;
+    m[age_key(p, "branching_angle_deg")] = a.branching_angle_deg;
+    m[age_key(p, "phyllotaxy_deg")] = a.phyllotaxy_deg;
+    m[age_key(p, "plagiotropic")] = a.orientation == Orientation::kPlagiotropic ? 1.0 : 0.0;
+    m[age_key(p, "straightening")] = a.straightening;
+    m[age_key(p, "internode_length_m")] = a.internode_length_m;
+    m[age_key(p, "internode_radius_m")] = a.internode_radius_m;
+    m[age_key(p, "radius_growth_m")] = a.radius_growth_m;
+    m[age_key(p, "leaf_length_m")] = a.leaf_length_m;
+  }
+  const auto& f = params.functional;
+  m["functional.enabled"] = f.enabled ? 1.0 : 0.0;
+  m["functional.leaf_thickness"] = f.leaf_thickness;
+  m["functional.reference_length"] = f.reference_length;
+  m["functional.allometry_b"] = f.allometry_b;
+  return m;
+}
+
+ReconstructionParams ReconstructionParams::from_metadata(const std::map<std::string, double>& m) {
+  ReconstructionParams r;
+  auto get = [&](const std::string& key, double fallback) {
+    const auto it = m.find(key);
+    return it == m.end() ? fallback : it->second;
+  };
+  const double count = get("age.count", 0.0);
+  if (!(count >= 0.0 && count <= 65535.0)) throw ValueError("invalid age.count in graph metadata");
+  r.ages.resize(static_cast<std::size_t>(count));
+  for (int p = 1; p <= static_cast<int>(r.ages.size()); ++p) {
+    AgeGeometry& a = r.ages[static_cast<std::size_t>(p - 1)];
+    a.leaf_life_span = get(age_key(p, "leaf_life_span"), a.leaf_life_span);
+    a.axis_life_span = get(age_key(p, "axis_life_span"), a.axis_life_span);
+    a.pruning_period = get(age_key(p, "pruning_period"), a.pruning_period);
+    a.branching_angle_deg = get(age_key(p, "branching_angle_deg"), a.branching_angle_deg);
+    a.phyllotaxy_deg = get(age_key(p, "phyllotaxy_deg"), a.phyllotaxy_deg);
+    a.plagiotropic = get(age_key(p, "plagiotropic"), 0.0) != 0.0;
+    a.straightening = get(age_key(p, "straightening"), a.straightening);
+    a.internode_length_m = get(age_key(p, "internode_length_m"), a.internode_length_m);
+    a.internode_radius_m = get(age_key(p, "internode_radius_m"), a.internode_radius_m);
+    a.radius_growth_m = get(age_key(p, "radius_growth_m"), a.radius_growth_m);
+    a.leaf_length_m = get(age_key(p, "leaf_length_m"), a.leaf_length_m);
+  }
+  r.from_volumes = get("functional.enabled", 0.0) != 0.0;
+  r.leaf_thickness = get("functional.leaf_thickness", r.leaf_thickness);
+  r.reference_length = get("functional.reference_length", r.reference_length);
+  r.allometry_b = get("functional.allometry_b", r.allometry_b);
+  return r;
+}
+
+InternodeDimensions internode_dimensions(double pith_volume, double ring_volume,
+                                         double reference_length, double allometry_b) {
+  InternodeDimensions d;
+  if (pith_volume <= 0.0) return d;
+  const double v_ref = std::numbers::pi * reference_length;  // annex: V_ref = pi H_ref
+  const double ratio = pith_volume / v_ref;
+  const double b = allometry_b;
+  d.length = reference_length * std::pow(ratio, b / (1.0 + b));
+  const double rp2 =
+      v_ref / (std::numbers::pi * reference_length) * std::pow(ratio, 1.0 / (1.0 + b));
+  d.pith_radius = std::sqrt(rp2);
+  d.radius = std::sqrt(rp2 + std::max(ring_volume, 0.0) / (std::numbers::pi * d.length));
+  return d;
+}
+
+TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
+                      ReconstructionStats* stats) {
+  const ReconstructionParams geo = ReconstructionParams::from_metadata(graph.metadata);
+  const double final_age = graph.final_age;
+  const double age = options.age < 0.0 ? final_age : options.age;
+  if (age > final_age + 1e-9) {
+    throw ValueError("cannot reconstruct at age " + std::to_string(age) +
+                     ": the graph was simulated to age " + std::to_string(final_age));
+  }
+  const double now = graph.birth_date + age;
+  const double final_date = graph.birth_date + final_age;
+  ReconstructionStats st;
+  st.age = age;
+  TreeGraph tree;
+  if (graph.root() == kNoRecord || graph.record(graph.root()).birth > now) {
+    if (stats) *stats = st;
+    return tree;
+  }
+
+  const std::size_t n_ages = std::max<std::size_t>(geo.ages.size(), 1);
+  std::vector<AgeRotations> rot(n_ages + 1);
+  bool any_pruning_period = false;
+  for (std::size_t p = 1; p <= n_ages; ++p) {
+    const AgeGeometry& a = geo.age(static_cast<int>(p));
+    rot[p].phyllotaxy = Eigen::AngleAxisd(a.phyllotaxy_deg * kDegToRad, Eigen::Vector3d::UnitX())
+                            .toRotationMatrix();
+    rot[p].branching =
+        Eigen::AngleAxisd(a.branching_angle_deg * kDegToRad, Eigen::Vector3d::UnitZ())
+            .toRotationMatrix();
+    any_pruning_period = any_pruning_period || a.pruning_period > 0.0;
+  }
+  auto rotations = [&](int p) -> const AgeRotations& {
+    return rot[static_cast<std::size_t>(std::clamp<int>(p, 1, static_cast<int>(n_ages)))];
+  };
+  // Jaeger 3.2.1 (sign arranged so that a positive status means present):
+  // status = organ birth + life span + pruning period - present date; > pruning period: alive,
+  // in [0, pruning period]: dead but still on the plant, < 0: pruned.
+  auto status = [&](double birth, double span, double pruning) {
+    return span <= 0.0 ? std::numeric_limits<double>::infinity() : birth + span + pruning - now;
+  };
+
+  // Upper bound on the output, so the columns are allocated once.
+  const std::uint64_t bound = graph.expanded_size();
+  tree.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(bound * 2 + 8, 1ull << 31)));
+  if (any_pruning_period) tree.add_attribute("dead", 0.0);
+
+  struct AxisStart {
+    RecordId record;
+    NodeId parent;
+    Frame frame;
+    std::uint16_t order;
+  };
+  std::vector<AxisStart> queue;
+  Frame trunk;
+  trunk.axes.col(0) = Eigen::Vector3d::UnitZ();
+  trunk.axes.col(1) = Eigen::Vector3d::UnitY();
+  trunk.axes.col(2) = Eigen::Vector3d::UnitZ().cross(Eigen::Vector3d::UnitY());
+  trunk.position.setZero();
+  if (geo.age(graph.record(graph.root()).physiological_age).plagiotropic) {
+    trunk.axes = plagiotropic_frame(Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY());
+  }
+  queue.push_back({graph.root(), kNoNode, trunk, 0});
+
+  NodeData node;
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    // Copied: queue may reallocate while this axis pushes its laterals.
+    AxisStart axis = queue[head];
+    const CompressedRecord* r = &graph.record(axis.record);
+    const AgeGeometry& axis_geo = geo.age(r->physiological_age);
+    bool axis_dead = false;
+    if (axis.order > 0) {
+      const double s = status(r->birth, axis_geo.axis_life_span, axis_geo.pruning_period);
+      if (s < 0.0) {
+        ++st.pruned_axes;
+        continue;  // the whole lateral axis has fallen
+      }
+      axis_dead = s <= axis_geo.pruning_period;
+    }
+    Frame f = axis.frame;
+    NodeId parent = axis.parent;
+    RecordId id = axis.record;
+    while (true) {
+      r = &graph.record(id);
+      const int p = r->physiological_age;
+      const AgeGeometry& g = geo.age(p);
+      const AgeRotations& rp = rotations(p);
+      double length = g.internode_length_m;
+      double r_birth = g.internode_radius_m;
+      double r_final = g.internode_radius_m + g.radius_growth_m * (final_date - r->birth);
+      if (geo.from_volumes) {
+        const auto dim = internode_dimensions(r->pith_volume, r->ring_volume, geo.reference_length,
+                                              geo.allometry_b);
+        length = dim.length;
+        r_birth = dim.pith_radius;
+        r_final = dim.radius;
+      }
+      double radius = r_final;
+      if (now < final_date && final_date > r->birth) {
+        // Jaeger 3.2.2: quadratic interpolation of the diameter from birth to the final age.
+        const double x = (now - r->birth) / (final_date - r->birth);
+        radius = r_birth + (r_final - r_birth) * x * x;
+      }
+      const Eigen::Vector3d heading = f.axes.col(0);
+      node.start = f.position;
+      f.position += heading * length;
+      node.end = f.position;
+      node.direction = heading;
+      node.length = length;
+      node.radius = radius;
+      node.birth_time = r->birth;
+      node.physiological_age = static_cast<std::uint16_t>(p);
+      node.order = axis.order;
+      node.kind = OrganKind::kInternode;
+      const NodeId internode = tree.add_node(parent, node);
+      ++st.metamers;
+      if (axis_dead) tree.attribute("dead")[internode] = 1.0;
+
+      // Laterals and the leaf sit at the top of the metamer, their azimuth given by phyllotaxy.
+      const auto ax = graph.axillaries(id);
+      if (options.leaves) {
+        const double s = status(r->birth, g.leaf_life_span, g.pruning_period);
+        if (s >= 0.0) {
+          const Eigen::Matrix3d leaf_axes = f.axes * rp.branching;
+          double leaf_length = g.leaf_length_m;
+          if (geo.from_volumes) {
+            leaf_length = std::sqrt(std::max(r->leaf_volume, 0.0) / geo.leaf_thickness);
+          }
+          node.start = f.position;
+          node.direction = leaf_axes.col(0);
+          node.end = f.position + node.direction * leaf_length;
+          node.length = leaf_length;
+          node.radius = 0.0;
+          node.kind = OrganKind::kLeaf;
+          node.order = static_cast<std::uint16_t>(axis.order + 1);
+          const NodeId leaf = tree.add_node(internode, node);
+          ++st.leaves;
+          if (any_pruning_period && s <= g.pruning_period) tree.attribute("dead")[leaf] = 1.0;
+        }
+      }
+      if (!ax.empty()) {
+        const double spread = 2.0 * std::numbers::pi / static_cast<double>(ax.size());
+        for (std::size_t k = 0; k < ax.size(); ++k) {
+          const CompressedRecord& child = graph.record(ax[k]);
+          if (child.birth > now) continue;
+          const int q = child.physiological_age;
+          Frame lf;
+          lf.position = f.position;
+          Eigen::Matrix3d around = Eigen::Matrix3d::Identity();
+          if (k > 0) {
+            around = Eigen::AngleAxisd(spread * static_cast<double>(k), Eigen::Vector3d::UnitX())
+                         .toRotationMatrix();
+          }
+          lf.axes = f.axes * around * rotations(q).branching;
+          if (geo.age(q).plagiotropic) lf.axes = plagiotropic_frame(lf.axes.col(0), lf.axes.col(1));
+          queue.push_back({ax[k], internode, lf, static_cast<std::uint16_t>(axis.order + 1)});
+        }
+      }
+      f.axes = f.axes * rp.phyllotaxy;
+      if (g.straightening > 0.0 && !g.plagiotropic) {
+        // Orthotropic axes (Rauh) turn their heading up by a fraction per metamer.
+        const Eigen::Vector3d h = f.axes.col(0);
+        const Eigen::Vector3d target = (h + g.straightening * (Eigen::Vector3d::UnitZ() - h));
+        if (target.squaredNorm() > 1e-12) {
+          f.axes = Eigen::Quaterniond::FromTwoVectors(h, target.normalized()).toRotationMatrix() *
+                   f.axes;
+        }
+      }
+      parent = internode;
+      if (r->successor == kNoRecord || graph.record(r->successor).birth > now) {
+        // Terminal flower, shown from the cycle after its metamer's growth unit.
+        if (options.flowers && r->apex == ApexState::kFlower && r->birth + 1.0 <= now + 1e-9) {
+          node.start = f.position;
+          node.direction = f.axes.col(0);
+          node.end = f.position + node.direction * (0.5 * g.leaf_length_m);
+          node.length = 0.5 * g.leaf_length_m;
+          node.radius = 0.0;
+          node.kind = OrganKind::kFlower;
+          node.order = axis.order;
+          node.birth_time = r->birth + 1.0;
+          tree.add_node(internode, node);
+          ++st.flowers;
+        }
+        break;
+      }
+      id = r->successor;
+    }
+  }
+  if (stats) *stats = st;
+  return tree;
+}
+
+}  // namespace fspm::greenlab

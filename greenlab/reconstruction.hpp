@@ -1,0 +1,78 @@
+#pragma once
+// Reconstruction (Jaeger 3): the explicit geometry of the plant at any age up to the simulated
+// one, from its compressed tree graph and a few numbers per physiological age (angles, lengths,
+// life spans) that the graph carries in its metadata.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "fspm/compressed_tree_graph.hpp"
+#include "fspm/tree_graph.hpp"
+#include "greenlab/plant_params.hpp"
+
+namespace fspm::greenlab {
+
+struct AgeGeometry {
+  double leaf_life_span = 1.0;  // 0 = never falls
+  double axis_life_span = 0.0;  // 0 = never dies
+  double pruning_period = 0.0;
+  double branching_angle_deg = 60.0;
+  double phyllotaxy_deg = 147.5;
+  bool plagiotropic = false;
+  double straightening = 0.0;
+  double internode_length_m = 1.0;
+  double internode_radius_m = 0.05;
+  double radius_growth_m = 0.0;
+  double leaf_length_m = 0.3;
+};
+
+struct ReconstructionParams {
+  std::vector<AgeGeometry> ages;  // ages[p - 1]
+  // GL1 volumes turned into dimensions by the allometry of Jaeger's annex.
+  bool from_volumes = false;
+  double leaf_thickness = 0.001;
+  double reference_length = 5.0;
+  double allometry_b = 1.0;
+
+  const AgeGeometry& age(int p) const;
+  static ReconstructionParams from_metadata(const std::map<std::string, double>& metadata);
+};
+
+// The per-age geometry of a plant description, as stored in a compressed graph's metadata.
+std::map<std::string, double> geometry_metadata(const PlantParams& params);
+
+// Internode height and radii from pith and ring volumes (Jaeger annex):
+//   H = H_ref (Vp / V_ref)^(b / (1 + b)),  Rp^2 = V_ref / (pi H_ref) (Vp / V_ref)^(1 / (1 + b)),
+//   Ri^2 = Rp^2 + Vr / (pi H),  with V_ref = pi H_ref.
+struct InternodeDimensions {
+  double length = 0.0;
+  double pith_radius = 0.0;
+  double radius = 0.0;
+};
+InternodeDimensions internode_dimensions(double pith_volume, double ring_volume,
+                                         double reference_length, double allometry_b);
+
+struct ReconstructionOptions {
+  double age = -1.0;  // plant age to rebuild (cycles since its birth); < 0: the final age
+  bool leaves = true;
+  bool flowers = true;
+};
+
+struct ReconstructionStats {
+  double age = 0.0;
+  std::uint64_t metamers = 0;
+  std::uint64_t leaves = 0;
+  std::uint64_t flowers = 0;
+  std::uint64_t pruned_axes = 0;
+  std::uint64_t components() const { return metamers + leaves; }
+};
+
+// Traverses oldest node first, axis by axis (trunk, then its laterals, then theirs): internodes
+// as kInternode nodes, leaves as kLeaf children at the top of their metamer, terminal flowers as
+// kFlower. Leaves and lateral axes are self-pruned by Jaeger's death status (3.2.1); nodes born
+// after `age` are left out and diameters interpolated quadratically between birth and the final
+// age (3.2.2). Throws ValueError when `age` is beyond the simulated age.
+TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
+                      ReconstructionStats* stats = nullptr);
+
+}  // namespace fspm::greenlab
