@@ -1,0 +1,2 @@
+angle increment: 20
+initial line width: 0.1

@@ -1,0 +1,2 @@
+angle increment: 85
+initial line width: 0.05

@@ -1,0 +1,2 @@
+angle increment: 25.7
+initial line width: 0.1

@@ -1,0 +1,214 @@
+#include "lsystem/turtle.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "fspm/error.hpp"
+#include "lsystem/turtle_core.hpp"
+
+namespace fspm::lsystem {
+namespace {
+
+std::string lower(std::string_view s) {
+  std::string out;
+  for (char c : s) {
+    if (c != ' ' && c != '\t')
+      out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return out;
+}
+
+std::vector<double> numbers(std::string_view text, const std::string& file, int line, int column) {
+  std::vector<double> out;
+  std::string buffer(text);
+  for (char& c : buffer) {
+    if (c == ',') c = ' ';
+  }
+  const char* p = buffer.c_str();
+  for (;;) {
+    while (*p == ' ' || *p == '\t') ++p;
+    if (!*p) break;
+    char* end = nullptr;
+    const double v = std::strtod(p, &end);
+    if (end == p) {
+      // Trailing words such as units ("pixels", "p") end the list.
+      if (std::isalpha(static_cast<unsigned char>(*p))) break;
+      throw ParseError("expected a number", file, line,
+                       column + static_cast<int>(p - buffer.c_str()));
+    }
+    out.push_back(v);
+    p = end;
+  }
+  return out;
+}
+
+class GraphBuilder {
+ public:
+  explicit GraphBuilder(Interpretation& out) : out_(out) {}
+
+  void forward(const Eigen::Vector3d& start, const Eigen::Vector3d& heading, double length,
+               detail::Frame& f) {
+    NodeData d;
+    d.start = start;
+    d.end = f.position;
+    d.direction = heading;
+    d.length = std::abs(length);
+    d.radius = f.width * radius_per_width_;
+    d.order = static_cast<std::uint16_t>(std::min(f.depth, 65535));
+    d.kind = OrganKind::kInternode;
+    f.node = add(f.node, d, f.color);
+  }
+  void polygon_begin(const detail::Frame& f) { polygons_.push_back({f.node, {}}); }
+  void vertex(const Eigen::Vector3d& v) {
+    if (polygons_.empty()) return;
+    auto& vs = polygons_.back().second;
+    if (vs.empty() || !vs.back().isApprox(v, 1e-12)) vs.push_back(v);
+  }
+  void polygon_end(const detail::Frame& f) {
+    auto [parent, vs] = std::move(polygons_.back());
+    polygons_.pop_back();
+    if (vs.size() >= 2 && vs.front().isApprox(vs.back(), 1e-12)) vs.pop_back();
+    if (vs.size() < 3) return;
+    // Newell's formula: area = |sum v_i x v_{i+1}| / 2.
+    Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+    std::size_t far = 0;
+    double far_d = -1.0;
+    for (std::size_t k = 0; k < vs.size(); ++k) {
+      normal += vs[k].cross(vs[(k + 1) % vs.size()]);
+      const double dist = (vs[k] - vs[0]).squaredNorm();
+      if (dist > far_d) {
+        far_d = dist;
+        far = k;
+      }
+    }
+    NodeData d;
+    d.start = vs[0];
+    d.end = vs[far];
+    d.direction = (vs[far] - vs[0]).normalized();
+    d.length = std::sqrt(far_d);
+    d.order = static_cast<std::uint16_t>(std::min(f.depth, 65535));
+    d.kind = OrganKind::kLeaf;
+    const NodeId id = add(parent, d, f.color);
+    out_.leaves.push_back({id, std::move(vs), 0.5 * normal.norm()});
+  }
+  void surface(double scale, const detail::Frame& f) {
+    NodeData d;
+    d.start = f.position;
+    d.end = f.position + f.heading * scale;
+    d.direction = f.heading;
+    d.length = std::abs(scale);
+    d.order = static_cast<std::uint16_t>(std::min(f.depth, 65535));
+    d.kind = OrganKind::kLeaf;
+    add(f.node, d, f.color);
+  }
+  void query(std::size_t, detail::Action, const detail::Frame&) {}
+
+  double radius_per_width_ = 0.5;
+  std::vector<double> colors_;
+
+ private:
+  NodeId add(NodeId parent, const NodeData& d, int color) {
+    // A graph has one root: modules drawn before any internode (or after popping back to the
+    // base) hang from the first internode.
+    if (parent == kNoNode && !out_.tree.empty()) parent = 0;
+    const NodeId id = out_.tree.add_node(parent, d);
+    colors_.push_back(color);
+    return id;
+  }
+
+  Interpretation& out_;
+  std::vector<std::pair<NodeId, std::vector<Eigen::Vector3d>>> polygons_;
+};
+
+}  // namespace
+
+TurtleSettings parse_view(std::string_view text, const std::string& name, TurtleSettings s) {
+  std::istringstream in{std::string(text)};
+  std::string line;
+  int line_no = 0;
+  while (std::getline(in, line)) {
+    ++line_no;
+    const std::size_t colon = line.find(':');
+    if (colon == std::string::npos) continue;
+    const std::string key = lower(line.substr(0, colon));
+    const std::string_view value = std::string_view(line).substr(colon + 1);
+    const int column = static_cast<int>(colon) + 2;
+    auto one = [&](const char* what) {
+      const auto v = numbers(value, name, line_no, column);
+      if (v.empty()) throw ParseError(std::string("expected ") + what, name, line_no, column);
+      return v[0];
+    };
+    if (key == "anglefactor") {
+      const double n = one("an angle factor (the angle is 360 / n)");
+      if (n == 0.0) throw ParseError("angle factor must not be 0", name, line_no, column);
+      s.angle_deg = 360.0 / n;
+    } else if (key == "angleincrement") {
+      s.angle_deg = one("an angle increment in degrees");
+    } else if (key == "initiallinewidth") {
+      s.initial_line_width = one("a line width");
+    } else if (key == "linewidthincrement") {
+      s.line_width_increment = one("a line width increment");
+    } else if (key == "tropismdirection") {
+      const auto v = numbers(value, name, line_no, column);
+      if (v.size() < 3) {
+        throw ParseError("expected three numbers x,y,z for the tropism direction", name, line_no,
+                         column);
+      }
+      s.tropism_direction = Eigen::Vector3d(v[0], -v[2], v[1]);  // cpfg y-up -> fspm z-up
+    } else if (key == "initialelasticity") {
+      s.initial_elasticity = one("an elasticity");
+    } else if (key == "elasticityincrement") {
+      s.elasticity_increment = one("an elasticity increment");
+    } else if (key == "step" || key == "initialstep") {
+      s.step = one("a step length");
+    }
+  }
+  return s;
+}
+
+TurtleSettings read_view_file(const std::string& path, TurtleSettings base) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError("cannot open view file '" + path + "'", path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return parse_view(ss.str(), path, base);
+}
+
+TurtleSettings view_for_lsystem(const std::string& lsystem_path) {
+  std::filesystem::path p(lsystem_path);
+  p.replace_extension(".v");
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(p, ec)) return read_view_file(p.string());
+  return {};
+}
+
+Interpretation interpret(const ModuleString& s, const SymbolTable& symbols,
+                         const TurtleSettings& settings) {
+  Interpretation out;
+  const auto actions = detail::action_table(symbols);
+  std::size_t drawn = 0;
+  for (SymbolId sym : s.symbols()) {
+    const auto a = actions[sym];
+    drawn += (a == detail::Action::kForward || a == detail::Action::kForwardNoVertex) ? 1 : 0;
+  }
+  out.tree.reserve(drawn);
+  GraphBuilder builder(out);
+  builder.radius_per_width_ = settings.radius_per_width;
+  builder.colors_.reserve(drawn);
+  detail::walk(s, actions, settings, builder);
+  out.tree.add_attribute("color_index");
+  auto colors = out.tree.attribute("color_index");
+  std::copy(builder.colors_.begin(), builder.colors_.end(), colors.begin());
+  if (!out.leaves.empty()) {
+    out.tree.add_attribute("leaf_area");
+    auto area = out.tree.attribute("leaf_area");
+    for (const LeafPolygon& leaf : out.leaves) area[leaf.node] = leaf.area;
+  }
+  return out;
+}
+
+}  // namespace fspm::lsystem

@@ -1,0 +1,266 @@
+#pragma once
+// The turtle's state machine shared by interpretation (turtle.cpp) and the query pass
+// (query_pass.cpp). A visitor receives the drawing events; geometry lives here only.
+#include <Eigen/Geometry>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "fspm/error.hpp"
+#include "lsystem/module_string.hpp"
+#include "lsystem/turtle.hpp"
+
+namespace fspm::lsystem::detail {
+
+enum class Action : std::uint8_t {
+  kNone,
+  kForward,
+  kMove,
+  kForwardNoVertex,
+  kMoveNoVertex,
+  kLeft,
+  kRight,
+  kPitchDown,
+  kPitchUp,
+  kRollLeft,
+  kRollRight,
+  kTurnAround,
+  kRollHorizontal,
+  kPush,
+  kPop,
+  kWidthDown,
+  kWidthUp,
+  kColorUp,
+  kColorDown,
+  kPolygonBegin,
+  kPolygonVertex,
+  kPolygonEnd,
+  kSurface,
+  kQueryP,
+  kQueryH,
+  kQueryU,
+  kQueryL,
+  kCommunicate
+};
+
+inline std::vector<Action> action_table(const SymbolTable& symbols) {
+  std::vector<Action> t(symbols.size(), Action::kNone);
+  for (std::size_t i = 0; i < symbols.size(); ++i) {
+    const std::string& n = symbols.name(static_cast<SymbolId>(i));
+    Action a = Action::kNone;
+    if (n == "F")
+      a = Action::kForward;
+    else if (n == "f")
+      a = Action::kMove;
+    else if (n == "G")
+      a = Action::kForwardNoVertex;
+    else if (n == "g")
+      a = Action::kMoveNoVertex;
+    else if (n == "+")
+      a = Action::kLeft;
+    else if (n == "-")
+      a = Action::kRight;
+    else if (n == "&")
+      a = Action::kPitchDown;
+    else if (n == "^")
+      a = Action::kPitchUp;
+    else if (n == "\\")
+      a = Action::kRollLeft;
+    else if (n == "/")
+      a = Action::kRollRight;
+    else if (n == "|")
+      a = Action::kTurnAround;
+    else if (n == "$")
+      a = Action::kRollHorizontal;
+    else if (n == "[")
+      a = Action::kPush;
+    else if (n == "]")
+      a = Action::kPop;
+    else if (n == "!")
+      a = Action::kWidthDown;
+    else if (n == "#")
+      a = Action::kWidthUp;
+    else if (n == ";" || n == "'")
+      a = Action::kColorUp;
+    else if (n == ",")
+      a = Action::kColorDown;
+    else if (n == "{")
+      a = Action::kPolygonBegin;
+    else if (n == ".")
+      a = Action::kPolygonVertex;
+    else if (n == "}")
+      a = Action::kPolygonEnd;
+    else if (n.size() == 2 && n[0] == '~')
+      a = Action::kSurface;
+    else if (n == "?P")
+      a = Action::kQueryP;
+    else if (n == "?H")
+      a = Action::kQueryH;
+    else if (n == "?U")
+      a = Action::kQueryU;
+    else if (n == "?L")
+      a = Action::kQueryL;
+    else if (n == "?E")
+      a = Action::kCommunicate;
+    t[i] = a;
+  }
+  return t;
+}
+
+struct Frame {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  Eigen::Vector3d heading = Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d left = -Eigen::Vector3d::UnitX();
+  Eigen::Vector3d up = -Eigen::Vector3d::UnitY();
+  double width = 1.0;
+  int color = 0;
+  int depth = 0;
+  NodeId node = kNoNode;
+};
+
+// Rotates a toward b by angle (radians) in their plane: a' = a cos + b sin, b' = -a sin + b cos.
+inline void rotate_pair(Eigen::Vector3d& a, Eigen::Vector3d& b, double angle_rad) {
+  const double c = std::cos(angle_rad);
+  const double s = std::sin(angle_rad);
+  const Eigen::Vector3d a2 = a * c + b * s;
+  b = b * c - a * s;
+  a = a2;
+}
+
+// Visitor interface (static): forward(start, frame, length) after the move, polygon events,
+// query(i, action, frame).
+template <class Visitor>
+void walk(const ModuleString& s, const std::vector<Action>& actions, const TurtleSettings& settings,
+          Visitor& visitor) {
+  constexpr double kRad = std::numbers::pi / 180.0;
+  const double default_angle = settings.angle_deg * kRad;
+  Frame f;
+  f.width = settings.initial_line_width;
+  std::vector<Frame> stack;
+  Eigen::Vector3d t = settings.tropism_direction;
+  const bool tropism = t.squaredNorm() > 0.0 &&
+                       (settings.initial_elasticity != 0.0 || settings.elasticity_increment != 0.0);
+  if (tropism) t.normalize();
+  int polygon_depth = 0;
+  const std::size_t n = s.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Action a = actions[s.symbol(i)];
+    if (a == Action::kNone) continue;
+    const auto p = s.parameters(i);
+    const bool has = !p.empty();
+    switch (a) {
+      case Action::kForward:
+      case Action::kForwardNoVertex:
+      case Action::kMove:
+      case Action::kMoveNoVertex: {
+        const double length = has ? p[0] : settings.step;
+        const Eigen::Vector3d start = f.position;
+        const Eigen::Vector3d heading = f.heading;
+        f.position += f.heading * length;
+        if (polygon_depth > 0) {
+          if (a == Action::kForward || a == Action::kMove) visitor.vertex(f.position);
+          break;
+        }
+        if (a == Action::kForward || a == Action::kForwardNoVertex) {
+          visitor.forward(start, heading, length, f);
+          if (tropism) {
+            // ABOP section 2.2: rotate by e |H x T| about H x T.
+            const Eigen::Vector3d axis = f.heading.cross(t);
+            const double norm = axis.norm();
+            const double e = settings.initial_elasticity + settings.elasticity_increment * f.depth;
+            if (norm > 1e-12 && e != 0.0) {
+              const Eigen::AngleAxisd r(e * norm, axis / norm);
+              f.heading = (r * f.heading).normalized();
+              f.left = (r * f.left).normalized();
+              f.up = f.heading.cross(f.left);
+            }
+          }
+        }
+        break;
+      }
+      case Action::kLeft:
+        rotate_pair(f.heading, f.left, has ? p[0] * kRad : default_angle);
+        break;
+      case Action::kRight:
+        rotate_pair(f.heading, f.left, -(has ? p[0] * kRad : default_angle));
+        break;
+      case Action::kPitchDown:
+        rotate_pair(f.heading, f.up, -(has ? p[0] * kRad : default_angle));
+        break;
+      case Action::kPitchUp:
+        rotate_pair(f.heading, f.up, has ? p[0] * kRad : default_angle);
+        break;
+      case Action::kRollLeft:
+        rotate_pair(f.left, f.up, has ? p[0] * kRad : default_angle);
+        break;
+      case Action::kRollRight:
+        rotate_pair(f.left, f.up, -(has ? p[0] * kRad : default_angle));
+        break;
+      case Action::kTurnAround:
+        f.heading = -f.heading;
+        f.left = -f.left;
+        break;
+      case Action::kRollHorizontal: {
+        // ABOP eq. 2.2: L = V x H / |V x H| with V opposite to gravity, U = H x L.
+        const Eigen::Vector3d v = Eigen::Vector3d::UnitZ();
+        const Eigen::Vector3d l = v.cross(f.heading);
+        if (l.norm() > 1e-12) {
+          f.left = l.normalized();
+          f.up = f.heading.cross(f.left);
+        }
+        break;
+      }
+      case Action::kPush:
+        stack.push_back(f);
+        ++f.depth;
+        break;
+      case Action::kPop:
+        if (stack.empty()) {
+          throw ValueError("']' without a matching '[' at module " + std::to_string(i));
+        }
+        f = stack.back();
+        stack.pop_back();
+        break;
+      case Action::kWidthDown:
+        f.width = has ? p[0] : f.width - settings.line_width_increment;
+        break;
+      case Action::kWidthUp:
+        f.width = has ? p[0] : f.width + settings.line_width_increment;
+        break;
+      case Action::kColorUp:
+        f.color = has ? static_cast<int>(p[0]) : f.color + 1;
+        break;
+      case Action::kColorDown:
+        f.color = has ? static_cast<int>(p[0]) : f.color - 1;
+        break;
+      case Action::kPolygonBegin:
+        ++polygon_depth;
+        visitor.polygon_begin(f);
+        break;
+      case Action::kPolygonVertex:
+        if (polygon_depth > 0) visitor.vertex(f.position);
+        break;
+      case Action::kPolygonEnd:
+        if (polygon_depth == 0) {
+          throw ValueError("'}' without a matching '{' at module " + std::to_string(i));
+        }
+        --polygon_depth;
+        visitor.polygon_end(f);
+        break;
+      case Action::kSurface:
+        visitor.surface(has ? p[0] : 1.0, f);
+        break;
+      case Action::kQueryP:
+      case Action::kQueryH:
+      case Action::kQueryU:
+      case Action::kQueryL:
+      case Action::kCommunicate:
+        visitor.query(i, a, f);
+        break;
+      case Action::kNone:
+        break;
+    }
+  }
+}
+
+}  // namespace fspm::lsystem::detail
