@@ -151,9 +151,9 @@ TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOpti
   auto rotations = [&](int p) -> const AgeRotations& {
     return rot[static_cast<std::size_t>(std::clamp<int>(p, 1, static_cast<int>(n_ages)))];
   };
-  // Jaeger 3.2.1 (sign arranged so that a positive status means present):
+  // Jaeger 3.2.1, sign arranged so that a positive status means present:
   // status = organ birth + life span + pruning period - present date; > pruning period: alive,
-  // in [0, pruning period]: dead but still on the plant, < 0: pruned.
+  // in (0, pruning period]: dead but still on the plant, <= 0: pruned.
   auto status = [&](double birth, double span, double pruning) {
     return span <= 0.0 ? std::numeric_limits<double>::infinity() : birth + span + pruning - now;
   };
@@ -189,7 +189,7 @@ TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOpti
     bool axis_dead = false;
     if (axis.order > 0) {
       const double s = status(r->birth, axis_geo.axis_life_span, axis_geo.pruning_period);
-      if (s < 0.0) {
+      if (s <= 0.0) {
         ++st.pruned_axes;
         continue;  // the whole lateral axis has fallen
       }
@@ -232,13 +232,13 @@ TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOpti
       node.kind = OrganKind::kInternode;
       const NodeId internode = tree.add_node(parent, node);
       ++st.metamers;
-      if (axis_dead) tree.attribute("dead")[internode] = 1.0;
+      if (axis_dead && any_pruning_period) tree.attribute("dead")[internode] = 1.0;
 
       // Laterals and the leaf sit at the top of the metamer, their azimuth given by phyllotaxy.
       const auto ax = graph.axillaries(id);
       if (options.leaves) {
         const double s = status(r->birth, g.leaf_life_span, g.pruning_period);
-        if (s >= 0.0) {
+        if (s > 0.0) {
           const Eigen::Matrix3d leaf_axes = f.axes * rp.branching;
           double leaf_length = g.leaf_length_m;
           if (geo.from_volumes) {
