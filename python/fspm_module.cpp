@@ -1,0 +1,247 @@
+// Python bindings (pybind11). Long computations release the GIL; tree columns are exposed as
+// numpy arrays that view the C++ memory and keep the Tree alive.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "fspm/constrained_edit_distance.hpp"
+#include "fspm/error.hpp"
+#include "fspm/newick_format.hpp"
+#include "fspm/tree_file.hpp"
+#include "fspm/tree_summary.hpp"
+#include "lsystem/derivation.hpp"
+#include "lsystem/lsystem.hpp"
+#include "lsystem/parser.hpp"
+#include "lsystem/turtle.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+using fspm::TreeGraph;
+
+// A read-only 1-D (or N x 3) numpy view of a column owned by `owner`.
+template <typename T>
+py::array column(const std::span<const T> values, py::handle owner, std::size_t width = 1) {
+  std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(values.size())};
+  std::vector<py::ssize_t> strides{static_cast<py::ssize_t>(sizeof(T) * width)};
+  if (width > 1) {
+    shape.push_back(static_cast<py::ssize_t>(width));
+    strides.push_back(sizeof(double));
+  }
+  using Scalar = std::conditional_t<std::is_same_v<T, Eigen::Vector3d>, double, T>;
+  py::array a(py::dtype::of<Scalar>(), shape, strides,
+              reinterpret_cast<const Scalar*>(values.data()), owner);
+  py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+  return a;
+}
+
+py::dict summary_dict(const TreeGraph& t) {
+  const fspm::TreeSummary s = fspm::summarize(t);
+  py::dict d;
+  d["nodes"] = s.nodes;
+  d["internodes"] = s.internodes;
+  d["leaves"] = s.leaves;
+  d["flowers"] = s.flowers;
+  d["buds"] = s.buds;
+  d["tips"] = s.tips;
+  d["max_order"] = s.max_order;
+  d["max_depth"] = s.max_depth;
+  d["height"] = s.height_m;
+  d["total_length"] = s.total_length_m;
+  return d;
+}
+
+fspm::lsystem::LSystem load_lsystem(const std::string& path,
+                                    const std::map<std::string, std::string>& defines) {
+  return fspm::lsystem::parse_lsystem_file(path, defines);
+}
+
+fspm::lsystem::DeriveOptions derive_options(std::optional<int> steps,
+                                            std::optional<std::uint64_t> seed) {
+  fspm::lsystem::DeriveOptions o;
+  o.steps = steps;
+  o.seed = seed;
+  return o;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_fspm, m) {
+  m.doc() = "fspm core bindings";
+
+  static py::exception<fspm::Error> error(m, "Error", PyExc_RuntimeError);
+  static py::exception<fspm::ParseError> parse_error(m, "ParseError", error.ptr());
+  static py::exception<fspm::IoError> io_error(m, "IoError", error.ptr());
+  static py::exception<fspm::ValueError> value_error(m, "ValueError_", error.ptr());
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const fspm::ParseError& e) {
+      PyErr_SetString(parse_error.ptr(), e.what());
+    } catch (const fspm::IoError& e) {
+      PyErr_SetString(io_error.ptr(), e.what());
+    } catch (const fspm::ValueError& e) {
+      PyErr_SetString(value_error.ptr(), e.what());
+    } catch (const fspm::Error& e) {
+      PyErr_SetString(error.ptr(), e.what());
+    }
+  });
+
+  py::class_<TreeGraph>(m, "Tree", "A plant's tree graph: one node per internode or organ")
+      .def(py::init<>())
+      .def("__len__", &TreeGraph::size)
+      .def("__repr__",
+           [](const TreeGraph& t) {
+             return "<fspm.Tree with " + std::to_string(t.size()) + " nodes>";
+           })
+      .def_property_readonly(
+          "parents",
+          [](py::object self) { return column(self.cast<const TreeGraph&>().parents(), self); })
+      .def_property_readonly(
+          "starts",
+          [](py::object self) { return column(self.cast<const TreeGraph&>().starts(), self, 3); })
+      .def_property_readonly(
+          "ends",
+          [](py::object self) { return column(self.cast<const TreeGraph&>().ends(), self, 3); })
+      .def_property_readonly("directions",
+                             [](py::object self) {
+                               return column(self.cast<const TreeGraph&>().directions(), self, 3);
+                             })
+      .def_property_readonly(
+          "lengths",
+          [](py::object self) { return column(self.cast<const TreeGraph&>().lengths(), self); })
+      .def_property_readonly(
+          "radii",
+          [](py::object self) { return column(self.cast<const TreeGraph&>().radii(), self); })
+      .def_property_readonly(
+          "birth_times",
+          [](py::object self) { return column(self.cast<const TreeGraph&>().birth_times(), self); })
+      .def_property_readonly(
+          "orders",
+          [](py::object self) { return column(self.cast<const TreeGraph&>().orders(), self); })
+      .def_property_readonly("physiological_ages",
+                             [](py::object self) {
+                               return column(self.cast<const TreeGraph&>().physiological_ages(),
+                                             self);
+                             })
+      .def_property_readonly(
+          "kinds",
+          [](py::object self) {
+            const auto k = self.cast<const TreeGraph&>().kinds();
+            return column(std::span<const std::uint8_t>(
+                              reinterpret_cast<const std::uint8_t*>(k.data()), k.size()),
+                          self);
+          },
+          "Organ kinds: 0 internode, 1 leaf, 2 flower, 3 bud")
+      .def("attribute_names", &TreeGraph::attribute_names)
+      .def(
+          "attribute",
+          [](py::object self, const std::string& name) {
+            const auto values = self.cast<const TreeGraph&>().attribute(name);
+            return column(values, self);
+          },
+          py::arg("name"), "A user attribute column (read-only view)")
+      .def("summary", &summary_dict, "Node counts, height and total length");
+
+  m.def(
+      "read_tree",
+      [](const std::string& path, const std::string& format) {
+        py::gil_scoped_release release;
+        return fspm::read_tree_file(path, format);
+      },
+      py::arg("path"), py::arg("format") = "", "Read a .tree, .treeb or .nwk file");
+  m.def(
+      "write_tree",
+      [](const TreeGraph& t, const std::string& path, const std::string& format) {
+        py::gil_scoped_release release;
+        fspm::write_tree_file(t, path, format);
+      },
+      py::arg("tree"), py::arg("path"), py::arg("format") = "",
+      "Write a tree (.tree, .treeb, .nwk or .mtg), atomically");
+  m.def(
+      "parse_newick", [](const std::string& text) { return fspm::parse_newick(text); },
+      py::arg("text"));
+  m.def(
+      "to_newick", [](const TreeGraph& t) { return fspm::to_newick(t); }, py::arg("tree"));
+
+  m.def(
+      "distance",
+      [](const TreeGraph& a, const TreeGraph& b, const std::string& cost,
+         const std::vector<std::string>& attributes, std::optional<double> main_skeleton,
+         bool mapping) {
+        fspm::EditDistanceOptions o;
+        o.cost = fspm::edit_cost_kind_from_name(cost);
+        o.attributes = attributes;
+        o.main_skeleton_radius_m = main_skeleton;
+        o.with_mapping = mapping;
+        fspm::EditDistanceResult r;
+        {
+          py::gil_scoped_release release;
+          r = fspm::constrained_edit_distance(a, b, o);
+        }
+        py::dict d;
+        d["distance"] = r.distance;
+        d["nodes_a"] = r.nodes_a;
+        d["nodes_b"] = r.nodes_b;
+        if (mapping) d["mapping"] = r.mapping;
+        return d;
+      },
+      py::arg("a"), py::arg("b"), py::arg("cost") = "topological",
+      py::arg("attributes") = std::vector<std::string>{}, py::arg("main_skeleton") = py::none(),
+      py::arg("mapping") = false,
+      "Constrained edit distance (Zhang; Ferraro and Godin): topological, absolute or "
+      "standardized");
+
+  m.def(
+      "lsystem_derive",
+      [](const std::string& path, std::optional<int> steps, std::optional<std::uint64_t> seed,
+         const std::map<std::string, std::string>& defines) {
+        py::dict d;
+        std::vector<std::uint64_t> per_symbol;
+        int done = 0;
+        std::size_t modules = 0;
+        fspm::lsystem::LSystem sys;
+        {
+          py::gil_scoped_release release;
+          sys = load_lsystem(path, defines);
+          fspm::lsystem::Derivation der(sys, derive_options(steps, seed));
+          der.run();
+          done = der.steps_done();
+          modules = der.string().size();
+          per_symbol.assign(sys.symbols.size(), 0);
+          for (auto id : der.string().symbols()) ++per_symbol[id];
+        }
+        py::dict symbols;
+        for (std::size_t i = 0; i < per_symbol.size(); ++i) {
+          if (per_symbol[i] != 0) {
+            symbols[py::str(sys.symbols.name(static_cast<fspm::lsystem::SymbolId>(i)))] =
+                per_symbol[i];
+          }
+        }
+        d["steps"] = done;
+        d["modules"] = modules;
+        d["symbols"] = symbols;
+        return d;
+      },
+      py::arg("path"), py::arg("steps") = py::none(), py::arg("seed") = py::none(),
+      py::arg("defines") = std::map<std::string, std::string>{},
+      "Derive an L-system file: steps, modules and the count of each module name");
+
+  m.def(
+      "lsystem_interpret",
+      [](const std::string& path, std::optional<int> steps, std::optional<std::uint64_t> seed,
+         const std::map<std::string, std::string>& defines) {
+        py::gil_scoped_release release;
+        const fspm::lsystem::LSystem sys = load_lsystem(path, defines);
+        const fspm::lsystem::TurtleSettings view = fspm::lsystem::view_for_lsystem(path);
+        auto options = derive_options(steps, seed);
+        options.turtle = &view;
+        fspm::lsystem::Derivation der(sys, options);
+        der.run();
+        return fspm::lsystem::interpret(der.interpretation_string(), sys.symbols, view).tree;
+      },
+      py::arg("path"), py::arg("steps") = py::none(), py::arg("seed") = py::none(),
+      py::arg("defines") = std::map<std::string, std::string>{},
+      "Derive an L-system file and draw it into a Tree");
+}

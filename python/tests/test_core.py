@@ -1,0 +1,66 @@
+"""Tests of the fspm Python module against independent expectations."""
+import os
+import pathlib
+
+import numpy as np
+import pytest
+
+import fspm
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+
+
+def test_newick_round_trip_and_labels():
+    t = fspm.parse_newick("(100,(200,300)1)1000;")
+    assert len(t) == 5
+    np.testing.assert_array_equal(t.attribute("label"), [1000, 100, 1, 200, 300])
+    np.testing.assert_array_equal(t.parents[1:], [0, 0, 2, 2])
+    assert fspm.to_newick(t) == "(100,(200,300)1)1000;"
+
+
+def test_columns_are_read_only_views_without_copy():
+    t = fspm.parse_newick("((1,2)3,4)5;")
+    a, b = t.radii, t.radii
+    assert a.ctypes.data == b.ctypes.data  # same C++ memory, no copy
+    assert not a.flags.writeable
+    assert t.starts.shape == (len(t), 3)
+    del t
+    assert a.sum() == 0.0  # the view keeps the tree alive
+
+
+def test_errors_are_python_exceptions_with_locations(tmp_path):
+    with pytest.raises(fspm.ParseError, match=r"1:4: expected a numeric node label"):
+        fspm.parse_newick("(1,abc);")
+    with pytest.raises(fspm.IoError):
+        fspm.read_tree(str(tmp_path / "missing.tree"))
+    with pytest.raises(TypeError):
+        fspm.read_tree(42)
+
+
+def test_write_and_read_every_format(tmp_path):
+    t = fspm.parse_newick("((1,2)3,(4,(5,6)7)8)9;")
+    for ext in ("tree", "treeb", "nwk"):
+        path = str(tmp_path / f"t.{ext}")
+        fspm.write_tree(t, path)
+        back = fspm.read_tree(path)
+        assert fspm.to_newick(back) == "((1,2)3,(4,(5,6)7)8)9;"
+    assert back.summary()["tips"] == 5
+
+
+def test_topological_distance_of_one_inserted_node():
+    # B is A with one node inserted above the two leaves: exactly one edit.
+    a = fspm.parse_newick("(1,2)3;")
+    b = fspm.parse_newick("((1,2)4)3;")
+    r = fspm.distance(a, b, mapping=True)
+    assert r["distance"] == 1.0
+    assert r["nodes_a"] == 3 and r["nodes_b"] == 4
+    assert len(r["mapping"]) == 3
+
+
+def test_lsystem_derive_matches_closed_form():
+    # ABOP Fig. 1.24a: F -> F[+F]F[-F]F, so after n steps there are 5^n F modules.
+    r = fspm.lsystem_derive(str(ROOT / "examples/lsystems/abop_1_24a.l"), steps=3)
+    assert r["steps"] == 3
+    assert r["symbols"]["F"] == 5 ** 3
+    tree = fspm.lsystem_interpret(str(ROOT / "examples/lsystems/abop_1_24a.l"), steps=2)
+    assert tree.summary()["internodes"] == 5 ** 2
