@@ -1,0 +1,23 @@
+#include "fspm/error.hpp"
+#include "graphics/image.hpp"
+#include "graphics/render.hpp"
+
+namespace fspm::graphics {
+
+bool render_available() { return false; }
+bool display_available() { return false; }
+
+Image render_mesh(const TriangleMesh& mesh, const RenderOptions& options) {
+  if (!options.color_by.empty()) (void)mesh.attribute(options.color_by);
+  throw ValueError("fspm was built without VTK (FSPM_WITH_VTK=OFF): rendering is not available");
+}
+
+void write_image(const Image&, const std::string& path) {
+  throw ValueError("fspm was built without OpenImageIO (FSPM_WITH_VTK=OFF)", path);
+}
+
+Image read_image(const std::string& path) {
+  throw ValueError("fspm was built without OpenImageIO (FSPM_WITH_VTK=OFF)", path);
+}
+
+}  // namespace fspm::graphics

@@ -1,0 +1,249 @@
+// VTK offscreen rendering of a TriangleMesh. The window is created off screen on the current X
+// display (a virtual one from xvfb-run is enough) and read back into an Image.
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkFloatArray.h>
+#include <vtkIdTypeArray.h>
+#include <vtkImageData.h>
+#include <vtkLightKit.h>
+#include <vtkLookupTable.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+
+#include "fspm/error.hpp"
+#include "graphics/render.hpp"
+#include "graphics/x_display.hpp"
+
+namespace fspm::graphics {
+namespace {
+
+constexpr unsigned char kBarkRgb[3] = {115, 82, 51};
+constexpr unsigned char kLeafRgb[3] = {64, 140, 38};
+
+vtkNew<vtkPolyData> to_polydata(const TriangleMesh& mesh, const std::string& color_by) {
+  vtkNew<vtkPolyData> poly;
+  const auto nv = static_cast<vtkIdType>(mesh.vertex_count());
+  const auto nt = static_cast<vtkIdType>(mesh.triangle_count());
+  vtkNew<vtkFloatArray> xyz;
+  xyz->SetNumberOfComponents(3);
+  xyz->SetNumberOfTuples(nv);
+  std::memcpy(xyz->GetPointer(0), mesh.positions.data(), sizeof(float) * 3 * nv);
+  vtkNew<vtkPoints> points;
+  points->SetData(xyz);
+  poly->SetPoints(points);
+
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfTuples(nt + 1);
+  connectivity->SetNumberOfTuples(3 * nt);
+  for (vtkIdType t = 0; t <= nt; ++t) offsets->SetValue(t, 3 * t);
+  for (vtkIdType t = 0; t < nt; ++t) {
+    for (int k = 0; k < 3; ++k) connectivity->SetValue(3 * t + k, mesh.triangles[t][k]);
+  }
+  vtkNew<vtkCellArray> cells;
+  cells->SetData(offsets, connectivity);
+  poly->SetPolys(cells);
+
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(nv);
+  std::memcpy(normals->GetPointer(0), mesh.normals.data(), sizeof(float) * 3 * nv);
+  poly->GetPointData()->SetNormals(normals);
+
+  if (!color_by.empty()) {
+    const auto values = mesh.attribute(color_by);
+    vtkNew<vtkFloatArray> scalars;
+    scalars->SetName(color_by.c_str());
+    scalars->SetNumberOfTuples(nv);
+    std::copy(values.begin(), values.end(), scalars->GetPointer(0));
+    poly->GetPointData()->SetScalars(scalars);
+  } else {
+    vtkNew<vtkUnsignedCharArray> colors;
+    colors->SetName("material_rgb");
+    colors->SetNumberOfComponents(3);
+    colors->SetNumberOfTuples(nt);
+    for (vtkIdType t = 0; t < nt; ++t) {
+      const unsigned char* rgb = mesh.materials[t] == Material::kLeaf ? kLeafRgb : kBarkRgb;
+      colors->SetTypedTuple(t, rgb);
+    }
+    poly->GetCellData()->SetScalars(colors);
+  }
+  return poly;
+}
+
+void place_camera(vtkRenderer* renderer, View view, const Eigen::Vector3f& lo,
+                  const Eigen::Vector3f& hi) {
+  const Eigen::Vector3d center = (0.5f * (lo + hi)).cast<double>();
+  Eigen::Vector3d dir = Eigen::Vector3d(1.0, -1.0, 0.8).normalized();  // focal point to eye
+  Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+  switch (view) {
+    case View::kFront:
+      dir = -Eigen::Vector3d::UnitY();
+      break;
+    case View::kSide:
+      dir = Eigen::Vector3d::UnitX();
+      break;
+    case View::kTop:
+      dir = Eigen::Vector3d::UnitZ();
+      up = Eigen::Vector3d::UnitY();
+      break;
+    case View::kIso:
+      dir = Eigen::Vector3d(1.0, -1.0, 0.8).normalized();
+      break;
+  }
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(center.data());
+  const Eigen::Vector3d eye = center + dir;
+  camera->SetPosition(eye.data());
+  camera->SetViewUp(up.data());
+  camera->SetViewAngle(30.0);
+}
+
+}  // namespace
+
+bool render_available() { return true; }
+
+Image render_mesh(const TriangleMesh& mesh, const RenderOptions& options) {
+  if (!options.color_by.empty()) (void)mesh.attribute(options.color_by);  // ValueError first
+  if (options.width < 1 || options.height < 1 || options.width > 16384 || options.height > 16384) {
+    throw ValueError("image size must be 1..16384 pixels on each side");
+  }
+  struct DisplayGuard {
+    void* display = open_x_display();
+    ~DisplayGuard() { close_x_display(display); }
+  } x;  // outlives the render window below, which borrows the connection
+  if (x.display == nullptr) {
+    throw IoError(
+        "no X display for VTK's offscreen OpenGL context (DISPLAY unset or unreachable); run "
+        "under a virtual server: xvfb-run -a fspm render ...");
+  }
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(1.0, 1.0, 1.0);
+  renderer->SetBackground2(0.78, 0.86, 0.96);
+  renderer->GradientBackgroundOn();
+
+  Eigen::Vector3f lo = mesh.bbox_min(), hi = mesh.bbox_max();
+  if (!mesh.empty()) {
+    vtkNew<vtkPolyData> poly = to_polydata(mesh, options.color_by);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(poly);
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetInterpolationToPhong();
+    actor->GetProperty()->SetSpecular(0.15);
+    actor->GetProperty()->SetSpecularPower(20.0);
+    actor->GetProperty()->BackfaceCullingOff();
+    if (options.color_by.empty()) {
+      mapper->SetScalarModeToUseCellData();
+      mapper->SetColorModeToDirectScalars();
+      mapper->ScalarVisibilityOn();
+    } else {
+      const auto values = mesh.attribute(options.color_by);
+      auto [mn, mx] = std::minmax_element(values.begin(), values.end());
+      double range[2] = {*mn, *mx};
+      if (range[1] <= range[0]) range[1] = range[0] + 1.0;
+      vtkNew<vtkLookupTable> lut;
+      lut->SetHueRange(0.667, 0.0);  // blue (low) to red (high)
+      lut->SetTableRange(range);
+      lut->Build();
+      mapper->SetLookupTable(lut);
+      mapper->SetScalarModeToUsePointData();
+      mapper->SetScalarRange(range);
+      mapper->ScalarVisibilityOn();
+      if (options.scalar_bar) {
+        vtkNew<vtkScalarBarActor> bar;
+        bar->SetLookupTable(lut);
+        bar->SetTitle(options.color_by.c_str());
+        bar->SetNumberOfLabels(5);
+        bar->SetMaximumWidthInPixels(std::max(60, options.width / 10));
+        bar->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
+        bar->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
+        bar->GetTitleTextProperty()->ShadowOff();
+        bar->GetLabelTextProperty()->ShadowOff();
+        renderer->AddActor2D(bar);
+      }
+    }
+    renderer->AddActor(actor);
+  }
+  if (options.ground) {
+    const Eigen::Vector3f size = (hi - lo).cwiseMax(Eigen::Vector3f::Constant(0.1f));
+    const float half = 1.5f * std::max(size.x(), size.y()) + 0.5f * size.z();
+    const Eigen::Vector3f c = 0.5f * (lo + hi);
+    vtkNew<vtkPoints> corners;
+    corners->InsertNextPoint(c.x() - half, c.y() - half, lo.z());
+    corners->InsertNextPoint(c.x() + half, c.y() - half, lo.z());
+    corners->InsertNextPoint(c.x() + half, c.y() + half, lo.z());
+    corners->InsertNextPoint(c.x() - half, c.y() + half, lo.z());
+    vtkNew<vtkCellArray> quad;
+    const vtkIdType ids[4] = {0, 1, 2, 3};
+    quad->InsertNextCell(4, ids);
+    vtkNew<vtkPolyData> plane;
+    plane->SetPoints(corners);
+    plane->SetPolys(quad);
+    vtkNew<vtkPolyDataMapper> plane_mapper;
+    plane_mapper->SetInputData(plane);
+    plane_mapper->ScalarVisibilityOff();
+    vtkNew<vtkActor> ground;
+    ground->SetMapper(plane_mapper);
+    ground->GetProperty()->SetColor(0.55, 0.62, 0.45);
+    ground->GetProperty()->SetAmbient(0.2);
+    renderer->AddActor(ground);
+  }
+
+  // Key, fill and back lights following the camera (Kitware's three-point light kit).
+  renderer->RemoveAllLights();
+  vtkNew<vtkLightKit> lights;
+  lights->SetKeyLightIntensity(0.85);
+  lights->AddLightsToRenderer(renderer);
+
+  place_camera(renderer, options.view, lo, hi);
+  renderer->ResetCamera();
+  renderer->GetActiveCamera()->Zoom(options.ground ? 1.6 : 1.0);
+  renderer->ResetCameraClippingRange();
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetDisplayId(x.display);
+  window->SetOffScreenRendering(1);
+  window->SetSize(options.width, options.height);
+  window->SetMultiSamples(0);
+  window->AddRenderer(renderer);
+  window->Render();
+
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGBA();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkImageData* data = grab->GetOutput();
+  int dims[3];
+  data->GetDimensions(dims);
+  Image image;
+  image.width = dims[0];
+  image.height = dims[1];
+  image.rgba.resize(static_cast<std::size_t>(dims[0]) * dims[1] * 4);
+  const auto* src = static_cast<const std::uint8_t*>(data->GetScalarPointer());
+  const std::size_t row = static_cast<std::size_t>(dims[0]) * 4;
+  for (int y = 0; y < dims[1]; ++y) {  // VTK's rows start at the bottom
+    std::memcpy(image.rgba.data() + row * y, src + row * (dims[1] - 1 - y), row);
+  }
+  return image;
+}
+
+}  // namespace fspm::graphics
