@@ -7,5 +7,6 @@ class App;
 namespace fspm::cli {
 
 void add_tree_commands(CLI::App& app);
+void add_lsystem_commands(CLI::App& app);
 
 }  // namespace fspm::cli

@@ -1,0 +1,143 @@
+// fspm lsystem derive | interpret: run cpfg / ABOP L-system files.
+#include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
+#include "fspm/error.hpp"
+#include "fspm/tree_file.hpp"
+#include "lsystem/derivation.hpp"
+#include "lsystem/parser.hpp"
+#include "lsystem/turtle.hpp"
+
+namespace fspm::cli {
+namespace {
+
+struct LsystemOptions {
+  std::string file;
+  int steps = -1;
+  std::int64_t seed = -1;
+  std::vector<std::string> defines;
+  std::size_t budget = lsystem::kDefaultModuleBudget;
+  bool string = false;
+  bool json = false;
+  std::string view;
+  std::string output;
+  std::string format;
+};
+
+lsystem::MacroOverrides parse_defines(const std::vector<std::string>& defines) {
+  lsystem::MacroOverrides out;
+  for (const std::string& d : defines) {
+    const auto eq = d.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      throw ValueError("--define expects NAME=VALUE, got '" + d + "'");
+    }
+    out[d.substr(0, eq)] = d.substr(eq + 1);
+  }
+  return out;
+}
+
+lsystem::DeriveOptions derive_options(const LsystemOptions& o) {
+  lsystem::DeriveOptions d;
+  if (o.steps >= 0) d.steps = o.steps;
+  if (o.seed >= 0) d.seed = static_cast<std::uint64_t>(o.seed);
+  d.module_budget = o.budget;
+  return d;
+}
+
+void add_common(CLI::App* cmd, LsystemOptions& o) {
+  cmd->add_option("file", o.file, "L-system file (.l, cpfg syntax)")->required();
+  cmd->add_option("--steps", o.steps, "Derivation steps (overrides 'derivation length:')")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--seed", o.seed, "Seed of ran() and stochastic productions")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--define", o.defines, "Override a #define: NAME=VALUE (repeatable)");
+  cmd->add_option("--budget", o.budget, "Largest string allowed, in modules")
+      ->check(CLI::PositiveNumber);
+}
+
+void run_derive(const LsystemOptions& o) {
+  const lsystem::LSystem sys = lsystem::parse_lsystem_file(o.file, parse_defines(o.defines));
+  const auto t0 = std::chrono::steady_clock::now();
+  lsystem::Derivation d(sys, derive_options(o));
+  d.run();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const lsystem::ModuleString& s = d.string();
+  spdlog::info("{}: {} steps, {} modules in {:.3f} s", o.file, d.steps_done(), s.size(), seconds);
+  std::vector<std::uint64_t> per_symbol(sys.symbols.size(), 0);
+  for (lsystem::SymbolId id : s.symbols()) ++per_symbol[id];
+  nlohmann::json symbols = nlohmann::json::object();
+  for (std::size_t i = 0; i < per_symbol.size(); ++i) {
+    if (per_symbol[i]) symbols[sys.symbols.name(static_cast<lsystem::SymbolId>(i))] = per_symbol[i];
+  }
+  if (o.json) {
+    nlohmann::json j = {{"steps", d.steps_done()}, {"modules", s.size()}, {"symbols", symbols}};
+    if (o.string) j["string"] = lsystem::to_string(s, sys.symbols);
+    print_json(j);
+    return;
+  }
+  if (o.string) {
+    std::cout << lsystem::to_string(s, sys.symbols) << '\n';
+    return;
+  }
+  std::cout << "steps: " << d.steps_done() << '\n' << "modules: " << s.size() << '\n';
+  std::cout << "symbols: " << symbols.dump() << '\n';
+}
+
+void run_interpret(const LsystemOptions& o) {
+  const lsystem::LSystem sys = lsystem::parse_lsystem_file(o.file, parse_defines(o.defines));
+  const lsystem::TurtleSettings view =
+      o.view.empty() ? lsystem::view_for_lsystem(o.file) : lsystem::read_view_file(o.view);
+  lsystem::DeriveOptions options = derive_options(o);
+  options.turtle = &view;
+  lsystem::Derivation d(sys, options);
+  d.run();
+  const lsystem::Interpretation result =
+      lsystem::interpret(d.interpretation_string(), sys.symbols, view);
+  if (result.tree.empty()) {
+    throw ValueError("the derived string draws nothing (no F module): no tree to write", o.file);
+  }
+  write_tree_file(result.tree, o.output, o.format);
+  spdlog::info("{}: {} steps, {} modules -> {} nodes ({} leaves) in {}", o.file, d.steps_done(),
+               d.string().size(), result.tree.size(), result.leaves.size(), o.output);
+  if (o.json) {
+    print_json({{"steps", d.steps_done()},
+                {"modules", d.string().size()},
+                {"nodes", result.tree.size()},
+                {"leaves", result.leaves.size()},
+                {"output", o.output}});
+  }
+}
+
+}  // namespace
+
+void add_lsystem_commands(CLI::App& app) {
+  auto* group = app.add_subcommand("lsystem", "Derive and interpret L-systems (cpfg / ABOP)");
+  group->require_subcommand(1);
+
+  auto derive_opts = std::make_shared<LsystemOptions>();
+  auto* derive = group->add_subcommand("derive", "Derive the string of an L-system file");
+  add_common(derive, *derive_opts);
+  derive->add_flag("--string", derive_opts->string, "Print the derived string (cpfg notation)");
+  derive->add_flag("--json", derive_opts->json, "One JSON object: steps, modules, symbols");
+  derive->callback([derive_opts] { run_derive(*derive_opts); });
+
+  auto interp_opts = std::make_shared<LsystemOptions>();
+  auto* interp = group->add_subcommand("interpret", "Derive and draw into a tree graph file");
+  add_common(interp, *interp_opts);
+  interp->add_option("--view", interp_opts->view, "View file (default: the .v beside FILE)");
+  interp->add_option("-o,--output", interp_opts->output, "Tree file to write")->required();
+  interp->add_option("--format", interp_opts->format, "tree, treeb, nwk or mtg (default: ext)");
+  interp->add_flag("--json", interp_opts->json, "Print a JSON summary");
+  interp->callback([interp_opts] { run_interpret(*interp_opts); });
+}
+
+}  // namespace fspm::cli
