@@ -117,106 +117,115 @@ InternodeDimensions internode_dimensions(double pith_volume, double ring_volume,
   return d;
 }
 
-TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
-                      ReconstructionStats* stats) {
-  const ReconstructionParams geo = ReconstructionParams::from_metadata(graph.metadata);
-  const double final_age = graph.final_age;
-  const double age = options.age < 0.0 ? final_age : options.age;
-  if (age > final_age + 1e-9) {
-    throw ValueError("cannot reconstruct at age " + std::to_string(age) +
-                     ": the graph was simulated to age " + std::to_string(final_age));
-  }
-  const double now = graph.birth_date + age;
-  const double final_date = graph.birth_date + final_age;
-  ReconstructionStats st;
-  st.age = age;
-  TreeGraph tree;
-  if (graph.root() == kNoRecord || graph.record(graph.root()).birth > now) {
-    if (stats) *stats = st;
-    return tree;
+namespace {
+
+struct AxisStart {
+  RecordId record;
+  NodeId parent;
+  Frame frame;
+  std::uint16_t order;
+};
+
+// Walks axes of a compressed graph into explicit nodes; shared by the explicit and the instanced
+// reconstruction.
+class AxisBuilder {
+ public:
+  AxisBuilder(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
+              bool absolute_effects)
+      : graph_(graph),
+        geo_(ReconstructionParams::from_metadata(graph.metadata)),
+        options_(options),
+        absolute_effects_(absolute_effects) {
+    final_age_ = graph.final_age;
+    age_ = options.age < 0.0 ? final_age_ : options.age;
+    if (age_ > final_age_ + 1e-9) {
+      throw ValueError("cannot reconstruct at age " + std::to_string(age_) +
+                       ": the graph was simulated to age " + std::to_string(final_age_));
+    }
+    now_ = graph.birth_date + age_;
+    final_date_ = graph.birth_date + final_age_;
+    n_ages_ = std::max<std::size_t>(geo_.ages.size(), 1);
+    rot_.resize(n_ages_ + 1);
+    for (std::size_t p = 1; p <= n_ages_; ++p) {
+      const AgeGeometry& a = geo_.age(static_cast<int>(p));
+      rot_[p].phyllotaxy = Eigen::AngleAxisd(a.phyllotaxy_deg * kDegToRad, Eigen::Vector3d::UnitX())
+                               .toRotationMatrix();
+      rot_[p].branching =
+          Eigen::AngleAxisd(a.branching_angle_deg * kDegToRad, Eigen::Vector3d::UnitZ())
+              .toRotationMatrix();
+      any_pruning_period_ = any_pruning_period_ || a.pruning_period > 0.0;
+    }
   }
 
-  const std::size_t n_ages = std::max<std::size_t>(geo.ages.size(), 1);
-  std::vector<AgeRotations> rot(n_ages + 1);
-  bool any_pruning_period = false;
-  for (std::size_t p = 1; p <= n_ages; ++p) {
-    const AgeGeometry& a = geo.age(static_cast<int>(p));
-    rot[p].phyllotaxy = Eigen::AngleAxisd(a.phyllotaxy_deg * kDegToRad, Eigen::Vector3d::UnitX())
-                            .toRotationMatrix();
-    rot[p].branching =
-        Eigen::AngleAxisd(a.branching_angle_deg * kDegToRad, Eigen::Vector3d::UnitZ())
-            .toRotationMatrix();
-    any_pruning_period = any_pruning_period || a.pruning_period > 0.0;
+  double age() const { return age_; }
+  double now() const { return now_; }
+  bool any_pruning_period() const { return any_pruning_period_; }
+
+  Frame trunk_frame() const {
+    Frame trunk;
+    trunk.axes.col(0) = Eigen::Vector3d::UnitZ();
+    trunk.axes.col(1) = Eigen::Vector3d::UnitY();
+    trunk.axes.col(2) = Eigen::Vector3d::UnitZ().cross(Eigen::Vector3d::UnitY());
+    trunk.position.setZero();
+    return trunk;
   }
-  auto rotations = [&](int p) -> const AgeRotations& {
-    return rot[static_cast<std::size_t>(std::clamp<int>(p, 1, static_cast<int>(n_ages)))];
-  };
+
+  Frame root_frame() const {
+    Frame f = trunk_frame();
+    if (absolute_effects_ &&
+        geo_.age(graph_.record(graph_.root()).physiological_age).plagiotropic) {
+      f.axes = plagiotropic_frame(Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY());
+    }
+    return f;
+  }
+
   // Jaeger 3.2.1, sign arranged so that a positive status means present:
   // status = organ birth + life span + pruning period - present date; > pruning period: alive,
   // in (0, pruning period]: dead but still on the plant, <= 0: pruned.
-  auto status = [&](double birth, double span, double pruning) {
-    return span <= 0.0 ? std::numeric_limits<double>::infinity() : birth + span + pruning - now;
-  };
-
-  // Upper bound on the output, so the columns are allocated once.
-  const std::uint64_t bound = graph.expanded_size();
-  tree.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(bound * 2 + 8, 1ull << 31)));
-  if (any_pruning_period) tree.add_attribute("dead", 0.0);
-
-  struct AxisStart {
-    RecordId record;
-    NodeId parent;
-    Frame frame;
-    std::uint16_t order;
-  };
-  std::vector<AxisStart> queue;
-  Frame trunk;
-  trunk.axes.col(0) = Eigen::Vector3d::UnitZ();
-  trunk.axes.col(1) = Eigen::Vector3d::UnitY();
-  trunk.axes.col(2) = Eigen::Vector3d::UnitZ().cross(Eigen::Vector3d::UnitY());
-  trunk.position.setZero();
-  if (geo.age(graph.record(graph.root()).physiological_age).plagiotropic) {
-    trunk.axes = plagiotropic_frame(Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY());
+  double status(double birth, double span, double pruning) const {
+    return span <= 0.0 ? std::numeric_limits<double>::infinity() : birth + span + pruning - now_;
   }
-  queue.push_back({graph.root(), kNoNode, trunk, 0});
 
-  NodeData node;
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    // Copied: queue may reallocate while this axis pushes its laterals.
-    AxisStart axis = queue[head];
-    const CompressedRecord* r = &graph.record(axis.record);
-    const AgeGeometry& axis_geo = geo.age(r->physiological_age);
+  // Whether a lateral axis starting at `record` has fallen (Jaeger 3.2.1 applied to axes).
+  bool pruned(RecordId record) const {
+    const CompressedRecord& r = graph_.record(record);
+    const AgeGeometry& g = geo_.age(r.physiological_age);
+    return status(r.birth, g.axis_life_span, g.pruning_period) <= 0.0;
+  }
+
+  // Adds the axis starting at axis.record under axis.parent; its laterals go to `laterals`.
+  void walk(const AxisStart& axis, TreeGraph& tree, std::vector<AxisStart>& laterals,
+            ReconstructionStats& st) const {
+    const CompressedRecord* r = &graph_.record(axis.record);
     bool axis_dead = false;
-    if (axis.order > 0) {
-      const double s = status(r->birth, axis_geo.axis_life_span, axis_geo.pruning_period);
-      if (s <= 0.0) {
-        ++st.pruned_axes;
-        continue;  // the whole lateral axis has fallen
-      }
-      axis_dead = s <= axis_geo.pruning_period;
+    if (axis.record != graph_.root()) {  // a lateral axis (the root never starts one)
+      const AgeGeometry& axis_geo = geo_.age(r->physiological_age);
+      axis_dead = status(r->birth, axis_geo.axis_life_span, axis_geo.pruning_period) <=
+                  axis_geo.pruning_period;
     }
     Frame f = axis.frame;
     NodeId parent = axis.parent;
     RecordId id = axis.record;
+    NodeData node;
     while (true) {
-      r = &graph.record(id);
+      r = &graph_.record(id);
       const int p = r->physiological_age;
-      const AgeGeometry& g = geo.age(p);
+      const AgeGeometry& g = geo_.age(p);
       const AgeRotations& rp = rotations(p);
       double length = g.internode_length_m;
       double r_birth = g.internode_radius_m;
-      double r_final = g.internode_radius_m + g.radius_growth_m * (final_date - r->birth);
-      if (geo.from_volumes) {
-        const auto dim = internode_dimensions(r->pith_volume, r->ring_volume, geo.reference_length,
-                                              geo.allometry_b);
+      double r_final = g.internode_radius_m + g.radius_growth_m * (final_date_ - r->birth);
+      if (geo_.from_volumes) {
+        const auto dim = internode_dimensions(r->pith_volume, r->ring_volume, geo_.reference_length,
+                                              geo_.allometry_b);
         length = dim.length;
         r_birth = dim.pith_radius;
         r_final = dim.radius;
       }
       double radius = r_final;
-      if (now < final_date && final_date > r->birth) {
+      if (now_ < final_date_ && final_date_ > r->birth) {
         // Jaeger 3.2.2: quadratic interpolation of the diameter from birth to the final age.
-        const double x = (now - r->birth) / (final_date - r->birth);
+        const double x = (now_ - r->birth) / (final_date_ - r->birth);
         radius = r_birth + (r_final - r_birth) * x * x;
       }
       const Eigen::Vector3d heading = f.axes.col(0);
@@ -232,17 +241,16 @@ TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOpti
       node.kind = OrganKind::kInternode;
       const NodeId internode = tree.add_node(parent, node);
       ++st.metamers;
-      if (axis_dead && any_pruning_period) tree.attribute("dead")[internode] = 1.0;
+      if (axis_dead && any_pruning_period_) tree.attribute("dead")[internode] = 1.0;
 
-      // Laterals and the leaf sit at the top of the metamer, their azimuth given by phyllotaxy.
-      const auto ax = graph.axillaries(id);
-      if (options.leaves) {
+      // The leaf and the laterals sit at the top of the metamer, their azimuth set by phyllotaxy.
+      if (options_.leaves) {
         const double s = status(r->birth, g.leaf_life_span, g.pruning_period);
         if (s > 0.0) {
           const Eigen::Matrix3d leaf_axes = f.axes * rp.branching;
           double leaf_length = g.leaf_length_m;
-          if (geo.from_volumes) {
-            leaf_length = std::sqrt(std::max(r->leaf_volume, 0.0) / geo.leaf_thickness);
+          if (geo_.from_volumes) {
+            leaf_length = std::sqrt(std::max(r->leaf_volume, 0.0) / geo_.leaf_thickness);
           }
           node.start = f.position;
           node.direction = leaf_axes.col(0);
@@ -253,29 +261,38 @@ TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOpti
           node.order = static_cast<std::uint16_t>(axis.order + 1);
           const NodeId leaf = tree.add_node(internode, node);
           ++st.leaves;
-          if (any_pruning_period && s <= g.pruning_period) tree.attribute("dead")[leaf] = 1.0;
+          if (any_pruning_period_ && s <= g.pruning_period) tree.attribute("dead")[leaf] = 1.0;
         }
       }
+      const auto ax = graph_.axillaries(id);
       if (!ax.empty()) {
         const double spread = 2.0 * std::numbers::pi / static_cast<double>(ax.size());
         for (std::size_t k = 0; k < ax.size(); ++k) {
-          const CompressedRecord& child = graph.record(ax[k]);
-          if (child.birth > now) continue;
+          const CompressedRecord& child = graph_.record(ax[k]);
+          if (child.birth > now_) continue;
+          if (pruned(ax[k])) {
+            ++st.pruned_axes;  // the whole lateral axis has fallen
+            continue;
+          }
           const int q = child.physiological_age;
           Frame lf;
           lf.position = f.position;
-          Eigen::Matrix3d around = Eigen::Matrix3d::Identity();
           if (k > 0) {
-            around = Eigen::AngleAxisd(spread * static_cast<double>(k), Eigen::Vector3d::UnitX())
-                         .toRotationMatrix();
+            lf.axes = f.axes *
+                      Eigen::AngleAxisd(spread * static_cast<double>(k), Eigen::Vector3d::UnitX())
+                          .toRotationMatrix() *
+                      rotations(q).branching;
+          } else {
+            lf.axes = f.axes * rotations(q).branching;
           }
-          lf.axes = f.axes * around * rotations(q).branching;
-          if (geo.age(q).plagiotropic) lf.axes = plagiotropic_frame(lf.axes.col(0), lf.axes.col(1));
-          queue.push_back({ax[k], internode, lf, static_cast<std::uint16_t>(axis.order + 1)});
+          if (absolute_effects_ && geo_.age(q).plagiotropic) {
+            lf.axes = plagiotropic_frame(lf.axes.col(0), lf.axes.col(1));
+          }
+          laterals.push_back({ax[k], internode, lf, static_cast<std::uint16_t>(axis.order + 1)});
         }
       }
       f.axes = f.axes * rp.phyllotaxy;
-      if (g.straightening > 0.0 && !g.plagiotropic) {
+      if (absolute_effects_ && g.straightening > 0.0 && !g.plagiotropic) {
         // Orthotropic axes (Rauh) turn their heading up by a fraction per metamer.
         const Eigen::Vector3d h = f.axes.col(0);
         const Eigen::Vector3d target = (h + g.straightening * (Eigen::Vector3d::UnitZ() - h));
@@ -285,9 +302,9 @@ TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOpti
         }
       }
       parent = internode;
-      if (r->successor == kNoRecord || graph.record(r->successor).birth > now) {
+      if (r->successor == kNoRecord || graph_.record(r->successor).birth > now_) {
         // Terminal flower, shown from the cycle after its metamer's growth unit.
-        if (options.flowers && r->apex == ApexState::kFlower && r->birth + 1.0 <= now + 1e-9) {
+        if (options_.flowers && r->apex == ApexState::kFlower && r->birth + 1.0 <= now_ + 1e-9) {
           node.start = f.position;
           node.direction = f.axes.col(0);
           node.end = f.position + node.direction * (0.5 * g.leaf_length_m);
@@ -304,7 +321,127 @@ TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOpti
       id = r->successor;
     }
   }
+
+ private:
+  const AgeRotations& rotations(int p) const {
+    return rot_[static_cast<std::size_t>(std::clamp<int>(p, 1, static_cast<int>(n_ages_)))];
+  }
+
+  const CompressedTreeGraph& graph_;
+  ReconstructionParams geo_;
+  ReconstructionOptions options_;
+  bool absolute_effects_;
+  double final_age_ = 0.0, age_ = 0.0, now_ = 0.0, final_date_ = 0.0;
+  std::size_t n_ages_ = 1;
+  std::vector<AgeRotations> rot_;
+  bool any_pruning_period_ = false;
+};
+
+}  // namespace
+
+TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
+                      ReconstructionStats* stats) {
+  const AxisBuilder builder(graph, options, true);
+  ReconstructionStats st;
+  st.age = builder.age();
+  TreeGraph tree;
+  if (graph.root() == kNoRecord || graph.record(graph.root()).birth > builder.now()) {
+    if (stats) *stats = st;
+    return tree;
+  }
+  // Upper bound on the output, so the columns are allocated once.
+  const std::uint64_t bound = graph.expanded_size();
+  tree.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(bound * 2 + 8, 1ull << 31)));
+  if (builder.any_pruning_period()) tree.add_attribute("dead", 0.0);
+  // Oldest node first, axis by axis (Jaeger 3.1.1): a FIFO of axis starts.
+  std::vector<AxisStart> queue{{graph.root(), kNoNode, builder.root_frame(), 0}};
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const AxisStart axis = queue[head];  // copied: walk() appends to the queue
+    builder.walk(axis, tree, queue, st);
+  }
   if (stats) *stats = st;
+  return tree;
+}
+
+InstancedPlant reconstruct_instanced(const CompressedTreeGraph& graph,
+                                     const ReconstructionOptions& options) {
+  const AxisBuilder builder(graph, options, false);
+  InstancedPlant plant;
+  plant.age = builder.age();
+  if (graph.root() == kNoRecord || graph.record(graph.root()).birth > builder.now()) return plant;
+  const Frame canonical = builder.trunk_frame();
+  const Eigen::Matrix3d canonical_inverse = canonical.axes.transpose();
+  std::vector<std::uint32_t> prototype_of(graph.size(), kNoPrototype);
+  std::vector<AxisStart> laterals;
+  // One prototype per axis start, built in its own frame; children placed by transforms.
+  prototype_of[graph.root()] = 0;
+  plant.prototypes.emplace_back();
+  plant.prototypes[0].record = graph.root();
+  for (std::size_t i = 0; i < plant.prototypes.size(); ++i) {
+    ReconstructionStats st;
+    laterals.clear();
+    const RecordId record = plant.prototypes[i].record;
+    TreeGraph geometry;
+    if (builder.any_pruning_period()) geometry.add_attribute("dead", 0.0);
+    builder.walk({record, kNoNode, canonical, 0}, geometry, laterals, st);
+    std::vector<InstancedPlant::Child> children;
+    children.reserve(laterals.size());
+    for (const AxisStart& l : laterals) {
+      std::uint32_t& proto = prototype_of[l.record];
+      if (proto == kNoPrototype) {
+        proto = static_cast<std::uint32_t>(plant.prototypes.size());
+        plant.prototypes.emplace_back();
+        plant.prototypes.back().record = l.record;
+      }
+      children.push_back({proto, l.parent, l.frame.axes * canonical_inverse, l.frame.position});
+    }
+    InstancedPlant::Prototype& p = plant.prototypes[i];
+    p.geometry = std::move(geometry);
+    p.children = std::move(children);
+    p.own_components = st.components();
+  }
+  // Components represented: a prototype's own plus its children's, children built after parents.
+  std::vector<std::uint64_t> total(plant.prototypes.size(), 0);
+  for (std::size_t i = plant.prototypes.size(); i-- > 0;) {
+    std::uint64_t t = plant.prototypes[i].own_components;
+    for (const auto& c : plant.prototypes[i].children) t += total[c.prototype];
+    total[i] = t;
+  }
+  plant.represented_components = total[0];
+  return plant;
+}
+
+TreeGraph expand_instanced(const InstancedPlant& plant) {
+  TreeGraph tree;
+  if (plant.prototypes.empty()) return tree;
+  struct Item {
+    std::uint32_t prototype;
+    NodeId parent;
+    Eigen::Matrix3d rotation;
+    Eigen::Vector3d translation;
+    std::uint16_t order;
+  };
+  std::vector<Item> queue{{0, kNoNode, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(), 0}};
+  std::vector<NodeId> map;
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const Item item = queue[head];
+    const auto& p = plant.prototypes[item.prototype];
+    const TreeGraph& g = p.geometry;
+    map.assign(g.size(), kNoNode);
+    for (NodeId n = 0; n < g.size(); ++n) {
+      NodeData d = g.data(n);
+      d.start = item.rotation * d.start + item.translation;
+      d.end = item.rotation * d.end + item.translation;
+      d.direction = item.rotation * d.direction;
+      d.order = static_cast<std::uint16_t>(d.order + item.order);
+      map[n] = tree.add_node(n == 0 ? item.parent : map[g.parent(n)], d);
+    }
+    for (const auto& c : p.children) {
+      queue.push_back({c.prototype, map[c.attach], item.rotation * c.rotation,
+                       item.rotation * c.translation + item.translation,
+                       static_cast<std::uint16_t>(item.order + 1)});
+    }
+  }
   return tree;
 }
 

@@ -2,6 +2,8 @@
 // Reconstruction (Jaeger 3): the explicit geometry of the plant at any age up to the simulated
 // one, from its compressed tree graph and a few numbers per physiological age (angles, lengths,
 // life spans) that the graph carries in its metadata.
+#include <Eigen/Core>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -74,5 +76,35 @@ struct ReconstructionStats {
 // age (3.2.2). Throws ValueError when `age` is beyond the simulated age.
 TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
                       ReconstructionStats* stats = nullptr);
+
+// The instanced form for renderers (Jaeger 3.1.2): one prototype geometry per substructure that
+// starts an axis, in its own frame (base at the origin, heading +z), and its lateral axes as
+// references to other prototypes with the rigid transform that places them. Effects that depend
+// on the absolute orientation (orthotropic straightening, plagiotropic flattening) are left out,
+// as Jaeger notes; everything else (angles, lengths, diameters, pruning, birth-date filtering)
+// is as in reconstruct().
+inline constexpr std::uint32_t kNoPrototype = 0xFFFFFFFFu;
+struct InstancedPlant {
+  struct Child {
+    std::uint32_t prototype;
+    NodeId attach;             // node of the parent prototype the lateral grows from
+    Eigen::Matrix3d rotation;  // child frame -> parent frame
+    Eigen::Vector3d translation;
+  };
+  struct Prototype {
+    RecordId record = kNoRecord;  // first metamer of the axis in the compressed graph
+    TreeGraph geometry;           // the axis, its leaves and flower; node 0 is its base
+    std::vector<Child> children;
+    std::uint64_t own_components = 0;
+  };
+  double age = 0.0;
+  std::vector<Prototype> prototypes;         // prototypes[0] is the trunk
+  std::uint64_t represented_components = 0;  // internodes + leaves of the whole plant
+};
+
+InstancedPlant reconstruct_instanced(const CompressedTreeGraph& graph,
+                                     const ReconstructionOptions& options);
+// The explicit tree an instanced plant stands for (axis by axis, as reconstruct orders it).
+TreeGraph expand_instanced(const InstancedPlant& plant);
 
 }  // namespace fspm::greenlab

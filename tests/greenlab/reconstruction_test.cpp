@@ -166,3 +166,35 @@ TEST(Reconstruction, AnnexAllometryConservesVolumes) {
 
 }  // namespace
 }  // namespace fspm::greenlab
+
+namespace fspm::greenlab {
+namespace {
+
+TEST(Reconstruction, InstancedFormExpandsToTheExplicitTree) {
+  // Leeuwenberg without straightening: no orientation-dependent effect, so instancing is exact.
+  PlantParams p = testing::example("leeuwenberg.toml");
+  p.age(1).straightening = 0.0;
+  p.age(1).leaf_life_span = 2;
+  const CompressedTreeGraph g = simulate_compressed(p);
+  for (double age : {6.0, 4.0}) {
+    ReconstructionOptions o;
+    o.age = age;
+    ReconstructionStats st;
+    const TreeGraph explicit_tree = reconstruct(g, o, &st);
+    const InstancedPlant inst = reconstruct_instanced(g, o);
+    EXPECT_EQ(inst.represented_components, st.components());
+    EXPECT_LT(inst.prototypes.size(), 10u);
+    const TreeGraph expanded = expand_instanced(inst);
+    ASSERT_EQ(expanded.size(), explicit_tree.size());
+    for (NodeId n = 0; n < expanded.size(); ++n) {
+      ASSERT_EQ(expanded.parent(n), explicit_tree.parent(n)) << n;
+      ASSERT_EQ(expanded.kind(n), explicit_tree.kind(n)) << n;
+      ASSERT_EQ(expanded.order(n), explicit_tree.order(n)) << n;
+      ASSERT_TRUE(expanded.end(n).isApprox(explicit_tree.end(n), 1e-9)) << n;
+      ASSERT_DOUBLE_EQ(expanded.radius(n), explicit_tree.radius(n)) << n;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace fspm::greenlab
