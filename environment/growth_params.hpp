@@ -1,0 +1,57 @@
+#pragma once
+// Parameters of the self-organizing growth model (Palubicki et al. 2009 as used by Pirk 4.5.4),
+// read from TOML (docs/environment.md) or taken from Pirk's tree types A, B and C.
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace fspm::environment {
+
+struct GrowthParams {
+  int years = 20;          // growth cycles
+  std::uint64_t seed = 1;  // randomness only for small heading perturbations
+  // Borchert-Honda allocation (Palubicki eq. for v_base = alpha * Q_base, apical control lambda).
+  double alpha = 3.0;
+  double apical_control = 0.52;
+  // Shoots: n = floor(v) metamers, at most max_shoot_metamers, each internode_length_m long.
+  double internode_length_m = 0.15;
+  int max_shoot_metamers = 5;
+  double branching_angle_deg = 40.0;
+  double phyllotaxy_deg = 137.5;
+  double perturbation_deg = 4.0;
+  int lateral_bud_lifetime_years = 2;  // dormant lateral buds die after this many cycles
+  // Tropisms, Pirk eq. 4.6-4.7: h = w_s d_o + (1 - w_s) t, t the weighted mean of the
+  // phototropism (towards the bud's mean light direction) and gravitropism directions.
+  double phototropism = 0.25;
+  double gravitropism = 0.12;
+  Eigen::Vector3d gravity_direction = -Eigen::Vector3d::UnitZ();
+  // Shedding: a lateral branch with light per supported internode below this is removed.
+  double pruning_factor = 0.1;
+  // Leaf clusters: one sphere per shoot younger than leaf_years; radius
+  // max(cluster_radius_m, half the shoot length); translucency gamma0^r (Pirk eq. 4.4).
+  int leaf_years = 2;
+  double cluster_radius_m = 0.3;
+  double gamma0 = 0.5;
+  // Light at buds (see Sky): fewer directions and a coarser shadow-volume cutoff than `fspm light`.
+  int light_directions = 64;
+  double light_significance = 0.01;
+  // Geometry: pipe model r^n = sum r_child^n from the tip radius.
+  double tip_radius_m = 0.004;
+  double pipe_exponent = 2.5;
+};
+
+// Pirk's tree types (4.5.4): "A" phototropism 0.25, gravitropism 0.12; "B" 0.45, 0.44; "C" 0.03,
+// 0.23, older and with a smaller pruning factor. Throws ValueError for another name.
+GrowthParams growth_preset(std::string_view name);
+
+// Reads a TOML parameter file; `preset = "A"` starts from a preset, other keys override it.
+// Throws ParseError (bad TOML, unknown key) or ValueError (value out of range) naming file and
+// line.
+GrowthParams read_growth_params(const std::string& path);
+GrowthParams parse_growth_params(std::string_view text, const std::string& file_name = "<params>");
+
+// Throws ValueError naming the parameter when one is out of range.
+void validate(const GrowthParams& p);
+
+}  // namespace fspm::environment

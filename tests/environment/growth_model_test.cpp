@@ -1,0 +1,149 @@
+#include "environment/growth_model.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "environment/light_model.hpp"
+#include "fspm/error.hpp"
+#include "fspm/tree_summary.hpp"
+
+namespace fspm::environment {
+namespace {
+
+std::size_t internodes_with(const TreeGraph& t, auto&& pred) {
+  std::size_t n = 0;
+  for (NodeId i = 0; i < t.size(); ++i) {
+    if (t.kind(i) == OrganKind::kInternode && pred(i)) ++n;
+  }
+  return n;
+}
+
+TEST(GrowthModel, DeterministicPerSeed) {
+  GrowthParams p = growth_preset("A");
+  p.years = 12;
+  const GrowthResult a = grow_tree(p);
+  const GrowthResult b = grow_tree(p);
+  EXPECT_TRUE(a.tree.identical(b.tree));
+  p.seed = 2;
+  const GrowthResult c = grow_tree(p);
+  EXPECT_FALSE(a.tree.identical(c.tree));
+}
+
+TEST(GrowthModel, StructureIsConsistent) {
+  GrowthParams p = growth_preset("A");
+  p.years = 15;
+  const GrowthResult r = grow_tree(p);
+  const TreeGraph& t = r.tree;
+  ASSERT_GT(r.internodes, 50u);
+  EXPECT_EQ(r.grown, r.internodes + r.shed);
+  EXPECT_EQ(t.size(), r.internodes + r.clusters);
+  EXPECT_EQ(summarize(t).internodes, r.internodes);
+  for (NodeId i = 1; i < t.size(); ++i) {
+    const NodeId parent = t.parent(i);
+    ASSERT_LT(parent, i);
+    if (t.kind(i) != OrganKind::kInternode) continue;
+    // Children start where their parent ends, are not older, and keep or raise the order.
+    EXPECT_LT((t.start(i) - t.end(parent)).norm(), 1e-9);
+    EXPECT_GE(t.birth_time(i), t.birth_time(parent));
+    EXPECT_GE(t.order(i), t.order(parent));
+    EXPECT_LE(t.order(i), t.order(parent) + 1);
+    EXPECT_NEAR(t.length(i), p.internode_length_m, 1e-9);
+  }
+  // Pipe model: r_parent^n = sum r_child^n over internode children.
+  for (NodeId i = 0; i < t.size(); ++i) {
+    if (t.kind(i) != OrganKind::kInternode) continue;
+    double sum = 0.0;
+    for (NodeId c : t.children(i)) {
+      if (t.kind(c) == OrganKind::kInternode) sum += std::pow(t.radius(c), p.pipe_exponent);
+    }
+    const double expect = sum > 0 ? std::pow(sum, 1.0 / p.pipe_exponent) : p.tip_radius_m;
+    EXPECT_NEAR(t.radius(i), expect, 1e-12 * expect);
+  }
+  EXPECT_EQ(t.birth_time(0), 0.0);
+  EXPECT_NEAR(r.height_m, summarize(t).height_m, 1e-9);
+}
+
+TEST(GrowthModel, PruningFactorSheds) {
+  GrowthParams p = growth_preset("A");
+  p.years = 15;
+  p.pruning_factor = 0.0;
+  EXPECT_EQ(grow_tree(p).shed, 0u);
+  p.pruning_factor = 0.3;
+  EXPECT_GT(grow_tree(p).shed, 0u);
+}
+
+TEST(GrowthModel, NeverGrowsIntoSolidObstacles) {
+  Scene s;
+  s.boxes.push_back(Box::from_min_max({-2, -2, 3.0}, {2, 2, 3.5}));  // a roof at 3 m
+  GrowthParams p = growth_preset("B");
+  p.years = 12;
+  const GrowthResult r = grow_tree(p, s);
+  ASSERT_GT(r.internodes, 10u);
+  EXPECT_EQ(internodes_with(r.tree, [&](NodeId i) { return r.tree.end(i).z() > 3.0; }), 0u);
+  EXPECT_EQ(internodes_with(r.tree, [&](NodeId i) { return r.tree.end(i).z() < 0.0; }), 0u);
+}
+
+TEST(GrowthModel, PresetsDifferInTropisms) {
+  EXPECT_DOUBLE_EQ(growth_preset("A").phototropism, 0.25);
+  EXPECT_DOUBLE_EQ(growth_preset("A").gravitropism, 0.12);
+  EXPECT_DOUBLE_EQ(growth_preset("B").phototropism, 0.45);
+  EXPECT_DOUBLE_EQ(growth_preset("B").gravitropism, 0.44);
+  EXPECT_DOUBLE_EQ(growth_preset("C").phototropism, 0.03);
+  EXPECT_DOUBLE_EQ(growth_preset("C").gravitropism, 0.23);
+  EXPECT_GT(growth_preset("C").years, growth_preset("A").years);
+  EXPECT_LT(growth_preset("C").pruning_factor, growth_preset("A").pruning_factor);
+  EXPECT_THROW(growth_preset("D"), ValueError);
+}
+
+TEST(GrowthParams, TomlOverridesPresetAndRejectsBadInput) {
+  const GrowthParams p = parse_growth_params("preset = \"B\"\nyears = 7\nalpha = 2.5\n", "p.toml");
+  EXPECT_EQ(p.years, 7);
+  EXPECT_DOUBLE_EQ(p.alpha, 2.5);
+  EXPECT_DOUBLE_EQ(p.phototropism, 0.45);
+  try {
+    parse_growth_params("years = 5\nalpah = 2\n", "p.toml");
+    FAIL();
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 2);
+    EXPECT_EQ(e.file(), "p.toml");
+  }
+  try {
+    parse_growth_params("apical_control = 1.5\n", "p.toml");
+    FAIL();
+  } catch (const ValueError& e) {
+    EXPECT_EQ(e.line(), 1);
+    EXPECT_NE(std::string(e.what()).find("[0, 1]"), std::string::npos);
+  }
+  EXPECT_THROW(parse_growth_params("phototropism = 0.6\ngravitropism = 0.5\n"), ValueError);
+  EXPECT_THROW(parse_growth_params("years = [\n"), ParseError);
+}
+
+// A tree beside a wall is one-sided: the wall (x = 2.5 m, 6 m high, running along y) shades the
+// +x side and stops growth there, so most of the crown grows on the -x side (weakly for type C,
+// whose phototropism is only 0.03). The node-count table is in docs/environment.md.
+TEST(GrowthModel, TreeBesideWallIsOneSided) {
+  Scene wall;
+  wall.boxes.push_back(Box::wall({2.5, -20}, {2.5, 20}, 0.0, 6.0, 0.2));
+  for (const char* preset : {"A", "B", "C"}) {
+    GrowthParams p = growth_preset(preset);
+    p.years = 15;
+    const GrowthResult open = grow_tree(p);
+    const GrowthResult beside = grow_tree(p, wall);
+    auto side = [](const GrowthResult& r, bool east) {
+      return internodes_with(r.tree, [&](NodeId i) { return (r.tree.end(i).x() > 0.0) == east; });
+    };
+    const std::size_t open_w = side(open, false), open_e = side(open, true);
+    const std::size_t wall_w = side(beside, false), wall_e = side(beside, true);
+    std::printf("preset %s: open west %zu east %zu | wall west %zu east %zu\n", preset, open_w,
+                open_e, wall_w, wall_e);
+    // Open-grown trees are roughly balanced, trees beside the wall are not.
+    EXPECT_LT(std::abs(static_cast<double>(open_w) - open_e), 0.5 * (open_w + open_e));
+    EXPECT_GT(static_cast<double>(wall_w), (preset[0] == 'C' ? 1.2 : 2.0) * wall_e) << preset;
+    EXPECT_EQ(internodes_with(beside.tree, [&](NodeId i) { return beside.tree.end(i).x() > 2.4; }),
+              0u);
+  }
+}
+
+}  // namespace
+}  // namespace fspm::environment
