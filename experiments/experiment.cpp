@@ -1,0 +1,421 @@
+#include "experiments/experiment.hpp"
+
+#include <toml++/toml.h>
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+
+#include "experiments/metrics.hpp"
+#include "fspm/error.hpp"
+
+namespace fspm::experiments {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Sweeps beyond this many runs are almost certainly a typo (a range step of 1e-9, ...).
+constexpr double kMaxRuns = 1.0e9;
+
+class Reader {
+ public:
+  explicit Reader(std::string path) : path_(std::move(path)) {}
+
+  static int line_of(const toml::node& node) { return static_cast<int>(node.source().begin.line); }
+
+  [[noreturn]] void fail(const std::string& key, const toml::node& node,
+                         const std::string& what) const {
+    throw ValueError(key + ": " + what, path_, line_of(node),
+                     static_cast<int>(node.source().begin.column));
+  }
+
+  void only_keys(const std::string& table_name, const toml::table& table,
+                 std::initializer_list<std::string_view> allowed) const {
+    for (auto&& [key, node] : table) {
+      bool known = false;
+      for (std::string_view a : allowed) known = known || key.str() == a;
+      if (!known) {
+        std::string list;
+        for (std::string_view a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+        fail(qualified(table_name, key.str()), node, "unknown key (expected one of: " + list + ")");
+      }
+    }
+  }
+
+  static std::string qualified(const std::string& table, std::string_view key) {
+    return table.empty() ? std::string(key) : table + "." + std::string(key);
+  }
+
+  const toml::table* table(const toml::table& root, const std::string& name, bool required) const {
+    const toml::node* node = root.get(name);
+    if (node == nullptr) {
+      if (required) throw ValueError("missing table [" + name + "]", path_, 1);
+      return nullptr;
+    }
+    if (!node->is_table()) fail(name, *node, "expected a table");
+    return node->as_table();
+  }
+
+  std::string string(const std::string& key, const toml::node& node) const {
+    if (!node.is_string()) fail(key, node, "expected a string");
+    return node.value<std::string>().value();
+  }
+
+  std::int64_t integer(const std::string& key, const toml::node& node, std::int64_t min) const {
+    if (!node.is_integer()) fail(key, node, "expected an integer");
+    const std::int64_t v = node.value<std::int64_t>().value();
+    if (v < min) fail(key, node, "must be at least " + std::to_string(min));
+    return v;
+  }
+
+  double number(const std::string& key, const toml::node& node) const {
+    if (!node.is_number()) fail(key, node, "expected a number");
+    const double v = node.value<double>().value();
+    if (!std::isfinite(v)) fail(key, node, "must be finite");
+    return v;
+  }
+
+  ParameterValue scalar(const std::string& key, const toml::node& node) const {
+    if (node.is_integer()) return node.value<std::int64_t>().value();
+    if (node.is_floating_point()) return number(key, node);
+    if (node.is_boolean()) return static_cast<std::int64_t>(node.value<bool>().value() ? 1 : 0);
+    if (node.is_string()) return node.value<std::string>().value();
+    fail(key, node, "expected a number, a boolean or a string");
+  }
+
+  const toml::array& array(const std::string& key, const toml::node& node, std::size_t size) const {
+    if (!node.is_array()) fail(key, node, "expected an array");
+    const toml::array& a = *node.as_array();
+    if (size != 0 && a.size() != size) {
+      fail(key, node, "expected an array of " + std::to_string(size) + " numbers");
+    }
+    return a;
+  }
+
+  std::vector<ParameterValue> axis_values(const std::string& key, const toml::node& node) const {
+    std::vector<ParameterValue> values;
+    if (node.is_array()) {
+      for (const toml::node& v : *node.as_array()) values.push_back(scalar(key, v));
+      if (values.empty()) fail(key, node, "an empty list sweeps nothing");
+      return values;
+    }
+    if (!node.is_table()) {
+      fail(key, node,
+           "expected a list of values or a table {range|linspace|logspace|values = ...}");
+    }
+    const toml::table& t = *node.as_table();
+    if (t.size() != 1) {
+      fail(key, node, "expected exactly one of range, linspace, logspace, values");
+    }
+    std::string kind;
+    const toml::node* spec_node = nullptr;
+    for (auto&& [k, v] : t) {
+      kind = std::string(k.str());
+      spec_node = &v;
+    }
+    const toml::node& spec = *spec_node;
+    const std::string where = key + "." + kind;
+    if (kind == "values") return axis_values(key, spec);
+    if (kind == "range") {
+      if (!spec.is_array() || spec.as_array()->size() < 2 || spec.as_array()->size() > 3) {
+        fail(where, spec, "expected [start, stop] or [start, stop, step]");
+      }
+      const toml::array& a = *spec.as_array();
+      bool all_integers = true;
+      for (const toml::node& v : a) all_integers = all_integers && v.is_integer();
+      const double start = number(where, *a.get(0));
+      const double stop = number(where, *a.get(1));
+      const double step = a.size() == 3 ? number(where, *a.get(2)) : 1.0;
+      if (step == 0.0) fail(where, spec, "step must not be 0");
+      // Half-open like Python's range: start, start + step, ... while before stop.
+      const double count = std::ceil((stop - start) / step - 1e-9);
+      if (!(count >= 1.0)) {
+        fail(where, spec, "empty range: stop must lie after start in the direction of step");
+      }
+      if (count > kMaxRuns) fail(where, spec, "range has too many values");
+      for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
+        if (all_integers) {
+          values.emplace_back(static_cast<std::int64_t>(start) +
+                              static_cast<std::int64_t>(i) * static_cast<std::int64_t>(step));
+        } else {
+          values.emplace_back(start + static_cast<double>(i) * step);
+        }
+      }
+      return values;
+    }
+    if (kind == "linspace" || kind == "logspace") {
+      const toml::array& a = array(where, spec, 3);
+      const double first = number(where, *a.get(0));
+      const double last = number(where, *a.get(1));
+      const std::int64_t n = integer(where + "[3]", *a.get(2), 1);
+      if (static_cast<double>(n) > kMaxRuns) fail(where, spec, "too many values");
+      const bool log = kind == "logspace";
+      if (log && (first <= 0.0 || last <= 0.0)) {
+        fail(where, spec, "logspace end points must be positive");
+      }
+      for (std::int64_t i = 0; i < n; ++i) {
+        const double f = n == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(n - 1);
+        double v = log ? std::exp(std::log(first) + f * (std::log(last) - std::log(first)))
+                       : first + f * (last - first);
+        if (i == n - 1 && n > 1) v = last;  // exact end point despite rounding
+        if (i == 0) v = first;
+        values.emplace_back(v);
+      }
+      return values;
+    }
+    fail(where, spec, "unknown sweep kind (expected range, linspace, logspace or values)");
+  }
+
+  SampledParameter sampled(const std::string& key, const std::string& name,
+                           const toml::node& node) const {
+    if (!node.is_table() || node.as_table()->size() != 1) {
+      fail(key, node, "expected a table with one of uniform, loguniform, integers = [low, high]");
+    }
+    std::string kind;
+    const toml::node* spec_node = nullptr;
+    for (auto&& [k, v] : *node.as_table()) {
+      kind = std::string(k.str());
+      spec_node = &v;
+    }
+    const toml::node& spec = *spec_node;
+    const std::string where = key + "." + kind;
+    SampledParameter p;
+    p.name = name;
+    p.line = line_of(node);
+    if (kind == "loguniform") {
+      p.log_scale = true;
+    } else if (kind == "integers") {
+      p.integer = true;
+    } else if (kind != "uniform") {
+      fail(where, spec, "unknown distribution (expected uniform, loguniform or integers)");
+    }
+    const toml::array& a = array(where, spec, 2);
+    if (p.integer) {
+      p.low =
+          static_cast<double>(integer(where, *a.get(0), std::numeric_limits<std::int64_t>::min()));
+      p.high =
+          static_cast<double>(integer(where, *a.get(1), std::numeric_limits<std::int64_t>::min()));
+    } else {
+      p.low = number(where, *a.get(0));
+      p.high = number(where, *a.get(1));
+    }
+    if (!(p.low <= p.high)) fail(where, spec, "low must not exceed high");
+    if (p.log_scale && p.low <= 0.0) fail(where, spec, "loguniform bounds must be positive");
+    return p;
+  }
+
+  std::string resolve(const std::string& key, const toml::node& node) const {
+    const std::string given = string(key, node);
+    if (given.empty()) fail(key, node, "must not be empty");
+    fs::path p(given);
+    if (p.is_relative() && path_ != "<string>") p = fs::path(path_).parent_path() / p;
+    std::error_code ec;
+    if (!fs::is_regular_file(p, ec)) {
+      throw IoError(key + ": no such file '" + p.string() + "'", path_, line_of(node));
+    }
+    return p.lexically_normal().string();
+  }
+
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+}  // namespace
+
+std::vector<std::string> Experiment::swept_names() const {
+  std::vector<std::string> names;
+  for (const SweepAxis& a : sweep) names.push_back(a.name);
+  if (sampling) {
+    for (const SampledParameter& p : sampling->parameters) names.push_back(p.name);
+  }
+  return names;
+}
+
+std::size_t Experiment::grid_points() const {
+  std::size_t n = 1;
+  for (const SweepAxis& a : sweep) n *= a.values.size();
+  return n;
+}
+
+std::size_t Experiment::points() const {
+  return grid_points() * (sampling ? sampling->samples : 1);
+}
+
+std::size_t Experiment::runs() const { return points() * replicates; }
+
+Experiment parse_experiment(std::string_view toml_text, const std::string& path) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, path);
+  } catch (const toml::parse_error& e) {
+    throw ParseError(std::string(e.description()), path, static_cast<int>(e.source().begin.line),
+                     static_cast<int>(e.source().begin.column));
+  }
+  const Reader r(path);
+  Experiment x;
+  x.path = path;
+  x.text = std::string(toml_text);
+  r.only_keys("", root,
+              {"experiment", "model", "parameters", "sweep", "sampling", "outputs", "runner"});
+
+  const toml::table& exp = *r.table(root, "experiment", true);
+  r.only_keys("experiment", exp, {"name", "seed", "replicates", "description"});
+  if (const toml::node* n = exp.get("name")) {
+    x.name = r.string("experiment.name", *n);
+  } else {
+    throw ValueError("experiment.name: missing (every experiment needs a name)", path,
+                     Reader::line_of(exp));
+  }
+  if (const toml::node* n = exp.get("seed")) {
+    x.seed = static_cast<std::uint64_t>(r.integer("experiment.seed", *n, 0));
+  }
+  if (const toml::node* n = exp.get("replicates")) {
+    x.replicates = static_cast<std::size_t>(r.integer("experiment.replicates", *n, 1));
+  }
+  if (const toml::node* n = exp.get("description")) r.string("experiment.description", *n);
+
+  const toml::table& model = *r.table(root, "model", true);
+  r.only_keys("model", model, {"kind", "file", "view"});
+  if (const toml::node* n = model.get("kind")) {
+    x.model_kind = r.string("model.kind", *n);
+    x.model_kind_line = Reader::line_of(*n);
+  } else {
+    throw ValueError("model.kind: missing (lsystem, greenlab or synthetic)", path,
+                     Reader::line_of(model));
+  }
+  if (const toml::node* n = model.get("file")) {
+    x.model_file = r.resolve("model.file", *n);
+    x.model_file_line = Reader::line_of(*n);
+  }
+  if (const toml::node* n = model.get("view")) x.model_view = r.resolve("model.view", *n);
+
+  auto claim = [&](const std::string& name, const toml::node& node) {
+    if (name.empty()) r.fail("parameter", node, "empty parameter name");
+    if (!x.parameter_lines.emplace(name, Reader::line_of(node)).second) {
+      r.fail(name, node,
+             "given twice (line " + std::to_string(x.parameter_lines[name]) +
+                 "): a parameter is either fixed, swept or sampled");
+    }
+  };
+
+  if (const toml::table* fixed = r.table(root, "parameters", false)) {
+    for (auto&& [key, node] : *fixed) {
+      const std::string name(key.str());
+      claim(name, node);
+      x.fixed[name] = r.scalar("parameters." + name, node);
+    }
+  }
+
+  double runs = 1.0;
+  if (const toml::table* sweep = r.table(root, "sweep", false)) {
+    for (auto&& [key, node] : *sweep) {
+      const std::string name(key.str());
+      claim(name, node);
+      SweepAxis axis{name, r.axis_values("sweep." + name, node), Reader::line_of(node)};
+      runs *= static_cast<double>(axis.values.size());
+      x.sweep.push_back(std::move(axis));
+    }
+  }
+  // toml++ iterates tables in key order; the file order is what users expect for the grid.
+  std::stable_sort(x.sweep.begin(), x.sweep.end(),
+                   [](const SweepAxis& a, const SweepAxis& b) { return a.line < b.line; });
+
+  if (const toml::table* s = r.table(root, "sampling", false)) {
+    r.only_keys("sampling", *s, {"method", "samples", "seed", "parameters"});
+    Sampling sampling;
+    sampling.seed = x.seed;
+    if (const toml::node* n = s->get("method")) {
+      const std::string m = r.string("sampling.method", *n);
+      if (m == "random") {
+        sampling.method = SamplingMethod::kRandom;
+      } else if (m == "lhs" || m == "latin_hypercube") {
+        sampling.method = SamplingMethod::kLatinHypercube;
+      } else {
+        r.fail("sampling.method", *n, "expected \"random\" or \"lhs\"");
+      }
+    }
+    if (const toml::node* n = s->get("samples")) {
+      sampling.samples = static_cast<std::size_t>(r.integer("sampling.samples", *n, 1));
+    } else {
+      throw ValueError("sampling.samples: missing", path, Reader::line_of(*s));
+    }
+    if (const toml::node* n = s->get("seed")) {
+      sampling.seed = static_cast<std::uint64_t>(r.integer("sampling.seed", *n, 0));
+    }
+    const toml::table* params = r.table(*s, "parameters", false);
+    if (params == nullptr || params->empty()) {
+      throw ValueError("sampling.parameters: missing (name = { uniform = [low, high] }, ...)", path,
+                       Reader::line_of(*s));
+    }
+    for (auto&& [key, node] : *params) {
+      const std::string name(key.str());
+      claim(name, node);
+      sampling.parameters.push_back(r.sampled("sampling.parameters." + name, name, node));
+    }
+    std::stable_sort(
+        sampling.parameters.begin(), sampling.parameters.end(),
+        [](const SampledParameter& a, const SampledParameter& b) { return a.line < b.line; });
+    runs *= static_cast<double>(sampling.samples);
+    x.sampling = std::move(sampling);
+  }
+  runs *= static_cast<double>(x.replicates);
+  if (runs > kMaxRuns) {
+    throw ValueError("the experiment has " + std::to_string(runs) +
+                         " runs, more than the limit of " +
+                         std::to_string(static_cast<std::int64_t>(kMaxRuns)),
+                     path, 1);
+  }
+
+  if (const toml::table* out = r.table(root, "outputs", false)) {
+    r.only_keys("outputs", *out, {"metrics", "keep"});
+    if (const toml::node* n = out->get("metrics")) {
+      for (const toml::node& m : r.array("outputs.metrics", *n, 0)) {
+        const std::string name = r.string("outputs.metrics", m);
+        if (find_metric(name) == nullptr) {
+          std::string list;
+          for (const MetricInfo& info : metric_catalog()) {
+            list += (list.empty() ? "" : ", ") + std::string(info.name);
+          }
+          r.fail("outputs.metrics", m, "unknown metric '" + name + "' (known: " + list + ")");
+        }
+        x.metrics.push_back(name);
+      }
+    }
+    if (const toml::node* n = out->get("keep")) {
+      for (const toml::node& k : r.array("outputs.keep", *n, 0)) {
+        const std::string what = r.string("outputs.keep", k);
+        if (what != "tree")
+          r.fail("outputs.keep", k, "unknown file kind '" + what + "' (expected tree)");
+        x.keep.push_back(what);
+      }
+    }
+  }
+  if (x.metrics.empty()) {
+    for (const MetricInfo& info : metric_catalog()) x.metrics.emplace_back(info.name);
+  }
+
+  if (const toml::table* runner = r.table(root, "runner", false)) {
+    r.only_keys("runner", *runner, {"time_limit_s"});
+    if (const toml::node* n = runner->get("time_limit_s")) {
+      const double limit = r.number("runner.time_limit_s", *n);
+      if (limit <= 0.0) r.fail("runner.time_limit_s", *n, "must be positive");
+      x.time_limit_s = limit;
+    }
+  }
+  return x;
+}
+
+Experiment read_experiment(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError("cannot read the experiment file", path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_experiment(text.str(), path);
+}
+
+}  // namespace fspm::experiments

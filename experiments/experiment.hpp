@@ -1,0 +1,75 @@
+#pragma once
+// An experiment as described by its TOML file (docs/experiments.md): the model, fixed and swept
+// parameters, sampling, replicates, metrics and kept files. Parsing validates everything that can
+// be checked without running the model; errors name the key and its line.
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "experiments/parameter_set.hpp"
+
+namespace fspm::experiments {
+
+// One swept parameter and the values it takes, in file order.
+struct SweepAxis {
+  std::string name;
+  std::vector<ParameterValue> values;
+  int line = 0;
+};
+
+enum class SamplingMethod { kRandom, kLatinHypercube };
+
+// A parameter drawn by [sampling]: uniform on [low, high], or log-uniform, or uniform on the
+// integers low..high.
+struct SampledParameter {
+  std::string name;
+  double low = 0.0;
+  double high = 1.0;
+  bool log_scale = false;
+  bool integer = false;
+  int line = 0;
+};
+
+struct Sampling {
+  SamplingMethod method = SamplingMethod::kRandom;
+  std::size_t samples = 0;
+  std::uint64_t seed = 0;
+  std::vector<SampledParameter> parameters;  // file order
+};
+
+struct Experiment {
+  std::string path;  // the experiment file ("<string>" when parsed from text)
+  std::string text;  // its content, kept to fingerprint the result database
+  std::string name;
+  std::uint64_t seed = 0;
+  std::size_t replicates = 1;
+  std::string model_kind;
+  std::string model_file;  // resolved against the experiment file's directory; may be empty
+  std::string model_view;  // lsystem: optional view file, resolved likewise
+  ParameterSet fixed;
+  std::vector<SweepAxis> sweep;
+  std::optional<Sampling> sampling;
+  std::vector<std::string> metrics;
+  std::vector<std::string> keep;  // per-run files to keep: "tree"
+  std::optional<double> time_limit_s;
+  std::map<std::string, int> parameter_lines;  // line of every fixed, swept or sampled key
+  int model_kind_line = 0;
+  int model_file_line = 0;
+
+  // Swept names (grid axes, then sampled parameters), as the CSV columns list them.
+  std::vector<std::string> swept_names() const;
+  std::size_t grid_points() const;  // product of the axis sizes (1 without axes)
+  std::size_t points() const;       // grid points x samples
+  std::size_t runs() const;         // points x replicates
+};
+
+// Throws ParseError for malformed TOML and ValueError for a wrong key, type or range, naming the
+// key and its line. A missing model file is an IoError naming the key's line.
+Experiment parse_experiment(std::string_view toml_text, const std::string& path = "<string>");
+Experiment read_experiment(const std::string& path);
+
+}  // namespace fspm::experiments

@@ -1,0 +1,60 @@
+#include "experiments/model_factory.hpp"
+
+#include "experiments/lsystem_model.hpp"
+#include "experiments/synthetic_model.hpp"
+
+namespace fspm::experiments {
+namespace {
+
+void require_file(const Experiment& x) {
+  if (x.model_file.empty()) {
+    throw ValueError("model.file: missing (model kind " + x.model_kind + " needs a file)", x.path,
+                     x.model_kind_line);
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<Model> make_model(const Experiment& x) {
+  if (x.model_kind == "lsystem") {
+    require_file(x);
+    bool defines = false;
+    for (const auto& [name, line] : x.parameter_lines)
+      defines = defines || name.starts_with("define.");
+    return make_lsystem_model(x.model_file, x.model_view, defines);
+  }
+  if (x.model_kind == "synthetic") return make_synthetic_model();
+  throw ValueError(
+      "model.kind: unknown kind '" + x.model_kind + "' (expected lsystem or synthetic)", x.path,
+      x.model_kind_line);
+}
+
+void check_experiment(const Experiment& x, const Model& model, const RunPlan& plan) {
+  auto check = [&](const std::string& name, const ParameterValue& value) {
+    try {
+      model.check_parameter(name, value);
+    } catch (const Error& e) {
+      const auto it = x.parameter_lines.find(name);
+      throw ValueError(name + ": " + e.message(), x.path,
+                       it == x.parameter_lines.end() ? 0 : it->second);
+    }
+  };
+  for (const auto& [name, value] : x.fixed) check(name, value);
+  for (const SweepAxis& axis : x.sweep) {
+    for (const ParameterValue& v : axis.values) check(axis.name, v);
+  }
+  if (x.sampling) {
+    for (const SampledParameter& p : x.sampling->parameters) {
+      if (p.integer) {
+        check(p.name, static_cast<std::int64_t>(p.low));
+        check(p.name, static_cast<std::int64_t>(p.high));
+      } else {
+        check(p.name, p.low);
+        check(p.name, p.high);
+      }
+    }
+  }
+  if (plan.size() > 0) model.check_setup(plan.run(0).parameters);
+}
+
+}  // namespace fspm::experiments

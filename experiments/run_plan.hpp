@@ -1,0 +1,43 @@
+#pragma once
+// The runs of an experiment: every grid point (the product of the sweep axes, file order, last
+// axis fastest) crossed with every sample of [sampling], each repeated `replicates` times.
+// Run index = point * replicates + replicate; point = grid_point * samples + sample.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "experiments/experiment.hpp"
+#include "experiments/parameter_set.hpp"
+
+namespace fspm::experiments {
+
+struct RunSpec {
+  std::size_t index = 0;
+  std::size_t point = 0;
+  std::size_t replicate = 0;
+  std::uint64_t seed = 0;   // run_seed(experiment seed, index)
+  ParameterSet parameters;  // fixed, swept and sampled
+};
+
+// The sampled values, samples x parameters, in the order of Sampling::parameters. Random: each
+// value independent; Latin hypercube (McKay, Beckman & Conover 1979): per parameter, one value in
+// each of the `samples` equal-probability strata, strata shuffled independently per parameter.
+std::vector<std::vector<ParameterValue>> draw_samples(const Sampling& sampling);
+
+class RunPlan {
+ public:
+  explicit RunPlan(const Experiment& experiment);
+  std::size_t size() const { return runs_; }
+  std::size_t points() const { return points_.size(); }
+  // Throws ValueError when index >= size().
+  RunSpec run(std::size_t index) const;
+  const ParameterSet& point_parameters(std::size_t point) const { return points_[point]; }
+
+ private:
+  std::uint64_t seed_ = 0;
+  std::size_t replicates_ = 1;
+  std::size_t runs_ = 0;
+  std::vector<ParameterSet> points_;
+};
+
+}  // namespace fspm::experiments

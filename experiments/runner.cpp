@@ -1,0 +1,234 @@
+#include "experiments/runner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <ctime>
+#include <deque>
+#include <filesystem>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "experiments/metrics.hpp"
+#include "experiments/progress.hpp"
+#include "experiments/results_db.hpp"
+#include "experiments/run_plan.hpp"
+#include "fspm/tree_file.hpp"
+
+namespace fspm::experiments {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+std::string utc_now() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+std::string run_file_name(std::size_t run, const char* extension) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "runs/run-%07zu.%s", run, extension);
+  return buf;
+}
+
+// Finished runs handed from the workers to the writer.
+class Mailbox {
+ public:
+  void put(RunRecord r) {
+    {
+      std::lock_guard lock(mutex_);
+      queue_.push_back(std::move(r));
+    }
+    ready_.notify_one();
+  }
+  void worker_done() {
+    {
+      std::lock_guard lock(mutex_);
+      ++finished_workers_;
+    }
+    ready_.notify_one();
+  }
+  // Waits up to `wait` for records; returns false once every worker is done and all is taken.
+  bool take(std::vector<RunRecord>& out, std::size_t workers, std::chrono::milliseconds wait) {
+    std::unique_lock lock(mutex_);
+    ready_.wait_for(lock, wait, [&] { return !queue_.empty() || finished_workers_ == workers; });
+    while (!queue_.empty()) {
+      out.push_back(std::move(queue_.front()));
+      queue_.pop_front();
+    }
+    return !(finished_workers_ == workers && out.empty());
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable ready_;
+  std::deque<RunRecord> queue_;
+  std::size_t finished_workers_ = 0;
+};
+
+}  // namespace
+
+RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
+                             const RunnerOptions& options) {
+  const Clock::time_point start = Clock::now();
+  if (options.shard_count == 0 || options.shard_index >= options.shard_count) {
+    throw ValueError("shard " + std::to_string(options.shard_index) + "/" +
+                     std::to_string(options.shard_count) +
+                     " does not exist (expected I/N with 0 <= I < N)");
+  }
+  const RunPlan plan(experiment);
+  ExperimentInfo info;
+  info.name = experiment.name;
+  info.experiment_path = experiment.path;
+  info.experiment_text = experiment.text;
+  info.total_runs = plan.size();
+  info.swept = experiment.swept_names();
+  info.metrics = experiment.metrics;
+  ResultsDb db(options.out_dir,
+               options.resume ? ResultsDb::Mode::kResume : ResultsDb::Mode::kCreate, info);
+
+  RunnerSummary summary;
+  summary.database = db.path();
+  summary.total_runs = plan.size();
+  const std::vector<char> done = db.recorded_runs();
+  std::vector<std::size_t> todo;
+  for (std::size_t i = options.shard_index; i < plan.size(); i += options.shard_count) {
+    ++summary.shard_runs;
+    if (done[i] != 0) {
+      ++summary.already_done;
+    } else {
+      todo.push_back(i);
+    }
+  }
+  const bool keep_tree =
+      std::find(experiment.keep.begin(), experiment.keep.end(), "tree") != experiment.keep.end();
+  if (keep_tree) fs::create_directories(fs::path(options.out_dir) / "runs");
+  const std::optional<double> limit_s =
+      options.time_limit_s ? options.time_limit_s : experiment.time_limit_s;
+
+  const std::size_t hardware = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t workers = std::max<std::size_t>(
+      1,
+      std::min(options.jobs == 0 ? hardware : options.jobs, std::max<std::size_t>(todo.size(), 1)));
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> stop_all{false};  // a write failure stops the workers too
+  Mailbox mailbox;
+
+  auto interrupted = [&] {
+    return stop_all.load() || (options.interrupt != nullptr && options.interrupt->load());
+  };
+
+  auto work = [&] {
+    // Combined flag seen by RunContext: the user's interrupt or a writer failure.
+    for (;;) {
+      if (interrupted()) break;
+      const std::size_t k = next.fetch_add(1);
+      if (k >= todo.size()) break;
+      const RunSpec spec = plan.run(todo[k]);
+      RunRecord record;
+      record.run = spec.index;
+      record.point = spec.point;
+      record.replicate = spec.replicate;
+      record.seed = spec.seed;
+      record.parameters = spec.parameters;
+      const Clock::time_point t0 = Clock::now();
+      std::optional<Clock::time_point> deadline;
+      if (limit_s) {
+        deadline = t0 + std::chrono::duration_cast<Clock::duration>(
+                            std::chrono::duration<double>(*limit_s));
+      }
+      const RunContext context(deadline, options.interrupt);
+      bool abandoned = false;
+      try {
+        RunResult result = model.run(spec.parameters, spec.seed, context);
+        record.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+        for (const std::string& name : experiment.metrics) {
+          const auto it = result.metrics.find(name);
+          record.metrics[name] = it != result.metrics.end() ? it->second : std::nan("");
+        }
+        if (limit_s && record.seconds > *limit_s) {
+          // A model that does not check its context still gets the status it earned.
+          record.status = RunStatus::kTimeout;
+          record.error = "time limit of " + std::to_string(*limit_s) + " s exceeded";
+        } else if (keep_tree && result.tree) {
+          const std::string rel = run_file_name(spec.index, "tree");
+          write_tree_file(*result.tree, (fs::path(options.out_dir) / rel).string());
+          record.files.push_back(rel);
+        }
+      } catch (const RunStopped& e) {
+        record.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+        if (e.timed_out()) {
+          record.status = RunStatus::kTimeout;
+          record.error = "time limit of " + std::to_string(*limit_s) + " s exceeded";
+        } else {
+          abandoned = true;  // interrupted: no row, so --resume runs it again
+        }
+      } catch (const std::exception& e) {
+        record.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+        record.status = RunStatus::kError;
+        record.error = e.what();
+      } catch (...) {
+        record.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+        record.status = RunStatus::kError;
+        record.error = "unknown exception";
+      }
+      if (record.status != RunStatus::kOk) {
+        for (const std::string& name : experiment.metrics) record.metrics[name] = std::nan("");
+      }
+      if (record.metrics.contains(std::string(kRunTimeMetric))) {
+        record.metrics[std::string(kRunTimeMetric)] = record.seconds;
+      }
+      if (abandoned) continue;
+      record.finished_at = utc_now();
+      mailbox.put(std::move(record));
+    }
+    mailbox.worker_done();
+  };
+
+  std::vector<std::jthread> pool;
+  pool.reserve(workers);
+  for (std::size_t w = 0; w < workers; ++w) pool.emplace_back(work);
+
+  // This thread is the only writer: it commits whatever finished, in one transaction per batch,
+  // so the database is never the bottleneck and a kill loses at most the uncommitted batch.
+  ProgressReporter progress(options.progress, todo.size(), options.progress_bar,
+                            options.progress_interval_s);
+  std::vector<RunRecord> batch;
+  std::exception_ptr write_error;
+  while (mailbox.take(batch, workers, std::chrono::milliseconds(100))) {
+    if (batch.empty() || write_error) {
+      batch.clear();
+      continue;
+    }
+    try {
+      db.insert(batch);
+    } catch (...) {
+      write_error = std::current_exception();
+      stop_all = true;
+      batch.clear();
+      continue;
+    }
+    for (const RunRecord& r : batch) {
+      ++summary.ran;
+      if (r.status == RunStatus::kOk) ++summary.ok;
+      if (r.status == RunStatus::kError) ++summary.failed;
+      if (r.status == RunStatus::kTimeout) ++summary.timed_out;
+    }
+    batch.clear();
+    progress.update(summary.ran, summary.failed + summary.timed_out);
+  }
+  pool.clear();
+  if (write_error) std::rethrow_exception(write_error);
+  summary.interrupted = summary.ran < todo.size();
+  progress.update(summary.ran, summary.failed + summary.timed_out, true);
+  summary.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return summary;
+}
+
+}  // namespace fspm::experiments

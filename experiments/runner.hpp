@@ -1,0 +1,50 @@
+#pragma once
+// The local runner: the runs of an experiment (or of one shard of it) on a pool of threads, each
+// finished run written as one row of the result database by a single writer thread, in batches.
+// Runs already in the database are skipped on resume, so a sweep killed at any point (even with
+// kill -9) continues with exactly the runs that have no row.
+#include <atomic>
+#include <cstddef>
+#include <functional>
+#include <iosfwd>
+#include <optional>
+#include <string>
+
+#include "experiments/experiment.hpp"
+#include "experiments/model.hpp"
+
+namespace fspm::experiments {
+
+struct RunnerOptions {
+  std::string out_dir;
+  std::size_t jobs = 0;         // worker threads; 0: one per hardware thread
+  bool resume = false;          // continue the database in out_dir (or start one)
+  std::size_t shard_index = 0;  // this process runs the runs with index % shard_count == index
+  std::size_t shard_count = 1;
+  std::optional<double> time_limit_s;  // overrides the experiment's [runner] time_limit_s
+  // Set (e.g. from a SIGINT handler) to stop: no new run starts, running ones are abandoned at
+  // their next check and not recorded, finished ones are committed.
+  const std::atomic<bool>* interrupt = nullptr;
+  std::ostream* progress = nullptr;  // progress lines (stderr); null: silent
+  bool progress_bar = false;         // a redrawn bar with ETA (terminal) instead of plain lines
+  double progress_interval_s = 5.0;  // plain lines at most this often
+};
+
+struct RunnerSummary {
+  std::string database;
+  std::size_t total_runs = 0;    // of the whole experiment
+  std::size_t shard_runs = 0;    // of this shard
+  std::size_t already_done = 0;  // rows found on resume
+  std::size_t ran = 0;           // recorded by this call
+  std::size_t ok = 0;
+  std::size_t failed = 0;
+  std::size_t timed_out = 0;
+  bool interrupted = false;
+  double seconds = 0.0;  // wall clock of this call
+};
+
+// Throws IoError for database problems (locked, corrupted, another experiment's) before any run.
+RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
+                             const RunnerOptions& options);
+
+}  // namespace fspm::experiments

@@ -1,0 +1,45 @@
+#include "experiments/slurm_script.hpp"
+
+#include <fmt/format.h>
+
+#include "fspm/error.hpp"
+
+namespace fspm::experiments {
+namespace {
+
+// Single-quoted for the shell.
+std::string shell_quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+}  // namespace
+
+std::string slurm_script(const SlurmOptions& o) {
+  if (o.shards == 0) throw ValueError("--shards must be at least 1");
+  if (o.cpus_per_task == 0) throw ValueError("--jobs must be at least 1");
+  return fmt::format(
+      "#!/bin/bash\n"
+      "# Written by `fspm run --emit-slurm`: runs the experiment as {shards} shards, one Slurm\n"
+      "# array task each. Submit with `sbatch {script}`; a task that is requeued or resubmitted\n"
+      "# resumes its shard (--resume). When all tasks are done, combine the shards with\n"
+      "#   {fspm} results merge {out}/merged {out}/shard-*\n"
+      "#SBATCH --job-name={name}\n"
+      "#SBATCH --array=0-{last}\n"
+      "#SBATCH --cpus-per-task={cpus}\n"
+      "#SBATCH --ntasks=1\n"
+      "#SBATCH --time={time}\n"
+      "#SBATCH --output={out_raw}/slurm-%A_%a.out\n"
+      "set -euo pipefail\n"
+      "shard=\"${{SLURM_ARRAY_TASK_ID:?run this script with sbatch}}\"\n"
+      "exec {fspm} run {experiment} --jobs \"${{SLURM_CPUS_PER_TASK:-{cpus}}}\" \\\n"
+      "  --out {out}/shard-\"$shard\" --shard \"$shard\"/{shards} --resume\n",
+      fmt::arg("shards", o.shards), fmt::arg("script", shell_quote(o.script_path)),
+      fmt::arg("fspm", shell_quote(o.fspm_executable)), fmt::arg("out", shell_quote(o.out_dir)),
+      fmt::arg("out_raw", o.out_dir), fmt::arg("name", o.job_name), fmt::arg("last", o.shards - 1),
+      fmt::arg("cpus", o.cpus_per_task), fmt::arg("time", o.time_limit),
+      fmt::arg("experiment", shell_quote(o.experiment_file)));
+}
+
+}  // namespace fspm::experiments

@@ -1,0 +1,106 @@
+#include "experiments/run_plan.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "experiments/run_seed.hpp"
+#include "fspm/error.hpp"
+
+namespace fspm::experiments {
+namespace {
+
+Experiment parse(const std::string& body) {
+  return parse_experiment(
+      "[experiment]\nname = \"t\"\nseed = 0\n[model]\nkind = \"synthetic\"\n" + body, "t.toml");
+}
+
+TEST(RunSeed, IsSplitMix64OfTheExperimentSeed) {
+  // Reference outputs of Vigna's splitmix64.c seeded with 0 (also the first words that
+  // xoshiro256 seeding draws): 0xe220a8397b1dcdaf, 0x6e789e6aa1b965f4, 0x06c45d188009454f.
+  EXPECT_EQ(run_seed(0, 0), 0xe220a8397b1dcdafULL >> 1);
+  EXPECT_EQ(run_seed(0, 1), 0x6e789e6aa1b965f4ULL >> 1);
+  EXPECT_EQ(run_seed(0, 2), 0x06c45d188009454fULL >> 1);
+  EXPECT_NE(run_seed(1, 0), run_seed(0, 0));
+}
+
+TEST(RunPlan, LastAxisVariesFastestThenReplicates) {
+  const Experiment y = parse_experiment(
+      "[experiment]\nname = \"t\"\nseed = 7\nreplicates = 2\n[model]\nkind = \"synthetic\"\n"
+      "[parameters]\nnodes = 3\n[sweep]\n\"x.a\" = [1, 2]\n\"x.b\" = [10, 20, 30]\n",
+      "t.toml");
+  const RunPlan plan(y);
+  ASSERT_EQ(plan.size(), 12u);
+  ASSERT_EQ(plan.points(), 6u);
+  const RunSpec r = plan.run(7);  // point 3 = (a index 1, b index 0), replicate 1
+  EXPECT_EQ(r.point, 3u);
+  EXPECT_EQ(r.replicate, 1u);
+  EXPECT_EQ(std::get<std::int64_t>(r.parameters.at("x.a")), 2);
+  EXPECT_EQ(std::get<std::int64_t>(r.parameters.at("x.b")), 10);
+  EXPECT_EQ(std::get<std::int64_t>(r.parameters.at("nodes")), 3);
+  EXPECT_EQ(r.seed, run_seed(7, 7));
+  EXPECT_EQ(std::get<std::int64_t>(plan.run(5).parameters.at("x.b")), 30);
+  EXPECT_THROW(plan.run(12), ValueError);
+}
+
+TEST(Sampling, LatinHypercubeHitsEveryStratumOnce) {
+  const Experiment x = parse(
+      "[sampling]\nmethod = \"lhs\"\nsamples = 50\nseed = 3\n[sampling.parameters]\n"
+      "\"x.u\" = { uniform = [10, 20] }\n\"x.l\" = { loguniform = [1, 1000] }\n"
+      "\"x.i\" = { integers = [0, 49] }\n");
+  const auto s = draw_samples(*x.sampling);
+  ASSERT_EQ(s.size(), 50u);
+  std::set<int> u_strata, l_strata, ints;
+  for (const auto& row : s) {
+    const double u = std::get<double>(row[0]);
+    const double l = std::get<double>(row[1]);
+    ASSERT_GE(u, 10.0);
+    ASSERT_LT(u, 20.0);
+    ASSERT_GE(l, 1.0);
+    ASSERT_LT(l, 1000.0);
+    u_strata.insert(static_cast<int>((u - 10.0) / 10.0 * 50));
+    l_strata.insert(static_cast<int>(std::log10(l) / 3.0 * 50));
+    ints.insert(static_cast<int>(std::get<std::int64_t>(row[2])));
+  }
+  EXPECT_EQ(u_strata.size(), 50u);
+  EXPECT_EQ(l_strata.size(), 50u);
+  EXPECT_EQ(ints.size(), 50u);  // 50 strata of width 1 on 0..49: every integer once
+  EXPECT_EQ(*ints.begin(), 0);
+  EXPECT_EQ(*ints.rbegin(), 49);
+}
+
+TEST(Sampling, SameSeedSameSamplesOtherSeedOthers) {
+  const std::string body =
+      "[sampling]\nmethod = \"random\"\nsamples = 20\nseed = SEED\n[sampling.parameters]\n"
+      "\"x.u\" = { uniform = [0, 1] }\n";
+  auto with_seed = [&](int seed) {
+    std::string b = body;
+    b.replace(b.find("SEED"), 4, std::to_string(seed));
+    return draw_samples(*parse(b).sampling);
+  };
+  EXPECT_EQ(with_seed(5), with_seed(5));
+  EXPECT_NE(with_seed(5), with_seed(6));
+  double mean = 0.0;
+  const auto s = with_seed(5);
+  for (const auto& row : s) mean += std::get<double>(row[0]) / 20.0;
+  EXPECT_GT(mean, 0.2);
+  EXPECT_LT(mean, 0.8);
+}
+
+TEST(RunPlan, SamplesAreCrossedWithTheGrid) {
+  const Experiment x = parse(
+      "[sweep]\n\"x.a\" = [1, 2, 3]\n[sampling]\nsamples = 4\n[sampling.parameters]\n"
+      "\"x.u\" = { uniform = [0, 1] }\n");
+  const RunPlan plan(x);
+  EXPECT_EQ(plan.size(), 12u);
+  // The same four samples under every grid point.
+  for (std::size_t s = 0; s < 4; ++s) {
+    EXPECT_EQ(plan.point_parameters(s).at("x.u"), plan.point_parameters(8 + s).at("x.u"));
+  }
+  EXPECT_EQ(std::get<std::int64_t>(plan.point_parameters(5).at("x.a")), 2);
+}
+
+}  // namespace
+}  // namespace fspm::experiments
