@@ -158,7 +158,7 @@ struct Oracle {
 class RandomCostModel final : public EditCostModel {
  public:
   RandomCostModel(std::mt19937_64& rng, std::size_t na, std::size_t nb, double bound_factor = 1.0)
-      : na_(na), nb_(nb) {
+      : nb_(nb) {
     std::uniform_real_distribution<double> u(0.0, 3.0), f(0.0, 1.0);
     for (std::size_t i = 0; i < na; ++i) del_.push_back(u(rng));
     for (std::size_t j = 0; j < nb; ++j) ins_.push_back(u(rng));
@@ -172,7 +172,7 @@ class RandomCostModel final : public EditCostModel {
   double relabel_cost(NodeId a, NodeId b) const override { return rel_[a * nb_ + b]; }
 
  private:
-  std::size_t na_, nb_;
+  std::size_t nb_;
   std::vector<double> del_, ins_, rel_;
 };
 
