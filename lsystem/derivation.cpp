@@ -139,7 +139,7 @@ bool Derivation::rewrite_fast(const ModuleString& in, ModuleString& out) {
     const SymbolId* from = data + begin[s];
     if (n == 1) {
       *o++ = *from;
-    } else {
+    } else if (n != 0) {
       std::memcpy(o, from, n * sizeof(SymbolId));
       o += n;
     }

@@ -191,7 +191,14 @@ double Expression::eval(std::int32_t n, EvalState& s) const {
   return 0.0;
 }
 
+// Bounds that keep compilation and (recursive) evaluation within a small stack; real grammars
+// stay far below them.
+constexpr std::size_t kMaxNodes = 4096;
+constexpr int kMaxNesting = 256;
+
 std::int32_t ExpressionCompiler::add(Expression::Node node) {
+  if (out_->nodes_.size() >= kMaxNodes)
+    cur_.fail_at(cur_.pos(), "expression too long (more than 4096 terms)");
   out_->nodes_.push_back(node);
   return static_cast<std::int32_t>(out_->nodes_.size() - 1);
 }
@@ -202,6 +209,7 @@ Expression ExpressionCompiler::compile(bool allow_assignment) {
   e.position_ = cur_.position();
   out_ = &e;
   allow_assignment_ = allow_assignment;
+  depth_ = 0;
   e.root_ = assignment();
   out_ = nullptr;
   return e;
@@ -364,6 +372,13 @@ std::int32_t ExpressionCompiler::multiplicative() {
 }
 
 std::int32_t ExpressionCompiler::unary() {
+  struct Nesting {
+    explicit Nesting(ExpressionCompiler& c) : c_(c) {
+      if (++c_.depth_ > kMaxNesting) c_.cur_.fail_at(c_.cur_.pos(), "expression nested too deeply");
+    }
+    ~Nesting() { --c_.depth_; }
+    ExpressionCompiler& c_;
+  } nesting(*this);
   cur_.skip_space();
   const char c = cur_.peek();
   if (c == '-' || c == '!' || c == '+') {

@@ -38,6 +38,13 @@ inline double uniform01(std::mt19937_64& rng) {
   return static_cast<double>(rng() >> 11) * 0x1.0p-53;
 }
 
+// v truncated toward zero and clamped to [lo, hi]; NaN gives lo (no undefined conversions).
+inline long long clamp_to_integer(double v, long long lo, long long hi) {
+  if (!(v >= static_cast<double>(lo))) return lo;
+  if (v >= static_cast<double>(hi)) return hi;
+  return static_cast<long long>(v);
+}
+
 class Expression {
  public:
   Expression() = default;
@@ -122,6 +129,7 @@ class ExpressionCompiler {
   NameScope& scope_;
   Expression* out_ = nullptr;
   bool allow_assignment_ = false;
+  int depth_ = 0;  // nesting, bounded so that hostile input cannot exhaust the stack
 };
 
 }  // namespace fspm::lsystem

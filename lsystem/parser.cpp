@@ -104,10 +104,11 @@ class Parser {
         continue;
       }
       if (match_header(b, eol, "lsystem", after)) {
-        sys_.number = static_cast<int>(header_number(after, eol, "an L-system number"));
+        sys_.number = static_cast<int>(
+            clamp_to_integer(header_number(after, eol, "an L-system number"), 0, 1 << 30));
       } else if (match_header(b, eol, "seed", after)) {
         const double v = header_number(after, eol, "a seed (a non-negative integer)");
-        sys_.seed = static_cast<std::uint64_t>(v < 0 ? -v : v);
+        sys_.seed = static_cast<std::uint64_t>(clamp_to_integer(v < 0 ? -v : v, 0, 1LL << 62));
       } else if (match_header(b, eol, "derivation length", after)) {
         const double v = header_number(after, eol, "a derivation length (an integer >= 0)");
         if (v < 0 || v > 1e9)
@@ -115,7 +116,7 @@ class Parser {
         sys_.derivation_length = static_cast<int>(v);
       } else if (match_header(b, eol, "maximum depth", after)) {
         const double v = header_number(after, eol, "a maximum depth (an integer >= 1)");
-        const int depth = static_cast<int>(std::clamp(v, 1.0, 1e6));
+        const int depth = static_cast<int>(clamp_to_integer(v, 1, 10000));
         if (group == &sys_.productions) {
           sys_.maximum_depth = depth;
         } else {

@@ -313,6 +313,9 @@ class Preprocessor {
   // self-reference).
   std::string expand(const std::string& text, const std::set<std::string>& disabled,
                      const std::string& file, int line_no) {
+    if (disabled.size() > 256) {
+      throw ParseError("macros nested more than 256 deep", file, line_no, 1);
+    }
     std::string out;
     for (std::size_t i = 0; i < text.size();) {
       const char c = text[i];

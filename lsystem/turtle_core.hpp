@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fspm/error.hpp"
+#include "lsystem/expression.hpp"
 #include "lsystem/module_string.hpp"
 #include "lsystem/turtle.hpp"
 
@@ -228,10 +229,10 @@ void walk(const ModuleString& s, const std::vector<Action>& actions, const Turtl
         f.width = has ? p[0] : f.width + settings.line_width_increment;
         break;
       case Action::kColorUp:
-        f.color = has ? static_cast<int>(p[0]) : f.color + 1;
+        f.color = has ? static_cast<int>(clamp_to_integer(p[0], -65535, 65535)) : f.color + 1;
         break;
       case Action::kColorDown:
-        f.color = has ? static_cast<int>(p[0]) : f.color - 1;
+        f.color = has ? static_cast<int>(clamp_to_integer(p[0], -65535, 65535)) : f.color - 1;
         break;
       case Action::kPolygonBegin:
         ++polygon_depth;

@@ -1,0 +1,74 @@
+// L-system throughput (issue 3, item 8). Single core.
+//   derive/abop_1_24a/10: ABOP fig. 1.24a, F -> F[+F]F[-F]F, n = 10 (24.4 million modules).
+//     Goals: >= 100 million modules/s, <= 16 bytes/module.
+//   derive/parametric_tree/20: ABOP eq. 1.9, A(s) -> F(s)[+A(s/R)][-A(s/R)], n = 20
+//     (8.4 million modules). Goal: >= 20 million modules/s.
+//   interpret/abop_1_24a/N: turtle into a TreeGraph. Goal: >= 20 million modules/s.
+// "modules/s" counts the modules of the final string per second of the whole run.
+#include <benchmark/benchmark.h>
+
+#include "lsystem/derivation.hpp"
+#include "lsystem/parser.hpp"
+#include "lsystem/turtle.hpp"
+
+namespace {
+
+using namespace fspm::lsystem;
+
+const char* kAbop124a = "Axiom: F\nF --> F[+F]F[-F]F\n";
+const char* kParametricTree = "#define R 1.456\nAxiom: A(1)\nA(s) --> F(s)[+A(s/R)][-A(s/R)]\n";
+
+void derive_bench(benchmark::State& state, const char* grammar) {
+  const LSystem sys = parse_lsystem(grammar);
+  DeriveOptions options;
+  options.steps = static_cast<int>(state.range(0));
+  std::size_t modules = 0;
+  std::size_t bytes = 0;
+  for (auto _ : state) {
+    Derivation d(sys, options);
+    d.run();
+    modules = d.string().size();
+    bytes = d.string().memory_bytes();
+    benchmark::DoNotOptimize(d.string().symbols().data());
+  }
+  state.counters["modules"] = static_cast<double>(modules);
+  state.counters["modules_per_s"] =
+      benchmark::Counter(static_cast<double>(modules) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate);
+  state.counters["bytes_per_module"] = static_cast<double>(bytes) / static_cast<double>(modules);
+}
+
+void BM_DeriveAbop124a(benchmark::State& state) { derive_bench(state, kAbop124a); }
+BENCHMARK(BM_DeriveAbop124a)->Name("derive/abop_1_24a")->Arg(10)->Unit(benchmark::kMillisecond);
+
+void BM_DeriveParametricTree(benchmark::State& state) { derive_bench(state, kParametricTree); }
+BENCHMARK(BM_DeriveParametricTree)
+    ->Name("derive/parametric_tree")
+    ->Arg(20)
+    ->Unit(benchmark::kMillisecond);
+
+void BM_InterpretAbop124a(benchmark::State& state) {
+  const LSystem sys = parse_lsystem(kAbop124a);
+  DeriveOptions options;
+  options.steps = static_cast<int>(state.range(0));
+  const ModuleString s = derive(sys, options);
+  TurtleSettings view;
+  view.angle_deg = 25.7;
+  std::size_t nodes = 0;
+  for (auto _ : state) {
+    const Interpretation r = interpret(s, sys.symbols, view);
+    nodes = r.tree.size();
+  }
+  state.counters["modules"] = static_cast<double>(s.size());
+  state.counters["nodes"] = static_cast<double>(nodes);
+  state.counters["modules_per_s"] =
+      benchmark::Counter(static_cast<double>(s.size()) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_InterpretAbop124a)
+    ->Name("interpret/abop_1_24a")
+    ->Arg(8)
+    ->Arg(10)
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace

@@ -1,0 +1,76 @@
+// fspm lsystem derive | interpret, run as a user would.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "fspm/tree_file.hpp"
+#include "tests/cli/run_command.hpp"
+
+namespace fspm {
+namespace {
+
+using testing::run_fspm;
+using testing::scratch_dir;
+
+std::string example(const std::string& name) {
+  return std::string(FSPM_SOURCE_DIR) + "/examples/lsystems/" + name;
+}
+
+TEST(LsystemCli, DeriveJsonCountsFollowTheClosedForm) {
+  // ABOP 1.24a after n steps: F = 5^n, [ = ] = (5^n - 1)/2, + = - = (5^n - 1)/4.
+  const auto r = run_fspm("lsystem derive " + example("abop_1_24a.l") + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["steps"], 5);
+  EXPECT_EQ(j["symbols"]["F"], 3125);
+  EXPECT_EQ(j["symbols"]["["], 1562);
+  EXPECT_EQ(j["symbols"]["]"], 1562);
+  EXPECT_EQ(j["symbols"]["+"], 781);
+  EXPECT_EQ(j["symbols"]["-"], 781);
+  EXPECT_EQ(j["modules"], 3125 + 2 * 1562 + 2 * 781);
+  EXPECT_FALSE(j.contains("string"));
+}
+
+TEST(LsystemCli, DeriveStringStepsDefineAndSeed) {
+  const auto r = run_fspm("lsystem derive " + example("parametric_tree.l") +
+                          " --steps 1 --define R=2 --string --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["steps"], 1);
+  EXPECT_EQ(j["string"], "F(1)[+A(0.5)][-A(0.5)]");
+  const auto a = run_fspm("lsystem derive " + example("stochastic_plant.l") + " --seed 3 --string");
+  const auto b = run_fspm("lsystem derive " + example("stochastic_plant.l") + " --seed 3 --string");
+  const auto c = run_fspm("lsystem derive " + example("stochastic_plant.l") + " --seed 4 --string");
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  EXPECT_EQ(a.out, b.out);
+  EXPECT_NE(a.out, c.out);
+}
+
+TEST(LsystemCli, InterpretWritesATreeFile) {
+  const auto dir = scratch_dir("lsystem_interpret");
+  const std::string out = (dir / "mono.tree").string();
+  const auto r = run_fspm("lsystem interpret " + example("monopodial_tree.l") + " -o " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const TreeGraph tree = read_tree_file(out);
+  EXPECT_EQ(tree.size(), 1023u);  // 2^10 - 1 internodes (one F per apex per step)
+  EXPECT_NEAR(tree.length(0), 1.0, 1e-9);
+  EXPECT_NEAR(tree.radius(0), 5.0, 1e-9);  // !(10): width 10 -> radius 5
+}
+
+TEST(LsystemCli, BadInputExitsOneWithPosition) {
+  const auto dir = scratch_dir("lsystem_bad");
+  std::ofstream(dir / "bad.l") << "Axiom: F\nF --> F(1 +)\n";
+  auto r = run_fspm("lsystem derive " + (dir / "bad.l").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("bad.l:2:"), std::string::npos) << r.err;
+  r = run_fspm("lsystem derive " + example("abop_1_24a.l") + " --steps 12 --budget 1000");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("budget"), std::string::npos) << r.err;
+  r = run_fspm("lsystem derive " + example("abop_1_24a.l") + " --define NOEQUALS");
+  EXPECT_EQ(r.exit_code, 1);
+}
+
+}  // namespace
+}  // namespace fspm
