@@ -1,0 +1,190 @@
+// fspm greenlab simulate | reconstruct | fit: GreenLab plants from TOML descriptions, compressed
+// tree graphs (.ctree), reconstruction at any age and GL1 calibration.
+#include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
+#include "fspm/atomic_file.hpp"
+#include "fspm/compressed_tree_graph.hpp"
+#include "fspm/error.hpp"
+#include "fspm/tree_file.hpp"
+#include "greenlab/calibration.hpp"
+#include "greenlab/plant_params.hpp"
+#include "greenlab/reconstruction.hpp"
+#include "greenlab/simulation.hpp"
+
+namespace fspm::cli {
+namespace {
+
+struct SimulateOptions {
+  std::string params;
+  std::string out;
+  int cycles = -1;
+  std::int64_t seed = -1;
+  bool json = false;
+};
+
+struct ReconstructOptions {
+  std::string graph;
+  std::string out;
+  std::string format;
+  double age = -1.0;
+  bool no_leaves = false;
+  bool json = false;
+};
+
+struct FitOptions {
+  std::string params;
+  std::string targets;
+  std::string out;
+  int max_iterations = 200;
+  bool json = false;
+};
+
+void run_simulate(const SimulateOptions& o) {
+  greenlab::PlantParams params = greenlab::read_plant_params(o.params);
+  if (o.cycles >= 0) {
+    if (o.cycles > greenlab::kMaxCycles) {
+      throw ValueError("--cycles must be at most " + std::to_string(greenlab::kMaxCycles));
+    }
+    params.cycles = o.cycles;
+  }
+  if (o.seed >= 0) params.seed = static_cast<std::uint64_t>(o.seed);
+  const auto t0 = std::chrono::steady_clock::now();
+  const CompressedTreeGraph g = greenlab::simulate_compressed(params);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  write_ctree_file(g, o.out);
+  const auto bytes = std::filesystem::file_size(o.out);
+  const greenlab::OrganCounts c = greenlab::count_organs(g);
+  nlohmann::json by_age = nlohmann::json::object();
+  for (const auto& [age, n] : c.metamers_by_age) by_age[std::to_string(age)] = n;
+  const nlohmann::json j = {{"cycles", params.cycles}, {"graph_nodes", g.size()},
+                            {"metamers", c.metamers},  {"leaves", c.leaves},
+                            {"flowers", c.flowers},    {"buds", c.buds},
+                            {"graph_bytes", bytes},    {"metamers_by_age", by_age},
+                            {"seconds", seconds},      {"output", o.out}};
+  if (o.json) {
+    print_json(j);
+    return;
+  }
+  spdlog::info("wrote {} ({} node records for {} metamers, {} bytes)", o.out, g.size(), c.metamers,
+               bytes);
+}
+
+void run_reconstruct(const ReconstructOptions& o) {
+  const CompressedTreeGraph g = read_ctree_file(o.graph);
+  greenlab::ReconstructionOptions ro;
+  ro.age = o.age;
+  ro.leaves = !o.no_leaves;
+  greenlab::ReconstructionStats st;
+  const auto t0 = std::chrono::steady_clock::now();
+  const TreeGraph tree = greenlab::reconstruct(g, ro, &st);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  write_tree_file(tree, o.out, o.format);
+  const nlohmann::json j = {{"age", st.age},
+                            {"metamers", st.metamers},
+                            {"leaves", st.leaves},
+                            {"flowers", st.flowers},
+                            {"pruned_axes", st.pruned_axes},
+                            {"components", st.components()},
+                            {"nodes", tree.size()},
+                            {"seconds", seconds},
+                            {"output", o.out}};
+  if (o.json) {
+    print_json(j);
+    return;
+  }
+  spdlog::info("wrote {} at age {} ({} metamers, {} components, {:.3f} s)", o.out, st.age,
+               st.metamers, st.components(), seconds);
+}
+
+void run_fit(const FitOptions& o) {
+  std::ifstream in(o.params, std::ios::binary);
+  if (!in) throw IoError("cannot open plant description", o.params);
+  std::ostringstream text;
+  text << in.rdbuf();
+  const greenlab::PlantParams params = greenlab::parse_plant_params(text.str(), o.params);
+  const auto targets = greenlab::read_targets_csv(o.targets);
+  greenlab::FitOptions fo;
+  fo.max_iterations = o.max_iterations;
+  const greenlab::FitResult fit = greenlab::fit_gl1(params, targets, {}, fo);
+  const std::string toml = greenlab::fitted_toml(text.str(), fit, o.params);
+  write_file_atomically(o.out, [&](std::ostream& out) { out << toml; });
+  nlohmann::json parameters = nlohmann::json::array();
+  for (std::size_t i = 0; i < fit.names.size(); ++i) {
+    const double se = fit.standard_errors[i];
+    parameters.push_back(
+        {{"name", fit.names[i]},
+         {"initial", fit.initial[i]},
+         {"estimate", fit.estimates[i]},
+         {"std_error", std::isfinite(se) ? nlohmann::json(se) : nlohmann::json()}});
+  }
+  const nlohmann::json j = {{"parameters", parameters},   {"initial_cost", fit.initial_cost},
+                            {"cost", fit.final_cost},     {"iterations", fit.iterations},
+                            {"converged", fit.converged}, {"targets", targets.size()},
+                            {"residuals", fit.residuals}, {"output", o.out}};
+  if (o.json) {
+    print_json(j);
+    return;
+  }
+  for (std::size_t i = 0; i < fit.names.size(); ++i) {
+    std::cout << fit.names[i] << " = " << fit.estimates[i] << " +- " << fit.standard_errors[i]
+              << '\n';
+  }
+  std::cout << "cost " << fit.final_cost << " (initial " << fit.initial_cost << ") after "
+            << fit.iterations << " iterations\n";
+}
+
+}  // namespace
+
+void add_greenlab_commands(CLI::App& app) {
+  CLI::App* gl = app.add_subcommand("greenlab", "GreenLab plants: simulate, reconstruct, fit");
+  gl->require_subcommand(1);
+
+  auto sim = std::make_shared<SimulateOptions>();
+  CLI::App* s = gl->add_subcommand(
+      "simulate", "Simulate a plant description into a compressed tree graph (.ctree)");
+  s->add_option("PARAMS", sim->params, "Plant description (TOML)")->required();
+  s->add_option("--cycles", sim->cycles, "Growth cycles (default: plant.cycles)");
+  s->add_option("--seed", sim->seed, "Random seed for GL2 plants (default: plant.seed)");
+  s->add_option("-o,--output", sim->out, "Output .ctree file")->required();
+  s->add_flag("--json", sim->json, "Machine-readable JSON on stdout");
+  s->callback([sim] { run_simulate(*sim); });
+
+  auto rec = std::make_shared<ReconstructOptions>();
+  CLI::App* r = gl->add_subcommand(
+      "reconstruct", "Rebuild the explicit tree at any age from a compressed tree graph");
+  r->add_option("PLANT", rec->graph, "Compressed tree graph (.ctree)")->required();
+  r->add_option("--age", rec->age, "Plant age in cycles (default: the simulated age)");
+  r->add_option("-o,--output", rec->out, "Output tree file (.tree, .treeb, .nwk, .mtg)")
+      ->required();
+  r->add_option("--format", rec->format, "Output format (default: from the extension)");
+  r->add_flag("--no-leaves", rec->no_leaves, "Leave the leaves out");
+  r->add_flag("--json", rec->json, "Machine-readable JSON on stdout");
+  r->callback([rec] { run_reconstruct(*rec); });
+
+  auto fit = std::make_shared<FitOptions>();
+  CLI::App* f = gl->add_subcommand(
+      "fit", "Calibrate GL1 parameters on target data (CSV: quantity,age,cycle,value)");
+  f->add_option("PARAMS", fit->params, "Plant description with [functional] and [calibration]")
+      ->required();
+  f->add_option("TARGET", fit->targets, "Target data (CSV)")->required();
+  f->add_option("-o,--output", fit->out, "Fitted plant description (TOML)")->required();
+  f->add_option("--max-iterations", fit->max_iterations, "Solver iteration limit")
+      ->check(CLI::PositiveNumber);
+  f->add_flag("--json", fit->json, "Machine-readable JSON on stdout");
+  f->callback([fit] { run_fit(*fit); });
+}
+
+}  // namespace fspm::cli
