@@ -362,8 +362,13 @@ void Derivation::apply_cut(ModuleString& s) {
 
 void Derivation::update_queries() {
   static const TurtleSettings kDefaults{};
-  fill_query_modules(sys_, current_, options_.turtle ? *options_.turtle : kDefaults,
-                     options_.environment);
+  const TurtleSettings& settings = options_.turtle ? *options_.turtle : kDefaults;
+  if (sys_.homomorphism.productions.empty()) {
+    fill_query_modules(sys_, current_, settings, options_.environment);
+  } else {
+    const ModuleString drawn = interpretation_string();
+    fill_query_modules(sys_, current_, settings, options_.environment, &drawn);
+  }
 }
 
 ModuleString Derivation::interpretation_string() {

@@ -99,6 +99,10 @@ class Preprocessor {
         line += lines[++i];
       }
       std::size_t first = line.find_first_not_of(' ');
+      if (first != std::string::npos && line[first] == '#' && abop_header(line, first)) {
+        // ABOP writes `#ignore: +-F`; cpfg `ignore: +-F`.
+        line[first] = ' ';
+      }
       if (first != std::string::npos && line[first] == '#') {
         directive(line, first, name, dir, line_no, depth);
         out_.append("\n", name, line_no, static_cast<int>(line.size()) + 1);
@@ -121,6 +125,18 @@ class Preprocessor {
   SourceText take() { return std::move(out_); }
 
  private:
+  static bool abop_header(const std::string& line, std::size_t hash) {
+    for (const char* word : {"ignore", "consider"}) {
+      const std::size_t n = std::char_traits<char>::length(word);
+      if (line.compare(hash + 1, n, word) == 0) {
+        std::size_t p = hash + 1 + n;
+        while (p < line.size() && line[p] == ' ') ++p;
+        if (p < line.size() && line[p] == ':') return true;
+      }
+    }
+    return false;
+  }
+
   bool active() const { return conditionals_.empty() || conditionals_.back().active; }
 
   void directive(const std::string& line, std::size_t hash, const std::string& file,

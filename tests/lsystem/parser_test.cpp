@@ -178,20 +178,26 @@ TEST(LsystemParser, IncludeIsRelativeToTheFileAndKeepsLines) {
   {
     std::ofstream(dir / "params.h") << "#define LEN 2.5\n#define BAD\n";
     std::ofstream(dir / "main.l") << "#include \"params.h\"\nAxiom: F(LEN)\n";
-    std::ofstream(dir / "broken.h") << "\n\nF --> ?\n";
+    std::ofstream(dir / "broken.h") << "\n\nF --> F(1 +)\n";
     std::ofstream(dir / "broken.l") << "Axiom: F\n#include \"broken.h\"\n";
   }
   const LSystem sys = parse_lsystem_file((dir / "main.l").string());
   EXPECT_EQ(to_string(derive(sys), sys.symbols), "F(2.5)");
   try {
     parse_lsystem_file((dir / "broken.l").string());
+    FAIL() << "no error";
   } catch (const ParseError& e) {
-    // `F --> ?` is fine (? is a module); anything thrown must point into broken.h.
-    EXPECT_NE(e.file().find("broken.h"), std::string::npos);
+    EXPECT_NE(e.file().find("broken.h"), std::string::npos) << e.what();
+    EXPECT_EQ(e.line(), 3);
+    EXPECT_EQ(e.column(), 12);
   }
   EXPECT_THROW(parse_lsystem("#include \"missing.h\"\nAxiom: A\n"), IoError);
   EXPECT_THROW(parse_lsystem_file((dir / "nope.l").string()), IoError);
   std::filesystem::remove_all(dir);
+}
+
+TEST(LsystemParser, AbopStyleIgnoreDirective) {
+  EXPECT_EQ(derived("#ignore: +\nAxiom: A+B\nA < B --> X\n", 1), "A+X");
 }
 
 TEST(LsystemParser, NumberedModuleNamesOnlyForGreenLabStyleFiles) {

@@ -133,6 +133,14 @@ TEST(LsystemTurtle, QueryModulesGetTheTurtleState) {
   EXPECT_NEAR(param(6)[1], -1.0, 1e-12);  // up stays -y
 }
 
+TEST(LsystemTurtle, QueryPassDrawsTheHomomorphism) {
+  // A draws nothing in the derived string but F(3) through the homomorphism.
+  const LSystem sys = parse_lsystem("Axiom: A?P(0,0,0)\nhomomorphism\nA --> F(3)\n");
+  const ModuleString s = derive(sys);
+  EXPECT_NEAR(s.parameters(1)[2], 3.0, 1e-12);
+  EXPECT_EQ(sys.symbols.name(s.symbol(0)), "A");
+}
+
 class HeightEnvironment : public OpenEnvironment {
  public:
   void respond(std::span<EnvironmentQuery> queries) override {
