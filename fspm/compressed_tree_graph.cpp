@@ -99,6 +99,13 @@ class Reader {
   std::size_t pos_ = 0;
 };
 
+// Multiplicities grow exponentially with the age of a branching plant: refuse to wrap around.
+void add_checked(std::uint64_t& into, std::uint64_t value) {
+  if (__builtin_add_overflow(into, value, &into)) {
+    throw ValueError("compressed tree graph stands for more than 2^64 metamers");
+  }
+}
+
 }  // namespace
 
 RecordId CompressedTreeGraph::add_record(const CompressedRecord& record,
@@ -155,12 +162,15 @@ std::uint64_t CompressedTreeGraph::compute_multiplicities() {
   for (RecordId id : topological_order(records_, axillary_refs_)) {
     const auto& r = records_[id];
     if (r.multiplicity == 0) continue;
-    if (r.successor != kNoRecord) records_[r.successor].multiplicity += r.multiplicity;
+    const std::uint64_t m = r.multiplicity;
+    if (r.successor != kNoRecord) add_checked(records_[r.successor].multiplicity, m);
     for (std::uint32_t k = 0; k < r.axillary_count; ++k) {
-      records_[axillary_refs_[r.axillary_begin + k]].multiplicity += r.multiplicity;
+      add_checked(records_[axillary_refs_[r.axillary_begin + k]].multiplicity, m);
     }
   }
-  return expanded_size();
+  std::uint64_t total = 0;
+  for (const auto& r : records_) add_checked(total, r.multiplicity);
+  return total;
 }
 
 std::uint64_t CompressedTreeGraph::expanded_size() const {

@@ -339,6 +339,45 @@ class AxisBuilder {
 
 }  // namespace
 
+std::uint64_t metamers_at_age(const CompressedTreeGraph& graph, double age) {
+  if (graph.root() == kNoRecord) return 0;
+  const double now = graph.birth_date + age;
+  // Instances per record counting only references from records born by `now`; records are
+  // numbered parents first by the simulation, but any order is handled by a topological pass.
+  std::vector<std::uint32_t> indegree(graph.size(), 0);
+  for (const auto& r : graph.records()) {
+    if (r.successor != kNoRecord) ++indegree[r.successor];
+  }
+  for (RecordId a : graph.axillary_refs()) ++indegree[a];
+  std::vector<std::uint64_t> count(graph.size(), 0);
+  std::vector<RecordId> order;
+  order.reserve(graph.size());
+  for (RecordId i = 0; i < graph.size(); ++i) {
+    if (indegree[i] == 0) order.push_back(i);
+  }
+  count[graph.root()] = 1;
+  std::uint64_t total = 0;
+  // Saturating sums: a count past 2^64 only needs to compare as huge.
+  auto add = [](std::uint64_t a, std::uint64_t b) {
+    std::uint64_t out = 0;
+    return __builtin_add_overflow(a, b, &out) ? std::numeric_limits<std::uint64_t>::max() : out;
+  };
+  for (std::size_t head = 0; head < order.size(); ++head) {
+    const RecordId id = order[head];
+    const CompressedRecord& r = graph.record(id);
+    const bool born = r.birth <= now;
+    const std::uint64_t c = born ? count[id] : 0;
+    total = add(total, c);
+    auto visit = [&](RecordId child) {
+      count[child] = add(count[child], c);
+      if (--indegree[child] == 0) order.push_back(child);
+    };
+    if (r.successor != kNoRecord) visit(r.successor);
+    for (RecordId a : graph.axillaries(id)) visit(a);
+  }
+  return total;
+}
+
 TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
                       ReconstructionStats* stats) {
   const AxisBuilder builder(graph, options, true);
@@ -349,9 +388,16 @@ TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOpti
     if (stats) *stats = st;
     return tree;
   }
-  // Upper bound on the output, so the columns are allocated once.
-  const std::uint64_t bound = graph.expanded_size();
-  tree.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(bound * 2 + 8, 1ull << 31)));
+  // Metamers born by the requested age bound the output (each adds at most a leaf and a
+  // flower), so the columns are allocated once and impossible requests fail early.
+  const std::uint64_t bound = metamers_at_age(graph, builder.age());
+  if (bound > kMaxExplicitMetamers) {
+    throw ValueError("the plant has " + std::to_string(bound) + " metamers at age " +
+                     std::to_string(builder.age()) + ", too many for an explicit tree (at most " +
+                     std::to_string(kMaxExplicitMetamers) +
+                     "); use an earlier age or the instanced reconstruction");
+  }
+  tree.reserve(static_cast<std::size_t>(bound * 2 + 8));
   if (builder.any_pruning_period()) tree.add_attribute("dead", 0.0);
   // Oldest node first, axis by axis (Jaeger 3.1.1): a FIFO of axis starts.
   std::vector<AxisStart> queue{{graph.root(), kNoNode, builder.root_frame(), 0}};

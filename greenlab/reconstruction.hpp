@@ -69,11 +69,18 @@ struct ReconstructionStats {
   std::uint64_t components() const { return metamers + leaves; }
 };
 
+// Metamers of the plant born by `age` (pruning aside): the size of its explicit tree.
+std::uint64_t metamers_at_age(const CompressedTreeGraph& graph, double age);
+
+// An explicit tree holds at most this many metamers (a leaf and a flower each may add nodes).
+inline constexpr std::uint64_t kMaxExplicitMetamers = std::uint64_t{1} << 30;
+
 // Traverses oldest node first, axis by axis (trunk, then its laterals, then theirs): internodes
 // as kInternode nodes, leaves as kLeaf children at the top of their metamer, terminal flowers as
 // kFlower. Leaves and lateral axes are self-pruned by Jaeger's death status (3.2.1); nodes born
 // after `age` are left out and diameters interpolated quadratically between birth and the final
-// age (3.2.2). Throws ValueError when `age` is beyond the simulated age.
+// age (3.2.2). Throws ValueError when `age` is beyond the simulated age or the tree would
+// exceed kMaxExplicitMetamers.
 TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
                       ReconstructionStats* stats = nullptr);
 

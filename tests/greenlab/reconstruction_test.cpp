@@ -198,3 +198,30 @@ TEST(Reconstruction, InstancedFormExpandsToTheExplicitTree) {
 
 }  // namespace
 }  // namespace fspm::greenlab
+
+namespace fspm::greenlab {
+namespace {
+
+TEST(Reconstruction, HugePlantsFailCleanly) {
+  const PlantParams p = testing::example("jaeger_figure1.toml");
+  // 2 (2^N - 1) metamers: N = 62 still fits in 64 bits, N = 64 does not.
+  const CompressedTreeGraph g = simulate_compressed(p, 62);
+  EXPECT_EQ(g.size(), 124u);
+  EXPECT_EQ(metamers_at_age(g, 5), 62u);
+  EXPECT_EQ(metamers_at_age(g, 62), g.expanded_size());
+  ReconstructionOptions o;
+  o.age = 40;
+  EXPECT_THROW(reconstruct(g, o), ValueError);
+  o.age = 8;
+  ReconstructionStats st;
+  reconstruct(g, o, &st);
+  EXPECT_EQ(st.metamers, 510u);
+  // The instanced form has no such limit: one prototype per cycle.
+  o.age = 62;
+  const InstancedPlant inst = reconstruct_instanced(g, o);
+  EXPECT_EQ(inst.prototypes.size(), 62u);
+  EXPECT_THROW(simulate_compressed(p, 64), ValueError);
+}
+
+}  // namespace
+}  // namespace fspm::greenlab
