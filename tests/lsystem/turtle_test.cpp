@@ -162,6 +162,39 @@ TEST(LsystemTurtle, CommunicationModulesAskTheEnvironment) {
   EXPECT_EQ(to_string(s, sys.symbols), "F(1)F(1)F(1)AX(2,42)");
 }
 
+TEST(LsystemTurtle, Abop124aGeometry) {
+  const std::string path = std::string(FSPM_SOURCE_DIR) + "/examples/lsystems/abop_1_24a.l";
+  const LSystem sys = parse_lsystem_file(path);
+  const TurtleSettings view = view_for_lsystem(path);
+  EXPECT_DOUBLE_EQ(view.angle_deg, 25.7);
+  // n = 1: F[+F]F[-F]F by hand.
+  DeriveOptions one;
+  one.steps = 1;
+  const Interpretation r = interpret(derive(sys, one), sys.symbols, view);
+  ASSERT_EQ(r.tree.size(), 5u);
+  const double s = std::sin(25.7 * std::numbers::pi / 180);
+  const double c = std::cos(25.7 * std::numbers::pi / 180);
+  EXPECT_TRUE(r.tree.end(1).isApprox(Eigen::Vector3d(-s, 0, 1 + c)));
+  EXPECT_TRUE(r.tree.end(3).isApprox(Eigen::Vector3d(s, 0, 2 + c)));
+  EXPECT_TRUE(r.tree.end(4).isApprox(Eigen::Vector3d(0, 0, 3)));
+  EXPECT_EQ(r.tree.parent(3), 2u);
+  EXPECT_EQ(r.tree.parent(4), 2u);
+  // n = 5: the trunk keeps 3 of the 5 F of every trunk F: 3^5 = 243 order-0 internodes, and
+  // 5^5 internodes in all.
+  const Interpretation big = interpret(derive(sys), sys.symbols, view);
+  EXPECT_EQ(big.tree.size(), 3125u);
+  int trunk = 0;
+  double top = 0;
+  for (NodeId n = 0; n < big.tree.size(); ++n) {
+    if (big.tree.order(n) != 0) continue;
+    ++trunk;
+    top = std::max(top, big.tree.end(n).z());
+  }
+  EXPECT_EQ(trunk, 243);
+  EXPECT_NEAR(top, 243.0, 1e-9);
+  EXPECT_NEAR(big.tree.radius(0), 0.05, 1e-12);  // initial line width 0.1
+}
+
 TEST(LsystemTurtle, ExamplesDrawTrees) {
   const std::string dir = std::string(FSPM_SOURCE_DIR) + "/examples/lsystems/";
   for (const char* name : {"abop_1_24a", "parametric_tree", "monopodial_tree", "greenlab",
