@@ -64,6 +64,7 @@ const std::vector<MetricInfo>& metric_catalog() {
       {"crown_depth", "length", "top of the tree minus the lowest lateral or leaf"},
       {"total_length", "length", "summed length of all internodes"},
       {"leaf_area", "length^2", "summed area of the leaves (0 when the model gives none)"},
+      {"biomass", "mass", "GreenLab GL1: total biomass produced, seed included (sum of Q(n))"},
       {"run_time", "s", "wall-clock time of the model run (parse, derive, interpret)"},
   };
   return catalog;

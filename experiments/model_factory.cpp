@@ -1,5 +1,6 @@
 #include "experiments/model_factory.hpp"
 
+#include "experiments/greenlab_model.hpp"
 #include "experiments/lsystem_model.hpp"
 #include "experiments/synthetic_model.hpp"
 
@@ -23,10 +24,14 @@ std::unique_ptr<Model> make_model(const Experiment& x) {
       defines = defines || name.starts_with("define.");
     return make_lsystem_model(x.model_file, x.model_view, defines);
   }
+  if (x.model_kind == "greenlab") {
+    require_file(x);
+    return make_greenlab_model(x.model_file);
+  }
   if (x.model_kind == "synthetic") return make_synthetic_model();
   throw ValueError(
-      "model.kind: unknown kind '" + x.model_kind + "' (expected lsystem or synthetic)", x.path,
-      x.model_kind_line);
+      "model.kind: unknown kind '" + x.model_kind + "' (expected lsystem, greenlab or synthetic)",
+      x.path, x.model_kind_line);
 }
 
 void check_experiment(const Experiment& x, const Model& model, const RunPlan& plan) {
