@@ -155,6 +155,7 @@ void run_ttest(const TTestOptions& o) {
   std::cout << test << " t-test (" << o.alternative << ")\n";
   for (const char* key : {"t", "df", "p", "mean_a", "mean_b", "sd_a", "sd_b", "n_a", "n_b",
                           "estimate", "confidence_interval", "cohens_d"}) {
+    if (j[key].is_null()) continue;
     std::cout << "  " << key << ": " << j[key].dump() << '\n';
   }
 }

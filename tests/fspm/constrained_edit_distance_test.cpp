@@ -301,6 +301,8 @@ TEST(ConstrainedEditDistance, HandCaseWhereDeletingAnInnerNodeIsForbidden) {
   Oracle unconstrained{t1, t2, topo};
   unconstrained.constrained = false;
   EXPECT_EQ(unconstrained.minimum(), 1.0);  // Tai's mapping: delete x only
+  Oracle constrained{t1, t2, topo};
+  EXPECT_EQ(constrained.minimum(), 3.0);
 }
 
 // The example of the command line, A = 1000(100, X=1(200, 300)), B = 1000(Y=2(100, 200), 300).
@@ -327,6 +329,8 @@ TEST(ConstrainedEditDistance, HandCaseNewickLabels) {
   Oracle unconstrained{a, b, model};
   unconstrained.constrained = false;
   EXPECT_EQ(unconstrained.minimum(), 3.0);
+  Oracle constrained{a, b, model};
+  EXPECT_EQ(constrained.minimum(), 203.0);
 }
 
 TEST(ConstrainedEditDistance, RejectsCostModelBreakingTheRelabelBound) {
