@@ -1,9 +1,14 @@
-// libFuzzer target: arbitrary bytes as a cpfg L-system file. Parsing, a short derivation with a
-// small module budget and the turtle interpretation must either succeed or throw fspm::Error;
-// anything else (crash, sanitizer report, other exception) is a bug.
+// libFuzzer target for the L-system reader and derivation. The first byte picks the mode:
+//   even: the remaining bytes are an L-system file (parser, preprocessor, expressions);
+//   odd:  the bytes drive a generator of small well-formed grammars (contexts, brackets,
+//         parameters, conditions, probabilities, cut, decomposition, homomorphism), so most
+//         inputs reach derivation and turtle interpretation.
+// Everything must succeed or throw fspm::Error; anything else (crash, sanitizer report, other
+// exception) is a bug.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <string_view>
 
 #include "fspm/error.hpp"
@@ -11,14 +16,81 @@
 #include "lsystem/parser.hpp"
 #include "lsystem/turtle.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::string_view text(reinterpret_cast<const char*>(data), size);
+namespace {
+
+class ByteSource {
+ public:
+  ByteSource(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
+  unsigned next(unsigned n) { return pos_ < size_ ? data_[pos_++] % n : 0; }
+  bool done() const { return pos_ >= size_; }
+
+ private:
+  const std::uint8_t* data_;
+  std::size_t size_;
+  std::size_t pos_ = 0;
+};
+
+std::string module(ByteSource& in, bool parametric, bool in_successor) {
+  static const char* kNames[] = {"F", "A", "B", "+", "-", "&",  "/", "!",
+                                 "f", "{", ".", "}", "%", "?P", "$", "|"};
+  std::string m = kNames[in.next(in_successor ? 16 : 3)];
+  if (parametric && m != "{" && m != "}" && m != "%") {
+    static const char* kArgs[] = {"x", "x*2", "x/2", "x+1", "ran(3)", "1/x", "x>1?x:2", "-x"};
+    m += "(";
+    m += in_successor ? kArgs[in.next(8)] : "x";
+    m += ")";
+  }
+  return m;
+}
+
+std::string successor(ByteSource& in, bool parametric) {
+  std::string s;
+  const unsigned n = in.next(8);
+  int depth = 0;
+  for (unsigned i = 0; i < n; ++i) {
+    const unsigned k = in.next(10);
+    if (k == 0) {
+      s += "[";
+      ++depth;
+    } else if (k == 1 && depth > 0) {
+      s += "]";
+      --depth;
+    } else {
+      s += module(in, parametric && in.next(2), true);
+    }
+  }
+  s.append(static_cast<std::size_t>(depth), ']');
+  return s.empty() ? "*" : s;
+}
+
+std::string generate(ByteSource& in) {
+  const bool parametric = in.next(2);
+  std::string g = "seed: " + std::to_string(in.next(100)) + "\n";
+  if (in.next(2)) g += "ignore: +-/&\n";
+  g += "Axiom: " + successor(in, parametric) + "\n";
+  const unsigned productions = 1 + in.next(6);
+  for (unsigned p = 0; p < productions && !in.done(); ++p) {
+    if (p == productions - 1 && in.next(3) == 0)
+      g += in.next(2) ? "decomposition\n" : "homomorphism\n";
+    std::string line;
+    if (in.next(3) == 0) line += module(in, parametric, false) + " < ";
+    line += module(in, parametric, false);
+    if (in.next(3) == 0) line += " > " + module(in, parametric, false);
+    if (parametric && in.next(2)) line += " : x < " + std::to_string(in.next(5));
+    line += " --> " + successor(in, parametric);
+    if (in.next(3) == 0) line += " : " + std::to_string(in.next(4));
+    g += line + "\n";
+  }
+  return g;
+}
+
+void run(std::string_view text) {
   try {
     // Includes resolve in a directory that does not exist, so inputs never read real files.
     const fspm::lsystem::LSystem sys =
         fspm::lsystem::parse_lsystem(text, "fuzz.l", {}, "/nonexistent-fspm-fuzz");
     fspm::lsystem::DeriveOptions options;
-    options.steps = std::min(sys.derivation_length, 6);
+    options.steps = std::min(std::max(sys.derivation_length, 4), 6);
     options.module_budget = 20000;
     fspm::lsystem::Derivation derivation(sys, options);
     derivation.run();
@@ -26,6 +98,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (s.size() <= 20000) fspm::lsystem::interpret(s, sys.symbols);
   } catch (const fspm::Error&) {
     // Expected for malformed input.
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size == 0) return 0;
+  if (data[0] % 2 == 0) {
+    run(std::string_view(reinterpret_cast<const char*>(data + 1), size - 1));
+  } else {
+    ByteSource in(data + 1, size - 1);
+    run(generate(in));
   }
   return 0;
 }

@@ -12,6 +12,7 @@ namespace fspm::lsystem {
 namespace {
 
 constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+constexpr long kMaxLoopIterations = 1'000'000;
 
 enum Function : std::uint8_t {
   kSin,
@@ -187,6 +188,17 @@ double Expression::eval(std::int32_t n, EvalState& s) const {
     case Op::kComma:
       eval(node.a, s);
       return eval(node.b, s);
+    case Op::kWhile: {
+      long iterations = 0;
+      while (eval(node.a, s) != 0.0) {
+        if (++iterations > kMaxLoopIterations) {
+          throw ValueError("while loop ran more than 1000000 times", position_.file,
+                           position_.line, position_.column);
+        }
+        eval(node.b, s);
+      }
+      return 0.0;
+    }
   }
   return 0.0;
 }
@@ -224,15 +236,87 @@ std::vector<Expression> ExpressionCompiler::compile_statements(char end_char) {
       cur_.advance();
       continue;
     }
-    out.push_back(compile(true));
+    Expression e;
+    e.position_ = cur_.position();
+    out_ = &e;
+    allow_assignment_ = true;
+    depth_ = 0;
+    e.root_ = statement(end_char);
+    out_ = nullptr;
+    out.push_back(std::move(e));
+  }
+  return out;
+}
+
+bool ExpressionCompiler::keyword(const char* word) {
+  cur_.skip_space();
+  const std::size_t n = std::char_traits<char>::length(word);
+  if (cur_.rest().substr(0, n) != word || is_ident_char(cur_.peek(n))) return false;
+  cur_.advance(n);
+  return true;
+}
+
+std::int32_t ExpressionCompiler::block_or_statement(char end_char) {
+  cur_.skip_space();
+  if (cur_.peek() != '{') return statement(end_char);
+  cur_.advance();
+  Expression::Node zero{Op::kConst};
+  std::int32_t seq = add(zero);
+  for (;;) {
+    cur_.skip_space();
+    if (cur_.peek() == '}') {
+      cur_.advance();
+      return seq;
+    }
+    if (cur_.at_end()) cur_.fail("'}' closing the statement block");
+    if (cur_.peek() == ';') {
+      cur_.advance();
+      continue;
+    }
+    Expression::Node n{Op::kComma};
+    n.a = seq;
+    n.b = statement('}');
+    seq = add(n);
+  }
+}
+
+std::int32_t ExpressionCompiler::statement(char end_char) {
+  if (++depth_ > kMaxNesting) cur_.fail_at(cur_.pos(), "statements nested too deeply");
+  std::int32_t result;
+  if (keyword("if")) {
+    cur_.expect('(', "'(' after if");
+    const std::int32_t c = assignment();
+    cur_.expect(')', "')' closing the if condition");
+    const std::int32_t then_part = block_or_statement(end_char);
+    Expression::Node n{Op::kCond};
+    n.a = c;
+    n.b = then_part;
+    if (keyword("else")) {
+      n.c = block_or_statement(end_char);
+    } else {
+      Expression::Node zero{Op::kConst};
+      n.c = add(zero);
+    }
+    result = add(n);
+  } else if (keyword("while")) {
+    cur_.expect('(', "'(' after while");
+    const std::int32_t c = assignment();
+    cur_.expect(')', "')' closing the while condition");
+    Expression::Node n{Op::kWhile};
+    n.a = c;
+    n.b = block_or_statement(end_char);
+    result = add(n);
+  } else {
+    result = assignment();
     cur_.skip_space();
     if (cur_.peek() == ';') {
       cur_.advance();
-    } else if (!(cur_.at_end() || cur_.peek() == end_char)) {
+    } else if (!(cur_.at_end() || cur_.peek() == end_char || cur_.peek() == '}')) {
       cur_.fail("';' after a statement");
     }
   }
-  return out;
+  --depth_;
+  return result;
 }
 
 std::int32_t ExpressionCompiler::assignment() {

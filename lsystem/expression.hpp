@@ -84,7 +84,8 @@ class Expression {
     kCall2,
     kRan,
     kNran,
-    kComma
+    kComma,
+    kWhile
   };
   struct Node {
     Op op;
@@ -107,12 +108,16 @@ class ExpressionCompiler {
   ExpressionCompiler(Cursor& cursor, NameScope& scope) : cur_(cursor), scope_(scope) {}
   // One expression (assignment allowed only when allow_assignment).
   Expression compile(bool allow_assignment = false);
-  // Statements `a = 1; b = a * 2;` up to (not including) `end_char` or the end of the text.
+  // Statements `a = 1; b = a * 2;`, `if (c) {...} else {...}`, `while (c) {...}` up to (not
+  // including) `end_char` or the end of the text.
   std::vector<Expression> compile_statements(char end_char);
 
  private:
   using Op = Expression::Op;
   std::int32_t add(Expression::Node node);
+  bool keyword(const char* word);
+  std::int32_t statement(char end_char);
+  std::int32_t block_or_statement(char end_char);
   std::int32_t assignment();
   std::int32_t ternary();
   std::int32_t logical_or();

@@ -115,6 +115,18 @@ TEST(LsystemParser, DefineBlockSetsGlobals) {
   EXPECT_EQ(derived("define: {\n  a = 1;\n  b = 2;\n}\nAxiom: A(a+b)\n", 0), "A(3)");
 }
 
+TEST(LsystemParser, BlocksHaveIfElseAndWhile) {
+  EXPECT_EQ(
+      derived("define: {\n  n = 0; i = 0;\n  while (i < 5) { n = n + i; i = i + 1; }\n"
+              "  if (n == 10) { r = 1; } else { r = 2; }\n  if (n > 100) q = 1; else q = 3;\n}\n"
+              "Axiom: A(n,r,q)\n",
+              0),
+      "A(10,1,3)");
+  const LSystem forever = parse_lsystem("define: { while (1) { x = 1; } }\nAxiom: A\n");
+  EXPECT_THROW(derive(forever), ValueError);
+  EXPECT_THROW(parse_lsystem("define: { if 1 { x = 1; } }\nAxiom: A\n"), ParseError);
+}
+
 TEST(LsystemParser, ConditionBlocksAssignLocals) {
   EXPECT_EQ(derived("Axiom: A(2)\nA(x) : {y = x * 10;} y > 5 --> B(y)\n", 1), "B(20)");
 }
