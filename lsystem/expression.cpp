@@ -192,8 +192,8 @@ double Expression::eval(std::int32_t n, EvalState& s) const {
       long iterations = 0;
       while (eval(node.a, s) != 0.0) {
         if (++iterations > kMaxLoopIterations) {
-          throw ValueError("while loop ran more than 1000000 times", position_.file,
-                           position_.line, position_.column);
+          throw ValueError("while loop ran more than 1000000 times", position_.file, position_.line,
+                           position_.column);
         }
         eval(node.b, s);
       }
