@@ -8,6 +8,7 @@ namespace fspm::cli {
 
 void add_tree_commands(CLI::App& app);
 void add_lsystem_commands(CLI::App& app);
+void add_graphics_commands(CLI::App& app);
 void add_greenlab_commands(CLI::App& app);
 void add_evaluation_commands(CLI::App& app);
 

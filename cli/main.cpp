@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
 
   fspm::cli::add_tree_commands(app);
   fspm::cli::add_lsystem_commands(app);
+  fspm::cli::add_graphics_commands(app);
   fspm::cli::add_greenlab_commands(app);
   fspm::cli::add_evaluation_commands(app);
 

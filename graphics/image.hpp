@@ -24,6 +24,10 @@ struct Image {
 // ValueError when fspm was built without OpenImageIO (FSPM_WITH_VTK=OFF).
 void write_image(const Image& image, const std::string& path);
 
+// Checks, before any rendering, that `path` names a format OpenImageIO writes and an existing
+// directory. Throws ValueError / IoError like write_image would.
+void check_image_path(const std::string& path);
+
 // Reads an image back as 8-bit RGBA (for tests and comparisons). Throws IoError.
 Image read_image(const std::string& path);
 

@@ -13,6 +13,18 @@
 
 namespace fspm::graphics {
 
+void check_image_path(const std::string& path) {
+  if (!OIIO::ImageOutput::create(path)) {
+    throw ValueError("unknown image format for '" + path +
+                         "' (expected an extension such as .png, .tif or .exr)",
+                     path);
+  }
+  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  if (!dir.empty() && !std::filesystem::is_directory(dir)) {
+    throw IoError("cannot write: directory '" + dir.string() + "' does not exist", path);
+  }
+}
+
 void write_image(const Image& image, const std::string& path) {
   if (image.width < 1 || image.height < 1 ||
       image.rgba.size() != static_cast<std::size_t>(image.width) * image.height * 4) {

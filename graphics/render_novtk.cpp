@@ -16,6 +16,10 @@ void write_image(const Image&, const std::string& path) {
   throw ValueError("fspm was built without OpenImageIO (FSPM_WITH_VTK=OFF)", path);
 }
 
+void check_image_path(const std::string& path) {
+  throw ValueError("fspm was built without OpenImageIO (FSPM_WITH_VTK=OFF)", path);
+}
+
 Image read_image(const std::string& path) {
   throw ValueError("fspm was built without OpenImageIO (FSPM_WITH_VTK=OFF)", path);
 }

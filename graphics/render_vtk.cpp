@@ -184,7 +184,7 @@ Image render_mesh(const TriangleMesh& mesh, const RenderOptions& options) {
   }
   if (options.ground) {
     const Eigen::Vector3f size = (hi - lo).cwiseMax(Eigen::Vector3f::Constant(0.1f));
-    const float half = 1.5f * std::max(size.x(), size.y()) + 0.5f * size.z();
+    const float half = 0.9f * std::max(size.x(), size.y()) + 0.4f * size.z();
     const Eigen::Vector3f c = 0.5f * (lo + hi);
     vtkNew<vtkPoints> corners;
     corners->InsertNextPoint(c.x() - half, c.y() - half, lo.z());
@@ -213,9 +213,11 @@ Image render_mesh(const TriangleMesh& mesh, const RenderOptions& options) {
   lights->SetKeyLightIntensity(0.85);
   lights->AddLightsToRenderer(renderer);
 
+  // Frame the tree, not the ground plane around it.
   place_camera(renderer, options.view, lo, hi);
-  renderer->ResetCamera();
-  renderer->GetActiveCamera()->Zoom(options.ground ? 1.6 : 1.0);
+  double bounds[6] = {lo.x(), hi.x(), lo.y(), hi.y(), lo.z(), hi.z()};
+  renderer->ResetCamera(bounds);
+  renderer->GetActiveCamera()->Zoom(1.1);
   renderer->ResetCameraClippingRange();
 
   vtkNew<vtkRenderWindow> window;

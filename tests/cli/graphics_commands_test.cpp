@@ -1,0 +1,122 @@
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "fspm/tree_file.hpp"
+#include "tests/cli/run_command.hpp"
+
+namespace fspm {
+namespace {
+
+using testing::run_fspm;
+using testing::scratch_dir;
+
+// Two internodes up z (radius 0.05 m, born 0 and 1) and a leaf on the top one (born 2).
+std::string write_tree(const std::filesystem::path& dir) {
+  TreeGraph t;
+  NodeData d;
+  d.end = {0, 0, 1};
+  d.radius = 0.05;
+  NodeId a = t.add_node(kNoNode, d);
+  d.start = {0, 0, 1};
+  d.end = {0, 0, 2};
+  d.birth_time = 1;
+  NodeId b = t.add_node(a, d);
+  d.start = {0, 0, 2};
+  d.end = {0.2, 0, 2};
+  d.radius = 0;
+  d.birth_time = 2;
+  d.kind = OrganKind::kLeaf;
+  t.add_node(b, d);
+  t.add_attribute("light", 0.5);
+  const std::string path = (dir / "t.tree").string();
+  write_tree_file(t, path);
+  return path;
+}
+
+TEST(GraphicsCli, MeshEveryFormatWithCounts) {
+  const auto dir = scratch_dir("mesh");
+  const std::string tree = write_tree(dir);
+  // One tube of 2 segments with 16 sides (ceil(2 pi 0.05 / 0.01) clamped): 3 rings of 17
+  // vertices and two caps of 17; 64 wall and 32 cap triangles. The leaf adds 4 and 2.
+  for (const char* ext : {"obj", "ply", "vtp", "glb"}) {
+    const std::string out = (dir / (std::string("t.") + ext)).string();
+    auto r = run_fspm("mesh " + tree + " -o " + out + " --leaves --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["vertices"], 85 + 4) << ext;
+    EXPECT_EQ(j["triangles"], 96 + 2) << ext;
+    EXPECT_GE(j["seconds"].get<double>(), 0.0);
+    EXPECT_TRUE(std::filesystem::exists(out));
+  }
+  EXPECT_TRUE(std::filesystem::exists(dir / "t.mtl"));
+  auto r = run_fspm("mesh " + tree + " -o " + (dir / "t.glb").string() + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["triangles"], 96);
+}
+
+TEST(GraphicsCli, GrowthSequence) {
+  const auto dir = scratch_dir("pvd");
+  const std::string tree = write_tree(dir);
+  auto r = run_fspm("mesh " + tree + " -o " + (dir / "g.pvd").string() +
+                    " --leaves --ages 0,1,2 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["frames"].size(), 3u);
+  // Age 0: one segment of 16 sides (2 rings + 2 caps of 17; 32 + 32 triangles).
+  EXPECT_EQ(j["frames"][0]["triangles"], 64);
+  EXPECT_EQ(j["frames"][1]["triangles"], 96);
+  EXPECT_EQ(j["frames"][2]["triangles"], 98);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_TRUE(std::filesystem::exists(dir / ("g_000" + std::to_string(i) + ".vtp")));
+  }
+  r = run_fspm("mesh " + tree + " -o " + (dir / "g.glb").string() + " --ages 1");
+  EXPECT_EQ(r.exit_code, 1);
+}
+
+TEST(GraphicsCli, BadInputsExitOneWithoutOutput) {
+  const auto dir = scratch_dir("mesh_bad");
+  const std::string tree = write_tree(dir);
+  auto r = run_fspm("mesh " + (dir / "missing.tree").string() + " -o " + (dir / "x.glb").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("missing.tree"), std::string::npos) << r.err;
+  r = run_fspm("mesh " + tree + " -o " + (dir / "x.stl").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find(".stl"), std::string::npos) << r.err;
+  r = run_fspm("mesh " + tree + " -o " + (dir / "no" / "x.glb").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_FALSE(std::filesystem::exists(dir / "no"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.glb"));
+}
+
+TEST(GraphicsCli, RenderPngAndUnknownAttribute) {
+  const auto dir = scratch_dir("render");
+  const std::string tree = write_tree(dir);
+  auto r = run_fspm("render " + tree + " -o " + (dir / "x.png").string() +
+                    " --color-by no_such_attribute");
+  EXPECT_EQ(r.exit_code, 1);
+  if (r.err.find("without VTK") != std::string::npos) GTEST_SKIP() << "built without VTK";
+  EXPECT_NE(r.err.find("no_such_attribute"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("light"), std::string::npos) << r.err;  // names what is known
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+
+  r = run_fspm("render " + tree + " -o " + (dir / "x.png").string() +
+               " --color-by light --view side --size 160x120 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["width"], 160);
+  EXPECT_EQ(j["height"], 120);
+  std::ifstream png(dir / "x.png", std::ios::binary);
+  char magic[8] = {};
+  png.read(magic, 8);
+  EXPECT_EQ(std::string(magic + 1, 3), "PNG");
+
+  r = run_fspm("render " + tree + " -o " + (dir / "x.png").string() + " --view back");
+  EXPECT_EQ(r.exit_code, 1);
+  r = run_fspm("render " + tree + " -o " + (dir / "x.png").string() + " --size 12");
+  EXPECT_EQ(r.exit_code, 1);
+}
+
+}  // namespace
+}  // namespace fspm
