@@ -44,8 +44,14 @@ class FeatureCostModel final : public EditCostModel {
                    double unit_cost);
   std::size_t dims() const { return dims_; }
   double unit_cost() const { return unit_cost_; }
-  std::span<const double> features_a(NodeId a) const { return {&features_a_[a * dims_], dims_}; }
-  std::span<const double> features_b(NodeId b) const { return {&features_b_[b * dims_], dims_}; }
+  // data() + offset, not &v[i]: with zero dimensions the vectors are empty and indexing them is
+  // undefined behaviour.
+  std::span<const double> features_a(NodeId a) const {
+    return {features_a_.data() + std::size_t{a} * dims_, dims_};
+  }
+  std::span<const double> features_b(NodeId b) const {
+    return {features_b_.data() + std::size_t{b} * dims_, dims_};
+  }
 
   double delete_cost(NodeId a) const override;
   double insert_cost(NodeId b) const override;
