@@ -21,7 +21,9 @@ CC=clang CXX=clang++ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug 
 cmake --build build-asan -j "$jobs"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-ctest --test-dir build-asan --output-on-failure -j "$jobs" | tail -n 4
+ctest --test-dir build-asan --output-on-failure -j "$jobs" > build-asan-ctest.log 2>&1 \
+  || { grep -v "^ *#[0-9]" build-asan-ctest.log | tail -n 150; exit 1; }
+tail -n 3 build-asan-ctest.log
 for fuzzer in build-asan/bin/fspm_*_fuzz; do
   [ -x "$fuzzer" ] || continue
   name=$(basename "$fuzzer")
