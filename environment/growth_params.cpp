@@ -20,6 +20,9 @@ GrowthParams growth_preset(std::string_view name) {
   } else if (name == "B" || name == "b") {
     p.phototropism = 0.45;
     p.gravitropism = 0.44;
+    // Tuned so that trees of 10/20/30 cycles have about Pirk Table 4.2's 530/2 500/9 100 nodes.
+    p.alpha = 2.75;
+    p.apical_control = 0.51;
   } else if (name == "C" || name == "c") {
     p.phototropism = 0.03;
     p.gravitropism = 0.23;

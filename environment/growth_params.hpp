@@ -25,6 +25,8 @@ struct GrowthParams {
   // phototropism (towards the bud's mean light direction) and gravitropism directions.
   double phototropism = 0.25;
   double gravitropism = 0.12;
+  // Direction gravitropism bends towards (Palubicki: down, so a positive weight makes branches
+  // droop); use (0, 0, 1) for negative gravitropism.
   Eigen::Vector3d gravity_direction = -Eigen::Vector3d::UnitZ();
   // Shedding: a lateral branch with light per supported internode below this is removed.
   double pruning_factor = 0.1;

@@ -57,6 +57,15 @@ HemisphereDirections::HemisphereDirections(int count) {
     ring_z_.push_back(z);
     ring_offset_.push_back(offset);
   }
+  const Eigen::Index n = static_cast<Eigen::Index>(dirs_.size());
+  xs_.resize(n);
+  ys_.resize(n);
+  zs_.resize(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    xs_[i] = dirs_[i].x();
+    ys_[i] = dirs_[i].y();
+    zs_[i] = dirs_[i].z();
+  }
 }
 
 }  // namespace fspm::environment

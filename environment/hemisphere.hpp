@@ -22,6 +22,11 @@ class HemisphereDirections {
   double ring_z(int r) const { return ring_z_[r]; }            // cos(polar angle) of the centres
   double ring_offset(int r) const { return ring_offset_[r]; }  // azimuth of cell 0's left edge
 
+  // Direction components as arrays, for vectorized loops over all cells.
+  const Eigen::ArrayXd& xs() const { return xs_; }
+  const Eigen::ArrayXd& ys() const { return ys_; }
+  const Eigen::ArrayXd& zs() const { return zs_; }
+
   // Calls visit(i) for every cell whose centre d satisfies d . axis >= cos_half_angle (axis unit).
   template <typename Visit>
   void for_each_in_cap(const Eigen::Vector3d& axis, double cos_half_angle, Visit&& visit) const;
@@ -30,6 +35,7 @@ class HemisphereDirections {
   std::vector<Eigen::Vector3d> dirs_;
   std::vector<int> ring_first_, ring_size_;
   std::vector<double> ring_z_, ring_offset_;
+  Eigen::ArrayXd xs_, ys_, zs_;
   double cell_sr_ = 0.0;
 };
 
