@@ -170,7 +170,13 @@ ResultsDb::ResultsDb(const std::string& dir, Mode mode, const ExperimentInfo& in
   }
   try {
     sqlite3_busy_timeout(db_, 5000);
-    if (exists) {
+    bool fresh = !exists;
+    if (exists && mode == Mode::kResume) {
+      // A run killed while creating the database leaves a file without tables: nothing to keep.
+      Statement tables(db_, "SELECT count(*) FROM sqlite_master", path_);
+      fresh = tables.step() && tables.integer(0) == 0;
+    }
+    if (!fresh) {
       // Catches files that are not databases and damaged pages before anything is written.
       Statement check(db_, "PRAGMA quick_check", path_);
       if (!check.step() || check.text(0) != "ok") {
@@ -188,7 +194,7 @@ ResultsDb::ResultsDb(const std::string& dir, Mode mode, const ExperimentInfo& in
     if (mode != Mode::kRead) {
       exec(db_, "PRAGMA journal_mode=WAL; PRAGMA synchronous=NORMAL", path_,
            "opening the database");
-      if (!exists) create_schema(info);
+      if (fresh) create_schema(info);
       rc = sqlite3_prepare_v2(db_,
                               "INSERT INTO runs(run, point, replicate, seed, status, seconds, "
                               "parameters, metrics, error, files, finished_at) "

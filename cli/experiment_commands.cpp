@@ -1,0 +1,251 @@
+// fspm run | results export | show | merge: parameter sweeps and their result databases.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <atomic>
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
+#include "experiments/experiment.hpp"
+#include "experiments/model_factory.hpp"
+#include "experiments/results_export.hpp"
+#include "experiments/run_plan.hpp"
+#include "experiments/runner.hpp"
+#include "experiments/slurm_script.hpp"
+#include "fspm/atomic_file.hpp"
+#include "fspm/error.hpp"
+
+namespace fspm::cli {
+namespace {
+
+namespace fs = std::filesystem;
+namespace ex = fspm::experiments;
+
+std::atomic<bool> g_interrupted{false};
+
+extern "C" void on_interrupt(int signal) {
+  g_interrupted.store(true);
+  // A second Ctrl-C kills at once.
+  std::signal(signal, SIG_DFL);
+}
+
+struct RunOptions {
+  std::string experiment;
+  std::string out;
+  std::size_t jobs = 0;
+  bool resume = false;
+  std::string shard;
+  double time_limit_s = 0.0;
+  bool json = false;
+  bool emit_slurm = false;
+  std::size_t shards = 4;
+  std::string slurm_file;
+  std::string slurm_time = "24:00:00";
+};
+
+struct ExportOptions {
+  std::string dir;
+  bool csv = false;
+  bool json = false;
+  std::string output;
+};
+
+struct ShowOptions {
+  std::string dir;
+  bool json = false;
+};
+
+struct MergeOptions {
+  std::string out;
+  std::vector<std::string> inputs;
+  bool json = false;
+};
+
+std::pair<std::size_t, std::size_t> parse_shard(const std::string& text) {
+  const auto slash = text.find('/');
+  try {
+    if (slash != std::string::npos) {
+      std::size_t used = 0;
+      const std::size_t i = std::stoul(text.substr(0, slash), &used);
+      if (used == slash) {
+        const std::string rest = text.substr(slash + 1);
+        const std::size_t n = std::stoul(rest, &used);
+        if (used == rest.size() && n > 0 && i < n) return {i, n};
+      }
+    }
+  } catch (const std::exception&) {
+  }
+  throw ValueError("--shard: expected I/N with 0 <= I < N (e.g. 0/4), not '" + text + "'");
+}
+
+std::string default_out(const ex::Experiment& x) { return x.name + "-results"; }
+
+void emit_slurm(const RunOptions& o, const ex::Experiment& x) {
+  ex::SlurmOptions s;
+  s.fspm_executable = fs::read_symlink("/proc/self/exe").string();
+  s.experiment_file = fs::absolute(o.experiment).lexically_normal().string();
+  s.out_dir = fs::absolute(o.out.empty() ? default_out(x) : o.out).lexically_normal().string();
+  s.job_name = x.name;
+  s.shards = o.shards;
+  s.cpus_per_task = o.jobs == 0 ? 1 : o.jobs;
+  s.time_limit = o.slurm_time;
+  s.script_path = o.slurm_file.empty() ? x.name + ".slurm" : o.slurm_file;
+  const std::string script = ex::slurm_script(s);
+  write_file_atomically(s.script_path, [&](std::ostream& out) { out << script; });
+  fs::permissions(s.script_path, fs::perms::owner_exec | fs::perms::group_exec,
+                  fs::perm_options::add);
+  if (o.json) {
+    print_json({{"slurm_script", s.script_path}, {"shards", s.shards}, {"out", s.out_dir}});
+  } else {
+    std::cout << "wrote " << s.script_path << " (" << s.shards << " shards of " << x.runs()
+              << " runs); submit it with: sbatch " << s.script_path << '\n';
+  }
+}
+
+void run_command(const RunOptions& o) {
+  const ex::Experiment x = ex::read_experiment(o.experiment);
+  // Everything is checked before the first run: keys, ranges, model file, parameter names.
+  const std::unique_ptr<ex::Model> model = ex::make_model(x);
+  const ex::RunPlan plan(x);
+  ex::check_experiment(x, *model, plan);
+  if (o.emit_slurm) {
+    emit_slurm(o, x);
+    return;
+  }
+  ex::RunnerOptions r;
+  r.out_dir = o.out.empty() ? default_out(x) : o.out;
+  r.jobs = o.jobs;
+  r.resume = o.resume;
+  if (!o.shard.empty()) std::tie(r.shard_index, r.shard_count) = parse_shard(o.shard);
+  if (o.time_limit_s > 0.0) r.time_limit_s = o.time_limit_s;
+  r.interrupt = &g_interrupted;
+  if (verbosity() > 0) {
+    r.progress = &std::cerr;
+    r.progress_bar = ::isatty(STDERR_FILENO) != 0;
+    std::cerr << "experiment " << x.name << ": " << plan.size() << " runs (" << plan.points()
+              << " points x " << x.replicates << " replicates) into " << r.out_dir << '\n';
+  }
+  g_interrupted = false;
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+  const ex::RunnerSummary s = ex::run_experiment(x, *model, r);
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  if (o.json) {
+    print_json({{"experiment", x.name},
+                {"database", s.database},
+                {"total_runs", s.total_runs},
+                {"shard_runs", s.shard_runs},
+                {"already_done", s.already_done},
+                {"ran", s.ran},
+                {"ok", s.ok},
+                {"error", s.failed},
+                {"timeout", s.timed_out},
+                {"interrupted", s.interrupted},
+                {"seconds", s.seconds}});
+  } else {
+    std::cout << s.database << ": " << s.ran << " runs in " << s.seconds << " s (" << s.ok
+              << " ok, " << s.failed << " error, " << s.timed_out << " timeout)";
+    if (s.already_done > 0) std::cout << ", " << s.already_done << " were already done";
+    std::cout << '\n';
+  }
+  if (s.interrupted) {
+    std::cerr << "fspm: interrupted; " << (s.shard_runs - s.already_done - s.ran)
+              << " runs are missing, continue with --resume\n";
+    std::cout.flush();
+    std::exit(130);
+  }
+}
+
+void export_command(const ExportOptions& o) {
+  if (o.csv == o.json) throw ValueError("results export: give exactly one of --csv and --json");
+  const ex::ResultsDb db(o.dir, ex::ResultsDb::Mode::kRead);
+  const std::vector<ex::RunRecord> runs = db.read_all();
+  auto write = [&](std::ostream& out) {
+    if (o.csv) {
+      ex::write_results_csv(db.info(), runs, out);
+    } else {
+      out << ex::results_json(db.info(), runs);
+    }
+  };
+  if (o.output.empty()) {
+    write(std::cout);
+  } else {
+    write_file_atomically(o.output, write);
+  }
+}
+
+void show_command(const ShowOptions& o) {
+  const ex::ResultsDb db(o.dir, ex::ResultsDb::Mode::kRead);
+  const std::vector<ex::RunRecord> runs = db.read_all();
+  std::cout << (o.json ? ex::results_summary_json(db.info(), runs)
+                       : ex::results_summary_text(db.info(), runs));
+}
+
+void merge_command(const MergeOptions& o) {
+  const ex::MergeSummary m = ex::merge_results(o.out, o.inputs);
+  if (o.json) {
+    print_json({{"out", o.out},
+                {"inputs", m.inputs},
+                {"rows", m.rows},
+                {"duplicates", m.duplicates},
+                {"missing", m.missing}});
+  } else {
+    std::cout << "merged " << m.inputs << " databases into " << o.out << ": " << m.rows << " runs, "
+              << m.duplicates << " duplicates skipped, " << m.missing << " runs missing\n";
+  }
+}
+
+}  // namespace
+
+void add_experiment_commands(CLI::App& app) {
+  auto run = std::make_shared<RunOptions>();
+  CLI::App* r = app.add_subcommand("run", "Run a parameter sweep described by an experiment file");
+  r->add_option("EXPERIMENT", run->experiment, "Experiment file (.toml, see docs/experiments.md)")
+      ->required();
+  r->add_option("-j,--jobs", run->jobs, "Worker threads (default: one per hardware thread)");
+  r->add_option("-o,--out", run->out, "Output directory (default: NAME-results)");
+  r->add_flag("--resume", run->resume, "Continue the database in the output directory");
+  r->add_option("--shard", run->shard, "Run only shard I of N (runs with index % N == I)");
+  r->add_option("--time-limit", run->time_limit_s, "Seconds per run (overrides the file)");
+  r->add_flag("--json", run->json, "Machine-readable JSON summary on stdout");
+  r->add_flag("--emit-slurm", run->emit_slurm, "Write a Slurm job-array script instead of running");
+  r->add_option("--shards", run->shards, "--emit-slurm: number of array tasks (default 4)");
+  r->add_option("--slurm-file", run->slurm_file, "--emit-slurm: script path (default NAME.slurm)");
+  r->add_option("--slurm-time", run->slurm_time, "--emit-slurm: time limit of one task");
+  r->callback([run] { run_command(*run); });
+
+  CLI::App* results = app.add_subcommand("results", "Export, summarize and merge sweep results");
+  results->require_subcommand(1);
+
+  auto exp = std::make_shared<ExportOptions>();
+  CLI::App* e = results->add_subcommand("export", "Export every run as CSV or JSON");
+  e->add_option("DIR", exp->dir, "Output directory of fspm run")->required();
+  e->add_flag("--csv", exp->csv, "CSV: run, seed, status, seconds, parameters, metrics");
+  e->add_flag("--json", exp->json, "JSON: every column of every run");
+  e->add_option("-o,--output", exp->output, "File to write (default: stdout)");
+  e->callback([exp] { export_command(*exp); });
+
+  auto show = std::make_shared<ShowOptions>();
+  CLI::App* s = results->add_subcommand("show", "Summary of a result database");
+  s->add_option("DIR", show->dir, "Output directory of fspm run")->required();
+  s->add_flag("--json", show->json, "Machine-readable JSON on stdout");
+  s->callback([show] { show_command(*show); });
+
+  auto merge = std::make_shared<MergeOptions>();
+  CLI::App* m = results->add_subcommand("merge", "Combine the databases of an experiment's shards");
+  m->add_option("OUT_DIR", merge->out, "New output directory")->required();
+  m->add_option("DIR", merge->inputs, "Shard output directories")->required();
+  m->add_flag("--json", merge->json, "Machine-readable JSON on stdout");
+  m->callback([merge] { merge_command(*merge); });
+}
+
+}  // namespace fspm::cli

@@ -1,0 +1,171 @@
+// fspm run / results, run as a user would.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "run_command.hpp"
+
+namespace fspm::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string write_file(const fs::path& p, const std::string& text) {
+  std::ofstream(p) << text;
+  return p.string();
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+TEST(ExperimentCommands, ExampleSweepExportsOneCsvRowPerRun) {
+  const fs::path dir = scratch_dir("exp_example");
+  const std::string example = std::string(FSPM_SOURCE_DIR) + "/examples/experiments/branching.toml";
+  const CommandResult run =
+      run_fspm("run " + example + " --jobs 2 --out " + (dir / "out").string() + " --json");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto summary = nlohmann::json::parse(run.out);
+  EXPECT_EQ(summary["ran"], 36);
+  EXPECT_EQ(summary["ok"], 36);
+  const CommandResult csv = run_fspm("results export " + (dir / "out").string() + " --csv");
+  ASSERT_EQ(csv.exit_code, 0) << csv.err;
+  const auto lines = lines_of(csv.out);
+  ASSERT_EQ(lines.size(), 37u);
+  EXPECT_EQ(lines[0],
+            "run,seed,status,seconds,steps,define.r2,define.a0,nodes,internodes,leaves,height,"
+            "crown_width,crown_depth,total_length,run_time");
+  EXPECT_TRUE(fs::exists(dir / "out" / "runs" / "run-0000035.tree"));
+  const CommandResult show = run_fspm("results show " + (dir / "out").string());
+  EXPECT_EQ(show.exit_code, 0);
+  EXPECT_NE(show.out.find("36 ok"), std::string::npos) << show.out;
+  // A second run into the same directory is refused, the database kept.
+  const CommandResult again = run_fspm("run " + example + " --out " + (dir / "out").string());
+  EXPECT_EQ(again.exit_code, 1);
+  EXPECT_NE(again.err.find("--resume"), std::string::npos) << again.err;
+}
+
+TEST(ExperimentCommands, BadExperimentIsReportedBeforeAnyRun) {
+  const fs::path dir = scratch_dir("exp_bad");
+  const std::string exp = write_file(dir / "e.toml",
+                                     "[experiment]\nname = \"b\"\n[model]\nkind = \"synthetic\"\n"
+                                     "[sweep]\nnodes = { range = [5, 1, 1] }\n");
+  const CommandResult r = run_fspm("run " + exp + " --out " + (dir / "out").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("e.toml:6"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("sweep.nodes.range"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+TEST(ExperimentCommands, CorruptDatabaseIsReportedNotOverwritten) {
+  const fs::path dir = scratch_dir("exp_corrupt");
+  const std::string exp =
+      write_file(dir / "e.toml", "[experiment]\nname = \"c\"\n[model]\nkind = \"synthetic\"\n");
+  fs::create_directories(dir / "out");
+  write_file(dir / "out" / "results.sqlite", "this is not a database at all, not even close....");
+  for (const std::string& cmd : {"run " + exp + " --resume --out " + (dir / "out").string(),
+                                 "results show " + (dir / "out").string()}) {
+    const CommandResult r = run_fspm(cmd);
+    EXPECT_EQ(r.exit_code, 1) << cmd;
+    EXPECT_NE(r.err.find("corrupt"), std::string::npos) << r.err;
+  }
+  std::ifstream in(dir / "out" / "results.sqlite");
+  std::string content((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_EQ(content, "this is not a database at all, not even close....");
+}
+
+// `fspm run` in a child process killed with SIGKILL at random moments, resumed every time: the
+// final export has every run exactly once.
+TEST(ExperimentCommands, KillNineAndResumeGiveEveryRunOnce) {
+  const fs::path dir = scratch_dir("exp_kill");
+  const std::string exp = write_file(
+      dir / "e.toml",
+      "[experiment]\nname = \"k\"\nseed = 5\nreplicates = 2\n[model]\nkind = \"synthetic\"\n"
+      "[parameters]\nsleep_ms = 4\n[sweep]\nnodes = { range = [1, 151] }\n");
+  const std::string out = (dir / "out").string();
+  std::mt19937_64 rng(99);
+  for (int attempt = 0; attempt < 5; ++attempt) {
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      const int devnull = ::open("/dev/null", O_WRONLY);
+      ::dup2(devnull, 1);
+      ::dup2(devnull, 2);
+      ::execl(FSPM_EXE, FSPM_EXE, "run", exp.c_str(), "--jobs", "2", "--resume", "--out",
+              out.c_str(), static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    // fspm takes a while to start on a loaded machine: kill at a random moment after its
+    // database exists (the first attempt) or right away (later attempts).
+    const auto t0 = std::chrono::steady_clock::now();
+    while (attempt == 0 && !fs::exists(dir / "out" / "results.sqlite") &&
+           std::chrono::steady_clock::now() - t0 < std::chrono::seconds(20)) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    std::this_thread::sleep_for(
+        std::chrono::milliseconds(std::uniform_int_distribution<int>(0, 800)(rng)));
+    ::kill(child, SIGKILL);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+  }
+  const CommandResult partial = run_fspm("results show " + out + " --json");
+  ASSERT_EQ(partial.exit_code, 0) << partial.err;
+  const std::size_t before = nlohmann::json::parse(partial.out)["recorded"].get<std::size_t>();
+  EXPECT_LT(before, 300u);
+  const CommandResult resume = run_fspm("run " + exp + " --jobs 2 --resume --json --out " + out);
+  ASSERT_EQ(resume.exit_code, 0) << resume.err;
+  EXPECT_EQ(nlohmann::json::parse(resume.out)["ran"].get<std::size_t>(), 300u - before);
+  const CommandResult csv = run_fspm("results export " + out + " --csv");
+  const auto lines = lines_of(csv.out);
+  ASSERT_EQ(lines.size(), 301u);
+  std::set<int> runs;
+  for (std::size_t i = 1; i < lines.size(); ++i) runs.insert(std::stoi(lines[i]));
+  EXPECT_EQ(runs.size(), 300u);
+  EXPECT_EQ(*runs.rbegin(), 299);
+}
+
+TEST(ExperimentCommands, SlurmScriptRunsShardsThatMerge) {
+  const fs::path dir = scratch_dir("exp_slurm");
+  const std::string exp = write_file(
+      dir / "e.toml",
+      "[experiment]\nname = \"sl\"\n[model]\nkind = \"synthetic\"\n[sweep]\nnodes = [1, 2, 3, "
+      "4, 5]\n");
+  const std::string script = (dir / "job.slurm").string();
+  const CommandResult r = run_fspm("run " + exp + " --emit-slurm --shards 3 --jobs 2 --out " +
+                                   (dir / "out").string() + " --slurm-file " + script);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream in(script);
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(text.find("#SBATCH --array=0-2"), std::string::npos) << text;
+  EXPECT_NE(text.find("#SBATCH --cpus-per-task=2"), std::string::npos);
+  EXPECT_NE(text.find("--shard \"$shard\"/3 --resume"), std::string::npos);
+  // Run the script's array tasks by hand, as Slurm would, then merge.
+  for (int task = 0; task < 3; ++task) {
+    const std::string cmd = "env SLURM_ARRAY_TASK_ID=" + std::to_string(task) + " bash " + script;
+    ASSERT_EQ(std::system((cmd + " >/dev/null 2>&1").c_str()), 0) << cmd;
+  }
+  const std::string merged = (dir / "out" / "merged").string();
+  const CommandResult m =
+      run_fspm("results merge " + merged + " " + (dir / "out").string() + "/shard-0 " +
+               (dir / "out").string() + "/shard-1 " + (dir / "out").string() + "/shard-2 --json");
+  ASSERT_EQ(m.exit_code, 0) << m.err;
+  const auto j = nlohmann::json::parse(m.out);
+  EXPECT_EQ(j["rows"], 5);
+  EXPECT_EQ(j["missing"], 0);
+}
+
+}  // namespace
+}  // namespace fspm::testing
