@@ -195,10 +195,26 @@ TEST(LsystemTurtle, Abop124aGeometry) {
   EXPECT_NEAR(big.tree.radius(0), 0.05, 1e-12);  // initial line width 0.1
 }
 
+TEST(LsystemTurtle, LeafyShootLeavesAreRhombi) {
+  const std::string path = std::string(FSPM_SOURCE_DIR) + "/examples/lsystems/leafy_shoot.l";
+  const LSystem sys = parse_lsystem_file(path);
+  const Interpretation r = interpret(derive(sys), sys.symbols, view_for_lsystem(path));
+  ASSERT_EQ(r.leaves.size(), 12u);
+  const double area = 0.16 * std::sin(50.0 * std::numbers::pi / 180);
+  for (const LeafPolygon& leaf : r.leaves) {
+    EXPECT_NEAR(leaf.area, area, 1e-12);
+    EXPECT_EQ(leaf.vertices.size(), 4u);
+    EXPECT_EQ(r.tree.kind(leaf.node), OrganKind::kLeaf);
+    EXPECT_EQ(r.tree.order(leaf.node), 1);
+    EXPECT_EQ(r.tree.kind(r.tree.parent(leaf.node)), OrganKind::kInternode);
+  }
+  EXPECT_EQ(r.tree.size(), 24u);
+}
+
 TEST(LsystemTurtle, ExamplesDrawTrees) {
   const std::string dir = std::string(FSPM_SOURCE_DIR) + "/examples/lsystems/";
   for (const char* name : {"abop_1_24a", "parametric_tree", "monopodial_tree", "greenlab",
-                           "context_sensitive_plant", "stochastic_plant"}) {
+                           "leafy_shoot", "context_sensitive_plant", "stochastic_plant"}) {
     const std::string path = dir + name + ".l";
     const LSystem sys = parse_lsystem_file(path);
     Derivation d(sys);
