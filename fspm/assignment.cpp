@@ -61,8 +61,10 @@ PartialAssignment solve_hungarian(std::span<const double> pair_cost, std::size_t
 // source -> "column alone" -> each column, with "column alone" -> "row alone" carrying the
 // matched units. Every unit of rows + cols must reach the sink, so the minimum-cost maximum flow
 // is the minimum partial assignment. Boost's Dijkstra step rejects the tiny negative reduced costs
-// that double rounding produces, so costs are scaled to 64-bit integers (2^40 units for the
-// largest cost, relative rounding below 1e-12) and the cost is then summed from the doubles.
+// that double rounding produces, so costs are scaled to whole numbers (2^40 units for the largest
+// cost, relative rounding below 1e-12), which doubles add exactly (path sums stay below 2^53), and
+// the cost is then summed from the original doubles. Doubles rather than 64-bit integers because
+// Boost adds the "infinite" distances of unreached vertices, which overflows integers.
 PartialAssignment solve_min_cost_flow(std::span<const double> pair_cost, std::size_t rows,
                                       std::size_t cols, std::span<const double> row_alone,
                                       std::span<const double> col_alone) {
@@ -73,7 +75,7 @@ PartialAssignment solve_min_cost_flow(std::span<const double> pair_cost, std::si
           boost::edge_capacity_t, long,
           boost::property<boost::edge_residual_capacity_t, long,
                           boost::property<boost::edge_reverse_t, Traits::edge_descriptor,
-                                          boost::property<boost::edge_weight_t, long>>>>>;
+                                          boost::property<boost::edge_weight_t, double>>>>>;
   using Edge = Traits::edge_descriptor;
   const std::size_t source = 0, sink = 1, col_alone_node = 2, row_alone_node = 3, first_row = 4;
   const std::size_t first_col = first_row + rows;
@@ -87,7 +89,7 @@ PartialAssignment solve_min_cost_flow(std::span<const double> pair_cost, std::si
   }
   const double scale = largest > 0.0 ? std::ldexp(1.0, 40 - std::ilogb(largest)) : 1.0;
   auto add = [&](std::size_t from, std::size_t to, long cap, double real_cost) {
-    const long cost = std::lround(real_cost * scale);
+    const double cost = std::round(real_cost * scale);
     const Edge e = boost::add_edge(from, to, g).first;
     const Edge back = boost::add_edge(to, from, g).first;
     capacity[e] = cap;
