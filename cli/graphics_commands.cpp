@@ -3,12 +3,14 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 
@@ -20,6 +22,7 @@
 #include "graphics/mesh_writers.hpp"
 #include "graphics/render.hpp"
 #include "graphics/tree_mesher.hpp"
+#include "graphics/viewer.hpp"
 
 namespace fspm::cli {
 namespace {
@@ -45,6 +48,19 @@ struct RenderCommand {
   bool leaves = false;
   bool no_ground = false;
   double edge_length_m = 0.01;
+  bool json = false;
+};
+
+struct ViewCommand {
+  std::vector<std::string> trees;
+  std::string format;
+  std::vector<double> ages;
+  std::string color_by;
+  std::string screenshot;
+  std::string size = "1280x800";
+  int frames = 1;
+  bool leaves = false;
+  bool no_shadows = false;
   bool json = false;
 };
 
@@ -158,6 +174,65 @@ void run_render(const RenderCommand& c) {
   }
 }
 
+// Every tree meshed at every age, placed side by side along x with a gap of a tenth of the
+// widest tree.
+std::vector<graphics::TriangleMesh> view_steps(const ViewCommand& c, std::vector<double>& ages) {
+  std::vector<TreeGraph> trees;
+  for (const auto& path : c.trees) trees.push_back(read_tree_file(path, c.format));
+  graphics::MeshOptions options;
+  options.leaves = c.leaves;
+  if (ages.empty()) ages.push_back(std::numeric_limits<double>::infinity());
+  std::sort(ages.begin(), ages.end());
+  std::vector<float> offsets;
+  float x = 0.0f;
+  for (const auto& t : trees) {
+    const graphics::TriangleMesh full = graphics::mesh_tree(t, options);
+    const float width = full.empty() ? 0.0f : full.bbox_max().x() - full.bbox_min().x();
+    offsets.push_back(full.empty() ? x : x - full.bbox_min().x());
+    x += width * 1.1f + 0.1f;
+  }
+  std::vector<graphics::TriangleMesh> steps;
+  for (double age : ages) {
+    graphics::TriangleMesh scene;
+    for (std::size_t i = 0; i < trees.size(); ++i) {
+      options.max_birth_time = age;
+      graphics::TriangleMesh m = graphics::mesh_tree(trees[i], options);
+      for (auto& p : m.positions) p.x() += offsets[i];
+      scene.append(m);
+    }
+    steps.push_back(std::move(scene));
+  }
+  return steps;
+}
+
+void run_view(const ViewCommand& c) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (!graphics::viewer_available()) {
+    throw ValueError("fspm was built without the viewer (FSPM_WITH_VIEWER=OFF)");
+  }
+  graphics::ViewerOptions options;
+  graphics::parse_size(c.size, options.width, options.height);
+  options.color_by = c.color_by;
+  options.screenshot = c.screenshot;
+  options.frames = c.frames;
+  options.shadows = !c.no_shadows;
+  if (!c.screenshot.empty()) graphics::check_image_path(c.screenshot);
+  std::vector<double> ages = c.ages;
+  const std::vector<graphics::TriangleMesh> steps = view_steps(c, ages);
+  if (!c.color_by.empty()) {
+    for (const auto& m : steps) (void)m.attribute(c.color_by);
+  }
+  if (!c.screenshot.empty()) rerun_under_xvfb_if_needed();
+  const graphics::ViewerStats stats = graphics::run_viewer(steps, ages, options);
+  if (c.json) {
+    print_json({{"frames", stats.frames},
+                {"mean_frame_ms", stats.mean_frame_ms},
+                {"triangles", stats.triangles},
+                {"screenshot", c.screenshot},
+                {"seconds", seconds_since(t0)}});
+  }
+}
+
 }  // namespace
 
 void add_graphics_commands(CLI::App& app) {
@@ -197,6 +272,26 @@ void add_graphics_commands(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   r->add_flag("--json", render->json, "Machine-readable JSON on stdout");
   r->callback([render] { run_render(*render); });
+
+  auto view = std::make_shared<ViewCommand>();
+  CLI::App* v = app.add_subcommand(
+      "view",
+      "Real-time viewer: drag to orbit, right-drag to pan, wheel to zoom, [ ] growth steps, "
+      "S shadows, R reset, Esc quit");
+  v->add_option("FILE", view->trees, "Tree files (placed side by side)")->required();
+  v->add_option("--format", view->format, "Input format: " + formats);
+  v->add_option("--ages", view->ages, "Growth steps shown with [ and ]")->delimiter(',');
+  v->add_option("--color-by", view->color_by, "Colour by a vertex attribute");
+  v->add_flag("--leaves", view->leaves, "Show leaves");
+  v->add_flag("--no-shadows", view->no_shadows, "Start without shadows");
+  v->add_option("--size", view->size, "Window WIDTHxHEIGHT")->capture_default_str();
+  v->add_option("--screenshot", view->screenshot,
+                "Render hidden, write this image after --frames frames and exit");
+  v->add_option("--frames", view->frames, "Frames before the screenshot")
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
+  v->add_flag("--json", view->json, "Machine-readable JSON on stdout (frame time)");
+  v->callback([view] { run_view(*view); });
 }
 
 }  // namespace fspm::cli

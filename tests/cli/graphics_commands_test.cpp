@@ -118,5 +118,24 @@ TEST(GraphicsCli, RenderPngAndUnknownAttribute) {
   EXPECT_EQ(r.exit_code, 1);
 }
 
+TEST(GraphicsCli, ViewerScreenshot) {
+  const auto dir = scratch_dir("view");
+  const std::string tree = write_tree(dir);
+  auto r = run_fspm("view " + tree + " --leaves --ages 0,2 --screenshot " +
+                    (dir / "v.png").string() + " --frames 2 --size 160x120 --json");
+  if (r.err.find("without the viewer") != std::string::npos ||
+      r.err.find("without OpenImageIO") != std::string::npos) {
+    GTEST_SKIP() << r.err;
+  }
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["frames"], 2);
+  EXPECT_EQ(j["triangles"], 98);  // the last growth step: tube and leaf
+  EXPECT_TRUE(std::filesystem::exists(dir / "v.png"));
+  r = run_fspm("view " + tree + " --color-by nope --screenshot " + (dir / "w.png").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_FALSE(std::filesystem::exists(dir / "w.png"));
+}
+
 }  // namespace
 }  // namespace fspm

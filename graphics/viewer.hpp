@@ -1,0 +1,39 @@
+#pragma once
+// Real-time viewer (GLFW window, OpenGL 3.3 core, GLM): orbit (left drag), pan (right drag or
+// shift + left drag), zoom (wheel), growth steps on [ and ] (or left/right arrows), shadows from a
+// sun with a 3x3 percentage-closer filtered shadow map (Pirk 6.2.3) toggled with S, R resets the
+// view, Esc or Q quits; the frame time is shown in the title. With a screenshot path it renders
+// `frames` frames into an offscreen framebuffer, writes the image and returns (tests run it
+// under Xvfb with Mesa's software OpenGL).
+#include <string>
+#include <vector>
+
+#include "graphics/triangle_mesh.hpp"
+
+namespace fspm::graphics {
+
+struct ViewerOptions {
+  int width = 1280;
+  int height = 800;
+  std::string color_by;    // per-vertex attribute; empty = bark and leaf colours
+  std::string screenshot;  // non-empty: render `frames` frames hidden, write this image, return
+  int frames = 1;          // frames before the screenshot
+  bool shadows = true;
+};
+
+struct ViewerStats {
+  int frames = 0;
+  double mean_frame_ms = 0.0;  // CPU wall time per frame, glFinish included
+  std::size_t triangles = 0;   // of the step shown last
+};
+
+// True when fspm was built with the viewer (FSPM_WITH_VIEWER).
+bool viewer_available();
+
+// `steps` are the growth steps (one mesh each; one step for a still tree), `labels` their ages.
+// Throws ValueError for an unknown colour attribute or no steps, IoError when no OpenGL 3.3
+// window can be opened.
+ViewerStats run_viewer(const std::vector<TriangleMesh>& steps, const std::vector<double>& labels,
+                       const ViewerOptions& options);
+
+}  // namespace fspm::graphics

@@ -1,0 +1,481 @@
+// The GLFW/OpenGL 3.3 core viewer. Two passes a frame: depth from the sun into a shadow map,
+// then the scene with Blinn-Phong shading and 3x3 percentage-closer filtering of the shadow map
+// (Pirk 6.2.3: filtered shadow maps soften the aliasing of hard shadow-map edges).
+#define GLFW_INCLUDE_NONE
+#define GL_GLEXT_PROTOTYPES
+#include <GL/glcorearb.h>
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "fspm/error.hpp"
+#include "graphics/image.hpp"
+#include "graphics/viewer.hpp"
+
+namespace fspm::graphics {
+namespace {
+
+constexpr int kShadowSize = 2048;
+
+const char* kShadowVs = R"(#version 330 core
+layout(location = 0) in vec3 position;
+uniform mat4 light_mvp;
+void main() { gl_Position = light_mvp * vec4(position, 1.0); }
+)";
+const char* kShadowFs = R"(#version 330 core
+void main() {}
+)";
+const char* kSceneVs = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+layout(location = 2) in vec3 color;
+uniform mat4 mvp;
+uniform mat4 light_mvp;
+out vec3 v_normal;
+out vec3 v_color;
+out vec3 v_world;
+out vec4 v_light;
+void main() {
+  v_normal = normal;
+  v_color = color;
+  v_world = position;
+  v_light = light_mvp * vec4(position, 1.0);
+  gl_Position = mvp * vec4(position, 1.0);
+}
+)";
+const char* kSceneFs = R"(#version 330 core
+in vec3 v_normal;
+in vec3 v_color;
+in vec3 v_world;
+in vec4 v_light;
+uniform vec3 sun;
+uniform vec3 eye;
+uniform sampler2D shadow_map;
+uniform int shadows;
+out vec4 frag;
+float lit() {
+  if (shadows == 0) return 1.0;
+  vec3 p = v_light.xyz / v_light.w * 0.5 + 0.5;
+  if (p.z > 1.0 || p.x < 0.0 || p.x > 1.0 || p.y < 0.0 || p.y > 1.0) return 1.0;
+  vec2 texel = 1.0 / vec2(textureSize(shadow_map, 0));
+  float bias = 0.0015;
+  float sum = 0.0;
+  for (int x = -1; x <= 1; ++x)
+    for (int y = -1; y <= 1; ++y)
+      sum += (p.z - bias > texture(shadow_map, p.xy + vec2(x, y) * texel).r) ? 0.0 : 1.0;
+  return sum / 9.0;
+}
+void main() {
+  vec3 n = normalize(v_normal);
+  vec3 v = normalize(eye - v_world);
+  if (dot(n, v) < 0.0) n = -n;  // two-sided leaves
+  float diffuse = max(dot(n, sun), 0.0);
+  float specular = pow(max(dot(n, normalize(sun + v)), 0.0), 32.0) * 0.15;
+  float s = lit();
+  vec3 c = v_color * (0.35 + 0.65 * diffuse * s) + vec3(specular * s);
+  frag = vec4(pow(c, vec3(1.0 / 1.2)), 1.0);
+}
+)";
+
+GLuint compile(GLenum type, const char* source) {
+  const GLuint shader = glCreateShader(type);
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char log[2048];
+    glGetShaderInfoLog(shader, sizeof(log), nullptr, log);
+    throw IoError(std::string("viewer shader does not compile: ") + log);
+  }
+  return shader;
+}
+
+GLuint program(const char* vs, const char* fs) {
+  const GLuint p = glCreateProgram();
+  const GLuint a = compile(GL_VERTEX_SHADER, vs), b = compile(GL_FRAGMENT_SHADER, fs);
+  glAttachShader(p, a);
+  glAttachShader(p, b);
+  glLinkProgram(p);
+  glDeleteShader(a);
+  glDeleteShader(b);
+  GLint ok = 0;
+  glGetProgramiv(p, GL_LINK_STATUS, &ok);
+  if (!ok) throw IoError("viewer shaders do not link");
+  return p;
+}
+
+glm::vec3 colormap(float t) {  // blue -> cyan -> green -> yellow -> red, as the VTK renders
+  t = std::clamp(t, 0.0f, 1.0f);
+  const float h = (1.0f - t) * 4.0f;  // 0 red .. 4 blue
+  const float x = 1.0f - std::abs(std::fmod(h, 2.0f) - 1.0f);
+  if (h < 1) return {1, x, 0};
+  if (h < 2) return {x, 1, 0};
+  if (h < 3) return {0, 1, x};
+  return {0, x, 1};
+}
+
+struct GpuStep {
+  GLuint vao = 0, vbo = 0, ibo = 0;
+  GLsizei indices = 0;
+  std::size_t triangles = 0;
+};
+
+struct Scene {
+  glm::vec3 lo{0.0f}, hi{0.0f};
+};
+
+// Interleaved position, normal, colour; a ground quad is appended under the scene.
+GpuStep upload(const TriangleMesh& mesh, const ViewerOptions& o, float value_lo, float value_hi,
+               const Scene& scene) {
+  std::vector<float> v;
+  v.reserve((mesh.vertex_count() + 4) * 9);
+  std::vector<glm::vec3> colors(mesh.vertex_count(), glm::vec3(0.45f, 0.32f, 0.20f));
+  if (!o.color_by.empty()) {
+    const auto a = mesh.attribute(o.color_by);
+    const float span = value_hi > value_lo ? value_hi - value_lo : 1.0f;
+    for (std::size_t i = 0; i < colors.size(); ++i) colors[i] = colormap((a[i] - value_lo) / span);
+  } else {
+    for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+      if (mesh.materials[t] != Material::kLeaf) continue;
+      for (auto i : mesh.triangles[t]) colors[i] = glm::vec3(0.25f, 0.55f, 0.15f);
+    }
+  }
+  for (std::size_t i = 0; i < mesh.vertex_count(); ++i) {
+    const auto& p = mesh.positions[i];
+    const auto& n = mesh.normals[i];
+    v.insert(v.end(),
+             {p.x(), p.y(), p.z(), n.x(), n.y(), n.z(), colors[i].r, colors[i].g, colors[i].b});
+  }
+  std::vector<std::uint32_t> idx;
+  idx.reserve(mesh.triangle_count() * 3 + 6);
+  for (const auto& t : mesh.triangles) idx.insert(idx.end(), t.begin(), t.end());
+  const glm::vec3 size = glm::max(scene.hi - scene.lo, glm::vec3(0.1f));
+  const float half = 0.9f * std::max(size.x, size.y) + 0.4f * size.z;
+  const glm::vec3 c = 0.5f * (scene.lo + scene.hi);
+  const auto base = static_cast<std::uint32_t>(mesh.vertex_count());
+  for (int k = 0; k < 4; ++k) {
+    const float x = (k == 1 || k == 2) ? half : -half;
+    const float y = (k >= 2) ? half : -half;
+    v.insert(v.end(), {c.x + x, c.y + y, scene.lo.z, 0, 0, 1, 0.55f, 0.62f, 0.45f});
+  }
+  idx.insert(idx.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+
+  GpuStep g;
+  glGenVertexArrays(1, &g.vao);
+  glBindVertexArray(g.vao);
+  glGenBuffers(1, &g.vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, g.vbo);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(float)), v.data(),
+               GL_STATIC_DRAW);
+  glGenBuffers(1, &g.ibo);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.ibo);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(idx.size() * 4), idx.data(),
+               GL_STATIC_DRAW);
+  for (GLuint a = 0; a < 3; ++a) {
+    glEnableVertexAttribArray(a);
+    glVertexAttribPointer(a, 3, GL_FLOAT, GL_FALSE, 9 * sizeof(float),
+                          reinterpret_cast<const void*>(static_cast<std::uintptr_t>(a * 12)));
+  }
+  glBindVertexArray(0);
+  g.indices = static_cast<GLsizei>(idx.size());
+  g.triangles = mesh.triangle_count();
+  return g;
+}
+
+struct Camera {
+  float yaw = -0.9f, pitch = 0.35f, distance = 1.0f;
+  glm::vec3 target{0.0f};
+  glm::vec3 eye() const {
+    return target + distance * glm::vec3(std::cos(pitch) * std::cos(yaw),
+                                         std::cos(pitch) * std::sin(yaw), std::sin(pitch));
+  }
+};
+
+struct State {
+  Camera camera, home;
+  int step = 0;
+  int steps = 1;
+  bool shadows = true;
+  bool dragging_orbit = false, dragging_pan = false;
+  double last_x = 0, last_y = 0;
+};
+
+State* state_of(GLFWwindow* w) { return static_cast<State*>(glfwGetWindowUserPointer(w)); }
+
+void on_key(GLFWwindow* w, int key, int, int action, int) {
+  if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
+  State* s = state_of(w);
+  if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) glfwSetWindowShouldClose(w, GLFW_TRUE);
+  if (key == GLFW_KEY_RIGHT_BRACKET || key == GLFW_KEY_RIGHT)
+    s->step = std::min(s->step + 1, s->steps - 1);
+  if (key == GLFW_KEY_LEFT_BRACKET || key == GLFW_KEY_LEFT) s->step = std::max(s->step - 1, 0);
+  if (key == GLFW_KEY_S) s->shadows = !s->shadows;
+  if (key == GLFW_KEY_R) s->camera = s->home;
+}
+
+void on_button(GLFWwindow* w, int button, int action, int mods) {
+  State* s = state_of(w);
+  glfwGetCursorPos(w, &s->last_x, &s->last_y);
+  const bool down = action == GLFW_PRESS;
+  if (button == GLFW_MOUSE_BUTTON_LEFT && !(mods & GLFW_MOD_SHIFT)) s->dragging_orbit = down;
+  if (button == GLFW_MOUSE_BUTTON_RIGHT ||
+      (button == GLFW_MOUSE_BUTTON_LEFT && (mods & GLFW_MOD_SHIFT))) {
+    s->dragging_pan = down;
+  }
+}
+
+void on_cursor(GLFWwindow* w, double x, double y) {
+  State* s = state_of(w);
+  const float dx = static_cast<float>(x - s->last_x), dy = static_cast<float>(y - s->last_y);
+  s->last_x = x;
+  s->last_y = y;
+  Camera& c = s->camera;
+  if (s->dragging_orbit) {
+    c.yaw -= 0.01f * dx;
+    c.pitch = std::clamp(c.pitch + 0.01f * dy, -1.5f, 1.5f);
+  } else if (s->dragging_pan) {
+    const glm::vec3 forward = glm::normalize(c.target - c.eye());
+    const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0, 0, 1)));
+    const glm::vec3 up = glm::cross(right, forward);
+    c.target += c.distance * 0.0015f * (-dx * right + dy * up);
+  }
+}
+
+void on_scroll(GLFWwindow* w, double, double dy) {
+  State* s = state_of(w);
+  s->camera.distance *= std::pow(0.9f, static_cast<float>(dy));
+}
+
+struct GlfwSession {
+  GlfwSession() {
+    // A busy (virtual) X server sometimes refuses a connection; retry for a few seconds.
+    bool ok = false;
+    for (int attempt = 0; attempt < 30 && !ok; ++attempt) {
+      ok = glfwInit() == GLFW_TRUE;
+      if (!ok) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    if (!ok) {
+      throw IoError(
+          "cannot start GLFW (no display?): run under a virtual server, e.g. xvfb-run -a fspm "
+          "view ...");
+    }
+  }
+  ~GlfwSession() { glfwTerminate(); }
+};
+
+}  // namespace
+
+bool viewer_available() { return true; }
+
+ViewerStats run_viewer(const std::vector<TriangleMesh>& steps, const std::vector<double>& labels,
+                       const ViewerOptions& o) {
+  if (steps.empty()) throw ValueError("nothing to view");
+  if (!o.color_by.empty()) {
+    for (const auto& m : steps) (void)m.attribute(o.color_by);
+  }
+  if (!o.screenshot.empty()) check_image_path(o.screenshot);
+  if (o.width < 1 || o.height < 1 || o.frames < 1) throw ValueError("bad viewer size or frames");
+
+  Scene scene;
+  scene.lo = glm::vec3(1e30f);
+  scene.hi = glm::vec3(-1e30f);
+  float value_lo = 1e30f, value_hi = -1e30f;
+  for (const auto& m : steps) {
+    if (m.empty()) continue;
+    const auto lo = m.bbox_min(), hi = m.bbox_max();
+    scene.lo = glm::min(scene.lo, glm::vec3(lo.x(), lo.y(), lo.z()));
+    scene.hi = glm::max(scene.hi, glm::vec3(hi.x(), hi.y(), hi.z()));
+    if (!o.color_by.empty()) {
+      for (float x : m.attribute(o.color_by)) {
+        value_lo = std::min(value_lo, x);
+        value_hi = std::max(value_hi, x);
+      }
+    }
+  }
+  if (scene.lo.x > scene.hi.x) scene.lo = scene.hi = glm::vec3(0.0f);
+
+  GlfwSession session;
+  const bool offscreen = !o.screenshot.empty();
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_VISIBLE, offscreen ? GLFW_FALSE : GLFW_TRUE);
+  GLFWwindow* window = glfwCreateWindow(o.width, o.height, "fspm view", nullptr, nullptr);
+  if (window == nullptr) throw IoError("cannot open an OpenGL 3.3 core window");
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(offscreen ? 0 : 1);
+
+  State state;
+  const glm::vec3 center = 0.5f * (scene.lo + scene.hi);
+  const float radius = std::max(0.5f * glm::length(scene.hi - scene.lo), 0.1f);
+  state.camera.target = center;
+  state.camera.distance = 2.6f * radius;
+  state.home = state.camera;
+  state.steps = static_cast<int>(steps.size());
+  state.step = state.steps - 1;
+  state.shadows = o.shadows;
+  glfwSetWindowUserPointer(window, &state);
+  glfwSetKeyCallback(window, on_key);
+  glfwSetMouseButtonCallback(window, on_button);
+  glfwSetCursorPosCallback(window, on_cursor);
+  glfwSetScrollCallback(window, on_scroll);
+
+  const GLuint shadow_program = program(kShadowVs, kShadowFs);
+  const GLuint scene_program = program(kSceneVs, kSceneFs);
+  std::vector<GpuStep> gpu;
+  for (const auto& m : steps) gpu.push_back(upload(m, o, value_lo, value_hi, scene));
+
+  GLuint shadow_tex = 0, shadow_fbo = 0;
+  glGenTextures(1, &shadow_tex);
+  glBindTexture(GL_TEXTURE_2D, shadow_tex);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, kShadowSize, kShadowSize, 0,
+               GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glGenFramebuffers(1, &shadow_fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, shadow_tex, 0);
+  glDrawBuffer(GL_NONE);
+  glReadBuffer(GL_NONE);
+
+  // Offscreen target for screenshots: a hidden window's default framebuffer is undefined.
+  GLuint target_fbo = 0, color_rb = 0, depth_rb = 0;
+  if (offscreen) {
+    glGenFramebuffers(1, &target_fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, target_fbo);
+    glGenRenderbuffers(1, &color_rb);
+    glBindRenderbuffer(GL_RENDERBUFFER, color_rb);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, o.width, o.height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_rb);
+    glGenRenderbuffers(1, &depth_rb);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth_rb);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, o.width, o.height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_rb);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      throw IoError("cannot create the offscreen framebuffer");
+    }
+  }
+
+  const glm::vec3 sun = glm::normalize(glm::vec3(0.5f, -0.4f, 1.0f));
+  const float scene_radius = radius * 2.2f;  // ground included
+  const glm::mat4 light_view =
+      glm::lookAt(center + sun * (2.0f * scene_radius), center, glm::vec3(0, 1, 0));
+  const glm::mat4 light_proj = glm::ortho(-scene_radius, scene_radius, -scene_radius, scene_radius,
+                                          0.01f * scene_radius, 4.0f * scene_radius);
+  const glm::mat4 light_mvp = light_proj * light_view;
+
+  ViewerStats stats;
+  double total_ms = 0.0, smooth_ms = 0.0;
+  while (!glfwWindowShouldClose(window)) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const GpuStep& g = gpu[state.step];
+    glEnable(GL_DEPTH_TEST);
+    if (state.shadows) {
+      glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo);
+      glViewport(0, 0, kShadowSize, kShadowSize);
+      glClear(GL_DEPTH_BUFFER_BIT);
+      glEnable(GL_POLYGON_OFFSET_FILL);
+      glPolygonOffset(2.0f, 4.0f);
+      glUseProgram(shadow_program);
+      glUniformMatrix4fv(glGetUniformLocation(shadow_program, "light_mvp"), 1, GL_FALSE,
+                         glm::value_ptr(light_mvp));
+      glBindVertexArray(g.vao);
+      glDrawElements(GL_TRIANGLES, g.indices, GL_UNSIGNED_INT, nullptr);
+      glDisable(GL_POLYGON_OFFSET_FILL);
+    }
+    int fw = o.width, fh = o.height;
+    if (!offscreen) glfwGetFramebufferSize(window, &fw, &fh);
+    glBindFramebuffer(GL_FRAMEBUFFER, offscreen ? target_fbo : 0);
+    glViewport(0, 0, fw, fh);
+    glClearColor(0.80f, 0.87f, 0.96f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    const Camera& c = state.camera;
+    const glm::vec3 eye = c.eye();
+    const glm::mat4 view = glm::lookAt(eye, c.target, glm::vec3(0, 0, 1));
+    const glm::mat4 proj =
+        glm::perspective(glm::radians(40.0f), static_cast<float>(fw) / std::max(fh, 1),
+                         0.01f * c.distance, 10.0f * c.distance + radius * 4);
+    const glm::mat4 mvp = proj * view;
+    glUseProgram(scene_program);
+    glUniformMatrix4fv(glGetUniformLocation(scene_program, "mvp"), 1, GL_FALSE,
+                       glm::value_ptr(mvp));
+    glUniformMatrix4fv(glGetUniformLocation(scene_program, "light_mvp"), 1, GL_FALSE,
+                       glm::value_ptr(light_mvp));
+    glUniform3fv(glGetUniformLocation(scene_program, "sun"), 1, glm::value_ptr(sun));
+    glUniform3fv(glGetUniformLocation(scene_program, "eye"), 1, glm::value_ptr(eye));
+    glUniform1i(glGetUniformLocation(scene_program, "shadows"), state.shadows ? 1 : 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, shadow_tex);
+    glUniform1i(glGetUniformLocation(scene_program, "shadow_map"), 0);
+    glBindVertexArray(g.vao);
+    glDrawElements(GL_TRIANGLES, g.indices, GL_UNSIGNED_INT, nullptr);
+    glFinish();
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    total_ms += ms;
+    smooth_ms = stats.frames == 0 ? ms : 0.9 * smooth_ms + 0.1 * ms;
+    ++stats.frames;
+    stats.triangles = g.triangles;
+    if (offscreen) {
+      if (stats.frames >= o.frames) break;
+      glfwPollEvents();
+      continue;
+    }
+    char title[160];
+    std::snprintf(title, sizeof(title), "fspm view  |  step %d/%d  age %g  |  %.1f ms/frame",
+                  state.step + 1, state.steps,
+                  state.step < static_cast<int>(labels.size()) ? labels[state.step] : 0.0,
+                  smooth_ms);
+    glfwSetWindowTitle(window, title);
+    glfwSwapBuffers(window);
+    glfwPollEvents();
+  }
+  stats.mean_frame_ms = stats.frames > 0 ? total_ms / stats.frames : 0.0;
+
+  if (offscreen) {
+    Image image;
+    image.width = o.width;
+    image.height = o.height;
+    image.rgba.resize(static_cast<std::size_t>(o.width) * o.height * 4);
+    std::vector<std::uint8_t> raw(image.rgba.size());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, target_fbo);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, o.width, o.height, GL_RGBA, GL_UNSIGNED_BYTE, raw.data());
+    const std::size_t row = static_cast<std::size_t>(o.width) * 4;
+    for (int y = 0; y < o.height; ++y) {  // OpenGL rows start at the bottom
+      std::copy_n(raw.data() + row * (o.height - 1 - y), row, image.rgba.data() + row * y);
+    }
+    write_image(image, o.screenshot);
+  }
+  for (auto& g : gpu) {
+    glDeleteBuffers(1, &g.vbo);
+    glDeleteBuffers(1, &g.ibo);
+    glDeleteVertexArrays(1, &g.vao);
+  }
+  glDeleteFramebuffers(1, &shadow_fbo);
+  glDeleteTextures(1, &shadow_tex);
+  if (offscreen) {
+    glDeleteFramebuffers(1, &target_fbo);
+    glDeleteRenderbuffers(1, &color_rb);
+    glDeleteRenderbuffers(1, &depth_rb);
+  }
+  glDeleteProgram(shadow_program);
+  glDeleteProgram(scene_program);
+  glfwDestroyWindow(window);
+  return stats;
+}
+
+}  // namespace fspm::graphics

@@ -1,0 +1,13 @@
+#include "fspm/error.hpp"
+#include "graphics/viewer.hpp"
+
+namespace fspm::graphics {
+
+bool viewer_available() { return false; }
+
+ViewerStats run_viewer(const std::vector<TriangleMesh>&, const std::vector<double>&,
+                       const ViewerOptions&) {
+  throw ValueError("fspm was built without the viewer (FSPM_WITH_VIEWER=OFF)");
+}
+
+}  // namespace fspm::graphics
