@@ -1,5 +1,6 @@
 #include "lsystem/derivation.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -271,7 +272,14 @@ void Derivation::emit(const Production& p, ModuleString& out) {
 bool Derivation::rewrite(const ProductionGroup& group, const ModuleString& in, ModuleString& out) {
   out.clear();
   if (in.parametric()) out.make_parametric();
-  out.reserve(in.size() + in.size() / 2, in.pool().size() + in.pool().size() / 2);
+  // Reserve by the growth of the previous step so that a growing string is written once,
+  // without reallocation copies (they cost a third of the time of a parametric derivation).
+  const double modules = static_cast<double>(in.size()) * growth_ * 1.05 + 16;
+  const double params = static_cast<double>(in.pool().size()) * param_growth_ * 1.05 + 16;
+  out.reserve(
+      static_cast<std::size_t>(std::min(modules, static_cast<double>(options_.module_budget) + 16)),
+      static_cast<std::size_t>(
+          std::min(params, 4.0 * static_cast<double>(options_.module_budget) + 16)));
   bool changed = false;
   const std::size_t n = in.size();
   const auto& productions = group.productions;
@@ -319,6 +327,14 @@ bool Derivation::rewrite(const ProductionGroup& group, const ModuleString& in, M
     }
   }
   check_budget(out.size());
+  if (&group != &sys_.productions) return changed;  // decomposition passes barely grow
+  if (!in.empty()) {
+    growth_ = std::max(1.0, static_cast<double>(out.size()) / static_cast<double>(in.size()));
+  }
+  if (!in.pool().empty()) {
+    param_growth_ = std::max(
+        1.0, static_cast<double>(out.pool().size()) / static_cast<double>(in.pool().size()));
+  }
   return changed;
 }
 

@@ -83,6 +83,8 @@ class Derivation {
   int steps_done_ = 0;
   int target_steps_ = 0;
   bool parametric_ = false;
+  double growth_ = 1.5;        // modules out / modules in of the last rewrite
+  double param_growth_ = 1.5;  // same for parameters
   bool has_cut_ = false;
   bool has_queries_ = false;
   // Fast path for context-free, deterministic, non-parametric productions: successor of every
