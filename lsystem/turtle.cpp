@@ -105,6 +105,18 @@ class GraphBuilder {
     d.kind = OrganKind::kLeaf;
     add(f.node, d, f.color);
   }
+  // cpfg @o(d): a sphere of diameter d, recorded as a flower organ at the turtle position.
+  void sphere(double diameter, const detail::Frame& f) {
+    NodeData d;
+    d.start = f.position;
+    d.end = f.position;
+    d.direction = f.heading;
+    d.length = 0.0;
+    d.radius = std::abs(diameter) * 0.5;
+    d.order = static_cast<std::uint16_t>(std::min(f.depth, 65535));
+    d.kind = OrganKind::kFlower;
+    add(f.node, d, f.color);
+  }
   void query(std::size_t, detail::Action, const detail::Frame&) {}
 
   double radius_per_width_ = 0.5;

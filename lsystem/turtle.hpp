@@ -10,7 +10,8 @@
 //   [ ]       push / pop the turtle state                      ! (w)    decrease line width / set
 //   it # (w)     increase line width / set it                     ; ' , (c) color index + / set, -
 //   { . }     polygon: begin, record a vertex, end (a leaf)    ~x(s)    predefined surface (a leaf)
-// Tropism (ABOP eq. 2.? "bending by elasticity"): after every F the heading turns toward T by
+//   @o(d)     sphere of diameter d: a flower organ
+// Tropism (ABOP section 2.2, bending by elasticity): after every F the heading turns toward T by
 // e |H x T|, e = initial elasticity + elasticity increment * branch depth.
 #include <Eigen/Core>
 #include <cstddef>

@@ -41,7 +41,8 @@ enum class Action : std::uint8_t {
   kQueryH,
   kQueryU,
   kQueryL,
-  kCommunicate
+  kCommunicate,
+  kSphere
 };
 
 inline std::vector<Action> action_table(const SymbolTable& symbols) {
@@ -103,6 +104,8 @@ inline std::vector<Action> action_table(const SymbolTable& symbols) {
       a = Action::kQueryL;
     else if (n == "?E")
       a = Action::kCommunicate;
+    else if (n == "@o")
+      a = Action::kSphere;
     t[i] = a;
   }
   return t;
@@ -250,6 +253,9 @@ void walk(const ModuleString& s, const std::vector<Action>& actions, const Turtl
         break;
       case Action::kSurface:
         visitor.surface(has ? p[0] : 1.0, f);
+        break;
+      case Action::kSphere:
+        visitor.sphere(has ? p[0] : f.width, f);
         break;
       case Action::kQueryP:
       case Action::kQueryH:

@@ -93,6 +93,15 @@ TEST(LsystemTurtle, PolygonsBecomeLeavesWithTheirArea) {
   EXPECT_THROW(draw("F}"), ValueError);
 }
 
+TEST(LsystemTurtle, SpheresAreFlowers) {
+  const Interpretation r = draw("F(2)@o(0.5)");
+  ASSERT_EQ(r.tree.size(), 2u);
+  EXPECT_EQ(r.tree.kind(1), OrganKind::kFlower);
+  EXPECT_DOUBLE_EQ(r.tree.radius(1), 0.25);
+  EXPECT_TRUE(r.tree.start(1).isApprox(Eigen::Vector3d(0, 0, 2)));
+  EXPECT_EQ(r.tree.parent(1), 0u);
+}
+
 TEST(LsystemTurtle, TropismBendsTowardTheDirection) {
   TurtleSettings s;
   s.initial_elasticity = 0.2;
