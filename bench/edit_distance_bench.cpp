@@ -4,6 +4,7 @@
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -13,8 +14,9 @@ namespace {
 
 // Axes of internodes: each step extends a random growing tip by one internode and, with
 // probability 0.3, starts a lateral axis of the next order there; tips stop with probability
-// 0.02. Radii follow the pipe model, lengths shrink with branching order.
-fspm::TreeGraph plant_like_tree(std::size_t n, std::uint64_t seed) {
+// 0.02. With `leafy`, each new internode also bears one or two leaves (nodes of organ kind leaf),
+// so nodes have up to four children. Radii follow the pipe model, lengths shrink with order.
+fspm::TreeGraph plant_like_tree(std::size_t n, std::uint64_t seed, bool leafy = false) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   fspm::TreeGraph t;
@@ -30,6 +32,16 @@ fspm::TreeGraph plant_like_tree(std::size_t n, std::uint64_t seed) {
     d.order = t.order(v);
     d.length = (0.05 + 0.25 * u(rng)) / (1.0 + d.order);
     tips[k] = t.add_node(v, d);
+    if (leafy) {
+      const int leaves = u(rng) < 0.5 ? 1 : 2;
+      for (int l = 0; l < leaves && t.size() < n; ++l) {
+        fspm::NodeData leaf;
+        leaf.kind = fspm::OrganKind::kLeaf;
+        leaf.order = d.order;
+        leaf.length = 0.05 + 0.05 * u(rng);
+        t.add_node(tips[k], leaf);
+      }
+    }
     if (t.size() < n && u(rng) < 0.3) {
       d.order = static_cast<std::uint16_t>(d.order + 1);
       d.length = (0.05 + 0.25 * u(rng)) / (1.0 + d.order);
@@ -56,9 +68,9 @@ double peak_rss_mb() {
 }
 
 void run(benchmark::State& state, fspm::EditCostKind cost, bool mapping,
-         fspm::AssignmentSolver solver = fspm::AssignmentSolver::kHungarian) {
+         fspm::AssignmentSolver solver = fspm::AssignmentSolver::kHungarian, bool leafy = false) {
   const auto n = static_cast<std::size_t>(state.range(0));
-  const fspm::TreeGraph a = plant_like_tree(n, 1), b = plant_like_tree(n, 2);
+  const fspm::TreeGraph a = plant_like_tree(n, 1, leafy), b = plant_like_tree(n, 2, leafy);
   fspm::EditDistanceOptions opt;
   opt.cost = cost;
   opt.with_mapping = mapping;
@@ -68,6 +80,13 @@ void run(benchmark::State& state, fspm::EditCostKind cost, bool mapping,
     d = fspm::constrained_edit_distance(a, b, opt).distance;
     benchmark::DoNotOptimize(d);
   }
+  std::size_t tips = 0, max_children = 0;
+  for (fspm::NodeId v = 0; v < a.size(); ++v) {
+    tips += a.is_tip(v) ? 1 : 0;
+    max_children = std::max(max_children, a.child_count(v));
+  }
+  state.counters["tips_a"] = static_cast<double>(tips);
+  state.counters["max_children_a"] = static_cast<double>(max_children);
   state.counters["distance"] = d;
   state.counters["peak_rss_MB"] = peak_rss_mb();
 }
@@ -85,12 +104,17 @@ void BM_EditDistanceStandardizedMinCostFlow(benchmark::State& s) {
   run(s, fspm::EditCostKind::kStandardized, false, fspm::AssignmentSolver::kMinCostFlow);
 }
 
+void BM_EditDistanceStandardizedLeafy(benchmark::State& s) {
+  run(s, fspm::EditCostKind::kStandardized, false, fspm::AssignmentSolver::kHungarian, true);
+}
+
 BENCHMARK(BM_EditDistanceStandardized)->Arg(2000)->Arg(4000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_EditDistanceTopological)->Arg(2000)->Arg(4000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_EditDistanceStandardizedWithMapping)
     ->Arg(2000)
     ->Arg(4000)
     ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EditDistanceStandardizedLeafy)->Arg(2000)->Arg(4000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_EditDistanceStandardizedMinCostFlow)->Arg(2000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
