@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 namespace fspm::environment {
 namespace {
@@ -20,6 +23,29 @@ double shadow_reach2(double r, double g, double significance) {
   const double cos_min = 1.0 - q;
   const double sin2_min = 1.0 - cos_min * cos_min;
   return r * r / sin2_min;
+}
+
+// vis[i] *= g for every direction with d_i . axis >= c: one branch-free pass over all cells.
+// Same arithmetic (x*ax + y*ay + z*az, no fused multiply-add) as Eigen's dot in the ray tests.
+void apply_cap_all(double* __restrict vis, const double* __restrict x, const double* __restrict y,
+                   const double* __restrict z, int n, const Eigen::Vector3d& axis, double c,
+                   double g) {
+  int i = 0;
+#ifdef __SSE2__
+  const __m128d ax = _mm_set1_pd(axis.x()), ay = _mm_set1_pd(axis.y()), az = _mm_set1_pd(axis.z());
+  const __m128d vc = _mm_set1_pd(c), vg = _mm_set1_pd(g), one = _mm_set1_pd(1.0);
+  for (; i + 2 <= n; i += 2) {
+    const __m128d d = _mm_add_pd(
+        _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(x + i), ax), _mm_mul_pd(_mm_loadu_pd(y + i), ay)),
+        _mm_mul_pd(_mm_loadu_pd(z + i), az));
+    const __m128d m = _mm_cmpge_pd(d, vc);
+    const __m128d f = _mm_or_pd(_mm_and_pd(m, vg), _mm_andnot_pd(m, one));
+    _mm_storeu_pd(vis + i, _mm_mul_pd(_mm_loadu_pd(vis + i), f));
+  }
+#endif
+  for (; i < n; ++i) {
+    if (x[i] * axis.x() + y[i] * axis.y() + z[i] * axis.z() >= c) vis[i] *= g;
+  }
 }
 
 double top_z(const Box& b) {
@@ -263,15 +289,13 @@ LightSample LightModel::sampled(const Eigen::Vector3d& p, std::span<const Cap> c
   thread_local std::vector<double> vis;
   vis.assign(dirs_.size(), all_factor);
   const int n = dirs_.size();
-  Eigen::Map<Eigen::ArrayXd> v(vis.data(), n);
   for (const Cap& c : caps) {
     const double g = c.gamma;
     // Few directions or a wide cap: one branch-free vectorized pass over all cells is cheaper
     // than rasterizing ring by ring. Both use the same exact test d . axis >= cos(alpha).
     if (n <= 128 || c.cos_a < 0.97) {
-      v *=
-          ((dirs_.xs() * c.axis.x() + dirs_.ys() * c.axis.y() + dirs_.zs() * c.axis.z()) >= c.cos_a)
-              .select(g, Eigen::ArrayXd::Ones(n));
+      apply_cap_all(vis.data(), dirs_.xs().data(), dirs_.ys().data(), dirs_.zs().data(), n, c.axis,
+                    c.cos_a, g);
     } else {
       dirs_.for_each_in_cap(c.axis, c.cos_a, [&](int i) { vis[i] *= g; });
     }
