@@ -20,8 +20,12 @@ void write_file_atomically(const std::string& path, const std::function<void(std
   }
   // A random suffix keeps concurrent writers (threads, MPI ranks) of the same target apart.
   std::random_device rd;
-  const fs::path tmp =
-      dir / ("." + target.filename().string() + ".tmp" + std::to_string(rd() % 1000000));
+  // Appended piecewise: GCC 12 warns falsely (-Wrestrict, PR 105651) on chained operator+.
+  std::string name = ".";
+  name += target.filename().string();
+  name += ".tmp";
+  name += std::to_string(rd() % 1000000);
+  const fs::path tmp = dir / name;
   try {
     {
       std::ofstream out(tmp, binary ? std::ios::binary | std::ios::trunc : std::ios::trunc);
