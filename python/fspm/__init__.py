@@ -19,7 +19,38 @@ from ._fspm import (  # noqa: F401
     write_tree,
 )
 
+
+
+def read_results(directory):
+    """The runs of an experiment's output directory (``fspm run ... --out DIR``).
+
+    Returns a pandas DataFrame with the columns run, seed, status, seconds, one per swept
+    parameter, one per metric and error; a list of dicts when pandas is not installed.
+    """
+    import os
+    import sqlite3
+
+    path = os.path.join(str(directory), "results.sqlite")
+    if not os.path.isfile(path):
+        raise IoError(f"{path}: no experiment results here (expected results.sqlite)")
+    con = sqlite3.connect(f"file:{path}?mode=ro", uri=True)
+    try:
+        cur = con.execute("SELECT * FROM results ORDER BY run")
+        columns = [c[0] for c in cur.description]
+        rows = cur.fetchall()
+    except sqlite3.DatabaseError as e:
+        raise Error(f"{path}: cannot read the results database: {e}") from None
+    finally:
+        con.close()
+    try:
+        import pandas
+    except ImportError:
+        return [dict(zip(columns, r)) for r in rows]
+    return pandas.DataFrame(rows, columns=columns)
+
+
 __all__ = [
+    "read_results",
     "Error", "IoError", "ParseError", "ParameterError", "Tree", "distance", "lsystem_derive",
     "lsystem_interpret", "parse_newick", "read_tree", "to_newick", "write_tree",
 ]

@@ -64,3 +64,24 @@ def test_lsystem_derive_matches_closed_form():
     assert r["symbols"]["F"] == 5 ** 3
     tree = fspm.lsystem_interpret(str(ROOT / "examples/lsystems/abop_1_24a.l"), steps=2)
     assert tree.summary()["internodes"] == 5 ** 2
+
+
+def test_read_results_of_a_sweep(tmp_path):
+    import subprocess
+
+    exe = pathlib.Path(fspm.__file__).resolve().parents[2] / "bin" / "fspm"
+    if not exe.exists():
+        pytest.skip("the fspm executable is not built beside the module")
+    out = tmp_path / "sweep"
+    subprocess.run([str(exe), "-q", "run", str(ROOT / "examples/experiments/branching.toml"),
+                    "--out", str(out), "--jobs", "2"], check=True)
+    df = fspm.read_results(out)
+    # 2 steps x 3 values of r2 x 3 angles x 2 replicates, as the experiment file declares.
+    assert len(df) == 36
+    assert set(df["status"]) == {"ok"}
+    assert {"steps", "define.r2", "define.a0", "internodes", "height"} <= set(df.columns)
+    # More derivation steps never give fewer internodes for the same parameters.
+    means = df.groupby("steps")["internodes"].mean()
+    assert means[8] > means[6]
+    with pytest.raises(fspm.IoError):
+        fspm.read_results(tmp_path / "nothing-here")
