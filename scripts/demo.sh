@@ -1,20 +1,36 @@
 #!/usr/bin/env bash
-# The main job: installs what is missing, builds Release and runs a small end-to-end example,
-# then says where its output is.
+# The main job: installs what is missing, builds Release, and runs a small end-to-end study:
+# a parameter sweep of an L-system tree through the experiment runner (results in SQLite and
+# CSV), a GreenLab plant simulated and reconstructed at three ages, and a mesh of one tree.
+# It ends by saying where its output is.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/deps.sh
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release > build.log 2>&1 || { cat build.log; exit 1; }
 cmake --build build -j "$(nproc)"
 out=demo-output
+rm -rf "$out"
 mkdir -p "$out"
 fspm=build/bin/fspm
 
-echo "== a Newick tree converted to every format"
-$fspm tree convert examples/trees/small.nwk "$out/small.tree"
-$fspm tree convert "$out/small.tree" "$out/small.treeb"
-$fspm tree convert "$out/small.treeb" "$out/small.mtg"
-$fspm tree info "$out/small.treeb"
+echo "== parameter sweep: Honda's monopodial tree (ABOP fig. 2.6), 36 runs"
+$fspm run examples/experiments/branching.toml --out "$out/branching" --jobs "$(nproc)"
+$fspm results show "$out/branching"
+$fspm results export "$out/branching" --csv -o "$out/branching/results.csv"
+
+echo "== an L-system tree"
+$fspm lsystem interpret examples/lsystems/monopodial_tree.l -o "$out/monopodial.tree"
+$fspm tree info "$out/monopodial.tree"
+$fspm tree convert "$out/monopodial.tree" "$out/monopodial.mtg"
+
+echo "== a GreenLab plant (Jaeger's Leeuwenberg example) reconstructed at ages 5, 10, 15"
+$fspm greenlab simulate examples/greenlab/leeuwenberg.toml -o "$out/leeuwenberg.ctree" --json
+for age in 5 10 15; do
+  $fspm greenlab reconstruct "$out/leeuwenberg.ctree" --age "$age" -o "$out/leeuwenberg-$age.tree" --json
+done
+
+echo "== a mesh for ParaView or Blender"
+$fspm mesh "$out/monopodial.tree" -o "$out/monopodial.glb" --json
 
 echo
-echo "demo output is in $(pwd)/$out"
+echo "demo output is in $(pwd)/$out (sweep results: $out/branching/results.csv)"
