@@ -16,6 +16,7 @@
 #include "cli/output.hpp"
 #include "experiments/experiment.hpp"
 #include "experiments/model_factory.hpp"
+#include "experiments/mpi_runner.hpp"
 #include "experiments/results_export.hpp"
 #include "experiments/run_plan.hpp"
 #include "experiments/runner.hpp"
@@ -46,6 +47,7 @@ struct RunOptions {
   double time_limit_s = 0.0;
   bool json = false;
   bool emit_slurm = false;
+  bool mpi = false;
   std::size_t shards = 4;
   std::string slurm_file;
   std::string slurm_time = "24:00:00";
@@ -127,18 +129,25 @@ void run_command(const RunOptions& o) {
   if (!o.shard.empty()) std::tie(r.shard_index, r.shard_count) = parse_shard(o.shard);
   if (o.time_limit_s > 0.0) r.time_limit_s = o.time_limit_s;
   r.interrupt = &g_interrupted;
+  if (o.mpi && !ex::mpi_available()) {
+    throw ValueError("--mpi: this fspm was built without MPI (install libopenmpi-dev, rebuild)");
+  }
   if (verbosity() > 0) {
     r.progress = &std::cerr;
     r.progress_bar = ::isatty(STDERR_FILENO) != 0;
-    std::cerr << "experiment " << x.name << ": " << plan.size() << " runs (" << plan.points()
-              << " points x " << x.replicates << " replicates) into " << r.out_dir << '\n';
+    if (!o.mpi)
+      std::cerr << "experiment " << x.name << ": " << plan.size() << " runs (" << plan.points()
+                << " points x " << x.replicates << " replicates) into " << r.out_dir << '\n';
   }
   g_interrupted = false;
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
-  const ex::RunnerSummary s = ex::run_experiment(x, *model, r);
+  bool is_root = true;
+  const ex::RunnerSummary s =
+      o.mpi ? ex::run_experiment_mpi(x, *model, r, is_root) : ex::run_experiment(x, *model, r);
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
+  if (!is_root) return;  // rank 0 reports for everyone
   if (o.json) {
     print_json({{"experiment", x.name},
                 {"database", s.database},
@@ -217,6 +226,7 @@ void add_experiment_commands(CLI::App& app) {
   r->add_option("--shard", run->shard, "Run only shard I of N (runs with index % N == I)");
   r->add_option("--time-limit", run->time_limit_s, "Seconds per run (overrides the file)");
   r->add_flag("--json", run->json, "Machine-readable JSON summary on stdout");
+  r->add_flag("--mpi", run->mpi, "Spread the runs over the MPI ranks (under mpirun)");
   r->add_flag("--emit-slurm", run->emit_slurm, "Write a Slurm job-array script instead of running");
   r->add_option("--shards", run->shards, "--emit-slurm: number of array tasks (default 4)");
   r->add_option("--slurm-file", run->slurm_file, "--emit-slurm: script path (default NAME.slurm)");

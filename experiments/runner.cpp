@@ -13,6 +13,7 @@
 #include "experiments/metrics.hpp"
 #include "experiments/progress.hpp"
 #include "experiments/results_db.hpp"
+#include "experiments/run_execution.hpp"
 #include "experiments/run_plan.hpp"
 #include "fspm/tree_file.hpp"
 
@@ -21,21 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-
-std::string utc_now() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
-
-std::string run_file_name(std::size_t run, const char* extension) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "runs/run-%07zu.%s", run, extension);
-  return buf;
-}
 
 // Finished runs handed from the workers to the writer.
 class Mailbox {
@@ -74,6 +60,17 @@ class Mailbox {
 
 }  // namespace
 
+ExperimentInfo experiment_info(const Experiment& experiment) {
+  ExperimentInfo info;
+  info.name = experiment.name;
+  info.experiment_path = experiment.path;
+  info.experiment_text = experiment.text;
+  info.total_runs = experiment.runs();
+  info.swept = experiment.swept_names();
+  info.metrics = experiment.metrics;
+  return info;
+}
+
 RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
                              const RunnerOptions& options) {
   const Clock::time_point start = Clock::now();
@@ -83,13 +80,7 @@ RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
                      " does not exist (expected I/N with 0 <= I < N)");
   }
   const RunPlan plan(experiment);
-  ExperimentInfo info;
-  info.name = experiment.name;
-  info.experiment_path = experiment.path;
-  info.experiment_text = experiment.text;
-  info.total_runs = plan.size();
-  info.swept = experiment.swept_names();
-  info.metrics = experiment.metrics;
+  const ExperimentInfo info = experiment_info(experiment);
   ResultsDb db(options.out_dir,
                options.resume ? ResultsDb::Mode::kResume : ResultsDb::Mode::kCreate, info);
 
@@ -106,12 +97,8 @@ RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
       todo.push_back(i);
     }
   }
-  const bool keep_tree =
-      std::find(experiment.keep.begin(), experiment.keep.end(), "tree") != experiment.keep.end();
-  if (keep_tree) fs::create_directories(fs::path(options.out_dir) / "runs");
-  const std::optional<double> limit_s =
-      options.time_limit_s ? options.time_limit_s : experiment.time_limit_s;
-
+  const ExecutionSettings settings =
+      execution_settings(experiment, options.out_dir, options.time_limit_s, options.interrupt);
   const std::size_t hardware = std::max(1u, std::thread::hardware_concurrency());
   const std::size_t workers = std::max<std::size_t>(
       1,
@@ -130,63 +117,9 @@ RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
       if (interrupted()) break;
       const std::size_t k = next.fetch_add(1);
       if (k >= todo.size()) break;
-      const RunSpec spec = plan.run(todo[k]);
-      RunRecord record;
-      record.run = spec.index;
-      record.point = spec.point;
-      record.replicate = spec.replicate;
-      record.seed = spec.seed;
-      record.parameters = spec.parameters;
-      const Clock::time_point t0 = Clock::now();
-      std::optional<Clock::time_point> deadline;
-      if (limit_s) {
-        deadline = t0 + std::chrono::duration_cast<Clock::duration>(
-                            std::chrono::duration<double>(*limit_s));
-      }
-      const RunContext context(deadline, options.interrupt);
-      bool abandoned = false;
-      try {
-        RunResult result = model.run(spec.parameters, spec.seed, context);
-        record.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-        for (const std::string& name : experiment.metrics) {
-          const auto it = result.metrics.find(name);
-          record.metrics[name] = it != result.metrics.end() ? it->second : std::nan("");
-        }
-        if (limit_s && record.seconds > *limit_s) {
-          // A model that does not check its context still gets the status it earned.
-          record.status = RunStatus::kTimeout;
-          record.error = "time limit of " + std::to_string(*limit_s) + " s exceeded";
-        } else if (keep_tree && result.tree) {
-          const std::string rel = run_file_name(spec.index, "tree");
-          write_tree_file(*result.tree, (fs::path(options.out_dir) / rel).string());
-          record.files.push_back(rel);
-        }
-      } catch (const RunStopped& e) {
-        record.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-        if (e.timed_out()) {
-          record.status = RunStatus::kTimeout;
-          record.error = "time limit of " + std::to_string(*limit_s) + " s exceeded";
-        } else {
-          abandoned = true;  // interrupted: no row, so --resume runs it again
-        }
-      } catch (const std::exception& e) {
-        record.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-        record.status = RunStatus::kError;
-        record.error = e.what();
-      } catch (...) {
-        record.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-        record.status = RunStatus::kError;
-        record.error = "unknown exception";
-      }
-      if (record.status != RunStatus::kOk) {
-        for (const std::string& name : experiment.metrics) record.metrics[name] = std::nan("");
-      }
-      if (record.metrics.contains(std::string(kRunTimeMetric))) {
-        record.metrics[std::string(kRunTimeMetric)] = record.seconds;
-      }
-      if (abandoned) continue;
-      record.finished_at = utc_now();
-      mailbox.put(std::move(record));
+      std::optional<RunRecord> record = execute_run(model, plan.run(todo[k]), settings);
+      if (!record) continue;
+      mailbox.put(std::move(*record));
     }
     mailbox.worker_done();
   };

@@ -12,6 +12,7 @@
 
 #include "experiments/experiment.hpp"
 #include "experiments/model.hpp"
+#include "experiments/results_db.hpp"
 
 namespace fspm::experiments {
 
@@ -42,6 +43,9 @@ struct RunnerSummary {
   bool interrupted = false;
   double seconds = 0.0;  // wall clock of this call
 };
+
+// What the result database records about `experiment`.
+ExperimentInfo experiment_info(const Experiment& experiment);
 
 // Throws IoError for database problems (locked, corrupted, another experiment's) before any run.
 RunnerSummary run_experiment(const Experiment& experiment, const Model& model,

@@ -169,3 +169,53 @@ TEST(ExperimentCommands, SlurmScriptRunsShardsThatMerge) {
 
 }  // namespace
 }  // namespace fspm::testing
+
+namespace fspm::testing {
+namespace {
+
+// Two MPI ranks on this machine give the rows of the local runner (timings aside).
+TEST(ExperimentCommands, MpiRanksGiveTheLocalResults) {
+  if (std::system("command -v mpirun >/dev/null 2>&1") != 0) GTEST_SKIP() << "no mpirun";
+  const fs::path dir = scratch_dir("exp_mpi");
+  const std::string exp = write_file(
+      dir / "e.toml",
+      "[experiment]\nname = \"m\"\nseed = 3\nreplicates = 3\n[model]\nkind = \"lsystem\"\n"
+      "file = \"" +
+          std::string(FSPM_SOURCE_DIR) +
+          "/examples/lsystems/stochastic_plant.l\"\n"
+          "[sweep]\nsteps = [2, 3, 4]\n[outputs]\nmetrics = [\"internodes\", \"height\"]\n");
+  const std::string mpi_out = (dir / "mpi").string();
+  const std::string cmd =
+      "env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun "
+      "--oversubscribe -np 2 " +
+      std::string(FSPM_EXE) + " run " + exp + " --mpi --out " + mpi_out + " > " +
+      (dir / "mpi.log").string() + " 2>&1";
+  const int rc = std::system(cmd.c_str());
+  std::ifstream log(dir / "mpi.log");
+  const std::string log_text((std::istreambuf_iterator<char>(log)), {});
+  if (log_text.find("built without MPI") != std::string::npos) GTEST_SKIP() << "no MPI build";
+  ASSERT_EQ(rc, 0) << log_text;
+  ASSERT_EQ(run_fspm("run " + exp + " --out " + (dir / "local").string()).exit_code, 0);
+  // Compare everything but the timing columns (seconds is column 4).
+  auto rows = [](const std::string& csv) {
+    std::vector<std::string> out;
+    for (const std::string& line : lines_of(csv)) {
+      std::vector<std::string> cells;
+      std::stringstream in(line);
+      for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
+      cells.erase(cells.begin() + 3);
+      std::string joined;
+      for (const std::string& c : cells) joined += c + ",";
+      out.push_back(joined);
+    }
+    return out;
+  };
+  const auto mpi_rows = rows(run_fspm("results export " + mpi_out + " --csv").out);
+  const auto local_rows =
+      rows(run_fspm("results export " + (dir / "local").string() + " --csv").out);
+  EXPECT_EQ(mpi_rows.size(), 10u);
+  EXPECT_EQ(mpi_rows, local_rows);
+}
+
+}  // namespace
+}  // namespace fspm::testing

@@ -1,0 +1,166 @@
+#include "experiments/run_execution.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "experiments/metrics.hpp"
+#include "fspm/tree_file.hpp"
+
+namespace fspm::experiments {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+using nlohmann::json;
+
+std::string utc_now() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+std::string run_file_name(std::size_t run, const char* extension) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "runs/run-%07zu.%s", run, extension);
+  return buf;
+}
+
+double since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+}  // namespace
+
+ExecutionSettings execution_settings(const Experiment& experiment, const std::string& out_dir,
+                                     std::optional<double> time_limit_override,
+                                     const std::atomic<bool>* interrupt) {
+  ExecutionSettings s;
+  s.experiment = &experiment;
+  s.out_dir = out_dir;
+  s.time_limit_s = time_limit_override ? time_limit_override : experiment.time_limit_s;
+  s.keep_tree =
+      std::find(experiment.keep.begin(), experiment.keep.end(), "tree") != experiment.keep.end();
+  s.interrupt = interrupt;
+  if (s.keep_tree) fs::create_directories(fs::path(out_dir) / "runs");
+  return s;
+}
+
+std::optional<RunRecord> execute_run(const Model& model, const RunSpec& spec,
+                                     const ExecutionSettings& settings) {
+  const Experiment& experiment = *settings.experiment;
+  RunRecord record;
+  record.run = spec.index;
+  record.point = spec.point;
+  record.replicate = spec.replicate;
+  record.seed = spec.seed;
+  record.parameters = spec.parameters;
+  const std::optional<double> limit_s = settings.time_limit_s;
+  const std::string limit_text =
+      limit_s ? "time limit of " + std::to_string(*limit_s) + " s exceeded" : std::string();
+  const Clock::time_point t0 = Clock::now();
+  std::optional<Clock::time_point> deadline;
+  if (limit_s) {
+    deadline =
+        t0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(*limit_s));
+  }
+  const RunContext context(deadline, settings.interrupt);
+  try {
+    RunResult result = model.run(spec.parameters, spec.seed, context);
+    record.seconds = since(t0);
+    for (const std::string& name : experiment.metrics) {
+      const auto it = result.metrics.find(name);
+      record.metrics[name] = it != result.metrics.end() ? it->second : std::nan("");
+    }
+    if (limit_s && record.seconds > *limit_s) {
+      // A model that does not check its context still gets the status it earned.
+      record.status = RunStatus::kTimeout;
+      record.error = limit_text;
+    } else if (settings.keep_tree && result.tree) {
+      const std::string rel = run_file_name(spec.index, "tree");
+      write_tree_file(*result.tree, (fs::path(settings.out_dir) / rel).string());
+      record.files.push_back(rel);
+    }
+  } catch (const RunStopped& e) {
+    record.seconds = since(t0);
+    if (!e.timed_out()) return std::nullopt;  // interrupted: no row, --resume runs it again
+    record.status = RunStatus::kTimeout;
+    record.error = limit_text;
+  } catch (const std::exception& e) {
+    record.seconds = since(t0);
+    record.status = RunStatus::kError;
+    record.error = e.what();
+  } catch (...) {
+    record.seconds = since(t0);
+    record.status = RunStatus::kError;
+    record.error = "unknown exception";
+  }
+  if (record.status != RunStatus::kOk) {
+    for (const std::string& name : experiment.metrics) record.metrics[name] = std::nan("");
+  }
+  if (record.metrics.contains(std::string(kRunTimeMetric))) {
+    record.metrics[std::string(kRunTimeMetric)] = record.seconds;
+  }
+  record.finished_at = utc_now();
+  return record;
+}
+
+std::string record_to_json(const RunRecord& r) {
+  json params = json::object();
+  for (const auto& [name, value] : r.parameters) {
+    std::visit([&](const auto& v) { params[name] = v; }, value);
+  }
+  json metrics = json::object();
+  for (const auto& [name, v] : r.metrics)
+    metrics[name] = std::isfinite(v) ? json(v) : json(nullptr);
+  const json j = {{"run", r.run},
+                  {"point", r.point},
+                  {"replicate", r.replicate},
+                  {"seed", r.seed},
+                  {"status", run_status_name(r.status)},
+                  {"seconds", r.seconds},
+                  {"parameters", params},
+                  {"metrics", metrics},
+                  {"error", r.error},
+                  {"files", r.files},
+                  {"finished_at", r.finished_at}};
+  return j.dump();
+}
+
+RunRecord record_from_json(const std::string& text) {
+  const json j = json::parse(text);
+  RunRecord r;
+  r.run = j.at("run").get<std::size_t>();
+  r.point = j.at("point").get<std::size_t>();
+  r.replicate = j.at("replicate").get<std::size_t>();
+  r.seed = j.at("seed").get<std::uint64_t>();
+  r.status = run_status_from_name(j.at("status").get<std::string>());
+  r.seconds = j.at("seconds").get<double>();
+  const json& params = j.at("parameters");
+  for (auto it = params.begin(); it != params.end(); ++it) {
+    if (it->is_number_integer()) {
+      r.parameters[it.key()] = it->get<std::int64_t>();
+    } else if (it->is_number()) {
+      r.parameters[it.key()] = it->get<double>();
+    } else {
+      r.parameters[it.key()] = it->get<std::string>();
+    }
+  }
+  const json& metrics = j.at("metrics");
+  for (auto it = metrics.begin(); it != metrics.end(); ++it) {
+    r.metrics[it.key()] = it->is_number() ? it->get<double>() : std::nan("");
+  }
+  r.error = j.at("error").get<std::string>();
+  r.files = j.at("files").get<std::vector<std::string>>();
+  r.finished_at = j.at("finished_at").get<std::string>();
+  return r;
+}
+
+}  // namespace fspm::experiments
