@@ -4,11 +4,15 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "fspm/compressed_tree_graph.hpp"
 #include "fspm/constrained_edit_distance.hpp"
 #include "fspm/error.hpp"
 #include "fspm/newick_format.hpp"
 #include "fspm/tree_file.hpp"
 #include "fspm/tree_summary.hpp"
+#include "greenlab/plant_params.hpp"
+#include "greenlab/reconstruction.hpp"
+#include "greenlab/simulation.hpp"
 #include "lsystem/derivation.hpp"
 #include "lsystem/lsystem.hpp"
 #include "lsystem/parser.hpp"

@@ -5,15 +5,19 @@ with the C++ tree (no copy). Errors are raised as :class:`fspm.Error` subclasses
 same messages as the command line.
 """
 from ._fspm import (  # noqa: F401
+    CompressedPlant,
     Error,
     IoError,
     ParseError,
     Tree,
     ValueError_ as ParameterError,
     distance,
+    greenlab_reconstruct,
+    greenlab_simulate,
     lsystem_derive,
     lsystem_interpret,
     parse_newick,
+    read_plant,
     read_tree,
     to_newick,
     write_tree,
@@ -50,7 +54,7 @@ def read_results(directory):
 
 
 __all__ = [
-    "read_results",
+    "read_results", "CompressedPlant", "greenlab_simulate", "greenlab_reconstruct", "read_plant",
     "Error", "IoError", "ParseError", "ParameterError", "Tree", "distance", "lsystem_derive",
     "lsystem_interpret", "parse_newick", "read_tree", "to_newick", "write_tree",
 ]

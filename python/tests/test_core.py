@@ -85,3 +85,16 @@ def test_read_results_of_a_sweep(tmp_path):
     assert means[8] > means[6]
     with pytest.raises(fspm.IoError):
         fspm.read_results(tmp_path / "nothing-here")
+
+
+def test_greenlab_jaeger_figure_1(tmp_path):
+    # Jaeger et al. (2010), Figure 1: the binary tree has 6 metamers, stored as 4 node records.
+    plant = fspm.greenlab_simulate(str(ROOT / "examples/greenlab/jaeger_figure1.toml"))
+    assert plant.graph_nodes == 4
+    assert plant.metamers == 6
+    tree = fspm.greenlab_reconstruct(plant, leaves=False)
+    assert tree.summary()["internodes"] == 6
+    plant.save(str(tmp_path / "p.ctree"))
+    assert fspm.read_plant(str(tmp_path / "p.ctree")).metamers == 6
+    with pytest.raises(fspm.Error):
+        fspm.greenlab_reconstruct(plant, age=99)
