@@ -4,6 +4,10 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "experiments/experiment.hpp"
+#include "experiments/model_factory.hpp"
+#include "experiments/run_plan.hpp"
+#include "experiments/runner.hpp"
 #include "fspm/compressed_tree_graph.hpp"
 #include "fspm/constrained_edit_distance.hpp"
 #include "fspm/error.hpp"

@@ -19,6 +19,7 @@ from ._fspm import (  # noqa: F401
     parse_newick,
     read_plant,
     read_tree,
+    run_experiment,
     to_newick,
     write_tree,
 )
@@ -55,6 +56,7 @@ def read_results(directory):
 
 __all__ = [
     "read_results", "CompressedPlant", "greenlab_simulate", "greenlab_reconstruct", "read_plant",
+    "run_experiment",
     "Error", "IoError", "ParseError", "ParameterError", "Tree", "distance", "lsystem_derive",
     "lsystem_interpret", "parse_newick", "read_tree", "to_newick", "write_tree",
 ]

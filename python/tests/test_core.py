@@ -67,14 +67,10 @@ def test_lsystem_derive_matches_closed_form():
 
 
 def test_read_results_of_a_sweep(tmp_path):
-    import subprocess
-
-    exe = pathlib.Path(fspm.__file__).resolve().parents[2] / "bin" / "fspm"
-    if not exe.exists():
-        pytest.skip("the fspm executable is not built beside the module")
     out = tmp_path / "sweep"
-    subprocess.run([str(exe), "-q", "run", str(ROOT / "examples/experiments/branching.toml"),
-                    "--out", str(out), "--jobs", "2"], check=True)
+    summary = fspm.run_experiment(str(ROOT / "examples/experiments/branching.toml"), str(out),
+                                  jobs=2)
+    assert summary["ran"] == 36 and summary["ok"] == 36
     df = fspm.read_results(out)
     # 2 steps x 3 values of r2 x 3 angles x 2 replicates, as the experiment file declares.
     assert len(df) == 36
