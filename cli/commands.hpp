@@ -7,6 +7,7 @@ class App;
 namespace fspm::cli {
 
 void add_tree_commands(CLI::App& app);
+void add_environment_commands(CLI::App& app);
 void add_experiment_commands(CLI::App& app);
 void add_lsystem_commands(CLI::App& app);
 void add_graphics_commands(CLI::App& app);

@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   app.parse_complete_callback([&] { fspm::cli::set_verbosity(quiet ? 0 : (verbose > 0 ? 2 : 1)); });
 
   fspm::cli::add_tree_commands(app);
+  fspm::cli::add_environment_commands(app);
   fspm::cli::add_experiment_commands(app);
   fspm::cli::add_lsystem_commands(app);
   fspm::cli::add_graphics_commands(app);

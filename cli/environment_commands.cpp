@@ -1,0 +1,124 @@
+// fspm light | grow: sky light at points through a scene's occluders (Pirk eq. 4.3) and the
+// self-organizing growth model (Palubicki et al. 2009) with Pirk's tree types A, B and C.
+#include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
+#include "environment/growth_model.hpp"
+#include "environment/light_model.hpp"
+#include "environment/points_file.hpp"
+#include "environment/scene_file.hpp"
+#include "fspm/atomic_file.hpp"
+#include "fspm/error.hpp"
+#include "fspm/tree_file.hpp"
+
+namespace fspm::cli {
+namespace {
+
+struct LightOptions {
+  std::string scene;
+  std::string points;
+  std::string out;
+  int directions = 0;
+};
+
+struct GrowOptions {
+  std::string params;
+  std::string preset;
+  std::string scene;
+  std::string out;
+  std::string format;
+  int years = -1;
+  std::int64_t seed = -1;
+  bool json = false;
+};
+
+void run_light(const LightOptions& o) {
+  environment::Scene scene = environment::read_scene_file(o.scene);
+  if (o.directions != 0) {
+    if (o.directions < 1) throw ValueError("--directions: expected a count >= 1");
+    scene.sky.directions = o.directions;
+  }
+  const auto points = environment::read_points_csv(o.points);
+  const auto t0 = std::chrono::steady_clock::now();
+  const environment::LightModel model(scene);
+  std::vector<environment::LightSample> samples(points.size());
+  model.evaluate(points, samples);
+  spdlog::debug("light: {} points in {:.3f} s", points.size(),
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  if (o.out.empty()) {
+    environment::write_light_csv(std::cout, points, samples);
+    std::cout.flush();
+  } else {
+    write_file_atomically(
+        o.out, [&](std::ostream& out) { environment::write_light_csv(out, points, samples); });
+    spdlog::info("wrote {} ({} points)", o.out, points.size());
+  }
+}
+
+void run_grow(const GrowOptions& o) {
+  if (o.params.empty() == o.preset.empty()) {
+    throw ValueError("expected either a PARAMS.toml file or --preset A|B|C (not both)");
+  }
+  environment::GrowthParams params = o.preset.empty() ? environment::read_growth_params(o.params)
+                                                      : environment::growth_preset(o.preset);
+  if (o.years >= 0) params.years = o.years;
+  if (o.seed >= 0) params.seed = static_cast<std::uint64_t>(o.seed);
+  environment::Scene scene;
+  if (!o.scene.empty()) scene = environment::read_scene_file(o.scene);
+  tree_format_for(o.out, o.format);  // fail on a bad output name before growing
+  const auto t0 = std::chrono::steady_clock::now();
+  const environment::GrowthResult r = environment::grow_tree(params, scene);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  write_tree_file(r.tree, o.out, o.format);
+  if (o.json) {
+    print_json({{"internodes", r.internodes},
+                {"clusters", r.clusters},
+                {"shed", r.shed},
+                {"height", r.height_m},
+                {"seconds", seconds},
+                {"years", params.years},
+                {"output", o.out}});
+    return;
+  }
+  spdlog::info("grew {} internodes ({} shed), {} leaf clusters, height {:.2f} m in {:.3f} s -> {}",
+               r.internodes, r.shed, r.clusters, r.height_m, seconds, o.out);
+}
+
+}  // namespace
+
+void add_environment_commands(CLI::App& app) {
+  auto light = std::make_shared<LightOptions>();
+  CLI::App* l = app.add_subcommand(
+      "light", "Sky light (Pirk eq. 4.3) and mean light direction at points of a scene");
+  l->add_option("--scene", light->scene, "Scene file (JSON, see docs/environment.md)")->required();
+  l->add_option("--points", light->points, "Points (CSV with header x,y,z)")->required();
+  l->add_option("--directions", light->directions,
+                "Stratified sky directions (default: the scene's sky.directions, 256)");
+  l->add_option("-o,--output", light->out, "Output CSV x,y,z,light,dx,dy,dz (default: stdout)");
+  l->callback([light] { run_light(*light); });
+
+  auto grow = std::make_shared<GrowOptions>();
+  CLI::App* g = app.add_subcommand(
+      "grow", "Self-organizing tree growth (Palubicki 2009) with light, walls and obstacles");
+  g->add_option("PARAMS", grow->params, "Growth parameters (TOML, see docs/environment.md)");
+  g->add_option("--preset", grow->preset, "Pirk's tree type A, B or C instead of PARAMS");
+  g->add_option("--scene", grow->scene, "Scene with obstacles and sky (JSON)");
+  g->add_option("--years", grow->years, "Growth cycles (default: from the parameters)");
+  g->add_option("--seed", grow->seed, "Random seed (default: from the parameters)");
+  g->add_option("-o,--output", grow->out, "Output tree file (.tree, .treeb, .nwk, .mtg)")
+      ->required();
+  g->add_option("--format", grow->format, "Output format (default: from the extension)");
+  g->add_flag("--json", grow->json, "Machine-readable JSON on stdout");
+  g->callback([grow] { run_grow(*grow); });
+}
+
+}  // namespace fspm::cli

@@ -1,0 +1,101 @@
+// fspm light and fspm grow, run as a user would.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "tests/cli/run_command.hpp"
+
+namespace fspm {
+namespace {
+
+using testing::run_fspm;
+using testing::scratch_dir;
+
+void write_text(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream(p) << text;
+}
+
+// An opaque sphere of radius 1 at height 3 over the first point: light cos^3(alpha) with
+// sin(alpha) = 1/3 (closed form, see docs/environment.md); the second point is far outside every
+// shadow volume and gets exactly 1.
+TEST(EnvironmentCli, LightMatchesClosedFormAndKeepsRowOrder) {
+  const auto dir = scratch_dir("light");
+  write_text(dir / "scene.json",
+             R"({"sky": {"brightest": [0, 0, 1]}, "occluders": [)"
+             R"({"type": "sphere", "center": [0, 0, 3], "radius": 1, "translucency": 0}]})");
+  write_text(dir / "points.csv", "x,y,z\n0,0,0\n100,100,0\n");
+  const auto r = run_fspm("light --scene " + (dir / "scene.json").string() + " --points " +
+                          (dir / "points.csv").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream in(r.out);
+  std::string header, row1, row2;
+  std::getline(in, header);
+  std::getline(in, row1);
+  std::getline(in, row2);
+  EXPECT_EQ(header, "x,y,z,light,dx,dy,dz");
+  double x, y, z, light, dx, dy, dz;
+  char c;
+  std::istringstream(row1) >> x >> c >> y >> c >> z >> c >> light >> c >> dx >> c >> dy >> c >> dz;
+  EXPECT_NEAR(light, std::pow(std::sqrt(8.0 / 9.0), 3), 1e-9);
+  EXPECT_NEAR(dz, 1.0, 1e-9);
+  std::istringstream(row2) >> x >> c >> y >> c >> z >> c >> light;
+  EXPECT_EQ(x, 100.0);
+  EXPECT_EQ(light, 1.0);
+
+  const auto out = dir / "out.csv";
+  const auto w = run_fspm("light --scene " + (dir / "scene.json").string() + " --points " +
+                          (dir / "points.csv").string() + " --directions 64 -o " + out.string());
+  ASSERT_EQ(w.exit_code, 0) << w.err;
+  EXPECT_TRUE(std::filesystem::exists(out));
+}
+
+TEST(EnvironmentCli, LightBadInputNamesFileAndPlace) {
+  const auto dir = scratch_dir("light_bad");
+  write_text(dir / "scene.json",
+             R"({"occluders": [{"type": "sphere", "center": [0, 0, 3], "radius": -1}]})");
+  write_text(dir / "ok.json", R"({"occluders": []})");
+  write_text(dir / "points.csv", "x,y,z\n0,0,0\n1,oops,2\n");
+  auto r = run_fspm("light --scene " + (dir / "scene.json").string() + " --points " +
+                    (dir / "points.csv").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("/occluders/0/radius"), std::string::npos) << r.err;
+  r = run_fspm("light --scene " + (dir / "ok.json").string() + " --points " +
+               (dir / "points.csv").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("points.csv:3"), std::string::npos) << r.err;
+}
+
+TEST(EnvironmentCli, GrowPresetWritesTreeAndJson) {
+  const auto dir = scratch_dir("grow");
+  const auto tree = dir / "a.tree";
+  const auto r = run_fspm("grow --preset A --years 8 --seed 4 -o " + tree.string() + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j["internodes"].get<int>(), 10);
+  EXPECT_GE(j["clusters"].get<int>(), 1);
+  EXPECT_GE(j["shed"].get<int>(), 0);
+  EXPECT_GT(j["height"].get<double>(), 0.0);
+  EXPECT_GE(j["seconds"].get<double>(), 0.0);
+  EXPECT_TRUE(std::filesystem::exists(tree));
+  // Same seed, same tree.
+  const auto again = run_fspm("grow --preset A --years 8 --seed 4 -o " + tree.string() + " --json");
+  EXPECT_EQ(nlohmann::json::parse(again.out)["internodes"], j["internodes"]);
+}
+
+TEST(EnvironmentCli, GrowBadInput) {
+  const auto dir = scratch_dir("grow_bad");
+  write_text(dir / "p.toml", "years = 5\nbranching = 3\n");
+  auto r = run_fspm("grow " + (dir / "p.toml").string() + " -o " + (dir / "t.tree").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("p.toml:2"), std::string::npos) << r.err;
+  r = run_fspm("grow --preset Q -o " + (dir / "t.tree").string());
+  EXPECT_EQ(r.exit_code, 1);
+  r = run_fspm("grow -o " + (dir / "t.tree").string());
+  EXPECT_EQ(r.exit_code, 1);
+}
+
+}  // namespace
+}  // namespace fspm
