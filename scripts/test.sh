@@ -42,9 +42,18 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release > build.log 2>&1 \
 grep -E "^-- fspm:" build.log || true
 cmake --build build -j "$jobs"
 
-if [ -d python/tests ] && [ -f build/python/fspm/__init__.py ]; then
-  echo "== Python tests"
-  PYTHONPATH="$root/build/python" /usr/bin/python3 -m pytest -q python/tests
+if [ -f build/python/fspm/__init__.py ]; then
+  export PYTHONPATH="$root/build/python"
+  echo "== Python tests (pytest)"
+  /usr/bin/python3 -m pytest -q -p no:cacheprovider python/tests
+  echo "== notebooks (executed top to bottom)"
+  for nb in notebooks/*.ipynb; do
+    [ -f "$nb" ] || continue
+    /usr/bin/python3 -m nbconvert --to notebook --execute --ExecutePreprocessor.timeout=600 \
+      --output-dir build/notebooks "$nb" > build/nbconvert.log 2>&1 \
+      || { tail -n 60 build/nbconvert.log; echo "notebook $nb failed"; exit 1; }
+    echo "executed $nb"
+  done
 fi
 
 echo "== CTest (main build)"
