@@ -132,8 +132,11 @@ LightModel::LightModel(const Scene& scene) : scene_(scene), dirs_(scene.sky.dire
     cell_ = extent.maxCoeff() / 16.0;
   }
   cell_ = std::max(cell_, extent.maxCoeff() / 128.0);
+  if (!extent.allFinite() || !std::isfinite(cell_) || cell_ <= 0.0) {
+    return;  // degenerate coordinates: no grid, every query visits every sphere
+  }
   auto cells_of = [&](double h) {
-    return (extent / h).array().ceil().cast<int>().max(1).matrix().eval();
+    return (extent / h).array().ceil().min(1 << 20).max(1.0).cast<int>().matrix().eval();
   };
   // Keep the index within a few million entries.
   for (;;) {
@@ -144,8 +147,12 @@ LightModel::LightModel(const Scene& scene) : scene_(scene), dirs_(scene.sky.dire
       volume_box(i, a, z);
       entries += ((z - a) / cell_ + Eigen::Vector3d::Constant(2.0)).prod();
     }
-    if (static_cast<double>(g.prod()) <= (1 << 21) && entries <= 8e6) break;
+    if (g.cast<double>().prod() <= (1 << 21) && entries <= 8e6) break;
     cell_ *= 1.5;
+    if (!std::isfinite(cell_)) {
+      grid_n_.setZero();
+      return;
+    }
   }
   grid_n_ = cells_of(cell_);
   auto cell_range = [&](std::size_t i, Eigen::Vector3i& c0, Eigen::Vector3i& c1) {

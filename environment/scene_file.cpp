@@ -59,17 +59,18 @@ class Reader {
   template <int N>
   Eigen::Matrix<double, N, 1> vec(const json& obj, const std::string& path, const char* key) const {
     const std::string p = path + "/" + key;
-    const std::string what = "an array of " + std::to_string(N) + " finite numbers";
+    const std::string what = "an array of " + std::to_string(N) + " numbers within 1e9";
     if (!obj.contains(key)) fail(p, what + " (missing)");
     return vec_value<N>(obj.at(key), p);
   }
   template <int N>
   Eigen::Matrix<double, N, 1> vec_value(const json& v, const std::string& p) const {
-    const std::string what = "an array of " + std::to_string(N) + " finite numbers";
+    const std::string what = "an array of " + std::to_string(N) + " numbers within 1e9";
     if (!v.is_array() || v.size() != N) fail(p, what, &v);
     Eigen::Matrix<double, N, 1> out;
     for (int i = 0; i < N; ++i) {
-      if (!v[i].is_number() || !std::isfinite(v[i].get<double>())) fail(p, what, &v);
+      // Coordinates beyond 1e9 m are surely mistakes and would overflow the spatial index.
+      if (!v[i].is_number() || !(std::abs(v[i].get<double>()) <= 1e9)) fail(p, what, &v);
       out[i] = v[i].get<double>();
     }
     return out;
@@ -127,7 +128,7 @@ class Reader {
       check_keys(o, path, {"type", "center", "radius", "translucency", "gamma0", "solid"});
       Sphere s;
       s.center = vec<3>(o, path, "center");
-      s.radius_m = number(o, path, "radius", 0, 1e300, "a non-negative radius");
+      s.radius_m = number(o, path, "radius", 0, 1e9, "a non-negative radius");
       const double g0 = number_or(o, path, "gamma0", gamma0, 0, 1, "a gamma0 in [0, 1]");
       // Pirk eq. 4.4 unless given explicitly.
       s.translucency = translucency(o, path, cluster_translucency(s.radius_m, g0));
@@ -164,10 +165,10 @@ class Reader {
                  {"type", "from", "to", "height", "thickness", "base", "translucency", "solid"});
       const Eigen::Vector2d from = vec<2>(o, path, "from");
       const Eigen::Vector2d to = vec<2>(o, path, "to");
-      const double height = number(o, path, "height", 0, 1e300, "a non-negative height");
+      const double height = number(o, path, "height", 0, 1e9, "a non-negative height");
       const double thickness =
-          number_or(o, path, "thickness", 0.2, 0, 1e300, "a non-negative thickness");
-      const double base = number_or(o, path, "base", 0.0, -1e300, 1e300, "a base height");
+          number_or(o, path, "thickness", 0.2, 0, 1e9, "a non-negative thickness");
+      const double base = number_or(o, path, "base", 0.0, -1e9, 1e9, "a base height within 1e9");
       Box b = Box::wall(from, to, base, height, thickness);
       b.translucency = translucency(o, path, 0.0);
       b.solid = boolean_or(o, path, "solid", true);
@@ -176,7 +177,7 @@ class Reader {
       check_keys(o, path, {"type", "z", "translucency", "solid"});
       if (scene.ground) fail(path, "at most one ground plane");
       Ground g;
-      g.height_m = number_or(o, path, "z", 0.0, -1e300, 1e300, "a height");
+      g.height_m = number_or(o, path, "z", 0.0, -1e9, 1e9, "a height within 1e9");
       g.translucency = translucency(o, path, 0.0);
       g.solid = boolean_or(o, path, "solid", true);
       scene.ground = g;
@@ -246,6 +247,9 @@ Scene parse_scene_json(std::string_view text, const std::string& file_name) {
     throw ParseError(
         "expected valid JSON (" + (pos == std::string::npos ? what : what.substr(pos)) + ")",
         file_name, line, column);
+  } catch (const json::exception& e) {
+    // Out-of-range numbers and the like, which nlohmann reports without a position.
+    throw ParseError(std::string("expected valid JSON (") + e.what() + ")", file_name);
   }
   Reader r(file_name);
   if (!doc.is_object()) r.fail("", "a JSON object with sky and occluders", &doc);

@@ -5,6 +5,9 @@
 #include <cmath>
 #include <vector>
 
+#include "lsystem/derivation.hpp"
+#include "lsystem/parser.hpp"
+
 namespace fspm::environment {
 namespace {
 
@@ -27,6 +30,39 @@ TEST(LightEnvironment, AnswersCommunicationModules) {
   EXPECT_EQ(q[1].parameters[0], 1.0);
   EXPECT_EQ(q[2].parameters[4], 1.0);
   EXPECT_EQ(q[2].parameters[0], 0.0);  // inside an opaque box every ray is blocked
+}
+
+}  // namespace
+}  // namespace fspm::environment
+
+namespace fspm::environment {
+namespace {
+
+// An open L-system whose apex carries ?E grows under an opaque sphere (radius 1.5, centre at
+// height 6): after three steps the apex is at height 3, where the closed form gives
+// light = cos^3(alpha) with sin(alpha) = 1.5 / 3.
+TEST(LightEnvironment, DrivesAnOpenLsystem) {
+  const lsystem::LSystem sys = lsystem::parse_lsystem("Axiom: A?E(0,0,0,0,0)\nA --> F(1)A\n");
+  Scene s;
+  s.spheres.push_back({{0, 0, 6}, 1.5, 0.0, false});
+  LightEnvironment env(s);
+  lsystem::DeriveOptions o;
+  o.steps = 3;
+  o.environment = &env;
+  const lsystem::ModuleString str = lsystem::derive(sys, o);
+  const int e = sys.symbols.find("?E");
+  ASSERT_GE(e, 0);
+  bool found = false;
+  for (std::size_t i = 0; i < str.size(); ++i) {
+    if (static_cast<int>(str.symbol(i)) != e) continue;
+    found = true;
+    const auto p = str.parameters(i);
+    ASSERT_EQ(p.size(), 5u);
+    EXPECT_NEAR(p[0], std::pow(std::sqrt(0.75), 3), 1e-12);
+    EXPECT_NEAR(p[3], 1.0, 1e-12);
+    EXPECT_EQ(p[4], 0.0);
+  }
+  EXPECT_TRUE(found);
 }
 
 }  // namespace
