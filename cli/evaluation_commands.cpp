@@ -1,5 +1,7 @@
 // fspm distance | stats: compare trees (constrained edit distance) and groups of measurements
 // (t-tests, Mann-Whitney U).
+#include <spdlog/spdlog.h>
+
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <iostream>
@@ -70,6 +72,12 @@ void run_distance(const DistanceOptions& o) {
   EditDistanceOptions opt;
   opt.cost = edit_cost_kind_from_name(o.cost);
   opt.attributes = o.attributes;
+  if (opt.cost == EditCostKind::kTopological && !o.attributes.empty()) {
+    spdlog::warn(
+        "--attr is ignored by the topological cost model (use --cost absolute or "
+        "standardized)");
+    opt.attributes.clear();
+  }
   // Newick carries one number per node, the attribute "label": the natural default there.
   if (opt.attributes.empty() && opt.cost != EditCostKind::kTopological && newick_a && newick_b) {
     opt.attributes = {std::string(kNewickLabel)};
