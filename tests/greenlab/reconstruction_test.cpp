@@ -225,3 +225,46 @@ TEST(Reconstruction, HugePlantsFailCleanly) {
 
 }  // namespace
 }  // namespace fspm::greenlab
+
+namespace fspm::greenlab {
+namespace {
+
+TEST(Reconstruction, Gl1VolumesGiveLengthsAndRadii) {
+  const CompressedTreeGraph g = simulate_compressed(testing::example("gl1_plant.toml"));
+  const TreeGraph t = reconstruct(g, {});
+  // The trunk's metamers are records 0.. along the successor chain, and the tree's trunk nodes
+  // come first, each followed by its leaf while the leaf lives (life span 4 of 12 cycles).
+  RecordId rec = g.root();
+  NodeId node = 0;
+  int checked = 0;
+  while (rec != kNoRecord) {
+    const CompressedRecord& r = g.record(rec);
+    ASSERT_EQ(t.kind(node), OrganKind::kInternode);
+    ASSERT_EQ(t.order(node), 0u);
+    const InternodeDimensions d = internode_dimensions(r.pith_volume, r.ring_volume, 5.0, 1.0);
+    EXPECT_NEAR(t.length(node), d.length, 1e-12);
+    EXPECT_NEAR(t.radius(node), d.radius, 1e-12);
+    // Volume of the internode cylinder = pith + rings (density 1: volumes are masses).
+    EXPECT_NEAR(std::numbers::pi * t.radius(node) * t.radius(node) * t.length(node),
+                r.pith_volume + r.ring_volume, 1e-9);
+    ++checked;
+    NodeId next = kNoNode;
+    for (NodeId c : t.children(node)) {
+      if (t.kind(c) == OrganKind::kLeaf) {
+        // Leaf length = sqrt(area), area = volume / thickness.
+        EXPECT_NEAR(t.length(c), std::sqrt(r.leaf_volume / 0.01), 1e-12);
+      } else if (t.order(c) == 0) {
+        next = c;
+      }
+    }
+    rec = r.successor;
+    if (rec != kNoRecord) {
+      ASSERT_NE(next, kNoNode);
+      node = next;
+    }
+  }
+  EXPECT_EQ(checked, 12);
+}
+
+}  // namespace
+}  // namespace fspm::greenlab
