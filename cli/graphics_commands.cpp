@@ -35,8 +35,16 @@ struct MeshCommand {
   std::vector<double> ages;
   double edge_length_m = 0.01;
   int max_sides = 16;
+  std::string junctions = "separate";
+  bool reynolds_width = false;
   bool json = false;
 };
+
+graphics::JunctionMode junction_mode(const std::string& name) {
+  if (name == "separate") return graphics::JunctionMode::kSeparate;
+  if (name == "continuous") return graphics::JunctionMode::kContinuous;
+  throw ValueError("unknown junction mode '" + name + "' (expected separate or continuous)");
+}
 
 struct RenderCommand {
   std::string tree;
@@ -76,6 +84,8 @@ void run_mesh(const MeshCommand& c) {
   options.leaves = c.leaves;
   options.edge_length_m = c.edge_length_m;
   options.max_sides = c.max_sides;
+  options.junctions = junction_mode(c.junctions);
+  options.reynolds_width = c.reynolds_width;
   nlohmann::json j = {{"file", c.tree}, {"output", c.out}};
   std::size_t vertices = 0, triangles = 0;
   if (format == graphics::MeshFormat::kPvd) {
@@ -253,6 +263,12 @@ void add_graphics_commands(CLI::App& app) {
                 "Target ring edge length in m (ring resolution from radius)")
       ->check(CLI::PositiveNumber);
   m->add_option("--max-sides", mesh->max_sides, "Most sides of a ring")->check(CLI::Range(3, 256));
+  m->add_option("--junctions", mesh->junctions,
+                "separate (a closed tube per chain) or continuous (Reynolds: one surface through "
+                "branch points, bone weights per vertex)")
+      ->capture_default_str();
+  m->add_flag("--reynolds-width", mesh->reynolds_width,
+              "Continuous mode: radius along each axis from Reynolds' expression 1");
   m->add_flag("--json", mesh->json, "Machine-readable JSON on stdout");
   m->callback([mesh] { run_mesh(*mesh); });
 

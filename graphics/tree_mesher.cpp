@@ -120,6 +120,7 @@ Plan make_plan(const TreeGraph& tree, const MeshOptions& options) {
   plan.segments.reserve(total);
   plan.chains.reserve(node_chains.size());
   const int leaf_segs = leaf_segments(options);
+  if (!options.bark) node_chains.clear();
   for (const auto& c : node_chains) {
     ChainPlan cp;
     cp.first = plan.segments.size();
@@ -234,10 +235,17 @@ int sides_for_radius(double radius_m, const MeshOptions& options, double distanc
 }
 
 MeshCounts count_mesh(const TreeGraph& tree, const MeshOptions& options) {
+  if (options.junctions == JunctionMode::kContinuous) {
+    const TriangleMesh mesh = mesh_tree_continuous(tree, options);
+    return {mesh.vertex_count(), mesh.triangle_count(), 0,
+            mesh.triangle_count(Material::kLeaf) /
+                (2 * static_cast<std::size_t>(leaf_segments(options)))};
+  }
   return make_plan(tree, options).counts;
 }
 
 TriangleMesh mesh_tree(const TreeGraph& tree, const MeshOptions& options) {
+  if (options.junctions == JunctionMode::kContinuous) return mesh_tree_continuous(tree, options);
   const Plan plan = make_plan(tree, options);
   TriangleMesh mesh;
   mesh.positions.resize(plan.counts.vertices);

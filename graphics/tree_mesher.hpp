@@ -13,7 +13,22 @@
 
 namespace fspm::graphics {
 
+// How tubes meet at branch points.
+//   kSeparate: one closed tube per chain (Pirk 6.1.3), children start with their own cap.
+//   kContinuous: after Reynolds 3.2, one tube per axis running through its branch points; where a
+//     lateral axis starts, a knuckle ring is added on the parent at the lateral's width and the
+//     lateral grows out of the quad it leaves open, sharing its four vertices, so the bark is one
+//     closed surface. Vertices carry the two nearest bones (node ids) and their weights as the
+//     attributes bone0, bone1, weight0, weight1. Laterals whose quad is taken, that leave at a
+//     shallow angle or that hang from an axis tip fall back to separate tubes.
+enum class JunctionMode { kSeparate, kContinuous };
+
 struct MeshOptions {
+  JunctionMode junctions = JunctionMode::kSeparate;
+  // Radius along each axis from Reynolds' expression 1, (1 / (3 t + 1) - 0.25) / 0.75 times the
+  // axis' root radius, t the fraction of the axis length, instead of the node radii
+  // (continuous mode only).
+  bool reynolds_width = false;
   // Ring resolution from radius: sides = ceil(2 pi r / edge_length_m), clamped to
   // [min_sides, max_sides]. One resolution per chain, taken from its base radius.
   double edge_length_m = 0.01;
@@ -28,6 +43,7 @@ struct MeshOptions {
   // Close every tube with a cap at its base and its tip.
   bool caps = true;
 
+  bool bark = true;  // internode tubes (false: leaves only)
   bool leaves = false;
   double leaf_width_ratio = 0.5;  // leaf blade width / leaf length
   // Droop of the blade tip as a fraction of its length (0 = flat quad).
@@ -57,6 +73,9 @@ int sides_for_radius(double radius_m, const MeshOptions& options, double distanc
 
 // What mesh_tree will produce, without building it. Throws ValueError for bad options.
 MeshCounts count_mesh(const TreeGraph& tree, const MeshOptions& options = {});
+
+// Throws ValueError for bad options or more than 2^32 vertices.
+TriangleMesh mesh_tree_continuous(const TreeGraph& tree, const MeshOptions& options);
 
 // Throws ValueError for bad options or more than 2^32 vertices.
 TriangleMesh mesh_tree(const TreeGraph& tree, const MeshOptions& options = {});
