@@ -56,5 +56,5 @@ if [ -f build/python/fspm/__init__.py ]; then
   done
 fi
 
-echo "== CTest (main build)"
-ctest --test-dir build --output-on-failure -j "$jobs"
+echo "== CTest (main build, under Xvfb so renders and the viewer are tested)"
+xvfb-run -a -s "-screen 0 1280x1024x24" ctest --test-dir build --output-on-failure -j "$jobs"
