@@ -1,0 +1,146 @@
+#include "experiments/report.hpp"
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "experiments/metrics.hpp"
+#include "fspm/number_text.hpp"
+
+namespace fspm::experiments {
+namespace {
+
+// Mean and sample standard deviation (n - 1) by Welford's update (Knuth TAOCP vol. 2, 4.2.2).
+struct Moments {
+  std::size_t n = 0;
+  double mean = 0.0;
+  double m2 = 0.0;
+  void add(double x) {
+    ++n;
+    const double d = x - mean;
+    mean += d / static_cast<double>(n);
+    m2 += d * (x - mean);
+  }
+  double sd() const { return n > 1 ? std::sqrt(m2 / static_cast<double>(n - 1)) : 0.0; }
+};
+
+std::string number(double v) {
+  if (!std::isfinite(v)) return "-";
+  // Four significant digits are plenty in a table; the database keeps the exact values.
+  std::ostringstream out;
+  out.precision(4);
+  out << v;
+  return out.str();
+}
+
+std::string cell(const Moments& m) {
+  if (m.n == 0) return "-";
+  return m.n > 1 ? number(m.mean) + " ± " + number(m.sd()) : number(m.mean);
+}
+
+std::string unit_of(const std::string& metric) {
+  const MetricInfo* info = find_metric(metric);
+  return info == nullptr ? std::string() : " (" + std::string(info->unit) + ")";
+}
+
+std::string escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '|')
+      out += "\\|";
+    else if (c == '\n')
+      out += ' ';
+    else
+      out += c;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string markdown_report(const ExperimentInfo& info, const std::vector<RunRecord>& runs) {
+  std::ostringstream md;
+  std::size_t ok = 0;
+  std::size_t error = 0;
+  std::size_t timeout = 0;
+  for (const RunRecord& r : runs) {
+    ok += r.status == RunStatus::kOk;
+    error += r.status == RunStatus::kError;
+    timeout += r.status == RunStatus::kTimeout;
+  }
+  md << "# Experiment " << info.name << "\n\n";
+  md << "Experiment file: `" << info.experiment_path << "`\n\n";
+  md << "| runs | recorded | ok | error | timeout | missing |\n|---|---|---|---|---|---|\n";
+  md << "| " << info.total_runs << " | " << runs.size() << " | " << ok << " | " << error << " | "
+     << timeout << " | " << info.total_runs - std::min(info.total_runs, runs.size()) << " |\n\n";
+
+  // Per point: the swept values and the moments of every metric over successful replicates.
+  struct Point {
+    std::map<std::string, std::string> values;
+    std::map<std::string, Moments> metrics;
+    std::size_t runs = 0;
+  };
+  std::map<std::size_t, Point> points;
+  std::map<std::string, std::map<std::string, std::map<std::string, Moments>>> marginal;
+  for (const RunRecord& r : runs) {
+    Point& p = points[r.point];
+    ++p.runs;
+    for (const std::string& name : info.swept) {
+      const auto it = r.parameters.find(name);
+      p.values[name] = it == r.parameters.end() ? "-" : parameter_text(it->second);
+    }
+    if (r.status != RunStatus::kOk) continue;
+    for (const std::string& metric : info.metrics) {
+      const auto it = r.metrics.find(metric);
+      if (it == r.metrics.end() || !std::isfinite(it->second)) continue;
+      p.metrics[metric].add(it->second);
+      for (const std::string& name : info.swept)
+        marginal[name][p.values[name]][metric].add(it->second);
+    }
+  }
+
+  md << "## Metrics per parameter point\n\nMean ± sample standard deviation over the successful "
+        "replicates of each point.\n\n| point | runs |";
+  for (const std::string& name : info.swept) md << ' ' << escape(name) << " |";
+  for (const std::string& metric : info.metrics) md << ' ' << metric << unit_of(metric) << " |";
+  md << "\n|---|---|";
+  for (std::size_t i = 0; i < info.swept.size() + info.metrics.size(); ++i) md << "---|";
+  md << '\n';
+  for (const auto& [index, p] : points) {
+    md << "| " << index << " | " << p.runs << " |";
+    for (const std::string& name : info.swept) md << ' ' << escape(p.values.at(name)) << " |";
+    for (const std::string& metric : info.metrics) {
+      const auto it = p.metrics.find(metric);
+      md << ' ' << (it == p.metrics.end() ? "-" : cell(it->second)) << " |";
+    }
+    md << '\n';
+  }
+
+  for (const std::string& name : info.swept) {
+    md << "\n## Marginal means over `" << escape(name) << "`\n\n| " << escape(name) << " |";
+    for (const std::string& metric : info.metrics) md << ' ' << metric << " |";
+    md << "\n|---|";
+    for (std::size_t i = 0; i < info.metrics.size(); ++i) md << "---|";
+    md << '\n';
+    for (const auto& [value, by_metric] : marginal[name]) {
+      md << "| " << escape(value) << " |";
+      for (const std::string& metric : info.metrics) {
+        const auto it = by_metric.find(metric);
+        md << ' ' << (it == by_metric.end() ? "-" : cell(it->second)) << " |";
+      }
+      md << '\n';
+    }
+  }
+
+  if (error + timeout > 0) {
+    md << "\n## Failed runs\n\n| run | status | error |\n|---|---|---|\n";
+    for (const RunRecord& r : runs) {
+      if (r.status == RunStatus::kOk) continue;
+      md << "| " << r.run << " | " << run_status_name(r.status) << " | " << escape(r.error)
+         << " |\n";
+    }
+  }
+  return md.str();
+}
+
+}  // namespace fspm::experiments
