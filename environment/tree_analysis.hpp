@@ -1,0 +1,83 @@
+#pragma once
+// Analysis of a tree "grown in the open" for plastic adaptation (Pirk 4.3): the main skeleton is
+// split from the fine branches by a thickness threshold, the fine parts become leaf clusters
+// (Pirk eq. 4.4 translucency), internode length by mean-shift over the distances between nearest
+// branching nodes, growth rates (eq. 4.1) and branch ages (eq. 4.2), the inverse tropism of every
+// skeleton segment (eq. 4.8-4.10) and the minimum pruning factors (eq. 4.11-4.12).
+//
+// Simplification (documented in docs/environment.md): the light of earlier growth stages (eq. 4.5)
+// is not reconstructed; every local pruning factor psi_s and every tropism uses the light of the
+// final stage, i.e. min over t of psi_s(t) is taken over that one stage.
+#include <Eigen/Core>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "environment/occluders.hpp"
+#include "fspm/tree_graph.hpp"
+
+namespace fspm::environment {
+
+inline constexpr std::uint32_t kNoCluster = std::numeric_limits<std::uint32_t>::max();
+
+struct AnalysisParams {
+  // Internodes at least this thick belong to the skeleton; <= 0 picks 2.5 times the thinnest
+  // internode radius (with the pipe model that is a branch carrying about ten tips).
+  double skeleton_radius_m = 0.0;
+  double min_cluster_radius_m = 0.3;
+  double gamma0 = 0.5;                 // Pirk eq. 4.4
+  double pruning_strength = 0.8;       // c_psi, Pirk eq. 4.12
+  double reference_percentile = 0.05;  // psi_ref, Pirk 4.3.4
+  // Tropism weights w_tau of eq. 4.6-4.7 (Pirk exposes them as user parameters; defaults: type A).
+  double phototropism = 0.25;
+  double gravitropism = 0.12;
+  Eigen::Vector3d gravity_direction = -Eigen::Vector3d::UnitZ();
+  int light_directions = 64;
+};
+
+struct LeafCluster {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  double radius_m = 0.0;
+  double translucency = 1.0;  // gamma0 ^ radius (eq. 4.4)
+  NodeId anchor = kNoNode;    // the skeleton node the fine subtree hangs from
+  std::vector<NodeId> nodes;  // member nodes (the fine subtree)
+};
+
+struct TreeAnalysis {
+  AnalysisParams params;
+  double skeleton_radius_m = 0.0;
+  double internode_length_m = 0.0;        // l_i, mean-shift mode
+  double height_path_m = 0.0;             // d_r: path length root -> furthest tip
+  std::vector<std::uint8_t> skeleton;     // per node: 1 skeleton, 0 fine part
+  std::vector<std::uint32_t> cluster_of;  // per node: cluster index or kNoCluster
+  std::vector<LeafCluster> clusters;
+  std::vector<double> growth_rate;  // absolute nu_s (eq. 4.1, nu_hat / nu_hat_min)
+  std::vector<int> age;             // season the segment was created, 0 = oldest (eq. 4.2)
+  int max_age = 0;
+  std::vector<double> cluster_light;       // i_c at analysis time
+  std::vector<double> pruning_factor;      // psi_s at analysis time (0 for fine nodes)
+  std::vector<double> min_pruning_factor;  // psi_s_min (eq. 4.12)
+  double reference_pruning_factor = 0.0;   // psi_ref
+  std::vector<double> tropism_weight;      // w_s (eq. 4.7)
+  std::vector<Eigen::Vector3d> tropism;    // t at analysis time (unit weighted mean, eq. 4.6)
+  std::vector<Eigen::Vector3d> original_direction;  // d_o (eq. 4.8-4.10)
+};
+
+// One-dimensional mean-shift with a flat kernel of half-width `bandwidth` started from every
+// sample; returns the mode that attracts the most samples (ties: the smaller). Empty -> 0.
+double mean_shift_mode(std::vector<double> samples, double bandwidth);
+
+// Inverse tropism (Pirk eq. 4.8-4.10): the unit d_o with h on the line of w_s d_o + (1 - w_s) t,
+// the largest root of eq. 4.10, or the closest point when it has none.
+Eigen::Vector3d inverse_tropism(const Eigen::Vector3d& h, const Eigen::Vector3d& t, double w_s);
+
+// Translucency, light, tropisms and pruning of the tree alone in an open scene with the sky's
+// brightest point `brightest`. Deterministic. Throws ValueError for an empty tree or invalid
+// parameters.
+TreeAnalysis analyze_tree(const TreeGraph& tree, const AnalysisParams& params = {},
+                          const Eigen::Vector3d& brightest = Eigen::Vector3d::UnitZ());
+
+// The analysis' clusters as light-model spheres (non-solid).
+std::vector<Sphere> cluster_spheres(const std::vector<LeafCluster>& clusters);
+
+}  // namespace fspm::environment

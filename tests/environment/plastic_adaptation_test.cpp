@@ -1,0 +1,160 @@
+#include "environment/plastic_adaptation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "environment/growth_model.hpp"
+#include "environment/tree_analysis.hpp"
+#include "fspm/error.hpp"
+
+namespace fspm::environment {
+namespace {
+
+const GrowthResult& grown_a() {
+  static const GrowthResult r = [] {
+    GrowthParams p = growth_preset("A");
+    p.years = 12;
+    return grow_tree(p);
+  }();
+  return r;
+}
+
+TEST(PlasticAnalysis, MeanShiftFindsTheDensestMode) {
+  // 10 samples near 1, 4 near 2, one outlier: the mode is the mean of the first group.
+  std::vector<double> s = {0.98, 0.99, 1.0, 1.0,  1.0,  1.01, 1.02, 0.97,
+                           1.03, 1.0,  2.0, 2.01, 1.99, 2.0,  7.0};
+  EXPECT_NEAR(mean_shift_mode(s, 0.2), 1.0, 1e-9);
+  EXPECT_EQ(mean_shift_mode({}, 0.1), 0.0);
+}
+
+TEST(PlasticAnalysis, InverseTropismUndoesEquation46) {
+  // Closed form: h = w d_o + (1 - w) t, so inverting h must give d_o back.
+  const Eigen::Vector3d d_o = Eigen::Vector3d(1, 0.2, 0.5).normalized();
+  const Eigen::Vector3d t = Eigen::Vector3d(0, 0, 1);
+  for (const double w : {0.3, 0.63, 0.9}) {
+    const Eigen::Vector3d h = w * d_o + (1 - w) * t;
+    // The length of h is unknown to the inversion (eq. 4.8 line parameter).
+    const Eigen::Vector3d back = inverse_tropism(2.5 * h, t, w);
+    EXPECT_NEAR((back - d_o).norm(), 0.0, 1e-12) << w;
+  }
+  // No solution of eq. 4.10 (h pointing away from t with a weak w_s): the closest-point fallback
+  // still returns a unit vector.
+  const Eigen::Vector3d fallback = inverse_tropism(Eigen::Vector3d(0, 0, -1), t, 0.2);
+  EXPECT_NEAR(fallback.norm(), 1.0, 1e-12);
+}
+
+TEST(PlasticAnalysis, InternodeLengthMatchesTheGrowthModel) {
+  const GrowthResult& g = grown_a();
+  const TreeAnalysis a = analyze_tree(g.tree);
+  // The growth model makes every internode growth_preset("A").internode_length_m long.
+  EXPECT_NEAR(a.internode_length_m, growth_preset("A").internode_length_m, 0.015);
+  EXPECT_FALSE(a.clusters.empty());
+  std::size_t skeleton = 0;
+  for (const auto s : a.skeleton) skeleton += s;
+  EXPECT_GT(skeleton, 10u);
+  EXPECT_LT(skeleton, g.tree.size());
+  for (const LeafCluster& c : a.clusters) {
+    EXPECT_NEAR(c.translucency, std::pow(0.5, c.radius_m), 1e-12);  // eq. 4.4
+    EXPECT_FALSE(c.nodes.empty());
+    EXPECT_TRUE(a.skeleton[c.anchor]);
+  }
+  // Eq. 4.12: every threshold is c_psi times at most psi_ref, and at most c_psi psi_s.
+  for (NodeId i = 0; i < g.tree.size(); ++i) {
+    if (!a.skeleton[i]) continue;
+    EXPECT_LE(a.min_pruning_factor[i], 0.8 * a.reference_pruning_factor + 1e-15);
+    EXPECT_LE(a.min_pruning_factor[i], 0.8 * a.pruning_factor[i] + 1e-15);
+  }
+}
+
+TEST(PlasticAnalysis, AgesFollowTheGrowthHistory) {
+  // Estimated ages (eq. 4.1-4.2) against the year the growth model created each internode:
+  // ages never decrease from parent to child and correlate with the true birth year.
+  const GrowthResult& g = grown_a();
+  const TreeAnalysis a = analyze_tree(g.tree);
+  double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
+  double count = 0;
+  for (NodeId i = 1; i < g.tree.size(); ++i) {
+    EXPECT_GE(a.age[i], a.age[g.tree.parent(i)]);
+    if (g.tree.kind(i) != OrganKind::kInternode) continue;
+    const double x = a.age[i], y = g.tree.birth_time(i);
+    sx += x, sy += y, sxx += x * x, syy += y * y, sxy += x * y, count += 1;
+  }
+  const double cov = sxy / count - sx * sy / count / count;
+  const double corr = cov / std::sqrt((sxx / count - sx * sx / count / count) *
+                                      (syy / count - sy * sy / count / count));
+  std::printf("age levels %d, correlation with birth year %.3f\n", a.max_age + 1, corr);
+  EXPECT_GT(a.max_age, 2);
+  EXPECT_GT(corr, 0.5);
+}
+
+TEST(PlasticAnalysis, IsDeterministic) {
+  const GrowthResult& g = grown_a();
+  const TreeAnalysis a = analyze_tree(g.tree);
+  const TreeAnalysis b = analyze_tree(g.tree);
+  EXPECT_EQ(a.age, b.age);
+  EXPECT_EQ(a.skeleton, b.skeleton);
+  EXPECT_EQ(a.min_pruning_factor, b.min_pruning_factor);
+  ASSERT_EQ(a.clusters.size(), b.clusters.size());
+  for (std::size_t c = 0; c < a.clusters.size(); ++c) {
+    EXPECT_EQ(a.clusters[c].center, b.clusters[c].center);
+    EXPECT_EQ(a.clusters[c].nodes, b.clusters[c].nodes);
+  }
+}
+
+TEST(PlasticAnalysis, RejectsBadInput) {
+  EXPECT_THROW(analyze_tree(TreeGraph{}), ValueError);
+  AnalysisParams p;
+  p.phototropism = 0.7;
+  p.gravitropism = 0.4;
+  EXPECT_THROW(analyze_tree(grown_a().tree, p), ValueError);
+  const TreeAnalysis a = analyze_tree(grown_a().tree);
+  TreeGraph other;
+  other.add_node(kNoNode, {});
+  EXPECT_THROW(adapt_tree(other, a, Scene{}), ValueError);
+}
+
+TEST(PlasticAdaptation, EmptySceneLeavesTheTreeUnchanged) {
+  const GrowthResult& g = grown_a();
+  const TreeAnalysis a = analyze_tree(g.tree);
+  const AdaptationResult r = adapt_tree(g.tree, a, Scene{});
+  EXPECT_EQ(r.pruned_nodes, 0u);
+  ASSERT_EQ(r.tree.size(), g.tree.size());
+  double worst = 0;
+  for (NodeId i = 0; i < g.tree.size(); ++i) {
+    worst = std::max(worst, (r.tree.end(i) - g.tree.end(i)).norm());
+  }
+  EXPECT_LT(worst, 1e-9);
+  EXPECT_LT(r.mean_tip_displacement_m, 1e-9);
+}
+
+TEST(PlasticAdaptation, WallBendsTipsAwayAndPrunesItsShadow) {
+  const GrowthResult& g = grown_a();
+  const TreeAnalysis a = analyze_tree(g.tree);
+  Scene scene;
+  // An opaque wall 1.5 m east of the trunk, taller than the tree.
+  scene.boxes.push_back(Box::wall({1.5, -20}, {1.5, 20}, 0.0, 3.0 * g.height_m + 5.0, 0.2));
+  const AdaptationResult r = adapt_tree(g.tree, a, scene);
+  std::printf(
+      "nodes %zu pruned %zu bent %zu tips %zu mean tip displacement %.3f m shift "
+      "(%.3f, %.3f, %.3f)\n",
+      r.tree.size(), r.pruned_nodes, r.bent_segments, r.tips, r.mean_tip_displacement_m,
+      r.mean_tip_shift.x(), r.mean_tip_shift.y(), r.mean_tip_shift.z());
+  EXPECT_LT(r.mean_tip_shift.x(), -0.01);  // away from the wall, on average
+  EXPECT_GT(r.mean_tip_displacement_m, 0.01);
+  ASSERT_GT(r.pruned_nodes, 0u);
+  // The pruned branches sit on the wall's (shaded) side of the tree.
+  const auto pruned = r.tree.attribute("pruned");
+  double pruned_x = 0, all_x = 0, np = 0, na = 0;
+  for (NodeId i = 0; i < g.tree.size(); ++i) {
+    if (g.tree.kind(i) != OrganKind::kInternode) continue;
+    all_x += g.tree.end(i).x(), na += 1;
+    if (pruned[i] != 0.0) pruned_x += g.tree.end(i).x(), np += 1;
+  }
+  EXPECT_GT(pruned_x / np, all_x / na);
+  const TreeGraph kept = remove_pruned(r.tree);
+  EXPECT_EQ(kept.size(), r.tree.size() - r.pruned_nodes);
+}
+
+}  // namespace
+}  // namespace fspm::environment
