@@ -158,11 +158,14 @@ LightModel::LightModel(const Scene& scene) : scene_(scene), dirs_(scene.sky.dire
   auto cell_range = [&](std::size_t i, Eigen::Vector3i& c0, Eigen::Vector3i& c1) {
     Eigen::Vector3d a, z;
     volume_box(i, a, z);
+    // Clamped as doubles before the cast: a far-away bound would overflow int.
+    auto cell_of = [&](double x, int k) {
+      const double c = std::floor((x - grid_lo_[k]) / cell_);
+      return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(grid_n_[k] - 1)));
+    };
     for (int k = 0; k < 3; ++k) {
-      c0[k] =
-          std::clamp(static_cast<int>(std::floor((a[k] - grid_lo_[k]) / cell_)), 0, grid_n_[k] - 1);
-      c1[k] =
-          std::clamp(static_cast<int>(std::floor((z[k] - grid_lo_[k]) / cell_)), 0, grid_n_[k] - 1);
+      c0[k] = cell_of(a[k], k);
+      c1[k] = cell_of(z[k], k);
     }
   };
   const std::size_t cells = static_cast<std::size_t>(grid_n_.prod());
@@ -211,10 +214,14 @@ LightSample LightModel::evaluate(const Eigen::Vector3d& p, std::uint32_t ignore)
   std::span<const std::uint32_t> candidates = all_spheres_;
   if (grid_n_.x() > 0) {
     const Eigen::Vector3d u = (p - grid_lo_) / cell_;
-    const int x = static_cast<int>(std::floor(u.x()));
-    const int y = static_cast<int>(std::floor(u.y()));
-    const int z = static_cast<int>(std::floor(u.z()));
-    if (x >= 0 && y >= 0 && z >= 0 && x < grid_n_.x() && y < grid_n_.y() && z < grid_n_.z()) {
+    // Test the range in floating point first: casting a far-away (or NaN) coordinate to int is
+    // undefined behaviour.
+    const bool inside = u.x() >= 0.0 && u.y() >= 0.0 && u.z() >= 0.0 && u.x() < grid_n_.x() &&
+                        u.y() < grid_n_.y() && u.z() < grid_n_.z();
+    if (inside) {
+      const int x = static_cast<int>(u.x());
+      const int y = static_cast<int>(u.y());
+      const int z = static_cast<int>(u.z());
       const std::size_t id = (static_cast<std::size_t>(z) * grid_n_.y() + y) * grid_n_.x() + x;
       candidates = std::span<const std::uint32_t>(cell_items_.data() + cell_start_[id],
                                                   cell_start_[id + 1] - cell_start_[id]);
