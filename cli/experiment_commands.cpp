@@ -17,6 +17,7 @@
 #include "experiments/experiment.hpp"
 #include "experiments/model_factory.hpp"
 #include "experiments/mpi_runner.hpp"
+#include "experiments/report.hpp"
 #include "experiments/results_export.hpp"
 #include "experiments/run_plan.hpp"
 #include "experiments/runner.hpp"
@@ -63,6 +64,11 @@ struct ExportOptions {
 struct ShowOptions {
   std::string dir;
   bool json = false;
+};
+
+struct ReportOptions {
+  std::string dir;
+  std::string output;
 };
 
 struct MergeOptions {
@@ -199,6 +205,14 @@ void show_command(const ShowOptions& o) {
                        : ex::results_summary_text(db.info(), runs));
 }
 
+void report_command(const ReportOptions& o) {
+  const ex::ResultsDb db(o.dir, ex::ResultsDb::Mode::kRead);
+  const std::string md = ex::markdown_report(db.info(), db.read_all());
+  const std::string path = o.output.empty() ? (fs::path(o.dir) / "report.md").string() : o.output;
+  write_file_atomically(path, [&](std::ostream& out) { out << md; });
+  std::cout << path << '\n';
+}
+
 void merge_command(const MergeOptions& o) {
   const ex::MergeSummary m = ex::merge_results(o.out, o.inputs);
   if (o.json) {
@@ -232,6 +246,12 @@ void add_experiment_commands(CLI::App& app) {
   r->add_option("--slurm-file", run->slurm_file, "--emit-slurm: script path (default NAME.slurm)");
   r->add_option("--slurm-time", run->slurm_time, "--emit-slurm: time limit of one task");
   r->callback([run] { run_command(*run); });
+
+  auto report = std::make_shared<ReportOptions>();
+  CLI::App* rep = app.add_subcommand("report", "Write DIR/report.md: tables of a sweep's results");
+  rep->add_option("DIR", report->dir, "Output directory of fspm run")->required();
+  rep->add_option("-o,--output", report->output, "Report path (default DIR/report.md)");
+  rep->callback([report] { report_command(*report); });
 
   CLI::App* results = app.add_subcommand("results", "Export, summarize and merge sweep results");
   results->require_subcommand(1);

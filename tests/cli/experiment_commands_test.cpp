@@ -52,6 +52,12 @@ TEST(ExperimentCommands, ExampleSweepExportsOneCsvRowPerRun) {
   const CommandResult show = run_fspm("results show " + (dir / "out").string());
   EXPECT_EQ(show.exit_code, 0);
   EXPECT_NE(show.out.find("36 ok"), std::string::npos) << show.out;
+  const CommandResult report = run_fspm("report " + (dir / "out").string());
+  ASSERT_EQ(report.exit_code, 0) << report.err;
+  std::ifstream md(dir / "out" / "report.md");
+  const std::string md_text((std::istreambuf_iterator<char>(md)), {});
+  EXPECT_NE(md_text.find("# Experiment branching"), std::string::npos);
+  EXPECT_NE(md_text.find("## Marginal means over `define.a0`"), std::string::npos);
   // A second run into the same directory is refused, the database kept.
   const CommandResult again = run_fspm("run " + example + " --out " + (dir / "out").string());
   EXPECT_EQ(again.exit_code, 1);
