@@ -96,10 +96,11 @@ TEST(Runner, KillNineAtRandomPointsThenResumeLosesAndDuplicatesNothing) {
   const auto dir = testing::scratch("kill");
   const fs::path out = dir / "out";
   const Experiment x =
-      synthetic("[parameters]\nsleep_ms = 2\n[sweep]\n\"x.i\" = { range = [0, 150] }\n", 2);
+      synthetic("[parameters]\nsleep_ms = 5\n[sweep]\n\"x.i\" = { range = [0, 150] }\n", 2);
   std::mt19937_64 rng(2024);
   std::size_t kills = 0;
-  for (int attempt = 0; attempt < 6; ++attempt) {
+  // 300 runs of 5 ms on 2 threads need at least 750 ms; the attempts last at most 500 ms.
+  for (int attempt = 0; attempt < 5; ++attempt) {
     const pid_t child = ::fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
@@ -110,7 +111,7 @@ TEST(Runner, KillNineAtRandomPointsThenResumeLosesAndDuplicatesNothing) {
       }
       ::_exit(0);
     }
-    const int delay_ms = std::uniform_int_distribution<int>(5, 120)(rng);
+    const int delay_ms = std::uniform_int_distribution<int>(5, 100)(rng);
     std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
     if (::kill(child, SIGKILL) == 0) ++kills;
     int status = 0;
