@@ -17,6 +17,7 @@ echo "== parameter sweep: Honda's monopodial tree (ABOP fig. 2.6), 36 runs"
 $fspm run examples/experiments/branching.toml --out "$out/branching" --jobs "$(nproc)"
 $fspm results show "$out/branching"
 $fspm results export "$out/branching" --csv -o "$out/branching/results.csv"
+$fspm report "$out/branching"
 
 echo "== an L-system tree"
 $fspm lsystem interpret examples/lsystems/monopodial_tree.l -o "$out/monopodial.tree"
@@ -33,4 +34,4 @@ echo "== a mesh for ParaView or Blender"
 $fspm mesh "$out/monopodial.tree" -o "$out/monopodial.glb" --json
 
 echo
-echo "demo output is in $(pwd)/$out (sweep results: $out/branching/results.csv)"
+echo "demo output is in $(pwd)/$out (sweep: $out/branching/results.csv and $out/branching/report.md)"
