@@ -13,5 +13,6 @@ void add_lsystem_commands(CLI::App& app);
 void add_graphics_commands(CLI::App& app);
 void add_greenlab_commands(CLI::App& app);
 void add_evaluation_commands(CLI::App& app);
+void add_adapt_commands(CLI::App& app);
 
 }  // namespace fspm::cli

@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   fspm::cli::add_graphics_commands(app);
   fspm::cli::add_greenlab_commands(app);
   fspm::cli::add_evaluation_commands(app);
+  fspm::cli::add_adapt_commands(app);
 
   try {
     app.parse(argc, argv);

@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <optional>
 
 #include "environment/light_model.hpp"
 #include "fspm/error.hpp"
@@ -59,6 +60,7 @@ AdaptationResult adapt_tree(const TreeGraph& tree, const TreeAnalysis& a, const 
 
   Scene world = scene;
   world.sky.directions = a.params.light_directions;
+  world.sky.significance = a.params.light_significance;
   const std::size_t obstacle_spheres = world.spheres.size();
   const auto rebuild_light = [&] {
     world.spheres.resize(obstacle_spheres);
@@ -97,24 +99,45 @@ AdaptationResult adapt_tree(const TreeGraph& tree, const TreeAnalysis& a, const 
   const double wg = a.params.gravitropism;
   const double w_sum = wp + wg;
   const Eigen::Vector3d g = a.params.gravity_direction.normalized();
-  std::vector<double> zeta(n), length_below(n);
+  std::vector<double> zeta(n), length_below(n), cluster_zeta(clusters.size(), 0.0);
+  // The light is rebuilt only after something moved or was pruned ("work only on the parts the
+  // change affects", Pirk 4.4, at the granularity of whole levels).
+  std::optional<LightModel> light;
+  bool stale = true;
+  const auto refresh = [&] {
+    if (!stale) return;
+    light.emplace(rebuild_light());
+    std::uint32_t sphere = static_cast<std::uint32_t>(obstacle_spheres);
+    for (std::size_t c = 0; c < clusters.size(); ++c) {
+      if (!alive[c]) {
+        cluster_zeta[c] = 0.0;
+        continue;
+      }
+      const double i_c = light->evaluate(clusters[c].center, sphere++).light;
+      const double rc = clusters[c].radius_m;
+      cluster_zeta[c] = 2.0 * M_PI * rc * rc * i_c;  // Pirk eq. 4.11
+    }
+    stale = false;
+  };
   for (std::size_t level = 0; level < by_age.size(); ++level) {
-    if (w_sum > 0.0) {
-      const LightModel light = rebuild_light();
+    bool moved = false;
+    if (w_sum > 0.0 && !by_age[level].empty()) {
+      refresh();
       for (const NodeId s : by_age[level]) {
         if (pruned[s]) continue;
         // Pirk eq. 4.6 in the frame the segment has been carried into by its ancestors: the old
         // heading (analysis tropism) and the new one (light direction here and now).
         const double ws = a.tropism_weight[s];
         const Eigen::Vector3d d_o = acc[s] * a.original_direction[s];
-        const Eigen::Vector3d v = light.evaluate(t.start(s)).direction;
+        const Eigen::Vector3d v = light->evaluate(t.start(s)).direction;
         const Eigen::Vector3d t_new = (wp * v + wg * g) / w_sum;
         const Eigen::Vector3d h_old = ws * d_o + (1.0 - ws) * (acc[s] * a.tropism[s]);
         const Eigen::Vector3d h_new = ws * d_o + (1.0 - ws) * t_new;
         if (h_old.norm() < 1e-12 || h_new.norm() < 1e-12) continue;
         const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(h_old, h_new);
-        if (std::abs(q.w()) > 1.0 - 1e-18 && q.vec().norm() < 1e-9) continue;
+        if (q.vec().norm() < 1e-9) continue;
         ++r.bent_segments;
+        moved = true;
         const Eigen::Vector3d pivot = t.start(s);
         const Eigen::Matrix3d rot = q.toRotationMatrix();
         for (std::uint32_t k = pos[s]; k < pos[s] + size[s]; ++k) {
@@ -128,20 +151,17 @@ AdaptationResult adapt_tree(const TreeGraph& tree, const TreeAnalysis& a, const 
         }
       }
     }
-    update_clusters();
+    if (moved) {
+      update_clusters();
+      stale = true;
+    }
 
     // Pruning after the level (Pirk 4.4.1): resources of eq. 4.11 over the remaining length.
-    const LightModel light = rebuild_light();
+    refresh();
     std::fill(zeta.begin(), zeta.end(), 0.0);
     std::fill(length_below.begin(), length_below.end(), 0.0);
-    {
-      std::uint32_t sphere = static_cast<std::uint32_t>(obstacle_spheres);
-      for (std::size_t c = 0; c < clusters.size(); ++c) {
-        if (!alive[c]) continue;
-        const double i_c = light.evaluate(clusters[c].center, sphere++).light;
-        const double rc = clusters[c].radius_m;
-        zeta[clusters[c].anchor] += 2.0 * M_PI * rc * rc * i_c;
-      }
+    for (std::size_t c = 0; c < clusters.size(); ++c) {
+      if (alive[c]) zeta[clusters[c].anchor] += cluster_zeta[c];
     }
     for (NodeId i = static_cast<NodeId>(n); i-- > 0;) {
       if (!a.skeleton[i] || pruned[i]) continue;
@@ -159,7 +179,10 @@ AdaptationResult adapt_tree(const TreeGraph& tree, const TreeAnalysis& a, const 
       for (std::uint32_t k = pos[s]; k < pos[s] + size[s]; ++k) pruned[order[k]] = 1;
       any = true;
     }
-    if (any) update_clusters();
+    if (any) {
+      update_clusters();
+      stale = true;
+    }
   }
 
   t.add_attribute("displacement", 0.0);

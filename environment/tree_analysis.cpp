@@ -106,6 +106,9 @@ TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
   if (!(params.gamma0 > 0.0 && params.gamma0 <= 1.0)) {
     throw ValueError("plastic analysis: gamma0 must be in (0, 1]");
   }
+  if (params.light_directions < 1 || !(params.light_significance > 0.0)) {
+    throw ValueError("plastic analysis: light_directions must be >= 1, light_significance > 0");
+  }
   if (!(params.pruning_strength >= 0.0)) {
     throw ValueError("plastic analysis: pruning_strength (c_psi) must be >= 0");
   }
@@ -215,6 +218,7 @@ TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
   Scene scene;
   scene.sky.brightest = brightest.normalized();
   scene.sky.directions = params.light_directions;
+  scene.sky.significance = params.light_significance;
   scene.spheres = cluster_spheres(a.clusters);
   const LightModel light(scene);
   a.cluster_light.resize(a.clusters.size());

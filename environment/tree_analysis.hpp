@@ -32,7 +32,9 @@ struct AnalysisParams {
   double phototropism = 0.25;
   double gravitropism = 0.12;
   Eigen::Vector3d gravity_direction = -Eigen::Vector3d::UnitZ();
+  // Light as in the growth model: few directions, a coarse shadow-volume cutoff (see Sky).
   int light_directions = 64;
+  double light_significance = 0.01;
 };
 
 struct LeafCluster {

@@ -154,6 +154,32 @@ TEST(PlasticAdaptation, WallBendsTipsAwayAndPrunesItsShadow) {
   EXPECT_GT(pruned_x / np, all_x / na);
   const TreeGraph kept = remove_pruned(r.tree);
   EXPECT_EQ(kept.size(), r.tree.size() - r.pruned_nodes);
+
+  // Regrowing beside the same wall (Pirk's set G) also loses most of the east side; the adapted
+  // tree keeps a comparable share of its internodes (reported, loosely bounded).
+  GrowthParams p = growth_preset("A");
+  p.years = 12;
+  const GrowthResult regrown = grow_tree(p, scene);
+  std::size_t kept_internodes = 0;
+  double regrown_x = 0;
+  for (NodeId i = 0; i < kept.size(); ++i) kept_internodes += kept.kind(i) == OrganKind::kInternode;
+  for (NodeId i = 0; i < regrown.tree.size(); ++i) regrown_x += regrown.tree.end(i).x();
+  std::printf("open %zu internodes, adapted %zu, regrown beside the wall %zu (mean x %.3f)\n",
+              g.internodes, kept_internodes, regrown.internodes,
+              regrown_x / static_cast<double>(regrown.tree.size()));
+}
+
+TEST(PlasticAdaptation, GlobalLightMovesTipsTowardTheNewBrightestPoint) {
+  // Grown under a zenith sky, adapted under a sky whose brightest point is low in the west.
+  const GrowthResult& g = grown_a();
+  const TreeAnalysis a = analyze_tree(g.tree, {}, Eigen::Vector3d::UnitZ());
+  Scene scene;
+  scene.sky.brightest = Eigen::Vector3d(-1.0, 0.0, 0.5).normalized();
+  const AdaptationResult r = adapt_tree(g.tree, a, scene);
+  std::printf("global light: mean tip shift (%.3f, %.3f, %.3f), pruned %zu\n", r.mean_tip_shift.x(),
+              r.mean_tip_shift.y(), r.mean_tip_shift.z(), r.pruned_nodes);
+  EXPECT_LT(r.mean_tip_shift.x(), -0.01);
+  EXPECT_LT(std::abs(r.mean_tip_shift.y()), std::abs(r.mean_tip_shift.x()));
 }
 
 }  // namespace

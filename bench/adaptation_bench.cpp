@@ -1,0 +1,73 @@
+// Plastic adaptation (Pirk 4.4) of preset-A trees of 10, 20 and 30 years (about 530, 2 500 and
+// 9 100 nodes; Pirk Table 4.2: 3.82 ms, 50.5 ms and 222.8 ms) beside a wall 3 m away; goal < 5 ms
+// for the largest on one core. The counter regrow_ratio is the time to regrow the same tree beside
+// the wall with the growth model divided by the adaptation time (goal >= 1000; Pirk about 280).
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <map>
+
+#include "environment/growth_model.hpp"
+#include "environment/plastic_adaptation.hpp"
+#include "environment/tree_analysis.hpp"
+
+namespace {
+
+using namespace fspm::environment;
+
+struct Case {
+  GrowthResult open;
+  TreeAnalysis analysis;
+  Scene wall;
+  double regrow_seconds = 0.0;
+  std::size_t regrown_nodes = 0;
+};
+
+const Case& case_for(int years) {
+  static std::map<int, Case> cases;
+  auto it = cases.find(years);
+  if (it != cases.end()) return it->second;
+  Case c;
+  GrowthParams p = growth_preset("A");
+  p.years = years;
+  c.open = grow_tree(p);
+  c.analysis = analyze_tree(c.open.tree);
+  c.wall.boxes.push_back(Box::wall({3.0, -30}, {3.0, 30}, 0.0, c.open.height_m + 2.0, 0.2));
+  const auto t0 = std::chrono::steady_clock::now();
+  const GrowthResult regrown = grow_tree(p, c.wall);
+  c.regrow_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  c.regrown_nodes = regrown.tree.size();
+  return cases.emplace(years, std::move(c)).first->second;
+}
+
+void BM_AdaptBesideWall(benchmark::State& state) {
+  const Case& c = case_for(static_cast<int>(state.range(0)));
+  std::size_t pruned = 0;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (auto _ : state) {
+    const AdaptationResult r = adapt_tree(c.open.tree, c.analysis, c.wall);
+    pruned = r.pruned_nodes;
+    benchmark::DoNotOptimize(r.tree.size());
+  }
+  const double per_run =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() /
+      static_cast<double>(state.iterations());
+  state.counters["nodes"] = static_cast<double>(c.open.tree.size());
+  state.counters["pruned"] = static_cast<double>(pruned);
+  state.counters["regrow_ms"] = 1e3 * c.regrow_seconds;
+  state.counters["regrown_nodes"] = static_cast<double>(c.regrown_nodes);
+  state.counters["regrow_ratio"] = c.regrow_seconds / per_run;
+}
+BENCHMARK(BM_AdaptBesideWall)->Arg(10)->Arg(20)->Arg(30)->Unit(benchmark::kMillisecond);
+
+void BM_Analyse(benchmark::State& state) {
+  const Case& c = case_for(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    const TreeAnalysis a = analyze_tree(c.open.tree);
+    benchmark::DoNotOptimize(a.clusters.size());
+  }
+  state.counters["nodes"] = static_cast<double>(c.open.tree.size());
+}
+BENCHMARK(BM_Analyse)->Arg(10)->Arg(20)->Arg(30)->Unit(benchmark::kMillisecond);
+
+}  // namespace

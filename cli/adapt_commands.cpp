@@ -1,0 +1,128 @@
+// fspm adapt: plastic trees (Pirk 4.3-4.4). Each tree is analysed as grown in the open, then bent
+// and pruned for the scene; the output carries per-node "displacement" and "pruned".
+#include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
+#include "environment/plastic_adaptation.hpp"
+#include "environment/scene_file.hpp"
+#include "environment/tree_analysis.hpp"
+#include "fspm/error.hpp"
+#include "fspm/tree_file.hpp"
+
+namespace fspm::cli {
+namespace {
+
+struct AdaptOptions {
+  std::vector<std::string> trees;
+  std::string scene;
+  std::string out;
+  std::string format;
+  double skeleton_radius_m = 0.0;
+  double pruning_strength = 0.8;
+  double phototropism = 0.25;
+  double gravitropism = 0.12;
+  std::vector<double> grown_brightest;
+  bool remove = false;
+  bool json = false;
+};
+
+void run_adapt(const AdaptOptions& o) {
+  const environment::Scene scene = environment::read_scene_file(o.scene);
+  environment::AnalysisParams params;
+  params.skeleton_radius_m = o.skeleton_radius_m;
+  params.pruning_strength = o.pruning_strength;
+  params.phototropism = o.phototropism;
+  params.gravitropism = o.gravitropism;
+  Eigen::Vector3d grown_brightest = scene.sky.brightest;
+  if (!o.grown_brightest.empty()) {
+    grown_brightest = {o.grown_brightest[0], o.grown_brightest[1], o.grown_brightest[2]};
+    if (grown_brightest.z() <= 0.0) {
+      throw ValueError("--grown-brightest: expected a direction above the horizon (z > 0)");
+    }
+    grown_brightest.normalize();
+  }
+  const bool many = o.trees.size() > 1;
+  std::vector<std::string> outputs;
+  if (many) {
+    std::error_code ec;
+    std::filesystem::create_directories(o.out, ec);
+    if (ec) throw IoError("cannot create output directory: " + ec.message(), o.out);
+    for (const std::string& in : o.trees) {
+      std::filesystem::path name = std::filesystem::path(in).filename();
+      if (!o.format.empty()) name.replace_extension(o.format == "newick" ? "nwk" : o.format);
+      outputs.push_back((std::filesystem::path(o.out) / name).string());
+    }
+  } else {
+    outputs.push_back(o.out);
+  }
+  for (const std::string& out : outputs) tree_format_for(out, o.format);  // fail early
+
+  nlohmann::json results = nlohmann::json::array();
+  for (std::size_t k = 0; k < o.trees.size(); ++k) {
+    const TreeGraph tree = read_tree_file(o.trees[k]);
+    const auto t0 = std::chrono::steady_clock::now();
+    // The open-sky analysis uses the sky the tree grew under (default: the scene's), so a moved
+    // brightest point is a global light change (Pirk 4.4.3).
+    const environment::TreeAnalysis analysis =
+        environment::analyze_tree(tree, params, grown_brightest);
+    const auto t1 = std::chrono::steady_clock::now();
+    environment::AdaptationResult r = environment::adapt_tree(tree, analysis, scene);
+    const auto t2 = std::chrono::steady_clock::now();
+    const TreeGraph& written = o.remove ? environment::remove_pruned(r.tree) : r.tree;
+    write_tree_file(written, outputs[k], o.format);
+    const double seconds = std::chrono::duration<double>(t2 - t1).count();
+    const double analysis_seconds = std::chrono::duration<double>(t1 - t0).count();
+    results.push_back(
+        {{"input", o.trees[k]},
+         {"output", outputs[k]},
+         {"nodes", tree.size()},
+         {"pruned_nodes", r.pruned_nodes},
+         {"mean_tip_displacement", r.mean_tip_displacement_m},
+         {"mean_tip_shift", {r.mean_tip_shift.x(), r.mean_tip_shift.y(), r.mean_tip_shift.z()}},
+         {"seconds", seconds},
+         {"analysis_seconds", analysis_seconds}});
+    spdlog::info(
+        "{}: {} nodes, {} pruned, mean tip displacement {:.3f} m, adapted in {:.4f} s "
+        "(analysis {:.4f} s) -> {}",
+        o.trees[k], tree.size(), r.pruned_nodes, r.mean_tip_displacement_m, seconds,
+        analysis_seconds, outputs[k]);
+  }
+  if (o.json) print_json(many ? results : results.front());
+}
+
+}  // namespace
+
+void add_adapt_commands(CLI::App& app) {
+  auto opt = std::make_shared<AdaptOptions>();
+  CLI::App* a = app.add_subcommand(
+      "adapt", "Plastic trees (Pirk 4.3-4.4): bend and prune trees grown in the open for a scene");
+  a->add_option("TREE", opt->trees, "Input tree files (grown without obstacles)")->required();
+  a->add_option("--scene", opt->scene, "Scene file (JSON, see docs/environment.md)")->required();
+  a->add_option("-o,--output", opt->out,
+                "Output tree file, or a directory when several trees are given")
+      ->required();
+  a->add_option("--format", opt->format, "Output format (default: from the extension)");
+  a->add_option("--skeleton-radius", opt->skeleton_radius_m,
+                "Skeleton thickness threshold in m (default: 2.5 x thinnest internode)");
+  a->add_option("--pruning-strength", opt->pruning_strength, "c_psi of Pirk eq. 4.12")
+      ->capture_default_str();
+  a->add_option("--phototropism", opt->phototropism, "Phototropism weight (eq. 4.6)")
+      ->capture_default_str();
+  a->add_option("--gravitropism", opt->gravitropism, "Gravitropism weight (eq. 4.6)")
+      ->capture_default_str();
+  a->add_option("--grown-brightest", opt->grown_brightest,
+                "Brightest sky direction x y z the trees grew under (default: the scene's)")
+      ->expected(3);
+  a->add_flag("--remove-pruned", opt->remove, "Drop pruned nodes instead of flagging them");
+  a->add_flag("--json", opt->json, "Machine-readable JSON on stdout");
+  a->callback([opt] { run_adapt(*opt); });
+}
+
+}  // namespace fspm::cli
