@@ -30,6 +30,7 @@ struct AdaptOptions {
   double gravitropism = 0.12;
   std::vector<double> grown_brightest;
   bool remove = false;
+  bool together = false;
   bool json = false;
 };
 
@@ -64,35 +65,64 @@ void run_adapt(const AdaptOptions& o) {
   }
   for (const std::string& out : outputs) tree_format_for(out, o.format);  // fail early
 
-  nlohmann::json results = nlohmann::json::array();
-  for (std::size_t k = 0; k < o.trees.size(); ++k) {
-    const TreeGraph tree = read_tree_file(o.trees[k]);
+  std::vector<TreeGraph> trees;
+  for (const std::string& in : o.trees) trees.push_back(read_tree_file(in));
+  std::vector<environment::TreeAnalysis> analyses;
+  std::vector<double> analysis_seconds;
+  for (const TreeGraph& tree : trees) {
     const auto t0 = std::chrono::steady_clock::now();
     // The open-sky analysis uses the sky the tree grew under (default: the scene's), so a moved
     // brightest point is a global light change (Pirk 4.4.3).
-    const environment::TreeAnalysis analysis =
-        environment::analyze_tree(tree, params, grown_brightest);
-    const auto t1 = std::chrono::steady_clock::now();
-    environment::AdaptationResult r = environment::adapt_tree(tree, analysis, scene);
-    const auto t2 = std::chrono::steady_clock::now();
-    const TreeGraph& written = o.remove ? environment::remove_pruned(r.tree) : r.tree;
-    write_tree_file(written, outputs[k], o.format);
-    const double seconds = std::chrono::duration<double>(t2 - t1).count();
-    const double analysis_seconds = std::chrono::duration<double>(t1 - t0).count();
+    analyses.push_back(environment::analyze_tree(tree, params, grown_brightest));
+    analysis_seconds.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::vector<environment::AdaptationResult> adapted;
+  std::vector<double> seconds;
+  if (o.together) {
+    // Tree-tree interaction (simplified, see environment/plastic_adaptation.hpp).
+    std::vector<const TreeGraph*> tp;
+    std::vector<const environment::TreeAnalysis*> ap;
+    for (std::size_t k = 0; k < trees.size(); ++k) {
+      tp.push_back(&trees[k]);
+      ap.push_back(&analyses[k]);
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    adapted = environment::adapt_trees(tp, ap, scene);
+    const double total =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    seconds.assign(trees.size(), total / static_cast<double>(trees.size()));
+  } else {
+    for (std::size_t k = 0; k < trees.size(); ++k) {
+      const auto t0 = std::chrono::steady_clock::now();
+      adapted.push_back(environment::adapt_tree(trees[k], analyses[k], scene));
+      seconds.push_back(
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    }
+  }
+
+  nlohmann::json results = nlohmann::json::array();
+  for (std::size_t k = 0; k < trees.size(); ++k) {
+    const environment::AdaptationResult& r = adapted[k];
+    if (o.remove) {
+      write_tree_file(environment::remove_pruned(r.tree), outputs[k], o.format);
+    } else {
+      write_tree_file(r.tree, outputs[k], o.format);
+    }
     results.push_back(
         {{"input", o.trees[k]},
          {"output", outputs[k]},
-         {"nodes", tree.size()},
+         {"nodes", trees[k].size()},
          {"pruned_nodes", r.pruned_nodes},
          {"mean_tip_displacement", r.mean_tip_displacement_m},
          {"mean_tip_shift", {r.mean_tip_shift.x(), r.mean_tip_shift.y(), r.mean_tip_shift.z()}},
-         {"seconds", seconds},
-         {"analysis_seconds", analysis_seconds}});
+         {"seconds", seconds[k]},
+         {"analysis_seconds", analysis_seconds[k]}});
     spdlog::info(
         "{}: {} nodes, {} pruned, mean tip displacement {:.3f} m, adapted in {:.4f} s "
         "(analysis {:.4f} s) -> {}",
-        o.trees[k], tree.size(), r.pruned_nodes, r.mean_tip_displacement_m, seconds,
-        analysis_seconds, outputs[k]);
+        o.trees[k], trees[k].size(), r.pruned_nodes, r.mean_tip_displacement_m, seconds[k],
+        analysis_seconds[k], outputs[k]);
   }
   if (o.json) print_json(many ? results : results.front());
 }
@@ -120,6 +150,8 @@ void add_adapt_commands(CLI::App& app) {
   a->add_option("--grown-brightest", opt->grown_brightest,
                 "Brightest sky direction x y z the trees grew under (default: the scene's)")
       ->expected(3);
+  a->add_flag("--together", opt->together,
+              "Trees shade each other (world coordinates; neighbours' clusters kept static)");
   a->add_flag("--remove-pruned", opt->remove, "Drop pruned nodes instead of flagging them");
   a->add_flag("--json", opt->json, "Machine-readable JSON on stdout");
   a->callback([opt] { run_adapt(*opt); });

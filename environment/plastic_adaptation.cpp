@@ -212,6 +212,25 @@ AdaptationResult adapt_tree(const TreeGraph& tree, const TreeAnalysis& a, const 
   return r;
 }
 
+std::vector<AdaptationResult> adapt_trees(const std::vector<const TreeGraph*>& trees,
+                                          const std::vector<const TreeAnalysis*>& analyses,
+                                          const Scene& scene) {
+  if (trees.size() != analyses.size()) {
+    throw ValueError("plastic adaptation: one analysis per tree expected");
+  }
+  std::vector<AdaptationResult> out;
+  out.reserve(trees.size());
+  for (std::size_t i = 0; i < trees.size(); ++i) {
+    Scene shared = scene;
+    for (std::size_t j = 0; j < trees.size(); ++j) {
+      if (j == i) continue;
+      for (const Sphere& s : cluster_spheres(analyses[j]->clusters)) shared.spheres.push_back(s);
+    }
+    out.push_back(adapt_tree(*trees[i], *analyses[i], shared));
+  }
+  return out;
+}
+
 TreeGraph remove_pruned(const TreeGraph& adapted) {
   TreeGraph out = adapted;
   if (!out.has_attribute("pruned")) return out;

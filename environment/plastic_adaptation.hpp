@@ -9,6 +9,7 @@
 // subtree. Pruned clusters lose translucency by eq. 4.14 or vanish.
 #include <Eigen/Core>
 #include <cstddef>
+#include <vector>
 
 #include "environment/scene.hpp"
 #include "environment/tree_analysis.hpp"
@@ -33,6 +34,15 @@ struct AdaptationResult {
 // analysis does not match the tree.
 AdaptationResult adapt_tree(const TreeGraph& tree, const TreeAnalysis& analysis,
                             const Scene& scene);
+
+// Tree-tree interaction, simplified: each tree is adapted with the other trees' analysed leaf
+// clusters (at their input positions, non-solid) added to the scene, so facing sides shade each
+// other. Unlike Pirk 4.4.3 the neighbours are not adapted in lock-step (their clusters do not
+// move or vanish during the run). Trees are given in world coordinates. Throws ValueError when
+// the sizes differ.
+std::vector<AdaptationResult> adapt_trees(const std::vector<const TreeGraph*>& trees,
+                                          const std::vector<const TreeAnalysis*>& analyses,
+                                          const Scene& scene);
 
 // Removes the nodes flagged "pruned"; returns the compacted tree.
 TreeGraph remove_pruned(const TreeGraph& adapted);

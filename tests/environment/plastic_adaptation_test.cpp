@@ -182,5 +182,49 @@ TEST(PlasticAdaptation, GlobalLightMovesTipsTowardTheNewBrightestPoint) {
   EXPECT_LT(std::abs(r.mean_tip_shift.y()), std::abs(r.mean_tip_shift.x()));
 }
 
+TreeGraph translated(const TreeGraph& tree, const Eigen::Vector3d& offset) {
+  TreeGraph t = tree;
+  for (NodeId i = 0; i < t.size(); ++i) {
+    const double len = t.length(i);
+    const Eigen::Vector3d dir = t.direction(i);
+    t.set_segment(i, t.start(i) + offset, t.end(i) + offset);
+    t.set_length(i, len);
+    t.set_direction(i, dir);
+  }
+  return t;
+}
+
+TEST(PlasticAdaptation, TwoTreesSideBySideLeanApart) {
+  const GrowthResult& g = grown_a();
+  const TreeGraph west = translated(g.tree, {-1.2, 0, 0});
+  const TreeGraph east = translated(g.tree, {1.2, 0, 0});
+  const TreeAnalysis aw = analyze_tree(west);
+  const TreeAnalysis ae = analyze_tree(east);
+  const std::vector<AdaptationResult> r = adapt_trees({&west, &east}, {&aw, &ae}, Scene{});
+  ASSERT_EQ(r.size(), 2u);
+  std::printf("side by side: west pruned %zu shift x %.3f, east pruned %zu shift x %.3f\n",
+              r[0].pruned_nodes, r[0].mean_tip_shift.x(), r[1].pruned_nodes,
+              r[1].mean_tip_shift.x());
+  EXPECT_LT(r[0].mean_tip_shift.x(), 0.0);  // away from the neighbour
+  EXPECT_GT(r[1].mean_tip_shift.x(), 0.0);
+  const auto facing_share = [](const TreeGraph& input, const AdaptationResult& res, double centre_x,
+                               double toward) {
+    const auto pruned = res.tree.attribute("pruned");
+    double facing = 0, all = 0;
+    for (NodeId i = 0; i < input.size(); ++i) {
+      if (pruned[i] == 0.0) continue;
+      all += 1;
+      if ((input.end(i).x() - centre_x) * toward > 0) facing += 1;
+    }
+    return all > 0 ? facing / all : 0.0;
+  };
+  // Pirk's "facing sides are pruned" is NOT reproduced by this simplified interaction (static
+  // neighbour clusters): the pruning that happens is mostly self-shading under the crown that
+  // leaned away. Reported, not asserted.
+  std::printf("share of pruned nodes on the facing side: west %.2f, east %.2f\n",
+              facing_share(west, r[0], -1.2, +1.0), facing_share(east, r[1], 1.2, -1.0));
+  EXPECT_THROW(adapt_trees({&west}, {}, Scene{}), ValueError);
+}
+
 }  // namespace
 }  // namespace fspm::environment
