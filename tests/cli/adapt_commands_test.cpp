@@ -1,0 +1,66 @@
+// fspm adapt, run as a user would: grow a tree, adapt it to an empty scene and beside a wall.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "fspm/tree_file.hpp"
+#include "tests/cli/run_command.hpp"
+
+namespace fspm {
+namespace {
+
+using testing::run_fspm;
+using testing::scratch_dir;
+
+TEST(AdaptCli, EmptySceneKeepsTheTreeAndAWallBendsItAway) {
+  const auto dir = scratch_dir("adapt");
+  std::ofstream(dir / "empty.json") << R"({"occluders": []})";
+  std::ofstream(dir / "wall.json")
+      << R"({"occluders": [{"type": "wall", "from": [1.5, -20], "to": [1.5, 20], "height": 20}]})";
+  const auto tree = (dir / "a.tree").string();
+  ASSERT_EQ(run_fspm("grow --preset A --years 10 -o " + tree).exit_code, 0);
+
+  const auto e = run_fspm("adapt " + tree + " --scene " + (dir / "empty.json").string() + " -o " +
+                          (dir / "e.tree").string() + " --json");
+  ASSERT_EQ(e.exit_code, 0) << e.err;
+  const auto je = nlohmann::json::parse(e.out);
+  EXPECT_EQ(je["pruned_nodes"], 0);
+  EXPECT_LT(je["mean_tip_displacement"].get<double>(), 1e-9);
+  EXPECT_EQ(je["nodes"].get<std::size_t>(), read_tree_file(tree).size());
+
+  const auto w = run_fspm("adapt " + tree + " --scene " + (dir / "wall.json").string() + " -o " +
+                          (dir / "w.tree").string() + " --json");
+  ASSERT_EQ(w.exit_code, 0) << w.err;
+  const auto jw = nlohmann::json::parse(w.out);
+  EXPECT_LT(jw["mean_tip_shift"][0].get<double>(), 0.0);
+  EXPECT_GT(jw["pruned_nodes"].get<int>(), 0);
+  EXPECT_GE(jw["seconds"].get<double>(), 0.0);
+  const TreeGraph adapted = read_tree_file((dir / "w.tree").string());
+  EXPECT_TRUE(adapted.has_attribute("displacement"));
+  EXPECT_TRUE(adapted.has_attribute("pruned"));
+
+  // Several trees: -o is a directory and the JSON is a list.
+  const auto m =
+      run_fspm("adapt " + tree + " " + tree + " --scene " + (dir / "wall.json").string() + " -o " +
+               (dir / "many").string() + " --json --remove-pruned");
+  ASSERT_EQ(m.exit_code, 0) << m.err;
+  const auto jm = nlohmann::json::parse(m.out);
+  ASSERT_TRUE(jm.is_array());
+  EXPECT_EQ(jm.size(), 2u);
+  EXPECT_EQ(read_tree_file((dir / "many" / "a.tree").string()).size(),
+            jw["nodes"].get<std::size_t>() - jw["pruned_nodes"].get<std::size_t>());
+}
+
+TEST(AdaptCli, BadSceneIsAUserError) {
+  const auto dir = scratch_dir("adapt_bad");
+  const auto tree = (dir / "a.tree").string();
+  ASSERT_EQ(run_fspm("grow --preset A --years 4 -o " + tree).exit_code, 0);
+  const auto r = run_fspm("adapt " + tree + " --scene " + (dir / "missing.json").string() + " -o " +
+                          (dir / "x.tree").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("missing.json"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace fspm
