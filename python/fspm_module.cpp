@@ -201,6 +201,93 @@ PYBIND11_MODULE(_fspm, m) {
       "Constrained edit distance (Zhang; Ferraro and Godin): topological, absolute or "
       "standardized");
 
+  py::class_<fspm::CompressedTreeGraph>(
+      m, "CompressedPlant",
+      "A GreenLab plant as a compressed tree graph: one record per substructure")
+      .def("__len__", &fspm::CompressedTreeGraph::size)
+      .def_property_readonly("graph_nodes", &fspm::CompressedTreeGraph::size)
+      .def_property_readonly("metamers", &fspm::CompressedTreeGraph::expanded_size)
+      .def(
+          "counts",
+          [](const fspm::CompressedTreeGraph& g) {
+            const fspm::greenlab::OrganCounts c = fspm::greenlab::count_organs(g);
+            py::dict d;
+            d["metamers"] = c.metamers;
+            d["leaves"] = c.leaves;
+            d["flowers"] = c.flowers;
+            d["buds"] = c.buds;
+            d["metamers_by_age"] = c.metamers_by_age;
+            return d;
+          },
+          "Organ counts of the plant the graph stands for")
+      .def(
+          "save",
+          [](const fspm::CompressedTreeGraph& g, const std::string& path) {
+            py::gil_scoped_release release;
+            fspm::write_ctree_file(g, path);
+          },
+          py::arg("path"), "Write a .ctree file (atomically)");
+
+  m.def(
+      "greenlab_simulate",
+      [](const std::string& params_path, std::optional<int> cycles,
+         std::optional<std::uint64_t> seed) {
+        py::gil_scoped_release release;
+        fspm::greenlab::PlantParams params = fspm::greenlab::read_plant_params(params_path);
+        std::mt19937_64 rng(seed.value_or(params.seed));
+        return fspm::greenlab::simulate_compressed(params, rng, cycles.value_or(-1));
+      },
+      py::arg("params"), py::arg("cycles") = py::none(), py::arg("seed") = py::none(),
+      "Simulate a GreenLab plant (TOML parameters) by substructure factorization");
+  m.def(
+      "read_plant",
+      [](const std::string& path) {
+        py::gil_scoped_release release;
+        return fspm::read_ctree_file(path);
+      },
+      py::arg("path"), "Read a .ctree compressed plant");
+  m.def(
+      "greenlab_reconstruct",
+      [](const fspm::CompressedTreeGraph& g, std::optional<double> age, bool leaves) {
+        py::gil_scoped_release release;
+        fspm::greenlab::ReconstructionOptions o;
+        o.age = age.value_or(-1.0);
+        o.leaves = leaves;
+        return fspm::greenlab::reconstruct(g, o);
+      },
+      py::arg("plant"), py::arg("age") = py::none(), py::arg("leaves") = true,
+      "The explicit tree of a GreenLab plant at any age up to the simulated one");
+
+  m.def(
+      "run_experiment",
+      [](const std::string& path, const std::string& out, std::size_t jobs, bool resume) {
+        namespace ex = fspm::experiments;
+        ex::RunnerSummary s;
+        {
+          py::gil_scoped_release release;
+          const ex::Experiment x = ex::read_experiment(path);
+          const std::unique_ptr<ex::Model> model = ex::make_model(x);
+          const ex::RunPlan plan(x);
+          ex::check_experiment(x, *model, plan);
+          ex::RunnerOptions r;
+          r.out_dir = out;
+          r.jobs = jobs;
+          r.resume = resume;
+          s = ex::run_experiment(x, *model, r);
+        }
+        py::dict d;
+        d["database"] = s.database;
+        d["total_runs"] = s.total_runs;
+        d["ran"] = s.ran;
+        d["ok"] = s.ok;
+        d["error"] = s.failed;
+        d["timeout"] = s.timed_out;
+        d["seconds"] = s.seconds;
+        return d;
+      },
+      py::arg("experiment"), py::arg("out"), py::arg("jobs") = 0, py::arg("resume") = false,
+      "Run an experiment file (TOML) into the directory `out`; read it with read_results");
+
   m.def(
       "lsystem_derive",
       [](const std::string& path, std::optional<int> steps, std::optional<std::uint64_t> seed,
