@@ -11,6 +11,10 @@
 namespace fspm::environment {
 namespace {
 
+// Clusters that moved less than this since their light was computed keep it (Pirk 4.4: work
+// only on the parts the change affects).
+constexpr double kLightTolerance_m = 0.05;
+
 bool is_internode(const TreeGraph& t, NodeId n) { return t.kind(n) == OrganKind::kInternode; }
 
 // First node of a lateral branch: a higher branching order than its parent or, for trees without
@@ -104,6 +108,9 @@ AdaptationResult adapt_tree(const TreeGraph& tree, const TreeAnalysis& a, const 
   // change affects", Pirk 4.4, at the granularity of whole levels).
   std::optional<LightModel> light;
   bool stale = true;
+  bool all_stale = true;  // after pruning every cluster's shadows changed
+  std::vector<Eigen::Vector3d> evaluated_at(clusters.size());
+  const double tolerance2 = kLightTolerance_m * kLightTolerance_m;
   const auto refresh = [&] {
     if (!stale) return;
     light.emplace(rebuild_light());
@@ -113,11 +120,16 @@ AdaptationResult adapt_tree(const TreeGraph& tree, const TreeAnalysis& a, const 
         cluster_zeta[c] = 0.0;
         continue;
       }
-      const double i_c = light->evaluate(clusters[c].center, sphere++).light;
+      const std::uint32_t own = sphere++;
+      // A cluster that barely moved since its light was last computed keeps it.
+      if (!all_stale && (clusters[c].center - evaluated_at[c]).squaredNorm() < tolerance2) continue;
+      evaluated_at[c] = clusters[c].center;
+      const double i_c = light->evaluate(clusters[c].center, own).light;
       const double rc = clusters[c].radius_m;
       cluster_zeta[c] = 2.0 * M_PI * rc * rc * i_c;  // Pirk eq. 4.11
     }
     stale = false;
+    all_stale = false;
   };
   for (std::size_t level = 0; level < by_age.size(); ++level) {
     bool moved = false;
@@ -182,6 +194,7 @@ AdaptationResult adapt_tree(const TreeGraph& tree, const TreeAnalysis& a, const 
     if (any) {
       update_clusters();
       stale = true;
+      all_stale = true;
     }
   }
 
