@@ -31,6 +31,7 @@ struct AdaptOptions {
   std::vector<double> grown_brightest;
   bool remove = false;
   bool together = false;
+  bool temporal = false;
   bool json = false;
 };
 
@@ -41,6 +42,7 @@ void run_adapt(const AdaptOptions& o) {
   params.pruning_strength = o.pruning_strength;
   params.phototropism = o.phototropism;
   params.gravitropism = o.gravitropism;
+  params.temporal_pruning = o.temporal;
   Eigen::Vector3d grown_brightest = scene.sky.brightest;
   if (!o.grown_brightest.empty()) {
     grown_brightest = {o.grown_brightest[0], o.grown_brightest[1], o.grown_brightest[2]};
@@ -150,6 +152,8 @@ void add_adapt_commands(CLI::App& app) {
   a->add_option("--grown-brightest", opt->grown_brightest,
                 "Brightest sky direction x y z the trees grew under (default: the scene's)")
       ->expected(3);
+  a->add_flag("--temporal-pruning", opt->temporal,
+              "Pruning thresholds over all earlier growth stages (eq. 4.5), not the final one");
   a->add_flag("--together", opt->together,
               "Trees shade each other (world coordinates; neighbours' clusters kept static)");
   a->add_flag("--remove-pruned", opt->remove, "Drop pruned nodes instead of flagging them");

@@ -247,6 +247,84 @@ TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
     a.pruning_factor[i] = zeta[i] / length_below[i];
     all.push_back(a.pruning_factor[i]);
   }
+  // Earlier growth stages (Pirk 4.3.2, Fig. 4.3): at stage T the segments younger than T are gone
+  // and their clusters move to the nearest remaining ancestor; clusters meeting on one node merge
+  // with the radius of eq. 4.5. Every stage's light gives psi_s(T) for the segments alive then.
+  std::vector<double> stage_min = a.pruning_factor;
+  {
+    struct StageCluster {
+      NodeId node;
+      Eigen::Vector3d center;
+      double radius_m;
+      bool moved = false;
+    };
+    std::vector<StageCluster> stage;
+    for (const LeafCluster& c : a.clusters)
+      stage.push_back({c.anchor, c.center, c.radius_m, false});
+    const Eigen::Vector3d root = t.start(0);
+    for (int T = params.temporal_pruning ? a.max_age - 1 : -1; T >= 0; --T) {
+      for (StageCluster& c : stage) {
+        c.moved = false;
+        while (c.node != 0 && a.age[c.node] > T) {
+          c.node = t.parent(c.node);
+          c.moved = true;
+        }
+      }
+      std::stable_sort(
+          stage.begin(), stage.end(),
+          [](const StageCluster& x, const StageCluster& y) { return x.node < y.node; });
+      std::vector<StageCluster> merged;
+      for (std::size_t i = 0; i < stage.size();) {
+        std::size_t j = i;
+        while (j < stage.size() && stage[j].node == stage[i].node) ++j;
+        if (j - i == 1 && !stage[i].moved) {
+          merged.push_back(stage[i]);
+        } else {
+          // Pirk eq. 4.5, read with the distance ratio per child inside the sum:
+          // r_n^3 = sum r_i^3 d_n / d_i (the printed product over all children shrinks a merged
+          // cluster below any of its parts once a few merge); centre at the node.
+          const Eigen::Vector3d centre = t.end(stage[i].node);
+          const double d_n = (centre - root).norm();
+          double volume = 0.0;
+          for (std::size_t k = i; k < j; ++k) {
+            const double d_i = (stage[k].center - root).norm();
+            const double ratio = d_i > 1e-9 ? std::min(1.0, d_n / d_i) : 1.0;
+            volume += std::pow(stage[k].radius_m, 3) * ratio;
+          }
+          merged.push_back({stage[i].node, centre, std::max(1e-3, std::cbrt(volume)), false});
+        }
+        i = j;
+      }
+      stage = std::move(merged);
+      Scene past = scene;
+      past.spheres.clear();
+      for (const StageCluster& c : stage) {
+        past.spheres.push_back(
+            {c.center, c.radius_m, cluster_translucency(c.radius_m, params.gamma0), false});
+      }
+      const LightModel past_light(past);
+      std::fill(zeta.begin(), zeta.end(), 0.0);
+      std::fill(length_below.begin(), length_below.end(), 0.0);
+      for (std::uint32_t c = 0; c < stage.size(); ++c) {
+        const double r = stage[c].radius_m;
+        zeta[stage[c].node] += 2.0 * M_PI * r * r * past_light.evaluate(stage[c].center, c).light;
+      }
+      for (NodeId i = static_cast<NodeId>(n); i-- > 0;) {
+        if (!a.skeleton[i] || a.age[i] > T) continue;
+        length_below[i] += t.length(i);
+        if (i > 0) {
+          zeta[t.parent(i)] += zeta[i];
+          length_below[t.parent(i)] += length_below[i];
+        }
+      }
+      for (NodeId i = 0; i < n; ++i) {
+        if (!a.skeleton[i] || a.age[i] > T || length_below[i] <= 0.0) continue;
+        const double psi = zeta[i] / length_below[i];
+        all.push_back(psi);
+        stage_min[i] = std::min(stage_min[i], psi);
+      }
+    }
+  }
   if (!all.empty()) {
     std::sort(all.begin(), all.end());
     const auto k =
@@ -256,9 +334,9 @@ TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
   a.min_pruning_factor.assign(n, 0.0);
   for (NodeId i = 0; i < n; ++i) {
     if (!a.skeleton[i]) continue;
-    // Pirk eq. 4.12 (one stage, see the header).
+    // Pirk eq. 4.12 over every stage.
     a.min_pruning_factor[i] =
-        params.pruning_strength * std::min(a.reference_pruning_factor, a.pruning_factor[i]);
+        params.pruning_strength * std::min(a.reference_pruning_factor, stage_min[i]);
   }
 
   // Inverse tropism per skeleton segment (eq. 4.7-4.10) with the light direction at its start.

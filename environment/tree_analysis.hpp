@@ -5,9 +5,11 @@
 // branching nodes, growth rates (eq. 4.1) and branch ages (eq. 4.2), the inverse tropism of every
 // skeleton segment (eq. 4.8-4.10) and the minimum pruning factors (eq. 4.11-4.12).
 //
-// Simplification (documented in docs/environment.md): the light of earlier growth stages (eq. 4.5)
-// is not reconstructed; every local pruning factor psi_s and every tropism uses the light of the
-// final stage, i.e. min over t of psi_s(t) is taken over that one stage.
+// Light of earlier growth stages (optional, temporal_pruning): clusters propagated toward the root
+// (eq. 4.5) give psi_s(t) at every stage t. By default only the final stage is used (see
+// docs/environment.md: with all stages the thresholds become so low that nothing is pruned).
+// The tropisms always use the light of the final stage, so an unchanged scene adapts to exactly
+// the input tree.
 #include <Eigen/Core>
 #include <cstdint>
 #include <limits>
@@ -28,6 +30,8 @@ struct AnalysisParams {
   double gamma0 = 0.5;                 // Pirk eq. 4.4
   double pruning_strength = 0.8;       // c_psi, Pirk eq. 4.12
   double reference_percentile = 0.05;  // psi_ref, Pirk 4.3.4
+  // psi_s(t) over every earlier stage (eq. 4.5 cluster propagation) instead of the final one.
+  bool temporal_pruning = false;
   // Tropism weights w_tau of eq. 4.6-4.7 (Pirk exposes them as user parameters; defaults: type A).
   double phototropism = 0.25;
   double gravitropism = 0.12;

@@ -226,5 +226,30 @@ TEST(PlasticAdaptation, TwoTreesSideBySideLeanApart) {
   EXPECT_THROW(adapt_trees({&west}, {}, Scene{}), ValueError);
 }
 
+TEST(PlasticAnalysis, TemporalStagesOnlyLowerThePruningThresholds) {
+  // Eq. 4.12 takes a minimum over stages, so adding the earlier stages (eq. 4.5) can only lower
+  // every threshold; an empty scene still leaves the tree unchanged.
+  const GrowthResult& g = grown_a();
+  AnalysisParams p;
+  const TreeAnalysis final_only = analyze_tree(g.tree, p);
+  p.temporal_pruning = true;
+  const TreeAnalysis temporal = analyze_tree(g.tree, p);
+  double ratio_sum = 0;
+  int count = 0;
+  for (NodeId i = 0; i < g.tree.size(); ++i) {
+    EXPECT_LE(temporal.min_pruning_factor[i], final_only.min_pruning_factor[i] + 1e-15);
+    if (final_only.min_pruning_factor[i] > 0) {
+      ratio_sum += temporal.min_pruning_factor[i] / final_only.min_pruning_factor[i];
+      ++count;
+    }
+  }
+  std::printf("temporal psi_ref %.4g vs final-stage %.4g, mean threshold ratio %.3f\n",
+              temporal.reference_pruning_factor, final_only.reference_pruning_factor,
+              ratio_sum / count);
+  const AdaptationResult r = adapt_tree(g.tree, temporal, Scene{});
+  EXPECT_EQ(r.pruned_nodes, 0u);
+  EXPECT_LT(r.mean_tip_displacement_m, 1e-9);
+}
+
 }  // namespace
 }  // namespace fspm::environment
