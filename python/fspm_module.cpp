@@ -32,7 +32,8 @@ using fspm::TreeGraph;
 template <typename T>
 py::array column(const std::span<const T> values, py::handle owner, std::size_t width = 1) {
   std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(values.size())};
-  std::vector<py::ssize_t> strides{static_cast<py::ssize_t>(sizeof(T) * width)};
+  // Rows are whole elements: one double, or one 24-byte Eigen::Vector3d of three doubles.
+  std::vector<py::ssize_t> strides{static_cast<py::ssize_t>(sizeof(T))};
   if (width > 1) {
     shape.push_back(static_cast<py::ssize_t>(width));
     strides.push_back(sizeof(double));

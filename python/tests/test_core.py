@@ -94,3 +94,13 @@ def test_greenlab_jaeger_figure_1(tmp_path):
     assert fspm.read_plant(str(tmp_path / "p.ctree")).metamers == 6
     with pytest.raises(fspm.Error):
         fspm.greenlab_reconstruct(plant, age=99)
+
+
+def test_geometry_columns_match_the_tree():
+    # Every internode starts where its parent ends, and the summary's height is the highest end.
+    tree = fspm.lsystem_interpret(str(ROOT / "examples/lsystems/monopodial_tree.l"), steps=4)
+    assert tree.starts.shape == tree.ends.shape == (len(tree), 3)
+    child = np.arange(1, len(tree))
+    np.testing.assert_allclose(tree.starts[child], tree.ends[tree.parents[child]], atol=1e-9)
+    assert tree.ends[:, 2].max() - tree.starts[0, 2] == pytest.approx(tree.summary()["height"])
+    np.testing.assert_allclose(np.linalg.norm(tree.directions, axis=1), 1.0, atol=1e-9)
