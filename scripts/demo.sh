@@ -24,9 +24,9 @@ $fspm lsystem interpret examples/lsystems/monopodial_tree.l -o "$out/monopodial.
 $fspm tree info "$out/monopodial.tree"
 $fspm tree convert "$out/monopodial.tree" "$out/monopodial.mtg"
 
-echo "== a GreenLab plant (Jaeger's Leeuwenberg example) reconstructed at ages 5, 10, 15"
+echo "== a GreenLab plant (Jaeger's Leeuwenberg example) reconstructed at ages 2, 4 and 6"
 $fspm greenlab simulate examples/greenlab/leeuwenberg.toml -o "$out/leeuwenberg.ctree" --json
-for age in 5 10 15; do
+for age in 2 4 6; do
   $fspm greenlab reconstruct "$out/leeuwenberg.ctree" --age "$age" -o "$out/leeuwenberg-$age.tree" --json
 done
 
