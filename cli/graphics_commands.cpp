@@ -186,10 +186,11 @@ void run_render(const RenderCommand& c) {
 
 // Every tree meshed at every age, placed side by side along x with a gap of a tenth of the
 // widest tree.
-std::vector<graphics::TriangleMesh> view_steps(const ViewCommand& c, std::vector<double>& ages) {
+std::vector<graphics::TriangleMesh> view_steps(const ViewCommand& c, std::vector<double>& ages,
+                                               const graphics::MeshOptions& resolution) {
   std::vector<TreeGraph> trees;
   for (const auto& path : c.trees) trees.push_back(read_tree_file(path, c.format));
-  graphics::MeshOptions options;
+  graphics::MeshOptions options = resolution;
   options.leaves = c.leaves;
   if (ages.empty()) ages.push_back(std::numeric_limits<double>::infinity());
   std::sort(ages.begin(), ages.end());
@@ -228,12 +229,19 @@ void run_view(const ViewCommand& c) {
   options.shadows = !c.no_shadows;
   if (!c.screenshot.empty()) graphics::check_image_path(c.screenshot);
   std::vector<double> ages = c.ages;
-  const std::vector<graphics::TriangleMesh> steps = view_steps(c, ages);
+  const std::vector<graphics::TriangleMesh> steps = view_steps(c, ages, {});
+  // Far level of detail: rings four times coarser, at most six sides.
+  graphics::MeshOptions coarse;
+  coarse.edge_length_m *= 4.0;
+  coarse.max_sides = 6;
+  coarse.min_sides = 3;
+  std::vector<double> same_ages = ages;
+  const std::vector<graphics::TriangleMesh> far = view_steps(c, same_ages, coarse);
   if (!c.color_by.empty()) {
     for (const auto& m : steps) (void)m.attribute(c.color_by);
   }
   if (!c.screenshot.empty()) rerun_under_xvfb_if_needed();
-  const graphics::ViewerStats stats = graphics::run_viewer(steps, ages, options);
+  const graphics::ViewerStats stats = graphics::run_viewer(steps, ages, options, far);
   if (c.json) {
     print_json({{"frames", stats.frames},
                 {"mean_frame_ms", stats.mean_frame_ms},

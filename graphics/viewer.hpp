@@ -19,6 +19,9 @@ struct ViewerOptions {
   std::string screenshot;  // non-empty: render `frames` frames hidden, write this image, return
   int frames = 1;          // frames before the screenshot
   bool shadows = true;
+  // Distance-based level of detail: beyond this multiple of the starting camera distance the
+  // coarse meshes (when given) are drawn instead.
+  double lod_distance_factor = 1.5;
 };
 
 struct ViewerStats {
@@ -30,10 +33,12 @@ struct ViewerStats {
 // True when fspm was built with the viewer (FSPM_WITH_VIEWER).
 bool viewer_available();
 
-// `steps` are the growth steps (one mesh each; one step for a still tree), `labels` their ages.
+// `steps` are the growth steps (one mesh each; one step for a still tree), `labels` their ages,
+// `coarse_steps` (empty, or one per step) lower-resolution meshes for distant views.
 // Throws ValueError for an unknown colour attribute or no steps, IoError when no OpenGL 3.3
 // window can be opened.
 ViewerStats run_viewer(const std::vector<TriangleMesh>& steps, const std::vector<double>& labels,
-                       const ViewerOptions& options);
+                       const ViewerOptions& options,
+                       const std::vector<TriangleMesh>& coarse_steps = {});
 
 }  // namespace fspm::graphics

@@ -277,8 +277,11 @@ struct GlfwSession {
 bool viewer_available() { return true; }
 
 ViewerStats run_viewer(const std::vector<TriangleMesh>& steps, const std::vector<double>& labels,
-                       const ViewerOptions& o) {
+                       const ViewerOptions& o, const std::vector<TriangleMesh>& coarse_steps) {
   if (steps.empty()) throw ValueError("nothing to view");
+  if (!coarse_steps.empty() && coarse_steps.size() != steps.size()) {
+    throw ValueError("coarse meshes must match the growth steps one to one");
+  }
   if (!o.color_by.empty()) {
     for (const auto& m : steps) (void)m.attribute(o.color_by);
   }
@@ -334,6 +337,8 @@ ViewerStats run_viewer(const std::vector<TriangleMesh>& steps, const std::vector
   const GLuint scene_program = program(kSceneVs, kSceneFs);
   std::vector<GpuStep> gpu;
   for (const auto& m : steps) gpu.push_back(upload(m, o, value_lo, value_hi, scene));
+  std::vector<GpuStep> gpu_coarse;
+  for (const auto& m : coarse_steps) gpu_coarse.push_back(upload(m, o, value_lo, value_hi, scene));
 
   GLuint shadow_tex = 0, shadow_fbo = 0;
   glGenTextures(1, &shadow_tex);
@@ -380,7 +385,9 @@ ViewerStats run_viewer(const std::vector<TriangleMesh>& steps, const std::vector
   double total_ms = 0.0, smooth_ms = 0.0;
   while (!glfwWindowShouldClose(window)) {
     const auto t0 = std::chrono::steady_clock::now();
-    const GpuStep& g = gpu[state.step];
+    const bool far =
+        !gpu_coarse.empty() && state.camera.distance > o.lod_distance_factor * state.home.distance;
+    const GpuStep& g = far ? gpu_coarse[state.step] : gpu[state.step];
     glEnable(GL_DEPTH_TEST);
     if (state.shadows) {
       glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo);
@@ -434,10 +441,11 @@ ViewerStats run_viewer(const std::vector<TriangleMesh>& steps, const std::vector
       continue;
     }
     char title[160];
-    std::snprintf(title, sizeof(title), "fspm view  |  step %d/%d  age %g  |  %.1f ms/frame",
+    std::snprintf(title, sizeof(title),
+                  "fspm view  |  step %d/%d  age %g  |  %zu triangles%s  |  %.1f ms/frame",
                   state.step + 1, state.steps,
                   state.step < static_cast<int>(labels.size()) ? labels[state.step] : 0.0,
-                  smooth_ms);
+                  g.triangles, far ? " (far LOD)" : "", smooth_ms);
     glfwSetWindowTitle(window, title);
     glfwSwapBuffers(window);
     glfwPollEvents();
@@ -460,6 +468,7 @@ ViewerStats run_viewer(const std::vector<TriangleMesh>& steps, const std::vector
     }
     write_image(image, o.screenshot);
   }
+  for (auto& g : gpu_coarse) gpu.push_back(g);
   for (auto& g : gpu) {
     glDeleteBuffers(1, &g.vbo);
     glDeleteBuffers(1, &g.ibo);

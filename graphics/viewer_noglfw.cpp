@@ -6,7 +6,7 @@ namespace fspm::graphics {
 bool viewer_available() { return false; }
 
 ViewerStats run_viewer(const std::vector<TriangleMesh>&, const std::vector<double>&,
-                       const ViewerOptions&) {
+                       const ViewerOptions&, const std::vector<TriangleMesh>&) {
   throw ValueError("fspm was built without the viewer (FSPM_WITH_VIEWER=OFF)");
 }
 
