@@ -13,10 +13,7 @@ namespace {
 
 using testing::run_fspm;
 using testing::scratch_dir;
-
-void write_text(const std::filesystem::path& p, const std::string& text) {
-  std::ofstream(p) << text;
-}
+using testing::write_text;
 
 // An opaque sphere of radius 1 at height 3 over the first point: light cos^3(alpha) with
 // sin(alpha) = 1/3 (closed form, see docs/environment.md); the second point is far outside every

@@ -11,10 +11,7 @@ namespace {
 
 using testing::run_fspm;
 using testing::scratch_dir;
-
-void write_text(const std::filesystem::path& p, const std::string& text) {
-  std::ofstream(p) << text;
-}
+using testing::write_text;
 
 // Hand-computed in tests/fspm/constrained_edit_distance_test.cpp (HandCaseNewickLabels): 203.
 TEST(EvaluationCli, DistanceOfNewickStringsWithAbsoluteCost) {

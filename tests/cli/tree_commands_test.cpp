@@ -8,17 +8,10 @@
 namespace fspm {
 namespace {
 
+using testing::read_text;
 using testing::run_fspm;
 using testing::scratch_dir;
-
-void write_text(const std::filesystem::path& p, const std::string& text) {
-  std::ofstream(p) << text;
-}
-
-std::string read_text(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
+using testing::write_text;
 
 TEST(TreeCli, NewickSurvivesConversionThroughEveryFormat) {
   const auto dir = scratch_dir("convert");
