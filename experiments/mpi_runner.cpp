@@ -68,7 +68,7 @@ RunnerSummary root(const Experiment& experiment, const Model& model, const Runne
                    int ranks) {
   const Clock::time_point start = Clock::now();
   RunnerSummary summary;
-  std::vector<std::size_t> todo;
+  std::vector<std::size_t> pending;
   std::unique_ptr<ResultsDb> db;
   try {
     if (options.shard_count == 0 || options.shard_index >= options.shard_count) {
@@ -83,7 +83,7 @@ RunnerSummary root(const Experiment& experiment, const Model& model, const Runne
       if (done[i] != 0) {
         ++summary.already_done;
       } else {
-        todo.push_back(i);
+        pending.push_back(i);
       }
     }
   } catch (...) {
@@ -103,8 +103,8 @@ RunnerSummary root(const Experiment& experiment, const Model& model, const Runne
   auto interrupted = [&] { return options.interrupt != nullptr && options.interrupt->load(); };
   auto take = [&]() -> long long {
     std::lock_guard lock(mutex);
-    if (interrupted() || next >= todo.size()) return -1;
-    return static_cast<long long>(todo[next++]);
+    if (interrupted() || next >= pending.size()) return -1;
+    return static_cast<long long>(pending[next++]);
   };
   // Rank 0 computes too, on one thread: only this (main) thread calls MPI (MPI_THREAD_FUNNELED).
   std::jthread local([&] {
@@ -118,18 +118,13 @@ RunnerSummary root(const Experiment& experiment, const Model& model, const Runne
     local_finished = true;
   });
 
-  ProgressReporter progress(options.progress, todo.size(), options.progress_bar,
+  ProgressReporter progress(options.progress, pending.size(), options.progress_bar,
                             options.progress_interval_s);
   std::vector<RunRecord> batch;
   Clock::time_point last_flush = Clock::now();
   auto flush = [&] {
     db->insert(batch);
-    for (const RunRecord& r : batch) {
-      ++summary.ran;
-      if (r.status == RunStatus::kOk) ++summary.ok;
-      if (r.status == RunStatus::kError) ++summary.failed;
-      if (r.status == RunStatus::kTimeout) ++summary.timed_out;
-    }
+    count_recorded(batch, summary);
     batch.clear();
     last_flush = Clock::now();
     progress.update(summary.ran, summary.failed + summary.timed_out);
@@ -176,7 +171,7 @@ RunnerSummary root(const Experiment& experiment, const Model& model, const Runne
     }
   }
   flush();
-  summary.interrupted = summary.ran < todo.size();
+  summary.interrupted = summary.ran < pending.size();
   progress.update(summary.ran, summary.failed + summary.timed_out, true);
   summary.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return summary;

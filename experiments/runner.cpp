@@ -71,6 +71,15 @@ ExperimentInfo experiment_info(const Experiment& experiment) {
   return info;
 }
 
+void count_recorded(const std::vector<RunRecord>& batch, RunnerSummary& summary) {
+  for (const RunRecord& r : batch) {
+    ++summary.ran;
+    if (r.status == RunStatus::kOk) ++summary.ok;
+    if (r.status == RunStatus::kError) ++summary.failed;
+    if (r.status == RunStatus::kTimeout) ++summary.timed_out;
+  }
+}
+
 RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
                              const RunnerOptions& options) {
   const Clock::time_point start = Clock::now();
@@ -88,21 +97,21 @@ RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
   summary.database = db.path();
   summary.total_runs = plan.size();
   const std::vector<char> done = db.recorded_runs();
-  std::vector<std::size_t> todo;
+  std::vector<std::size_t> pending;
   for (std::size_t i = options.shard_index; i < plan.size(); i += options.shard_count) {
     ++summary.shard_runs;
     if (done[i] != 0) {
       ++summary.already_done;
     } else {
-      todo.push_back(i);
+      pending.push_back(i);
     }
   }
   const ExecutionSettings settings =
       execution_settings(experiment, options.out_dir, options.time_limit_s, options.interrupt);
   const std::size_t hardware = std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t workers = std::max<std::size_t>(
-      1,
-      std::min(options.jobs == 0 ? hardware : options.jobs, std::max<std::size_t>(todo.size(), 1)));
+  const std::size_t workers =
+      std::max<std::size_t>(1, std::min(options.jobs == 0 ? hardware : options.jobs,
+                                        std::max<std::size_t>(pending.size(), 1)));
   std::atomic<std::size_t> next{0};
   std::atomic<bool> stop_all{false};  // a write failure stops the workers too
   Mailbox mailbox;
@@ -116,8 +125,8 @@ RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
     for (;;) {
       if (interrupted()) break;
       const std::size_t k = next.fetch_add(1);
-      if (k >= todo.size()) break;
-      std::optional<RunRecord> record = execute_run(model, plan.run(todo[k]), settings);
+      if (k >= pending.size()) break;
+      std::optional<RunRecord> record = execute_run(model, plan.run(pending[k]), settings);
       if (!record) continue;
       mailbox.put(std::move(*record));
     }
@@ -130,7 +139,7 @@ RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
 
   // This thread is the only writer: it commits whatever finished, in one transaction per batch,
   // so the database is never the bottleneck and a kill loses at most the uncommitted batch.
-  ProgressReporter progress(options.progress, todo.size(), options.progress_bar,
+  ProgressReporter progress(options.progress, pending.size(), options.progress_bar,
                             options.progress_interval_s);
   std::vector<RunRecord> batch;
   std::exception_ptr write_error;
@@ -147,18 +156,13 @@ RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
       batch.clear();
       continue;
     }
-    for (const RunRecord& r : batch) {
-      ++summary.ran;
-      if (r.status == RunStatus::kOk) ++summary.ok;
-      if (r.status == RunStatus::kError) ++summary.failed;
-      if (r.status == RunStatus::kTimeout) ++summary.timed_out;
-    }
+    count_recorded(batch, summary);
     batch.clear();
     progress.update(summary.ran, summary.failed + summary.timed_out);
   }
   pool.clear();
   if (write_error) std::rethrow_exception(write_error);
-  summary.interrupted = summary.ran < todo.size();
+  summary.interrupted = summary.ran < pending.size();
   progress.update(summary.ran, summary.failed + summary.timed_out, true);
   summary.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return summary;

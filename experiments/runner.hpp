@@ -9,6 +9,7 @@
 #include <iosfwd>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "experiments/experiment.hpp"
 #include "experiments/model.hpp"
@@ -48,6 +49,10 @@ struct RunnerSummary {
 ExperimentInfo experiment_info(const Experiment& experiment);
 
 // Throws IoError for database problems (locked, corrupted, another experiment's) before any run.
+// Counts a batch of recorded runs into the summary (ran, ok, failed, timed out); shared by the
+// thread and MPI runners.
+void count_recorded(const std::vector<RunRecord>& batch, RunnerSummary& summary);
+
 RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
                              const RunnerOptions& options);
 
