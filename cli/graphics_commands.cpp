@@ -4,7 +4,9 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cctype>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -16,13 +18,20 @@
 
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
+#include "fspm/compressed_tree_graph.hpp"
 #include "fspm/error.hpp"
 #include "fspm/tree_file.hpp"
 #include "graphics/image.hpp"
+#include "graphics/instanced_mesh.hpp"
 #include "graphics/mesh_writers.hpp"
 #include "graphics/render.hpp"
+#include "graphics/scene_file.hpp"
 #include "graphics/tree_mesher.hpp"
 #include "graphics/viewer.hpp"
+#include "graphics/vtk_readback.hpp"
+#include "greenlab/plant_params.hpp"
+#include "greenlab/reconstruction.hpp"
+#include "greenlab/simulation.hpp"
 
 namespace fspm::cli {
 namespace {
@@ -76,10 +85,98 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// What a graphics command was given: a tree file, a compressed graph (.ctree) or a GreenLab plant
+// description (.toml, simulated on the fly), a scene of many plants (.json) or a ParaView growth
+// sequence (.pvd, viewer only).
+enum class InputKind { kTree, kCompressed, kPlant, kScene, kPvd };
+
+InputKind input_kind(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  if (ext == ".ctree") return InputKind::kCompressed;
+  if (ext == ".toml") return InputKind::kPlant;
+  if (ext == ".json") return InputKind::kScene;
+  if (ext == ".pvd") return InputKind::kPvd;
+  return InputKind::kTree;
+}
+
+bool is_compressed(InputKind kind) {
+  return kind == InputKind::kCompressed || kind == InputKind::kPlant;
+}
+
+CompressedTreeGraph load_compressed(const std::string& path, InputKind kind) {
+  if (kind == InputKind::kCompressed) return read_ctree_file(path);
+  return greenlab::simulate_compressed(greenlab::read_plant_params(path));
+}
+
+// Jaeger 3.1.2: one prototype per substructure, meshed once, placed by transforms.
+graphics::InstancedMesh mesh_compressed(const CompressedTreeGraph& graph, double age,
+                                        const graphics::MeshOptions& options) {
+  greenlab::ReconstructionOptions ro;
+  ro.age = age;
+  greenlab::InstancedPlant plant = greenlab::reconstruct_instanced(graph, ro);
+  graphics::InstancedTree tree;
+  tree.prototypes.reserve(plant.prototypes.size());
+  for (auto& p : plant.prototypes) {
+    graphics::InstancedTree::Prototype q;
+    q.geometry = std::move(p.geometry);
+    for (const auto& c : p.children) {
+      q.children.push_back({c.prototype, c.attach, c.rotation, c.translation});
+    }
+    tree.prototypes.push_back(std::move(q));
+  }
+  return graphics::mesh_instanced(tree, options);
+}
+
+// A tree meshed once, or a compressed plant meshed per substructure; `age` is the plant age of
+// a compressed graph (< 0: as simulated) or, for a tree, the latest birth time kept.
+graphics::InstancedMesh load_part(const std::string& path, InputKind kind,
+                                  const std::string& format, double age,
+                                  graphics::MeshOptions options) {
+  if (is_compressed(kind)) return mesh_compressed(load_compressed(path, kind), age, options);
+  if (kind == InputKind::kScene) throw ValueError("a scene cannot include another scene", path);
+  if (kind == InputKind::kPvd) {
+    throw ValueError("a .pvd is a growth sequence of meshes: open it with fspm view", path);
+  }
+  if (age >= 0.0) options.max_birth_time = age;
+  return graphics::InstancedMesh::single(
+      graphics::mesh_tree(read_tree_file(path, format), options));
+}
+
+graphics::InstancedMesh load_scene(const std::string& path, const graphics::MeshOptions& options) {
+  const graphics::SceneFile scene = graphics::read_scene_file(path);
+  std::vector<graphics::InstancedMesh> parts;
+  for (const auto& source : scene.sources) {
+    parts.push_back(load_part(source.path, input_kind(source.path), "", source.age, options));
+  }
+  std::vector<graphics::PartPlacement> placements;
+  for (const auto& inst : scene.instances) {
+    placements.push_back({inst.source, inst.linear().cast<float>(), inst.position.cast<float>()});
+  }
+  return graphics::place_parts(parts, placements);
+}
+
+graphics::InstancedMesh load_instanced(const std::string& path, const std::string& format,
+                                       const graphics::MeshOptions& options) {
+  const InputKind kind = input_kind(path);
+  if (kind == InputKind::kScene) return load_scene(path, options);
+  return load_part(path, kind, format, -1.0, options);
+}
+
+nlohmann::json instancing_json(const graphics::InstancedMesh& m) {
+  Eigen::Vector3f lo, hi;
+  m.bounds(lo, hi);
+  return {{"meshes", m.meshes.size()},
+          {"instances", m.instances.size()},
+          {"stored_triangles", m.stored_triangle_count()},
+          {"bounds", {{"min", {lo.x(), lo.y(), lo.z()}}, {"max", {hi.x(), hi.y(), hi.z()}}}}};
+}
+
 void run_mesh(const MeshCommand& c) {
   const auto t0 = std::chrono::steady_clock::now();
   const graphics::MeshFormat format = graphics::mesh_format_for(c.out);
-  const TreeGraph tree = read_tree_file(c.tree, c.format);
+  const InputKind kind = input_kind(c.tree);
   graphics::MeshOptions options;
   options.leaves = c.leaves;
   options.edge_length_m = c.edge_length_m;
@@ -89,6 +186,13 @@ void run_mesh(const MeshCommand& c) {
   nlohmann::json j = {{"file", c.tree}, {"output", c.out}};
   std::size_t vertices = 0, triangles = 0;
   if (format == graphics::MeshFormat::kPvd) {
+    if (kind == InputKind::kScene || kind == InputKind::kPvd) {
+      throw ValueError("a .pvd growth sequence is made from one tree or plant", c.tree);
+    }
+    // Growth of a compressed plant: its explicit tree filtered by birth date (Jaeger 3.2.2).
+    const TreeGraph tree = is_compressed(kind)
+                               ? greenlab::reconstruct(load_compressed(c.tree, kind), {})
+                               : read_tree_file(c.tree, c.format);
     const std::vector<double> ages = c.ages.empty() ? graphics::default_ages(tree) : c.ages;
     const auto frames = graphics::write_pvd(tree, options, ages, c.out);
     nlohmann::json list = nlohmann::json::array();
@@ -105,10 +209,11 @@ void run_mesh(const MeshCommand& c) {
     if (!c.ages.empty()) {
       throw ValueError("--ages makes a growth sequence: use an output ending in .pvd", c.out);
     }
-    const graphics::TriangleMesh mesh = graphics::mesh_tree(tree, options);
+    const graphics::InstancedMesh mesh = load_instanced(c.tree, c.format, options);
     graphics::write_mesh(mesh, c.out);
     vertices = mesh.vertex_count();
     triangles = mesh.triangle_count();
+    j.update(instancing_json(mesh));
   }
   j["vertices"] = vertices;
   j["triangles"] = triangles;
@@ -163,14 +268,15 @@ void run_render(const RenderCommand& c) {
     throw ValueError("fspm was built without VTK (FSPM_WITH_VTK=OFF): rendering is not available");
   }
   graphics::check_image_path(c.out);
-  const TreeGraph tree = read_tree_file(c.tree, c.format);
   graphics::MeshOptions mesh_options;
   mesh_options.leaves = c.leaves;
   mesh_options.edge_length_m = c.edge_length_m;
-  const graphics::TriangleMesh mesh = graphics::mesh_tree(tree, mesh_options);
-  if (!c.color_by.empty()) (void)mesh.attribute(c.color_by);  // unknown attribute: ValueError
+  const graphics::InstancedMesh mesh = load_instanced(c.tree, c.format, mesh_options);
+  if (!c.color_by.empty()) {
+    for (const auto& m : mesh.meshes) (void)m.attribute(c.color_by);  // unknown: ValueError
+  }
   rerun_under_xvfb_if_needed();
-  const graphics::Image image = graphics::render_mesh(mesh, options);
+  const graphics::Image image = graphics::render_scene(mesh, options);
   graphics::write_image(image, c.out);
   if (c.json) {
     print_json({{"file", c.tree},
@@ -178,40 +284,70 @@ void run_render(const RenderCommand& c) {
                 {"width", image.width},
                 {"height", image.height},
                 {"triangles", mesh.triangle_count()},
+                {"meshes", mesh.meshes.size()},
+                {"instances", mesh.instances.size()},
                 {"seconds", seconds_since(t0)}});
   } else if (verbosity() > 0) {
     std::cerr << "wrote " << c.out << " (" << image.width << "x" << image.height << ")\n";
   }
 }
 
-// Every tree meshed at every age, placed side by side along x with a gap of a tenth of the
-// widest tree.
-std::vector<graphics::TriangleMesh> view_steps(const ViewCommand& c, std::vector<double>& ages,
-                                               const graphics::MeshOptions& resolution) {
-  std::vector<TreeGraph> trees;
-  for (const auto& path : c.trees) trees.push_back(read_tree_file(path, c.format));
-  graphics::MeshOptions options = resolution;
-  options.leaves = c.leaves;
-  if (ages.empty()) ages.push_back(std::numeric_limits<double>::infinity());
-  std::sort(ages.begin(), ages.end());
-  std::vector<float> offsets;
+// One FILE of `fspm view`, loaded once and meshed at each growth step.
+struct ViewSource {
+  std::string path;
+  InputKind kind = InputKind::kTree;
+  TreeGraph tree;
+  CompressedTreeGraph graph;
+
+  // `age`: plant age for compressed graphs, latest birth time for trees, ignored for scenes;
+  // infinity = everything.
+  graphics::InstancedMesh at(double age, const graphics::MeshOptions& options,
+                             const std::string& format) const {
+    if (kind == InputKind::kScene) return load_scene(path, options);
+    if (is_compressed(kind)) return mesh_compressed(graph, std::isinf(age) ? -1.0 : age, options);
+    graphics::MeshOptions o = options;
+    o.max_birth_time = age;
+    (void)format;
+    return graphics::InstancedMesh::single(graphics::mesh_tree(tree, o));
+  }
+};
+
+// Default growth steps of a compressed plant: whole cycles 1..final age, at most 20.
+std::vector<double> plant_ages(const CompressedTreeGraph& g) {
+  std::vector<double> ages;
+  const double last = std::floor(g.final_age);
+  const double step = std::max(1.0, std::ceil(last / 20.0));
+  for (double a = last; a >= 1.0; a -= step) ages.push_back(a);
+  if (ages.empty()) ages.push_back(g.final_age);
+  std::reverse(ages.begin(), ages.end());
+  return ages;
+}
+
+// Every file meshed at every age (instanced), placed side by side along x with a gap of a
+// tenth of the widest.
+std::vector<graphics::InstancedMesh> view_steps(const std::vector<ViewSource>& sources,
+                                                const std::string& format,
+                                                const std::vector<double>& ages,
+                                                const graphics::MeshOptions& options) {
+  std::vector<graphics::PartPlacement> placements;
   float x = 0.0f;
-  for (const auto& t : trees) {
-    const graphics::TriangleMesh full = graphics::mesh_tree(t, options);
-    const float width = full.empty() ? 0.0f : full.bbox_max().x() - full.bbox_min().x();
-    offsets.push_back(full.empty() ? x : x - full.bbox_min().x());
+  for (std::size_t i = 0; i < sources.size(); ++i) {
+    const graphics::InstancedMesh full =
+        sources[i].at(std::numeric_limits<double>::infinity(), options, format);
+    Eigen::Vector3f lo, hi;
+    full.bounds(lo, hi);
+    const float width = hi.x() - lo.x();
+    graphics::PartPlacement p;
+    p.part = i;
+    p.translation.x() = full.instances.empty() ? x : x - lo.x();
+    placements.push_back(p);
     x += width * 1.1f + 0.1f;
   }
-  std::vector<graphics::TriangleMesh> steps;
+  std::vector<graphics::InstancedMesh> steps;
   for (double age : ages) {
-    graphics::TriangleMesh scene;
-    for (std::size_t i = 0; i < trees.size(); ++i) {
-      options.max_birth_time = age;
-      graphics::TriangleMesh m = graphics::mesh_tree(trees[i], options);
-      for (auto& p : m.positions) p.x() += offsets[i];
-      scene.append(m);
-    }
-    steps.push_back(std::move(scene));
+    std::vector<graphics::InstancedMesh> parts;
+    for (const auto& s : sources) parts.push_back(s.at(age, options, format));
+    steps.push_back(graphics::place_parts(parts, placements));
   }
   return steps;
 }
@@ -229,23 +365,69 @@ void run_view(const ViewCommand& c) {
   options.shadows = !c.no_shadows;
   if (!c.screenshot.empty()) graphics::check_image_path(c.screenshot);
   std::vector<double> ages = c.ages;
-  const std::vector<graphics::TriangleMesh> steps = view_steps(c, ages, {});
-  // Far level of detail: rings four times coarser, at most six sides.
-  graphics::MeshOptions coarse;
-  coarse.edge_length_m *= 4.0;
-  coarse.max_sides = 6;
-  coarse.min_sides = 3;
-  std::vector<double> same_ages = ages;
-  const std::vector<graphics::TriangleMesh> far = view_steps(c, same_ages, coarse);
+  std::vector<graphics::InstancedMesh> steps, far;
+  const bool pvd = std::any_of(c.trees.begin(), c.trees.end(), [](const std::string& p) {
+    return input_kind(p) == InputKind::kPvd;
+  });
+  if (pvd) {
+    // A growth sequence written by fspm mesh -o X.pvd (or any ParaView collection of .vtp
+    // triangle meshes): one step per data set, the age keys stepping through its time steps.
+    if (c.trees.size() != 1) throw ValueError("fspm view opens one .pvd sequence at a time");
+    if (!c.ages.empty()) throw ValueError("--ages does not apply to a .pvd (its time steps do)");
+    if (!graphics::vtk_available()) {
+      throw ValueError("fspm was built without VTK (FSPM_WITH_VTK=OFF): cannot read .vtp steps");
+    }
+    for (const auto& step : graphics::read_pvd_file(c.trees[0])) {
+      steps.push_back(graphics::InstancedMesh::single(graphics::read_vtp_mesh(step.path)));
+      ages.push_back(step.time);
+    }
+  } else {
+    std::vector<ViewSource> sources;
+    for (const auto& path : c.trees) {
+      ViewSource s;
+      s.path = path;
+      s.kind = input_kind(path);
+      if (is_compressed(s.kind)) {
+        s.graph = load_compressed(path, s.kind);
+        if (ages.empty()) ages = plant_ages(s.graph);
+      } else if (s.kind == InputKind::kTree) {
+        s.tree = read_tree_file(path, c.format);
+      } else {
+        (void)graphics::read_scene_file(path);  // bad scene: error before any window
+      }
+      sources.push_back(std::move(s));
+    }
+    if (ages.empty()) ages.push_back(std::numeric_limits<double>::infinity());
+    std::sort(ages.begin(), ages.end());
+    graphics::MeshOptions mesh_options;
+    mesh_options.leaves = c.leaves;
+    steps = view_steps(sources, c.format, ages, mesh_options);
+    // Far level of detail: rings four times coarser, at most six sides.
+    graphics::MeshOptions coarse = mesh_options;
+    coarse.edge_length_m *= 4.0;
+    coarse.max_sides = 6;
+    coarse.min_sides = 3;
+    far = view_steps(sources, c.format, ages, coarse);
+  }
   if (!c.color_by.empty()) {
-    for (const auto& m : steps) (void)m.attribute(c.color_by);
+    for (const auto& step : steps) {
+      for (const auto& m : step.meshes) (void)m.attribute(c.color_by);
+    }
   }
   if (!c.screenshot.empty()) rerun_under_xvfb_if_needed();
-  const graphics::ViewerStats stats = graphics::run_viewer(steps, ages, options, far);
+  const graphics::ViewerStats stats = graphics::run_instanced_viewer(steps, ages, options, far);
   if (c.json) {
+    std::size_t meshes = 0, instances = 0;
+    for (const auto& step : steps) {
+      meshes += step.meshes.size();
+      instances += step.instances.size();
+    }
     print_json({{"frames", stats.frames},
                 {"mean_frame_ms", stats.mean_frame_ms},
                 {"triangles", stats.triangles},
+                {"steps", steps.size()},
+                {"meshes", meshes},
+                {"instances", instances},
                 {"screenshot", c.screenshot},
                 {"seconds", seconds_since(t0)}});
   }
@@ -259,8 +441,12 @@ void add_graphics_commands(CLI::App& app) {
   auto mesh = std::make_shared<MeshCommand>();
   CLI::App* m = app.add_subcommand(
       "mesh", "Mesh a tree: generalized cylinders along its chains, leaves as quads");
-  m->add_option("TREE", mesh->tree, "Tree file")->required();
-  m->add_option("-o,--output", mesh->out, "Output: .obj (+.mtl), .ply, .vtp, .pvd or .glb")
+  m->add_option("TREE", mesh->tree,
+                "Tree file, compressed plant (.ctree or plant .toml, meshed per substructure) or "
+                "scene (.json)")
+      ->required();
+  m->add_option("-o,--output", mesh->out,
+                "Output: .obj (+.mtl), .ply, .vtp, .pvd or .glb (.glb keeps the instancing)")
       ->required();
   m->add_option("--format", mesh->format, "Input format: " + formats);
   m->add_flag("--leaves", mesh->leaves, "Mesh leaf nodes as quads");
@@ -281,8 +467,11 @@ void add_graphics_commands(CLI::App& app) {
   m->callback([mesh] { run_mesh(*mesh); });
 
   auto render = std::make_shared<RenderCommand>();
-  CLI::App* r = app.add_subcommand("render", "Offscreen figure of a tree with VTK");
-  r->add_option("TREE", render->tree, "Tree file")->required();
+  CLI::App* r =
+      app.add_subcommand("render", "Offscreen figure of a tree or a scene of trees with VTK");
+  r->add_option("TREE", render->tree,
+                "Tree file, compressed plant (.ctree, plant .toml) or scene (.json)")
+      ->required();
   r->add_option("-o,--output", render->out, "Image: .png, .tif or .exr")->required();
   r->add_option("--format", render->format, "Input format: " + formats);
   r->add_option("--color-by", render->color_by,
@@ -302,9 +491,15 @@ void add_graphics_commands(CLI::App& app) {
       "view",
       "Real-time viewer: drag to orbit, right-drag to pan, wheel to zoom, [ ] growth steps, "
       "S shadows, R reset, Esc quit");
-  v->add_option("FILE", view->trees, "Tree files (placed side by side)")->required();
+  v->add_option("FILE", view->trees,
+                "Tree files, compressed plants (.ctree, plant .toml) or scenes (.json), placed "
+                "side by side; or one .pvd growth sequence")
+      ->required();
   v->add_option("--format", view->format, "Input format: " + formats);
-  v->add_option("--ages", view->ages, "Growth steps shown with [ and ]")->delimiter(',');
+  v->add_option("--ages", view->ages,
+                "Growth steps shown with [ and ]: plant ages of compressed graphs (default: each "
+                "cycle), latest birth times of trees")
+      ->delimiter(',');
   v->add_option("--color-by", view->color_by, "Colour by a vertex attribute");
   v->add_flag("--leaves", view->leaves, "Show leaves");
   v->add_flag("--no-shadows", view->no_shadows, "Start without shadows");

@@ -1,16 +1,21 @@
-// Binary glTF 2.0 (.glb): one mesh with a primitive per material sharing the vertex accessors.
+// Binary glTF 2.0 (.glb): one mesh with a primitive per material sharing the vertex accessors;
+// an instanced scene stores each shared mesh once and references it from one node per instance.
 // Attributes are application-specific vertex attributes (glTF 2.0 section 3.7.2.1: names start
 // with an underscore), e.g. "age" -> "_AGE"; mesh.extras.fspm_attributes maps them back.
+#include <array>
 #include <bit>
 #include <cctype>
 #include <cstdint>
 #include <cstring>
+#include <deque>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "fspm/atomic_file.hpp"
+#include "fspm/error.hpp"
 #include "graphics/mesh_writers.hpp"
 
 namespace fspm::graphics {
@@ -36,132 +41,173 @@ std::string gltf_attribute_name(const std::string& name) {
   return out;
 }
 
-}  // namespace
-
-void write_glb(const TriangleMesh& mesh, const std::string& path) {
-  using nlohmann::json;
-  const std::size_t nv = mesh.vertex_count();
-
-  // Indices split by material, bark first.
-  std::vector<std::uint32_t> indices[2];
-  const std::size_t leaf_count = mesh.triangle_count(Material::kLeaf);
-  indices[0].reserve(3 * (mesh.triangle_count() - leaf_count));
-  indices[1].reserve(3 * leaf_count);
-  for (std::size_t i = 0; i < mesh.triangle_count(); ++i) {
-    const int m = i < mesh.materials.size() && mesh.materials[i] == Material::kLeaf ? 1 : 0;
-    indices[m].insert(indices[m].end(), mesh.triangles[i].begin(), mesh.triangles[i].end());
-  }
-
-  struct View {
-    const void* data;
-    std::size_t bytes;
-  };
-  std::vector<View> views;
-  json buffer_views = json::array();
-  json accessors = json::array();
-  std::size_t bin_size = 0;
-  auto add_view = [&](const void* data, std::size_t bytes, int target) {
-    buffer_views.push_back(
-        {{"buffer", 0}, {"byteOffset", bin_size}, {"byteLength", bytes}, {"target", target}});
-    views.push_back({data, bytes});
-    bin_size += (bytes + 3) & ~std::size_t{3};
-    return buffer_views.size() - 1;
-  };
-  auto add_accessor = [&](std::size_t view, int component, std::size_t count,
-                          const char* type) -> std::size_t {
-    accessors.push_back(
-        {{"bufferView", view}, {"componentType", component}, {"count", count}, {"type", type}});
-    return accessors.size() - 1;
-  };
-
-  json attributes = json::object();
-  if (nv > 0) {
+// Accumulates meshes into one binary buffer and glTF JSON, then writes the .glb.
+class GlbBuilder {
+ public:
+  // Adds `mesh` as a glTF mesh with a primitive per material sharing the vertex accessors;
+  // returns its index, or -1 for an empty mesh (glTF forbids meshes without primitives).
+  long add_mesh(const TriangleMesh& mesh, const std::string& name) {
+    using nlohmann::json;
+    const std::size_t nv = mesh.vertex_count();
+    if (mesh.empty() || nv == 0) return -1;
+    // Indices split by material, bark first.
+    auto& indices = index_store_.emplace_back();
+    const std::size_t leaf_count = mesh.triangle_count(Material::kLeaf);
+    indices[0].reserve(3 * (mesh.triangle_count() - leaf_count));
+    indices[1].reserve(3 * leaf_count);
+    for (std::size_t i = 0; i < mesh.triangle_count(); ++i) {
+      const int m = i < mesh.materials.size() && mesh.materials[i] == Material::kLeaf ? 1 : 0;
+      indices[m].insert(indices[m].end(), mesh.triangles[i].begin(), mesh.triangles[i].end());
+    }
+    json attributes = json::object();
     const Eigen::Vector3f lo = mesh.bbox_min();
     const Eigen::Vector3f hi = mesh.bbox_max();
     const std::size_t pos =
         add_accessor(add_view(mesh.positions.data(), nv * 12, kArrayBuffer), kFloat, nv, "VEC3");
-    accessors[pos]["min"] = {lo.x(), lo.y(), lo.z()};  // required for POSITION
-    accessors[pos]["max"] = {hi.x(), hi.y(), hi.z()};
+    accessors_[pos]["min"] = {lo.x(), lo.y(), lo.z()};  // required for POSITION
+    accessors_[pos]["max"] = {hi.x(), hi.y(), hi.z()};
     attributes["POSITION"] = pos;
     attributes["NORMAL"] =
         add_accessor(add_view(mesh.normals.data(), nv * 12, kArrayBuffer), kFloat, nv, "VEC3");
     attributes["TEXCOORD_0"] =
         add_accessor(add_view(mesh.uvs.data(), nv * 8, kArrayBuffer), kFloat, nv, "VEC2");
-  }
-  json names = json::object();
-  for (const auto& a : mesh.attributes) {
-    if (nv == 0) break;
-    const std::string key = gltf_attribute_name(a.name);
-    attributes[key] =
-        add_accessor(add_view(a.values.data(), nv * 4, kArrayBuffer), kFloat, nv, "SCALAR");
-    names[key] = a.name;
+    json names = json::object();
+    for (const auto& a : mesh.attributes) {
+      const std::string key = gltf_attribute_name(a.name);
+      attributes[key] =
+          add_accessor(add_view(a.values.data(), nv * 4, kArrayBuffer), kFloat, nv, "SCALAR");
+      names[key] = a.name;
+    }
+    json primitives = json::array();
+    for (int m = 0; m < 2; ++m) {
+      if (indices[m].empty()) continue;
+      const std::size_t acc =
+          add_accessor(add_view(indices[m].data(), indices[m].size() * 4, kElementArrayBuffer),
+                       kUnsignedInt, indices[m].size(), "SCALAR");
+      primitives.push_back(
+          {{"attributes", attributes}, {"indices", acc}, {"material", m}, {"mode", 4}});
+    }
+    meshes_.push_back(
+        {{"name", name}, {"primitives", primitives}, {"extras", {{"fspm_attributes", names}}}});
+    return static_cast<long>(meshes_.size() - 1);
   }
 
-  json primitives = json::array();
-  for (int m = 0; m < 2; ++m) {
-    if (indices[m].empty()) continue;
-    const std::size_t acc =
-        add_accessor(add_view(indices[m].data(), indices[m].size() * 4, kElementArrayBuffer),
-                     kUnsignedInt, indices[m].size(), "SCALAR");
-    primitives.push_back(
-        {{"attributes", attributes}, {"indices", acc}, {"material", m}, {"mode", 4}});
+  // Writes the file with `nodes` (each may reference a mesh) under one root node.
+  void write(nlohmann::json nodes, const std::string& path) {
+    using nlohmann::json;
+    json doc = {
+        {"asset", {{"version", "2.0"}, {"generator", "fspm"}}},
+        {"scene", 0},
+        {"scenes", json::array({{{"nodes", json::array({0})}}})},
+        {"materials", json::array({{{"name", "bark"},
+                                    {"pbrMetallicRoughness",
+                                     {{"baseColorFactor", {0.45, 0.32, 0.20, 1.0}},
+                                      {"metallicFactor", 0.0},
+                                      {"roughnessFactor", 0.9}}}},
+                                   {{"name", "leaf"},
+                                    {"doubleSided", true},
+                                    {"pbrMetallicRoughness",
+                                     {{"baseColorFactor", {0.25, 0.55, 0.15, 1.0}},
+                                      {"metallicFactor", 0.0},
+                                      {"roughnessFactor", 0.7}}}}})},
+        {"nodes", std::move(nodes)},
+    };
+    // glTF forbids empty arrays: an empty tree is a scene without a mesh.
+    const bool has_bin = !meshes_.empty();
+    if (has_bin) {
+      doc["meshes"] = meshes_;
+      doc["buffers"] = json::array({{{"byteLength", bin_size_}}});
+      doc["bufferViews"] = buffer_views_;
+      doc["accessors"] = accessors_;
+    }
+    std::string text = doc.dump();
+    text.append((4 - text.size() % 4) % 4, ' ');
+    const std::uint64_t total = 12 + 8 + text.size() + (has_bin ? 8 + bin_size_ : 0);
+    if (total > std::numeric_limits<std::uint32_t>::max()) {
+      throw ValueError("the .glb would be larger than 4 GiB, the format's limit", path);
+    }
+    write_file_atomically(
+        path,
+        [&](std::ostream& out) {
+          auto u32 = [&](std::uint32_t x) { out.write(reinterpret_cast<const char*>(&x), 4); };
+          u32(kGlbMagic);
+          u32(2);
+          u32(static_cast<std::uint32_t>(total));
+          u32(static_cast<std::uint32_t>(text.size()));
+          u32(kChunkJson);
+          out.write(text.data(), static_cast<std::streamsize>(text.size()));
+          if (!has_bin) return;
+          u32(static_cast<std::uint32_t>(bin_size_));
+          u32(kChunkBin);
+          const char zeros[4] = {0, 0, 0, 0};
+          for (const View& v : views_) {
+            out.write(static_cast<const char*>(v.data), static_cast<std::streamsize>(v.bytes));
+            out.write(zeros,
+                      static_cast<std::streamsize>(((v.bytes + 3) & ~std::size_t{3}) - v.bytes));
+          }
+        },
+        true);
   }
 
-  json doc = {
-      {"asset", {{"version", "2.0"}, {"generator", "fspm"}}},
-      {"scene", 0},
-      {"scenes", json::array({{{"nodes", json::array({0})}}})},
-      {"materials", json::array({{{"name", "bark"},
-                                  {"pbrMetallicRoughness",
-                                   {{"baseColorFactor", {0.45, 0.32, 0.20, 1.0}},
-                                    {"metallicFactor", 0.0},
-                                    {"roughnessFactor", 0.9}}}},
-                                 {{"name", "leaf"},
-                                  {"doubleSided", true},
-                                  {"pbrMetallicRoughness",
-                                   {{"baseColorFactor", {0.25, 0.55, 0.15, 1.0}},
-                                    {"metallicFactor", 0.0},
-                                    {"roughnessFactor", 0.7}}}}})},
+ private:
+  struct View {
+    const void* data;
+    std::size_t bytes;
   };
-  // glTF forbids empty arrays and meshes without primitives: an empty tree is a scene without
-  // a mesh.
-  if (primitives.empty()) {
-    doc["nodes"] = json::array({json::object({{"name", "tree"}})});
-  } else {
-    doc["nodes"] = json::array({{{"mesh", 0}, {"name", "tree"}}});
-    doc["meshes"] = json::array(
-        {{{"name", "tree"}, {"primitives", primitives}, {"extras", {{"fspm_attributes", names}}}}});
-    doc["buffers"] = json::array({{{"byteLength", bin_size}}});
-    doc["bufferViews"] = buffer_views;
-    doc["accessors"] = accessors;
-  }
-  std::string text = doc.dump();
-  text.append((4 - text.size() % 4) % 4, ' ');
 
-  const bool has_bin = !primitives.empty();
-  const std::uint32_t total =
-      static_cast<std::uint32_t>(12 + 8 + text.size() + (has_bin ? 8 + bin_size : 0));
-  write_file_atomically(
-      path,
-      [&](std::ostream& out) {
-        auto u32 = [&](std::uint32_t x) { out.write(reinterpret_cast<const char*>(&x), 4); };
-        u32(kGlbMagic);
-        u32(2);
-        u32(total);
-        u32(static_cast<std::uint32_t>(text.size()));
-        u32(kChunkJson);
-        out.write(text.data(), static_cast<std::streamsize>(text.size()));
-        if (!has_bin) return;
-        u32(static_cast<std::uint32_t>(bin_size));
-        u32(kChunkBin);
-        const char zeros[4] = {0, 0, 0, 0};
-        for (const View& v : views) {
-          out.write(static_cast<const char*>(v.data), static_cast<std::streamsize>(v.bytes));
-          out.write(zeros,
-                    static_cast<std::streamsize>(((v.bytes + 3) & ~std::size_t{3}) - v.bytes));
-        }
-      },
-      true);
+  std::size_t add_view(const void* data, std::size_t bytes, int target) {
+    buffer_views_.push_back(
+        {{"buffer", 0}, {"byteOffset", bin_size_}, {"byteLength", bytes}, {"target", target}});
+    views_.push_back({data, bytes});
+    bin_size_ += (bytes + 3) & ~std::size_t{3};
+    return buffer_views_.size() - 1;
+  }
+  std::size_t add_accessor(std::size_t view, int component, std::size_t count, const char* type) {
+    accessors_.push_back(
+        {{"bufferView", view}, {"componentType", component}, {"count", count}, {"type", type}});
+    return accessors_.size() - 1;
+  }
+
+  std::vector<View> views_;
+  std::deque<std::array<std::vector<std::uint32_t>, 2>> index_store_;  // stable addresses
+  nlohmann::json buffer_views_ = nlohmann::json::array();
+  nlohmann::json accessors_ = nlohmann::json::array();
+  nlohmann::json meshes_ = nlohmann::json::array();
+  std::size_t bin_size_ = 0;
+};
+
+}  // namespace
+
+void write_glb(const TriangleMesh& mesh, const std::string& path) {
+  GlbBuilder glb;
+  const long m = glb.add_mesh(mesh, "tree");
+  nlohmann::json node = {{"name", "tree"}};
+  if (m >= 0) node["mesh"] = m;
+  glb.write(nlohmann::json::array({node}), path);
+}
+
+void write_glb(const InstancedMesh& scene, const std::string& path) {
+  using nlohmann::json;
+  GlbBuilder glb;
+  std::vector<long> index;
+  for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+    index.push_back(glb.add_mesh(scene.meshes[i], "substructure_" + std::to_string(i)));
+  }
+  // Node 0 is the scene root; every instance is a child node referencing its shared mesh
+  // (glTF 2.0 section 3.5: a mesh may be instantiated by many nodes).
+  json nodes = json::array({{{"name", "scene"}}});
+  json children = json::array();
+  for (const MeshInstance& inst : scene.instances) {
+    if (index[inst.mesh] < 0) continue;
+    json node = {{"mesh", index[inst.mesh]}};
+    const Eigen::Matrix4f m = inst.matrix();  // column-major, as glTF stores it
+    if (!m.isIdentity()) node["matrix"] = std::vector<float>(m.data(), m.data() + 16);
+    if (inst.order_offset != 0.0f) node["extras"] = {{"order_offset", inst.order_offset}};
+    children.push_back(nodes.size());
+    nodes.push_back(std::move(node));
+  }
+  if (!children.empty()) nodes[0]["children"] = std::move(children);
+  glb.write(std::move(nodes), path);
 }
 
 }  // namespace fspm::graphics

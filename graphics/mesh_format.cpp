@@ -40,4 +40,17 @@ void write_mesh(const TriangleMesh& mesh, const std::string& path) {
   throw ValueError("a .pvd growth sequence is written from a tree, not from one mesh", path);
 }
 
+void write_mesh(const InstancedMesh& scene, const std::string& path) {
+  const MeshFormat format = mesh_format_for(path);
+  if (format == MeshFormat::kGlb) {
+    write_glb(scene, path);
+  } else if (format == MeshFormat::kPvd) {
+    throw ValueError("a .pvd growth sequence is written from a tree, not from a scene", path);
+  } else if (scene.instances.size() == 1 && scene.instances[0].matrix().isIdentity()) {
+    write_mesh(scene.meshes[scene.instances[0].mesh], path);
+  } else {
+    write_mesh(scene.flatten(), path);
+  }
+}
+
 }  // namespace fspm::graphics

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fspm/tree_graph.hpp"
+#include "graphics/instanced_mesh.hpp"
 #include "graphics/tree_mesher.hpp"
 #include "graphics/triangle_mesh.hpp"
 
@@ -26,6 +27,12 @@ void write_glb(const TriangleMesh& mesh, const std::string& path);
 
 // Any single-mesh format by extension (not .pvd).
 void write_mesh(const TriangleMesh& mesh, const std::string& path);
+
+// Instanced: .glb keeps the instancing (each shared mesh stored once, one node per instance with
+// its matrix, the substructure's branching order in the node's extras.order_offset); OBJ, PLY
+// and VTP get the flattened explicit mesh. Not .pvd.
+void write_glb(const InstancedMesh& scene, const std::string& path);
+void write_mesh(const InstancedMesh& scene, const std::string& path);
 
 struct PvdFrame {
   double age = 0.0;

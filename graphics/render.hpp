@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "graphics/image.hpp"
+#include "graphics/instanced_mesh.hpp"
 #include "graphics/triangle_mesh.hpp"
 
 namespace fspm::graphics {
@@ -37,5 +38,10 @@ bool display_available();
 // Throws ValueError for an unknown colour attribute (before touching VTK), for a bad size or
 // when built without VTK; IoError when no display can be opened.
 Image render_mesh(const TriangleMesh& mesh, const RenderOptions& options);
+
+// An instanced scene: each shared mesh uploaded once and drawn with GPU instancing (VTK's glyph
+// mapper, one glyph per instance). Colouring by an attribute renders the flattened mesh instead.
+// Same errors as render_mesh.
+Image render_scene(const InstancedMesh& scene, const RenderOptions& options);
 
 }  // namespace fspm::graphics

@@ -12,6 +12,13 @@ Image render_mesh(const TriangleMesh& mesh, const RenderOptions& options) {
   throw ValueError("fspm was built without VTK (FSPM_WITH_VTK=OFF): rendering is not available");
 }
 
+Image render_scene(const InstancedMesh& scene, const RenderOptions& options) {
+  if (!options.color_by.empty()) {
+    for (const auto& m : scene.meshes) (void)m.attribute(options.color_by);
+  }
+  throw ValueError("fspm was built without VTK (FSPM_WITH_VTK=OFF): rendering is not available");
+}
+
 void write_image(const Image&, const std::string& path) {
   throw ValueError("fspm was built without OpenImageIO (FSPM_WITH_VTK=OFF)", path);
 }

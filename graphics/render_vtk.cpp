@@ -5,6 +5,7 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkFloatArray.h>
+#include <vtkGlyph3DMapper.h>
 #include <vtkIdTypeArray.h>
 #include <vtkImageData.h>
 #include <vtkLightKit.h>
@@ -22,7 +23,9 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 
@@ -115,12 +118,11 @@ void place_camera(vtkRenderer* renderer, View view, const Eigen::Vector3f& lo,
   camera->SetViewAngle(30.0);
 }
 
-}  // namespace
-
-bool render_available() { return true; }
-
-Image render_mesh(const TriangleMesh& mesh, const RenderOptions& options) {
-  if (!options.color_by.empty()) (void)mesh.attribute(options.color_by);  // ValueError first
+// Sets up the renderer, lets `add_actors` fill it, adds the ground, lights and camera framing
+// [lo, hi], renders off screen and reads the image back.
+template <typename AddActors>
+Image render_with(const RenderOptions& options, Eigen::Vector3f lo, Eigen::Vector3f hi,
+                  AddActors&& add_actors) {
   if (options.width < 1 || options.height < 1 || options.width > 16384 || options.height > 16384) {
     throw ValueError("image size must be 1..16384 pixels on each side");
   }
@@ -139,49 +141,7 @@ Image render_mesh(const TriangleMesh& mesh, const RenderOptions& options) {
   renderer->SetBackground2(0.78, 0.86, 0.96);
   renderer->GradientBackgroundOn();
 
-  Eigen::Vector3f lo = mesh.bbox_min(), hi = mesh.bbox_max();
-  if (!mesh.empty()) {
-    vtkNew<vtkPolyData> poly = to_polydata(mesh, options.color_by);
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(poly);
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    actor->GetProperty()->SetInterpolationToPhong();
-    actor->GetProperty()->SetSpecular(0.15);
-    actor->GetProperty()->SetSpecularPower(20.0);
-    actor->GetProperty()->BackfaceCullingOff();
-    if (options.color_by.empty()) {
-      mapper->SetScalarModeToUseCellData();
-      mapper->SetColorModeToDirectScalars();
-      mapper->ScalarVisibilityOn();
-    } else {
-      const auto values = mesh.attribute(options.color_by);
-      auto [mn, mx] = std::minmax_element(values.begin(), values.end());
-      double range[2] = {*mn, *mx};
-      if (range[1] <= range[0]) range[1] = range[0] + 1.0;
-      vtkNew<vtkLookupTable> lut;
-      lut->SetHueRange(0.667, 0.0);  // blue (low) to red (high)
-      lut->SetTableRange(range);
-      lut->Build();
-      mapper->SetLookupTable(lut);
-      mapper->SetScalarModeToUsePointData();
-      mapper->SetScalarRange(range);
-      mapper->ScalarVisibilityOn();
-      if (options.scalar_bar) {
-        vtkNew<vtkScalarBarActor> bar;
-        bar->SetLookupTable(lut);
-        bar->SetTitle(options.color_by.c_str());
-        bar->SetNumberOfLabels(5);
-        bar->SetMaximumWidthInPixels(std::max(60, options.width / 10));
-        bar->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
-        bar->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
-        bar->GetTitleTextProperty()->ShadowOff();
-        bar->GetLabelTextProperty()->ShadowOff();
-        renderer->AddActor2D(bar);
-      }
-    }
-    renderer->AddActor(actor);
-  }
+  add_actors(renderer.Get());
   if (options.ground) {
     const Eigen::Vector3f size = (hi - lo).cwiseMax(Eigen::Vector3f::Constant(0.1f));
     const float half = 0.9f * std::max(size.x(), size.y()) + 0.4f * size.z();
@@ -246,6 +206,146 @@ Image render_mesh(const TriangleMesh& mesh, const RenderOptions& options) {
     std::memcpy(image.rgba.data() + row * y, src + row * (dims[1] - 1 - y), row);
   }
   return image;
+}
+
+void add_glyph_actor(vtkRenderer* renderer, vtkPolyData* instances, const TriangleMesh& part,
+                     const unsigned char* rgb) {
+  vtkNew<vtkPolyData> source = to_polydata(part, "");
+  vtkNew<vtkGlyph3DMapper> mapper;
+  mapper->SetInputData(instances);
+  mapper->SetSourceData(source);
+  mapper->SetOrientationModeToQuaternion();
+  mapper->SetOrientationArray("orientation");
+  mapper->SetScaleModeToScaleByVectorComponents();
+  mapper->SetScaleArray("scale");
+  mapper->ScalingOn();
+  mapper->OrientOn();
+  mapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(rgb[0] / 255.0, rgb[1] / 255.0, rgb[2] / 255.0);
+  actor->GetProperty()->SetInterpolationToPhong();
+  actor->GetProperty()->SetSpecular(0.15);
+  actor->GetProperty()->SetSpecularPower(20.0);
+  actor->GetProperty()->BackfaceCullingOff();
+  renderer->AddActor(actor);
+}
+
+// The triangles of one material as a mesh of their own (positions and normals only).
+TriangleMesh material_part(const TriangleMesh& mesh, Material material) {
+  TriangleMesh part;
+  std::vector<std::uint32_t> map(mesh.vertex_count(), 0xFFFFFFFFu);
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    if (mesh.materials[t] != material) continue;
+    TriangleMesh::Triangle tri;
+    for (int k = 0; k < 3; ++k) {
+      std::uint32_t& m = map[mesh.triangles[t][k]];
+      if (m == 0xFFFFFFFFu) {
+        m = static_cast<std::uint32_t>(part.positions.size());
+        part.positions.push_back(mesh.positions[mesh.triangles[t][k]]);
+        part.normals.push_back(mesh.normals[mesh.triangles[t][k]]);
+      }
+      tri[k] = m;
+    }
+    part.triangles.push_back(tri);
+    part.materials.push_back(material);
+  }
+  return part;
+}
+
+}  // namespace
+
+bool render_available() { return true; }
+
+Image render_mesh(const TriangleMesh& mesh, const RenderOptions& options) {
+  if (!options.color_by.empty()) (void)mesh.attribute(options.color_by);  // ValueError first
+  return render_with(options, mesh.bbox_min(), mesh.bbox_max(), [&](vtkRenderer* renderer) {
+    if (!mesh.empty()) {
+      vtkNew<vtkPolyData> poly = to_polydata(mesh, options.color_by);
+      vtkNew<vtkPolyDataMapper> mapper;
+      mapper->SetInputData(poly);
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(mapper);
+      actor->GetProperty()->SetInterpolationToPhong();
+      actor->GetProperty()->SetSpecular(0.15);
+      actor->GetProperty()->SetSpecularPower(20.0);
+      actor->GetProperty()->BackfaceCullingOff();
+      if (options.color_by.empty()) {
+        mapper->SetScalarModeToUseCellData();
+        mapper->SetColorModeToDirectScalars();
+        mapper->ScalarVisibilityOn();
+      } else {
+        const auto values = mesh.attribute(options.color_by);
+        auto [mn, mx] = std::minmax_element(values.begin(), values.end());
+        double range[2] = {*mn, *mx};
+        if (range[1] <= range[0]) range[1] = range[0] + 1.0;
+        vtkNew<vtkLookupTable> lut;
+        lut->SetHueRange(0.667, 0.0);  // blue (low) to red (high)
+        lut->SetTableRange(range);
+        lut->Build();
+        mapper->SetLookupTable(lut);
+        mapper->SetScalarModeToUsePointData();
+        mapper->SetScalarRange(range);
+        mapper->ScalarVisibilityOn();
+        if (options.scalar_bar) {
+          vtkNew<vtkScalarBarActor> bar;
+          bar->SetLookupTable(lut);
+          bar->SetTitle(options.color_by.c_str());
+          bar->SetNumberOfLabels(5);
+          bar->SetMaximumWidthInPixels(std::max(60, options.width / 10));
+          bar->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
+          bar->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
+          bar->GetTitleTextProperty()->ShadowOff();
+          bar->GetLabelTextProperty()->ShadowOff();
+          renderer->AddActor2D(bar);
+        }
+      }
+      renderer->AddActor(actor);
+    }
+  });
+}
+
+Image render_scene(const InstancedMesh& scene, const RenderOptions& options) {
+  if (!options.color_by.empty()) {
+    // Colours per vertex and per instance (the order attribute) need the explicit mesh.
+    return render_mesh(scene.flatten(), options);
+  }
+  Eigen::Vector3f lo, hi;
+  scene.bounds(lo, hi);
+  return render_with(options, lo, hi, [&](vtkRenderer* renderer) {
+    // GPU instancing through VTK's glyph mapper: one source per shared mesh and material, one
+    // glyph (position, quaternion, scale) per instance.
+    for (std::uint32_t m = 0; m < scene.meshes.size(); ++m) {
+      const TriangleMesh& mesh = scene.meshes[m];
+      if (mesh.empty()) continue;
+      vtkNew<vtkPoints> points;
+      vtkNew<vtkFloatArray> orientation, scale;
+      orientation->SetName("orientation");
+      orientation->SetNumberOfComponents(4);
+      scale->SetName("scale");
+      scale->SetNumberOfComponents(3);
+      for (const MeshInstance& inst : scene.instances) {
+        if (inst.mesh != m) continue;
+        const float s = std::cbrt(inst.linear.determinant());
+        const Eigen::Quaternionf q(inst.linear / s);
+        points->InsertNextPoint(inst.translation.x(), inst.translation.y(), inst.translation.z());
+        const float wxyz[4] = {q.w(), q.x(), q.y(), q.z()};  // VTK's quaternion order
+        orientation->InsertNextTypedTuple(wxyz);
+        const float sss[3] = {s, s, s};
+        scale->InsertNextTypedTuple(sss);
+      }
+      if (points->GetNumberOfPoints() == 0) continue;
+      vtkNew<vtkPolyData> instances;
+      instances->SetPoints(points);
+      instances->GetPointData()->AddArray(orientation);
+      instances->GetPointData()->AddArray(scale);
+      for (Material material : {Material::kBark, Material::kLeaf}) {
+        if (mesh.triangle_count(material) == 0) continue;
+        add_glyph_actor(renderer, instances, material_part(mesh, material),
+                        material == Material::kLeaf ? kLeafRgb : kBarkRgb);
+      }
+    }
+  });
 }
 
 }  // namespace fspm::graphics

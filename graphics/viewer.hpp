@@ -1,13 +1,14 @@
 #pragma once
-// Real-time viewer (GLFW window, OpenGL 3.3 core, GLM): orbit (left drag), pan (right drag or
-// shift + left drag), zoom (wheel), growth steps on [ and ] (or left/right arrows), shadows from a
-// sun with a 3x3 percentage-closer filtered shadow map (Pirk 6.2.3) toggled with S, R resets the
-// view, Esc or Q quits; the frame time is shown in the title. With a screenshot path it renders
-// `frames` frames into an offscreen framebuffer, writes the image and returns (tests run it
-// under Xvfb with Mesa's software OpenGL).
+// Real-time viewer (GLFW window, OpenGL 3.3 core, GLM), drawing every mesh with instanced draws:
+// orbit (left drag), pan (right drag or shift + left drag), zoom (wheel), growth steps on [ and ]
+// (or left/right arrows), shadows from a sun with a 3x3 percentage-closer filtered shadow map
+// (Pirk 6.2.3) toggled with S, R resets the view, Esc or Q quits; the frame time is shown in the
+// title. With a screenshot path it renders `frames` frames into an offscreen framebuffer, writes
+// the image and returns (tests run it under Xvfb with Mesa's software OpenGL).
 #include <string>
 #include <vector>
 
+#include "graphics/instanced_mesh.hpp"
 #include "graphics/triangle_mesh.hpp"
 
 namespace fspm::graphics {
@@ -40,5 +41,13 @@ bool viewer_available();
 ViewerStats run_viewer(const std::vector<TriangleMesh>& steps, const std::vector<double>& labels,
                        const ViewerOptions& options,
                        const std::vector<TriangleMesh>& coarse_steps = {});
+
+// Instanced steps (substructures of compressed graphs, scenes of many plants): each shared mesh
+// is uploaded once and drawn with one instanced draw call (glDrawElementsInstanced) per mesh,
+// per-instance matrices in a vertex buffer. Colours by attribute use the mesh's own values (the
+// "order" of a substructure is relative to its base). Same errors as above.
+ViewerStats run_instanced_viewer(const std::vector<InstancedMesh>& steps,
+                                 const std::vector<double>& labels, const ViewerOptions& options,
+                                 const std::vector<InstancedMesh>& coarse_steps = {});
 
 }  // namespace fspm::graphics

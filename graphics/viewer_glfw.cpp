@@ -27,8 +27,9 @@ constexpr int kShadowSize = 2048;
 
 const char* kShadowVs = R"(#version 330 core
 layout(location = 0) in vec3 position;
+layout(location = 3) in mat4 model;  // per instance
 uniform mat4 light_mvp;
-void main() { gl_Position = light_mvp * vec4(position, 1.0); }
+void main() { gl_Position = light_mvp * model * vec4(position, 1.0); }
 )";
 const char* kShadowFs = R"(#version 330 core
 void main() {}
@@ -37,6 +38,7 @@ const char* kSceneVs = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec3 color;
+layout(location = 3) in mat4 model;  // per instance: rotation times uniform scale, translation
 uniform mat4 mvp;
 uniform mat4 light_mvp;
 out vec3 v_normal;
@@ -44,11 +46,12 @@ out vec3 v_color;
 out vec3 v_world;
 out vec4 v_light;
 void main() {
-  v_normal = normal;
+  vec4 world = model * vec4(position, 1.0);
+  v_normal = mat3(model) * normal;  // uniform scale: no inverse transpose needed
   v_color = color;
-  v_world = position;
-  v_light = light_mvp * vec4(position, 1.0);
-  gl_Position = mvp * vec4(position, 1.0);
+  v_world = world.xyz;
+  v_light = light_mvp * world;
+  gl_Position = mvp * world;
 }
 )";
 const char* kSceneFs = R"(#version 330 core
@@ -123,21 +126,97 @@ glm::vec3 colormap(float t) {  // blue -> cyan -> green -> yellow -> red, as the
   return {0, x, 1};
 }
 
-struct GpuStep {
-  GLuint vao = 0, vbo = 0, ibo = 0;
+// One shared mesh on the GPU: interleaved position, normal, colour, indices, and a buffer of
+// per-instance model matrices (attribute locations 3-6, advanced once per instance).
+struct GpuMesh {
+  GLuint vao = 0, vbo = 0, ibo = 0, instance_vbo = 0;
   GLsizei indices = 0;
-  std::size_t triangles = 0;
+  GLsizei instances = 0;
+};
+
+struct GpuStep {
+  std::vector<GpuMesh> meshes;
+  std::size_t triangles = 0;  // of the explicit scene
 };
 
 struct Scene {
   glm::vec3 lo{0.0f}, hi{0.0f};
 };
 
-// Interleaved position, normal, colour; a ground quad is appended under the scene.
-GpuStep upload(const TriangleMesh& mesh, const ViewerOptions& o, float value_lo, float value_hi,
-               const Scene& scene) {
+// A step as the viewer needs it: each mesh with the model matrices of its instances.
+struct StepRef {
+  std::vector<const TriangleMesh*> meshes;
+  std::vector<std::vector<glm::mat4>> models;  // one list per mesh
+};
+
+StepRef step_ref(const TriangleMesh& mesh) { return {{&mesh}, {{glm::mat4(1.0f)}}}; }
+
+StepRef step_ref(const InstancedMesh& scene) {
+  StepRef r;
+  std::vector<int> slot(scene.meshes.size(), -1);
+  for (const MeshInstance& inst : scene.instances) {
+    if (slot[inst.mesh] < 0) {
+      slot[inst.mesh] = static_cast<int>(r.meshes.size());
+      r.meshes.push_back(&scene.meshes[inst.mesh]);
+      r.models.emplace_back();
+    }
+    const Eigen::Matrix4f m = inst.matrix();  // column-major, as glm
+    r.models[static_cast<std::size_t>(slot[inst.mesh])].push_back(glm::make_mat4(m.data()));
+  }
+  return r;
+}
+
+void bounds(const StepRef& step, glm::vec3& lo, glm::vec3& hi) {
+  for (std::size_t k = 0; k < step.meshes.size(); ++k) {
+    for (const glm::mat4& model : step.models[k]) {
+      for (const auto& p : step.meshes[k]->positions) {
+        const glm::vec3 q = glm::vec3(model * glm::vec4(p.x(), p.y(), p.z(), 1.0f));
+        lo = glm::min(lo, q);
+        hi = glm::max(hi, q);
+      }
+    }
+  }
+}
+
+GpuMesh upload_raw(const std::vector<float>& v, const std::vector<std::uint32_t>& idx,
+                   const std::vector<glm::mat4>& models) {
+  GpuMesh g;
+  glGenVertexArrays(1, &g.vao);
+  glBindVertexArray(g.vao);
+  glGenBuffers(1, &g.vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, g.vbo);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(float)), v.data(),
+               GL_STATIC_DRAW);
+  glGenBuffers(1, &g.ibo);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.ibo);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(idx.size() * 4), idx.data(),
+               GL_STATIC_DRAW);
+  for (GLuint a = 0; a < 3; ++a) {
+    glEnableVertexAttribArray(a);
+    glVertexAttribPointer(a, 3, GL_FLOAT, GL_FALSE, 9 * sizeof(float),
+                          reinterpret_cast<const void*>(static_cast<std::uintptr_t>(a * 12)));
+  }
+  glGenBuffers(1, &g.instance_vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, g.instance_vbo);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(models.size() * sizeof(glm::mat4)),
+               models.data(), GL_STATIC_DRAW);
+  for (GLuint c = 0; c < 4; ++c) {  // a mat4 attribute takes four vec4 locations
+    glEnableVertexAttribArray(3 + c);
+    glVertexAttribPointer(3 + c, 4, GL_FLOAT, GL_FALSE, sizeof(glm::mat4),
+                          reinterpret_cast<const void*>(static_cast<std::uintptr_t>(c * 16)));
+    glVertexAttribDivisor(3 + c, 1);
+  }
+  glBindVertexArray(0);
+  g.indices = static_cast<GLsizei>(idx.size());
+  g.instances = static_cast<GLsizei>(models.size());
+  return g;
+}
+
+// Interleaved position, normal, colour of one shared mesh.
+GpuMesh upload(const TriangleMesh& mesh, const std::vector<glm::mat4>& models,
+               const ViewerOptions& o, float value_lo, float value_hi) {
   std::vector<float> v;
-  v.reserve((mesh.vertex_count() + 4) * 9);
+  v.reserve(mesh.vertex_count() * 9);
   std::vector<glm::vec3> colors(mesh.vertex_count(), glm::vec3(0.45f, 0.32f, 0.20f));
   if (!o.color_by.empty()) {
     const auto a = mesh.attribute(o.color_by);
@@ -156,39 +235,45 @@ GpuStep upload(const TriangleMesh& mesh, const ViewerOptions& o, float value_lo,
              {p.x(), p.y(), p.z(), n.x(), n.y(), n.z(), colors[i].r, colors[i].g, colors[i].b});
   }
   std::vector<std::uint32_t> idx;
-  idx.reserve(mesh.triangle_count() * 3 + 6);
+  idx.reserve(mesh.triangle_count() * 3);
   for (const auto& t : mesh.triangles) idx.insert(idx.end(), t.begin(), t.end());
+  return upload_raw(v, idx, models);
+}
+
+GpuStep upload(const StepRef& step, const ViewerOptions& o, float value_lo, float value_hi) {
+  GpuStep g;
+  for (std::size_t k = 0; k < step.meshes.size(); ++k) {
+    if (step.meshes[k]->empty() || step.models[k].empty()) continue;
+    g.meshes.push_back(upload(*step.meshes[k], step.models[k], o, value_lo, value_hi));
+    g.triangles += step.meshes[k]->triangle_count() * step.models[k].size();
+  }
+  return g;
+}
+
+// A ground quad under the scene, drawn as one instance.
+GpuMesh upload_ground(const Scene& scene) {
   const glm::vec3 size = glm::max(scene.hi - scene.lo, glm::vec3(0.1f));
   const float half = 0.9f * std::max(size.x, size.y) + 0.4f * size.z;
   const glm::vec3 c = 0.5f * (scene.lo + scene.hi);
-  const auto base = static_cast<std::uint32_t>(mesh.vertex_count());
+  std::vector<float> v;
   for (int k = 0; k < 4; ++k) {
     const float x = (k == 1 || k == 2) ? half : -half;
     const float y = (k >= 2) ? half : -half;
     v.insert(v.end(), {c.x + x, c.y + y, scene.lo.z, 0, 0, 1, 0.55f, 0.62f, 0.45f});
   }
-  idx.insert(idx.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+  return upload_raw(v, {0, 1, 2, 0, 2, 3}, {glm::mat4(1.0f)});
+}
 
-  GpuStep g;
-  glGenVertexArrays(1, &g.vao);
+void draw(const GpuMesh& g) {
   glBindVertexArray(g.vao);
-  glGenBuffers(1, &g.vbo);
-  glBindBuffer(GL_ARRAY_BUFFER, g.vbo);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(float)), v.data(),
-               GL_STATIC_DRAW);
-  glGenBuffers(1, &g.ibo);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.ibo);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(idx.size() * 4), idx.data(),
-               GL_STATIC_DRAW);
-  for (GLuint a = 0; a < 3; ++a) {
-    glEnableVertexAttribArray(a);
-    glVertexAttribPointer(a, 3, GL_FLOAT, GL_FALSE, 9 * sizeof(float),
-                          reinterpret_cast<const void*>(static_cast<std::uintptr_t>(a * 12)));
-  }
-  glBindVertexArray(0);
-  g.indices = static_cast<GLsizei>(idx.size());
-  g.triangles = mesh.triangle_count();
-  return g;
+  glDrawElementsInstanced(GL_TRIANGLES, g.indices, GL_UNSIGNED_INT, nullptr, g.instances);
+}
+
+void release(GpuMesh& g) {
+  glDeleteBuffers(1, &g.vbo);
+  glDeleteBuffers(1, &g.ibo);
+  glDeleteBuffers(1, &g.instance_vbo);
+  glDeleteVertexArrays(1, &g.vao);
 }
 
 struct Camera {
@@ -276,14 +361,18 @@ struct GlfwSession {
 
 bool viewer_available() { return true; }
 
-ViewerStats run_viewer(const std::vector<TriangleMesh>& steps, const std::vector<double>& labels,
-                       const ViewerOptions& o, const std::vector<TriangleMesh>& coarse_steps) {
+namespace {
+
+ViewerStats view(const std::vector<StepRef>& steps, const std::vector<double>& labels,
+                 const ViewerOptions& o, const std::vector<StepRef>& coarse_steps) {
   if (steps.empty()) throw ValueError("nothing to view");
   if (!coarse_steps.empty() && coarse_steps.size() != steps.size()) {
     throw ValueError("coarse meshes must match the growth steps one to one");
   }
   if (!o.color_by.empty()) {
-    for (const auto& m : steps) (void)m.attribute(o.color_by);
+    for (const auto& step : steps) {
+      for (const auto* m : step.meshes) (void)m->attribute(o.color_by);
+    }
   }
   if (!o.screenshot.empty()) check_image_path(o.screenshot);
   if (o.width < 1 || o.height < 1 || o.frames < 1) throw ValueError("bad viewer size or frames");
@@ -292,13 +381,11 @@ ViewerStats run_viewer(const std::vector<TriangleMesh>& steps, const std::vector
   scene.lo = glm::vec3(1e30f);
   scene.hi = glm::vec3(-1e30f);
   float value_lo = 1e30f, value_hi = -1e30f;
-  for (const auto& m : steps) {
-    if (m.empty()) continue;
-    const auto lo = m.bbox_min(), hi = m.bbox_max();
-    scene.lo = glm::min(scene.lo, glm::vec3(lo.x(), lo.y(), lo.z()));
-    scene.hi = glm::max(scene.hi, glm::vec3(hi.x(), hi.y(), hi.z()));
-    if (!o.color_by.empty()) {
-      for (float x : m.attribute(o.color_by)) {
+  for (const auto& step : steps) {
+    bounds(step, scene.lo, scene.hi);
+    if (o.color_by.empty()) continue;
+    for (const auto* m : step.meshes) {
+      for (float x : m->attribute(o.color_by)) {
         value_lo = std::min(value_lo, x);
         value_hi = std::max(value_hi, x);
       }
@@ -336,9 +423,10 @@ ViewerStats run_viewer(const std::vector<TriangleMesh>& steps, const std::vector
   const GLuint shadow_program = program(kShadowVs, kShadowFs);
   const GLuint scene_program = program(kSceneVs, kSceneFs);
   std::vector<GpuStep> gpu;
-  for (const auto& m : steps) gpu.push_back(upload(m, o, value_lo, value_hi, scene));
+  for (const auto& step : steps) gpu.push_back(upload(step, o, value_lo, value_hi));
   std::vector<GpuStep> gpu_coarse;
-  for (const auto& m : coarse_steps) gpu_coarse.push_back(upload(m, o, value_lo, value_hi, scene));
+  for (const auto& step : coarse_steps) gpu_coarse.push_back(upload(step, o, value_lo, value_hi));
+  GpuMesh ground = upload_ground(scene);
 
   GLuint shadow_tex = 0, shadow_fbo = 0;
   glGenTextures(1, &shadow_tex);
@@ -398,8 +486,8 @@ ViewerStats run_viewer(const std::vector<TriangleMesh>& steps, const std::vector
       glUseProgram(shadow_program);
       glUniformMatrix4fv(glGetUniformLocation(shadow_program, "light_mvp"), 1, GL_FALSE,
                          glm::value_ptr(light_mvp));
-      glBindVertexArray(g.vao);
-      glDrawElements(GL_TRIANGLES, g.indices, GL_UNSIGNED_INT, nullptr);
+      for (const GpuMesh& m : g.meshes) draw(m);
+      draw(ground);
       glDisable(GL_POLYGON_OFFSET_FILL);
     }
     int fw = o.width, fh = o.height;
@@ -426,8 +514,8 @@ ViewerStats run_viewer(const std::vector<TriangleMesh>& steps, const std::vector
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, shadow_tex);
     glUniform1i(glGetUniformLocation(scene_program, "shadow_map"), 0);
-    glBindVertexArray(g.vao);
-    glDrawElements(GL_TRIANGLES, g.indices, GL_UNSIGNED_INT, nullptr);
+    for (const GpuMesh& m : g.meshes) draw(m);
+    draw(ground);
     glFinish();
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -470,10 +558,9 @@ ViewerStats run_viewer(const std::vector<TriangleMesh>& steps, const std::vector
   }
   for (auto& g : gpu_coarse) gpu.push_back(g);
   for (auto& g : gpu) {
-    glDeleteBuffers(1, &g.vbo);
-    glDeleteBuffers(1, &g.ibo);
-    glDeleteVertexArrays(1, &g.vao);
+    for (auto& m : g.meshes) release(m);
   }
+  release(ground);
   glDeleteFramebuffers(1, &shadow_fbo);
   glDeleteTextures(1, &shadow_tex);
   if (offscreen) {
@@ -485,6 +572,25 @@ ViewerStats run_viewer(const std::vector<TriangleMesh>& steps, const std::vector
   glDeleteProgram(scene_program);
   glfwDestroyWindow(window);
   return stats;
+}
+
+}  // namespace
+
+ViewerStats run_viewer(const std::vector<TriangleMesh>& steps, const std::vector<double>& labels,
+                       const ViewerOptions& o, const std::vector<TriangleMesh>& coarse_steps) {
+  std::vector<StepRef> refs, coarse;
+  for (const auto& m : steps) refs.push_back(step_ref(m));
+  for (const auto& m : coarse_steps) coarse.push_back(step_ref(m));
+  return view(refs, labels, o, coarse);
+}
+
+ViewerStats run_instanced_viewer(const std::vector<InstancedMesh>& steps,
+                                 const std::vector<double>& labels, const ViewerOptions& o,
+                                 const std::vector<InstancedMesh>& coarse_steps) {
+  std::vector<StepRef> refs, coarse;
+  for (const auto& m : steps) refs.push_back(step_ref(m));
+  for (const auto& m : coarse_steps) coarse.push_back(step_ref(m));
+  return view(refs, labels, o, coarse);
 }
 
 }  // namespace fspm::graphics

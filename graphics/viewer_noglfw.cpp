@@ -10,4 +10,9 @@ ViewerStats run_viewer(const std::vector<TriangleMesh>&, const std::vector<doubl
   throw ValueError("fspm was built without the viewer (FSPM_WITH_VIEWER=OFF)");
 }
 
+ViewerStats run_instanced_viewer(const std::vector<InstancedMesh>&, const std::vector<double>&,
+                                 const ViewerOptions&, const std::vector<InstancedMesh>&) {
+  throw ValueError("fspm was built without the viewer (FSPM_WITH_VIEWER=OFF)");
+}
+
 }  // namespace fspm::graphics

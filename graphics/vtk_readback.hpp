@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "graphics/triangle_mesh.hpp"
+
 namespace fspm::graphics {
 
 struct PolyDataInfo {
@@ -22,5 +24,19 @@ bool vtk_available();
 
 // Throws IoError when VTK cannot read the file, ValueError when built without VTK.
 PolyDataInfo read_vtp_with_vtk(const std::string& path);
+
+// A .vtp back as a TriangleMesh for the viewer: points, the Normals and TCoords arrays (normals
+// recomputed per polygon when absent), the "material" cell array, and every other one-component
+// point array as a vertex attribute; polygons of more than three points are fanned. Throws
+// IoError when VTK cannot read it, ValueError when built without VTK.
+TriangleMesh read_vtp_mesh(const std::string& path);
+
+// A ParaView .pvd collection: its data sets (paths resolved against the .pvd's directory) with
+// their time steps, sorted by time. Throws IoError when unreadable, ParseError when malformed.
+struct PvdStep {
+  double time = 0.0;
+  std::string path;
+};
+std::vector<PvdStep> read_pvd_file(const std::string& path);
 
 }  // namespace fspm::graphics

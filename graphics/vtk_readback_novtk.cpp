@@ -9,4 +9,8 @@ PolyDataInfo read_vtp_with_vtk(const std::string& path) {
   throw ValueError("fspm was built without VTK (FSPM_WITH_VTK=OFF)", path);
 }
 
+TriangleMesh read_vtp_mesh(const std::string& path) {
+  throw ValueError("fspm was built without VTK (FSPM_WITH_VTK=OFF): cannot read .vtp", path);
+}
+
 }  // namespace fspm::graphics

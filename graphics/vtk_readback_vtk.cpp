@@ -1,12 +1,14 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include <Eigen/Geometry>
 #include <filesystem>
 
 #include "fspm/error.hpp"
@@ -52,6 +54,75 @@ PolyDataInfo read_vtp_with_vtk(const std::string& path) {
   collect(poly->GetPointData(), info.point_data, &info.point_components);
   collect(poly->GetCellData(), info.cell_data, nullptr);
   return info;
+}
+
+TriangleMesh read_vtp_mesh(const std::string& path) {
+  if (!std::filesystem::exists(path)) throw IoError("no such file", path);
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->SetFileName(path.c_str());
+  if (!reader->CanReadFile(path.c_str())) throw IoError("VTK cannot read this .vtp file", path);
+  reader->Update();
+  if (reader->GetErrorCode() != 0) throw IoError("VTK failed reading this .vtp file", path);
+  vtkPolyData* poly = reader->GetOutput();
+  TriangleMesh mesh;
+  const vtkIdType nv = poly->GetNumberOfPoints();
+  mesh.positions.resize(static_cast<std::size_t>(nv));
+  for (vtkIdType i = 0; i < nv; ++i) {
+    double p[3];
+    poly->GetPoint(i, p);
+    mesh.positions[i] = Eigen::Vector3d(p[0], p[1], p[2]).cast<float>();
+  }
+  vtkPointData* pd = poly->GetPointData();
+  vtkDataArray* normals = pd->GetArray("Normals");
+  vtkDataArray* tcoords = pd->GetArray("TCoords");
+  mesh.uvs.assign(mesh.positions.size(), Eigen::Vector2f::Zero());
+  if (tcoords != nullptr && tcoords->GetNumberOfComponents() == 2) {
+    for (vtkIdType i = 0; i < nv; ++i) {
+      mesh.uvs[i] = {static_cast<float>(tcoords->GetComponent(i, 0)),
+                     static_cast<float>(tcoords->GetComponent(i, 1))};
+    }
+  }
+  vtkDataArray* material = poly->GetCellData()->GetArray("material");
+  vtkCellArray* cells = poly->GetPolys();
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c) {
+    cells->GetCellAtId(c, ids);
+    const Material m = material != nullptr && material->GetComponent(c, 0) == 1.0 ? Material::kLeaf
+                                                                                  : Material::kBark;
+    for (vtkIdType k = 1; k + 1 < ids->GetNumberOfIds(); ++k) {  // a fan over the polygon
+      mesh.triangles.push_back({static_cast<std::uint32_t>(ids->GetId(0)),
+                                static_cast<std::uint32_t>(ids->GetId(k)),
+                                static_cast<std::uint32_t>(ids->GetId(k + 1))});
+      mesh.materials.push_back(m);
+    }
+  }
+  mesh.normals.assign(mesh.positions.size(), Eigen::Vector3f::Zero());
+  if (normals != nullptr && normals->GetNumberOfComponents() == 3) {
+    for (vtkIdType i = 0; i < nv; ++i) {
+      mesh.normals[i] = Eigen::Vector3f(static_cast<float>(normals->GetComponent(i, 0)),
+                                        static_cast<float>(normals->GetComponent(i, 1)),
+                                        static_cast<float>(normals->GetComponent(i, 2)));
+    }
+  } else {  // area-weighted vertex normals
+    for (const auto& t : mesh.triangles) {
+      const Eigen::Vector3f n = (mesh.positions[t[1]] - mesh.positions[t[0]])
+                                    .cross(mesh.positions[t[2]] - mesh.positions[t[0]]);
+      for (auto i : t) mesh.normals[i] += n;
+    }
+    for (auto& n : mesh.normals) {
+      n = n.norm() > 0.0f ? Eigen::Vector3f(n.normalized()) : Eigen::Vector3f::UnitZ();
+    }
+  }
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a) {
+    vtkDataArray* array = pd->GetArray(a);
+    if (array == nullptr || array->GetName() == nullptr || array == normals || array == tcoords ||
+        array->GetNumberOfComponents() != 1) {
+      continue;
+    }
+    std::vector<float>& values = mesh.add_attribute(array->GetName());
+    for (vtkIdType i = 0; i < nv; ++i) values[i] = static_cast<float>(array->GetComponent(i, 0));
+  }
+  return mesh;
 }
 
 }  // namespace fspm::graphics

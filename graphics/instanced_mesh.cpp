@@ -1,0 +1,240 @@
+#include "graphics/instanced_mesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "fspm/error.hpp"
+
+namespace fspm::graphics {
+
+Eigen::Matrix4f MeshInstance::matrix() const {
+  Eigen::Matrix4f m = Eigen::Matrix4f::Identity();
+  m.topLeftCorner<3, 3>() = linear;
+  m.topRightCorner<3, 1>() = translation;
+  return m;
+}
+
+InstancedMesh InstancedMesh::single(TriangleMesh mesh) {
+  InstancedMesh out;
+  out.meshes.push_back(std::move(mesh));
+  out.instances.push_back(MeshInstance{});
+  return out;
+}
+
+std::size_t InstancedMesh::vertex_count() const {
+  std::size_t n = 0;
+  for (const auto& i : instances) n += meshes[i.mesh].vertex_count();
+  return n;
+}
+
+std::size_t InstancedMesh::triangle_count() const {
+  std::size_t n = 0;
+  for (const auto& i : instances) n += meshes[i.mesh].triangle_count();
+  return n;
+}
+
+std::size_t InstancedMesh::stored_vertex_count() const {
+  std::size_t n = 0;
+  for (const auto& m : meshes) n += m.vertex_count();
+  return n;
+}
+
+std::size_t InstancedMesh::stored_triangle_count() const {
+  std::size_t n = 0;
+  for (const auto& m : meshes) n += m.triangle_count();
+  return n;
+}
+
+void InstancedMesh::bounds(Eigen::Vector3f& lo, Eigen::Vector3f& hi) const {
+  lo = Eigen::Vector3f::Constant(std::numeric_limits<float>::infinity());
+  hi = -lo;
+  for (const auto& inst : instances) {
+    for (const auto& p : meshes[inst.mesh].positions) {
+      const Eigen::Vector3f q = inst.linear * p + inst.translation;
+      lo = lo.cwiseMin(q);
+      hi = hi.cwiseMax(q);
+    }
+  }
+  if (!(lo.x() <= hi.x())) lo = hi = Eigen::Vector3f::Zero();
+}
+
+TriangleMesh InstancedMesh::flatten() const {
+  const std::size_t nv = vertex_count();
+  if (nv > std::numeric_limits<std::uint32_t>::max()) {
+    throw ValueError("the explicit mesh would have " + std::to_string(nv) +
+                     " vertices, more than 32-bit indices allow; use .glb (instanced)");
+  }
+  TriangleMesh out;
+  out.positions.reserve(nv);
+  out.normals.reserve(nv);
+  out.uvs.reserve(nv);
+  out.triangles.reserve(triangle_count());
+  out.materials.reserve(triangle_count());
+  std::vector<std::string> names;
+  for (const auto& m : meshes) {
+    for (const auto& a : m.attributes) {
+      if (std::find(names.begin(), names.end(), a.name) == names.end()) names.push_back(a.name);
+    }
+  }
+  for (const auto& name : names) {
+    out.attributes.push_back({name, {}});
+    out.attributes.back().values.reserve(nv);
+  }
+  for (const auto& inst : instances) {
+    const TriangleMesh& m = meshes[inst.mesh];
+    const auto offset = static_cast<std::uint32_t>(out.positions.size());
+    for (const auto& p : m.positions) out.positions.push_back(inst.linear * p + inst.translation);
+    for (const auto& n : m.normals) out.normals.push_back((inst.linear * n).normalized());
+    out.uvs.insert(out.uvs.end(), m.uvs.begin(), m.uvs.end());
+    for (const auto& t : m.triangles) {
+      out.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    }
+    out.materials.insert(out.materials.end(), m.materials.begin(), m.materials.end());
+    for (auto& column : out.attributes) {
+      bool found = false;
+      for (const auto& a : m.attributes) {
+        if (a.name != column.name) continue;
+        found = true;
+        if (column.name == kAttributeOrder) {
+          for (float v : a.values) column.values.push_back(v + inst.order_offset);
+        } else {
+          column.values.insert(column.values.end(), a.values.begin(), a.values.end());
+        }
+        break;
+      }
+      if (!found) column.values.resize(out.positions.size(), 0.0f);
+    }
+  }
+  return out;
+}
+
+namespace {
+
+// The prototype with a zero-length internode stub on every node a child grows from: the mesher
+// then ends its tubes there, as it does in the explicit tree where the child's first internode
+// is a second child of that node. Stubs have no segment, so they add no geometry.
+TreeGraph with_attach_stubs(const InstancedTree::Prototype& p) {
+  TreeGraph g = p.geometry;
+  std::vector<char> stubbed(g.size(), 0);
+  for (const auto& c : p.children) {
+    if (stubbed[c.attach]) continue;
+    stubbed[c.attach] = 1;
+    NodeData d;
+    d.start = d.end = g.end(c.attach);
+    d.direction = g.direction(c.attach);
+    d.length = 0.0;
+    d.radius = g.radius(c.attach);
+    d.birth_time = g.birth_time(c.attach);
+    d.physiological_age = g.physiological_age(c.attach);
+    d.order = g.order(c.attach);
+    d.kind = OrganKind::kInternode;
+    g.add_node(c.attach, d);
+  }
+  return g;
+}
+
+}  // namespace
+
+InstancedMesh mesh_instanced(const InstancedTree& tree, const MeshOptions& options) {
+  InstancedMesh out;
+  const std::size_t np = tree.prototypes.size();
+  if (np == 0) return out;
+  for (const auto& p : tree.prototypes) {
+    for (const auto& c : p.children) {
+      if (c.prototype >= np) {
+        throw ValueError("instanced tree: child refers to prototype " +
+                         std::to_string(c.prototype) + " of " + std::to_string(np));
+      }
+      if (c.attach >= p.geometry.size()) {
+        throw ValueError("instanced tree: child attached to node " + std::to_string(c.attach) +
+                         " of a prototype with " + std::to_string(p.geometry.size()) + " nodes");
+      }
+    }
+  }
+  MeshOptions o = options;
+  o.camera_m.reset();
+  if (std::isinf(o.max_birth_time)) {
+    // The "age" attribute is measured from the latest birth of the whole plant, as in the
+    // explicit mesh, not of each prototype.
+    double latest = -std::numeric_limits<double>::infinity();
+    for (const auto& p : tree.prototypes) {
+      for (double b : p.geometry.birth_times()) latest = std::max(latest, b);
+    }
+    if (!std::isinf(latest)) o.max_birth_time = latest;
+  }
+  const bool stubs = o.junctions == JunctionMode::kSeparate;
+  out.meshes.reserve(np);
+  for (const auto& p : tree.prototypes) {
+    out.meshes.push_back(stubs && !p.children.empty() ? mesh_tree(with_attach_stubs(p), o)
+                                                      : mesh_tree(p.geometry, o));
+  }
+
+  // Occurrences, parents first; the root prototype stands at the origin.
+  struct Item {
+    std::uint32_t prototype;
+    Eigen::Matrix3d rotation;
+    Eigen::Vector3d translation;
+    float order;
+  };
+  std::vector<Item> queue{{0, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(), 0.0f}};
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const Item item = queue[head];
+    const auto& p = tree.prototypes[item.prototype];
+    // Children of a node born after max_birth_time are filtered with it in the explicit tree.
+    if (!out.meshes[item.prototype].empty()) {
+      MeshInstance inst;
+      inst.mesh = item.prototype;
+      inst.linear = item.rotation.cast<float>();
+      inst.translation = item.translation.cast<float>();
+      inst.order_offset = item.order;
+      out.instances.push_back(inst);
+    }
+    if (queue.size() + p.children.size() > kMaxInstances) {
+      throw ValueError("instanced tree has more than " + std::to_string(kMaxInstances) +
+                       " substructure occurrences");
+    }
+    for (const auto& c : p.children) {
+      if (p.geometry.birth_time(c.attach) > o.max_birth_time) continue;
+      queue.push_back({c.prototype, item.rotation * c.rotation,
+                       item.rotation * c.translation + item.translation, item.order + 1.0f});
+    }
+  }
+  return out;
+}
+
+InstancedMesh place_parts(const std::vector<InstancedMesh>& parts,
+                          const std::vector<PartPlacement>& placements) {
+  InstancedMesh out;
+  std::vector<std::uint32_t> first_mesh;
+  for (const auto& part : parts) {
+    first_mesh.push_back(static_cast<std::uint32_t>(out.meshes.size()));
+    out.meshes.insert(out.meshes.end(), part.meshes.begin(), part.meshes.end());
+  }
+  std::size_t total = 0;
+  for (const auto& pl : placements) {
+    if (pl.part >= parts.size()) {
+      throw ValueError("placement refers to part " + std::to_string(pl.part) + " of " +
+                       std::to_string(parts.size()));
+    }
+    total += parts[pl.part].instances.size();
+  }
+  if (total > kMaxInstances) {
+    throw ValueError("scene has " + std::to_string(total) + " instances, more than " +
+                     std::to_string(kMaxInstances));
+  }
+  out.instances.reserve(total);
+  for (const auto& pl : placements) {
+    for (const auto& inst : parts[pl.part].instances) {
+      MeshInstance placed = inst;
+      placed.mesh = inst.mesh + first_mesh[pl.part];
+      placed.linear = pl.linear * inst.linear;
+      placed.translation = pl.linear * inst.translation + pl.translation;
+      out.instances.push_back(placed);
+    }
+  }
+  return out;
+}
+
+}  // namespace fspm::graphics
