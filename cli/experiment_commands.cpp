@@ -10,10 +10,12 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
+#include "experiments/comparisons.hpp"
 #include "experiments/experiment.hpp"
 #include "experiments/model_factory.hpp"
 #include "experiments/mpi_runner.hpp"
@@ -71,6 +73,11 @@ struct ReportOptions {
   std::string output;
 };
 
+struct CompareOptions {
+  std::string dir;
+  std::size_t jobs = 0;
+};
+
 struct MergeOptions {
   std::string out;
   std::vector<std::string> inputs;
@@ -116,6 +123,34 @@ void emit_slurm(const RunOptions& o, const ex::Experiment& x) {
     std::cout << "wrote " << s.script_path << " (" << s.shards << " shards of " << x.runs()
               << " runs); submit it with: sbatch " << s.script_path << '\n';
   }
+}
+
+// The experiment's comparisons over the runs recorded in `dir` (after fspm run, or after merging
+// shards with fspm compare).
+void compare_runs(const ex::Experiment& x, const std::string& dir, std::size_t jobs, bool quiet) {
+  const ex::ResultsDb db(dir, ex::ResultsDb::Mode::kRead);
+  const std::vector<ex::RunRecord> runs = db.read_all();
+  if (runs.size() < db.info().total_runs && verbosity() > 0) {
+    std::cerr << "fspm: " << db.info().total_runs - runs.size()
+              << " runs are missing; comparing the recorded ones\n";
+  }
+  const ex::ComparisonResults c = ex::run_comparisons(x, runs, dir, jobs);
+  ex::write_comparisons(c, dir);
+  for (const std::string& note : c.notes) std::cerr << "fspm: " << note << '\n';
+  if (!quiet) {
+    std::cout << (fs::path(dir) / ex::kPairsFile).string() << ": " << c.pairs.size()
+              << " pairs compared in " << c.seconds << " s\n";
+    for (const ex::TTestRow& t : c.tests) {
+      std::cout << "t-test " << t.a << " vs " << t.b << " (" << t.group << "): t = " << t.t
+                << ", df = " << t.df << ", p = " << t.p
+                << (t.significant() ? " (significant)" : " (not significant)") << '\n';
+    }
+  }
+}
+
+// The experiment a result database was made from, read back from its stored text.
+ex::Experiment stored_experiment(const ex::ResultsDb& db) {
+  return ex::parse_experiment(db.info().experiment_text, db.info().experiment_path);
 }
 
 void run_command(const RunOptions& o) {
@@ -172,6 +207,9 @@ void run_command(const RunOptions& o) {
     if (s.already_done > 0) std::cout << ", " << s.already_done << " were already done";
     std::cout << '\n';
   }
+  if (!s.interrupted && r.shard_count == 1 && !x.comparisons.empty()) {
+    compare_runs(x, r.out_dir, o.jobs, o.json);
+  }
   if (s.interrupted) {
     std::cerr << "fspm: interrupted; " << (s.shard_runs - s.already_done - s.ran)
               << " runs are missing, continue with --resume\n";
@@ -205,9 +243,39 @@ void show_command(const ShowOptions& o) {
                        : ex::results_summary_text(db.info(), runs));
 }
 
+void compare_command(const CompareOptions& o) {
+  ex::Experiment x;
+  {
+    const ex::ResultsDb db(o.dir, ex::ResultsDb::Mode::kRead);
+    x = stored_experiment(db);
+  }
+  if (x.comparisons.empty()) {
+    throw ValueError("compare: the experiment of " + o.dir + " has no [[comparison]]");
+  }
+  compare_runs(x, o.dir, o.jobs, false);
+}
+
 void report_command(const ReportOptions& o) {
   const ex::ResultsDb db(o.dir, ex::ResultsDb::Mode::kRead);
-  const std::string md = ex::markdown_report(db.info(), db.read_all());
+  const std::vector<ex::RunRecord> runs = db.read_all();
+  std::string md = ex::markdown_report(db.info(), runs);
+  std::optional<ex::Experiment> x;
+  try {
+    x = stored_experiment(db);
+  } catch (const Error& e) {
+    // The report's main tables need only the database; the extras need the model files too.
+    md += "\nNote: summary tables and comparisons left out: " + std::string(e.what()) + '\n';
+  }
+  if (x) {
+    md += ex::summary_tables_markdown(*x, runs);
+    ex::ComparisonResults c;
+    if (!x->comparisons.empty() && ex::read_comparisons(o.dir, c)) {
+      c.tests = ex::comparison_ttests(*x, c.pairs);
+      md += "\n" + ex::comparisons_markdown(*x, c);
+    } else if (!x->comparisons.empty()) {
+      md += "\nThe comparisons have not been computed yet: run `fspm compare " + o.dir + "`.\n";
+    }
+  }
   const std::string path = o.output.empty() ? (fs::path(o.dir) / "report.md").string() : o.output;
   write_file_atomically(path, [&](std::ostream& out) { out << md; });
   std::cout << path << '\n';
@@ -246,6 +314,14 @@ void add_experiment_commands(CLI::App& app) {
   r->add_option("--slurm-file", run->slurm_file, "--emit-slurm: script path (default NAME.slurm)");
   r->add_option("--slurm-time", run->slurm_time, "--emit-slurm: time limit of one task");
   r->callback([run] { run_command(*run); });
+
+  auto compare = std::make_shared<CompareOptions>();
+  CLI::App* cmp = app.add_subcommand(
+      "compare", "Compute an experiment's [[comparison]] distances and t-tests over its results");
+  cmp->add_option("DIR", compare->dir, "Output directory of fspm run (or of results merge)")
+      ->required();
+  cmp->add_option("-j,--jobs", compare->jobs, "Threads (default: one per hardware thread)");
+  cmp->callback([compare] { compare_command(*compare); });
 
   auto report = std::make_shared<ReportOptions>();
   CLI::App* rep = app.add_subcommand("report", "Write DIR/report.md: tables of a sweep's results");

@@ -225,6 +225,156 @@ class Reader {
   std::string path_;
 };
 
+std::vector<std::string> string_list(const Reader& r, const std::string& key,
+                                     const toml::node& node) {
+  std::vector<std::string> out;
+  for (const toml::node& v : r.array(key, node, 0)) out.push_back(r.string(key, v));
+  return out;
+}
+
+// A table of parameter values naming parameters of the experiment.
+RunFilter run_filter(const Reader& r, const std::string& key, const toml::node& node,
+                     const Experiment& x) {
+  if (!node.is_table())
+    r.fail(key, node, "expected a table of parameter values, e.g. { set = \"T\" }");
+  RunFilter filter;
+  for (auto&& [k, v] : *node.as_table()) {
+    const std::string name(k.str());
+    if (!x.parameter_lines.contains(name)) {
+      r.fail(key + "." + name, v, "not a parameter of this experiment (fixed, swept or sampled)");
+    }
+    filter[name] = r.scalar(key + "." + name, v);
+  }
+  return filter;
+}
+
+std::vector<std::string> parameter_names(const Reader& r, const std::string& key,
+                                         const toml::node& node, const Experiment& x) {
+  std::vector<std::string> names = string_list(r, key, node);
+  for (const std::string& name : names) {
+    if (!x.parameter_lines.contains(name)) {
+      r.fail(key, node, "'" + name + "' is not a parameter of this experiment");
+    }
+  }
+  return names;
+}
+
+const toml::array& table_array(const Reader& r, const toml::table& root, const std::string& name) {
+  static const toml::array kEmpty;
+  const toml::node* node = root.get(name);
+  if (node == nullptr) return kEmpty;
+  if (!node->is_array_of_tables())
+    r.fail(name, *node, "expected an array of tables [[" + name + "]]");
+  return *node->as_array();
+}
+
+// [distance], [[comparison]], [[ttest]], [[table]] (docs/experiments.md).
+void parse_comparisons(const Reader& r, const toml::table& root, Experiment& x) {
+  if (const toml::table* d = r.table(root, "distance", false)) {
+    r.only_keys("distance", *d, {"cost", "attributes", "main_skeleton_radius_m"});
+    if (const toml::node* n = d->get("cost")) {
+      x.distance.cost = r.string("distance.cost", *n);
+      if (x.distance.cost != "topological" && x.distance.cost != "absolute" &&
+          x.distance.cost != "standardized") {
+        r.fail("distance.cost", *n, "expected topological, absolute or standardized");
+      }
+    }
+    if (const toml::node* n = d->get("attributes")) {
+      x.distance.attributes = string_list(r, "distance.attributes", *n);
+    }
+    if (const toml::node* n = d->get("main_skeleton_radius_m")) {
+      const double v = r.number("distance.main_skeleton_radius_m", *n);
+      if (v < 0.0) r.fail("distance.main_skeleton_radius_m", *n, "must not be negative");
+      x.distance.main_skeleton_radius_m = v;
+    }
+  }
+  for (const toml::node& node : table_array(r, root, "comparison")) {
+    const toml::table& t = *node.as_table();
+    r.only_keys("comparison", t, {"name", "a", "b", "where", "within", "pairs"});
+    ComparisonSpec c;
+    c.line = Reader::line_of(node);
+    const toml::node* name = t.get("name");
+    if (name == nullptr) throw ValueError("comparison.name: missing", x.path, c.line);
+    c.name = r.string("comparison.name", *name);
+    for (const ComparisonSpec& other : x.comparisons) {
+      if (other.name == c.name) r.fail("comparison.name", *name, "given twice");
+    }
+    for (const char* side : {"a", "b"}) {
+      const toml::node* n = t.get(side);
+      if (n == nullptr) {
+        throw ValueError(
+            "comparison." + std::string(side) + ": missing (a filter such as { set = \"T\" })",
+            x.path, c.line);
+      }
+      (side[0] == 'a' ? c.a : c.b) = run_filter(r, "comparison." + std::string(side), *n, x);
+    }
+    if (const toml::node* n = t.get("where")) c.where = run_filter(r, "comparison.where", *n, x);
+    if (const toml::node* n = t.get("within")) {
+      c.within = parameter_names(r, "comparison.within", *n, x);
+    }
+    if (const toml::node* n = t.get("pairs")) {
+      c.pairs = static_cast<std::size_t>(r.integer("comparison.pairs", *n, 1));
+    }
+    x.comparisons.push_back(std::move(c));
+  }
+  for (const toml::node& node : table_array(r, root, "ttest")) {
+    const toml::table& t = *node.as_table();
+    r.only_keys("ttest", t, {"a", "b", "welch", "alternative", "alpha"});
+    TTestSpec test;
+    test.line = Reader::line_of(node);
+    for (const char* side : {"a", "b"}) {
+      const toml::node* n = t.get(side);
+      if (n == nullptr) {
+        throw ValueError("ttest." + std::string(side) + ": missing (the name of a comparison)",
+                         x.path, test.line);
+      }
+      const std::string name = r.string("ttest." + std::string(side), *n);
+      bool known = false;
+      for (const ComparisonSpec& c : x.comparisons) known = known || c.name == name;
+      if (!known)
+        r.fail("ttest." + std::string(side), *n, "no [[comparison]] named '" + name + "'");
+      (side[0] == 'a' ? test.a : test.b) = name;
+    }
+    if (const toml::node* n = t.get("welch")) {
+      if (!n->is_boolean()) r.fail("ttest.welch", *n, "expected true or false");
+      test.welch = n->value<bool>().value();
+    }
+    if (const toml::node* n = t.get("alternative")) {
+      test.alternative = r.string("ttest.alternative", *n);
+      if (test.alternative != "two-sided" && test.alternative != "less" &&
+          test.alternative != "greater") {
+        r.fail("ttest.alternative", *n, "expected two-sided, less or greater");
+      }
+    }
+    if (const toml::node* n = t.get("alpha")) {
+      test.alpha = r.number("ttest.alpha", *n);
+      if (!(test.alpha > 0.0 && test.alpha < 1.0)) r.fail("ttest.alpha", *n, "must lie in (0, 1)");
+    }
+    x.ttests.push_back(std::move(test));
+  }
+  for (const toml::node& node : table_array(r, root, "table")) {
+    const toml::table& t = *node.as_table();
+    r.only_keys("table", t, {"title", "where", "by", "metrics"});
+    SummaryTableSpec s;
+    s.line = Reader::line_of(node);
+    if (const toml::node* n = t.get("title")) s.title = r.string("table.title", *n);
+    if (const toml::node* n = t.get("where")) s.where = run_filter(r, "table.where", *n, x);
+    if (const toml::node* n = t.get("by")) s.by = parameter_names(r, "table.by", *n, x);
+    const toml::node* m = t.get("metrics");
+    if (m == nullptr) throw ValueError("table.metrics: missing", x.path, s.line);
+    s.metrics = string_list(r, "table.metrics", *m);
+    for (const std::string& metric : s.metrics) {
+      if (std::find(x.metrics.begin(), x.metrics.end(), metric) == x.metrics.end()) {
+        r.fail("table.metrics", *m, "'" + metric + "' is not recorded (add it to outputs.metrics)");
+      }
+    }
+    x.tables.push_back(std::move(s));
+  }
+  // Comparisons read the runs' trees back, so they are kept.
+  if (!x.comparisons.empty() && std::find(x.keep.begin(), x.keep.end(), "tree") == x.keep.end()) {
+    x.keep.emplace_back("tree");
+  }
+}
 }  // namespace
 
 std::vector<std::string> Experiment::swept_names() const {
@@ -261,7 +411,8 @@ Experiment parse_experiment(std::string_view toml_text, const std::string& path)
   x.path = path;
   x.text = std::string(toml_text);
   r.only_keys("", root,
-              {"experiment", "model", "parameters", "sweep", "sampling", "outputs", "runner"});
+              {"experiment", "model", "parameters", "sweep", "sampling", "outputs", "runner",
+               "distance", "comparison", "ttest", "table"});
 
   const toml::table& exp = *r.table(root, "experiment", true);
   r.only_keys("experiment", exp, {"name", "seed", "replicates", "description"});
@@ -280,12 +431,12 @@ Experiment parse_experiment(std::string_view toml_text, const std::string& path)
   if (const toml::node* n = exp.get("description")) r.string("experiment.description", *n);
 
   const toml::table& model = *r.table(root, "model", true);
-  r.only_keys("model", model, {"kind", "file", "view"});
+  r.only_keys("model", model, {"kind", "file", "view", "scene"});
   if (const toml::node* n = model.get("kind")) {
     x.model_kind = r.string("model.kind", *n);
     x.model_kind_line = Reader::line_of(*n);
   } else {
-    throw ValueError("model.kind: missing (lsystem, greenlab or synthetic)", path,
+    throw ValueError("model.kind: missing (lsystem, greenlab, grow or synthetic)", path,
                      Reader::line_of(model));
   }
   if (const toml::node* n = model.get("file")) {
@@ -293,6 +444,7 @@ Experiment parse_experiment(std::string_view toml_text, const std::string& path)
     x.model_file_line = Reader::line_of(*n);
   }
   if (const toml::node* n = model.get("view")) x.model_view = r.resolve("model.view", *n);
+  if (const toml::node* n = model.get("scene")) x.model_scene = r.resolve("model.scene", *n);
 
   auto claim = [&](const std::string& name, const toml::node& node) {
     if (name.empty()) r.fail("parameter", node, "empty parameter name");
@@ -372,7 +524,10 @@ Experiment parse_experiment(std::string_view toml_text, const std::string& path)
   }
 
   if (const toml::table* out = r.table(root, "outputs", false)) {
-    r.only_keys("outputs", *out, {"metrics", "keep"});
+    r.only_keys("outputs", *out, {"metrics", "keep", "reference"});
+    if (const toml::node* n = out->get("reference")) {
+      x.reference_file = r.resolve("outputs.reference", *n);
+    }
     if (const toml::node* n = out->get("metrics")) {
       for (const toml::node& m : r.array("outputs.metrics", *n, 0)) {
         const std::string name = r.string("outputs.metrics", m);
@@ -396,8 +551,12 @@ Experiment parse_experiment(std::string_view toml_text, const std::string& path)
     }
   }
   if (x.metrics.empty()) {
-    for (const MetricInfo& info : metric_catalog()) x.metrics.emplace_back(info.name);
+    for (const MetricInfo& info : metric_catalog()) {
+      if (info.by_default) x.metrics.emplace_back(info.name);
+    }
   }
+
+  parse_comparisons(r, root, x);
 
   if (const toml::table* runner = r.table(root, "runner", false)) {
     r.only_keys("runner", *runner, {"time_limit_s"});

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "experiments/comparison_spec.hpp"
 #include "experiments/parameter_set.hpp"
 
 namespace fspm::experiments {
@@ -48,8 +49,14 @@ struct Experiment {
   std::uint64_t seed = 0;
   std::size_t replicates = 1;
   std::string model_kind;
-  std::string model_file;  // resolved against the experiment file's directory; may be empty
-  std::string model_view;  // lsystem: optional view file, resolved likewise
+  std::string model_file;      // resolved against the experiment file's directory; may be empty
+  std::string model_view;      // lsystem: optional view file, resolved likewise
+  std::string model_scene;     // grow: optional scene file (JSON), resolved likewise
+  std::string reference_file;  // outputs.reference: tree for the distance_to_reference metric
+  DistanceSpec distance;       // [distance]: for comparisons and distance_to_reference
+  std::vector<ComparisonSpec> comparisons;
+  std::vector<TTestSpec> ttests;
+  std::vector<SummaryTableSpec> tables;
   ParameterSet fixed;
   std::vector<SweepAxis> sweep;
   std::optional<Sampling> sampling;

@@ -65,6 +65,16 @@ const std::vector<MetricInfo>& metric_catalog() {
       {"total_length", "length", "summed length of all internodes"},
       {"leaf_area", "length^2", "summed area of the leaves (0 when the model gives none)"},
       {"biomass", "mass", "GreenLab GL1: total biomass produced, seed included (sum of Q(n))"},
+      {"light_interception", "m^2",
+       "grow: sum over leaf clusters of (1 - translucency) x pi r^2 x light at the cluster", false},
+      {"pruned_nodes", "count", "grow, set T: nodes pruned by the adaptation", false},
+      {"tip_displacement", "m", "grow, set T: mean distance the surviving tips moved", false},
+      {"grow_seconds", "s", "grow: time of the growth model (set T: growth in the open)", false},
+      {"adapt_seconds", "s", "grow, set T: time of the adaptation (analysis not included)", false},
+      {"regrow_seconds", "s",
+       "grow, set T with measure_regrowth = 1: time to grow the tree in the scene instead", false},
+      {"distance_to_reference", "cost",
+       "constrained edit distance to outputs.reference with the [distance] settings", false},
       {"run_time", "s", "wall-clock time of the model run (parse, derive, interpret)"},
   };
   return catalog;

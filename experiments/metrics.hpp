@@ -13,6 +13,8 @@ struct MetricInfo {
   std::string_view name;
   std::string_view unit;
   std::string_view description;
+  // Recorded when an experiment lists no metrics; false for metrics only some models give.
+  bool by_default = true;
 };
 
 // Every known metric, in the order exports list them by default.

@@ -1,6 +1,9 @@
 #include "experiments/model_factory.hpp"
 
+#include <filesystem>
+
 #include "experiments/greenlab_model.hpp"
+#include "experiments/grow_model.hpp"
 #include "experiments/lsystem_model.hpp"
 #include "experiments/synthetic_model.hpp"
 
@@ -28,10 +31,16 @@ std::unique_ptr<Model> make_model(const Experiment& x) {
     require_file(x);
     return make_greenlab_model(x.model_file);
   }
+  if (x.model_kind == "grow") {
+    const std::string base_dir = x.path == "<string>"
+                                     ? std::string(".")
+                                     : std::filesystem::path(x.path).parent_path().string();
+    return make_grow_model(x.model_file, x.model_scene, base_dir.empty() ? "." : base_dir);
+  }
   if (x.model_kind == "synthetic") return make_synthetic_model();
-  throw ValueError(
-      "model.kind: unknown kind '" + x.model_kind + "' (expected lsystem, greenlab or synthetic)",
-      x.path, x.model_kind_line);
+  throw ValueError("model.kind: unknown kind '" + x.model_kind +
+                       "' (expected lsystem, greenlab, grow or synthetic)",
+                   x.path, x.model_kind_line);
 }
 
 void check_experiment(const Experiment& x, const Model& model, const RunPlan& plan) {

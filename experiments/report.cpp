@@ -143,4 +143,64 @@ std::string markdown_report(const ExperimentInfo& info, const std::vector<RunRec
   return md.str();
 }
 
+std::string summary_tables_markdown(const Experiment& experiment,
+                                    const std::vector<RunRecord>& runs) {
+  std::ostringstream md;
+  for (const SummaryTableSpec& table : experiment.tables) {
+    md << "\n## " << (table.title.empty() ? std::string("Summary") : escape(table.title)) << "\n\n";
+    if (!table.where.empty()) {
+      md << "Runs with";
+      for (const auto& [name, value] : table.where) {
+        md << ' ' << escape(name) << " = " << escape(parameter_text(value));
+      }
+      md << "; ";
+    }
+    md << "mean ± sample standard deviation over the successful runs.\n\n|";
+    for (const std::string& name : table.by) md << ' ' << escape(name) << " |";
+    md << " runs |";
+    for (const std::string& metric : table.metrics) md << ' ' << metric << unit_of(metric) << " |";
+    md << "\n|";
+    for (std::size_t i = 0; i < table.by.size() + table.metrics.size() + 1; ++i) md << "---|";
+    md << '\n';
+    // Rows in the order of the runs' first appearance, which follows the grid.
+    std::vector<std::vector<std::string>> keys;
+    std::map<std::vector<std::string>, std::pair<std::size_t, std::map<std::string, Moments>>> rows;
+    for (const RunRecord& r : runs) {
+      if (r.status != RunStatus::kOk) continue;
+      bool match = true;
+      for (const auto& [name, value] : table.where) {
+        const auto it = r.parameters.find(name);
+        match = match && it != r.parameters.end() &&
+                parameter_text(it->second) == parameter_text(value);
+      }
+      if (!match) continue;
+      std::vector<std::string> key;
+      for (const std::string& name : table.by) {
+        const auto it = r.parameters.find(name);
+        key.push_back(it == r.parameters.end() ? "-" : parameter_text(it->second));
+      }
+      auto [it, inserted] = rows.try_emplace(key);
+      if (inserted) keys.push_back(key);
+      ++it->second.first;
+      for (const std::string& metric : table.metrics) {
+        const auto m = r.metrics.find(metric);
+        if (m != r.metrics.end() && std::isfinite(m->second))
+          it->second.second[metric].add(m->second);
+      }
+    }
+    for (const std::vector<std::string>& key : keys) {
+      const auto& [count, moments] = rows.at(key);
+      md << '|';
+      for (const std::string& v : key) md << ' ' << escape(v) << " |";
+      md << ' ' << count << " |";
+      for (const std::string& metric : table.metrics) {
+        const auto it = moments.find(metric);
+        md << ' ' << (it == moments.end() ? "-" : cell(it->second)) << " |";
+      }
+      md << '\n';
+    }
+  }
+  return md.str();
+}
+
 }  // namespace fspm::experiments

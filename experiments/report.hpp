@@ -5,10 +5,17 @@
 #include <string>
 #include <vector>
 
+#include "experiments/experiment.hpp"
 #include "experiments/results_db.hpp"
 
 namespace fspm::experiments {
 
 std::string markdown_report(const ExperimentInfo& info, const std::vector<RunRecord>& runs);
+
+// The experiment's [[table]]s: mean ± standard deviation of the listed metrics over the
+// successful runs matching `where`, one row per combination of the `by` values (Pirk Table 4.2
+// is such a table: nodes, growth and adaptation time per age).
+std::string summary_tables_markdown(const Experiment& experiment,
+                                    const std::vector<RunRecord>& runs);
 
 }  // namespace fspm::experiments

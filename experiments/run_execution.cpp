@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "experiments/comparisons.hpp"
 #include "experiments/metrics.hpp"
 #include "fspm/tree_file.hpp"
 
@@ -50,6 +51,11 @@ ExecutionSettings execution_settings(const Experiment& experiment, const std::st
       std::find(experiment.keep.begin(), experiment.keep.end(), "tree") != experiment.keep.end();
   s.interrupt = interrupt;
   if (s.keep_tree) fs::create_directories(fs::path(out_dir) / "runs");
+  const bool wants_distance = std::find(experiment.metrics.begin(), experiment.metrics.end(),
+                                        "distance_to_reference") != experiment.metrics.end();
+  if (wants_distance && !experiment.reference_file.empty()) {
+    s.reference = std::make_shared<const TreeGraph>(read_tree_file(experiment.reference_file));
+  }
   return s;
 }
 
@@ -75,6 +81,13 @@ std::optional<RunRecord> execute_run(const Model& model, const RunSpec& spec,
   try {
     RunResult result = model.run(spec.parameters, spec.seed, context);
     record.seconds = since(t0);
+    if (settings.reference && result.tree) {
+      // Not part of the run's time: it measures the model, not the comparison.
+      result.metrics["distance_to_reference"] =
+          constrained_edit_distance(*result.tree, *settings.reference,
+                                    distance_options(experiment.distance))
+              .distance;
+    }
     for (const std::string& name : experiment.metrics) {
       const auto it = result.metrics.find(name);
       record.metrics[name] = it != result.metrics.end() ? it->second : std::nan("");

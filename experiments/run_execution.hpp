@@ -3,6 +3,7 @@
 // caught and recorded, the requested metrics picked, kept files written. Shared by the thread
 // runner and the MPI ranks.
 #include <atomic>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -19,6 +20,8 @@ struct ExecutionSettings {
   std::string out_dir;  // kept files go to out_dir/runs/
   bool keep_tree = false;
   const std::atomic<bool>* interrupt = nullptr;
+  // outputs.reference, read once, when distance_to_reference is recorded.
+  std::shared_ptr<const TreeGraph> reference;
 };
 
 ExecutionSettings execution_settings(const Experiment& experiment, const std::string& out_dir,

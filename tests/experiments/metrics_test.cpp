@@ -56,7 +56,7 @@ TEST(Metrics, EveryMetricHasAUnit) {
     EXPECT_FALSE(m.unit.empty()) << m.name;
     EXPECT_EQ(find_metric(m.name), &m);
   }
-  EXPECT_EQ(find_metric("light_interception"), nullptr);
+  EXPECT_EQ(find_metric("no_such_metric"), nullptr);
 }
 
 }  // namespace

@@ -1,0 +1,58 @@
+#pragma once
+// The comparisons an experiment file asks for after its runs (docs/experiments.md): pairs of runs
+// compared by the constrained edit distance, t-tests between groups of such distances (Pirk
+// 4.5.4) and summary tables of metrics. Parsed with the experiment; carried out by
+// experiments/comparisons.hpp.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "experiments/parameter_set.hpp"
+
+namespace fspm::experiments {
+
+// Runs whose parameters equal every given value (compared by their text, "20" matches 20).
+using RunFilter = ParameterSet;
+
+// How two kept trees are compared (fspm distance's options).
+struct DistanceSpec {
+  std::string cost = "standardized";    // topological | absolute | standardized
+  std::vector<std::string> attributes;  // empty: the cost model's defaults
+  std::optional<double> main_skeleton_radius_m;
+};
+
+// [[comparison]]: `pairs` pairs (a, b), a drawn from the runs matching `a`, b from those matching
+// `b`, no run used twice within the comparison; drawn separately within every combination of the
+// `within` parameters' values, among the runs that also match `where`.
+struct ComparisonSpec {
+  std::string name;
+  RunFilter a;
+  RunFilter b;
+  RunFilter where;
+  std::vector<std::string> within;
+  std::size_t pairs = 0;  // 0: as many as the runs allow
+  int line = 0;
+};
+
+// [[ttest]]: the distances of comparison `a` against those of comparison `b`, per `within` group.
+struct TTestSpec {
+  std::string a;
+  std::string b;
+  bool welch = false;
+  std::string alternative = "two-sided";  // two-sided | less | greater
+  double alpha = 0.05;
+  int line = 0;
+};
+
+// [[table]]: mean and standard deviation of metrics over the successful runs matching `where`,
+// one row per combination of the `by` parameters' values.
+struct SummaryTableSpec {
+  std::string title;
+  RunFilter where;
+  std::vector<std::string> by;
+  std::vector<std::string> metrics;
+  int line = 0;
+};
+
+}  // namespace fspm::experiments

@@ -1,0 +1,206 @@
+#include "experiments/grow_model.hpp"
+
+#include <toml++/toml.h>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <numbers>
+#include <sstream>
+
+#include "environment/growth_model.hpp"
+#include "environment/growth_params.hpp"
+#include "environment/light_model.hpp"
+#include "environment/plastic_adaptation.hpp"
+#include "environment/scene_file.hpp"
+#include "environment/tree_analysis.hpp"
+#include "experiments/metrics.hpp"
+
+namespace fspm::experiments {
+namespace {
+
+namespace env = fspm::environment;
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError("cannot read the growth parameter file", path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The scene without its obstacles: the same sky and ground, so that set O differs from G only by
+// what the obstacles do.
+env::Scene open_version(const env::Scene& scene) {
+  env::Scene open;
+  open.sky = scene.sky;
+  open.ground = scene.ground;
+  return open;
+}
+
+// Light the leaf clusters absorb: sum of (1 - gamma) pi r^2 i_c, i_c the light at the cluster's
+// centre with the cluster itself left out (its own foliage does not shade its centre).
+double light_interception(const env::Scene& scene, const std::vector<env::Sphere>& clusters) {
+  if (clusters.empty()) return 0.0;
+  env::Scene lit = scene;
+  const auto first = static_cast<std::uint32_t>(lit.spheres.size());
+  lit.spheres.insert(lit.spheres.end(), clusters.begin(), clusters.end());
+  const env::LightModel light(lit);
+  double total = 0.0;
+  for (std::uint32_t i = 0; i < clusters.size(); ++i) {
+    const env::Sphere& c = clusters[i];
+    const double area = std::numbers::pi * c.radius_m * c.radius_m;
+    total += (1.0 - c.translucency) * area * light.evaluate(c.center, first + i).light;
+  }
+  return total;
+}
+
+class GrowModel final : public Model {
+ public:
+  GrowModel(const std::string& params_file, const std::string& scene_file, std::string base_dir)
+      : base_text_(params_file.empty() ? std::string() : read_text(params_file)),
+        base_name_(params_file.empty() ? std::string("<grow parameters>") : params_file),
+        default_scene_(scene_file),
+        base_dir_(std::move(base_dir)) {
+    env::parse_growth_params(base_text_, base_name_);  // report a bad file before any run
+    if (!default_scene_.empty()) scene(default_scene_);
+  }
+
+  void check_parameter(const std::string& name, const ParameterValue& value) const override {
+    if (name == "set") {
+      const std::string s = text(value, name);
+      if (s != "O" && s != "G" && s != "T") throw ValueError("set must be \"O\", \"G\" or \"T\"");
+      return;
+    }
+    if (name == "scene") {
+      const std::string s = text(value, name);
+      if (s != "open") scene(resolve(s));
+      return;
+    }
+    if (name == "measure_regrowth") {
+      parameter_integer(value, name);
+      return;
+    }
+    growth_params({{name, value}}, 1);
+  }
+
+  void check_setup(const ParameterSet& parameters) const override { growth_params(parameters, 1); }
+
+  RunResult run(const ParameterSet& parameters, std::uint64_t seed,
+                const RunContext& context) const override {
+    const env::GrowthParams params = growth_params(parameters, seed);
+    std::string set = "G";
+    std::string scene_path = default_scene_;
+    bool measure_regrowth = false;
+    if (const auto it = parameters.find("set"); it != parameters.end())
+      set = text(it->second, "set");
+    if (const auto it = parameters.find("scene"); it != parameters.end()) {
+      const std::string s = text(it->second, "scene");
+      scene_path = s == "open" ? std::string() : resolve(s);
+    }
+    if (const auto it = parameters.find("measure_regrowth"); it != parameters.end()) {
+      measure_regrowth = parameter_integer(it->second, "measure_regrowth") != 0;
+    }
+    const env::Scene empty;
+    const env::Scene& full = scene_path.empty() ? empty : scene(scene_path);
+    const env::Scene open = open_version(full);
+
+    RunResult result;
+    Clock::time_point t0 = Clock::now();
+    env::GrowthResult grown = env::grow_tree(params, set == "G" ? full : open);
+    result.metrics["grow_seconds"] = seconds_since(t0);
+    context.check();
+    if (set != "T") {
+      result.metrics["light_interception"] =
+          light_interception(set == "G" ? full : open, grown.cluster_spheres);
+      result.tree = std::move(grown.tree);
+    } else {
+      env::AnalysisParams ap;
+      ap.phototropism = params.phototropism;
+      ap.gravitropism = params.gravitropism;
+      ap.gravity_direction = params.gravity_direction;
+      ap.gamma0 = params.gamma0;
+      ap.min_cluster_radius_m = params.cluster_radius_m;
+      ap.light_directions = params.light_directions;
+      ap.light_significance = params.light_significance;
+      const env::TreeAnalysis analysis = env::analyze_tree(grown.tree, ap, open.sky.brightest);
+      context.check();
+      t0 = Clock::now();
+      env::AdaptationResult adapted = env::adapt_tree(grown.tree, analysis, full);
+      result.metrics["adapt_seconds"] = seconds_since(t0);
+      result.metrics["pruned_nodes"] = static_cast<double>(adapted.pruned_nodes);
+      result.metrics["tip_displacement"] = adapted.mean_tip_displacement_m;
+      result.metrics["light_interception"] =
+          light_interception(full, env::cluster_spheres(adapted.clusters));
+      result.tree = env::remove_pruned(adapted.tree);
+      if (measure_regrowth) {
+        context.check();
+        t0 = Clock::now();
+        const env::GrowthResult regrown = env::grow_tree(params, full);
+        result.metrics["regrow_seconds"] = seconds_since(t0);
+      }
+    }
+    for (auto& [name, value] : tree_metrics(*result.tree)) result.metrics[name] = value;
+    return result;
+  }
+
+ private:
+  static std::string text(const ParameterValue& value, const std::string& name) {
+    if (const auto* s = std::get_if<std::string>(&value)) return *s;
+    throw ValueError(name + " must be text");
+  }
+
+  std::string resolve(const std::string& path) const {
+    fs::path p(path);
+    if (p.is_relative()) p = fs::path(base_dir_) / p;
+    return p.lexically_normal().string();
+  }
+
+  // Parsed once per path; runs share them read-only.
+  const env::Scene& scene(const std::string& path) const {
+    const std::lock_guard lock(mutex_);
+    auto it = scenes_.find(path);
+    if (it == scenes_.end()) it = scenes_.emplace(path, env::read_scene_file(path)).first;
+    return it->second;
+  }
+
+  // The parameter file's table with the run's growth parameters put over it, read by the growth
+  // parameter parser so that names, ranges and messages are those of `fspm grow`.
+  env::GrowthParams growth_params(const ParameterSet& parameters, std::uint64_t seed) const {
+    toml::table table = toml::parse(base_text_, base_name_);
+    for (const auto& [name, value] : parameters) {
+      if (name == "set" || name == "scene" || name == "measure_regrowth") continue;
+      if (name == "seed") throw ValueError("seed: the growth seed is the run's seed");
+      std::visit([&](const auto& v) { table.insert_or_assign(name, v); }, value);
+    }
+    // The run's seed, kept within TOML's signed integers.
+    table.insert_or_assign("seed", static_cast<std::int64_t>(seed >> 1));
+    std::ostringstream text;
+    text << table;
+    return env::parse_growth_params(text.str(), base_name_);
+  }
+
+  std::string base_text_;
+  std::string base_name_;
+  std::string default_scene_;
+  std::string base_dir_;
+  mutable std::mutex mutex_;
+  mutable std::map<std::string, env::Scene> scenes_;
+};
+
+}  // namespace
+
+std::unique_ptr<Model> make_grow_model(const std::string& params_file,
+                                       const std::string& scene_file, const std::string& base_dir) {
+  return std::make_unique<GrowModel>(params_file, scene_file, base_dir);
+}
+
+}  // namespace fspm::experiments

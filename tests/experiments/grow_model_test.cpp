@@ -1,0 +1,74 @@
+#include "experiments/grow_model.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fspm/error.hpp"
+#include "test_files.hpp"
+
+namespace fspm::experiments {
+namespace {
+
+// An opaque wall 1.5 m east of the tree, no ground: "open" then means the sky alone, as "O".
+const char* kWall = R"({ "sky": { "model": "cos2", "brightest": [0, 0, 1], "directions": 64 },
+  "occluders": [ { "type": "wall", "from": [1.5, -10], "to": [1.5, 10], "height": 5,
+                   "thickness": 0.2 } ] })";
+
+struct Fixture {
+  std::filesystem::path dir;
+  std::unique_ptr<Model> model;
+  explicit Fixture(const std::string& name) : dir(testing::scratch(name)) {
+    testing::write(dir / "wall.json", kWall);
+    model = make_grow_model("", (dir / "wall.json").string(), dir.string());
+  }
+  RunResult run(const std::string& set, std::uint64_t seed, bool regrowth = false) const {
+    ParameterSet p{{"preset", std::string("A")}, {"years", std::int64_t{7}}, {"set", set}};
+    if (regrowth) p["measure_regrowth"] = std::int64_t{1};
+    return model->run(p, seed, RunContext{});
+  }
+};
+
+TEST(GrowModel, SetOIgnoresTheObstaclesAndGMeetsThem) {
+  const Fixture f("grow_sets");
+  const RunResult o = f.run("O", 3);
+  ParameterSet open{{"preset", std::string("A")},
+                    {"years", std::int64_t{7}},
+                    {"set", std::string("G")},
+                    {"scene", std::string("open")}};
+  const RunResult g_open = f.model->run(open, 3, RunContext{});
+  // O in the walled scene is G without a scene: the same tree for the same seed.
+  EXPECT_EQ(o.metrics.at("nodes"), g_open.metrics.at("nodes"));
+  EXPECT_DOUBLE_EQ(o.metrics.at("height"), g_open.metrics.at("height"));
+  const RunResult g = f.run("G", 3);
+  // The wall shades the east half of the sky: less light is intercepted by the walled tree.
+  EXPECT_LT(g.metrics.at("light_interception"), o.metrics.at("light_interception"));
+  EXPECT_FALSE(o.metrics.contains("adapt_seconds"));
+  ASSERT_TRUE(o.tree.has_value());
+  EXPECT_EQ(static_cast<double>(o.tree->size()), o.metrics.at("nodes"));
+}
+
+TEST(GrowModel, SetTIsTheOpenTreeAdaptedAndPruned) {
+  const Fixture f("grow_t");
+  const RunResult o = f.run("O", 9);
+  const RunResult t = f.run("T", 9, true);
+  ASSERT_TRUE(t.tree.has_value());
+  EXPECT_GE(t.metrics.at("adapt_seconds"), 0.0);
+  EXPECT_GE(t.metrics.at("regrow_seconds"), 0.0);
+  // The adapted tree is the open-grown one minus what the adaptation pruned.
+  EXPECT_EQ(t.metrics.at("nodes") + t.metrics.at("pruned_nodes"), o.metrics.at("nodes"));
+  EXPECT_GT(t.metrics.at("tip_displacement"), 0.0);
+}
+
+TEST(GrowModel, BadParametersAreRejectedBeforeRunning) {
+  const Fixture f("grow_bad");
+  EXPECT_THROW(f.model->check_parameter("set", std::string("X")), ValueError);
+  EXPECT_THROW(f.model->check_parameter("no_such_key", 1.0), Error);
+  EXPECT_THROW(f.model->check_parameter("phototropism", 3.0), ValueError);
+  EXPECT_THROW(f.model->check_parameter("scene", std::string("missing.json")), IoError);
+  EXPECT_NO_THROW(f.model->check_parameter("preset", std::string("B")));
+  EXPECT_THROW(f.model->check_parameter("preset", std::string("Z")), ValueError);
+}
+
+}  // namespace
+}  // namespace fspm::experiments
