@@ -115,22 +115,29 @@ namespace {
 // The prototype with a zero-length internode stub on every node a child grows from: the mesher
 // then ends its tubes there, as it does in the explicit tree where the child's first internode
 // is a second child of that node. Stubs have no segment, so they add no geometry.
-TreeGraph with_attach_stubs(const InstancedTree::Prototype& p) {
+TreeGraph with_attach_stubs(const InstancedTree& tree, const InstancedTree::Prototype& p) {
   TreeGraph g = p.geometry;
-  std::vector<char> stubbed(g.size(), 0);
+  // A stub is born with the earliest internode-rooted child on its node, so the growth filter
+  // (max_birth_time) keeps it exactly when the explicit tree keeps a second child there.
+  std::vector<double> birth(g.size(), std::numeric_limits<double>::infinity());
   for (const auto& c : p.children) {
-    if (stubbed[c.attach]) continue;
-    stubbed[c.attach] = 1;
+    const TreeGraph& child = tree.prototypes[c.prototype].geometry;
+    if (child.empty() || child.kind(0) != OrganKind::kInternode) continue;
+    birth[c.attach] = std::min(birth[c.attach], child.birth_time(0));
+  }
+  const auto n = static_cast<NodeId>(g.size());
+  for (NodeId a = 0; a < n; ++a) {
+    if (std::isinf(birth[a])) continue;
     NodeData d;
-    d.start = d.end = g.end(c.attach);
-    d.direction = g.direction(c.attach);
+    d.start = d.end = g.end(a);
+    d.direction = g.direction(a);
     d.length = 0.0;
-    d.radius = g.radius(c.attach);
-    d.birth_time = g.birth_time(c.attach);
-    d.physiological_age = g.physiological_age(c.attach);
-    d.order = g.order(c.attach);
+    d.radius = g.radius(a);
+    d.birth_time = std::max(birth[a], g.birth_time(a));
+    d.physiological_age = g.physiological_age(a);
+    d.order = g.order(a);
     d.kind = OrganKind::kInternode;
-    g.add_node(c.attach, d);
+    g.add_node(a, d);
   }
   return g;
 }
@@ -167,7 +174,7 @@ InstancedMesh mesh_instanced(const InstancedTree& tree, const MeshOptions& optio
   const bool stubs = o.junctions == JunctionMode::kSeparate;
   out.meshes.reserve(np);
   for (const auto& p : tree.prototypes) {
-    out.meshes.push_back(stubs && !p.children.empty() ? mesh_tree(with_attach_stubs(p), o)
+    out.meshes.push_back(stubs && !p.children.empty() ? mesh_tree(with_attach_stubs(tree, p), o)
                                                       : mesh_tree(p.geometry, o));
   }
 
