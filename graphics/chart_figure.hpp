@@ -1,0 +1,52 @@
+#pragma once
+// Charts for experiment reports, drawn with VTK's chart classes (vtkChartXY, vtkChartBox) in an
+// offscreen context view and written through OpenImageIO, atomically. Only standard types in
+// this header. Like the tree renders, VTK's OpenGL context needs an X display here (xvfb-run -a
+// is enough).
+#include <array>
+#include <string>
+#include <vector>
+
+#include "graphics/image.hpp"
+
+namespace fspm::graphics {
+
+struct ChartSeries {
+  std::string name;  // legend entry
+  std::vector<double> x, y;
+};
+
+struct ChartOptions {
+  std::string title;
+  std::string x_label;
+  std::string y_label;
+  int width = 800;
+  int height = 600;
+};
+
+// Colour of series (or box) i: the Tableau 10 palette, cycling (8-bit RGB).
+std::array<unsigned char, 3> chart_color(std::size_t i);
+
+// One line per series (points sorted as given), a legend when there are several. Throws
+// ValueError for no series, x and y of different lengths, an empty or non-finite series, a bad
+// size or an image format OpenImageIO does not write; IoError when no display can be opened or
+// the file cannot be written (nothing is left half-written).
+Image line_chart_image(const std::vector<ChartSeries>& series, const ChartOptions& options);
+void write_line_chart(const std::vector<ChartSeries>& series, const ChartOptions& options,
+                      const std::string& png_path);
+
+// One box per group: whiskers at the minimum and maximum, box from the first to the third
+// quartile (linear interpolation between order statistics, Hyndman and Fan type 7), a line at
+// the median. Group names label the boxes. Throws like the line chart, and ValueError for a
+// group without values or names not matching the groups.
+Image box_plot_image(const std::vector<std::string>& group_names,
+                     const std::vector<std::vector<double>>& groups, const ChartOptions& options);
+void write_box_plot(const std::vector<std::string>& group_names,
+                    const std::vector<std::vector<double>>& groups, const ChartOptions& options,
+                    const std::string& png_path);
+
+// Quantile q in [0, 1] of `values` by linear interpolation between order statistics (type 7,
+// R's default). Throws ValueError when empty.
+double quantile(std::vector<double> values, double q);
+
+}  // namespace fspm::graphics
