@@ -24,6 +24,9 @@ struct RenderOptions {
   std::string color_by;  // per-vertex attribute; empty = bark and leaf colours
   bool ground = true;
   bool scalar_bar = true;  // only when colouring by an attribute
+  // > 0: parallel projection in which the image height spans this many metres, centred on the
+  // tree (figures with a known scale); 0: perspective framing the tree.
+  double ortho_height_m = 0.0;
 };
 
 // "WxH" -> width, height; throws ValueError.

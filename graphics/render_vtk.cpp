@@ -178,6 +178,11 @@ Image render_with(const RenderOptions& options, Eigen::Vector3f lo, Eigen::Vecto
   double bounds[6] = {lo.x(), hi.x(), lo.y(), hi.y(), lo.z(), hi.z()};
   renderer->ResetCamera(bounds);
   renderer->GetActiveCamera()->Zoom(1.1);
+  if (options.ortho_height_m > 0.0) {
+    // Parallel projection at a known scale: the image height spans ortho_height_m metres.
+    renderer->GetActiveCamera()->ParallelProjectionOn();
+    renderer->GetActiveCamera()->SetParallelScale(0.5 * options.ortho_height_m);
+  }
   renderer->ResetCameraClippingRange();
 
   vtkNew<vtkRenderWindow> window;
