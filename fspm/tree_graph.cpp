@@ -6,6 +6,13 @@
 
 #include "fspm/error.hpp"
 
+#ifdef __linux__
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <cstdint>
+#endif
+
 namespace fspm {
 
 std::string_view organ_kind_name(OrganKind kind) {
@@ -93,6 +100,59 @@ void TreeGraph::reserve(std::size_t n) {
 }
 
 void TreeGraph::clear() { *this = TreeGraph(); }
+
+void TreeGraph::clear_keep_capacity() {
+  parent_.clear();
+  first_child_.clear();
+  last_child_.clear();
+  next_sibling_.clear();
+  start_.clear();
+  end_.clear();
+  direction_.clear();
+  length_.clear();
+  radius_.clear();
+  birth_time_.clear();
+  physiological_age_.clear();
+  order_.clear();
+  kind_.clear();
+  attributes_.clear();
+}
+
+namespace {
+
+template <typename T>
+void advise_huge(const std::vector<T>& v) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::size_t kHuge = std::size_t{2} << 20;
+  const std::size_t bytes = v.capacity() * sizeof(T);
+  if (bytes < 2 * kHuge) return;  // too small to hold an aligned huge page
+  const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+  const auto lo = (reinterpret_cast<std::uintptr_t>(v.data()) + page - 1) / page * page;
+  const auto hi = (reinterpret_cast<std::uintptr_t>(v.data()) + bytes) / page * page;
+  if (hi > lo) madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_HUGEPAGE);  // a hint only
+#else
+  (void)v;
+#endif
+}
+
+}  // namespace
+
+void TreeGraph::advise_huge_pages() {
+  advise_huge(parent_);
+  advise_huge(first_child_);
+  advise_huge(last_child_);
+  advise_huge(next_sibling_);
+  advise_huge(start_);
+  advise_huge(end_);
+  advise_huge(direction_);
+  advise_huge(length_);
+  advise_huge(radius_);
+  advise_huge(birth_time_);
+  advise_huge(physiological_age_);
+  advise_huge(order_);
+  advise_huge(kind_);
+  for (const Attribute& a : attributes_) advise_huge(a.values);
+}
 
 NodeData TreeGraph::data(NodeId n) const {
   NodeData d;

@@ -83,6 +83,10 @@ inline constexpr std::uint64_t kMaxExplicitMetamers = std::uint64_t{1} << 30;
 // exceed kMaxExplicitMetamers.
 TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
                       ReconstructionStats* stats = nullptr);
+// The same into `tree`, whose previous nodes are dropped but whose allocated columns are reused:
+// rebuilding a plant at many ages (growth animation) then neither reallocates nor page-faults.
+void reconstruct_into(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
+                      TreeGraph& tree, ReconstructionStats* stats = nullptr);
 
 // The instanced form for renderers (Jaeger 3.1.2): one prototype geometry per substructure that
 // starts an axis, in its own frame (base at the origin, heading +z), and its lateral axes as
