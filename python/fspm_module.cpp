@@ -10,6 +10,7 @@
 #include "experiments/runner.hpp"
 #include "fspm/compressed_tree_graph.hpp"
 #include "fspm/constrained_edit_distance.hpp"
+#include "fspm/edit_cost_model.hpp"
 #include "fspm/error.hpp"
 #include "fspm/newick_format.hpp"
 #include "fspm/tree_file.hpp"
@@ -21,6 +22,7 @@
 #include "lsystem/lsystem.hpp"
 #include "lsystem/parser.hpp"
 #include "lsystem/turtle.hpp"
+#include "python/bindings.hpp"
 
 namespace py = pybind11;
 
@@ -28,22 +30,7 @@ namespace {
 
 using fspm::TreeGraph;
 
-// A read-only 1-D (or N x 3) numpy view of a column owned by `owner`.
-template <typename T>
-py::array column(const std::span<const T> values, py::handle owner, std::size_t width = 1) {
-  std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(values.size())};
-  // Rows are whole elements: one double, or one 24-byte Eigen::Vector3d of three doubles.
-  std::vector<py::ssize_t> strides{static_cast<py::ssize_t>(sizeof(T))};
-  if (width > 1) {
-    shape.push_back(static_cast<py::ssize_t>(width));
-    strides.push_back(sizeof(double));
-  }
-  using Scalar = std::conditional_t<std::is_same_v<T, Eigen::Vector3d>, double, T>;
-  py::array a(py::dtype::of<Scalar>(), shape, strides,
-              reinterpret_cast<const Scalar*>(values.data()), owner);
-  py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
-  return a;
-}
+using fspm::python::column;
 
 py::dict summary_dict(const TreeGraph& t) {
   const fspm::TreeSummary s = fspm::summarize(t);
@@ -74,6 +61,80 @@ fspm::lsystem::DeriveOptions derive_options(std::optional<int> steps,
   return o;
 }
 
+// The Manhattan cost model on per-node feature rows given from Python as (Fa, Fb).
+fspm::FeatureCostModel feature_model(const TreeGraph& a, const TreeGraph& b,
+                                     const py::tuple& features, double unit_cost) {
+  using Rows = py::array_t<double, py::array::c_style | py::array::forcecast>;
+  if (features.size() != 2) throw fspm::ValueError("features: expected a pair (Fa, Fb)");
+  const Rows fa = features[0].cast<Rows>();
+  const Rows fb = features[1].cast<Rows>();
+  const auto dims = [](const Rows& f, const TreeGraph& t, const char* which) {
+    if (f.ndim() > 2 || f.shape(0) != static_cast<py::ssize_t>(t.size())) {
+      throw fspm::ValueError(std::string("features: ") + which + " needs one row per node (" +
+                             std::to_string(t.size()) + " rows)");
+    }
+    return f.ndim() == 1 ? std::size_t{1} : static_cast<std::size_t>(f.shape(1));
+  };
+  const std::size_t da = dims(fa, a, "Fa");
+  if (dims(fb, b, "Fb") != da) {
+    throw fspm::ValueError("features: Fa and Fb need the same number of columns");
+  }
+  if (!(unit_cost >= 0.0)) throw fspm::ValueError("unit_cost: expected a value >= 0");
+  return fspm::FeatureCostModel(da, std::vector<double>(fa.data(), fa.data() + fa.size()),
+                                std::vector<double>(fb.data(), fb.data() + fb.size()), unit_cost);
+}
+
+fspm::TreeGraph tree_from_arrays(
+    const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& parents,
+    const fspm::python::PointArray& starts, const fspm::python::PointArray& ends,
+    std::optional<fspm::python::Sample> radii, std::optional<fspm::python::Sample> birth_times,
+    std::optional<py::array_t<std::uint16_t, py::array::c_style | py::array::forcecast>> orders,
+    std::optional<py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>> kinds,
+    const std::map<std::string, fspm::python::Sample>& attributes) {
+  const auto n = static_cast<std::size_t>(parents.size());
+  const auto s = fspm::python::as_points(starts, "starts");
+  const auto e = fspm::python::as_points(ends, "ends");
+  const auto check = [n](std::size_t size, const std::string& what) {
+    if (size != n) {
+      throw fspm::ValueError(what + ": expected " + std::to_string(n) + " values (one per node)");
+    }
+  };
+  check(s.size(), "starts");
+  check(e.size(), "ends");
+  if (radii) check(static_cast<std::size_t>(radii->size()), "radii");
+  if (birth_times) check(static_cast<std::size_t>(birth_times->size()), "birth_times");
+  if (orders) check(static_cast<std::size_t>(orders->size()), "orders");
+  if (kinds) check(static_cast<std::size_t>(kinds->size()), "kinds");
+  TreeGraph t;
+  t.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::int64_t p = parents.data()[i];
+    if (i == 0 ? p >= 0 : (p < 0 || static_cast<std::size_t>(p) >= i)) {
+      throw fspm::ValueError("parents[" + std::to_string(i) +
+                             "]: expected -1 for the root (node 0) and a smaller node id for "
+                             "every other node");
+    }
+    fspm::NodeData d;
+    d.start = s[i];
+    d.end = e[i];
+    if (radii) d.radius = radii->data()[i];
+    if (birth_times) d.birth_time = birth_times->data()[i];
+    if (orders) d.order = orders->data()[i];
+    if (kinds) {
+      if (kinds->data()[i] > 3) throw fspm::ValueError("kinds: expected values 0 to 3");
+      d.kind = static_cast<fspm::OrganKind>(kinds->data()[i]);
+    }
+    t.add_node(i == 0 ? fspm::kNoNode : static_cast<fspm::NodeId>(p), d);
+  }
+  for (const auto& [name, values] : attributes) {
+    check(static_cast<std::size_t>(values.size()), "attribute " + name);
+    t.add_attribute(name);
+    auto out = t.attribute(name);
+    std::copy(values.data(), values.data() + n, out.begin());
+  }
+  return t;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_fspm, m) {
@@ -96,6 +157,8 @@ PYBIND11_MODULE(_fspm, m) {
       PyErr_SetString(error.ptr(), e.what());
     }
   });
+
+  fspm::python::bind_calibration(m);
 
   py::class_<TreeGraph>(m, "Tree", "A plant's tree graph: one node per internode or organ")
       .def(py::init<>())
@@ -151,7 +214,16 @@ PYBIND11_MODULE(_fspm, m) {
             return column(values, self);
           },
           py::arg("name"), "A user attribute column (read-only view)")
-      .def("summary", &summary_dict, "Node counts, height and total length");
+      .def("summary", &summary_dict, "Node counts, height and total length")
+      .def_static("from_arrays", &tree_from_arrays, py::arg("parents"), py::arg("starts"),
+                  py::arg("ends"), py::arg("radii") = py::none(),
+                  py::arg("birth_times") = py::none(), py::arg("orders") = py::none(),
+                  py::arg("kinds") = py::none(),
+                  py::arg("attributes") = std::map<std::string, fspm::python::Sample>{},
+                  "A tree from columns: parents (-1 for the root, else a smaller id), starts and "
+                  "ends (N, 3), optional radii, birth times, orders, kinds and user attributes")
+      .def(
+          "copy", [](const TreeGraph& t) { return TreeGraph(t); }, "An independent copy");
 
   m.def(
       "read_tree",
@@ -178,16 +250,21 @@ PYBIND11_MODULE(_fspm, m) {
       "distance",
       [](const TreeGraph& a, const TreeGraph& b, const std::string& cost,
          const std::vector<std::string>& attributes, std::optional<double> main_skeleton,
-         bool mapping) {
+         bool mapping, const std::string& solver, std::optional<py::tuple> features,
+         double unit_cost) {
         fspm::EditDistanceOptions o;
         o.cost = fspm::edit_cost_kind_from_name(cost);
         o.attributes = attributes;
         o.main_skeleton_radius_m = main_skeleton;
         o.with_mapping = mapping;
+        o.solver = fspm::assignment_solver_from_name(solver);
+        std::optional<fspm::FeatureCostModel> model;
+        if (features) model = feature_model(a, b, *features, unit_cost);
         fspm::EditDistanceResult r;
         {
           py::gil_scoped_release release;
-          r = fspm::constrained_edit_distance(a, b, o);
+          r = model ? fspm::constrained_edit_distance(a, b, *model, o)
+                    : fspm::constrained_edit_distance(a, b, o);
         }
         py::dict d;
         d["distance"] = r.distance;
@@ -198,9 +275,28 @@ PYBIND11_MODULE(_fspm, m) {
       },
       py::arg("a"), py::arg("b"), py::arg("cost") = "topological",
       py::arg("attributes") = std::vector<std::string>{}, py::arg("main_skeleton") = py::none(),
-      py::arg("mapping") = false,
-      "Constrained edit distance (Zhang; Ferraro and Godin): topological, absolute or "
-      "standardized");
+      py::arg("mapping") = false, py::arg("solver") = "hungarian", py::arg("features") = py::none(),
+      py::arg("unit_cost") = 1.0,
+      "Constrained edit distance (Zhang; Ferraro and Godin; Pirk eq. 4.15-4.22). cost: "
+      "topological, absolute or standardized over `attributes`; main_skeleton: compare only "
+      "nodes thicker than this radius (and their ancestors); features=(Fa, Fb), arrays of one "
+      "row per node, gives the Manhattan cost model instead (delete/insert = unit_cost + |f|); "
+      "solver: hungarian or min-cost-flow; mapping: also return the matched (a, b) node pairs");
+  m.def(
+      "main_skeleton_nodes",
+      [](const TreeGraph& t, double min_radius) {
+        return fspm::python::adopt(fspm::main_skeleton_nodes(t, min_radius));
+      },
+      py::arg("tree"), py::arg("min_radius"),
+      "Ids of the nodes thicker than min_radius whose ancestors all are");
+  m.def(
+      "node_attribute_values",
+      [](const TreeGraph& t, const std::string& name) {
+        return fspm::python::adopt(fspm::node_attribute_values(t, name));
+      },
+      py::arg("tree"), py::arg("name"),
+      "One value per node: length, radius, birth_time, order, physiological_age or a user "
+      "attribute");
 
   py::class_<fspm::CompressedTreeGraph>(
       m, "CompressedPlant",
@@ -240,6 +336,16 @@ PYBIND11_MODULE(_fspm, m) {
       },
       py::arg("params"), py::arg("cycles") = py::none(), py::arg("seed") = py::none(),
       "Simulate a GreenLab plant (TOML parameters) by substructure factorization");
+  m.def(
+      "greenlab_simulate",
+      [](const fspm::greenlab::PlantParams& params, std::optional<int> cycles,
+         std::optional<std::uint64_t> seed) {
+        py::gil_scoped_release release;
+        std::mt19937_64 rng(seed.value_or(params.seed));
+        return fspm::greenlab::simulate_compressed(params, rng, cycles.value_or(-1));
+      },
+      py::arg("params"), py::arg("cycles") = py::none(), py::arg("seed") = py::none(),
+      "Simulate a GreenLab plant from PlantParams");
   m.def(
       "read_plant",
       [](const std::string& path) {
@@ -340,4 +446,8 @@ PYBIND11_MODULE(_fspm, m) {
       py::arg("path"), py::arg("steps") = py::none(), py::arg("seed") = py::none(),
       py::arg("defines") = std::map<std::string, std::string>{},
       "Derive an L-system file and draw it into a Tree");
+
+  fspm::python::bind_statistics(m);
+  fspm::python::bind_environment(m);
+  fspm::python::bind_graphics(m);
 }

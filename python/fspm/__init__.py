@@ -5,23 +5,80 @@ with the C++ tree (no copy). Errors are raised as :class:`fspm.Error` subclasses
 same messages as the command line.
 """
 from ._fspm import (  # noqa: F401
+    AdaptationResult,
+    AnalysisParams,
     CompressedPlant,
     Error,
+    FitResult,
+    GrowthParams,
+    GrowthResult,
     IoError,
+    LightModel,
+    MannWhitneyResult,
+    MeshOptions,
     ParseError,
+    PlantParams,
+    Scene,
+    TTestResult,
+    Target,
     Tree,
-    ValueError_ as ParameterError,
+    TreeAnalysis,
+    TriangleMesh,
+    adapt_tree,
+    adapt_trees,
+    analyze_tree,
+    cohens_d,
+    count_mesh,
+    display_available,
     distance,
+    fit_gl1,
+    fitted_toml,
     greenlab_reconstruct,
     greenlab_simulate,
+    grow_tree,
+    growth_preset,
+    light,
     lsystem_derive,
     lsystem_interpret,
+    main_skeleton_nodes,
+    mann_whitney_u_test,
+    mean,
+    mean_confidence_interval,
+    mesh_tree,
+    node_attribute_values,
+    paired_t_test,
+    parse_growth_params,
     parse_newick,
+    parse_plant_params,
+    parse_scene_json,
+    parse_targets_csv,
+    predict_targets,
+    read_growth_params,
+    read_image,
     read_plant,
+    read_plant_params,
+    read_scene_file,
+    read_targets_csv,
     read_tree,
+    remove_pruned,
+    render_available,
+    render_mesh,
     run_experiment,
+    sides_for_radius,
+    standard_deviation,
+    student_t_test,
     to_newick,
+    variance,
+    welch_t_test,
+    write_glb,
+    write_image,
+    write_mesh,
+    write_obj,
+    write_ply,
+    write_pvd,
     write_tree,
+    write_vtp,
+    ValueError_ as ParameterError,
 )
 
 
@@ -54,9 +111,70 @@ def read_results(directory):
     return pandas.DataFrame(rows, columns=columns)
 
 
-__all__ = [
-    "read_results", "CompressedPlant", "greenlab_simulate", "greenlab_reconstruct", "read_plant",
-    "run_experiment",
-    "Error", "IoError", "ParseError", "ParameterError", "Tree", "distance", "lsystem_derive",
-    "lsystem_interpret", "parse_newick", "read_tree", "to_newick", "write_tree",
-]
+_xvfb = None
+
+
+def _ensure_display():
+    """VTK's OpenGL context needs an X display. Without one, start a private Xvfb server for this
+    process (as `fspm render` re-runs itself under xvfb-run), stopped when Python exits."""
+    global _xvfb
+    import os
+
+    if display_available():
+        return
+    import atexit
+    import shutil
+    import subprocess
+
+    xvfb = shutil.which("Xvfb")
+    if xvfb is None or _xvfb is not None:
+        raise IoError("no X display for VTK: set DISPLAY or install xvfb (apt install xvfb)")
+    read_end, write_end = os.pipe()
+    proc = subprocess.Popen([xvfb, "-displayfd", str(write_end), "-screen", "0", "1280x1024x24",
+                             "-nolisten", "tcp"], pass_fds=(write_end,),
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    os.close(write_end)
+    with os.fdopen(read_end) as f:
+        number = f.readline().strip()
+    if not number:
+        proc.kill()
+        raise IoError("no X display for VTK and Xvfb did not start")
+    _xvfb = proc
+
+    def stop():
+        proc.terminate()
+        proc.wait()
+
+    atexit.register(stop)
+    os.environ["DISPLAY"] = ":" + number
+
+
+def render(tree_or_mesh, path=None, *, width=1024, height=768, view="iso", color_by="",
+           ground=True, scalar_bar=True, **mesh_options):
+    """Render a Tree (meshed with ``mesh_options``, e.g. ``leaves=True``) or a TriangleMesh
+    offscreen with VTK, as ``fspm render`` does. Returns the image as a (height, width, 4) uint8
+    array and writes it to ``path`` (.png, .tif, .jpg ...) when given. Starts a private Xvfb when
+    there is no X display. Raises ParameterError when fspm was built without VTK."""
+    if not render_available():
+        raise ParameterError("fspm was built without VTK (FSPM_WITH_VTK=OFF): rendering is not "
+                             "available")
+    if path is not None:
+        path = str(path)
+    mesh = tree_or_mesh
+    if isinstance(tree_or_mesh, Tree):
+        mesh = mesh_tree(tree_or_mesh, **mesh_options)
+    elif mesh_options:
+        raise TypeError("mesh options are only used when rendering a Tree")
+    if color_by:
+        mesh.attribute(color_by)  # an unknown attribute fails before any window is opened
+    _ensure_display()
+    image = render_mesh(mesh, width=width, height=height, view=view, color_by=color_by,
+                        ground=ground, scalar_bar=scalar_bar)
+    if path is not None:
+        write_image(image, path)
+    return image
+
+
+__all__ = sorted(
+    [n for n in dir() if not n.startswith("_") and n not in ("annotations",)],
+)

@@ -1,0 +1,457 @@
+// Bindings of the environment module: scenes (JSON), sky light at points (Pirk eq. 4.3), the
+// self-organizing growth model (Palubicki et al. 2009) and plastic adaptation (Pirk 4.3-4.4).
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include "environment/growth_model.hpp"
+#include "environment/growth_params.hpp"
+#include "environment/light_model.hpp"
+#include "environment/plastic_adaptation.hpp"
+#include "environment/scene_file.hpp"
+#include "environment/tree_analysis.hpp"
+#include "python/bindings.hpp"
+
+namespace fspm::python {
+namespace {
+
+namespace env = fspm::environment;
+
+env::GrowthParams growth_base(py::dict& values) {
+  if (!values.contains("preset")) return {};
+  const std::string name = py::str(values["preset"]);
+  PyDict_DelItemString(values.ptr(), "preset");
+  return env::growth_preset(name);
+}
+
+// Light samples as two numpy arrays viewing one C++ buffer: light (N,) and directions (N, 3).
+py::tuple light_arrays(std::vector<env::LightSample>&& samples) {
+  auto* owned = new std::vector<env::LightSample>(std::move(samples));
+  py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<env::LightSample>*>(p); });
+  const auto n = static_cast<py::ssize_t>(owned->size());
+  const py::ssize_t row = sizeof(env::LightSample);
+  if (n == 0) {
+    return py::make_tuple(py::array_t<double>(std::vector<py::ssize_t>{0}),
+                          py::array_t<double>(std::vector<py::ssize_t>{0, 3}));
+  }
+  const env::LightSample& s = owned->front();
+  py::array_t<double> light({n}, {row}, &s.light, owner);
+  py::array_t<double> dirs({n, py::ssize_t{3}}, {row, py::ssize_t{sizeof(double)}},
+                           s.direction.data(), owner);
+  return py::make_tuple(light, dirs);
+}
+
+py::tuple evaluate(const env::LightModel& model, const PointArray& points) {
+  const std::span<const Eigen::Vector3d> p = as_points(points, "points");
+  std::vector<env::LightSample> samples(p.size());
+  {
+    py::gil_scoped_release release;
+    model.evaluate(p, samples);
+  }
+  return light_arrays(std::move(samples));
+}
+
+Eigen::Vector3d unit_above_horizon(const Eigen::Vector3d& d, const char* what) {
+  if (!(d.z() > 0.0) || !d.allFinite()) {
+    throw ValueError(std::string(what) + ": expected a direction above the horizon (z > 0)");
+  }
+  return d.normalized();
+}
+
+env::Scene scene_from(py::handle scene) {
+  if (scene.is_none()) return {};
+  if (py::isinstance<py::dict>(scene)) {
+    const std::string text = py::module_::import("json").attr("dumps")(scene).cast<std::string>();
+    return env::parse_scene_json(text, "<dict>");
+  }
+  return scene.cast<env::Scene>();
+}
+
+py::array cluster_array(const std::vector<env::LeafCluster>& clusters) {
+  // One row per cluster: centre x, y, z, radius, translucency.
+  py::array_t<double> a({static_cast<py::ssize_t>(clusters.size()), py::ssize_t{5}});
+  auto r = a.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < clusters.size(); ++i) {
+    const auto k = static_cast<py::ssize_t>(i);
+    for (py::ssize_t c = 0; c < 3; ++c) r(k, c) = clusters[i].center[c];
+    r(k, 3) = clusters[i].radius_m;
+    r(k, 4) = clusters[i].translucency;
+  }
+  return a;
+}
+
+void bind_scene(py::module_& m) {
+  py::class_<env::Scene>(m, "Scene",
+                         "The sky and the occluders (spheres, boxes, meshes, ground), z up")
+      .def(py::init<>(), "An open scene: no occluders, brightest sky point at the zenith")
+      .def_property(
+          "brightest", [](const env::Scene& s) { return s.sky.brightest; },
+          [](env::Scene& s, const Eigen::Vector3d& d) {
+            s.sky.brightest = unit_above_horizon(d, "brightest");
+          },
+          "Unit direction of the brightest sky point")
+      .def_property(
+          "directions", [](const env::Scene& s) { return s.sky.directions; },
+          [](env::Scene& s, int n) {
+            if (n < 1) throw ValueError("directions: expected a count >= 1");
+            s.sky.directions = n;
+          },
+          "Stratified sky directions of the light integral")
+      .def_property(
+          "significance", [](const env::Scene& s) { return s.sky.significance; },
+          [](env::Scene& s, double v) { s.sky.significance = v; },
+          "Shadow-volume cutoff: largest share of light an ignored occluder may remove")
+      .def_property(
+          "analytic", [](const env::Scene& s) { return s.sky.analytic; },
+          [](env::Scene& s, bool v) { s.sky.analytic = v; },
+          "Exact sphere-cap integrals where they apply")
+      .def_property_readonly(
+          "spheres",
+          [](const env::Scene& s) {
+            py::array_t<double> a({static_cast<py::ssize_t>(s.spheres.size()), py::ssize_t{5}});
+            auto r = a.mutable_unchecked<2>();
+            for (std::size_t i = 0; i < s.spheres.size(); ++i) {
+              const auto k = static_cast<py::ssize_t>(i);
+              for (py::ssize_t c = 0; c < 3; ++c) {
+                r(k, c) = s.spheres[i].center[c];
+              }
+              r(k, 3) = s.spheres[i].radius_m;
+              r(k, 4) = s.spheres[i].translucency;
+            }
+            return a;
+          },
+          "Spheres as rows x, y, z, radius, translucency (a copy)")
+      .def_property_readonly(
+          "boxes", [](const env::Scene& s) { return s.boxes.size(); }, "Number of boxes and walls")
+      .def_property_readonly(
+          "meshes", [](const env::Scene& s) { return s.meshes.size(); }, "Number of meshes")
+      .def_property_readonly(
+          "ground",
+          [](const env::Scene& s) -> py::object {
+            if (!s.ground) return py::none();
+            return py::cast(s.ground->height_m);
+          },
+          "Height of the ground plane, or None")
+      .def(
+          "add_sphere",
+          [](env::Scene& s, const Eigen::Vector3d& center, double radius, double translucency,
+             bool solid) {
+            if (!(radius > 0.0)) throw ValueError("radius: expected a value > 0");
+            if (!(translucency >= 0.0 && translucency <= 1.0)) {
+              throw ValueError("translucency: expected a value in [0, 1]");
+            }
+            s.spheres.push_back({center, radius, translucency, solid});
+          },
+          py::arg("center"), py::arg("radius"), py::arg("translucency") = 0.0,
+          py::arg("solid") = false, "Adds a sphere (a leaf cluster unless solid)")
+      .def(
+          "add_box",
+          [](env::Scene& s, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
+             double translucency, bool solid) {
+            if (!(lo.array() < hi.array()).all()) {
+              throw ValueError("add_box: expected min < max on every axis");
+            }
+            if (!(translucency >= 0.0 && translucency <= 1.0)) {
+              throw ValueError("translucency: expected a value in [0, 1]");
+            }
+            env::Box b = env::Box::from_min_max(lo, hi);
+            b.translucency = translucency;
+            b.solid = solid;
+            s.boxes.push_back(b);
+          },
+          py::arg("min"), py::arg("max"), py::arg("translucency") = 0.0, py::arg("solid") = true,
+          "Adds an axis-aligned box")
+      .def(
+          "set_ground",
+          [](env::Scene& s, double height, double translucency, bool solid) {
+            s.ground = env::Ground{height, translucency, solid};
+          },
+          py::arg("height") = 0.0, py::arg("translucency") = 0.0, py::arg("solid") = true,
+          "Adds (or replaces) the ground plane z = height")
+      .def("inside_solid", &env::Scene::inside_solid, py::arg("point"))
+      .def("__repr__", [](const env::Scene& s) {
+        return "<fspm.Scene with " + std::to_string(s.spheres.size()) + " spheres, " +
+               std::to_string(s.boxes.size()) + " boxes, " + std::to_string(s.meshes.size()) +
+               " meshes" + (s.ground ? ", ground" : "") + ">";
+      });
+
+  m.def(
+      "read_scene_file",
+      [](const std::string& path) {
+        py::gil_scoped_release release;
+        return env::read_scene_file(path);
+      },
+      py::arg("path"), "Read a scene file (JSON, docs/environment.md)");
+  m.def(
+      "parse_scene_json",
+      [](py::handle text) {
+        if (py::isinstance<py::dict>(text)) return scene_from(text);
+        return env::parse_scene_json(text.cast<std::string>());
+      },
+      py::arg("text"), "A scene from JSON text or from a dict of the same structure");
+}
+
+void bind_light(py::module_& m) {
+  py::class_<env::LightModel>(m, "LightModel",
+                              "Sky light at points through a scene's occluders (Pirk eq. 4.3)")
+      .def(py::init([](py::handle scene) {
+             const env::Scene s = scene_from(scene);
+             py::gil_scoped_release release;
+             return std::make_unique<env::LightModel>(s);
+           }),
+           py::arg("scene"), "Builds the shadow-volume index of a Scene (or scene dict)")
+      .def("evaluate", &evaluate, py::arg("points"),
+           "Light in [0, 1] and unit mean light direction at points (N, 3): arrays (N,) and "
+           "(N, 3)")
+      .def(
+          "evaluate_brute_force",
+          [](const env::LightModel& model, const Eigen::Vector3d& p) {
+            py::gil_scoped_release release;
+            const env::LightSample s = model.evaluate_brute_force(p);
+            return std::make_pair(s.light, s.direction);
+          },
+          py::arg("point"), "Reference: every direction ray-cast against every occluder")
+      .def_property_readonly("scene", &env::LightModel::scene);
+
+  m.def(
+      "light",
+      [](py::handle scene, const PointArray& points, std::optional<int> directions) {
+        env::Scene s = scene_from(scene);
+        if (directions) {
+          if (*directions < 1) throw ValueError("directions: expected a count >= 1");
+          s.sky.directions = *directions;
+        }
+        std::unique_ptr<env::LightModel> model;
+        {
+          py::gil_scoped_release release;
+          model = std::make_unique<env::LightModel>(s);
+        }
+        return evaluate(*model, points);
+      },
+      py::arg("scene"), py::arg("points"), py::arg("directions") = py::none(),
+      "Light and mean light direction at points (N, 3) of a scene, as `fspm light`: returns "
+      "(light (N,), directions (N, 3))");
+}
+
+void bind_growth(py::module_& m) {
+  py::class_<env::GrowthParams> gp(
+      m, "GrowthParams",
+      "Parameters of the self-organizing growth model (docs/environment.md). "
+      "GrowthParams(preset='A', years=10) starts from Pirk's tree type A");
+  Fields<env::GrowthParams>(gp)
+      .add("years", &env::GrowthParams::years)
+      .add("seed", &env::GrowthParams::seed)
+      .add("alpha", &env::GrowthParams::alpha)
+      .add("apical_control", &env::GrowthParams::apical_control)
+      .add("internode_length_m", &env::GrowthParams::internode_length_m)
+      .add("max_shoot_metamers", &env::GrowthParams::max_shoot_metamers)
+      .add("branching_angle_deg", &env::GrowthParams::branching_angle_deg)
+      .add("phyllotaxy_deg", &env::GrowthParams::phyllotaxy_deg)
+      .add("perturbation_deg", &env::GrowthParams::perturbation_deg)
+      .add("lateral_bud_lifetime_years", &env::GrowthParams::lateral_bud_lifetime_years)
+      .add("phototropism", &env::GrowthParams::phototropism)
+      .add("gravitropism", &env::GrowthParams::gravitropism)
+      .add("gravity_direction", &env::GrowthParams::gravity_direction)
+      .add("pruning_factor", &env::GrowthParams::pruning_factor)
+      .add("leaf_years", &env::GrowthParams::leaf_years)
+      .add("cluster_radius_m", &env::GrowthParams::cluster_radius_m)
+      .add("gamma0", &env::GrowthParams::gamma0)
+      .add("light_directions", &env::GrowthParams::light_directions)
+      .add("light_significance", &env::GrowthParams::light_significance)
+      .add("tip_radius_m", &env::GrowthParams::tip_radius_m)
+      .add("pipe_exponent", &env::GrowthParams::pipe_exponent)
+      .finish(&growth_base);
+  gp.def(
+      "validate", [](const env::GrowthParams& p) { env::validate(p); },
+      "Raises ParameterError naming the first parameter out of range");
+
+  m.def("growth_preset", &env::growth_preset, py::arg("name"), "Pirk's tree type 'A', 'B' or 'C'");
+  m.def(
+      "read_growth_params",
+      [](const std::string& path) {
+        py::gil_scoped_release release;
+        return env::read_growth_params(path);
+      },
+      py::arg("path"), "Growth parameters from a TOML file");
+  m.def(
+      "parse_growth_params", [](const std::string& text) { return env::parse_growth_params(text); },
+      py::arg("text"), "Growth parameters from TOML text");
+
+  py::class_<env::GrowthResult>(m, "GrowthResult", "A grown tree and its counts")
+      .def_readonly("tree", &env::GrowthResult::tree)
+      .def_readonly("internodes", &env::GrowthResult::internodes)
+      .def_readonly("clusters", &env::GrowthResult::clusters)
+      .def_readonly("shed", &env::GrowthResult::shed)
+      .def_readonly("grown", &env::GrowthResult::grown)
+      .def_readonly("height_m", &env::GrowthResult::height_m)
+      .def_property_readonly(
+          "cluster_spheres",
+          [](const env::GrowthResult& r) {
+            env::Scene s;
+            s.spheres = r.cluster_spheres;
+            return py::cast(s).attr("spheres");
+          },
+          "Final leaf clusters as rows x, y, z, radius, translucency")
+      .def("__repr__", [](const env::GrowthResult& r) {
+        return "<fspm.GrowthResult: " + std::to_string(r.internodes) + " internodes, " +
+               std::to_string(r.clusters) + " clusters, height " + std::to_string(r.height_m) +
+               " m>";
+      });
+
+  m.def(
+      "grow_tree",
+      [](py::handle params, py::handle scene, const Eigen::Vector3d& base) {
+        // A dict goes through the keyword constructor: GrowthParams(**params).
+        const env::GrowthParams p =
+            py::isinstance<py::dict>(params)
+                ? py::type::of<env::GrowthParams>()(**params.cast<py::dict>())
+                      .cast<env::GrowthParams>()
+                : params.cast<env::GrowthParams>();
+        const env::Scene s = scene_from(scene);
+        py::gil_scoped_release release;
+        return env::grow_tree(p, s, base);
+      },
+      py::arg("params"), py::arg("scene") = py::none(),
+      py::arg("base") = Eigen::Vector3d::Zero().eval(),
+      "Grow a tree (GrowthParams, or a dict of them with an optional 'preset') in a scene");
+}
+
+void bind_adaptation(py::module_& m) {
+  py::class_<env::AnalysisParams> ap(
+      m, "AnalysisParams", "Parameters of the open-sky analysis for plastic adaptation (Pirk 4.3)");
+  Fields<env::AnalysisParams>(ap)
+      .add("skeleton_radius_m", &env::AnalysisParams::skeleton_radius_m)
+      .add("min_cluster_radius_m", &env::AnalysisParams::min_cluster_radius_m)
+      .add("gamma0", &env::AnalysisParams::gamma0)
+      .add("pruning_strength", &env::AnalysisParams::pruning_strength)
+      .add("reference_percentile", &env::AnalysisParams::reference_percentile)
+      .add("temporal_pruning", &env::AnalysisParams::temporal_pruning)
+      .add("phototropism", &env::AnalysisParams::phototropism)
+      .add("gravitropism", &env::AnalysisParams::gravitropism)
+      .add("gravity_direction", &env::AnalysisParams::gravity_direction)
+      .add("light_directions", &env::AnalysisParams::light_directions)
+      .add("light_significance", &env::AnalysisParams::light_significance)
+      .finish();
+
+  using TA = env::TreeAnalysis;
+  py::class_<TA>(m, "TreeAnalysis", "A tree analysed as grown in the open (analyze_tree)")
+      .def_property_readonly("params", [](const TA& a) { return a.params; })
+      .def_readonly("skeleton_radius_m", &TA::skeleton_radius_m)
+      .def_readonly("internode_length_m", &TA::internode_length_m)
+      .def_readonly("height_path_m", &TA::height_path_m)
+      .def_readonly("max_age", &TA::max_age)
+      .def_readonly("reference_pruning_factor", &TA::reference_pruning_factor)
+      .def_property_readonly(
+          "skeleton",
+          [](py::object self) {
+            return column(std::span<const std::uint8_t>(self.cast<const TA&>().skeleton), self);
+          },
+          "Per node: 1 main skeleton, 0 fine part")
+      .def_property_readonly(
+          "cluster_of",
+          [](py::object self) {
+            return column(std::span<const std::uint32_t>(self.cast<const TA&>().cluster_of), self);
+          },
+          "Per node: index of its leaf cluster, or 2**32 - 1")
+      .def_property_readonly(
+          "growth_rate",
+          [](py::object self) {
+            return column(std::span<const double>(self.cast<const TA&>().growth_rate), self);
+          },
+          "Absolute growth rate nu_s (Pirk eq. 4.1)")
+      .def_property_readonly(
+          "age",
+          [](py::object self) {
+            return column(std::span<const int>(self.cast<const TA&>().age), self);
+          },
+          "Season each segment was created, 0 = oldest (Pirk eq. 4.2)")
+      .def_property_readonly(
+          "pruning_factor",
+          [](py::object self) {
+            return column(std::span<const double>(self.cast<const TA&>().pruning_factor), self);
+          },
+          "psi_s at analysis time (0 for fine nodes)")
+      .def_property_readonly(
+          "min_pruning_factor",
+          [](py::object self) {
+            return column(std::span<const double>(self.cast<const TA&>().min_pruning_factor), self);
+          },
+          "psi_s_min (Pirk eq. 4.12)")
+      .def_property_readonly(
+          "tropism_weight",
+          [](py::object self) {
+            return column(std::span<const double>(self.cast<const TA&>().tropism_weight), self);
+          },
+          "w_s (Pirk eq. 4.7)")
+      .def_property_readonly(
+          "clusters", [](const TA& a) { return cluster_array(a.clusters); },
+          "Leaf clusters as rows x, y, z, radius, translucency")
+      .def("__repr__", [](const TA& a) {
+        return "<fspm.TreeAnalysis: " + std::to_string(a.skeleton.size()) + " nodes, " +
+               std::to_string(a.clusters.size()) + " clusters>";
+      });
+
+  using AR = env::AdaptationResult;
+  py::class_<AR>(m, "AdaptationResult", "An adapted tree (attributes displacement and pruned)")
+      .def_readonly("tree", &AR::tree)
+      .def_readonly("pruned_nodes", &AR::pruned_nodes)
+      .def_readonly("bent_segments", &AR::bent_segments)
+      .def_readonly("tips", &AR::tips)
+      .def_readonly("mean_tip_displacement_m", &AR::mean_tip_displacement_m)
+      .def_property_readonly("mean_tip_shift", [](const AR& r) { return r.mean_tip_shift; })
+      .def_property_readonly(
+          "clusters", [](const AR& r) { return cluster_array(r.clusters); },
+          "Adapted leaf clusters as rows x, y, z, radius, translucency")
+      .def("__repr__", [](const AR& r) {
+        return "<fspm.AdaptationResult: " + std::to_string(r.tree.size()) + " nodes, " +
+               std::to_string(r.pruned_nodes) + " pruned>";
+      });
+
+  m.def(
+      "analyze_tree",
+      [](const TreeGraph& tree, std::optional<env::AnalysisParams> params,
+         const Eigen::Vector3d& brightest) {
+        const Eigen::Vector3d b = unit_above_horizon(brightest, "brightest");
+        py::gil_scoped_release release;
+        return env::analyze_tree(tree, params.value_or(env::AnalysisParams{}), b);
+      },
+      py::arg("tree"), py::arg("params") = py::none(),
+      py::arg("brightest") = Eigen::Vector3d::UnitZ().eval(),
+      "Analyse a tree as grown in the open under the sky's brightest point");
+  m.def(
+      "adapt_tree",
+      [](const TreeGraph& tree, const TA& analysis, py::handle scene) {
+        const env::Scene s = scene_from(scene);
+        py::gil_scoped_release release;
+        return env::adapt_tree(tree, analysis, s);
+      },
+      py::arg("tree"), py::arg("analysis"), py::arg("scene"),
+      "Bend and prune a tree for a scene (Pirk 4.4)");
+  m.def(
+      "adapt_trees",
+      [](const std::vector<const TreeGraph*>& trees, const std::vector<const TA*>& analyses,
+         py::handle scene) {
+        const env::Scene s = scene_from(scene);
+        py::gil_scoped_release release;
+        return env::adapt_trees(trees, analyses, s);
+      },
+      py::arg("trees"), py::arg("analyses"), py::arg("scene"),
+      "Adapt trees together: each is shaded by the others' leaf clusters");
+  m.def(
+      "remove_pruned",
+      [](const TreeGraph& adapted) {
+        py::gil_scoped_release release;
+        return env::remove_pruned(adapted);
+      },
+      py::arg("tree"), "The adapted tree without its nodes flagged 'pruned'");
+}
+
+}  // namespace
+
+void bind_environment(py::module_& m) {
+  bind_scene(m);
+  bind_light(m);
+  bind_growth(m);
+  bind_adaptation(m);
+}
+
+}  // namespace fspm::python
