@@ -43,10 +43,12 @@ const Case& case_for(int years) {
 void BM_AdaptBesideWall(benchmark::State& state) {
   const Case& c = case_for(static_cast<int>(state.range(0)));
   std::size_t pruned = 0;
+  std::size_t evaluations = 0;
   const auto t0 = std::chrono::steady_clock::now();
   for (auto _ : state) {
     const AdaptationResult r = adapt_tree(c.open.tree, c.analysis, c.wall);
     pruned = r.pruned_nodes;
+    evaluations = r.light_evaluations;
     benchmark::DoNotOptimize(r.tree.size());
   }
   const double per_run =
@@ -54,6 +56,8 @@ void BM_AdaptBesideWall(benchmark::State& state) {
       static_cast<double>(state.iterations());
   state.counters["nodes"] = static_cast<double>(c.open.tree.size());
   state.counters["pruned"] = static_cast<double>(pruned);
+  state.counters["clusters"] = static_cast<double>(c.analysis.clusters.size());
+  state.counters["light_evals"] = static_cast<double>(evaluations);
   state.counters["regrow_ms"] = 1e3 * c.regrow_seconds;
   state.counters["regrown_nodes"] = static_cast<double>(c.regrown_nodes);
   state.counters["regrow_ratio"] = c.regrow_seconds / per_run;

@@ -1,21 +1,35 @@
 #include "environment/plastic_adaptation.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
-#include <optional>
+#include <cstdint>
 
-#include "environment/light_model.hpp"
+#include "environment/cluster_light.hpp"
+#include "environment/solid_push.hpp"
 #include "fspm/error.hpp"
-#include "fspm/tree_traversal.hpp"
 
 namespace fspm::environment {
 namespace {
 
-// Clusters that moved less than this since their light was computed keep it (Pirk 4.4: work
-// only on the parts the change affects).
-constexpr double kLightTolerance_m = 0.05;
+constexpr std::uint64_t kStill = 0;  // group of clusters nothing moved in this step
+// Relative drift that counts, as a share of the distance (about 3 degrees of parallax).
+constexpr double kDriftParallax = 0.1;
+// Possible change of a cluster's light (share of the open sky's) from drifted or vanished
+// neighbours before it is re-evaluated: twice the shadow-volume significance.
+constexpr double kLightChange = 0.02;
 
 bool is_internode(const TreeGraph& t, NodeId n) { return t.kind(n) == OrganKind::kInternode; }
+
+// x -> q x + t.
+struct Rigid {
+  Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d t = Eigen::Vector3d::Zero();
+  Eigen::Vector3d operator()(const Eigen::Vector3d& x) const { return q * x + t; }
+};
+
+// a after b.
+Rigid compose(const Rigid& a, const Rigid& b) { return {a.q * b.q, a.q * b.t + a.t}; }
 
 // First node of a lateral branch: a higher branching order than its parent or, for trees without
 // orders, not the parent's first internode child.
@@ -34,174 +48,492 @@ std::vector<std::uint8_t> lateral_bases(const TreeGraph& t) {
   return out;
 }
 
-}  // namespace
+// One tree of a (lock-step) adaptation.
+struct TreeRun {
+  const TreeGraph* tree = nullptr;
+  const TreeAnalysis* a = nullptr;
+  std::uint32_t first_cluster = 0;       // index of its cluster 0 in the shared light field
+  int first_step = 0;                    // step at which its age level 0 runs
+  std::vector<NodeId> skeleton;          // skeleton nodes by id
+  std::vector<NodeId> by_age;            // skeleton nodes sorted by (age, id): parents first
+  std::vector<std::uint32_t> age_begin;  // by_age index of the first node of each age
+  std::vector<std::uint32_t> pre, pre_pos, pre_size;        // skeleton pre-order
+  std::vector<std::uint32_t> cluster_start, cluster_items;  // clusters anchored per node (CSR)
+  std::vector<std::uint8_t> lateral, pruned;
+  std::vector<Rigid> F, S;  // accumulated transform; this step's transform
+  std::vector<int> stamp;   // step at which S was set
+  std::vector<std::uint64_t> group;
+  std::vector<double> zeta, length_below;
+  std::vector<Eigen::Vector3d> light_sum;
+  AdaptationResult result;
+};
 
-AdaptationResult adapt_tree(const TreeGraph& tree, const TreeAnalysis& a, const Scene& scene) {
-  const std::size_t n = tree.size();
-  if (a.skeleton.size() != n || a.age.size() != n || a.cluster_of.size() != n) {
-    throw ValueError("plastic adaptation: the analysis was made for another tree");
+class Engine {
+ public:
+  Engine(const std::vector<const TreeGraph*>& trees,
+         const std::vector<const TreeAnalysis*>& analyses, const Scene& scene);
+  std::vector<AdaptationResult> run();
+
+ private:
+  void setup_tree(TreeRun& r);
+  void aggregate(TreeRun& r);
+  void bend(TreeRun& r, int level, int step);
+  void prune(TreeRun& r, int level);
+  void mark_dirty(std::uint32_t c);
+  void check_moved();
+  void refresh();
+  void finish(TreeRun& r);
+  const Eigen::Quaterniond& anchor_rotation(std::uint32_t c) const {
+    const TreeRun& r = runs_[owner_[c]];
+    return r.F[r.a->clusters[c - r.first_cluster].anchor].q;
   }
-  AdaptationResult r;
-  r.tree = tree;
-  TreeGraph& t = r.tree;
-  if (n == 0) return r;
 
-  // Pre-order positions: the subtree of s is order[pos[s], pos[s] + size[s]).
-  const std::vector<NodeId> order = preorder(tree);
-  std::vector<std::uint32_t> pos(n), size(n, 1);
-  for (std::uint32_t k = 0; k < order.size(); ++k) pos[order[k]] = k;
-  for (NodeId i = static_cast<NodeId>(n); i-- > 1;) size[tree.parent(i)] += size[i];
+  std::vector<TreeRun> runs_;
+  const Scene& scene_;
+  ClusterLightField field_;
+  std::vector<Eigen::Vector3d> center0_;
+  std::vector<Eigen::Quaterniond> eval_q_;  // cluster rotation at its last evaluation
+  std::vector<std::uint64_t> cgroup_;       // cluster group in this step
+  std::vector<std::uint32_t> moved_, vanished_, dirty_list_, check_list_;
+  std::vector<std::uint8_t> dirty_, check_, relist_;
+  std::vector<double> lost_;
+  std::vector<std::uint32_t> owner_;  // tree of each cluster
+};
 
-  std::vector<std::vector<NodeId>> by_age(static_cast<std::size_t>(a.max_age) + 1);
-  for (NodeId i = 0; i < n; ++i) {
-    if (a.skeleton[i]) by_age[static_cast<std::size_t>(a.age[i])].push_back(i);
+Engine::Engine(const std::vector<const TreeGraph*>& trees,
+               const std::vector<const TreeAnalysis*>& analyses, const Scene& scene)
+    : scene_(scene),
+      field_(analyses.empty() ? 64 : analyses.front()->params.light_directions,
+             analyses.empty() ? 0.01 : analyses.front()->params.light_significance,
+             scene.sky.brightest) {
+  if (trees.size() != analyses.size()) {
+    throw ValueError("plastic adaptation: one analysis per tree expected");
   }
-  const std::vector<std::uint8_t> lateral = lateral_bases(tree);
-  std::vector<std::uint8_t> pruned(n, 0);
-  std::vector<Eigen::Quaterniond> acc(n, Eigen::Quaterniond::Identity());
-  std::vector<LeafCluster> clusters = a.clusters;
-  std::vector<std::uint8_t> alive(clusters.size(), 1);
+  runs_.resize(trees.size());
+  std::vector<Eigen::Vector3d> centers;
+  std::vector<double> radii, gammas;
+  int max_levels = 0;
+  for (std::size_t k = 0; k < trees.size(); ++k) {
+    const TreeGraph& t = *trees[k];
+    const TreeAnalysis& a = *analyses[k];
+    const std::size_t n = t.size();
+    if (a.skeleton.size() != n || a.age.size() != n || a.cluster_of.size() != n ||
+        a.cluster_light.size() != a.clusters.size() ||
+        a.cluster_direction.size() != a.clusters.size() ||
+        a.cluster_neighbors.size() != a.clusters.size()) {
+      throw ValueError("plastic adaptation: the analysis was made for another tree");
+    }
+    runs_[k].tree = &t;
+    runs_[k].a = &a;
+    runs_[k].first_cluster = static_cast<std::uint32_t>(centers.size());
+    for (const LeafCluster& c : a.clusters) {
+      centers.push_back(c.center);
+      radii.push_back(c.radius_m);
+      gammas.push_back(c.translucency);
+      owner_.push_back(static_cast<std::uint32_t>(k));
+    }
+    max_levels = std::max(max_levels, a.max_age + 1);
+  }
+  // Pirk 4.4.3: the younger trees start later so that all finish together.
+  for (TreeRun& r : runs_) r.first_step = max_levels - (r.a->max_age + 1);
 
-  Scene world = scene;
-  world.sky.directions = a.params.light_directions;
-  world.sky.significance = a.params.light_significance;
-  const std::size_t obstacle_spheres = world.spheres.size();
-  const auto rebuild_light = [&] {
-    world.spheres.resize(obstacle_spheres);
-    for (std::size_t c = 0; c < clusters.size(); ++c) {
-      if (alive[c]) {
-        world.spheres.push_back(
-            {clusters[c].center, clusters[c].radius_m, clusters[c].translucency, false});
-      }
+  field_.set_clusters(centers, radii, gammas);
+  field_.set_obstacles(scene);
+  center0_ = centers;
+  const std::size_t nc = centers.size();
+  eval_q_.assign(nc, Eigen::Quaterniond::Identity());
+  cgroup_.assign(nc, kStill);
+  dirty_.assign(nc, 0);
+  relist_.assign(nc, 0);
+  lost_.assign(nc, 0.0);
+  check_.assign(nc, 0);
+  bool sky_changed = false;
+  for (const TreeRun& r : runs_) {
+    const TreeAnalysis& a = *r.a;
+    const Eigen::Vector3d b = scene.sky.brightest.norm() > 0
+                                  ? Eigen::Vector3d(scene.sky.brightest.normalized())
+                                  : Eigen::Vector3d::UnitZ();
+    sky_changed = sky_changed || (a.brightest - b).norm() > 1e-12 ||
+                  a.params.light_directions != runs_.front().a->params.light_directions ||
+                  a.params.light_significance != runs_.front().a->params.light_significance;
+    for (std::size_t c = 0; c < a.clusters.size(); ++c) {
+      const std::uint32_t g = r.first_cluster + static_cast<std::uint32_t>(c);
+      field_.light_[g] = a.cluster_light[c];
+      field_.direction_[g] = a.cluster_direction[c];
+      field_.share_list(g, &a.cluster_neighbors[c], r.first_cluster);
     }
-    return LightModel(world);
-  };
-  const auto update_clusters = [&] {
-    // Pirk 4.4.2: a cluster moves by the mean offset of its remaining nodes.
-    for (std::size_t c = 0; c < clusters.size(); ++c) {
-      if (!alive[c]) continue;
-      Eigen::Vector3d offset = Eigen::Vector3d::Zero();
-      std::size_t count = 0;
-      for (const NodeId m : clusters[c].nodes) {
-        if (pruned[m]) continue;
-        offset += t.end(m) - tree.end(m);
-        ++count;
-      }
-      if (count == 0) {
-        alive[c] = 0;
-        continue;
-      }
-      clusters[c].center = a.clusters[c].center + offset / static_cast<double>(count);
-      // Pirk eq. 4.14: gamma' = gamma ^ (n_c / n_0).
-      clusters[c].translucency =
-          std::pow(a.clusters[c].translucency,
-                   static_cast<double>(count) / static_cast<double>(clusters[c].nodes.size()));
-    }
-  };
+  }
+  for (TreeRun& r : runs_) setup_tree(r);
 
-  const double wp = a.params.phototropism;
-  const double wg = a.params.gravitropism;
-  const double w_sum = wp + wg;
-  const Eigen::Vector3d g = a.params.gravity_direction.normalized();
-  std::vector<double> zeta(n), length_below(n), cluster_zeta(clusters.size(), 0.0);
-  // The light is rebuilt only after something moved or was pruned ("work only on the parts the
-  // change affects", Pirk 4.4, at the granularity of whole levels).
-  std::optional<LightModel> light;
-  bool stale = true;
-  bool all_stale = true;  // after pruning every cluster's shadows changed
-  std::vector<Eigen::Vector3d> evaluated_at(clusters.size());
-  const double tolerance2 = kLightTolerance_m * kLightTolerance_m;
-  const auto refresh = [&] {
-    if (!stale) return;
-    light.emplace(rebuild_light());
-    std::uint32_t sphere = static_cast<std::uint32_t>(obstacle_spheres);
-    for (std::size_t c = 0; c < clusters.size(); ++c) {
-      if (!alive[c]) {
-        cluster_zeta[c] = 0.0;
-        continue;
-      }
-      const std::uint32_t own = sphere++;
-      // A cluster that barely moved since its light was last computed keeps it.
-      if (!all_stale && (clusters[c].center - evaluated_at[c]).squaredNorm() < tolerance2) continue;
-      evaluated_at[c] = clusters[c].center;
-      const double i_c = light->evaluate(clusters[c].center, own).light;
-      const double rc = clusters[c].radius_m;
-      cluster_zeta[c] = 2.0 * M_PI * rc * rc * i_c;  // Pirk eq. 4.11
+  // What changed against the analysis: the sky (everything), obstacles (the clusters they shade),
+  // neighbouring trees (the clusters within reach of another tree).
+  if (sky_changed) {
+    for (std::uint32_t c = 0; c < nc; ++c) mark_dirty(c);
+  }
+  if (field_.has_obstacles()) {
+    for (std::uint32_t c = 0; c < nc; ++c) {
+      if (field_.update_obstacles(c)) mark_dirty(c);
     }
-    stale = false;
-    all_stale = false;
-  };
-  for (std::size_t level = 0; level < by_age.size(); ++level) {
-    bool moved = false;
-    if (w_sum > 0.0 && !by_age[level].empty()) {
-      refresh();
-      for (const NodeId s : by_age[level]) {
-        if (pruned[s]) continue;
-        // Pirk eq. 4.6 in the frame the segment has been carried into by its ancestors: the old
-        // heading (analysis tropism) and the new one (light direction here and now).
-        const double ws = a.tropism_weight[s];
-        const Eigen::Vector3d d_o = acc[s] * a.original_direction[s];
-        const Eigen::Vector3d v = light->evaluate(t.start(s)).direction;
-        const Eigen::Vector3d t_new = (wp * v + wg * g) / w_sum;
-        const Eigen::Vector3d h_old = ws * d_o + (1.0 - ws) * (acc[s] * a.tropism[s]);
-        const Eigen::Vector3d h_new = ws * d_o + (1.0 - ws) * t_new;
-        if (h_old.norm() < 1e-12 || h_new.norm() < 1e-12) continue;
-        const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(h_old, h_new);
-        if (q.vec().norm() < 1e-9) continue;
-        ++r.bent_segments;
-        moved = true;
-        const Eigen::Vector3d pivot = t.start(s);
-        const Eigen::Matrix3d rot = q.toRotationMatrix();
-        for (std::uint32_t k = pos[s]; k < pos[s] + size[s]; ++k) {
-          const NodeId m = order[k];
-          const double len = t.length(m);
-          const Eigen::Vector3d dir = rot * t.direction(m);
-          t.set_segment(m, pivot + rot * (t.start(m) - pivot), pivot + rot * (t.end(m) - pivot));
-          t.set_length(m, len);
-          t.set_direction(m, dir);
-          acc[m] = q * acc[m];
+  }
+  if (runs_.size() > 1) {
+    const double reach = [&] {
+      double m = 0.0;
+      for (std::uint32_t c = 0; c < nc; ++c) {
+        if (field_.reach2_[c] >= 0.0) m = std::max(m, std::sqrt(field_.reach2_[c]));
+      }
+      return m + ClusterLightField::kListMargin_m;
+    }();
+    std::vector<Eigen::AlignedBox3d> boxes(runs_.size());
+    for (std::uint32_t c = 0; c < nc; ++c) boxes[owner_[c]].extend(centers[c]);
+    for (auto& b : boxes) {
+      if (!b.isEmpty()) b = Eigen::AlignedBox3d(b.min().array() - reach, b.max().array() + reach);
+    }
+    for (std::uint32_t c = 0; c < nc; ++c) {
+      for (std::size_t k = 0; k < boxes.size(); ++k) {
+        if (k != owner_[c] && boxes[k].contains(centers[c])) {
+          mark_dirty(c);
+          relist_[c] = 1;  // its analysed list knows only its own tree
         }
       }
     }
-    if (moved) {
-      update_clusters();
-      stale = true;
-    }
+  }
+  refresh();
+}
 
-    // Pruning after the level (Pirk 4.4.1): resources of eq. 4.11 over the remaining length.
-    refresh();
-    std::fill(zeta.begin(), zeta.end(), 0.0);
-    std::fill(length_below.begin(), length_below.end(), 0.0);
-    for (std::size_t c = 0; c < clusters.size(); ++c) {
-      if (alive[c]) zeta[clusters[c].anchor] += cluster_zeta[c];
-    }
-    for (NodeId i = static_cast<NodeId>(n); i-- > 0;) {
-      if (!a.skeleton[i] || pruned[i]) continue;
-      length_below[i] += t.length(i);
-      if (i > 0) {
-        zeta[t.parent(i)] += zeta[i];
-        length_below[t.parent(i)] += length_below[i];
+void Engine::setup_tree(TreeRun& r) {
+  const TreeGraph& t = *r.tree;
+  const TreeAnalysis& a = *r.a;
+  const std::size_t n = t.size();
+  for (NodeId i = 0; i < n; ++i) {
+    if (a.skeleton[i]) r.skeleton.push_back(i);
+  }
+  r.by_age = r.skeleton;
+  std::stable_sort(r.by_age.begin(), r.by_age.end(),
+                   [&](NodeId x, NodeId y) { return a.age[x] < a.age[y]; });
+  r.age_begin.assign(static_cast<std::size_t>(a.max_age) + 2, 0);
+  for (const NodeId m : r.by_age) ++r.age_begin[static_cast<std::size_t>(a.age[m]) + 1];
+  for (std::size_t k = 1; k < r.age_begin.size(); ++k) r.age_begin[k] += r.age_begin[k - 1];
+  // Skeleton pre-order (children of a skeleton node in id order).
+  r.pre_pos.assign(n, 0);
+  r.pre_size.assign(n, 1);
+  {
+    std::vector<NodeId> stack = {0};
+    while (!stack.empty()) {
+      const NodeId m = stack.back();
+      stack.pop_back();
+      r.pre_pos[m] = static_cast<std::uint32_t>(r.pre.size());
+      r.pre.push_back(m);
+      const std::size_t before = stack.size();
+      for (const NodeId c : t.children(m)) {
+        if (a.skeleton[c]) stack.push_back(c);
       }
+      std::reverse(stack.begin() + static_cast<std::ptrdiff_t>(before), stack.end());
     }
-    bool any = false;
-    for (NodeId s = 1; s < n; ++s) {
-      if (!a.skeleton[s] || !lateral[s] || pruned[s]) continue;
-      if (a.age[s] > static_cast<int>(level) || length_below[s] <= 0.0) continue;
-      if (zeta[s] / length_below[s] >= a.min_pruning_factor[s]) continue;
-      for (std::uint32_t k = pos[s]; k < pos[s] + size[s]; ++k) pruned[order[k]] = 1;
-      any = true;
-    }
-    if (any) {
-      update_clusters();
-      stale = true;
-      all_stale = true;
+    for (auto it = r.skeleton.rbegin(); it != r.skeleton.rend(); ++it) {
+      if (*it != 0) r.pre_size[t.parent(*it)] += r.pre_size[*it];
     }
   }
+  r.cluster_start.assign(n + 1, 0);
+  for (const LeafCluster& c : a.clusters) ++r.cluster_start[c.anchor + 1];
+  for (std::size_t i = 0; i < n; ++i) r.cluster_start[i + 1] += r.cluster_start[i];
+  r.cluster_items.resize(a.clusters.size());
+  {
+    std::vector<std::uint32_t> fill(r.cluster_start.begin(), r.cluster_start.end() - 1);
+    for (std::uint32_t c = 0; c < a.clusters.size(); ++c) {
+      r.cluster_items[fill[a.clusters[c].anchor]++] = c;
+    }
+  }
+  r.lateral = lateral_bases(t);
+  r.pruned.assign(n, 0);
+  r.F.assign(n, Rigid{});
+  r.S.assign(n, Rigid{});
+  r.stamp.assign(n, -1);
+  r.group.assign(n, kStill);
+  r.zeta.assign(n, 0.0);
+  r.length_below.assign(n, 0.0);
+  r.light_sum.assign(n, Eigen::Vector3d::Zero());
+}
+
+// Resources (eq. 4.11), remaining skeleton length and light directions below every skeleton node:
+// the same loop as analyze_tree, so an unchanged scene reproduces the analysis bit for bit.
+void Engine::aggregate(TreeRun& r) {
+  const TreeGraph& t = *r.tree;
+  const TreeAnalysis& a = *r.a;
+  for (const NodeId m : r.skeleton) {
+    r.zeta[m] = 0.0;
+    r.length_below[m] = 0.0;
+    r.light_sum[m].setZero();
+  }
+  for (std::uint32_t c = 0; c < a.clusters.size(); ++c) {
+    const std::uint32_t g = r.first_cluster + c;
+    if (!field_.alive_[g]) continue;
+    const double z = cluster_resources(a.clusters[c].radius_m, field_.light_[g]);
+    r.zeta[a.clusters[c].anchor] += z;
+    r.light_sum[a.clusters[c].anchor] += z * field_.direction_[g];
+  }
+  for (auto it = r.skeleton.rbegin(); it != r.skeleton.rend(); ++it) {
+    const NodeId i = *it;
+    if (r.pruned[i]) continue;
+    r.length_below[i] += t.length(i);
+    if (i > 0) {
+      const NodeId p = t.parent(i);
+      r.zeta[p] += r.zeta[i];
+      r.light_sum[p] += r.light_sum[i];
+      r.length_below[p] += r.length_below[i];
+    }
+  }
+}
+
+// Pirk 4.4.1 and eq. 4.6: the segments of age `level` bend toward the light of their clusters; one
+// pass over the skeleton not older than `level` (parents first) carries every rotation into the
+// subtree and records which rigid group each node moved with.
+void Engine::bend(TreeRun& r, int level, int step) {
+  const TreeGraph& t = *r.tree;
+  const TreeAnalysis& a = *r.a;
+  const double wp = a.params.phototropism;
+  const double wg = a.params.gravitropism;
+  const double w_sum = wp + wg;
+  if (w_sum <= 0.0) return;
+  const Eigen::Vector3d g = a.params.gravity_direction.normalized();
+  const std::uint64_t tree_tag = static_cast<std::uint64_t>(&r - runs_.data() + 1) << 32;
+  bool any = false;
+  for (std::size_t k = r.age_begin[static_cast<std::size_t>(level)]; k < r.by_age.size(); ++k) {
+    const NodeId m = r.by_age[k];
+    if (r.pruned[m]) continue;
+    const NodeId p = m == 0 ? kNoNode : t.parent(m);
+    const bool inherit = p != kNoNode && r.stamp[p] == step;
+    if (!inherit && a.age[m] != level) continue;  // nothing moved it in this step
+    Rigid s = inherit ? r.S[p] : Rigid{};
+    std::uint64_t grp = inherit ? r.group[p] : kStill;
+    bool bent = false;
+    if (a.age[m] == level) {
+      // Eq. 4.6 in the frame the segment has been carried into: the old heading (analysis
+      // tropism) and the new one (light direction of its clusters now).
+      const Eigen::Quaterniond q_cur = s.q * r.F[m].q;
+      const double ws = a.tropism_weight[m];
+      const Eigen::Vector3d d_o = q_cur * a.original_direction[m];
+      const Eigen::Vector3d v = segment_light_direction(r.light_sum[m], field_.open_direction());
+      const Eigen::Vector3d t_new = (wp * v + wg * g) / w_sum;
+      const Eigen::Vector3d h_old = ws * d_o + (1.0 - ws) * (q_cur * a.tropism[m]);
+      const Eigen::Vector3d h_new = ws * d_o + (1.0 - ws) * t_new;
+      if (h_old.norm() > 1e-12 && h_new.norm() > 1e-12) {
+        const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(h_old, h_new);
+        if (q.vec().norm() >= 1e-9) {
+          const Eigen::Vector3d pivot = s(r.F[m](t.start(m)));
+          s = Rigid{q * s.q, q * (s.t - pivot) + pivot};
+          grp = tree_tag | (static_cast<std::uint64_t>(m) + 1);
+          bent = true;
+          ++r.result.bent_segments;
+        }
+      }
+    }
+    if (!inherit && !bent) continue;
+    r.S[m] = s;
+    r.stamp[m] = step;
+    r.group[m] = grp;
+    r.F[m] = compose(s, r.F[m]);
+    any = true;
+  }
+  if (!any) return;
+  // Pirk 4.4.2: the clusters follow their anchors.
+  for (std::uint32_t c = 0; c < a.clusters.size(); ++c) {
+    const NodeId anchor = a.clusters[c].anchor;
+    const std::uint32_t gc = r.first_cluster + c;
+    if (r.stamp[anchor] != step || !field_.alive_[gc]) continue;
+    field_.center_[gc] = r.F[anchor](center0_[gc]);
+    cgroup_[gc] = r.group[anchor];
+    moved_.push_back(gc);
+  }
+  field_.mark_moved();
+}
+
+// Pirk 4.4.1: after a level, every lateral branch up to that age whose resources per remaining
+// length fall below its minimum pruning factor (eq. 4.12) is pruned with its subtree.
+void Engine::prune(TreeRun& r, int level) {
+  const TreeAnalysis& a = *r.a;
+  aggregate(r);
+  for (const NodeId s : r.skeleton) {
+    if (s == 0 || !r.lateral[s] || r.pruned[s]) continue;
+    if (a.age[s] > level || r.length_below[s] <= 0.0) continue;
+    if (r.zeta[s] / r.length_below[s] >= a.min_pruning_factor[s]) continue;
+    for (std::uint32_t k = r.pre_pos[s]; k < r.pre_pos[s] + r.pre_size[s]; ++k) {
+      const NodeId m = r.pre[k];
+      r.pruned[m] = 1;
+      for (std::uint32_t j = r.cluster_start[m]; j < r.cluster_start[m + 1]; ++j) {
+        const std::uint32_t gc = r.first_cluster + r.cluster_items[j];
+        if (!field_.alive_[gc]) continue;
+        field_.alive_[gc] = 0;
+        vanished_.push_back(gc);
+      }
+    }
+  }
+}
+
+void Engine::mark_dirty(std::uint32_t c) {
+  if (dirty_[c] || !field_.alive_[c]) return;
+  dirty_[c] = 1;
+  dirty_list_.push_back(c);
+}
+
+// Which clusters' light the moves of this step changed: relative drift against a neighbour that
+// moved with another group, a turn against the sky, or new obstacle visibility.
+void Engine::check_moved() {
+  const double cos_half_turn = std::cos(0.5 * kTurnTolerance_rad);
+  // A neighbour j that drifted against c by more than the tolerance (and kDriftParallax of its
+  // distance) may have changed c's light by up to the share it can take (loss_bound); c is
+  // re-evaluated once these possible changes reach kLightChange.
+  const auto drift = [&](std::uint32_t c, std::uint32_t j, const ClusterNeighbor& e) {
+    const Eigen::Vector3d now = field_.center_[j] - field_.center_[c];
+    const Eigen::Vector3d then = e.relative.cast<double>();
+    const double tol = std::max(kDriftTolerance_m, kDriftParallax * then.norm());
+    if ((now - then).squaredNorm() <= tol * tol) return;
+    lost_[c] += std::max(field_.loss_bound(j, now), field_.loss_bound(j, then));
+    if (lost_[c] >= kLightChange) {
+      mark_dirty(c);
+    }
+  };
+  for (const std::uint32_t c : moved_) {
+    if (!field_.alive_[c]) continue;
+    if (std::abs(anchor_rotation(c).dot(eval_q_[c])) < cos_half_turn) mark_dirty(c);
+    if (field_.obstacles_stale(c) && field_.update_obstacles(c)) mark_dirty(c);
+    const ClusterLightField::ListView view = field_.neighbors(c);
+    for (const ClusterNeighbor& e : view) {
+      const std::uint32_t j = e.index + view.offset;
+      if (!field_.alive_[j] || cgroup_[j] == cgroup_[c]) continue;
+      if (cgroup_[j] == kStill && !check_[j]) {
+        check_[j] = 1;
+        check_list_.push_back(j);
+      }
+      if (!dirty_[c]) drift(c, j, e);
+    }
+  }
+  for (const std::uint32_t c : check_list_) {
+    check_[c] = 0;
+    if (dirty_[c]) continue;
+    const ClusterLightField::ListView view = field_.neighbors(c);
+    for (const ClusterNeighbor& e : view) {
+      const std::uint32_t j = e.index + view.offset;
+      if (!field_.alive_[j] || cgroup_[j] == kStill) continue;
+      drift(c, j, e);
+      if (dirty_[c]) break;
+    }
+  }
+  check_list_.clear();
+  for (const std::uint32_t c : moved_) cgroup_[c] = kStill;
+  moved_.clear();
+  // A vanished cluster no longer shades the clusters in its shadow volume: they are re-evaluated
+  // once the light they may have gained since their evaluation reaches kLightChange.
+  for (const std::uint32_t c : vanished_) {
+    const ClusterLightField::ListView view = field_.neighbors(c);
+    for (const ClusterNeighbor& e : view) {
+      const std::uint32_t j = e.index + view.offset;
+      if (!field_.alive_[j] || dirty_[j]) continue;
+      lost_[j] += field_.loss_bound(c, field_.center_[j] - field_.center_[c]);
+      if (lost_[j] >= kLightChange) mark_dirty(j);
+    }
+  }
+  vanished_.clear();
+}
+
+void Engine::refresh() {
+  if (dirty_list_.empty()) return;
+  field_.rebuild_grid();
+  std::sort(dirty_list_.begin(), dirty_list_.end());
+  for (const std::uint32_t c : dirty_list_) {
+    dirty_[c] = 0;
+    if (!field_.alive_[c]) continue;
+    field_.evaluate(c, relist_[c] != 0);
+    relist_[c] = 0;
+    eval_q_[c] = anchor_rotation(c);
+    lost_[c] = 0.0;
+  }
+  dirty_list_.clear();
+}
+
+std::vector<AdaptationResult> Engine::run() {
+  int steps = 0;
+  for (const TreeRun& r : runs_) steps = std::max(steps, r.first_step + r.a->max_age + 1);
+  for (int step = 0; step < steps; ++step) {
+    // Bend every tree's current level (lock-step, Pirk 4.4.3), then update the light once.
+    for (TreeRun& r : runs_) {
+      const int level = step - r.first_step;
+      if (level < 0 || level > r.a->max_age) continue;
+      if (r.age_begin[static_cast<std::size_t>(level) + 1] ==
+          r.age_begin[static_cast<std::size_t>(level)]) {
+        continue;  // no segment of this age
+      }
+      aggregate(r);
+      bend(r, level, step);
+    }
+    check_moved();
+    refresh();
+    for (TreeRun& r : runs_) {
+      const int level = step - r.first_step;
+      if (level >= 0 && level <= r.a->max_age) prune(r, level);
+    }
+    // The clusters a pruning brightened are re-evaluated with the next step's moves (the next
+    // bending still sees the light before this pruning: one level of lag, one evaluation less).
+    if (step + 1 == steps) {
+      check_moved();
+      refresh();
+    }
+  }
+  std::vector<AdaptationResult> out;
+  for (TreeRun& r : runs_) {
+    finish(r);
+    out.push_back(std::move(r.result));
+  }
+  return out;
+}
+
+void Engine::finish(TreeRun& r) {
+  const TreeGraph& tree = *r.tree;
+  const TreeAnalysis& a = *r.a;
+  AdaptationResult& res = r.result;
+  res.tree = tree;
+  TreeGraph& t = res.tree;
+  const std::size_t n = tree.size();
+  // Final positions: skeleton nodes by their own transform, fine nodes by their cluster anchor's.
+  std::vector<std::uint8_t> pruned(n, 0);
+  for (NodeId i = 0; i < n; ++i) {
+    const NodeId owner = a.skeleton[i] ? i : a.clusters[a.cluster_of[i]].anchor;
+    pruned[i] = r.pruned[owner];
+    const Rigid& f = r.F[owner];
+    if (f.q.vec().squaredNorm() == 0.0 && f.t.squaredNorm() == 0.0) continue;
+    const double len = t.length(i);
+    t.set_segment(i, f(tree.start(i)), f(tree.end(i)));
+    t.set_length(i, len);
+    t.set_direction(i, f.q * tree.direction(i));
+  }
+  // Leaf clusters: moved with their anchor, eq. 4.14 translucency, eq. 4.13 density.
+  std::vector<std::uint8_t> alive(a.clusters.size(), 0);
+  for (std::uint32_t c = 0; c < a.clusters.size(); ++c) {
+    const std::uint32_t g = r.first_cluster + c;
+    if (!field_.alive_[g]) continue;
+    alive[c] = 1;
+    LeafCluster lc = a.clusters[c];
+    lc.center = field_.center_[g];
+    std::size_t count = 0;
+    for (const NodeId m : lc.nodes) count += pruned[m] == 0;
+    lc.translucency = std::pow(a.clusters[c].translucency,
+                               static_cast<double>(count) / static_cast<double>(lc.nodes.size()));
+    // Pirk eq. 4.13 with rho(i) = i: the density scales with the light against the analysis.
+    const double i0 = a.cluster_light[c];
+    lc.density = i0 > 1e-9 ? std::clamp(field_.light_[g] / i0, 0.0, 2.0) : 1.0;
+    res.clusters.push_back(std::move(lc));
+  }
+  // Clusters that ended up in a solid obstacle are pushed out (Pirk Fig. 4.6).
+  res.pushed_clusters = push_clusters_out_of_solids(scene_, t, res.clusters);
 
   t.add_attribute("displacement", 0.0);
   t.add_attribute("pruned", 0.0);
+  t.add_attribute("leaf_density", 1.0);
   auto disp = t.attribute("displacement");
   auto pr = t.attribute("pruned");
+  auto dens = t.attribute("leaf_density");
+  for (const LeafCluster& lc : res.clusters) {
+    for (const NodeId m : lc.nodes) dens[m] = lc.density;
+  }
   std::vector<std::uint8_t> internode_child(n, 0);
   for (NodeId i = 1; i < n; ++i) {
     if (is_internode(t, i)) internode_child[t.parent(i)] = 1;
@@ -209,20 +541,32 @@ AdaptationResult adapt_tree(const TreeGraph& tree, const TreeAnalysis& a, const 
   for (NodeId i = 0; i < n; ++i) {
     disp[i] = (t.end(i) - tree.end(i)).norm();
     pr[i] = pruned[i];
-    r.pruned_nodes += pruned[i];
+    res.pruned_nodes += pruned[i];
     if (pruned[i] || !is_internode(t, i) || internode_child[i]) continue;
-    ++r.tips;
-    r.mean_tip_displacement_m += disp[i];
-    r.mean_tip_shift += t.end(i) - tree.end(i);
+    ++res.tips;
+    res.mean_tip_displacement_m += disp[i];
+    res.mean_tip_shift += t.end(i) - tree.end(i);
   }
-  if (r.tips > 0) {
-    r.mean_tip_displacement_m /= static_cast<double>(r.tips);
-    r.mean_tip_shift /= static_cast<double>(r.tips);
+  if (res.tips > 0) {
+    res.mean_tip_displacement_m /= static_cast<double>(res.tips);
+    res.mean_tip_shift /= static_cast<double>(res.tips);
   }
-  for (std::size_t c = 0; c < clusters.size(); ++c) {
-    if (alive[c]) r.clusters.push_back(clusters[c]);
+  res.light_evaluations = field_.evaluations_;
+}
+
+}  // namespace
+
+AdaptationResult adapt_tree(const TreeGraph& tree, const TreeAnalysis& a, const Scene& scene) {
+  if (a.skeleton.size() != tree.size()) {
+    throw ValueError("plastic adaptation: the analysis was made for another tree");
   }
-  return r;
+  if (tree.empty()) {
+    AdaptationResult r;
+    r.tree = tree;
+    return r;
+  }
+  Engine engine({&tree}, {&a}, scene);
+  return std::move(engine.run().front());
 }
 
 std::vector<AdaptationResult> adapt_trees(const std::vector<const TreeGraph*>& trees,
@@ -231,17 +575,14 @@ std::vector<AdaptationResult> adapt_trees(const std::vector<const TreeGraph*>& t
   if (trees.size() != analyses.size()) {
     throw ValueError("plastic adaptation: one analysis per tree expected");
   }
-  std::vector<AdaptationResult> out;
-  out.reserve(trees.size());
-  for (std::size_t i = 0; i < trees.size(); ++i) {
-    Scene shared = scene;
-    for (std::size_t j = 0; j < trees.size(); ++j) {
-      if (j == i) continue;
-      for (const Sphere& s : cluster_spheres(analyses[j]->clusters)) shared.spheres.push_back(s);
+  for (std::size_t k = 0; k < trees.size(); ++k) {
+    if (trees[k] == nullptr || analyses[k] == nullptr || trees[k]->empty()) {
+      throw ValueError("plastic adaptation: empty tree or missing analysis");
     }
-    out.push_back(adapt_tree(*trees[i], *analyses[i], shared));
   }
-  return out;
+  if (trees.empty()) return {};
+  Engine engine(trees, analyses, scene);
+  return engine.run();
 }
 
 TreeGraph remove_pruned(const TreeGraph& adapted) {

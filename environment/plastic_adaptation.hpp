@@ -3,10 +3,17 @@
 // for a new scene, age level by age level, oldest first. Per level: every skeleton segment of that
 // age is bent by the rotation that takes its eq. 4.6 heading under the analysis-time tropism to its
 // heading under the new light direction (so an unchanged environment leaves it unchanged), the
-// rotation is applied to its subtree, the leaf clusters follow the mean offset of their nodes
-// (Pirk 4.4.2), the light is recomputed and every lateral branch up to that age whose resources
-// per length (eq. 4.11) fall below its minimum pruning factor (eq. 4.12) is pruned with its
-// subtree. Pruned clusters lose translucency by eq. 4.14 or vanish.
+// rotation is carried to its subtree (one pass over the younger skeleton per level), the leaf
+// clusters follow their anchor (Pirk 4.4.2), the light is updated and every lateral branch up to
+// that age whose resources per length (eq. 4.11) fall below its minimum pruning factor (eq. 4.12)
+// is pruned with its subtree. Pruned clusters lose translucency by eq. 4.14 or vanish; the leaf
+// density follows the light (eq. 4.13); clusters that end up in a solid obstacle are pushed out.
+//
+// Only the affected parts are recomputed (Pirk 4.6): light is evaluated per leaf cluster, starting
+// from the analysis' cache; a cluster is re-evaluated only when a cluster in its shadow
+// neighbourhood moved relative to it by more than kDriftTolerance_m (clusters carried by the same
+// bent branch keep their relative positions), vanished, when it turned by more than
+// kTurnTolerance_rad against the sky, or when its cached obstacle visibility changed.
 #include <Eigen/Core>
 #include <cstddef>
 #include <vector>
@@ -27,7 +34,12 @@ struct AdaptationResult {
   double mean_tip_displacement_m = 0.0;
   Eigen::Vector3d mean_tip_shift = Eigen::Vector3d::Zero();
   std::vector<LeafCluster> clusters;  // the adapted clusters (pruned ones removed)
+  std::size_t light_evaluations = 0;  // cluster light evaluations the adaptation needed
+  std::size_t pushed_clusters = 0;    // clusters moved out of solid obstacles
 };
+
+inline constexpr double kDriftTolerance_m = 0.05;
+inline constexpr double kTurnTolerance_rad = 0.2;
 
 // `analysis` must come from analyze_tree(tree). The scene's occluders shade the tree together with
 // its own clusters; its sky gives the brightest point (global light). Throws ValueError when the
@@ -35,11 +47,11 @@ struct AdaptationResult {
 AdaptationResult adapt_tree(const TreeGraph& tree, const TreeAnalysis& analysis,
                             const Scene& scene);
 
-// Tree-tree interaction, simplified: each tree is adapted with the other trees' analysed leaf
-// clusters (at their input positions, non-solid) added to the scene, so facing sides shade each
-// other. Unlike Pirk 4.4.3 the neighbours are not adapted in lock-step (their clusters do not
-// move or vanish during the run). Trees are given in world coordinates. Throws ValueError when
-// the sizes differ.
+// Tree-tree interaction (Pirk 4.4.3): the trees (in world coordinates) are adapted together, age
+// level by age level in lock-step, sharing one light field, so every tree's clusters shade the
+// others and move or vanish while the others adapt. A younger tree (fewer age levels) starts later
+// so that all trees finish at the same step. Throws ValueError when the sizes differ or an
+// analysis does not match its tree.
 std::vector<AdaptationResult> adapt_trees(const std::vector<const TreeGraph*>& trees,
                                           const std::vector<const TreeAnalysis*>& analyses,
                                           const Scene& scene);

@@ -214,29 +214,46 @@ TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
     a.max_age = std::max(a.max_age, a.age[i]);
   }
 
-  // Light of the final stage: the tree's clusters alone under an open sky.
+  // Light of the final stage: the tree's clusters alone under an open sky, one evaluation per
+  // cluster (the adaptation starts from this cache).
+  a.brightest =
+      brightest.norm() > 0 ? Eigen::Vector3d(brightest.normalized()) : Eigen::Vector3d::UnitZ();
   Scene scene;
-  scene.sky.brightest = brightest.normalized();
+  scene.sky.brightest = a.brightest;
   scene.sky.directions = params.light_directions;
   scene.sky.significance = params.light_significance;
-  scene.spheres = cluster_spheres(a.clusters);
-  const LightModel light(scene);
-  a.cluster_light.resize(a.clusters.size());
-  for (std::uint32_t c = 0; c < a.clusters.size(); ++c) {
-    a.cluster_light[c] = light.evaluate(a.clusters[c].center, c).light;
+  ClusterLightField field(params.light_directions, params.light_significance, a.brightest);
+  {
+    std::vector<Eigen::Vector3d> centers;
+    std::vector<double> radii, gammas;
+    for (const LeafCluster& c : a.clusters) {
+      centers.push_back(c.center);
+      radii.push_back(c.radius_m);
+      gammas.push_back(c.translucency);
+    }
+    field.set_clusters(centers, radii, gammas);
+    field.rebuild_grid();
+    for (std::uint32_t c = 0; c < a.clusters.size(); ++c) field.evaluate(c);
   }
+  a.cluster_light = field.light_;
+  a.cluster_direction = field.direction_;
+  a.cluster_neighbors = std::move(field.neighbors_);
 
-  // Pruning: zeta (eq. 4.11) over the clusters below, over the skeleton length below.
+  // Pruning: zeta (eq. 4.11) over the clusters below, over the skeleton length below; the light
+  // direction of every segment from the same sums (the adaptation repeats this loop exactly).
   std::vector<double> zeta(n, 0.0), length_below(n, 0.0);
+  std::vector<Eigen::Vector3d> light_sum(n, Eigen::Vector3d::Zero());
   for (std::uint32_t c = 0; c < a.clusters.size(); ++c) {
-    const double r = a.clusters[c].radius_m;
-    zeta[a.clusters[c].anchor] += 2.0 * M_PI * r * r * a.cluster_light[c];
+    const double z = cluster_resources(a.clusters[c].radius_m, a.cluster_light[c]);
+    zeta[a.clusters[c].anchor] += z;
+    light_sum[a.clusters[c].anchor] += z * a.cluster_direction[c];
   }
   for (NodeId i = static_cast<NodeId>(n); i-- > 0;) {
     if (!a.skeleton[i]) continue;
     length_below[i] += t.length(i);
     if (i > 0) {
       zeta[t.parent(i)] += zeta[i];
+      light_sum[t.parent(i)] += light_sum[i];
       length_below[t.parent(i)] += length_below[i];
     }
   }
@@ -307,7 +324,7 @@ TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
       std::fill(length_below.begin(), length_below.end(), 0.0);
       for (std::uint32_t c = 0; c < stage.size(); ++c) {
         const double r = stage[c].radius_m;
-        zeta[stage[c].node] += 2.0 * M_PI * r * r * past_light.evaluate(stage[c].center, c).light;
+        zeta[stage[c].node] += cluster_resources(r, past_light.evaluate(stage[c].center, c).light);
       }
       for (NodeId i = static_cast<NodeId>(n); i-- > 0;) {
         if (!a.skeleton[i] || a.age[i] > T) continue;
@@ -339,7 +356,7 @@ TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
         params.pruning_strength * std::min(a.reference_pruning_factor, stage_min[i]);
   }
 
-  // Inverse tropism per skeleton segment (eq. 4.7-4.10) with the light direction at its start.
+  // Inverse tropism per skeleton segment (eq. 4.7-4.10) with the light direction of its clusters.
   const double w_sum = params.phototropism + params.gravitropism;
   const Eigen::Vector3d g = params.gravity_direction.normalized();
   a.tropism_weight.assign(n, 1.0);
@@ -350,7 +367,7 @@ TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
         t.direction(i).norm() > 0.0 ? Eigen::Vector3d(t.direction(i)) : Eigen::Vector3d::UnitZ();
     a.original_direction[i] = h.normalized();
     if (!a.skeleton[i] || w_sum <= 0.0) continue;
-    const Eigen::Vector3d v = light.evaluate(t.start(i)).direction;
+    const Eigen::Vector3d v = segment_light_direction(light_sum[i], field.open_direction());
     a.tropism[i] = (params.phototropism * v + params.gravitropism * g) / w_sum;
     a.tropism_weight[i] = std::pow(1.0 - w_sum, t.length(i) / a.internode_length_m);
     a.original_direction[i] = inverse_tropism(h, a.tropism[i], a.tropism_weight[i]);

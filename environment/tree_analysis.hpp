@@ -5,6 +5,9 @@
 // branching nodes, growth rates (eq. 4.1) and branch ages (eq. 4.2), the inverse tropism of every
 // skeleton segment (eq. 4.8-4.10) and the minimum pruning factors (eq. 4.11-4.12).
 //
+// Light: evaluated once per leaf cluster (ClusterLightField); a segment's light direction is that
+// of the clusters it carries (segment_light_direction).
+//
 // Light of earlier growth stages (optional, temporal_pruning): clusters propagated toward the root
 // (eq. 4.5) give psi_s(t) at every stage t. By default only the final stage is used (see
 // docs/environment.md: with all stages the thresholds become so low that nothing is pruned).
@@ -15,6 +18,7 @@
 #include <limits>
 #include <vector>
 
+#include "environment/cluster_light.hpp"
 #include "environment/occluders.hpp"
 #include "fspm/tree_graph.hpp"
 
@@ -47,6 +51,9 @@ struct LeafCluster {
   double translucency = 1.0;  // gamma0 ^ radius (eq. 4.4)
   NodeId anchor = kNoNode;    // the skeleton node the fine subtree hangs from
   std::vector<NodeId> nodes;  // member nodes (the fine subtree)
+  // Normalised leaf density (Pirk eq. 4.13, rho(i) = i): 1 at analysis time, rho0 i / i0 after
+  // adaptation.
+  double density = 1.0;
 };
 
 struct TreeAnalysis {
@@ -67,7 +74,26 @@ struct TreeAnalysis {
   std::vector<double> tropism_weight;      // w_s (eq. 4.7)
   std::vector<Eigen::Vector3d> tropism;    // t at analysis time (unit weighted mean, eq. 4.6)
   std::vector<Eigen::Vector3d> original_direction;  // d_o (eq. 4.8-4.10)
+  // The light cache the adaptation starts from (cluster_light.hpp): the sky's brightest point,
+  // each cluster's mean light direction and its neighbour list with relative positions.
+  Eigen::Vector3d brightest = Eigen::Vector3d::UnitZ();
+  std::vector<Eigen::Vector3d> cluster_direction;
+  std::vector<std::vector<ClusterNeighbor>> cluster_neighbors;
 };
+
+// Pirk eq. 4.11 for one cluster: 2 pi r^2 i.
+inline double cluster_resources(double radius_m, double light) {
+  return 2.0 * 3.14159265358979323846 * radius_m * radius_m * light;
+}
+
+// The light direction a skeleton segment bends toward: the resource-weighted mean light direction
+// of the clusters below it (sum of cluster_resources * direction, accumulated toward the root),
+// or `open` when they receive no light. Light is evaluated per cluster, not per node.
+inline Eigen::Vector3d segment_light_direction(const Eigen::Vector3d& weighted_sum,
+                                               const Eigen::Vector3d& open) {
+  const double norm = weighted_sum.norm();
+  return norm > 1e-12 ? Eigen::Vector3d(weighted_sum / norm) : open;
+}
 
 // One-dimensional mean-shift with a flat kernel of half-width `bandwidth` started from every
 // sample; returns the mode that attracts the most samples (ties: the smaller). Empty -> 0.

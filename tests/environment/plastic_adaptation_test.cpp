@@ -218,11 +218,18 @@ TEST(PlasticAdaptation, TwoTreesSideBySideLeanApart) {
     }
     return all > 0 ? facing / all : 0.0;
   };
-  // Pirk's "facing sides are pruned" is NOT reproduced by this simplified interaction (static
-  // neighbour clusters): the pruning that happens is mostly self-shading under the crown that
-  // leaned away. Reported, not asserted.
-  std::printf("share of pruned nodes on the facing side: west %.2f, east %.2f\n",
-              facing_share(west, r[0], -1.2, +1.0), facing_share(east, r[1], 1.2, -1.0));
+  // Pirk 4.4.3 / Fig. 4.18: adapted in lock-step, each tree loses branches on the side facing the
+  // other (its shade), not on the far side.
+  const double west_facing = facing_share(west, r[0], -1.2, +1.0);
+  const double east_facing = facing_share(east, r[1], 1.2, -1.0);
+  std::printf("share of pruned nodes on the facing side: west %.2f, east %.2f\n", west_facing,
+              east_facing);
+  ASSERT_GT(r[0].pruned_nodes, 0u);
+  ASSERT_GT(r[1].pruned_nodes, 0u);
+  EXPECT_GT(west_facing, 0.5);
+  EXPECT_GT(east_facing, 0.5);
+  // Alone in the open neither tree prunes anything.
+  EXPECT_EQ(adapt_tree(west, aw, Scene{}).pruned_nodes, 0u);
   EXPECT_THROW(adapt_trees({&west}, {}, Scene{}), ValueError);
 }
 

@@ -1,0 +1,406 @@
+#include "environment/cluster_light.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
+namespace fspm::environment {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr std::size_t kMaxAnalyticCaps = 16;
+// Obstacle visibility is recomputed after the cluster moved this share of its distance to the
+// nearest obstacle (about 3 degrees of parallax), at least kMinObstacleMove_m.
+constexpr double kObstacleParallax = 0.05;
+constexpr double kMinObstacleMove_m = 0.05;
+
+// vis[i] *= g for every direction with d_i . axis >= c: one branch-free pass over all cells in
+// single precision (four lanes); the cap tests of LightModel in double precision agree except for
+// directions within ~1e-7 of a cap's rim.
+void apply_cap_all(float* __restrict vis, const float* __restrict x, const float* __restrict y,
+                   const float* __restrict z, int n, const Eigen::Vector3d& axis, double c,
+                   double g) {
+  const auto fx = static_cast<float>(axis.x()), fy = static_cast<float>(axis.y()),
+             fz = static_cast<float>(axis.z()), fc = static_cast<float>(c),
+             fg = static_cast<float>(g);
+  int i = 0;
+#ifdef __SSE2__
+  const __m128 ax = _mm_set1_ps(fx), ay = _mm_set1_ps(fy), az = _mm_set1_ps(fz);
+  const __m128 vc = _mm_set1_ps(fc), vg = _mm_set1_ps(fg), one = _mm_set1_ps(1.0f);
+  for (; i + 4 <= n; i += 4) {
+    const __m128 d = _mm_add_ps(
+        _mm_add_ps(_mm_mul_ps(_mm_loadu_ps(x + i), ax), _mm_mul_ps(_mm_loadu_ps(y + i), ay)),
+        _mm_mul_ps(_mm_loadu_ps(z + i), az));
+    const __m128 m = _mm_cmpge_ps(d, vc);
+    const __m128 f = _mm_or_ps(_mm_and_ps(m, vg), _mm_andnot_ps(m, one));
+    _mm_storeu_ps(vis + i, _mm_mul_ps(_mm_loadu_ps(vis + i), f));
+  }
+#endif
+  for (; i < n; ++i) {
+    if (x[i] * fx + y[i] * fy + z[i] * fz >= fc) vis[i] *= fg;
+  }
+}
+
+double box_top_z(const Box& b) {
+  double h = 0.0;
+  for (int j = 0; j < 3; ++j) h += std::abs(b.rotation(2, j)) * b.half_extent[j];
+  return b.center.z() + h;
+}
+
+double box_distance(const Box& b, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d local = b.rotation.transpose() * (p - b.center);
+  return (local.cwiseAbs() - b.half_extent).cwiseMax(0.0).norm();
+}
+
+}  // namespace
+
+double cluster_shadow_reach2(double r, double g, double significance) {
+  // See LightModel: a sphere removes at most 3 (1 - g)(1 - cos alpha) of the light.
+  if (g >= 1.0) return -1.0;
+  if (significance <= 0.0) return kInf;
+  const double q = significance / (3.0 * (1.0 - g));
+  if (q >= 1.0) return -1.0;
+  const double cos_min = 1.0 - q;
+  return r * r / (1.0 - cos_min * cos_min);
+}
+
+ClusterLightField::ClusterLightField(int directions, double significance,
+                                     const Eigen::Vector3d& brightest)
+    : dirs_(directions), significance_(significance) {
+  brightest_ =
+      brightest.norm() > 0 ? Eigen::Vector3d(brightest.normalized()) : Eigen::Vector3d::UnitZ();
+  weight_.resize(static_cast<std::size_t>(dirs_.size()));
+  Eigen::Vector3d m = Eigen::Vector3d::Zero();
+  for (int i = 0; i < dirs_.size(); ++i) {
+    const double c = dirs_.direction(i).dot(brightest_);
+    weight_[i] = c * c;  // Pirk eq. 4.3: I = cos^2(angle to the brightest point)
+    weight_sum_ += weight_[i];
+    m += weight_[i] * dirs_.direction(i);
+  }
+  open_direction_ = m.norm() > 0 ? Eigen::Vector3d(m.normalized()) : Eigen::Vector3d::UnitZ();
+  vis_.resize(weight_.size());
+  for (int i = 0; i < dirs_.size(); ++i) {
+    xs_.push_back(static_cast<float>(dirs_.direction(i).x()));
+    ys_.push_back(static_cast<float>(dirs_.direction(i).y()));
+    zs_.push_back(static_cast<float>(dirs_.direction(i).z()));
+  }
+}
+
+void ClusterLightField::set_clusters(std::span<const Eigen::Vector3d> centers,
+                                     std::span<const double> radii,
+                                     std::span<const double> translucency) {
+  const std::size_t n = centers.size();
+  center_.assign(centers.begin(), centers.end());
+  radius_.assign(radii.begin(), radii.end());
+  gamma_.assign(translucency.begin(), translucency.end());
+  reach2_.resize(n);
+  reach_.resize(n);
+  max_reach_ = 0.0;
+  max_radius_ = 0.0;
+  for (std::size_t c = 0; c < n; ++c) {
+    reach2_[c] = cluster_shadow_reach2(radius_[c], gamma_[c], significance_);
+    reach_[c] = reach2_[c] >= 0.0 ? std::sqrt(reach2_[c]) : 0.0;
+    if (std::isfinite(reach2_[c])) max_reach_ = std::max(max_reach_, reach_[c]);
+    max_radius_ = std::max(max_radius_, radius_[c]);
+  }
+  alive_.assign(n, 1);
+  light_.assign(n, 1.0);
+  direction_.assign(n, open_direction_);
+  neighbors_.assign(n, {});
+  external_.assign(n, nullptr);
+  external_offset_.assign(n, 0);
+  listed_.assign(n, 0);
+  grid_stale_ = true;
+  obstacle_vis_.assign(n, {});
+  obstacle_at_ = center_;
+  obstacle_tolerance2_.assign(n, kInf);
+}
+
+void ClusterLightField::set_obstacles(const Scene& scene) {
+  obstacles_ = Scene{};
+  obstacles_.boxes = scene.boxes;
+  obstacles_.meshes = scene.meshes;
+  for (auto& m : obstacles_.meshes) m.update_bounds();
+  obstacles_.spheres = scene.spheres;
+  obstacles_.ground = scene.ground;
+  has_obstacles_ = !obstacles_.boxes.empty() || !obstacles_.meshes.empty() ||
+                   !obstacles_.spheres.empty() || obstacles_.ground.has_value();
+}
+
+void ClusterLightField::obstacle_visibility(const Eigen::Vector3d& p, std::vector<float>& vis,
+                                            double& distance) const {
+  const int n = dirs_.size();
+  vis.assign(static_cast<std::size_t>(n), 1.0f);
+  distance = kInf;
+  bool any = false;
+  if (obstacles_.ground) {
+    const Ground& g = *obstacles_.ground;
+    distance = std::min(distance, std::abs(p.z() - g.height_m));
+    if (p.z() < g.height_m && g.translucency < 1.0) {
+      for (float& v : vis) v *= static_cast<float>(g.translucency);
+      any = true;
+    }
+  }
+  const auto cast = [&](const Eigen::Vector3d& centre, double r, auto&& hit) {
+    const Eigen::Vector3d d = centre - p;
+    const double dist = d.norm();
+    if (dist <= r) {
+      for (int i = 0; i < n; ++i) hit(i);
+    } else {
+      dirs_.for_each_in_cap(d / dist, std::sqrt(dist * dist - r * r) / dist, hit);
+    }
+  };
+  for (const Box& b : obstacles_.boxes) {
+    distance = std::min(distance, box_distance(b, p));
+    if (b.translucency >= 1.0 || box_top_z(b) <= p.z()) continue;
+    const auto g = static_cast<float>(b.translucency);
+    cast(b.center, b.bounding_radius(), [&](int i) {
+      if (b.ray_entry(p, dirs_.direction(i)) >= 0.0) {
+        vis[static_cast<std::size_t>(i)] *= g;
+        any = true;
+      }
+    });
+  }
+  for (const Sphere& s : obstacles_.spheres) {
+    distance = std::min(distance, std::max(0.0, (s.center - p).norm() - s.radius_m));
+    if (s.translucency >= 1.0 || s.center.z() + s.radius_m <= p.z()) continue;
+    const auto g = static_cast<float>(s.translucency);
+    cast(s.center, s.radius_m, [&](int i) {
+      if (ray_hits_sphere(p, dirs_.direction(i), s.center, s.radius_m)) {
+        vis[static_cast<std::size_t>(i)] *= g;
+        any = true;
+      }
+    });
+  }
+  for (const TriangleMesh& m : obstacles_.meshes) {
+    distance = std::min(distance, std::max(0.0, (m.center - p).norm() - m.bounding_radius_m));
+    if (m.translucency >= 1.0 || m.center.z() + m.bounding_radius_m <= p.z()) continue;
+    cast(m.center, m.bounding_radius_m, [&](int i) {
+      const int k = m.crossings(p, dirs_.direction(i));
+      if (k > 0) {
+        vis[static_cast<std::size_t>(i)] *= static_cast<float>(std::pow(m.translucency, k));
+        any = true;
+      }
+    });
+  }
+  if (!any) vis.clear();
+}
+
+bool ClusterLightField::obstacles_stale(std::uint32_t c) const {
+  return has_obstacles_ && (center_[c] - obstacle_at_[c]).squaredNorm() > obstacle_tolerance2_[c];
+}
+
+bool ClusterLightField::update_obstacles(std::uint32_t c) {
+  double distance = kInf;
+  obstacle_visibility(center_[c], scratch_vis_, distance);
+  obstacle_at_[c] = center_[c];
+  const double tol = std::max(kMinObstacleMove_m, kObstacleParallax * distance);
+  obstacle_tolerance2_[c] = std::isfinite(tol) ? tol * tol : kInf;
+  const bool changed = scratch_vis_ != obstacle_vis_[c];
+  if (changed) std::swap(scratch_vis_, obstacle_vis_[c]);
+  return changed;
+}
+
+double ClusterLightField::loss_bound(std::uint32_t j, const Eigen::Vector3d& d) const {
+  const double d2 = d.squaredNorm();
+  if (d2 > reach2_[j]) return 0.0;
+  const double r2 = radius_[j] * radius_[j];
+  if (d2 <= r2) return 1.0 - gamma_[j];
+  return std::min(1.0, 3.0 * (1.0 - gamma_[j]) * (1.0 - std::sqrt((d2 - r2) / d2)));
+}
+
+void ClusterLightField::rebuild_grid() {
+  grid_stale_ = false;
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(kInf), hi = -lo;
+  std::size_t count = 0;
+  for (std::size_t c = 0; c < center_.size(); ++c) {
+    if (!alive_[c]) continue;
+    lo = lo.cwiseMin(center_[c]);
+    hi = hi.cwiseMax(center_[c]);
+    ++count;
+  }
+  cell_items_.clear();
+  if (count == 0 || !lo.allFinite() || !hi.allFinite()) {
+    grid_n_.setZero();
+    cell_start_.assign(1, 0);
+    return;
+  }
+  const Eigen::Vector3d extent = (hi - lo).cwiseMax(1e-6);
+  cell_ = std::max(0.5 * (max_reach_ + kListMargin_m), extent.maxCoeff() / 48.0);
+  grid_lo_ = lo;
+  grid_n_ = (extent / cell_).array().floor().cast<int>().matrix() + Eigen::Vector3i::Ones();
+  const std::size_t cells = static_cast<std::size_t>(grid_n_.prod());
+  cell_start_.assign(cells + 1, 0);
+  const auto id_of = [&](const Eigen::Vector3d& p) {
+    const Eigen::Vector3i q = ((p - grid_lo_) / cell_)
+                                  .array()
+                                  .floor()
+                                  .cast<int>()
+                                  .max(0)
+                                  .min(grid_n_.array() - 1)
+                                  .matrix();
+    return (static_cast<std::size_t>(q.z()) * grid_n_.y() + q.y()) * grid_n_.x() + q.x();
+  };
+  for (std::size_t c = 0; c < center_.size(); ++c) {
+    if (alive_[c]) ++cell_start_[id_of(center_[c]) + 1];
+  }
+  for (std::size_t k = 0; k < cells; ++k) cell_start_[k + 1] += cell_start_[k];
+  cell_items_.resize(count);
+  std::vector<std::uint32_t>& fill = scratch_fill_;
+  fill.assign(cell_start_.begin(), cell_start_.end() - 1);
+  for (std::size_t c = 0; c < center_.size(); ++c) {
+    if (alive_[c]) cell_items_[fill[id_of(center_[c])]++] = static_cast<std::uint32_t>(c);
+  }
+}
+
+void ClusterLightField::add_occluder(std::uint32_t c, std::uint32_t j, const Eigen::Vector3d& d,
+                                     double& all) {
+  // Does j shade c? Inside its shadow volume and not entirely below c's horizon.
+  const double d2 = d.squaredNorm();
+  if (d2 > reach2_[j] || d.z() + radius_[j] <= 0.0) return;
+  const double r2 = radius_[j] * radius_[j];
+  if (d2 <= r2) {
+    all *= gamma_[j];  // every ray from inside crosses the cluster
+    return;
+  }
+  const double dist = std::sqrt(d2);
+  caps_.push_back({d / dist, std::sqrt(d2 - r2) / dist, radius_[j] / dist, gamma_[j]});
+  (void)c;
+}
+
+void ClusterLightField::gather_from_grid(std::uint32_t c, double& all) {
+  if (grid_stale_) rebuild_grid();
+  const Eigen::Vector3d p = center_[c];
+  std::vector<ClusterNeighbor>& list = neighbors_[c];
+  list.clear();
+  external_[c] = nullptr;
+  listed_[c] = 1;
+  if (grid_n_.x() <= 0) return;
+  const double range = max_reach_ + kListMargin_m;
+  Eigen::Vector3i c0, c1;
+  for (int k = 0; k < 3; ++k) {
+    const auto clampi = [&](double x) {
+      return static_cast<int>(std::clamp(std::floor((x - grid_lo_[k]) / cell_), 0.0,
+                                         static_cast<double>(grid_n_[k] - 1)));
+    };
+    c0[k] = clampi(p[k] - range);
+    c1[k] = clampi(p[k] + range);
+  }
+  const double own_reach = reach_[c];
+  for (int z = c0.z(); z <= c1.z(); ++z) {
+    for (int y = c0.y(); y <= c1.y(); ++y) {
+      const std::size_t row = (static_cast<std::size_t>(z) * grid_n_.y() + y) * grid_n_.x();
+      for (std::uint32_t k = cell_start_[row + c0.x()]; k < cell_start_[row + c1.x() + 1]; ++k) {
+        const std::uint32_t j = cell_items_[k];
+        if (j == c) continue;
+        const Eigen::Vector3d d = center_[j] - p;
+        const double lim = std::max(own_reach, reach_[j]) + kListMargin_m;
+        if (d.squaredNorm() > lim * lim) continue;
+        list.push_back({j, d.cast<float>()});
+        add_occluder(c, j, d, all);
+      }
+    }
+  }
+}
+
+void ClusterLightField::evaluate(std::uint32_t c, bool rebuild) {
+  ++evaluations_;
+  const Eigen::Vector3d p = center_[c];
+  caps_.clear();
+  double all = 1.0;
+  if (!listed_[c]) rebuild = true;
+  // The list is a valid candidate set while no listed neighbour drifted by half the margin
+  // (one that was farther than the margin would have to drift as far to matter).
+  if (!rebuild) {
+    const double half2 = 0.25 * kListMargin_m * kListMargin_m;
+    const ListView view = neighbors(c);
+    for (const ClusterNeighbor& e : view) {
+      const Eigen::Vector3d d = center_[e.index + view.offset] - p;
+      if ((d - e.relative.cast<double>()).squaredNorm() > half2) {
+        rebuild = true;
+        break;
+      }
+    }
+  }
+  if (rebuild) {
+    gather_from_grid(c, all);
+  } else {
+    std::vector<ClusterNeighbor>& list = neighbors_[c];
+    if (external_[c] != nullptr) {
+      const ListView view = neighbors(c);
+      list.assign(view.begin(), view.end());
+      for (ClusterNeighbor& e : list) e.index += view.offset;
+      external_[c] = nullptr;
+    }
+    for (ClusterNeighbor& e : list) {
+      const std::uint32_t j = e.index;
+      if (!alive_[j]) continue;
+      const Eigen::Vector3d d = center_[j] - p;
+      e.relative = d.cast<float>();
+      add_occluder(c, j, d, all);
+    }
+  }
+  const std::vector<float>& obstacle = obstacle_vis_[c];
+  const double pi = std::numbers::pi;
+  if (obstacle.empty() && caps_.size() <= kMaxAnalyticCaps) {
+    bool exact = true;
+    for (std::size_t i = 0; i < caps_.size() && exact; ++i) {
+      if (caps_[i].axis.z() < caps_[i].sin_a) exact = false;
+      for (std::size_t j = 0; j < i && exact; ++j) {
+        const double cos_sum = caps_[i].cos_a * caps_[j].cos_a - caps_[i].sin_a * caps_[j].sin_a;
+        if (caps_[i].axis.dot(caps_[j].axis) > cos_sum) exact = false;
+      }
+    }
+    if (exact) {
+      // Closed-form cap integrals of cos^2 (derivation in light_model.cpp).
+      const Eigen::Vector3d& b = brightest_;
+      double f = 2.0 * pi / 3.0;
+      Eigen::Vector3d m(0.5 * pi * b.x() * b.z(), 0.5 * pi * b.y() * b.z(),
+                        0.25 * pi * (b.x() * b.x() + b.y() * b.y()) + 0.5 * pi * b.z() * b.z());
+      const double total = f;
+      for (const Cap& cap : caps_) {
+        const double beta = b.dot(cap.axis);
+        const double a = cap.cos_a;
+        const double a3 = a * a * a;
+        const double cap_f = 2.0 * pi * beta * beta * (1.0 - a3) / 3.0 +
+                             pi * (1.0 - beta * beta) * ((1.0 - a) - (1.0 - a3) / 3.0);
+        const double big_a = 0.25 * (1.0 - a3 * a);
+        const double big_b = 0.25 * (1.0 - a * a) * (1.0 - a * a);
+        const Eigen::Vector3d cap_m =
+            (2.0 * pi * beta * beta * big_a + pi * (1.0 - beta * beta) * big_b) * cap.axis +
+            2.0 * pi * beta * big_b * (b - beta * cap.axis);
+        f -= (1.0 - cap.gamma) * cap_f;
+        m -= (1.0 - cap.gamma) * cap_m;
+      }
+      light_[c] = std::clamp(all * f / total, 0.0, 1.0);
+      direction_[c] =
+          m.norm() > 1e-300 && light_[c] > 0 ? Eigen::Vector3d(m.normalized()) : open_direction_;
+      return;
+    }
+  }
+  const int n = dirs_.size();
+  if (obstacle.empty()) {
+    std::fill(vis_.begin(), vis_.end(), static_cast<float>(all));
+  } else {
+    for (int i = 0; i < n; ++i) vis_[i] = static_cast<float>(all) * obstacle[i];
+  }
+  for (const Cap& cap : caps_) {
+    apply_cap_all(vis_.data(), xs_.data(), ys_.data(), zs_.data(), n, cap.axis, cap.cos_a,
+                  cap.gamma);
+  }
+  double sum = 0.0;
+  Eigen::Vector3d m = Eigen::Vector3d::Zero();
+  for (int i = 0; i < n; ++i) {
+    const double w = vis_[i] * weight_[i];
+    sum += w;
+    m += w * dirs_.direction(i);
+  }
+  light_[c] = weight_sum_ > 0 ? std::clamp(sum / weight_sum_, 0.0, 1.0) : 0.0;
+  direction_[c] = m.norm() > 1e-300 ? Eigen::Vector3d(m.normalized()) : open_direction_;
+}
+
+}  // namespace fspm::environment
