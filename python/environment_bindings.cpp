@@ -63,7 +63,26 @@ env::Scene scene_from(py::handle scene) {
     const std::string text = py::module_::import("json").attr("dumps")(scene).cast<std::string>();
     return env::parse_scene_json(text, "<dict>");
   }
+  if (!py::isinstance<env::Scene>(scene)) {
+    throw py::type_error(
+        "scene: expected an fspm.Scene, a dict of the scene file's structure or "
+        "None, got " +
+        py::repr(py::type::of(scene)).cast<std::string>());
+  }
   return scene.cast<env::Scene>();
+}
+
+py::array sphere_array(const std::vector<env::Sphere>& spheres) {
+  // One row per sphere: centre x, y, z, radius, translucency.
+  py::array_t<double> a({static_cast<py::ssize_t>(spheres.size()), py::ssize_t{5}});
+  auto r = a.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    const auto k = static_cast<py::ssize_t>(i);
+    for (py::ssize_t c = 0; c < 3; ++c) r(k, c) = spheres[i].center[c];
+    r(k, 3) = spheres[i].radius_m;
+    r(k, 4) = spheres[i].translucency;
+  }
+  return a;
 }
 
 py::array cluster_array(const std::vector<env::LeafCluster>& clusters) {
@@ -105,20 +124,7 @@ void bind_scene(py::module_& m) {
           [](env::Scene& s, bool v) { s.sky.analytic = v; },
           "Exact sphere-cap integrals where they apply")
       .def_property_readonly(
-          "spheres",
-          [](const env::Scene& s) {
-            py::array_t<double> a({static_cast<py::ssize_t>(s.spheres.size()), py::ssize_t{5}});
-            auto r = a.mutable_unchecked<2>();
-            for (std::size_t i = 0; i < s.spheres.size(); ++i) {
-              const auto k = static_cast<py::ssize_t>(i);
-              for (py::ssize_t c = 0; c < 3; ++c) {
-                r(k, c) = s.spheres[i].center[c];
-              }
-              r(k, 3) = s.spheres[i].radius_m;
-              r(k, 4) = s.spheres[i].translucency;
-            }
-            return a;
-          },
+          "spheres", [](const env::Scene& s) { return sphere_array(s.spheres); },
           "Spheres as rows x, y, z, radius, translucency (a copy)")
       .def_property_readonly(
           "boxes", [](const env::Scene& s) { return s.boxes.size(); }, "Number of boxes and walls")
@@ -285,11 +291,7 @@ void bind_growth(py::module_& m) {
       .def_readonly("height_m", &env::GrowthResult::height_m)
       .def_property_readonly(
           "cluster_spheres",
-          [](const env::GrowthResult& r) {
-            env::Scene s;
-            s.spheres = r.cluster_spheres;
-            return py::cast(s).attr("spheres");
-          },
+          [](const env::GrowthResult& r) { return sphere_array(r.cluster_spheres); },
           "Final leaf clusters as rows x, y, z, radius, translucency")
       .def("__repr__", [](const env::GrowthResult& r) {
         return "<fspm.GrowthResult: " + std::to_string(r.internodes) + " internodes, " +
