@@ -109,7 +109,9 @@ fspm::TreeGraph tree_from_arrays(
   t.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     const std::int64_t p = parents.data()[i];
-    if (i == 0 ? p >= 0 : (p < 0 || static_cast<std::size_t>(p) >= i)) {
+    // The root's parent is -1, or kNoNode as Tree.parents gives it.
+    const bool root = p == -1 || p == std::int64_t{fspm::kNoNode};
+    if (i == 0 ? !root : (p < 0 || static_cast<std::size_t>(p) >= i)) {
       throw fspm::ValueError("parents[" + std::to_string(i) +
                              "]: expected -1 for the root (node 0) and a smaller node id for "
                              "every other node");
