@@ -118,6 +118,33 @@ void place_camera(vtkRenderer* renderer, View view, const Eigen::Vector3f& lo,
   camera->SetViewAngle(30.0);
 }
 
+// Moves the eye along its line of sight to the nearest distance at which all eight corners of
+// [lo, hi] are inside the view (ResetCamera fits the bounding sphere, which leaves wide, flat
+// scenes such as a forest small in the frame), with a 6 % margin.
+void fit_box(vtkCamera* camera, const Eigen::Vector3f& lo, const Eigen::Vector3f& hi,
+             double aspect) {
+  Eigen::Vector3d focal, eye, up;
+  camera->GetFocalPoint(focal.data());
+  camera->GetPosition(eye.data());
+  camera->GetViewUp(up.data());
+  const Eigen::Vector3d back = (eye - focal).normalized();  // focal point to eye
+  const Eigen::Vector3d right = up.cross(back).normalized();
+  const Eigen::Vector3d true_up = back.cross(right);
+  const double tan_v = std::tan(0.5 * camera->GetViewAngle() * 3.141592653589793 / 180.0);
+  const double tan_h = tan_v * aspect;
+  double distance = 0.0;
+  for (int k = 0; k < 8; ++k) {
+    const Eigen::Vector3d c((k & 1 ? hi : lo).x(), (k & 2 ? hi : lo).y(), (k & 4 ? hi : lo).z());
+    const Eigen::Vector3d v = c - focal;
+    const double z = v.dot(back);
+    distance = std::max(
+        {distance, z + std::abs(v.dot(true_up)) / tan_v, z + std::abs(v.dot(right)) / tan_h});
+  }
+  if (!(distance > 0.0) || !std::isfinite(distance)) return;
+  const Eigen::Vector3d placed = focal + back * (1.06 * distance);
+  camera->SetPosition(placed.data());
+}
+
 // Sets up the renderer, lets `add_actors` fill it, adds the ground, lights and camera framing
 // [lo, hi], renders off screen and reads the image back.
 template <typename AddActors>
@@ -178,6 +205,8 @@ Image render_with(const RenderOptions& options, Eigen::Vector3f lo, Eigen::Vecto
   double bounds[6] = {lo.x(), hi.x(), lo.y(), hi.y(), lo.z(), hi.z()};
   renderer->ResetCamera(bounds);
   renderer->GetActiveCamera()->Zoom(1.1);
+  fit_box(renderer->GetActiveCamera(), lo, hi,
+          static_cast<double>(options.width) / static_cast<double>(options.height));
   if (options.ortho_height_m > 0.0) {
     // Parallel projection at a known scale: the image height spans ortho_height_m metres.
     renderer->GetActiveCamera()->ParallelProjectionOn();
