@@ -10,8 +10,12 @@
 #include <random>
 
 #include "fspm/tree_graph.hpp"
+#include "graphics/instanced_mesh.hpp"
 #include "graphics/mesh_writers.hpp"
 #include "graphics/tree_mesher.hpp"
+#include "greenlab/plant_params.hpp"
+#include "greenlab/reconstruction.hpp"
+#include "greenlab/simulation.hpp"
 
 namespace {
 
@@ -92,5 +96,97 @@ void BM_GlbExport(benchmark::State& state) {
       1e6;
 }
 BENCHMARK(BM_GlbExport)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Leeuwenberg's model (examples/greenlab/leeuwenberg.toml, straightening off so the instanced
+// plant is exactly the explicit one) grown 9 cycles: 3^k growth units, about 40 000 metamers.
+const fspm::CompressedTreeGraph& leeuwenberg_plant() {
+  static const fspm::CompressedTreeGraph graph =
+      fspm::greenlab::simulate_compressed(fspm::greenlab::parse_plant_params(R"(
+[plant]
+cycles = 9
+seed = 1
+
+[[age]]
+index = 1
+duration = 1
+next_age = 0
+terminal = "flower"
+branching_delay = 1
+units = [
+  { count = 3 },
+  { count = 1, axillary = [ { age = 1, count = 3 } ] },
+]
+leaf_life_span = 2
+branching_angle = 40.0
+phyllotaxy = 120.0
+straightening = 0.0
+internode_length = 0.3
+internode_radius = 0.02
+radius_growth = 0.004
+leaf_length = 0.2
+)",
+                                                                             "leeuwenberg"));
+  return graph;
+}
+
+fspm::graphics::InstancedTree instanced_tree(fspm::greenlab::InstancedPlant plant) {
+  fspm::graphics::InstancedTree tree;
+  for (auto& p : plant.prototypes) {
+    fspm::graphics::InstancedTree::Prototype q;
+    q.geometry = std::move(p.geometry);
+    for (const auto& c : p.children) {
+      q.children.push_back({c.prototype, c.attach, c.rotation, c.translation});
+    }
+    tree.prototypes.push_back(std::move(q));
+  }
+  return tree;
+}
+
+// Jaeger 3.1.2: mesh each substructure once and place it by transforms. Represented triangles
+// per second counts every instance's triangles (what the explicit path has to generate).
+void BM_InstancedMeshCompressedPlant(benchmark::State& state) {
+  const auto tree = instanced_tree(fspm::greenlab::reconstruct_instanced(leeuwenberg_plant(), {}));
+  std::size_t represented = 0, stored = 0, instances = 0;
+  for (auto _ : state) {
+    const auto mesh = fspm::graphics::mesh_instanced(tree);
+    represented += mesh.triangle_count();
+    stored = mesh.stored_triangle_count();
+    instances = mesh.instances.size();
+    benchmark::DoNotOptimize(mesh.meshes.data());
+  }
+  state.counters["represented_triangles"] = static_cast<double>(represented / state.iterations());
+  state.counters["stored_triangles"] = static_cast<double>(stored);
+  state.counters["instances"] = static_cast<double>(instances);
+  state.counters["represented_per_s"] =
+      benchmark::Counter(static_cast<double>(represented), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_InstancedMeshCompressedPlant)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The same plant the explicit way: reconstruct every metamer, then mesh the whole tree.
+void BM_ExplicitMeshCompressedPlant(benchmark::State& state) {
+  std::size_t triangles = 0;
+  for (auto _ : state) {
+    const TreeGraph tree = fspm::greenlab::reconstruct(leeuwenberg_plant(), {});
+    const auto mesh = fspm::graphics::mesh_tree(tree);
+    triangles += mesh.triangle_count();
+    benchmark::DoNotOptimize(mesh.positions.data());
+  }
+  state.counters["triangles"] = static_cast<double>(triangles / state.iterations());
+}
+BENCHMARK(BM_ExplicitMeshCompressedPlant)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Instanced .glb of the plant: each substructure mesh stored once, one node per occurrence.
+void BM_InstancedGlbExport(benchmark::State& state) {
+  const auto mesh = fspm::graphics::mesh_instanced(
+      instanced_tree(fspm::greenlab::reconstruct_instanced(leeuwenberg_plant(), {})));
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("fspm_inst_bench_" + std::to_string(::getpid()) + ".glb"))
+                               .string();
+  for (auto _ : state) fspm::graphics::write_glb(mesh, path);
+  state.counters["bytes"] = static_cast<double>(std::filesystem::file_size(path));
+  std::filesystem::remove(path);
+  state.counters["represented_triangles"] = static_cast<double>(mesh.triangle_count());
+}
+BENCHMARK(BM_InstancedGlbExport)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
