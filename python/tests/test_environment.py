@@ -153,3 +153,32 @@ def test_plastic_adaptation():
         fspm.adapt_trees([tree], [analysis, analysis], fspm.Scene())
     with pytest.raises(fspm.ParameterError):
         fspm.analyze_tree(fspm.Tree())
+
+
+def test_light_releases_the_gil():
+    # While one thread is inside a long light computation, another keeps running Python.
+    import threading
+    import time
+
+    rng = np.random.default_rng(1)
+    scene = fspm.Scene()
+    for c in rng.uniform(-3, 3, size=(300, 3)):
+        scene.add_sphere(c + [0, 0, 5], 0.5, translucency=0.3)
+    points = rng.uniform(-3, 3, size=(20000, 3))
+    span = {}
+
+    def work():
+        span["start"] = time.perf_counter()
+        fspm.light(scene, points)
+        span["end"] = time.perf_counter()
+
+    worker = threading.Thread(target=work)
+    ticks = []
+    worker.start()
+    while worker.is_alive():
+        ticks.append(time.perf_counter())
+        time.sleep(0.001)
+    worker.join()
+    inside = [t for t in ticks if span["start"] + 0.02 < t < span["end"] - 0.02]
+    assert span["end"] - span["start"] > 0.1  # long enough to tell
+    assert len(inside) >= 5
