@@ -7,8 +7,8 @@
 
 namespace {
 
-void BM_GrowPresetA(benchmark::State& state) {
-  fspm::environment::GrowthParams p = fspm::environment::growth_preset("A");
+void grow_preset(benchmark::State& state, const char* preset) {
+  fspm::environment::GrowthParams p = fspm::environment::growth_preset(preset);
   p.years = static_cast<int>(state.range(0));
   std::size_t internodes = 0, grown = 0;
   for (auto _ : state) {
@@ -19,10 +19,18 @@ void BM_GrowPresetA(benchmark::State& state) {
   }
   state.counters["internodes"] = static_cast<double>(internodes);
   state.counters["grown"] = static_cast<double>(grown);
-  // Internodes created per second (shed ones included).
+  // Internodes created per second (shed ones included), and those of the final tree.
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(grown));
+  state.counters["alive_per_s"] =
+      benchmark::Counter(static_cast<double>(internodes) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate);
 }
+
+void BM_GrowPresetA(benchmark::State& state) { grow_preset(state, "A"); }
 BENCHMARK(BM_GrowPresetA)->Arg(10)->Arg(20)->Arg(30)->Unit(benchmark::kMillisecond);
+
+void BM_GrowPresetB(benchmark::State& state) { grow_preset(state, "B"); }
+BENCHMARK(BM_GrowPresetB)->Arg(10)->Arg(20)->Arg(30)->Unit(benchmark::kMillisecond);
 
 void BM_GrowBesideWall(benchmark::State& state) {
   fspm::environment::GrowthParams p = fspm::environment::growth_preset("B");

@@ -13,14 +13,14 @@ struct GrowthParams {
   std::uint64_t seed = 1;  // randomness only for small heading perturbations
   // Borchert-Honda allocation (Palubicki eq. for v_base = alpha * Q_base, apical control lambda).
   double alpha = 3.0;
-  double apical_control = 0.52;
+  double apical_control = 0.47;
   // Shoots: n = floor(v) metamers, at most max_shoot_metamers, each internode_length_m long.
   double internode_length_m = 0.15;
   int max_shoot_metamers = 5;
   double branching_angle_deg = 40.0;
   double phyllotaxy_deg = 137.5;
   double perturbation_deg = 4.0;
-  int lateral_bud_lifetime_years = 2;  // dormant lateral buds die after this many cycles
+  int lateral_bud_lifetime_years = 4;  // dormant lateral buds die after this many cycles
   // Tropisms, Pirk eq. 4.6-4.7: h = w_s d_o + (1 - w_s) t, t the weighted mean of the
   // phototropism (towards the bud's mean light direction) and gravitropism directions.
   double phototropism = 0.25;
