@@ -44,8 +44,8 @@ ViewerStats run_viewer(const std::vector<TriangleMesh>& steps, const std::vector
 
 // Instanced steps (substructures of compressed graphs, scenes of many plants): each shared mesh
 // is uploaded once and drawn with one instanced draw call (glDrawElementsInstanced) per mesh,
-// per-instance matrices in a vertex buffer. Colours by attribute use the mesh's own values (the
-// "order" of a substructure is relative to its base). Same errors as above.
+// per-instance matrices in a vertex buffer. Colouring by "order" adds each instance's
+// order_offset, as the flattened mesh does. Same errors as above.
 ViewerStats run_instanced_viewer(const std::vector<InstancedMesh>& steps,
                                  const std::vector<double>& labels, const ViewerOptions& options,
                                  const std::vector<InstancedMesh>& coarse_steps = {});

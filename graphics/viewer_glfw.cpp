@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <map>
 #include <string>
 #include <thread>
 #include <vector>
@@ -143,25 +144,31 @@ struct Scene {
   glm::vec3 lo{0.0f}, hi{0.0f};
 };
 
-// A step as the viewer needs it: each mesh with the model matrices of its instances.
+// A step as the viewer needs it: each mesh with the model matrices of its instances, and the
+// value added to its colour attribute (an instance's order offset when colouring by order, so a
+// substructure drawn at several branching orders is uploaded once per order).
 struct StepRef {
   std::vector<const TriangleMesh*> meshes;
   std::vector<std::vector<glm::mat4>> models;  // one list per mesh
+  std::vector<float> value_offsets;            // one per mesh
 };
 
-StepRef step_ref(const TriangleMesh& mesh) { return {{&mesh}, {{glm::mat4(1.0f)}}}; }
+StepRef step_ref(const TriangleMesh& mesh) { return {{&mesh}, {{glm::mat4(1.0f)}}, {0.0f}}; }
 
-StepRef step_ref(const InstancedMesh& scene) {
+StepRef step_ref(const InstancedMesh& scene, const std::string& color_by) {
   StepRef r;
-  std::vector<int> slot(scene.meshes.size(), -1);
+  const bool by_order = color_by == kAttributeOrder;
+  std::map<std::pair<std::uint32_t, float>, std::size_t> slot;
   for (const MeshInstance& inst : scene.instances) {
-    if (slot[inst.mesh] < 0) {
-      slot[inst.mesh] = static_cast<int>(r.meshes.size());
+    const float offset = by_order ? inst.order_offset : 0.0f;
+    auto [it, added] = slot.emplace(std::make_pair(inst.mesh, offset), r.meshes.size());
+    if (added) {
       r.meshes.push_back(&scene.meshes[inst.mesh]);
       r.models.emplace_back();
+      r.value_offsets.push_back(offset);
     }
     const Eigen::Matrix4f m = inst.matrix();  // column-major, as glm
-    r.models[static_cast<std::size_t>(slot[inst.mesh])].push_back(glm::make_mat4(m.data()));
+    r.models[it->second].push_back(glm::make_mat4(m.data()));
   }
   return r;
 }
@@ -214,14 +221,15 @@ GpuMesh upload_raw(const std::vector<float>& v, const std::vector<std::uint32_t>
 
 // Interleaved position, normal, colour of one shared mesh.
 GpuMesh upload(const TriangleMesh& mesh, const std::vector<glm::mat4>& models,
-               const ViewerOptions& o, float value_lo, float value_hi) {
+               const ViewerOptions& o, float value_lo, float value_hi, float value_offset) {
   std::vector<float> v;
   v.reserve(mesh.vertex_count() * 9);
   std::vector<glm::vec3> colors(mesh.vertex_count(), glm::vec3(0.45f, 0.32f, 0.20f));
   if (!o.color_by.empty()) {
     const auto a = mesh.attribute(o.color_by);
     const float span = value_hi > value_lo ? value_hi - value_lo : 1.0f;
-    for (std::size_t i = 0; i < colors.size(); ++i) colors[i] = colormap((a[i] - value_lo) / span);
+    for (std::size_t i = 0; i < colors.size(); ++i)
+      colors[i] = colormap((a[i] + value_offset - value_lo) / span);
   } else {
     for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
       if (mesh.materials[t] != Material::kLeaf) continue;
@@ -244,7 +252,8 @@ GpuStep upload(const StepRef& step, const ViewerOptions& o, float value_lo, floa
   GpuStep g;
   for (std::size_t k = 0; k < step.meshes.size(); ++k) {
     if (step.meshes[k]->empty() || step.models[k].empty()) continue;
-    g.meshes.push_back(upload(*step.meshes[k], step.models[k], o, value_lo, value_hi));
+    g.meshes.push_back(
+        upload(*step.meshes[k], step.models[k], o, value_lo, value_hi, step.value_offsets[k]));
     g.triangles += step.meshes[k]->triangle_count() * step.models[k].size();
   }
   return g;
@@ -384,10 +393,10 @@ ViewerStats view(const std::vector<StepRef>& steps, const std::vector<double>& l
   for (const auto& step : steps) {
     bounds(step, scene.lo, scene.hi);
     if (o.color_by.empty()) continue;
-    for (const auto* m : step.meshes) {
-      for (float x : m->attribute(o.color_by)) {
-        value_lo = std::min(value_lo, x);
-        value_hi = std::max(value_hi, x);
+    for (std::size_t k = 0; k < step.meshes.size(); ++k) {
+      for (float x : step.meshes[k]->attribute(o.color_by)) {
+        value_lo = std::min(value_lo, x + step.value_offsets[k]);
+        value_hi = std::max(value_hi, x + step.value_offsets[k]);
       }
     }
   }
@@ -588,8 +597,8 @@ ViewerStats run_instanced_viewer(const std::vector<InstancedMesh>& steps,
                                  const std::vector<double>& labels, const ViewerOptions& o,
                                  const std::vector<InstancedMesh>& coarse_steps) {
   std::vector<StepRef> refs, coarse;
-  for (const auto& m : steps) refs.push_back(step_ref(m));
-  for (const auto& m : coarse_steps) coarse.push_back(step_ref(m));
+  for (const auto& m : steps) refs.push_back(step_ref(m, o.color_by));
+  for (const auto& m : coarse_steps) coarse.push_back(step_ref(m, o.color_by));
   return view(refs, labels, o, coarse);
 }
 

@@ -352,6 +352,17 @@ TEST(InstancedViewer, InstancedDrawsLookLikeTheFlattenedMesh) {
   const Image b = read_image((dir / "flat.png").string());
   EXPECT_GT(bark_pixels(a), 100u);
   EXPECT_LT(differing_fraction(a, b, 40), 0.01);
+  // Colouring by order: each occurrence is coloured by its order in the plant, as in the
+  // flattened mesh (not by the order within its substructure).
+  o.color_by = kAttributeOrder;
+  o.screenshot = (dir / "instanced_order.png").string();
+  run_instanced_viewer({inst}, {0.0}, o);
+  o.screenshot = (dir / "flat_order.png").string();
+  run_viewer({inst.flatten()}, {0.0}, o);
+  const Image c = read_image((dir / "instanced_order.png").string());
+  const Image d = read_image((dir / "flat_order.png").string());
+  EXPECT_GT(differing_fraction(c, a, 40), 0.005);  // the colours did change
+  EXPECT_LT(differing_fraction(c, d, 40), 0.01);
   fs::remove_all(dir);
 }
 
