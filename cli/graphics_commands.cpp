@@ -65,6 +65,7 @@ struct RenderCommand {
   bool leaves = false;
   bool no_ground = false;
   double edge_length_m = 0.01;
+  double ortho_height_m = 0.0;
   bool json = false;
 };
 
@@ -264,6 +265,7 @@ void run_render(const RenderCommand& c) {
   graphics::parse_size(c.size, options.width, options.height);
   options.color_by = c.color_by;
   options.ground = !c.no_ground;
+  options.ortho_height_m = c.ortho_height_m;
   if (!graphics::render_available()) {
     throw ValueError("fspm was built without VTK (FSPM_WITH_VTK=OFF): rendering is not available");
   }
@@ -482,6 +484,9 @@ void add_graphics_commands(CLI::App& app) {
   r->add_flag("--leaves", render->leaves, "Show leaves");
   r->add_flag("--no-ground", render->no_ground, "Leave out the ground plane");
   r->add_option("--edge-length", render->edge_length_m, "Target ring edge length in m")
+      ->check(CLI::PositiveNumber);
+  r->add_option("--ortho-height", render->ortho_height_m,
+                "Parallel projection whose image height spans this many metres (a known scale)")
       ->check(CLI::PositiveNumber);
   r->add_flag("--json", render->json, "Machine-readable JSON on stdout");
   r->callback([render] { run_render(*render); });

@@ -118,12 +118,20 @@ TEST(GraphicsInstancingCli, SceneOfTwoHundredTreesFromTwoFiles) {
   EXPECT_GT(j["bounds"]["max"][0].get<double>() - j["bounds"]["min"][0].get<double>(), 19 * 12.0);
   EXPECT_LT(fs::file_size(dir / "forest.glb"), 100 * fs::file_size(dir / "p.glb"));
 
-  const auto r = run_fspm("render " + scene.string() + " -o " + (dir / "forest.png").string() +
-                          " --size 160x120 --json");
+  auto r = run_fspm("render " + scene.string() + " -o " + (dir / "forest.png").string() +
+                    " --size 160x120 --json");
   if (r.err.find("without VTK") == std::string::npos) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(nlohmann::json::parse(r.out)["triangles"], tri(j));
     EXPECT_TRUE(fs::exists(dir / "forest.png"));
+    r = run_fspm("render " + scene.string() + " -o " + (dir / "plan.png").string() +
+                 " --size 160x120 --view top --ortho-height 150");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(fs::exists(dir / "plan.png"));
+    r = run_fspm("render " + scene.string() + " -o " + (dir / "bad.png").string() +
+                 " --ortho-height -1");
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_FALSE(fs::exists(dir / "bad.png"));
   }
 }
 
