@@ -2,7 +2,22 @@
 
 Tree graphs come out as :class:`Tree` objects whose columns are numpy arrays sharing memory
 with the C++ tree (no copy). Errors are raised as :class:`fspm.Error` subclasses carrying the
-same messages as the command line.
+same messages as the command line; long computations release the GIL.
+
+Families (names follow the C++ API):
+
+* trees: ``read_tree``, ``write_tree``, ``parse_newick``, ``Tree.from_arrays``, ``distance``
+* L-systems: ``lsystem_derive``, ``lsystem_interpret``
+* GreenLab: ``greenlab_simulate``, ``greenlab_reconstruct``, ``read_plant_params``,
+  ``fit_gl1``, ``predict_targets``, ``read_targets_csv``
+* environment: ``Scene``, ``read_scene_file``, ``parse_scene_json``, ``light``, ``LightModel``,
+  ``GrowthParams``, ``grow_tree``, ``analyze_tree``, ``adapt_tree``, ``adapt_trees``,
+  ``remove_pruned``
+* statistics: ``mean``, ``standard_deviation``, ``mean_confidence_interval``,
+  ``student_t_test``, ``welch_t_test``, ``paired_t_test``, ``mann_whitney_u_test``, ``cohens_d``
+* graphics: ``mesh_tree``, ``MeshOptions``, ``write_mesh`` (.obj/.ply/.vtp/.glb), ``write_pvd``,
+  ``render`` (VTK offscreen, to a numpy image and .png)
+* experiments: ``run_experiment``, ``read_results``
 """
 from ._fspm import (  # noqa: F401
     AdaptationResult,
