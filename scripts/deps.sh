@@ -16,6 +16,7 @@ packages=(
   libopenmpi-dev openmpi-bin
   # Python module, tests and notebooks (Debian's python3 only)
   python3 python3-dev pybind11-dev python3-numpy python3-pytest python3-pandas python3-scipy
+  python3-pip python3-setuptools python3-wheel python3-venv
   python3-matplotlib python3-nbconvert python3-nbformat python3-ipykernel jupyter-nbconvert
 )
 
