@@ -167,6 +167,20 @@ void bind_scene(py::module_& m) {
           py::arg("min"), py::arg("max"), py::arg("translucency") = 0.0, py::arg("solid") = true,
           "Adds an axis-aligned box")
       .def(
+          "add_wall",
+          [](env::Scene& s, const Eigen::Vector2d& from, const Eigen::Vector2d& to, double height,
+             double thickness, double base, double translucency) {
+            if (!(height > 0.0) || !(thickness > 0.0) || (to - from).norm() == 0.0) {
+              throw ValueError("add_wall: expected distinct ends, height > 0 and thickness > 0");
+            }
+            env::Box b = env::Box::wall(from, to, base, height, thickness);
+            b.translucency = translucency;
+            s.boxes.push_back(b);
+          },
+          py::arg("from_xy"), py::arg("to_xy"), py::arg("height"), py::arg("thickness") = 0.2,
+          py::arg("base") = 0.0, py::arg("translucency") = 0.0,
+          "Adds a solid vertical wall from (x0, y0) to (x1, y1)")
+      .def(
           "set_ground",
           [](env::Scene& s, double height, double translucency, bool solid) {
             s.ground = env::Ground{height, translucency, solid};
@@ -410,11 +424,18 @@ void bind_adaptation(py::module_& m) {
 
   m.def(
       "analyze_tree",
-      [](const TreeGraph& tree, std::optional<env::AnalysisParams> params,
-         const Eigen::Vector3d& brightest) {
+      [](const TreeGraph& tree, py::handle params, const Eigen::Vector3d& brightest) {
         const Eigen::Vector3d b = unit_above_horizon(brightest, "brightest");
+        // None: defaults; a dict goes through the keyword constructor AnalysisParams(**params).
+        env::AnalysisParams p;
+        if (py::isinstance<py::dict>(params)) {
+          p = py::type::of<env::AnalysisParams>()(**params.cast<py::dict>())
+                  .cast<env::AnalysisParams>();
+        } else if (!params.is_none()) {
+          p = params.cast<env::AnalysisParams>();
+        }
         py::gil_scoped_release release;
-        return env::analyze_tree(tree, params.value_or(env::AnalysisParams{}), b);
+        return env::analyze_tree(tree, p, b);
       },
       py::arg("tree"), py::arg("params") = py::none(),
       py::arg("brightest") = Eigen::Vector3d::UnitZ().eval(),

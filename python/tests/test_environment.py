@@ -139,6 +139,10 @@ def test_plastic_adaptation():
                            "thickness": 0.2}]}
     adapted = fspm.adapt_tree(tree, analysis, wall)
     assert adapted.mean_tip_shift[0] < 0
+    scene = fspm.Scene()
+    scene.add_wall((0.7, -20), (0.7, 20), height=6, thickness=0.2)
+    same_wall = fspm.adapt_tree(tree, fspm.analyze_tree(tree, {"pruning_strength": 0.8}), scene)
+    np.testing.assert_array_equal(same_wall.tree.ends, adapted.tree.ends)
     assert adapted.mean_tip_displacement_m > 0
     pruned = adapted.tree.attribute("pruned")
     assert int(pruned.sum()) == adapted.pruned_nodes > 0
