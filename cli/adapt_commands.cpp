@@ -1,5 +1,7 @@
 // fspm adapt: plastic trees (Pirk 4.3-4.4). Each tree is analysed as grown in the open, then bent
-// and pruned for the scene; the output carries per-node "displacement" and "pruned".
+// and pruned for the scene; the output carries per-node "displacement", "pruned" and
+// "leaf_density". Several --scene options re-adapt the same analysed trees to each scene in turn
+// (a scene change does not re-analyse): -o is then a directory with one sub-directory per scene.
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
@@ -21,7 +23,7 @@ namespace {
 
 struct AdaptOptions {
   std::vector<std::string> trees;
-  std::string scene;
+  std::vector<std::string> scenes;
   std::string out;
   std::string format;
   double skeleton_radius_m = 0.0;
@@ -35,15 +37,49 @@ struct AdaptOptions {
   bool json = false;
 };
 
+std::string scene_label(const std::string& path, std::size_t index,
+                        const std::vector<std::string>& all) {
+  std::string stem = std::filesystem::path(path).stem().string();
+  if (stem.empty()) stem = "scene";
+  // Two scenes with the same file name (in different folders) get their position appended.
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    if (k != index && std::filesystem::path(all[k]).stem().string() == stem) {
+      return stem + "_" + std::to_string(index + 1);
+    }
+  }
+  return stem;
+}
+
+// Output paths for the trees: OUT itself for one tree, else OUT/<tree file name>.
+std::vector<std::string> output_paths(const AdaptOptions& o, const std::filesystem::path& out,
+                                      bool directory) {
+  std::vector<std::string> outputs;
+  if (directory) {
+    std::error_code ec;
+    std::filesystem::create_directories(out, ec);
+    if (ec) throw IoError("cannot create output directory: " + ec.message(), out.string());
+    for (const std::string& in : o.trees) {
+      std::filesystem::path name = std::filesystem::path(in).filename();
+      if (!o.format.empty()) name.replace_extension(o.format == "newick" ? "nwk" : o.format);
+      outputs.push_back((out / name).string());
+    }
+  } else {
+    outputs.push_back(out.string());
+  }
+  for (const std::string& path : outputs) tree_format_for(path, o.format);  // fail early
+  return outputs;
+}
+
 void run_adapt(const AdaptOptions& o) {
-  const environment::Scene scene = environment::read_scene_file(o.scene);
+  std::vector<environment::Scene> scenes;
+  for (const std::string& path : o.scenes) scenes.push_back(environment::read_scene_file(path));
   environment::AnalysisParams params;
   params.skeleton_radius_m = o.skeleton_radius_m;
   params.pruning_strength = o.pruning_strength;
   params.phototropism = o.phototropism;
   params.gravitropism = o.gravitropism;
   params.temporal_pruning = o.temporal;
-  Eigen::Vector3d grown_brightest = scene.sky.brightest;
+  Eigen::Vector3d grown_brightest = scenes.front().sky.brightest;
   if (!o.grown_brightest.empty()) {
     grown_brightest = {o.grown_brightest[0], o.grown_brightest[1], o.grown_brightest[2]};
     if (grown_brightest.z() <= 0.0) {
@@ -52,20 +88,15 @@ void run_adapt(const AdaptOptions& o) {
     grown_brightest.normalize();
   }
   const bool many = o.trees.size() > 1;
-  std::vector<std::string> outputs;
-  if (many) {
-    std::error_code ec;
-    std::filesystem::create_directories(o.out, ec);
-    if (ec) throw IoError("cannot create output directory: " + ec.message(), o.out);
-    for (const std::string& in : o.trees) {
-      std::filesystem::path name = std::filesystem::path(in).filename();
-      if (!o.format.empty()) name.replace_extension(o.format == "newick" ? "nwk" : o.format);
-      outputs.push_back((std::filesystem::path(o.out) / name).string());
-    }
-  } else {
-    outputs.push_back(o.out);
+  const bool several_scenes = scenes.size() > 1;
+  std::vector<std::vector<std::string>> outputs;  // per scene, per tree
+  for (std::size_t s = 0; s < scenes.size(); ++s) {
+    const std::filesystem::path out =
+        several_scenes ? std::filesystem::path(o.out) / scene_label(o.scenes[s], s, o.scenes)
+                       : std::filesystem::path(o.out);
+    // With several scenes and one tree the file keeps the tree's name inside the scene folder.
+    outputs.push_back(output_paths(o, out, many || several_scenes));
   }
-  for (const std::string& out : outputs) tree_format_for(out, o.format);  // fail early
 
   std::vector<TreeGraph> trees;
   for (const std::string& in : o.trees) trees.push_back(read_tree_file(in));
@@ -73,60 +104,70 @@ void run_adapt(const AdaptOptions& o) {
   std::vector<double> analysis_seconds;
   for (const TreeGraph& tree : trees) {
     const auto t0 = std::chrono::steady_clock::now();
-    // The open-sky analysis uses the sky the tree grew under (default: the scene's), so a moved
-    // brightest point is a global light change (Pirk 4.4.3).
+    // The open-sky analysis uses the sky the tree grew under (default: the first scene's), so a
+    // moved brightest point is a global light change (Pirk 4.4.3). It is made once: every scene
+    // re-adapts from it.
     analyses.push_back(environment::analyze_tree(tree, params, grown_brightest));
     analysis_seconds.push_back(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
-  std::vector<environment::AdaptationResult> adapted;
-  std::vector<double> seconds;
-  if (o.together) {
-    // Tree-tree interaction (simplified, see environment/plastic_adaptation.hpp).
-    std::vector<const TreeGraph*> tp;
-    std::vector<const environment::TreeAnalysis*> ap;
-    for (std::size_t k = 0; k < trees.size(); ++k) {
-      tp.push_back(&trees[k]);
-      ap.push_back(&analyses[k]);
-    }
-    const auto t0 = std::chrono::steady_clock::now();
-    adapted = environment::adapt_trees(tp, ap, scene);
-    const double total =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    seconds.assign(trees.size(), total / static_cast<double>(trees.size()));
-  } else {
-    for (std::size_t k = 0; k < trees.size(); ++k) {
-      const auto t0 = std::chrono::steady_clock::now();
-      adapted.push_back(environment::adapt_tree(trees[k], analyses[k], scene));
-      seconds.push_back(
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-    }
-  }
 
   nlohmann::json results = nlohmann::json::array();
-  for (std::size_t k = 0; k < trees.size(); ++k) {
-    const environment::AdaptationResult& r = adapted[k];
-    if (o.remove) {
-      write_tree_file(environment::remove_pruned(r.tree), outputs[k], o.format);
+  for (std::size_t s = 0; s < scenes.size(); ++s) {
+    const environment::Scene& scene = scenes[s];
+    std::vector<environment::AdaptationResult> adapted;
+    std::vector<double> seconds;
+    if (o.together) {
+      // Tree-tree interaction: lock-step adaptation in one light field (Pirk 4.4.3).
+      std::vector<const TreeGraph*> tp;
+      std::vector<const environment::TreeAnalysis*> ap;
+      for (std::size_t k = 0; k < trees.size(); ++k) {
+        tp.push_back(&trees[k]);
+        ap.push_back(&analyses[k]);
+      }
+      const auto t0 = std::chrono::steady_clock::now();
+      adapted = environment::adapt_trees(tp, ap, scene);
+      const double total =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      seconds.assign(trees.size(), total / static_cast<double>(trees.size()));
     } else {
-      write_tree_file(r.tree, outputs[k], o.format);
+      for (std::size_t k = 0; k < trees.size(); ++k) {
+        const auto t0 = std::chrono::steady_clock::now();
+        adapted.push_back(environment::adapt_tree(trees[k], analyses[k], scene));
+        seconds.push_back(
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      }
     }
-    results.push_back(
-        {{"input", o.trees[k]},
-         {"output", outputs[k]},
-         {"nodes", trees[k].size()},
-         {"pruned_nodes", r.pruned_nodes},
-         {"mean_tip_displacement", r.mean_tip_displacement_m},
-         {"mean_tip_shift", {r.mean_tip_shift.x(), r.mean_tip_shift.y(), r.mean_tip_shift.z()}},
-         {"seconds", seconds[k]},
-         {"analysis_seconds", analysis_seconds[k]}});
-    spdlog::info(
-        "{}: {} nodes, {} pruned, mean tip displacement {:.3f} m, adapted in {:.4f} s "
-        "(analysis {:.4f} s) -> {}",
-        o.trees[k], trees[k].size(), r.pruned_nodes, r.mean_tip_displacement_m, seconds[k],
-        analysis_seconds[k], outputs[k]);
+    for (std::size_t k = 0; k < trees.size(); ++k) {
+      const environment::AdaptationResult& r = adapted[k];
+      const std::string& output = outputs[s][k];
+      if (o.remove) {
+        write_tree_file(environment::remove_pruned(r.tree), output, o.format);
+      } else {
+        write_tree_file(r.tree, output, o.format);
+      }
+      nlohmann::json item = {
+          {"input", o.trees[k]},
+          {"output", output},
+          {"nodes", trees[k].size()},
+          {"pruned_nodes", r.pruned_nodes},
+          {"mean_tip_displacement", r.mean_tip_displacement_m},
+          {"mean_tip_shift", {r.mean_tip_shift.x(), r.mean_tip_shift.y(), r.mean_tip_shift.z()}},
+          {"seconds", seconds[k]},
+          {"analysis_seconds", analysis_seconds[k]}};
+      if (several_scenes) {
+        item["scene"] = o.scenes[s];
+        item["light_evaluations"] = r.light_evaluations;
+      }
+      results.push_back(std::move(item));
+      spdlog::info(
+          "{}{}: {} nodes, {} pruned, mean tip displacement {:.3f} m, adapted in {:.4f} s "
+          "(analysis {:.4f} s) -> {}",
+          o.trees[k], several_scenes ? " in " + o.scenes[s] : std::string(), trees[k].size(),
+          r.pruned_nodes, r.mean_tip_displacement_m, seconds[k], analysis_seconds[k], output);
+    }
   }
-  if (o.json) print_json(many ? results : results.front());
+  if (o.json) print_json(many || several_scenes ? results : results.front());
 }
 
 }  // namespace
@@ -136,9 +177,14 @@ void add_adapt_commands(CLI::App& app) {
   CLI::App* a = app.add_subcommand(
       "adapt", "Plastic trees (Pirk 4.3-4.4): bend and prune trees grown in the open for a scene");
   a->add_option("TREE", opt->trees, "Input tree files (grown without obstacles)")->required();
-  a->add_option("--scene", opt->scene, "Scene file (JSON, see docs/environment.md)")->required();
+  a->add_option("--scene", opt->scenes,
+                "Scene file (JSON, see docs/environment.md); repeat it to re-adapt the same "
+                "analysed trees to several scenes (-o is then a directory, one folder per scene)")
+      ->required()
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   a->add_option("-o,--output", opt->out,
-                "Output tree file, or a directory when several trees are given")
+                "Output tree file, or a directory when several trees or scenes are given")
       ->required();
   a->add_option("--format", opt->format, "Output format (default: from the extension)");
   a->add_option("--skeleton-radius", opt->skeleton_radius_m,
@@ -155,7 +201,7 @@ void add_adapt_commands(CLI::App& app) {
   a->add_flag("--temporal-pruning", opt->temporal,
               "Pruning thresholds over all earlier growth stages (eq. 4.5), not the final one");
   a->add_flag("--together", opt->together,
-              "Trees shade each other (world coordinates; neighbours' clusters kept static)");
+              "Trees shade each other, adapted in lock-step (world coordinates, Pirk 4.4.3)");
   a->add_flag("--remove-pruned", opt->remove, "Drop pruned nodes instead of flagging them");
   a->add_flag("--json", opt->json, "Machine-readable JSON on stdout");
   a->callback([opt] { run_adapt(*opt); });

@@ -388,9 +388,23 @@ void ClusterLightField::evaluate(std::uint32_t c, bool rebuild) {
   } else {
     for (int i = 0; i < n; ++i) vis_[i] = static_cast<float>(all) * obstacle[i];
   }
+  const int rings = dirs_.ring_count();
   for (const Cap& cap : caps_) {
-    apply_cap_all(vis_.data(), xs_.data(), ys_.data(), zs_.data(), n, cap.axis, cap.cos_a,
-                  cap.gamma);
+    // Only the rings whose (common) z lies within the cap's z range can hold covered cells;
+    // rings are contiguous in index order from the zenith down.
+    const double zc = cap.axis.z();
+    const double sc = std::sqrt(std::max(0.0, 1.0 - zc * zc));
+    const double z_lo = zc * cap.cos_a - sc * cap.sin_a - 1e-5;
+    const double z_hi = zc > cap.cos_a ? 2.0 : zc * cap.cos_a + sc * cap.sin_a + 1e-5;
+    int r0 = 0;
+    while (r0 < rings && dirs_.ring_z(r0) > z_hi) ++r0;
+    int r1 = r0;
+    while (r1 < rings && dirs_.ring_z(r1) >= z_lo) ++r1;
+    if (r1 == r0) continue;
+    const int first = dirs_.ring_first(r0);
+    const int last = dirs_.ring_first(r1 - 1) + dirs_.ring_size(r1 - 1);
+    apply_cap_all(vis_.data() + first, xs_.data() + first, ys_.data() + first, zs_.data() + first,
+                  last - first, cap.axis, cap.cos_a, cap.gamma);
   }
   double sum = 0.0;
   Eigen::Vector3d m = Eigen::Vector3d::Zero();
@@ -401,6 +415,46 @@ void ClusterLightField::evaluate(std::uint32_t c, bool rebuild) {
   }
   light_[c] = weight_sum_ > 0 ? std::clamp(sum / weight_sum_, 0.0, 1.0) : 0.0;
   direction_[c] = m.norm() > 1e-300 ? Eigen::Vector3d(m.normalized()) : open_direction_;
+}
+
+}  // namespace fspm::environment
+
+namespace fspm::environment {
+
+void ClusterLightField::evaluate_batch(std::span<const std::uint32_t> which,
+                                       std::span<const std::uint8_t> relist) {
+  Scene world = obstacles_;
+  world.sky.brightest = brightest_;
+  world.sky.directions = dirs_.size();
+  world.sky.significance = significance_;
+  std::vector<std::uint32_t> sphere_of(center_.size(), kNoSphere);
+  for (std::uint32_t c = 0; c < center_.size(); ++c) {
+    if (!alive_[c]) continue;
+    sphere_of[c] = static_cast<std::uint32_t>(world.spheres.size());
+    world.spheres.push_back({center_[c], radius_[c], gamma_[c], false});
+  }
+  const LightModel model(world);
+  for (const std::uint32_t c : which) {
+    if (!alive_[c]) continue;
+    ++evaluations_;
+    const LightSample s = model.evaluate(center_[c], sphere_of[c]);
+    light_[c] = s.light;
+    direction_[c] = s.direction;
+    if (!listed_[c] || (c < relist.size() && relist[c] != 0)) {
+      double all = 1.0;
+      gather_from_grid(c, all);
+      caps_.clear();
+      continue;
+    }
+    std::vector<ClusterNeighbor>& list = neighbors_[c];
+    if (external_[c] != nullptr) {
+      const ListView view = neighbors(c);
+      list.assign(view.begin(), view.end());
+      for (ClusterNeighbor& e : list) e.index += view.offset;
+      external_[c] = nullptr;
+    }
+    for (ClusterNeighbor& e : list) e.relative = (center_[e.index] - center_[c]).cast<float>();
+  }
 }
 
 }  // namespace fspm::environment

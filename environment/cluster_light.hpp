@@ -57,6 +57,11 @@ class ClusterLightField {
   // drifted by more than half the list margin against one of them, or `rebuild`: then the list
   // is rebuilt from the point grid (rebuilt on demand after mark_moved()).
   void evaluate(std::uint32_t c, bool rebuild = false);
+  // Evaluates every cluster in `which` with one LightModel built over the obstacles and the alive
+  // clusters (cheaper than per-cluster evaluation when many are due); refreshes their lists'
+  // relative positions (rebuilding the list from the grid for those flagged in `relist`).
+  void evaluate_batch(std::span<const std::uint32_t> which, std::span<const std::uint8_t> relist);
+
   // Positions changed: the point grid is rebuilt before it is next needed.
   void mark_moved() { grid_stale_ = true; }
 

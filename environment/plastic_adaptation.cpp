@@ -18,6 +18,8 @@ constexpr double kDriftParallax = 0.1;
 // Possible change of a cluster's light (share of the open sky's) from drifted or vanished
 // neighbours before it is re-evaluated: twice the shadow-volume significance.
 constexpr double kLightChange = 0.02;
+// Refreshes with at least 1/kBatchShare of the clusters due use one LightModel for all.
+constexpr std::size_t kBatchShare = 8;
 
 bool is_internode(const TreeGraph& t, NodeId n) { return t.kind(n) == OrganKind::kInternode; }
 
@@ -437,8 +439,21 @@ void Engine::check_moved() {
 
 void Engine::refresh() {
   if (dirty_list_.empty()) return;
-  field_.rebuild_grid();
   std::sort(dirty_list_.begin(), dirty_list_.end());
+  // Many due: one LightModel (shadow-volume grid, vectorized caps) for all of them; few: each
+  // from its own neighbour list.
+  if (dirty_list_.size() * kBatchShare >= field_.size()) {
+    field_.evaluate_batch(dirty_list_, relist_);
+    for (const std::uint32_t c : dirty_list_) {
+      dirty_[c] = 0;
+      relist_[c] = 0;
+      eval_q_[c] = anchor_rotation(c);
+      lost_[c] = 0.0;
+    }
+    dirty_list_.clear();
+    return;
+  }
+  field_.rebuild_grid();
   for (const std::uint32_t c : dirty_list_) {
     dirty_[c] = 0;
     if (!field_.alive_[c]) continue;

@@ -1,6 +1,7 @@
 // fspm adapt, run as a user would: grow a tree, adapt it to an empty scene and beside a wall.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -50,6 +51,37 @@ TEST(AdaptCli, EmptySceneKeepsTheTreeAndAWallBendsItAway) {
   EXPECT_EQ(jm.size(), 2u);
   EXPECT_EQ(read_tree_file((dir / "many" / "a.tree").string()).size(),
             jw["nodes"].get<std::size_t>() - jw["pruned_nodes"].get<std::size_t>());
+}
+
+TEST(AdaptCli, SeveralScenesReadaptTheSameAnalysis) {
+  // fspm adapt TREE --scene A --scene B -o DIR: one analysis, one adaptation per scene, written
+  // to DIR/<scene>/<tree>; each result equals the single-scene run.
+  const auto dir = scratch_dir("adapt_scenes");
+  std::ofstream(dir / "empty.json") << R"({"occluders": []})";
+  std::ofstream(dir / "wall.json")
+      << R"({"occluders": [{"type": "wall", "from": [1.5, -20], "to": [1.5, 20], "height": 20}]})";
+  const auto tree = (dir / "a.tree").string();
+  ASSERT_EQ(run_fspm("grow --preset A --years 8 -o " + tree).exit_code, 0);
+  const auto single = run_fspm("adapt " + tree + " --scene " + (dir / "wall.json").string() +
+                               " -o " + (dir / "w.tree").string() + " --json");
+  ASSERT_EQ(single.exit_code, 0) << single.err;
+  const auto js = nlohmann::json::parse(single.out);
+
+  const auto r =
+      run_fspm("adapt " + tree + " --scene " + (dir / "empty.json").string() + " --scene " +
+               (dir / "wall.json").string() + " -o " + (dir / "out").string() + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j.is_array());
+  ASSERT_EQ(j.size(), 2u);
+  EXPECT_EQ(j[0]["scene"], (dir / "empty.json").string());
+  EXPECT_EQ(j[0]["pruned_nodes"], 0);
+  EXPECT_EQ(j[1]["pruned_nodes"], js["pruned_nodes"]);
+  EXPECT_DOUBLE_EQ(j[1]["mean_tip_displacement"].get<double>(),
+                   js["mean_tip_displacement"].get<double>());
+  EXPECT_TRUE(std::filesystem::exists(dir / "out" / "empty" / "a.tree"));
+  EXPECT_EQ(read_tree_file((dir / "out" / "wall" / "a.tree").string()).size(),
+            js["nodes"].get<std::size_t>());
 }
 
 TEST(AdaptCli, BadSceneIsAUserError) {

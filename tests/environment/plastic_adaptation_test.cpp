@@ -194,10 +194,27 @@ TreeGraph translated(const TreeGraph& tree, const Eigen::Vector3d& offset) {
   return t;
 }
 
+TreeGraph mirrored_x(const TreeGraph& tree) {
+  TreeGraph t = tree;
+  const Eigen::Vector3d m(-1, 1, 1);
+  for (NodeId i = 0; i < t.size(); ++i) {
+    const double len = t.length(i);
+    const Eigen::Vector3d dir = t.direction(i).cwiseProduct(m);
+    t.set_segment(i, t.start(i).cwiseProduct(m), t.end(i).cwiseProduct(m));
+    t.set_length(i, len);
+    t.set_direction(i, dir);
+  }
+  return t;
+}
+
 TEST(PlasticAdaptation, TwoTreesSideBySideLeanApart) {
-  const GrowthResult& g = grown_a();
-  const TreeGraph west = translated(g.tree, {-1.2, 0, 0});
-  const TreeGraph east = translated(g.tree, {1.2, 0, 0});
+  // A 16-year tree and its mirror image 2 m apart (a symmetric pair, so both sides can be read
+  // the same way).
+  GrowthParams p = growth_preset("A");
+  p.years = 16;
+  const GrowthResult g = grow_tree(p);
+  const TreeGraph west = translated(g.tree, {-1.0, 0, 0});
+  const TreeGraph east = translated(mirrored_x(g.tree), {1.0, 0, 0});
   const TreeAnalysis aw = analyze_tree(west);
   const TreeAnalysis ae = analyze_tree(east);
   const std::vector<AdaptationResult> r = adapt_trees({&west, &east}, {&aw, &ae}, Scene{});
@@ -220,8 +237,8 @@ TEST(PlasticAdaptation, TwoTreesSideBySideLeanApart) {
   };
   // Pirk 4.4.3 / Fig. 4.18: adapted in lock-step, each tree loses branches on the side facing the
   // other (its shade), not on the far side.
-  const double west_facing = facing_share(west, r[0], -1.2, +1.0);
-  const double east_facing = facing_share(east, r[1], 1.2, -1.0);
+  const double west_facing = facing_share(west, r[0], -1.0, +1.0);
+  const double east_facing = facing_share(east, r[1], 1.0, -1.0);
   std::printf("share of pruned nodes on the facing side: west %.2f, east %.2f\n", west_facing,
               east_facing);
   ASSERT_GT(r[0].pruned_nodes, 0u);
