@@ -13,11 +13,13 @@ namespace fspm::environment {
 namespace {
 
 constexpr std::uint64_t kStill = 0;  // group of clusters nothing moved in this step
-// Relative drift that counts, as a share of the distance (about 3 degrees of parallax).
-constexpr double kDriftParallax = 0.1;
+// Relative drift that counts, as a share of the distance (about 9 degrees of parallax: half the
+// width of one of the 64 sky cells).
+constexpr double kDriftParallax = 0.15;
 // Possible change of a cluster's light (share of the open sky's) from drifted or vanished
-// neighbours before it is re-evaluated: twice the shadow-volume significance.
-constexpr double kLightChange = 0.02;
+// neighbours before it is re-evaluated: about the resolution of the 64-direction sky (one cell
+// near the zenith carries 3 cos^2 / 64 = 4.7 % of the light).
+constexpr double kLightChange = 0.05;
 // Refreshes with at least 1/kBatchShare of the clusters due use one LightModel for all.
 constexpr std::size_t kBatchShare = 8;
 

@@ -10,10 +10,11 @@
 // density follows the light (eq. 4.13); clusters that end up in a solid obstacle are pushed out.
 //
 // Only the affected parts are recomputed (Pirk 4.6): light is evaluated per leaf cluster, starting
-// from the analysis' cache; a cluster is re-evaluated only when a cluster in its shadow
-// neighbourhood moved relative to it by more than kDriftTolerance_m (clusters carried by the same
-// bent branch keep their relative positions), vanished, when it turned by more than
-// kTurnTolerance_rad against the sky, or when its cached obstacle visibility changed.
+// from the analysis' cache; a cluster is re-evaluated only when clusters in its shadow
+// neighbourhood moved relative to it by more than kDriftTolerance_m (and 15 % of their distance)
+// or vanished, enough to change its light by about 5 % (clusters carried by the same bent branch
+// keep their relative positions), when it turned by more than kTurnTolerance_rad against the sky,
+// or when its cached obstacle visibility changed.
 #include <Eigen/Core>
 #include <cstddef>
 #include <vector>
@@ -38,7 +39,7 @@ struct AdaptationResult {
   std::size_t pushed_clusters = 0;    // clusters moved out of solid obstacles
 };
 
-inline constexpr double kDriftTolerance_m = 0.05;
+inline constexpr double kDriftTolerance_m = 0.1;
 inline constexpr double kTurnTolerance_rad = 0.2;
 
 // `analysis` must come from analyze_tree(tree). The scene's occluders shade the tree together with
