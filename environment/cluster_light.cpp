@@ -207,7 +207,8 @@ bool ClusterLightField::update_obstacles(std::uint32_t c) {
 
 double ClusterLightField::loss_bound(std::uint32_t j, const Eigen::Vector3d& d) const {
   const double d2 = d.squaredNorm();
-  if (d2 > reach2_[j]) return 0.0;
+  // Outside the shadow volume or entirely below the point's horizon: no shade.
+  if (d2 > reach2_[j] || d.z() + radius_[j] <= 0.0) return 0.0;
   const double r2 = radius_[j] * radius_[j];
   if (d2 <= r2) return 1.0 - gamma_[j];
   return std::min(1.0, 3.0 * (1.0 - gamma_[j]) * (1.0 - std::sqrt((d2 - r2) / d2)));
@@ -298,8 +299,14 @@ void ClusterLightField::gather_from_grid(std::uint32_t c, double& all) {
         const std::uint32_t j = cell_items_[k];
         if (j == c) continue;
         const Eigen::Vector3d d = center_[j] - p;
-        const double lim = std::max(own_reach, reach_[j]) + kListMargin_m;
-        if (d.squaredNorm() > lim * lim) continue;
+        // Listed when j may shade c (within its shadow reach, not below c's horizon) or c may
+        // shade j, each widened by the margin.
+        const double d2 = d.squaredNorm();
+        const double lim_j = reach_[j] + kListMargin_m;
+        const double lim_c = own_reach + kListMargin_m;
+        const bool j_shades = d.z() + radius_[j] > -kListMargin_m && d2 <= lim_j * lim_j;
+        const bool c_shades = -d.z() + radius_[c] > -kListMargin_m && d2 <= lim_c * lim_c;
+        if (!j_shades && !c_shades) continue;
         list.push_back({j, d.cast<float>()});
         add_occluder(c, j, d, all);
       }

@@ -1,9 +1,9 @@
 #pragma once
 // Light per leaf cluster for plastic trees (Pirk eq. 4.3 evaluated only at cluster centres), with
 // everything an incremental update needs: each cluster's neighbour list (the clusters whose shadow
-// volume, widened by a margin, contains it or that it shades) with the relative positions at its
-// last evaluation, and its cached obstacle visibility per sky direction. The adaptation moves and
-// removes clusters and re-evaluates only those whose surroundings changed (Pirk 4.6: "the
+// volume, widened by a margin, contains it, and those in its own) with the relative positions at
+// its last evaluation, and its cached obstacle visibility per sky direction. The adaptation moves
+// and removes clusters and re-evaluates only those whose surroundings changed (Pirk 4.6: "the
 // transformations are applied only in the affected areas").
 //
 // The light of one cluster is the same integral as LightModel's: the other clusters are spherical
@@ -87,7 +87,8 @@ class ClusterLightField {
     listed_[c] = 1;
   }
   double reach(std::uint32_t c) const { return reach_[c]; }
-  // Upper bound of the share of light cluster j takes from a point at offset d from its centre.
+  // Upper bound of the share of light cluster j takes from a point at offset d from its centre
+  // (0 outside its shadow volume or below the point's horizon).
   double loss_bound(std::uint32_t j, const Eigen::Vector3d& d) const;
 
   // State, public for the adaptation's incremental bookkeeping.
