@@ -389,6 +389,12 @@ void Engine::check_moved() {
   const auto drift = [&](std::uint32_t c, std::uint32_t j, const ClusterNeighbor& e) {
     const Eigen::Vector3d now = field_.center_[j] - field_.center_[c];
     const Eigen::Vector3d then = e.relative.cast<double>();
+    // Cheap test first: j shades c neither now nor then (out of reach or below the horizon).
+    const double r_j = field_.radius_[j], reach2 = field_.reach2_[j];
+    if ((now.z() + r_j <= 0.0 || now.squaredNorm() > reach2) &&
+        (then.z() + r_j <= 0.0 || then.squaredNorm() > reach2)) {
+      return;
+    }
     const double tol = std::max(kDriftTolerance_m, kDriftParallax * then.norm());
     if ((now - then).squaredNorm() <= tol * tol) return;
     lost_[c] += std::max(field_.loss_bound(j, now), field_.loss_bound(j, then));
