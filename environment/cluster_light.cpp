@@ -7,6 +7,10 @@
 #ifdef __SSE2__
 #include <emmintrin.h>
 #endif
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#define FSPM_CLUSTER_AVX512 1
+#endif
 
 namespace fspm::environment {
 namespace {
@@ -44,6 +48,47 @@ void apply_cap_all(float* __restrict vis, const float* __restrict x, const float
     if (x[i] * fx + y[i] * fy + z[i] * fz >= fc) vis[i] *= fg;
   }
 }
+
+#ifdef FSPM_CLUSTER_AVX512
+// All caps over up to 64 directions kept in four AVX-512 registers (single precision; the same
+// per-direction arithmetic and cap order as apply_cap_all, so the results are identical).
+__attribute__((target("avx512f"))) void apply_caps_avx512(float* vis, const float* x,
+                                                          const float* y, const float* z, int n,
+                                                          const float* caps, std::size_t count) {
+  constexpr int kV = 4;
+  __mmask16 lane[kV];
+  __m512 vx[kV], vy[kV], vz[kV], vv[kV];
+  for (int v = 0; v < kV; ++v) {
+    const int left = n - 16 * v;
+    lane[v] = left >= 16  ? __mmask16(0xFFFF)
+              : left <= 0 ? __mmask16(0)
+                          : __mmask16((1u << left) - 1u);
+    vx[v] = _mm512_maskz_loadu_ps(lane[v], x + 16 * v);
+    vy[v] = _mm512_maskz_loadu_ps(lane[v], y + 16 * v);
+    vz[v] = _mm512_maskz_loadu_ps(lane[v], z + 16 * v);
+    vv[v] = _mm512_maskz_loadu_ps(lane[v], vis + 16 * v);
+  }
+  for (std::size_t c = 0; c < count; ++c) {
+    const float* cap = caps + 5 * c;  // axis x, y, z, cos, gamma
+    const __m512 ax = _mm512_set1_ps(cap[0]), ay = _mm512_set1_ps(cap[1]);
+    const __m512 az = _mm512_set1_ps(cap[2]), vc = _mm512_set1_ps(cap[3]);
+    const __m512 vg = _mm512_set1_ps(cap[4]);
+    for (int v = 0; v < kV; ++v) {
+      const __m512 d =
+          _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(vx[v], ax), _mm512_mul_ps(vy[v], ay)),
+                        _mm512_mul_ps(vz[v], az));
+      const __mmask16 m = _mm512_cmp_ps_mask(d, vc, _CMP_GE_OQ) & lane[v];
+      vv[v] = _mm512_mask_mul_ps(vv[v], m, vv[v], vg);
+    }
+  }
+  for (int v = 0; v < kV; ++v) _mm512_mask_storeu_ps(vis + 16 * v, lane[v], vv[v]);
+}
+
+bool has_avx512() {
+  static const bool yes = __builtin_cpu_supports("avx512f");
+  return yes;
+}
+#endif
 
 double box_top_z(const Box& b) {
   double h = 0.0;
@@ -395,6 +440,20 @@ void ClusterLightField::evaluate(std::uint32_t c, bool rebuild) {
   } else {
     for (int i = 0; i < n; ++i) vis_[i] = static_cast<float>(all) * obstacle[i];
   }
+#ifdef FSPM_CLUSTER_AVX512
+  if (n <= 64 && !caps_.empty() && has_avx512()) {
+    packed_caps_.clear();
+    for (const Cap& cap : caps_) {
+      packed_caps_.insert(packed_caps_.end(),
+                          {static_cast<float>(cap.axis.x()), static_cast<float>(cap.axis.y()),
+                           static_cast<float>(cap.axis.z()), static_cast<float>(cap.cos_a),
+                           static_cast<float>(cap.gamma)});
+    }
+    apply_caps_avx512(vis_.data(), xs_.data(), ys_.data(), zs_.data(), n, packed_caps_.data(),
+                      caps_.size());
+    caps_.clear();
+  }
+#endif
   const int rings = dirs_.ring_count();
   for (const Cap& cap : caps_) {
     // Only the rings whose (common) z lies within the cap's z range can hold covered cells;

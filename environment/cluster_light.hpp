@@ -147,6 +147,7 @@ class ClusterLightField {
   std::vector<Cap> caps_;
   std::vector<float> vis_;
   std::vector<float> scratch_vis_;
+  std::vector<float> packed_caps_;
   std::vector<std::uint32_t> scratch_fill_;
 };
 
