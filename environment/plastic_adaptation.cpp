@@ -101,6 +101,10 @@ class Engine {
   std::vector<std::uint32_t> moved_, vanished_, dirty_list_, check_list_;
   std::vector<std::uint8_t> dirty_, check_, relist_;
   std::vector<double> lost_;
+  // Path lengths for the drift bound: per cluster (total and at its evaluation), and the sum of
+  // the per-step maxima over all clusters (total and at each cluster's evaluation).
+  std::vector<double> path_, eval_path_, eval_all_path_;
+  double all_path_ = 0.0, step_max_ = 0.0;
   std::vector<std::uint32_t> owner_;  // tree of each cluster
 };
 
@@ -150,6 +154,9 @@ Engine::Engine(const std::vector<const TreeGraph*>& trees,
   dirty_.assign(nc, 0);
   relist_.assign(nc, 0);
   lost_.assign(nc, 0.0);
+  path_.assign(nc, 0.0);
+  eval_path_.assign(nc, 0.0);
+  eval_all_path_.assign(nc, 0.0);
   check_.assign(nc, 0);
   bool sky_changed = false;
   for (const TreeRun& r : runs_) {
@@ -344,7 +351,11 @@ void Engine::bend(TreeRun& r, int level, int step) {
     const NodeId anchor = a.clusters[c].anchor;
     const std::uint32_t gc = r.first_cluster + c;
     if (r.stamp[anchor] != step || !field_.alive_[gc]) continue;
-    field_.center_[gc] = r.F[anchor](center0_[gc]);
+    const Eigen::Vector3d moved_to = r.F[anchor](center0_[gc]);
+    const double step = (moved_to - field_.center_[gc]).norm();
+    path_[gc] += step;
+    step_max_ = std::max(step_max_, step);
+    field_.center_[gc] = moved_to;
     cgroup_[gc] = r.group[anchor];
     moved_.push_back(gc);
   }
@@ -402,10 +413,19 @@ void Engine::check_moved() {
       mark_dirty(c);
     }
   };
+  // Relative drift since c's evaluation is at most its own path since then plus the largest
+  // path any cluster can have made since then (the sum of the per-step maxima): below the
+  // tolerance no pair needs a look (small changes, e.g. a box beside the crown, stay cheap).
+  all_path_ += step_max_;
+  step_max_ = 0.0;
+  const auto may_drift = [&](std::uint32_t c) {
+    return (path_[c] - eval_path_[c]) + (all_path_ - eval_all_path_[c]) > kDriftTolerance_m;
+  };
   for (const std::uint32_t c : moved_) {
     if (!field_.alive_[c]) continue;
     if (std::abs(anchor_rotation(c).dot(eval_q_[c])) < cos_half_turn) mark_dirty(c);
     if (field_.obstacles_stale(c) && field_.update_obstacles(c)) mark_dirty(c);
+    if (!may_drift(c)) continue;
     const ClusterLightField::ListView view = field_.neighbors(c);
     for (const ClusterNeighbor& e : view) {
       const std::uint32_t j = e.index + view.offset;
@@ -419,7 +439,7 @@ void Engine::check_moved() {
   }
   for (const std::uint32_t c : check_list_) {
     check_[c] = 0;
-    if (dirty_[c]) continue;
+    if (dirty_[c] || !may_drift(c)) continue;
     const ClusterLightField::ListView view = field_.neighbors(c);
     for (const ClusterNeighbor& e : view) {
       const std::uint32_t j = e.index + view.offset;
@@ -457,6 +477,8 @@ void Engine::refresh() {
       relist_[c] = 0;
       eval_q_[c] = anchor_rotation(c);
       lost_[c] = 0.0;
+      eval_path_[c] = path_[c];
+      eval_all_path_[c] = all_path_;
     }
     dirty_list_.clear();
     return;
@@ -469,6 +491,8 @@ void Engine::refresh() {
     relist_[c] = 0;
     eval_q_[c] = anchor_rotation(c);
     lost_[c] = 0.0;
+    eval_path_[c] = path_[c];
+    eval_all_path_[c] = all_path_;
   }
   dirty_list_.clear();
 }
