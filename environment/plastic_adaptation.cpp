@@ -406,9 +406,14 @@ void Engine::check_moved() {
         (then.z() + r_j <= 0.0 || then.squaredNorm() > reach2)) {
       return;
     }
-    const double tol = std::max(kDriftTolerance_m, kDriftParallax * then.norm());
-    if ((now - then).squaredNorm() <= tol * tol) return;
-    lost_[c] += std::max(field_.loss_bound(j, now), field_.loss_bound(j, then));
+    const double dist = then.norm();
+    const double tol = std::max(kDriftTolerance_m, kDriftParallax * dist);
+    const double drift2 = (now - then).squaredNorm();
+    if (drift2 <= tol * tol) return;
+    // A cap turned by the angle a changes the integral of I = cos^2 by at most its share times a
+    // (|dI/dtheta| <= 1): the light can change by loss_bound * min(1, drift / distance).
+    const double turn = dist > 0.0 ? std::min(1.0, std::sqrt(drift2) / dist) : 1.0;
+    lost_[c] += turn * std::max(field_.loss_bound(j, now), field_.loss_bound(j, then));
     if (lost_[c] >= kLightChange) {
       mark_dirty(c);
     }
@@ -421,25 +426,34 @@ void Engine::check_moved() {
   const auto may_drift = [&](std::uint32_t c) {
     return (path_[c] - eval_path_[c]) + (all_path_ - eval_all_path_[c]) > kDriftTolerance_m;
   };
+  // The same bound over all clusters at once: when even the worst pair cannot have drifted by
+  // the tolerance, no list needs a look.
+  double own_max = 0.0, oldest = all_path_;
+  for (const std::uint32_t c : moved_) own_max = std::max(own_max, path_[c] - eval_path_[c]);
+  for (std::uint32_t c = 0; c < field_.size(); ++c) {
+    if (field_.alive_[c]) oldest = std::min(oldest, eval_all_path_[c]);
+  }
+  const bool any_drift = own_max + (all_path_ - oldest) > kDriftTolerance_m;
   for (const std::uint32_t c : moved_) {
     if (!field_.alive_[c]) continue;
     if (std::abs(anchor_rotation(c).dot(eval_q_[c])) < cos_half_turn) mark_dirty(c);
     if (field_.obstacles_stale(c) && field_.update_obstacles(c)) mark_dirty(c);
-    if (!may_drift(c)) continue;
+    if (!any_drift) continue;
+    const bool c_may = may_drift(c);
     const ClusterLightField::ListView view = field_.neighbors(c);
     for (const ClusterNeighbor& e : view) {
       const std::uint32_t j = e.index + view.offset;
       if (!field_.alive_[j] || cgroup_[j] == cgroup_[c]) continue;
-      if (cgroup_[j] == kStill && !check_[j]) {
+      if (cgroup_[j] == kStill && !check_[j] && may_drift(j)) {
         check_[j] = 1;
         check_list_.push_back(j);
       }
-      if (!dirty_[c]) drift(c, j, e);
+      if (c_may && !dirty_[c]) drift(c, j, e);
     }
   }
   for (const std::uint32_t c : check_list_) {
     check_[c] = 0;
-    if (dirty_[c] || !may_drift(c)) continue;
+    if (dirty_[c]) continue;
     const ClusterLightField::ListView view = field_.neighbors(c);
     for (const ClusterNeighbor& e : view) {
       const std::uint32_t j = e.index + view.offset;
