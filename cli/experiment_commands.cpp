@@ -54,6 +54,7 @@ struct RunOptions {
   std::size_t shards = 4;
   std::string slurm_file;
   std::string slurm_time = "24:00:00";
+  std::size_t replicates = 0;  // 0: the file's
 };
 
 struct ExportOptions {
@@ -154,7 +155,13 @@ ex::Experiment stored_experiment(const ex::ResultsDb& db) {
 }
 
 void run_command(const RunOptions& o) {
-  const ex::Experiment x = ex::read_experiment(o.experiment);
+  ex::Experiment x = ex::read_experiment(o.experiment);
+  if (o.replicates > 0) {
+    if (o.emit_slurm) throw ValueError("--replicates: not with --emit-slurm (edit the file)");
+    x.replicates = o.replicates;
+    // Part of the database's fingerprint: a resume must use the same number.
+    x.text += "\n# fspm run --replicates " + std::to_string(o.replicates) + "\n";
+  }
   // Everything is checked before the first run: keys, ranges, model file, parameter names.
   const std::unique_ptr<ex::Model> model = ex::make_model(x);
   const ex::RunPlan plan(x);
@@ -307,6 +314,9 @@ void add_experiment_commands(CLI::App& app) {
   r->add_flag("--resume", run->resume, "Continue the database in the output directory");
   r->add_option("--shard", run->shard, "Run only shard I of N (runs with index % N == I)");
   r->add_option("--time-limit", run->time_limit_s, "Seconds per run (overrides the file)");
+  r->add_option("--replicates", run->replicates,
+                "Replicates per point (overrides the file; a quick, smaller version of a sweep)")
+      ->check(CLI::PositiveNumber);
   r->add_flag("--json", run->json, "Machine-readable JSON summary on stdout");
   r->add_flag("--mpi", run->mpi, "Spread the runs over the MPI ranks (under mpirun)");
   r->add_flag("--emit-slurm", run->emit_slurm, "Write a Slurm job-array script instead of running");
