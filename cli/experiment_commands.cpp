@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -26,6 +27,7 @@
 #include "experiments/slurm_script.hpp"
 #include "fspm/atomic_file.hpp"
 #include "fspm/error.hpp"
+#include "graphics/chart_figure.hpp"
 
 namespace fspm::cli {
 namespace {
@@ -72,6 +74,7 @@ struct ShowOptions {
 struct ReportOptions {
   std::string dir;
   std::string output;
+  bool no_figures = false;
 };
 
 struct CompareOptions {
@@ -128,24 +131,16 @@ void emit_slurm(const RunOptions& o, const ex::Experiment& x) {
 
 // The experiment's comparisons over the runs recorded in `dir` (after fspm run, or after merging
 // shards with fspm compare).
-void compare_runs(const ex::Experiment& x, const std::string& dir, std::size_t jobs, bool quiet) {
-  const ex::ResultsDb db(dir, ex::ResultsDb::Mode::kRead);
-  const std::vector<ex::RunRecord> runs = db.read_all();
-  if (runs.size() < db.info().total_runs && verbosity() > 0) {
-    std::cerr << "fspm: " << db.info().total_runs - runs.size()
-              << " runs are missing; comparing the recorded ones\n";
-  }
-  const ex::ComparisonResults c = ex::run_comparisons(x, runs, dir, jobs);
-  ex::write_comparisons(c, dir);
+void compare_runs(const std::string& dir, std::size_t jobs, bool quiet) {
+  const ex::ComparisonResults c = ex::compare_results(dir, jobs);
   for (const std::string& note : c.notes) std::cerr << "fspm: " << note << '\n';
-  if (!quiet) {
-    std::cout << (fs::path(dir) / ex::kPairsFile).string() << ": " << c.pairs.size()
-              << " pairs compared in " << c.seconds << " s\n";
-    for (const ex::TTestRow& t : c.tests) {
-      std::cout << "t-test " << t.a << " vs " << t.b << " (" << t.group << "): t = " << t.t
-                << ", df = " << t.df << ", p = " << t.p
-                << (t.significant() ? " (significant)" : " (not significant)") << '\n';
-    }
+  if (quiet) return;
+  std::cout << (fs::path(dir) / ex::kPairsFile).string() << ": " << c.pairs.size()
+            << " pairs compared in " << c.seconds << " s\n";
+  for (const ex::TTestRow& t : c.tests) {
+    std::cout << "t-test " << t.a << " vs " << t.b << " (" << t.group << "): t = " << t.t
+              << ", df = " << t.df << ", p = " << t.p
+              << (t.significant() ? " (significant)" : " (not significant)") << '\n';
   }
 }
 
@@ -158,9 +153,7 @@ void run_command(const RunOptions& o) {
   ex::Experiment x = ex::read_experiment(o.experiment);
   if (o.replicates > 0) {
     if (o.emit_slurm) throw ValueError("--replicates: not with --emit-slurm (edit the file)");
-    x.replicates = o.replicates;
-    // Part of the database's fingerprint: a resume must use the same number.
-    x.text += "\n# fspm run --replicates " + std::to_string(o.replicates) + "\n";
+    ex::override_replicates(x, o.replicates);
   }
   // Everything is checked before the first run: keys, ranges, model file, parameter names.
   const std::unique_ptr<ex::Model> model = ex::make_model(x);
@@ -215,7 +208,7 @@ void run_command(const RunOptions& o) {
     std::cout << '\n';
   }
   if (!s.interrupted && r.shard_count == 1 && !x.comparisons.empty()) {
-    compare_runs(x, r.out_dir, o.jobs, o.json);
+    compare_runs(r.out_dir, o.jobs, o.json);
   }
   if (s.interrupted) {
     std::cerr << "fspm: interrupted; " << (s.shard_runs - s.already_done - s.ran)
@@ -250,17 +243,43 @@ void show_command(const ShowOptions& o) {
                        : ex::results_summary_text(db.info(), runs));
 }
 
-void compare_command(const CompareOptions& o) {
-  ex::Experiment x;
-  {
-    const ex::ResultsDb db(o.dir, ex::ResultsDb::Mode::kRead);
-    x = stored_experiment(db);
+// Box plots of the comparison distances, one figure per group (Pirk's four groups side by side),
+// into DIR/figures/. Returns the Markdown that shows them; a note when they cannot be drawn (VTK
+// renders through X: run under xvfb-run without a display).
+std::string comparison_figures(const ex::Experiment& x, const ex::ComparisonResults& c,
+                               const std::string& dir) {
+  std::map<std::string, std::map<std::string, std::vector<double>>> by_group;
+  for (const ex::PairDistance& p : c.pairs) by_group[p.group][p.comparison].push_back(p.distance);
+  std::string md = "\n### Figures\n\n";
+  std::size_t index = 0;
+  try {
+    fs::create_directories(fs::path(dir) / "figures");
+    for (const auto& [group, by_comparison] : by_group) {
+      std::vector<std::string> names;
+      std::vector<std::vector<double>> values;
+      for (const ex::ComparisonSpec& spec : x.comparisons) {
+        const auto it = by_comparison.find(spec.name);
+        if (it == by_comparison.end() || it->second.empty()) continue;
+        names.push_back(spec.name);
+        values.push_back(it->second);
+      }
+      if (names.empty()) continue;
+      const std::string file = "figures/comparisons_" + std::to_string(index++) + ".png";
+      graphics::ChartOptions options;
+      options.title = group;
+      options.y_label = "edit distance";
+      options.width = 640;
+      options.height = 420;
+      graphics::write_box_plot(names, values, options, (fs::path(dir) / file).string());
+      md += "![distances, " + group + "](" + file + ")\n";
+    }
+  } catch (const Error& e) {
+    return "\nNote: figures left out: " + std::string(e.what()) + "\n";
   }
-  if (x.comparisons.empty()) {
-    throw ValueError("compare: the experiment of " + o.dir + " has no [[comparison]]");
-  }
-  compare_runs(x, o.dir, o.jobs, false);
+  return md;
 }
+
+void compare_command(const CompareOptions& o) { compare_runs(o.dir, o.jobs, false); }
 
 void report_command(const ReportOptions& o) {
   const ex::ResultsDb db(o.dir, ex::ResultsDb::Mode::kRead);
@@ -279,6 +298,7 @@ void report_command(const ReportOptions& o) {
     if (!x->comparisons.empty() && ex::read_comparisons(o.dir, c)) {
       c.tests = ex::comparison_ttests(*x, c.pairs);
       md += "\n" + ex::comparisons_markdown(*x, c);
+      if (!o.no_figures) md += comparison_figures(*x, c, o.dir);
     } else if (!x->comparisons.empty()) {
       md += "\nThe comparisons have not been computed yet: run `fspm compare " + o.dir + "`.\n";
     }
@@ -337,6 +357,7 @@ void add_experiment_commands(CLI::App& app) {
   CLI::App* rep = app.add_subcommand("report", "Write DIR/report.md: tables of a sweep's results");
   rep->add_option("DIR", report->dir, "Output directory of fspm run")->required();
   rep->add_option("-o,--output", report->output, "Report path (default DIR/report.md)");
+  rep->add_flag("--no-figures", report->no_figures, "Tables only (figures need an X display)");
   rep->callback([report] { report_command(*report); });
 
   CLI::App* results = app.add_subcommand("results", "Export, summarize and merge sweep results");

@@ -14,6 +14,7 @@
 #include <set>
 #include <sstream>
 
+#include "experiments/results_db.hpp"
 #include "experiments/run_seed.hpp"
 #include "fspm/atomic_file.hpp"
 #include "fspm/edit_cost_model.hpp"
@@ -327,6 +328,18 @@ bool read_comparisons(const std::string& out_dir, ComparisonResults& results) {
     throw ParseError(std::string("not a comparisons file: ") + e.what(), path.string());
   }
   return true;
+}
+
+ComparisonResults compare_results(const std::string& dir, std::size_t jobs) {
+  const ResultsDb db(dir, ResultsDb::Mode::kRead);
+  const Experiment x = parse_experiment(db.info().experiment_text, db.info().experiment_path);
+  if (x.comparisons.empty()) {
+    throw ValueError("the experiment of " + dir + " has no [[comparison]]",
+                     db.info().experiment_path);
+  }
+  ComparisonResults results = run_comparisons(x, db.read_all(), dir, jobs);
+  write_comparisons(results, dir);
+  return results;
 }
 
 std::string comparisons_markdown(const Experiment& x, const ComparisonResults& results) {

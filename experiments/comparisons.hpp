@@ -67,6 +67,11 @@ void write_comparisons(const ComparisonResults& results, const std::string& out_
 // Reads comparisons.json; false when `out_dir` has none.
 bool read_comparisons(const std::string& out_dir, ComparisonResults& results);
 
+// The comparisons of the experiment whose result database is in `dir` (its stored text, read
+// back): run_comparisons over the recorded runs, then write_comparisons. Throws ValueError when
+// the experiment has no [[comparison]].
+ComparisonResults compare_results(const std::string& dir, std::size_t jobs = 0);
+
 // Table 4.1 of Pirk in markdown: per group, the mean, standard deviation and p-values of the
 // comparisons; then one row per t-test.
 std::string comparisons_markdown(const Experiment& experiment, const ComparisonResults& results);

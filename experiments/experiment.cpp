@@ -569,6 +569,12 @@ Experiment parse_experiment(std::string_view toml_text, const std::string& path)
   return x;
 }
 
+void override_replicates(Experiment& x, std::size_t replicates) {
+  if (replicates == 0) throw ValueError("replicates must be at least 1");
+  x.replicates = replicates;
+  x.text += "\n# replicates overridden: " + std::to_string(replicates) + "\n";
+}
+
 Experiment read_experiment(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError("cannot read the experiment file", path);

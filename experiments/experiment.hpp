@@ -79,4 +79,8 @@ struct Experiment {
 Experiment parse_experiment(std::string_view toml_text, const std::string& path = "<string>");
 Experiment read_experiment(const std::string& path);
 
+// Replaces the number of replicates (a quick, smaller version of a sweep) and records it in the
+// experiment's text, which fingerprints the result database, so a resume must give it again.
+void override_replicates(Experiment& experiment, std::size_t replicates);
+
 }  // namespace fspm::experiments

@@ -17,7 +17,7 @@ Families (names follow the C++ API):
   ``student_t_test``, ``welch_t_test``, ``paired_t_test``, ``mann_whitney_u_test``, ``cohens_d``
 * graphics: ``mesh_tree``, ``MeshOptions``, ``write_mesh`` (.obj/.ply/.vtp/.glb), ``write_pvd``,
   ``render`` (VTK offscreen, to a numpy image and .png)
-* experiments: ``run_experiment``, ``read_results``
+* experiments: ``run_experiment``, ``compare_results``, ``read_results``
 """
 from ._fspm import (  # noqa: F401
     AdaptationResult,
@@ -79,6 +79,7 @@ from ._fspm import (  # noqa: F401
     render_available,
     render_mesh,
     run_experiment,
+    compare_results,
     sides_for_radius,
     standard_deviation,
     student_t_test,

@@ -1,0 +1,67 @@
+// fspm run with [[comparison]]s, fspm compare and fspm report, run as a user would.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "run_command.hpp"
+
+namespace fspm::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Chains of 2 and 6 internodes (synthetic model): with topological costs every 2-6 pair is 4
+// apart (delete or insert the surplus), every 2-2 pair 0.
+const char* kExperiment =
+    "[experiment]\nname = \"chains\"\nseed = 3\nreplicates = 4\n[model]\nkind = \"synthetic\"\n"
+    "[sweep]\nnodes = [2, 6]\n[distance]\ncost = \"topological\"\n"
+    "[[comparison]]\nname = \"2-6\"\na = { nodes = 2 }\nb = { nodes = 6 }\n"
+    "[[comparison]]\nname = \"2-2\"\na = { nodes = 2 }\nb = { nodes = 2 }\n"
+    "[[ttest]]\na = \"2-6\"\nb = \"2-2\"\n";
+
+TEST(ExperimentComparisons, RunComparesReportShowsAndCompareRecomputes) {
+  const fs::path dir = scratch_dir("exp_cmp");
+  write_text(dir / "chains.toml", kExperiment);
+  const std::string out = (dir / "out").string();
+  const CommandResult run = run_fspm("run " + (dir / "chains.toml").string() + " -j 2 -o " + out);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("6 pairs compared"), std::string::npos) << run.out;
+  std::istringstream pairs(read_text(dir / "out" / "pairs.csv"));
+  std::string line;
+  std::getline(pairs, line);
+  int rows = 0;
+  while (std::getline(pairs, line)) {
+    ++rows;
+    const bool across = line.starts_with("2-6,");
+    // distance is the 7th column
+    std::istringstream cells(line);
+    std::string cell;
+    for (int i = 0; i < 7; ++i) std::getline(cells, cell, ',');
+    EXPECT_EQ(std::stod(cell), across ? 4.0 : 0.0) << line;
+  }
+  EXPECT_EQ(rows, 6);  // 4 pairs across sets, 2 within (4 runs of nodes = 2)
+  fs::remove(dir / "out" / "pairs.csv");
+  const CommandResult cmp = run_fspm("compare " + out);
+  ASSERT_EQ(cmp.exit_code, 0) << cmp.err;
+  EXPECT_TRUE(fs::exists(dir / "out" / "pairs.csv"));
+  const CommandResult report = run_fspm("report " + out + " --no-figures");
+  ASSERT_EQ(report.exit_code, 0) << report.err;
+  const std::string md = read_text(dir / "out" / "report.md");
+  EXPECT_NE(md.find("## Comparisons"), std::string::npos) << md;
+  EXPECT_NE(md.find("| all | mean | 4 | 0 |"), std::string::npos) << md;
+}
+
+TEST(ExperimentComparisons, BadComparisonIsOneMessageBeforeAnyRun) {
+  const fs::path dir = scratch_dir("exp_cmp_bad");
+  write_text(dir / "bad.toml", std::string(kExperiment) + "[[ttest]]\na = \"2-6\"\nb = \"nope\"\n");
+  const CommandResult run =
+      run_fspm("run " + (dir / "bad.toml").string() + " -o " + (dir / "out").string());
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_NE(run.err.find("bad.toml:24"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("no [[comparison]] named 'nope'"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(dir / "out" / "results.sqlite"));
+}
+
+}  // namespace
+}  // namespace fspm::testing
