@@ -133,7 +133,15 @@ void emit_slurm(const RunOptions& o, const ex::Experiment& x) {
 // shards with fspm compare).
 void compare_runs(const std::string& dir, std::size_t jobs, bool quiet) {
   const ex::ComparisonResults c = ex::compare_results(dir, jobs);
-  for (const std::string& note : c.notes) std::cerr << "fspm: " << note << '\n';
+  // A small version of a big experiment falls short in every group: a few notes suffice.
+  constexpr std::size_t kShownNotes = 3;
+  for (std::size_t i = 0; i < c.notes.size() && i < kShownNotes; ++i) {
+    std::cerr << "fspm: " << c.notes[i] << '\n';
+  }
+  if (c.notes.size() > kShownNotes) {
+    std::cerr << "fspm: ... and " << c.notes.size() - kShownNotes << " more notes in "
+              << (fs::path(dir) / ex::kComparisonsFile).string() << '\n';
+  }
   if (quiet) return;
   std::cout << (fs::path(dir) / ex::kPairsFile).string() << ": " << c.pairs.size()
             << " pairs compared in " << c.seconds << " s\n";
