@@ -1,5 +1,7 @@
 #include "environment/cluster_light.hpp"
 
+#include "environment/analytic_caps.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -16,7 +18,6 @@ namespace fspm::environment {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr std::size_t kMaxAnalyticCaps = 16;
 // Obstacle visibility is recomputed after the cluster moved this share of its distance to the
 // nearest obstacle (about 3 degrees of parallax), at least kMinObstacleMove_m.
 constexpr double kObstacleParallax = 0.05;
@@ -397,42 +398,14 @@ void ClusterLightField::evaluate(std::uint32_t c, bool rebuild) {
     }
   }
   const std::vector<float>& obstacle = obstacle_vis_[c];
-  const double pi = std::numbers::pi;
-  if (obstacle.empty() && caps_.size() <= kMaxAnalyticCaps) {
-    bool exact = true;
-    for (std::size_t i = 0; i < caps_.size() && exact; ++i) {
-      if (caps_[i].axis.z() < caps_[i].sin_a) exact = false;
-      for (std::size_t j = 0; j < i && exact; ++j) {
-        const double cos_sum = caps_[i].cos_a * caps_[j].cos_a - caps_[i].sin_a * caps_[j].sin_a;
-        if (caps_[i].axis.dot(caps_[j].axis) > cos_sum) exact = false;
-      }
-    }
-    if (exact) {
-      // Closed-form cap integrals of cos^2 (derivation in light_model.cpp).
-      const Eigen::Vector3d& b = brightest_;
-      double f = 2.0 * pi / 3.0;
-      Eigen::Vector3d m(0.5 * pi * b.x() * b.z(), 0.5 * pi * b.y() * b.z(),
-                        0.25 * pi * (b.x() * b.x() + b.y() * b.y()) + 0.5 * pi * b.z() * b.z());
-      const double total = f;
-      for (const Cap& cap : caps_) {
-        const double beta = b.dot(cap.axis);
-        const double a = cap.cos_a;
-        const double a3 = a * a * a;
-        const double cap_f = 2.0 * pi * beta * beta * (1.0 - a3) / 3.0 +
-                             pi * (1.0 - beta * beta) * ((1.0 - a) - (1.0 - a3) / 3.0);
-        const double big_a = 0.25 * (1.0 - a3 * a);
-        const double big_b = 0.25 * (1.0 - a * a) * (1.0 - a * a);
-        const Eigen::Vector3d cap_m =
-            (2.0 * pi * beta * beta * big_a + pi * (1.0 - beta * beta) * big_b) * cap.axis +
-            2.0 * pi * beta * big_b * (b - beta * cap.axis);
-        f -= (1.0 - cap.gamma) * cap_f;
-        m -= (1.0 - cap.gamma) * cap_m;
-      }
-      light_[c] = std::clamp(all * f / total, 0.0, 1.0);
-      direction_[c] =
-          m.norm() > 1e-300 && light_[c] > 0 ? Eigen::Vector3d(m.normalized()) : open_direction_;
-      return;
-    }
+  if (obstacle.empty() && caps_.size() <= kMaxAnalyticCaps &&
+      analytic_caps_exact(std::span<const Cap>(caps_))) {
+    const AnalyticLight a = analytic_cap_light(brightest_, std::span<const Cap>(caps_));
+    light_[c] = std::clamp(all * a.integral / a.open_integral, 0.0, 1.0);
+    direction_[c] = a.moment.norm() > 1e-300 && light_[c] > 0
+                        ? Eigen::Vector3d(a.moment.normalized())
+                        : open_direction_;
+    return;
   }
   const int n = dirs_.size();
   if (obstacle.empty()) {

@@ -1,5 +1,7 @@
 #include "environment/light_model.hpp"
 
+#include "environment/analytic_caps.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -15,7 +17,6 @@ namespace fspm::environment {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr std::size_t kMaxAnalyticCaps = 16;
 
 // Squared shadow-volume radius of an occluder with bounding radius r and translucency g: the
 // distance beyond which it removes less than `significance` of the light (see header).
@@ -300,50 +301,15 @@ LightSample LightModel::evaluate(const Eigen::Vector3d& p, std::uint32_t ignore)
             (m.center - p).squaredNorm() <= mesh_reach2_[i];
   }
 
-  if (scene_.sky.analytic && !boxes && caps.size() <= kMaxAnalyticCaps) {
-    bool exact = true;
-    for (std::size_t i = 0; i < caps.size() && exact; ++i) {
-      // Whole cap above the horizon: elevation of the axis >= half angle.
-      if (caps[i].axis.z() < caps[i].sin_a) exact = false;
-      for (std::size_t j = 0; j < i && exact; ++j) {
-        // Disjoint caps: angle between axes >= alpha_i + alpha_j.
-        const double cos_sum = caps[i].cos_a * caps[j].cos_a - caps[i].sin_a * caps[j].sin_a;
-        if (caps[i].axis.dot(caps[j].axis) > cos_sum) exact = false;
-      }
-    }
-    if (exact) {
-      // Closed forms over the hemisphere: integral of (b.d)^2 is 2 pi / 3, and of (b.d)^2 d is
-      // (pi/2 bx bz, pi/2 by bz, pi/4 (bx^2 + by^2) + pi/2 bz^2). Over a cap of half angle alpha
-      // around c, with beta = b.c and a = cos alpha:
-      //   F = 2 pi beta^2 (1 - a^3)/3 + pi (1 - beta^2) ((1 - a) - (1 - a^3)/3),
-      //   M = (2 pi beta^2 A + pi (1 - beta^2) B) c + 2 pi beta B (b - beta c),
-      // with A = (1 - a^4)/4 and B = (1 - a^2)^2 / 4.
-      const double pi = std::numbers::pi;
-      const Eigen::Vector3d& b = scene_.sky.brightest;
-      double f = 2.0 * pi / 3.0;
-      Eigen::Vector3d m(0.5 * pi * b.x() * b.z(), 0.5 * pi * b.y() * b.z(),
-                        0.25 * pi * (b.x() * b.x() + b.y() * b.y()) + 0.5 * pi * b.z() * b.z());
-      const double total = f;
-      for (const Cap& c : caps) {
-        const double beta = b.dot(c.axis);
-        const double a = c.cos_a;
-        const double a3 = a * a * a;
-        const double cap_f = 2.0 * pi * beta * beta * (1.0 - a3) / 3.0 +
-                             pi * (1.0 - beta * beta) * ((1.0 - a) - (1.0 - a3) / 3.0);
-        const double big_a = 0.25 * (1.0 - a3 * a);
-        const double big_b = 0.25 * (1.0 - a * a) * (1.0 - a * a);
-        const Eigen::Vector3d cap_m =
-            (2.0 * pi * beta * beta * big_a + pi * (1.0 - beta * beta) * big_b) * c.axis +
-            2.0 * pi * beta * big_b * (b - beta * c.axis);
-        f -= (1.0 - c.gamma) * cap_f;
-        m -= (1.0 - c.gamma) * cap_m;
-      }
-      LightSample out;
-      out.light = std::clamp(all * f / total, 0.0, 1.0);
-      out.direction =
-          m.norm() > 1e-300 && out.light > 0 ? Eigen::Vector3d(m.normalized()) : open_direction_;
-      return out;
-    }
+  if (scene_.sky.analytic && !boxes && caps.size() <= kMaxAnalyticCaps &&
+      analytic_caps_exact(std::span<const Cap>(caps))) {
+    const AnalyticLight a = analytic_cap_light(scene_.sky.brightest, std::span<const Cap>(caps));
+    LightSample out;
+    out.light = std::clamp(all * a.integral / a.open_integral, 0.0, 1.0);
+    out.direction = a.moment.norm() > 1e-300 && out.light > 0
+                        ? Eigen::Vector3d(a.moment.normalized())
+                        : open_direction_;
+    return out;
   }
   return sampled(p, caps, all, boxes);
 }

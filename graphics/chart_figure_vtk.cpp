@@ -17,13 +17,13 @@
 #include <vtkStringArray.h>
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <cmath>
 #include <cstring>
 
 #include "fspm/error.hpp"
 #include "graphics/chart_figure.hpp"
+#include "graphics/vtk_window_image.hpp"
 #include "graphics/x_display.hpp"
 
 namespace fspm::graphics {
@@ -63,24 +63,7 @@ Image render_chart(const ChartOptions& o, Fill&& fill) {
   fill(view.Get());
   window->Render();
 
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->SetInputBufferTypeToRGBA();
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  vtkImageData* data = grab->GetOutput();
-  int dims[3];
-  data->GetDimensions(dims);
-  Image image;
-  image.width = dims[0];
-  image.height = dims[1];
-  image.rgba.resize(static_cast<std::size_t>(dims[0]) * dims[1] * 4);
-  const auto* src = static_cast<const std::uint8_t*>(data->GetScalarPointer());
-  const std::size_t row = static_cast<std::size_t>(dims[0]) * 4;
-  for (int y = 0; y < dims[1]; ++y) {  // VTK's rows start at the bottom
-    std::memcpy(image.rgba.data() + row * y, src + row * (dims[1] - 1 - y), row);
-  }
-  return image;
+  return window_image(window);
 }
 
 void style_title(vtkChart* chart, const std::string& title) {

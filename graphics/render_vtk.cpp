@@ -21,7 +21,6 @@
 #include <vtkScalarBarActor.h>
 #include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -31,6 +30,7 @@
 
 #include "fspm/error.hpp"
 #include "graphics/render.hpp"
+#include "graphics/vtk_window_image.hpp"
 #include "graphics/x_display.hpp"
 
 namespace fspm::graphics {
@@ -222,24 +222,7 @@ Image render_with(const RenderOptions& options, Eigen::Vector3f lo, Eigen::Vecto
   window->AddRenderer(renderer);
   window->Render();
 
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->SetInputBufferTypeToRGBA();
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  vtkImageData* data = grab->GetOutput();
-  int dims[3];
-  data->GetDimensions(dims);
-  Image image;
-  image.width = dims[0];
-  image.height = dims[1];
-  image.rgba.resize(static_cast<std::size_t>(dims[0]) * dims[1] * 4);
-  const auto* src = static_cast<const std::uint8_t*>(data->GetScalarPointer());
-  const std::size_t row = static_cast<std::size_t>(dims[0]) * 4;
-  for (int y = 0; y < dims[1]; ++y) {  // VTK's rows start at the bottom
-    std::memcpy(image.rgba.data() + row * y, src + row * (dims[1] - 1 - y), row);
-  }
-  return image;
+  return window_image(window);
 }
 
 void add_glyph_actor(vtkRenderer* renderer, vtkPolyData* instances, const TriangleMesh& part,

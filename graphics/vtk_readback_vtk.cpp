@@ -16,16 +16,25 @@
 
 namespace fspm::graphics {
 
-bool vtk_available() { return true; }
+namespace {
 
-PolyDataInfo read_vtp_with_vtk(const std::string& path) {
+// The poly data of a .vtp through VTK's reader (which owns it); IoError when it cannot be read.
+vtkPolyData* read_vtp(const std::string& path, vtkXMLPolyDataReader* reader) {
   if (!std::filesystem::exists(path)) throw IoError("no such file", path);
-  vtkNew<vtkXMLPolyDataReader> reader;
   reader->SetFileName(path.c_str());
   if (!reader->CanReadFile(path.c_str())) throw IoError("VTK cannot read this .vtp file", path);
   reader->Update();
   if (reader->GetErrorCode() != 0) throw IoError("VTK failed reading this .vtp file", path);
-  vtkPolyData* poly = reader->GetOutput();
+  return reader->GetOutput();
+}
+
+}  // namespace
+
+bool vtk_available() { return true; }
+
+PolyDataInfo read_vtp_with_vtk(const std::string& path) {
+  vtkNew<vtkXMLPolyDataReader> reader;
+  vtkPolyData* poly = read_vtp(path, reader);
   PolyDataInfo info;
   info.points = static_cast<std::size_t>(poly->GetNumberOfPoints());
   info.polys = static_cast<std::size_t>(poly->GetNumberOfPolys());
@@ -57,13 +66,8 @@ PolyDataInfo read_vtp_with_vtk(const std::string& path) {
 }
 
 TriangleMesh read_vtp_mesh(const std::string& path) {
-  if (!std::filesystem::exists(path)) throw IoError("no such file", path);
   vtkNew<vtkXMLPolyDataReader> reader;
-  reader->SetFileName(path.c_str());
-  if (!reader->CanReadFile(path.c_str())) throw IoError("VTK cannot read this .vtp file", path);
-  reader->Update();
-  if (reader->GetErrorCode() != 0) throw IoError("VTK failed reading this .vtp file", path);
-  vtkPolyData* poly = reader->GetOutput();
+  vtkPolyData* poly = read_vtp(path, reader);
   TriangleMesh mesh;
   const vtkIdType nv = poly->GetNumberOfPoints();
   mesh.positions.resize(static_cast<std::size_t>(nv));
