@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "fspm/compressed_tree_graph.hpp"
+#include "fspm/line_tree.hpp"
 #include "fspm/tree_file.hpp"
 #include "greenlab/plant_params.hpp"
 #include "greenlab/reconstruction.hpp"
@@ -94,6 +95,63 @@ void BM_GreenlabReconstructWriteBound(benchmark::State& state) {
       benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_GreenlabReconstructWriteBound)->Unit(benchmark::kMillisecond);
+
+// The explicit plant as a LineTree (single precision, 45 bytes per component): axes without
+// orientation-dependent effects are walked once and copied by rigid transforms.
+void BM_GreenlabReconstructLinesTable1(benchmark::State& state) {
+  const CompressedTreeGraph g = greenlab::simulate_compressed(table1_params());
+  greenlab::ReconstructionStats st;
+  for (auto _ : state) {
+    LineTree lines = greenlab::reconstruct_lines(g, {}, &st);
+    benchmark::DoNotOptimize(lines.size());
+    benchmark::ClobberMemory();
+  }
+  state.counters["components"] = static_cast<double>(st.components());
+  state.counters["components_per_s"] = benchmark::Counter(
+      static_cast<double>(st.components()) * static_cast<double>(state.iterations()),
+      benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_GreenlabReconstructLinesTable1)->Unit(benchmark::kMillisecond);
+
+void BM_GreenlabReconstructLinesReuseTable1(benchmark::State& state) {
+  const CompressedTreeGraph g = greenlab::simulate_compressed(table1_params());
+  greenlab::ReconstructionStats st;
+  LineTree lines;
+  greenlab::reconstruct_lines_into(g, {}, lines, &st);
+  for (auto _ : state) {
+    greenlab::reconstruct_lines_into(g, {}, lines, &st);
+    benchmark::DoNotOptimize(lines.size());
+    benchmark::ClobberMemory();
+  }
+  state.counters["components"] = static_cast<double>(st.components());
+  state.counters["components_per_s"] = benchmark::Counter(
+      static_cast<double>(st.components()) * static_cast<double>(state.iterations()),
+      benchmark::Counter::kIsRate);
+  state.counters["bytes_per_node"] = static_cast<double>(LineTree::kBytesPerRecord);
+}
+BENCHMARK(BM_GreenlabReconstructLinesReuseTable1)->Unit(benchmark::kMillisecond);
+
+// What fresh memory costs: a new buffer of the LineTree's size (45 bytes per record) written
+// once, page faults and the kernel's zeroing included. A reconstruction into a new LineTree pays
+// at least this; reconstruct_lines_into a reused one does not.
+void BM_GreenlabLinesFreshWriteBound(benchmark::State& state) {
+  const CompressedTreeGraph g = greenlab::simulate_compressed(table1_params());
+  greenlab::ReconstructionStats st;
+  const LineTree lines = greenlab::reconstruct_lines(g, {}, &st);
+  const std::size_t bytes = lines.size() * LineTree::kBytesPerRecord;
+  for (auto _ : state) {
+    std::vector<unsigned char> buffer;
+    buffer.reserve(bytes);
+    std::memset(buffer.data(), 1, bytes);
+    benchmark::DoNotOptimize(buffer.data());
+    benchmark::ClobberMemory();
+  }
+  state.counters["megabytes"] = static_cast<double>(bytes) / 1e6;
+  state.counters["components_per_s"] = benchmark::Counter(
+      static_cast<double>(st.components()) * static_cast<double>(state.iterations()),
+      benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_GreenlabLinesFreshWriteBound)->Unit(benchmark::kMillisecond);
 
 void BM_GreenlabInstancedTable1(benchmark::State& state) {
   const CompressedTreeGraph g = greenlab::simulate_compressed(table1_params());

@@ -5,13 +5,7 @@
 #include <cstring>
 
 #include "fspm/error.hpp"
-
-#ifdef __linux__
-#include <sys/mman.h>
-#include <unistd.h>
-
-#include <cstdint>
-#endif
+#include "fspm/huge_pages.hpp"
 
 namespace fspm {
 
@@ -122,17 +116,7 @@ namespace {
 
 template <typename T>
 void advise_huge(const std::vector<T>& v) {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  constexpr std::size_t kHuge = std::size_t{2} << 20;
-  const std::size_t bytes = v.capacity() * sizeof(T);
-  if (bytes < 2 * kHuge) return;  // too small to hold an aligned huge page
-  const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
-  const auto lo = (reinterpret_cast<std::uintptr_t>(v.data()) + page - 1) / page * page;
-  const auto hi = (reinterpret_cast<std::uintptr_t>(v.data()) + bytes) / page * page;
-  if (hi > lo) madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_HUGEPAGE);  // a hint only
-#else
-  (void)v;
-#endif
+  advise_huge_pages(v.data(), v.capacity() * sizeof(T));
 }
 
 }  // namespace

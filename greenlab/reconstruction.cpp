@@ -1,6 +1,7 @@
 #include "greenlab/reconstruction.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -181,6 +182,13 @@ class AxisBuilder {
 
   double age() const { return age_; }
   double now() const { return now_; }
+  // Whether axes of physiological age p depend on their absolute orientation (straightening of
+  // orthotropic axes, plagiotropic flattening), so that their instances differ by more than a
+  // rigid placement.
+  bool orientation_dependent(int p) const {
+    const AgeGeometry& g = geo_.age(p);
+    return g.plagiotropic || g.straightening > 0.0;
+  }
   bool any_pruning_period() const { return any_pruning_period_; }
 
   Frame trunk_frame() const {
@@ -522,6 +530,271 @@ TreeGraph expand_instanced(const InstancedPlant& plant) {
     }
   }
   return tree;
+}
+
+namespace {
+
+// Per record: whether it or anything it bears (successors, laterals, recursively) has an
+// orientation-dependent physiological age. Reverse topological order over the DAG, so any record
+// numbering is handled.
+std::vector<std::uint8_t> orientation_dependent_below(const CompressedTreeGraph& graph,
+                                                      const AxisBuilder& builder) {
+  const std::size_t n = graph.size();
+  std::vector<std::uint32_t> indegree(n, 0);
+  for (const auto& r : graph.records()) {
+    if (r.successor != kNoRecord) ++indegree[r.successor];
+  }
+  for (RecordId a : graph.axillary_refs()) ++indegree[a];
+  std::vector<RecordId> order;
+  order.reserve(n);
+  for (RecordId i = 0; i < n; ++i) {
+    if (indegree[i] == 0) order.push_back(i);
+  }
+  for (std::size_t head = 0; head < order.size(); ++head) {
+    const CompressedRecord& r = graph.record(order[head]);
+    if (r.successor != kNoRecord && --indegree[r.successor] == 0) order.push_back(r.successor);
+    for (RecordId a : graph.axillaries(order[head])) {
+      if (--indegree[a] == 0) order.push_back(a);
+    }
+  }
+  std::vector<std::uint8_t> dependent(n, 0);
+  for (std::size_t k = order.size(); k-- > 0;) {
+    const RecordId id = order[k];
+    const CompressedRecord& r = graph.record(id);
+    bool d = builder.orientation_dependent(r.physiological_age);
+    if (!d && r.successor != kNoRecord) d = dependent[r.successor] != 0;
+    for (RecordId a : graph.axillaries(id)) d = d || dependent[a] != 0;
+    dependent[id] = d ? 1 : 0;
+  }
+  return dependent;
+}
+
+// Axes walked once in their own frame, stored in single precision one after the other.
+class LinePrototypes {
+ public:
+  struct Child {
+    RecordId record;
+    NodeId attach;             // prototype-local node the lateral grows from
+    Eigen::Matrix3f rotation;  // child frame -> prototype frame
+    Eigen::Vector3f translation;
+  };
+  struct Prototype {
+    std::uint32_t first = 0, count = 0;  // records in the pool
+    std::uint32_t child_first = 0, child_count = 0;
+    ReconstructionStats stats;
+  };
+
+  std::uint32_t index_of(RecordId record) const { return index_[record]; }
+  void resize_index(std::size_t records) { index_.assign(records, kNoPrototype); }
+
+  // Adds the prototype of `record` from an axis walked into `axis` (node 0 its base, frame
+  // `canonical`) with its laterals.
+  std::uint32_t add(RecordId record, const TreeGraph& axis, const std::vector<AxisStart>& laterals,
+                    const Eigen::Matrix3d& canonical_inverse, const ReconstructionStats& st) {
+    Prototype p;
+    p.first = static_cast<std::uint32_t>(parent.size());
+    p.count = static_cast<std::uint32_t>(axis.size());
+    p.child_first = static_cast<std::uint32_t>(children.size());
+    p.child_count = static_cast<std::uint32_t>(laterals.size());
+    p.stats = st;
+    const bool has_dead = axis.has_attribute("dead");
+    for (NodeId k = 0; k < axis.size(); ++k) {
+      parent.push_back(axis.parent(k));
+      start.push_back(axis.start(k).cast<float>());
+      direction.push_back(axis.direction(k).cast<float>());
+      length.push_back(static_cast<float>(axis.length(k)));
+      radius.push_back(static_cast<float>(axis.radius(k)));
+      birth.push_back(static_cast<float>(axis.birth_time(k)));
+      age.push_back(axis.physiological_age(k));
+      order.push_back(axis.order(k));
+      kind.push_back(axis.kind(k));
+      dead.push_back(has_dead && axis.attribute("dead")[k] != 0.0 ? 1 : 0);
+    }
+    for (const AxisStart& l : laterals) {
+      children.push_back({l.record, l.parent, (l.frame.axes * canonical_inverse).cast<float>(),
+                          l.frame.position.cast<float>()});
+    }
+    prototypes.push_back(p);
+    return index_[record] = static_cast<std::uint32_t>(prototypes.size() - 1);
+  }
+
+  std::vector<Prototype> prototypes;
+  std::vector<Child> children;
+  std::vector<NodeId> parent;
+  std::vector<Eigen::Vector3f> start, direction;
+  std::vector<float> length, radius, birth;
+  std::vector<std::uint16_t> age, order;
+  std::vector<OrganKind> kind;
+  std::vector<std::uint8_t> dead;
+
+ private:
+  std::vector<std::uint32_t> index_;
+};
+
+void add_stats(ReconstructionStats& to, const ReconstructionStats& from) {
+  to.metamers += from.metamers;
+  to.leaves += from.leaves;
+  to.flowers += from.flowers;
+  to.pruned_axes += from.pruned_axes;
+}
+
+// One axis start waiting in the FIFO: a prototype placed by a single-precision rigid transform
+// (most of them: 64 bytes each), or an axis to walk from its absolute frame (kept aside).
+struct LineItem {
+  RecordId record;
+  NodeId parent;
+  std::uint16_t order;
+  std::uint32_t walk_frame;  // index into the walked frames, or kNoWalk for a prototype
+  Eigen::Matrix3f rotation;
+  Eigen::Vector3f translation;
+};
+constexpr std::uint32_t kNoWalk = 0xFFFFFFFFu;
+
+}  // namespace
+
+LineTree reconstruct_lines(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
+                           ReconstructionStats* stats) {
+  LineTree lines;
+  reconstruct_lines_into(graph, options, lines, stats);
+  return lines;
+}
+
+void reconstruct_lines_into(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
+                            LineTree& lines, ReconstructionStats* stats) {
+  const AxisBuilder builder(graph, options, true);
+  ReconstructionStats st;
+  st.age = builder.age();
+  lines.clear();
+  lines.set_has_dead(builder.any_pruning_period());
+  if (graph.root() == kNoRecord || graph.record(graph.root()).birth > builder.now()) {
+    if (stats) *stats = st;
+    return;
+  }
+  const std::uint64_t bound = metamers_at_age(graph, builder.age());
+  if (bound > kMaxExplicitMetamers) {
+    throw ValueError("the plant has " + std::to_string(bound) + " metamers at age " +
+                     std::to_string(builder.age()) + ", too many for an explicit tree (at most " +
+                     std::to_string(kMaxExplicitMetamers) +
+                     "); use an earlier age or the instanced reconstruction");
+  }
+  // Each metamer adds at most a leaf and a flower: the columns are sized once for the worst case
+  // (left unwritten, so untouched pages cost nothing) and cut to the records written at the end.
+  const auto capacity = static_cast<std::size_t>(3 * bound + 1);
+  if (lines.capacity() < capacity) {
+    lines.reserve(capacity);
+    lines.advise_huge_pages();
+  }
+  lines.resize_for_overwrite(capacity);
+  const std::vector<std::uint8_t> dependent = orientation_dependent_below(graph, builder);
+  const Frame canonical = builder.trunk_frame();
+  const Eigen::Matrix3d canonical_inverse = canonical.axes.transpose();
+  LinePrototypes protos;
+  protos.resize_index(graph.size());
+
+  NodeId* const parent = lines.parents().data();
+  Eigen::Vector3f* const start = lines.starts().data();
+  Eigen::Vector3f* const direction = lines.directions().data();
+  float* const length = lines.lengths().data();
+  float* const radius = lines.radii().data();
+  float* const birth = lines.birth_times().data();
+  std::uint16_t* const age = lines.physiological_ages().data();
+  std::uint16_t* const order = lines.orders().data();
+  OrganKind* const kind = lines.kinds().data();
+  std::uint8_t* const dead = lines.has_dead() ? lines.dead().data() : nullptr;
+  NodeId cursor = 0;
+
+  // Oldest node first, axis by axis (as reconstruct): a FIFO of axis starts. It holds every axis
+  // of the plant (176 000 for the Table 1 tree), so its memory is kept per thread between calls:
+  // growth animation frames then neither allocate nor fault it in again.
+  thread_local std::vector<LineItem> queue;
+  queue.clear();
+  std::vector<Frame> walk_frames{builder.root_frame()};
+  queue.push_back(
+      {graph.root(), kNoNode, 0, 0, Eigen::Matrix3f::Identity(), Eigen::Vector3f::Zero()});
+  TreeGraph scratch;
+  std::vector<AxisStart> laterals;
+  const auto walk_axis = [&](RecordId record, const Frame& frame, std::uint16_t axis_order) {
+    scratch.clear_keep_capacity();
+    if (builder.any_pruning_period()) scratch.add_attribute("dead", 0.0);
+    laterals.clear();
+    ReconstructionStats axis_stats;
+    builder.walk({record, kNoNode, frame, axis_order}, scratch, laterals, axis_stats);
+    return axis_stats;
+  };
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const LineItem item = queue[head];
+    const NodeId base = cursor;
+    if (item.walk_frame != kNoWalk) {
+      add_stats(st, walk_axis(item.record, walk_frames[item.walk_frame], item.order));
+      const bool has_dead = scratch.has_attribute("dead");
+      for (NodeId k = 0; k < scratch.size(); ++k) {
+        const NodeId i = base + k;
+        parent[i] = k == 0 ? item.parent : base + scratch.parent(k);
+        start[i] = scratch.start(k).cast<float>();
+        direction[i] = scratch.direction(k).cast<float>();
+        length[i] = static_cast<float>(scratch.length(k));
+        radius[i] = static_cast<float>(scratch.radius(k));
+        birth[i] = static_cast<float>(scratch.birth_time(k));
+        age[i] = scratch.physiological_age(k);
+        order[i] = scratch.order(k);
+        kind[i] = scratch.kind(k);
+        if (dead) dead[i] = has_dead && scratch.attribute("dead")[k] != 0.0;
+      }
+      cursor += static_cast<NodeId>(scratch.size());
+      for (const AxisStart& l : laterals) {
+        LineItem next{l.record,
+                      base + l.parent,
+                      l.order,
+                      kNoWalk,
+                      Eigen::Matrix3f::Identity(),
+                      Eigen::Vector3f::Zero()};
+        if (dependent[l.record] != 0) {
+          next.walk_frame = static_cast<std::uint32_t>(walk_frames.size());
+          walk_frames.push_back(l.frame);
+        } else {  // placement of the prototype, whose frame is the canonical one
+          next.rotation = (l.frame.axes * canonical_inverse).cast<float>();
+          next.translation = l.frame.position.cast<float>();
+        }
+        queue.push_back(next);
+      }
+      continue;
+    }
+    std::uint32_t pi = protos.index_of(item.record);
+    if (pi == kNoPrototype) {
+      const ReconstructionStats axis_stats = walk_axis(item.record, canonical, 0);
+      pi = protos.add(item.record, scratch, laterals, canonical_inverse, axis_stats);
+    }
+    const LinePrototypes::Prototype& p = protos.prototypes[pi];
+    add_stats(st, p.stats);
+    const std::uint32_t n = p.count;
+    const std::uint32_t first = p.first;
+    const Eigen::Matrix3f& rot = item.rotation;
+    const Eigen::Vector3f& shift = item.translation;
+    parent[base] = item.parent;
+    for (std::uint32_t k = 1; k < n; ++k) parent[base + k] = base + protos.parent[first + k];
+    for (std::uint32_t k = 0; k < n; ++k) {
+      start[base + k] = rot * protos.start[first + k] + shift;
+      direction[base + k] = rot * protos.direction[first + k];
+    }
+    std::copy_n(protos.length.data() + first, n, length + base);
+    std::copy_n(protos.radius.data() + first, n, radius + base);
+    std::copy_n(protos.birth.data() + first, n, birth + base);
+    std::copy_n(protos.age.data() + first, n, age + base);
+    std::copy_n(protos.kind.data() + first, n, kind + base);
+    for (std::uint32_t k = 0; k < n; ++k) {
+      order[base + k] = static_cast<std::uint16_t>(protos.order[first + k] + item.order);
+    }
+    if (dead) std::copy_n(protos.dead.data() + first, n, dead + base);
+    cursor += n;
+    const auto child_order = static_cast<std::uint16_t>(item.order + 1);
+    for (std::uint32_t c = 0; c < p.child_count; ++c) {
+      const LinePrototypes::Child& child = protos.children[p.child_first + c];
+      queue.push_back({child.record, base + child.attach, child_order, kNoWalk,
+                       rot * child.rotation, rot * child.translation + shift});
+    }
+  }
+  lines.resize_for_overwrite(cursor);
+  if (stats) *stats = st;
 }
 
 }  // namespace fspm::greenlab

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "fspm/compressed_tree_graph.hpp"
+#include "fspm/line_tree.hpp"
 #include "fspm/tree_graph.hpp"
 #include "greenlab/plant_params.hpp"
 
@@ -87,6 +88,19 @@ TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOpti
 // rebuilding a plant at many ages (growth animation) then neither reallocates nor page-faults.
 void reconstruct_into(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
                       TreeGraph& tree, ReconstructionStats* stats = nullptr);
+
+// The explicit plant as a LineTree (single precision, 45 bytes per component): the same records
+// in the same order as reconstruct() gives nodes, with the same values to single precision. Each
+// lateral axis whose subtree knows nothing of the absolute orientation (no straightening, no
+// plagiotropy at its physiological age or above) is walked once, in its own frame, and copied
+// with the rigid transform of each of its instances (Jaeger 3.1.2: instances of a substructure
+// differ only by their placement); the other axes are walked one by one as in reconstruct().
+// Throws as reconstruct() does.
+LineTree reconstruct_lines(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
+                           ReconstructionStats* stats = nullptr);
+// The same into `lines`, reusing its allocated columns (growth animation frames).
+void reconstruct_lines_into(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
+                            LineTree& lines, ReconstructionStats* stats = nullptr);
 
 // The instanced form for renderers (Jaeger 3.1.2): one prototype geometry per substructure that
 // starts an axis, in its own frame (base at the origin, heading +z), and its lateral axes as

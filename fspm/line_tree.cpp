@@ -1,0 +1,126 @@
+#include "fspm/line_tree.hpp"
+
+#include "fspm/huge_pages.hpp"
+
+namespace fspm {
+
+void LineTree::reserve(std::size_t n) {
+  parent_.reserve(n);
+  start_.reserve(n);
+  direction_.reserve(n);
+  length_.reserve(n);
+  radius_.reserve(n);
+  birth_time_.reserve(n);
+  physiological_age_.reserve(n);
+  order_.reserve(n);
+  kind_.reserve(n);
+  if (has_dead_) dead_.reserve(n);
+}
+
+namespace {
+
+template <typename C>
+void advise(const C& column) {
+  advise_huge_pages(column.data(), column.capacity() * sizeof(typename C::value_type));
+}
+
+}  // namespace
+
+void LineTree::advise_huge_pages() {
+  advise(parent_);
+  advise(start_);
+  advise(direction_);
+  advise(length_);
+  advise(radius_);
+  advise(birth_time_);
+  advise(physiological_age_);
+  advise(order_);
+  advise(kind_);
+  advise(dead_);
+}
+
+void LineTree::clear() {
+  parent_.clear();
+  start_.clear();
+  direction_.clear();
+  length_.clear();
+  radius_.clear();
+  birth_time_.clear();
+  physiological_age_.clear();
+  order_.clear();
+  kind_.clear();
+  dead_.clear();
+}
+
+void LineTree::resize_for_overwrite(std::size_t n) {
+  parent_.resize(n);
+  start_.resize(n);
+  direction_.resize(n);
+  length_.resize(n);
+  radius_.resize(n);
+  birth_time_.resize(n);
+  physiological_age_.resize(n);
+  order_.resize(n);
+  kind_.resize(n);
+  if (has_dead_) dead_.resize(n);
+}
+
+void LineTree::set_has_dead(bool on) {
+  has_dead_ = on;
+  if (on) {
+    dead_.assign(size(), 0);
+  } else {
+    dead_.clear();
+  }
+}
+
+NodeId LineTree::add(NodeId parent, const NodeData& data, bool dead) {
+  const auto id = static_cast<NodeId>(size());
+  parent_.push_back(parent);
+  start_.push_back(data.start.cast<float>());
+  direction_.push_back(data.direction.cast<float>());
+  length_.push_back(static_cast<float>(data.length));
+  radius_.push_back(static_cast<float>(data.radius));
+  birth_time_.push_back(static_cast<float>(data.birth_time));
+  physiological_age_.push_back(data.physiological_age);
+  order_.push_back(data.order);
+  kind_.push_back(data.kind);
+  if (has_dead_) dead_.push_back(dead ? 1 : 0);
+  return id;
+}
+
+TreeGraph LineTree::to_tree_graph() const {
+  TreeGraph tree;
+  tree.reserve(size());
+  if (has_dead_) tree.add_attribute("dead", 0.0);
+  NodeData d;
+  for (NodeId n = 0; n < size(); ++n) {
+    d.start = start_[n].cast<double>();
+    d.direction = direction_[n].cast<double>();
+    d.length = length_[n];
+    d.end = d.start + d.direction * d.length;
+    d.radius = radius_[n];
+    d.birth_time = birth_time_[n];
+    d.physiological_age = physiological_age_[n];
+    d.order = order_[n];
+    d.kind = kind_[n];
+    // add_node checks the parent (a hand-made LineTree may be wrong); length and direction are
+    // kept as given because the length is not negative.
+    tree.add_node(parent_[n], d);
+    if (has_dead_ && dead_[n]) tree.attribute("dead")[n] = 1.0;
+  }
+  return tree;
+}
+
+LineTree LineTree::from_tree_graph(const TreeGraph& tree) {
+  LineTree lines;
+  const bool dead = tree.has_attribute("dead");
+  lines.set_has_dead(dead);
+  lines.reserve(tree.size());
+  for (NodeId n = 0; n < tree.size(); ++n) {
+    lines.add(tree.parent(n), tree.data(n), dead && tree.attribute("dead")[n] != 0.0);
+  }
+  return lines;
+}
+
+}  // namespace fspm
