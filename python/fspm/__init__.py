@@ -8,7 +8,8 @@ Families (names follow the C++ API):
 
 * trees: ``read_tree``, ``write_tree``, ``parse_newick``, ``Tree.from_arrays``, ``distance``
 * L-systems: ``lsystem_derive``, ``lsystem_interpret``
-* GreenLab: ``greenlab_simulate``, ``greenlab_reconstruct``, ``read_plant_params``,
+* GreenLab: ``greenlab_simulate``, ``greenlab_reconstruct``, ``greenlab_reconstruct_lines``
+  (a single-precision ``LineTree``), ``read_plant_params``,
   ``fit_gl1``, ``predict_targets``, ``read_targets_csv``
 * environment: ``Scene``, ``read_scene_file``, ``parse_scene_json``, ``light``, ``LightModel``,
   ``GrowthParams``, ``grow_tree``, ``analyze_tree``, ``adapt_tree``, ``adapt_trees``,
@@ -29,6 +30,7 @@ from ._fspm import (  # noqa: F401
     GrowthResult,
     IoError,
     LightModel,
+    LineTree,
     MannWhitneyResult,
     MeshOptions,
     ParseError,
@@ -49,6 +51,7 @@ from ._fspm import (  # noqa: F401
     fit_gl1,
     fitted_toml,
     greenlab_reconstruct,
+    greenlab_reconstruct_lines,
     greenlab_simulate,
     grow_tree,
     growth_preset,

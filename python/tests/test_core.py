@@ -104,3 +104,17 @@ def test_geometry_columns_match_the_tree():
     np.testing.assert_allclose(tree.starts[child], tree.ends[tree.parents[child]], atol=1e-9)
     assert tree.ends[:, 2].max() - tree.starts[0, 2] == pytest.approx(tree.summary()["height"])
     np.testing.assert_allclose(np.linalg.norm(tree.directions, axis=1), 1.0, atol=1e-9)
+
+
+def test_greenlab_line_tree_matches_the_explicit_tree():
+    # Same records in the same order; single precision against double.
+    plant = fspm.greenlab_simulate(str(ROOT / "examples/greenlab/rauh.toml"))
+    tree = fspm.greenlab_reconstruct(plant)
+    lines = fspm.greenlab_reconstruct_lines(plant)
+    assert len(lines) == len(tree)
+    assert lines.starts.dtype == np.float32 and lines.starts.shape == (len(tree), 3)
+    np.testing.assert_array_equal(lines.parents, tree.parents)
+    np.testing.assert_array_equal(lines.kinds, tree.kinds)
+    np.testing.assert_allclose(lines.starts, tree.starts, atol=1e-5)
+    np.testing.assert_allclose(lines.lengths, tree.lengths, rtol=1e-6)
+    assert len(lines.to_tree()) == len(tree)
