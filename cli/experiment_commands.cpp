@@ -2,8 +2,10 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <atomic>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -16,10 +18,13 @@
 
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
+#include "cli/run_file_writers.hpp"
+#include "cli/xvfb.hpp"
 #include "experiments/comparisons.hpp"
 #include "experiments/experiment.hpp"
 #include "experiments/model_factory.hpp"
 #include "experiments/mpi_runner.hpp"
+#include "experiments/render_selection.hpp"
 #include "experiments/report.hpp"
 #include "experiments/results_export.hpp"
 #include "experiments/run_plan.hpp"
@@ -28,6 +33,7 @@
 #include "fspm/atomic_file.hpp"
 #include "fspm/error.hpp"
 #include "graphics/chart_figure.hpp"
+#include "graphics/render.hpp"
 
 namespace fspm::cli {
 namespace {
@@ -181,6 +187,19 @@ void run_command(const RunOptions& o) {
   if (o.mpi && !ex::mpi_available()) {
     throw ValueError("--mpi: this fspm was built without MPI (install libopenmpi-dev, rebuild)");
   }
+  r.file_writers = graphics_run_file_writers();
+  ex::check_run_file_writers(x, r.file_writers);
+  if (std::find(x.keep.begin(), x.keep.end(), "image") != x.keep.end()) {
+    // Under mpirun every rank would start its own virtual server: the ranks need a display.
+    if (!o.mpi) rerun_under_xvfb_if_needed();
+    if (!graphics::display_available()) {
+      throw IoError(
+          "outputs.keep: images are rendered with VTK, which needs an X display; run under "
+          "xvfb-run -a" +
+              std::string(o.mpi ? " on every rank (mpirun ... xvfb-run -a fspm run ...)" : ""),
+          x.path, x.keep_line);
+    }
+  }
   if (verbosity() > 0) {
     r.progress = &std::cerr;
     r.progress_bar = ::isatty(STDERR_FILENO) != 0;
@@ -287,9 +306,41 @@ std::string comparison_figures(const ex::Experiment& x, const ex::ComparisonResu
   return md;
 }
 
+// Renders of typical trees ([report] of the experiment, experiments/render_selection.hpp) into
+// DIR/figures/run-NNNNNNN.png, from the kept trees or by running the model again. Returns the
+// Markdown that shows them with their captions.
+std::string tree_renders(const ex::Experiment& x, const std::vector<ex::RunRecord>& runs,
+                         const std::string& dir) {
+  const std::vector<ex::RenderChoice> choices = ex::select_renders(x, runs);
+  if (choices.empty()) return {};
+  std::map<std::size_t, const ex::RunRecord*> by_run;
+  for (const ex::RunRecord& r : runs) by_run[r.run] = &r;
+  std::string md = "\n## Selected trees\n\n";
+  std::string notes;
+  try {
+    fs::create_directories(fs::path(dir) / "figures");
+  } catch (const std::exception& e) {
+    return md + "Note: renders left out: " + std::string(e.what()) + "\n";
+  }
+  for (const ex::RenderChoice& c : choices) {
+    char name[40];
+    std::snprintf(name, sizeof name, "figures/run-%07zu.png", c.run);
+    try {
+      const TreeGraph tree = ex::recorded_run_tree(x, *by_run.at(c.run), dir);
+      render_tree_png(tree, (fs::path(dir) / name).string());
+      md += "![" + c.group + "](" + name + ")\n\n*" + c.caption + "*\n\n";
+    } catch (const Error& e) {
+      notes += "Note: run " + std::to_string(c.run) + " not rendered: " + e.what() + "\n";
+    }
+  }
+  return md + notes;
+}
+
 void compare_command(const CompareOptions& o) { compare_runs(o.dir, o.jobs, false); }
 
 void report_command(const ReportOptions& o) {
+  // Figures and renders draw through VTK, which needs an X display.
+  if (!o.no_figures && graphics::render_available()) rerun_under_xvfb_if_needed();
   const ex::ResultsDb db(o.dir, ex::ResultsDb::Mode::kRead);
   const std::vector<ex::RunRecord> runs = db.read_all();
   std::string md = ex::markdown_report(db.info(), runs);
@@ -310,6 +361,7 @@ void report_command(const ReportOptions& o) {
     } else if (!x->comparisons.empty()) {
       md += "\nThe comparisons have not been computed yet: run `fspm compare " + o.dir + "`.\n";
     }
+    if (!o.no_figures) md += tree_renders(*x, runs, o.dir);
   }
   const std::string path = o.output.empty() ? (fs::path(o.dir) / "report.md").string() : o.output;
   write_file_atomically(path, [&](std::ostream& out) { out << md; });

@@ -18,6 +18,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
+#include "cli/xvfb.hpp"
 #include "fspm/compressed_tree_graph.hpp"
 #include "fspm/error.hpp"
 #include "fspm/tree_file.hpp"
@@ -225,37 +226,6 @@ void run_mesh(const MeshCommand& c) {
     std::cerr << "wrote " << c.out << " (" << vertices << " vertices, " << triangles
               << " triangles)\n";
   }
-}
-
-// VTK's OpenGL context needs an X display. Without one, run this same command again under a
-// virtual X server (xvfb-run) rather than failing; FSPM_UNDER_XVFB stops a second attempt.
-void rerun_under_xvfb_if_needed() {
-  if (graphics::display_available() || std::getenv("FSPM_UNDER_XVFB") != nullptr) return;
-  const char* xvfb_run = "/usr/bin/xvfb-run";
-  if (!std::filesystem::exists(xvfb_run)) return;
-  std::ifstream cmdline("/proc/self/cmdline", std::ios::binary);
-  const std::string all{std::istreambuf_iterator<char>(cmdline), {}};
-  std::vector<std::string> args;
-  for (std::size_t at = 0; at < all.size();) {
-    const std::size_t end = all.find('\0', at);
-    args.push_back(all.substr(at, end - at));
-    if (end == std::string::npos) break;
-    at = end + 1;
-  }
-  std::error_code ec;
-  const std::string self = std::filesystem::read_symlink("/proc/self/exe", ec).string();
-  if (ec || args.empty()) return;
-  spdlog::info("no X display: rendering under xvfb-run");
-  std::vector<std::string> words = {xvfb_run, "-a", "-s", "-screen 0 1280x1024x24", self};
-  words.insert(words.end(), args.begin() + 1, args.end());
-  std::vector<char*> argv;
-  for (auto& w : words) argv.push_back(w.data());
-  argv.push_back(nullptr);
-  ::setenv("FSPM_UNDER_XVFB", "1", 1);
-  std::cout.flush();
-  std::cerr.flush();
-  ::execv(xvfb_run, argv.data());
-  ::unsetenv("FSPM_UNDER_XVFB");  // exec failed: fall through to the clear error of render_mesh
 }
 
 void run_render(const RenderCommand& c) {

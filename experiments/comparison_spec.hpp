@@ -55,4 +55,16 @@ struct SummaryTableSpec {
   int line = 0;
 };
 
+// [report]: the trees `fspm report` renders. The successful runs matching `where` are grouped by
+// the `by` parameters' values (default: every swept and sampled parameter, one group per point);
+// from each group the run whose `metric` is the group's (lower) median is drawn; at most `renders`
+// groups, spread evenly from the first to the last in grid order.
+struct RenderSpec {
+  std::size_t renders = 6;  // 0: none
+  std::vector<std::string> by;
+  bool by_given = false;  // `by = []` puts every run in one group
+  RunFilter where;
+  std::string metric;  // empty: the first recorded metric
+};
+
 }  // namespace fspm::experiments

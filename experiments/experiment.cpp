@@ -370,6 +370,26 @@ void parse_comparisons(const Reader& r, const toml::table& root, Experiment& x) 
     }
     x.tables.push_back(std::move(s));
   }
+  if (const toml::table* rep = r.table(root, "report", false)) {
+    r.only_keys("report", *rep, {"renders", "render_by", "render_where", "render_metric"});
+    if (const toml::node* n = rep->get("renders")) {
+      x.render.renders = static_cast<std::size_t>(r.integer("report.renders", *n, 0));
+    }
+    if (const toml::node* n = rep->get("render_by")) {
+      x.render.by = parameter_names(r, "report.render_by", *n, x);
+      x.render.by_given = true;
+    }
+    if (const toml::node* n = rep->get("render_where")) {
+      x.render.where = run_filter(r, "report.render_where", *n, x);
+    }
+    if (const toml::node* n = rep->get("render_metric")) {
+      x.render.metric = r.string("report.render_metric", *n);
+      if (std::find(x.metrics.begin(), x.metrics.end(), x.render.metric) == x.metrics.end()) {
+        r.fail("report.render_metric", *n,
+               "'" + x.render.metric + "' is not recorded (add it to outputs.metrics)");
+      }
+    }
+  }
   // Comparisons read the runs' trees back, so they are kept.
   if (!x.comparisons.empty() && std::find(x.keep.begin(), x.keep.end(), "tree") == x.keep.end()) {
     x.keep.emplace_back("tree");
@@ -412,7 +432,7 @@ Experiment parse_experiment(std::string_view toml_text, const std::string& path)
   x.text = std::string(toml_text);
   r.only_keys("", root,
               {"experiment", "model", "parameters", "sweep", "sampling", "outputs", "runner",
-               "distance", "comparison", "ttest", "table"});
+               "distance", "comparison", "ttest", "table", "report"});
 
   const toml::table& exp = *r.table(root, "experiment", true);
   r.only_keys("experiment", exp, {"name", "seed", "replicates", "description"});
@@ -542,10 +562,16 @@ Experiment parse_experiment(std::string_view toml_text, const std::string& path)
       }
     }
     if (const toml::node* n = out->get("keep")) {
+      x.keep_line = Reader::line_of(*n);
       for (const toml::node& k : r.array("outputs.keep", *n, 0)) {
         const std::string what = r.string("outputs.keep", k);
-        if (what != "tree")
-          r.fail("outputs.keep", k, "unknown file kind '" + what + "' (expected tree)");
+        if (what != "tree" && what != "mesh" && what != "image") {
+          r.fail("outputs.keep", k,
+                 "unknown file kind '" + what + "' (expected tree, mesh, image)");
+        }
+        if (std::find(x.keep.begin(), x.keep.end(), what) != x.keep.end()) {
+          r.fail("outputs.keep", k, "'" + what + "' given twice");
+        }
         x.keep.push_back(what);
       }
     }

@@ -57,11 +57,13 @@ struct Experiment {
   std::vector<ComparisonSpec> comparisons;
   std::vector<TTestSpec> ttests;
   std::vector<SummaryTableSpec> tables;
+  RenderSpec render;  // [report]
   ParameterSet fixed;
   std::vector<SweepAxis> sweep;
   std::optional<Sampling> sampling;
   std::vector<std::string> metrics;
-  std::vector<std::string> keep;  // per-run files to keep: "tree"
+  std::vector<std::string> keep;  // per-run files to keep: "tree", "mesh", "image"
+  int keep_line = 0;
   std::optional<double> time_limit_s;
   std::map<std::string, int> parameter_lines;  // line of every fixed, swept or sampled key
   int model_kind_line = 0;

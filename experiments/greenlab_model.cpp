@@ -32,6 +32,15 @@ class GreenLabModel final : public Model {
     params_for(parameters).validate();
   }
 
+  // The plant's organ count, and with it the reconstruction, grows with the cycles.
+  double cost_estimate(const ParameterSet& parameters) const override {
+    try {
+      return static_cast<double>(params_for(parameters).cycles);
+    } catch (const std::exception&) {
+      return 1.0;
+    }
+  }
+
   RunResult run(const ParameterSet& parameters, std::uint64_t seed,
                 const RunContext& context) const override {
     const greenlab::PlantParams p = params_for(parameters);

@@ -1,5 +1,8 @@
 #include "experiments/lsystem_model.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <optional>
 
 #include "experiments/metrics.hpp"
@@ -58,6 +61,19 @@ class LSystemModel final : public Model {
 
   void check_setup(const ParameterSet& parameters) const override {
     if (!shared_) lsystem::parse_lsystem_file(file_, overrides(parameters));
+  }
+
+  // Module strings of branching L-systems grow geometrically with the derivation steps; runs
+  // without `steps` all derive the file's length and cost the same.
+  double cost_estimate(const ParameterSet& parameters) const override {
+    const auto it = parameters.find("steps");
+    if (it == parameters.end()) return 1.0;
+    try {
+      return std::pow(2.0, static_cast<double>(std::min<std::int64_t>(
+                               parameter_integer(it->second, "steps"), 1000)));
+    } catch (const std::exception&) {
+      return 1.0;
+    }
   }
 
   RunResult run(const ParameterSet& parameters, std::uint64_t seed,

@@ -60,6 +60,11 @@ class Model {
   // One run. Throws on failure (the runner records the message and goes on).
   virtual RunResult run(const ParameterSet& parameters, std::uint64_t seed,
                         const RunContext& context) const = 0;
+  // Relative cost of a run with these parameters, for scheduling only: the runners hand out the
+  // costliest runs first (longest processing time first, Graham 1969), so that no long run is
+  // left for the end while the other workers idle. Any positive scale, only the order matters;
+  // must not throw. Default: every run costs the same (grid order).
+  virtual double cost_estimate(const ParameterSet& /*parameters*/) const { return 1.0; }
 };
 
 }  // namespace fspm::experiments

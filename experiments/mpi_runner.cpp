@@ -13,6 +13,7 @@
 
 #include "experiments/progress.hpp"
 #include "experiments/run_execution.hpp"
+#include "experiments/run_order.hpp"
 #include "experiments/run_plan.hpp"
 #endif
 
@@ -43,8 +44,8 @@ void send_index(int rank, long long index) {
 RunnerSummary worker(const Experiment& experiment, const Model& model,
                      const RunnerOptions& options) {
   const RunPlan plan(experiment);
-  const ExecutionSettings settings =
-      execution_settings(experiment, options.out_dir, options.time_limit_s, options.interrupt);
+  const ExecutionSettings settings = execution_settings(
+      experiment, options.out_dir, options.time_limit_s, options.interrupt, options.file_writers);
   RunnerSummary summary;
   MPI_Send(nullptr, 0, MPI_CHAR, 0, kTagReady, MPI_COMM_WORLD);
   for (;;) {
@@ -74,6 +75,7 @@ RunnerSummary root(const Experiment& experiment, const Model& model, const Runne
     if (options.shard_count == 0 || options.shard_index >= options.shard_count) {
       throw ValueError("--shard: expected I/N with 0 <= I < N");
     }
+    check_run_file_writers(experiment, options.file_writers);
     db = std::make_unique<ResultsDb>(
         options.out_dir, options.resume ? ResultsDb::Mode::kResume : ResultsDb::Mode::kCreate,
         experiment_info(experiment));
@@ -93,8 +95,9 @@ RunnerSummary root(const Experiment& experiment, const Model& model, const Runne
   summary.database = db->path();
   summary.total_runs = experiment.runs();
   const RunPlan plan(experiment);
-  const ExecutionSettings settings =
-      execution_settings(experiment, options.out_dir, options.time_limit_s, options.interrupt);
+  if (options.longest_first) pending = longest_first(plan, model, std::move(pending));
+  const ExecutionSettings settings = execution_settings(
+      experiment, options.out_dir, options.time_limit_s, options.interrupt, options.file_writers);
 
   std::mutex mutex;  // guards next and local_done
   std::size_t next = 0;

@@ -28,12 +28,6 @@ std::string utc_now() {
   return buf;
 }
 
-std::string run_file_name(std::size_t run, const char* extension) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "runs/run-%07zu.%s", run, extension);
-  return buf;
-}
-
 double since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
@@ -42,7 +36,9 @@ double since(Clock::time_point t0) {
 
 ExecutionSettings execution_settings(const Experiment& experiment, const std::string& out_dir,
                                      std::optional<double> time_limit_override,
-                                     const std::atomic<bool>* interrupt) {
+                                     const std::atomic<bool>* interrupt,
+                                     const RunFileWriters& writers) {
+  check_run_file_writers(experiment, writers);
   ExecutionSettings s;
   s.experiment = &experiment;
   s.out_dir = out_dir;
@@ -50,7 +46,10 @@ ExecutionSettings execution_settings(const Experiment& experiment, const std::st
   s.keep_tree =
       std::find(experiment.keep.begin(), experiment.keep.end(), "tree") != experiment.keep.end();
   s.interrupt = interrupt;
-  if (s.keep_tree) fs::create_directories(fs::path(out_dir) / "runs");
+  for (const std::string& kind : experiment.keep) {
+    if (kind != "tree") s.file_writers.emplace_back(kind, writers.find(kind)->second);
+  }
+  if (!experiment.keep.empty()) fs::create_directories(fs::path(out_dir) / "runs");
   const bool wants_distance = std::find(experiment.metrics.begin(), experiment.metrics.end(),
                                         "distance_to_reference") != experiment.metrics.end();
   if (wants_distance && !experiment.reference_file.empty()) {
@@ -96,10 +95,19 @@ std::optional<RunRecord> execute_run(const Model& model, const RunSpec& spec,
       // A model that does not check its context still gets the status it earned.
       record.status = RunStatus::kTimeout;
       record.error = limit_text;
-    } else if (settings.keep_tree && result.tree) {
-      const std::string rel = run_file_name(spec.index, "tree");
-      write_tree_file(*result.tree, (fs::path(settings.out_dir) / rel).string());
-      record.files.push_back(rel);
+    } else if (result.tree) {
+      if (settings.keep_tree) {
+        const std::string rel = run_file_path(spec.index, "tree");
+        write_tree_file(*result.tree, (fs::path(settings.out_dir) / rel).string());
+        record.files.push_back(rel);
+      }
+      for (const auto& [kind, writer] : settings.file_writers) {
+        try {
+          record.files.push_back(writer(*result.tree, spec.index, settings.out_dir));
+        } catch (const std::exception& e) {
+          throw IoError("keeping the run's " + kind + ": " + e.what());
+        }
+      }
     }
   } catch (const RunStopped& e) {
     record.seconds = since(t0);

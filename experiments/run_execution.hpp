@@ -6,9 +6,12 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "experiments/experiment.hpp"
 #include "experiments/model.hpp"
+#include "experiments/run_files.hpp"
 #include "experiments/run_plan.hpp"
 #include "experiments/run_record.hpp"
 
@@ -19,14 +22,18 @@ struct ExecutionSettings {
   std::optional<double> time_limit_s;
   std::string out_dir;  // kept files go to out_dir/runs/
   bool keep_tree = false;
+  // The other kept kinds, in outputs.keep order, with their writers.
+  std::vector<std::pair<std::string, RunFileWriter>> file_writers;
   const std::atomic<bool>* interrupt = nullptr;
   // outputs.reference, read once, when distance_to_reference is recorded.
   std::shared_ptr<const TreeGraph> reference;
 };
 
+// Throws ValueError (check_run_file_writers) when a kept kind has no writer in `writers`.
 ExecutionSettings execution_settings(const Experiment& experiment, const std::string& out_dir,
                                      std::optional<double> time_limit_override,
-                                     const std::atomic<bool>* interrupt);
+                                     const std::atomic<bool>* interrupt,
+                                     const RunFileWriters& writers = {});
 
 // nullopt when the run was abandoned because of an interrupt: it gets no row.
 std::optional<RunRecord> execute_run(const Model& model, const RunSpec& spec,

@@ -32,6 +32,7 @@ class RunPlan {
   // Throws ValueError when index >= size().
   RunSpec run(std::size_t index) const;
   const ParameterSet& point_parameters(std::size_t point) const { return points_[point]; }
+  std::size_t point_of(std::size_t index) const { return index / replicates_; }
 
  private:
   std::uint64_t seed_ = 0;

@@ -14,6 +14,7 @@
 #include "experiments/progress.hpp"
 #include "experiments/results_db.hpp"
 #include "experiments/run_execution.hpp"
+#include "experiments/run_order.hpp"
 #include "experiments/run_plan.hpp"
 #include "fspm/tree_file.hpp"
 
@@ -88,6 +89,7 @@ RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
                      std::to_string(options.shard_count) +
                      " does not exist (expected I/N with 0 <= I < N)");
   }
+  check_run_file_writers(experiment, options.file_writers);
   const RunPlan plan(experiment);
   const ExperimentInfo info = experiment_info(experiment);
   ResultsDb db(options.out_dir,
@@ -106,8 +108,9 @@ RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
       pending.push_back(i);
     }
   }
-  const ExecutionSettings settings =
-      execution_settings(experiment, options.out_dir, options.time_limit_s, options.interrupt);
+  if (options.longest_first) pending = longest_first(plan, model, std::move(pending));
+  const ExecutionSettings settings = execution_settings(
+      experiment, options.out_dir, options.time_limit_s, options.interrupt, options.file_writers);
   const std::size_t hardware = std::max(1u, std::thread::hardware_concurrency());
   const std::size_t workers =
       std::max<std::size_t>(1, std::min(options.jobs == 0 ? hardware : options.jobs,

@@ -14,6 +14,7 @@
 #include "experiments/experiment.hpp"
 #include "experiments/model.hpp"
 #include "experiments/results_db.hpp"
+#include "experiments/run_files.hpp"
 
 namespace fspm::experiments {
 
@@ -30,6 +31,12 @@ struct RunnerOptions {
   std::ostream* progress = nullptr;  // progress lines (stderr); null: silent
   bool progress_bar = false;         // a redrawn bar with ETA (terminal) instead of plain lines
   double progress_interval_s = 5.0;  // plain lines at most this often
+  // Hand out the runs costliest first (Model::cost_estimate, experiments/run_order.hpp) instead
+  // of in index order. Results are the same either way.
+  bool longest_first = true;
+  // Writers of the kept kinds other than "tree" (run_files.hpp); a kept kind without one is an
+  // error before any run.
+  RunFileWriters file_writers;
 };
 
 struct RunnerSummary {

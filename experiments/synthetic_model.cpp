@@ -7,6 +7,16 @@
 namespace fspm::experiments {
 namespace {
 
+double number_or(const ParameterSet& p, const std::string& name, double fallback) {
+  const auto it = p.find(name);
+  if (it == p.end()) return fallback;
+  try {
+    return parameter_number(it->second, name);
+  } catch (const std::exception&) {
+    return fallback;
+  }
+}
+
 class SyntheticModel final : public Model {
  public:
   void check_parameter(const std::string& name, const ParameterValue& value) const override {
@@ -19,6 +29,11 @@ class SyntheticModel final : public Model {
                        "' for model kind synthetic (expected nodes, length, sleep_ms, fail or "
                        "x.NAME)");
     }
+  }
+
+  // Its sleep, plus about 0.1 microsecond per node built.
+  double cost_estimate(const ParameterSet& p) const override {
+    return number_or(p, "sleep_ms", 0.0) + 1e-4 * number_or(p, "nodes", 10.0);
   }
 
   RunResult run(const ParameterSet& p, std::uint64_t /*seed*/,

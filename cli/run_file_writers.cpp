@@ -1,0 +1,59 @@
+#include "cli/run_file_writers.hpp"
+
+#include <filesystem>
+#include <mutex>
+
+#include "graphics/image.hpp"
+#include "graphics/mesh_writers.hpp"
+#include "graphics/render.hpp"
+#include "graphics/tree_mesher.hpp"
+
+namespace fspm::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+graphics::MeshOptions run_mesh_options() {
+  graphics::MeshOptions options;
+  options.leaves = true;
+  return options;
+}
+
+}  // namespace
+
+void render_tree_png(const TreeGraph& tree, const std::string& png_path, int width, int height) {
+  const graphics::TriangleMesh mesh = graphics::mesh_tree(tree, run_mesh_options());
+  graphics::RenderOptions options;
+  options.width = width;
+  options.height = height;
+  options.view = graphics::View::kFront;
+  // VTK's render windows and X connections are not meant to be driven from several threads at
+  // once; meshing and writing run in parallel, the rendering itself one at a time.
+  static std::mutex render_mutex;
+  graphics::Image image;
+  {
+    const std::lock_guard lock(render_mutex);
+    image = graphics::render_mesh(mesh, options);
+  }
+  graphics::write_image(image, png_path);
+}
+
+experiments::RunFileWriters graphics_run_file_writers() {
+  experiments::RunFileWriters writers;
+  writers["mesh"] = [](const TreeGraph& tree, std::size_t run, const std::string& out_dir) {
+    const std::string rel = experiments::run_file_path(run, "glb");
+    graphics::write_glb(graphics::mesh_tree(tree, run_mesh_options()),
+                        (fs::path(out_dir) / rel).string());
+    return rel;
+  };
+  if (graphics::render_available()) {
+    writers["image"] = [](const TreeGraph& tree, std::size_t run, const std::string& out_dir) {
+      const std::string rel = experiments::run_file_path(run, "png");
+      render_tree_png(tree, (fs::path(out_dir) / rel).string());
+      return rel;
+    };
+  }
+  return writers;
+}
+
+}  // namespace fspm::cli

@@ -1,0 +1,22 @@
+#pragma once
+// The per-run files of `fspm run` that need graphics ([outputs] keep = ["mesh", "image"]) and the
+// tree renders of `fspm report`: the experiments library stays free of graphics, the command line
+// installs these writers (experiments/run_files.hpp).
+#include <string>
+
+#include "experiments/run_files.hpp"
+#include "fspm/tree_graph.hpp"
+
+namespace fspm::cli {
+
+// Writers for every kind of `keep` that graphics provides: "mesh" (binary glTF, .glb) always,
+// "image" (.png) when fspm was built with VTK. Images need an X display when they are written.
+experiments::RunFileWriters graphics_run_file_writers();
+
+// The tree meshed (bark and leaves) and rendered offscreen from the front, ground included, into
+// a PNG at `png_path` (atomically). Renders are serialized: one VTK window at a time, whichever
+// thread asks. Throws ValueError without VTK, IoError without an X display.
+void render_tree_png(const TreeGraph& tree, const std::string& png_path, int width = 640,
+                     int height = 480);
+
+}  // namespace fspm::cli

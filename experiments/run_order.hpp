@@ -1,0 +1,20 @@
+#pragma once
+// The order in which the runners hand out pending runs: longest processing time first (Graham
+// 1969), by the model's cost estimate, ties in run index order. With dynamic scheduling this
+// bounds the finish time by 4/3 of the optimum instead of leaving the longest runs (often the
+// last grid points: the oldest trees, the most steps) to one worker at the end. The order never
+// changes results: a run's parameters and seed depend only on its index.
+#include <cstddef>
+#include <vector>
+
+#include "experiments/model.hpp"
+#include "experiments/run_plan.hpp"
+
+namespace fspm::experiments {
+
+// `pending` (run indices) sorted by descending Model::cost_estimate of their point's parameters,
+// stable; a non-finite or negative estimate counts as 0.
+std::vector<std::size_t> longest_first(const RunPlan& plan, const Model& model,
+                                       std::vector<std::size_t> pending);
+
+}  // namespace fspm::experiments
