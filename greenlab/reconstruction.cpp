@@ -216,6 +216,15 @@ class AxisBuilder {
     return span <= 0.0 ? std::numeric_limits<double>::infinity() : birth + span + pruning - now_;
   }
 
+  // Records a metamer instance of `r` adds at most (pruned axes aside): its internode, its leaf
+  // while present, its terminal flower.
+  std::uint64_t records_per_metamer(const CompressedRecord& r) const {
+    const AgeGeometry& g = geo_.age(r.physiological_age);
+    const bool leaf = options_.leaves && status(r.birth, g.leaf_life_span, g.pruning_period) > 0.0;
+    const bool flower = options_.flowers && r.apex == ApexState::kFlower;
+    return 1 + (leaf ? 1 : 0) + (flower ? 1 : 0);
+  }
+
   // Whether a lateral axis starting at `record` has fallen (Jaeger 3.2.1 applied to axes).
   bool pruned(RecordId record) const {
     const CompressedRecord& r = graph_.record(record);
@@ -373,11 +382,15 @@ class AxisBuilder {
 
 }  // namespace
 
-std::uint64_t metamers_at_age(const CompressedTreeGraph& graph, double age) {
+namespace {
+
+// Sum over the metamer instances born by `age` of weight(record): records are numbered parents
+// first by the simulation, but any order is handled by a topological pass. Saturating sums: a
+// count past 2^64 only needs to compare as huge.
+template <class Weight>
+std::uint64_t instances_at_age(const CompressedTreeGraph& graph, double age, Weight weight) {
   if (graph.root() == kNoRecord) return 0;
   const double now = graph.birth_date + age;
-  // Instances per record counting only references from records born by `now`; records are
-  // numbered parents first by the simulation, but any order is handled by a topological pass.
   std::vector<std::uint32_t> indegree(graph.size(), 0);
   for (const auto& r : graph.records()) {
     if (r.successor != kNoRecord) ++indegree[r.successor];
@@ -391,7 +404,6 @@ std::uint64_t metamers_at_age(const CompressedTreeGraph& graph, double age) {
   }
   count[graph.root()] = 1;
   std::uint64_t total = 0;
-  // Saturating sums: a count past 2^64 only needs to compare as huge.
   auto add = [](std::uint64_t a, std::uint64_t b) {
     std::uint64_t out = 0;
     return __builtin_add_overflow(a, b, &out) ? std::numeric_limits<std::uint64_t>::max() : out;
@@ -401,7 +413,7 @@ std::uint64_t metamers_at_age(const CompressedTreeGraph& graph, double age) {
     const CompressedRecord& r = graph.record(id);
     const bool born = r.birth <= now;
     const std::uint64_t c = born ? count[id] : 0;
-    total = add(total, c);
+    for (std::uint64_t w = weight(r); w > 0 && c > 0; --w) total = add(total, c);
     auto visit = [&](RecordId child) {
       count[child] = add(count[child], c);
       if (--indegree[child] == 0) order.push_back(child);
@@ -410,6 +422,12 @@ std::uint64_t metamers_at_age(const CompressedTreeGraph& graph, double age) {
     for (RecordId a : graph.axillaries(id)) visit(a);
   }
   return total;
+}
+
+}  // namespace
+
+std::uint64_t metamers_at_age(const CompressedTreeGraph& graph, double age) {
+  return instances_at_age(graph, age, [](const CompressedRecord&) { return std::uint64_t{1}; });
 }
 
 TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
@@ -677,9 +695,12 @@ void reconstruct_lines_into(const CompressedTreeGraph& graph, const Reconstructi
                      std::to_string(kMaxExplicitMetamers) +
                      "); use an earlier age or the instanced reconstruction");
   }
-  // Each metamer adds at most a leaf and a flower: the columns are sized once for the worst case
-  // (left unwritten, so untouched pages cost nothing) and cut to the records written at the end.
-  const auto capacity = static_cast<std::size_t>(3 * bound + 1);
+  // The records of every metamer born by the age with its leaf and flower bound the output
+  // (only fallen axes make it smaller): the columns are sized once, left unwritten, and cut to
+  // the records written at the end.
+  const auto capacity = static_cast<std::size_t>(
+      instances_at_age(graph, builder.age(),
+                       [&](const CompressedRecord& r) { return builder.records_per_metamer(r); }));
   if (lines.capacity() < capacity) {
     lines.reserve(capacity);
     lines.advise_huge_pages();
@@ -691,17 +712,33 @@ void reconstruct_lines_into(const CompressedTreeGraph& graph, const Reconstructi
   LinePrototypes protos;
   protos.resize_index(graph.size());
 
-  NodeId* const parent = lines.parents().data();
-  Eigen::Vector3f* const start = lines.starts().data();
-  Eigen::Vector3f* const direction = lines.directions().data();
-  float* const length = lines.lengths().data();
-  float* const radius = lines.radii().data();
-  float* const birth = lines.birth_times().data();
-  std::uint16_t* const age = lines.physiological_ages().data();
-  std::uint16_t* const order = lines.orders().data();
-  OrganKind* const kind = lines.kinds().data();
-  std::uint8_t* const dead = lines.has_dead() ? lines.dead().data() : nullptr;
+  NodeId* parent = nullptr;
+  Eigen::Vector3f *start = nullptr, *direction = nullptr;
+  float *length = nullptr, *radius = nullptr, *birth = nullptr;
+  std::uint16_t *age = nullptr, *order = nullptr;
+  OrganKind* kind = nullptr;
+  std::uint8_t* dead = nullptr;
+  const auto columns = [&] {
+    parent = lines.parents().data();
+    start = lines.starts().data();
+    direction = lines.directions().data();
+    length = lines.lengths().data();
+    radius = lines.radii().data();
+    birth = lines.birth_times().data();
+    age = lines.physiological_ages().data();
+    order = lines.orders().data();
+    kind = lines.kinds().data();
+    dead = lines.has_dead() ? lines.dead().data() : nullptr;
+  };
+  columns();
   NodeId cursor = 0;
+  // The bound above holds for every plant the simulation makes; a hand-made graph that breaks
+  // it only costs a reallocation.
+  const auto make_room = [&](std::size_t n) {
+    if (cursor + n <= lines.size()) return;
+    lines.resize_for_overwrite(std::max<std::size_t>(2 * lines.size(), cursor + n));
+    columns();
+  };
 
   // Oldest node first, axis by axis (as reconstruct): a FIFO of axis starts. It holds every axis
   // of the plant (176 000 for the Table 1 tree), so its memory is kept per thread between calls:
@@ -726,6 +763,7 @@ void reconstruct_lines_into(const CompressedTreeGraph& graph, const Reconstructi
     const NodeId base = cursor;
     if (item.walk_frame != kNoWalk) {
       add_stats(st, walk_axis(item.record, walk_frames[item.walk_frame], item.order));
+      make_room(scratch.size());
       const bool has_dead = scratch.has_attribute("dead");
       for (NodeId k = 0; k < scratch.size(); ++k) {
         const NodeId i = base + k;
@@ -768,6 +806,7 @@ void reconstruct_lines_into(const CompressedTreeGraph& graph, const Reconstructi
     add_stats(st, p.stats);
     const std::uint32_t n = p.count;
     const std::uint32_t first = p.first;
+    make_room(n);
     const Eigen::Matrix3f& rot = item.rotation;
     const Eigen::Vector3f& shift = item.translation;
     parent[base] = item.parent;
