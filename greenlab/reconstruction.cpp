@@ -430,6 +430,26 @@ std::uint64_t metamers_at_age(const CompressedTreeGraph& graph, double age) {
   return instances_at_age(graph, age, [](const CompressedRecord&) { return std::uint64_t{1}; });
 }
 
+namespace {
+
+bool nothing_born(const CompressedTreeGraph& graph, const AxisBuilder& builder) {
+  return graph.root() == kNoRecord || graph.record(graph.root()).birth > builder.now();
+}
+
+// Metamers born by the builder's age; throws when an explicit tree of them is too big.
+std::uint64_t explicit_metamers(const CompressedTreeGraph& graph, const AxisBuilder& builder) {
+  const std::uint64_t metamers = metamers_at_age(graph, builder.age());
+  if (metamers > kMaxExplicitMetamers) {
+    throw ValueError("the plant has " + std::to_string(metamers) + " metamers at age " +
+                     std::to_string(builder.age()) + ", too many for an explicit tree (at most " +
+                     std::to_string(kMaxExplicitMetamers) +
+                     "); use an earlier age or the instanced reconstruction");
+  }
+  return metamers;
+}
+
+}  // namespace
+
 TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
                       ReconstructionStats* stats) {
   TreeGraph tree;
@@ -443,19 +463,13 @@ void reconstruct_into(const CompressedTreeGraph& graph, const ReconstructionOpti
   ReconstructionStats st;
   st.age = builder.age();
   tree.clear_keep_capacity();
-  if (graph.root() == kNoRecord || graph.record(graph.root()).birth > builder.now()) {
+  if (nothing_born(graph, builder)) {
     if (stats) *stats = st;
     return;
   }
   // Metamers born by the requested age bound the output (each adds at most a leaf and a
   // flower), so the columns are allocated once and impossible requests fail early.
-  const std::uint64_t bound = metamers_at_age(graph, builder.age());
-  if (bound > kMaxExplicitMetamers) {
-    throw ValueError("the plant has " + std::to_string(bound) + " metamers at age " +
-                     std::to_string(builder.age()) + ", too many for an explicit tree (at most " +
-                     std::to_string(kMaxExplicitMetamers) +
-                     "); use an earlier age or the instanced reconstruction");
-  }
+  const std::uint64_t bound = explicit_metamers(graph, builder);
   if (builder.any_pruning_period()) tree.add_attribute("dead", 0.0);
   tree.reserve(static_cast<std::size_t>(bound * 2 + 8));
   tree.advise_huge_pages();
@@ -473,7 +487,7 @@ InstancedPlant reconstruct_instanced(const CompressedTreeGraph& graph,
   const AxisBuilder builder(graph, options, false);
   InstancedPlant plant;
   plant.age = builder.age();
-  if (graph.root() == kNoRecord || graph.record(graph.root()).birth > builder.now()) return plant;
+  if (nothing_born(graph, builder)) return plant;
   const Frame canonical = builder.trunk_frame();
   const Eigen::Matrix3d canonical_inverse = canonical.axes.transpose();
   std::vector<std::uint32_t> prototype_of(graph.size(), kNoPrototype);
@@ -684,17 +698,11 @@ void reconstruct_lines_into(const CompressedTreeGraph& graph, const Reconstructi
   st.age = builder.age();
   lines.clear();
   lines.set_has_dead(builder.any_pruning_period());
-  if (graph.root() == kNoRecord || graph.record(graph.root()).birth > builder.now()) {
+  if (nothing_born(graph, builder)) {
     if (stats) *stats = st;
     return;
   }
-  const std::uint64_t bound = metamers_at_age(graph, builder.age());
-  if (bound > kMaxExplicitMetamers) {
-    throw ValueError("the plant has " + std::to_string(bound) + " metamers at age " +
-                     std::to_string(builder.age()) + ", too many for an explicit tree (at most " +
-                     std::to_string(kMaxExplicitMetamers) +
-                     "); use an earlier age or the instanced reconstruction");
-  }
+  explicit_metamers(graph, builder);  // refuses plants too big for an explicit form
   // The records of every metamer born by the age with its leaf and flower bound the output
   // (only fallen axes make it smaller): the columns are sized once, left unwritten, and cut to
   // the records written at the end.
