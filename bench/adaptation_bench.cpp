@@ -65,6 +65,32 @@ void BM_AdaptBesideWall(benchmark::State& state) {
 }
 BENCHMARK(BM_AdaptBesideWall)->Arg(10)->Arg(20)->Arg(30)->Unit(benchmark::kMillisecond);
 
+// The same wall with a coarser shadow-volume cutoff (AnalysisParams::light_significance = 0.05
+// instead of 0.01): shorter shadow volumes, fewer neighbours per cluster, fewer and cheaper light
+// evaluations; reported with the tip displacement and pruning so the loss of accuracy is visible.
+void BM_AdaptBesideWallCoarseLight(benchmark::State& state) {
+  const Case& c = case_for(static_cast<int>(state.range(0)));
+  AnalysisParams params;
+  params.light_significance = static_cast<double>(state.range(1)) / 100.0;
+  const TreeAnalysis analysis = analyze_tree(c.open.tree, params);
+  AdaptationResult r;
+  for (auto _ : state) {
+    r = adapt_tree(c.open.tree, analysis, c.wall);
+    benchmark::DoNotOptimize(r.tree.size());
+  }
+  state.counters["nodes"] = static_cast<double>(c.open.tree.size());
+  state.counters["pruned"] = static_cast<double>(r.pruned_nodes);
+  state.counters["light_evals"] = static_cast<double>(r.light_evaluations);
+  state.counters["tip_displacement_m"] = r.mean_tip_displacement_m;
+  state.counters["tip_shift_x_m"] = r.mean_tip_shift.x();
+}
+BENCHMARK(BM_AdaptBesideWallCoarseLight)
+    ->Args({30, 1})
+    ->Args({30, 3})
+    ->Args({30, 5})
+    ->Args({30, 10})
+    ->Unit(benchmark::kMillisecond);
+
 // A local change: a 1 m x 1 m x 2 m box 2.5 m east of the trunk (a bench or a car beside the tree).
 // Only the clusters it shades (and their neighbours) are re-evaluated.
 void BM_AdaptNearSmallBox(benchmark::State& state) {
