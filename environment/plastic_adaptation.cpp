@@ -64,11 +64,12 @@ struct TreeRun {
   std::vector<std::uint32_t> pre, pre_pos, pre_size;        // skeleton pre-order
   std::vector<std::uint32_t> cluster_start, cluster_items;  // clusters anchored per node (CSR)
   std::vector<std::uint8_t> lateral, pruned;
-  std::vector<Rigid> F, S;  // accumulated transform; this step's transform
-  std::vector<int> stamp;   // step at which S was set
+  std::vector<Rigid> F;    // accumulated transform
+  std::vector<int> stamp;  // step at which S was set
   std::vector<std::uint64_t> group;
   std::vector<double> zeta, length_below;
   std::vector<Eigen::Vector3d> light_sum;
+  std::uint64_t aggregated_epoch = ~std::uint64_t{0};  // epoch_ of the last aggregate()
   AdaptationResult result;
 };
 
@@ -106,6 +107,9 @@ class Engine {
   std::vector<double> path_, eval_path_, eval_all_path_;
   double all_path_ = 0.0, step_max_ = 0.0;
   std::vector<std::uint32_t> owner_;  // tree of each cluster
+  // Counts changes of what aggregate() reads (cluster light and life, pruned nodes), so that an
+  // unchanged tree is not summed again.
+  std::uint64_t epoch_ = 0;
 };
 
 Engine::Engine(const std::vector<const TreeGraph*>& trees,
@@ -257,7 +261,6 @@ void Engine::setup_tree(TreeRun& r) {
   r.lateral = lateral_bases(t);
   r.pruned.assign(n, 0);
   r.F.assign(n, Rigid{});
-  r.S.assign(n, Rigid{});
   r.stamp.assign(n, -1);
   r.group.assign(n, kStill);
   r.zeta.assign(n, 0.0);
@@ -268,6 +271,8 @@ void Engine::setup_tree(TreeRun& r) {
 // Resources (eq. 4.11), remaining skeleton length and light directions below every skeleton node:
 // the same loop as analyze_tree, so an unchanged scene reproduces the analysis bit for bit.
 void Engine::aggregate(TreeRun& r) {
+  if (r.aggregated_epoch == epoch_) return;
+  r.aggregated_epoch = epoch_;
   const TreeGraph& t = *r.tree;
   const TreeAnalysis& a = *r.a;
   for (const NodeId m : r.skeleton) {
@@ -295,9 +300,9 @@ void Engine::aggregate(TreeRun& r) {
   }
 }
 
-// Pirk 4.4.1 and eq. 4.6: the segments of age `level` bend toward the light of their clusters; one
-// pass over the skeleton not older than `level` (parents first) carries every rotation into the
-// subtree and records which rigid group each node moved with.
+// Pirk 4.4.1 and eq. 4.6: the segments of age `level` bend toward the light of their clusters; each
+// rotation is carried into the segment's subtree, recording which rigid group each node moved
+// with. The cost is the segments of this age plus the nodes that actually move.
 void Engine::bend(TreeRun& r, int level, int step) {
   const TreeGraph& t = *r.tree;
   const TreeAnalysis& a = *r.a;
@@ -308,42 +313,40 @@ void Engine::bend(TreeRun& r, int level, int step) {
   const Eigen::Vector3d g = a.params.gravity_direction.normalized();
   const std::uint64_t tree_tag = static_cast<std::uint64_t>(&r - runs_.data() + 1) << 32;
   bool any = false;
-  for (std::size_t k = r.age_begin[static_cast<std::size_t>(level)]; k < r.by_age.size(); ++k) {
+  // Only the segments of this age are looked at; a bent one carries its subtree (a contiguous
+  // range of the skeleton pre-order) along. Ids put ancestors first, so a segment sees the
+  // rotations of its bent ancestors of the same age before its own.
+  const auto lo = r.age_begin[static_cast<std::size_t>(level)];
+  const auto hi = r.age_begin[static_cast<std::size_t>(level) + 1];
+  for (std::size_t k = lo; k < hi; ++k) {
     const NodeId m = r.by_age[k];
     if (r.pruned[m]) continue;
-    const NodeId p = m == 0 ? kNoNode : t.parent(m);
-    const bool inherit = p != kNoNode && r.stamp[p] == step;
-    if (!inherit && a.age[m] != level) continue;  // nothing moved it in this step
-    Rigid s = inherit ? r.S[p] : Rigid{};
-    std::uint64_t grp = inherit ? r.group[p] : kStill;
-    bool bent = false;
-    if (a.age[m] == level) {
-      // Eq. 4.6 in the frame the segment has been carried into: the old heading (analysis
-      // tropism) and the new one (light direction of its clusters now).
-      const Eigen::Quaterniond q_cur = s.q * r.F[m].q;
-      const double ws = a.tropism_weight[m];
-      const Eigen::Vector3d d_o = q_cur * a.original_direction[m];
-      const Eigen::Vector3d v = segment_light_direction(r.light_sum[m], field_.open_direction());
-      const Eigen::Vector3d t_new = (wp * v + wg * g) / w_sum;
-      const Eigen::Vector3d h_old = ws * d_o + (1.0 - ws) * (q_cur * a.tropism[m]);
-      const Eigen::Vector3d h_new = ws * d_o + (1.0 - ws) * t_new;
-      if (h_old.norm() > 1e-12 && h_new.norm() > 1e-12) {
-        const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(h_old, h_new);
-        if (q.vec().norm() >= 1e-9) {
-          const Eigen::Vector3d pivot = s(r.F[m](t.start(m)));
-          s = Rigid{q * s.q, q * (s.t - pivot) + pivot};
-          grp = tree_tag | (static_cast<std::uint64_t>(m) + 1);
-          bent = true;
-          ++r.result.bent_segments;
-        }
-      }
-    }
-    if (!inherit && !bent) continue;
-    r.S[m] = s;
-    r.stamp[m] = step;
-    r.group[m] = grp;
-    r.F[m] = compose(s, r.F[m]);
+    // Eq. 4.6 in the frame the segment has been carried into: the old heading (analysis
+    // tropism) and the new one (light direction of its clusters now).
+    const Eigen::Quaterniond& q_cur = r.F[m].q;
+    const double ws = a.tropism_weight[m];
+    const Eigen::Vector3d d_o = q_cur * a.original_direction[m];
+    const Eigen::Vector3d v = segment_light_direction(r.light_sum[m], field_.open_direction());
+    const Eigen::Vector3d t_new = (wp * v + wg * g) / w_sum;
+    const Eigen::Vector3d h_old = ws * d_o + (1.0 - ws) * (q_cur * a.tropism[m]);
+    const Eigen::Vector3d h_new = ws * d_o + (1.0 - ws) * t_new;
+    if (h_old.norm() <= 1e-12 || h_new.norm() <= 1e-12) continue;
+    const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(h_old, h_new);
+    // Below 1e-4 rad (2 mm at 20 m) a turn is not worth moving the subtree and re-checking the
+    // light of everything it carries.
+    if (q.vec().norm() < 5e-5) continue;
+    const Eigen::Vector3d pivot = r.F[m](t.start(m));
+    const Rigid turn{q, pivot - q * pivot};  // x -> q (x - pivot) + pivot
+    const std::uint64_t grp = tree_tag | (static_cast<std::uint64_t>(m) + 1);
+    ++r.result.bent_segments;
     any = true;
+    for (std::uint32_t j = r.pre_pos[m]; j < r.pre_pos[m] + r.pre_size[m]; ++j) {
+      const NodeId n = r.pre[j];
+      if (r.pruned[n]) continue;
+      r.F[n] = compose(turn, r.F[n]);
+      r.stamp[n] = step;
+      r.group[n] = grp;
+    }
   }
   if (!any) return;
   // Pirk 4.4.2: the clusters follow their anchors.
@@ -374,6 +377,7 @@ void Engine::prune(TreeRun& r, int level) {
     for (std::uint32_t k = r.pre_pos[s]; k < r.pre_pos[s] + r.pre_size[s]; ++k) {
       const NodeId m = r.pre[k];
       r.pruned[m] = 1;
+      ++epoch_;
       for (std::uint32_t j = r.cluster_start[m]; j < r.cluster_start[m + 1]; ++j) {
         const std::uint32_t gc = r.first_cluster + r.cluster_items[j];
         if (!field_.alive_[gc]) continue;
@@ -481,6 +485,7 @@ void Engine::check_moved() {
 
 void Engine::refresh() {
   if (dirty_list_.empty()) return;
+  ++epoch_;
   std::sort(dirty_list_.begin(), dirty_list_.end());
   // Many due: one LightModel (shadow-volume grid, vectorized caps) for all of them; few: each
   // from its own neighbour list.

@@ -30,7 +30,7 @@ struct AdaptationResult {
   // end moved, m) and "pruned" (1 for a pruned node, which keeps its adapted position).
   TreeGraph tree;
   std::size_t pruned_nodes = 0;
-  std::size_t bent_segments = 0;  // skeleton segments rotated by more than 1e-9 rad
+  std::size_t bent_segments = 0;  // skeleton segments rotated by more than 1e-4 rad
   std::size_t tips = 0;           // internode tips that survived (no internode child)
   double mean_tip_displacement_m = 0.0;
   Eigen::Vector3d mean_tip_shift = Eigen::Vector3d::Zero();
