@@ -63,6 +63,7 @@ struct RunOptions {
   std::string slurm_file;
   std::string slurm_time = "24:00:00";
   std::size_t replicates = 0;  // 0: the file's
+  bool grid_order = false;
 };
 
 struct ExportOptions {
@@ -184,6 +185,7 @@ void run_command(const RunOptions& o) {
   if (!o.shard.empty()) std::tie(r.shard_index, r.shard_count) = parse_shard(o.shard);
   if (o.time_limit_s > 0.0) r.time_limit_s = o.time_limit_s;
   r.interrupt = &g_interrupted;
+  r.longest_first = !o.grid_order;
   if (o.mpi && !ex::mpi_available()) {
     throw ValueError("--mpi: this fspm was built without MPI (install libopenmpi-dev, rebuild)");
   }
@@ -397,6 +399,8 @@ void add_experiment_commands(CLI::App& app) {
   r->add_option("--replicates", run->replicates,
                 "Replicates per point (overrides the file; a quick, smaller version of a sweep)")
       ->check(CLI::PositiveNumber);
+  r->add_flag("--grid-order", run->grid_order,
+              "Hand out runs in index order (default: the costliest first)");
   r->add_flag("--json", run->json, "Machine-readable JSON summary on stdout");
   r->add_flag("--mpi", run->mpi, "Spread the runs over the MPI ranks (under mpirun)");
   r->add_flag("--emit-slurm", run->emit_slurm, "Write a Slurm job-array script instead of running");

@@ -181,6 +181,56 @@ namespace fspm::testing {
 namespace {
 
 // Two MPI ranks on this machine give the rows of the local runner (timings aside).
+// keep = ["mesh", "image"]: a binary glTF and a PNG per run, listed in the run's row; the report
+// renders the median tree of each point.
+TEST(ExperimentCommands, KeptMeshesAndImagesAndReportRenders) {
+  const fs::path dir = scratch_dir("exp_keep");
+  const std::string exp = write_file(
+      dir / "e.toml",
+      "[experiment]\nname = \"k\"\nseed = 3\nreplicates = 2\n[model]\nkind = \"lsystem\"\n"
+      "file = \"" +
+          std::string(FSPM_SOURCE_DIR) +
+          "/examples/lsystems/stochastic_plant.l\"\n"
+          "[sweep]\nsteps = [2, 3]\n[outputs]\nmetrics = [\"internodes\", \"height\"]\n"
+          "keep = [\"mesh\", \"image\"]\n[report]\nrenders = 1\n");
+  const std::string out = (dir / "out").string();
+  const CommandResult run = run_fspm("run " + exp + " --jobs 2 --out " + out);
+  if (run.err.find("needs a writer") != std::string::npos ||
+      run.err.find("needs an X display") != std::string::npos) {
+    GTEST_SKIP() << run.err;  // built without VTK, or no display and no xvfb-run
+  }
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto all = nlohmann::json::parse(run_fspm("results export " + out + " --json").out);
+  ASSERT_EQ(all["runs"].size(), 4u);
+  for (const auto& row : all["runs"]) {
+    const std::size_t index = row["run"].get<std::size_t>();
+    char stem[32];
+    std::snprintf(stem, sizeof stem, "runs/run-%07zu", index);
+    EXPECT_EQ(row["files"],
+              nlohmann::json({std::string(stem) + ".glb", std::string(stem) + ".png"}));
+    // File signatures: glTF 2.0 binary ("glTF") and PNG ("\x89PNG").
+    EXPECT_EQ(read_text(dir / "out" / (std::string(stem) + ".glb")).substr(0, 4), "glTF");
+    EXPECT_EQ(read_text(dir / "out" / (std::string(stem) + ".png")).substr(1, 3), "PNG");
+  }
+  EXPECT_FALSE(fs::exists(dir / "out" / "runs" / "run-0000000.tree"));  // not asked for
+  // The report renders one tree (renders = 1: the first point), run again from its seed.
+  const CommandResult report = run_fspm("report " + out);
+  ASSERT_EQ(report.exit_code, 0) << report.err;
+  const std::string md = read_text(dir / "out" / "report.md");
+  EXPECT_NE(md.find("## Selected trees"), std::string::npos) << md;
+  // The lower median of internodes among the two replicates of steps = 2: run 0 or run 1.
+  const std::size_t at = md.find("![steps = 2](figures/run-000000");
+  ASSERT_NE(at, std::string::npos) << md;
+  const std::string figure = md.substr(md.find('(', at) + 1, 23);
+  EXPECT_NE(md.find("steps = 2; internodes = "), std::string::npos) << md;
+  EXPECT_EQ(read_text(dir / "out" / figure).substr(1, 3), "PNG") << figure;
+  // --no-figures leaves the renders out.
+  fs::remove_all(dir / "out" / "figures");
+  ASSERT_EQ(run_fspm("report " + out + " --no-figures").exit_code, 0);
+  EXPECT_EQ(read_text(dir / "out" / "report.md").find("## Selected trees"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir / "out" / "figures"));
+}
+
 TEST(ExperimentCommands, MpiRanksGiveTheLocalResults) {
   if (std::system("command -v mpirun >/dev/null 2>&1") != 0) GTEST_SKIP() << "no mpirun";
   const fs::path dir = scratch_dir("exp_mpi");
@@ -190,7 +240,8 @@ TEST(ExperimentCommands, MpiRanksGiveTheLocalResults) {
       "file = \"" +
           std::string(FSPM_SOURCE_DIR) +
           "/examples/lsystems/stochastic_plant.l\"\n"
-          "[sweep]\nsteps = [2, 3, 4]\n[outputs]\nmetrics = [\"internodes\", \"height\"]\n");
+          "[sweep]\nsteps = [2, 3, 4]\n[outputs]\nmetrics = [\"internodes\", \"height\"]\n"
+          "keep = [\"mesh\"]\n");
   const std::string mpi_out = (dir / "mpi").string();
   const std::string cmd =
       "env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun "
@@ -222,6 +273,10 @@ TEST(ExperimentCommands, MpiRanksGiveTheLocalResults) {
       rows(run_fspm("results export " + (dir / "local").string() + " --csv").out);
   EXPECT_EQ(mpi_rows.size(), 10u);
   EXPECT_EQ(mpi_rows, local_rows);
+  // Every rank wrote the meshes of its own runs.
+  for (int i = 0; i < 9; ++i) {
+    EXPECT_TRUE(fs::exists(mpi_out + "/runs/run-000000" + std::to_string(i) + ".glb")) << i;
+  }
 }
 
 }  // namespace
