@@ -14,6 +14,7 @@ namespace fspm::experiments {
 namespace {
 
 std::string number(double v) {
+  if (v == std::round(v) && std::abs(v) < 1e15) return std::to_string(static_cast<long long>(v));
   std::ostringstream out;
   out.precision(4);
   out << v;
