@@ -189,7 +189,7 @@ void run_command(const RunOptions& o) {
   if (o.mpi && !ex::mpi_available()) {
     throw ValueError("--mpi: this fspm was built without MPI (install libopenmpi-dev, rebuild)");
   }
-  r.file_writers = graphics_run_file_writers();
+  r.file_writers = graphics_run_file_writers(x);
   ex::check_run_file_writers(x, r.file_writers);
   if (std::find(x.keep.begin(), x.keep.end(), "image") != x.keep.end()) {
     // Under mpirun every rank would start its own virtual server: the ranks need a display.
@@ -329,7 +329,7 @@ std::string tree_renders(const ex::Experiment& x, const std::vector<ex::RunRecor
     std::snprintf(name, sizeof name, "figures/run-%07zu.png", c.run);
     try {
       const TreeGraph tree = ex::recorded_run_tree(x, *by_run.at(c.run), dir);
-      render_tree_png(tree, (fs::path(dir) / name).string());
+      render_tree_png(tree, x, (fs::path(dir) / name).string());
       md += "![" + c.group + "](" + name + ")\n\n*" + c.caption + "*\n\n";
     } catch (const Error& e) {
       notes += "Note: run " + std::to_string(c.run) + " not rendered: " + e.what() + "\n";

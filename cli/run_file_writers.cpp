@@ -21,12 +21,13 @@ graphics::MeshOptions run_mesh_options() {
 
 }  // namespace
 
-void render_tree_png(const TreeGraph& tree, const std::string& png_path, int width, int height) {
+void render_tree_png(const TreeGraph& tree, const experiments::Experiment& experiment,
+                     const std::string& png_path) {
   const graphics::TriangleMesh mesh = graphics::mesh_tree(tree, run_mesh_options());
   graphics::RenderOptions options;
-  options.width = width;
-  options.height = height;
-  options.view = graphics::View::kFront;
+  options.width = experiment.image_width;
+  options.height = experiment.image_height;
+  options.view = graphics::view_from_name(experiment.image_view);
   // VTK's render windows and X connections are not meant to be driven from several threads at
   // once; meshing and writing run in parallel, the rendering itself one at a time.
   static std::mutex render_mutex;
@@ -38,18 +39,23 @@ void render_tree_png(const TreeGraph& tree, const std::string& png_path, int wid
   graphics::write_image(image, png_path);
 }
 
-experiments::RunFileWriters graphics_run_file_writers() {
+experiments::RunFileWriters graphics_run_file_writers(const experiments::Experiment& experiment) {
   experiments::RunFileWriters writers;
-  writers["mesh"] = [](const TreeGraph& tree, std::size_t run, const std::string& out_dir) {
-    const std::string rel = experiments::run_file_path(run, "glb");
-    graphics::write_glb(graphics::mesh_tree(tree, run_mesh_options()),
-                        (fs::path(out_dir) / rel).string());
+  const std::string extension = experiment.mesh_format;
+  writers["mesh"] = [extension](const TreeGraph& tree, std::size_t run,
+                                const std::string& out_dir) {
+    const std::string rel = experiments::run_file_path(run, extension);
+    // By extension: .glb, .ply or .vtp, each written atomically.
+    graphics::write_mesh(graphics::mesh_tree(tree, run_mesh_options()),
+                         (fs::path(out_dir) / rel).string());
     return rel;
   };
   if (graphics::render_available()) {
-    writers["image"] = [](const TreeGraph& tree, std::size_t run, const std::string& out_dir) {
+    // The runner keeps the experiment alive for the whole sweep.
+    writers["image"] = [&experiment](const TreeGraph& tree, std::size_t run,
+                                     const std::string& out_dir) {
       const std::string rel = experiments::run_file_path(run, "png");
-      render_tree_png(tree, (fs::path(out_dir) / rel).string());
+      render_tree_png(tree, experiment, (fs::path(out_dir) / rel).string());
       return rel;
     };
   }

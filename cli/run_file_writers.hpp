@@ -4,19 +4,22 @@
 // installs these writers (experiments/run_files.hpp).
 #include <string>
 
+#include "experiments/experiment.hpp"
 #include "experiments/run_files.hpp"
 #include "fspm/tree_graph.hpp"
 
 namespace fspm::cli {
 
-// Writers for every kind of `keep` that graphics provides: "mesh" (binary glTF, .glb) always,
-// "image" (.png) when fspm was built with VTK. Images need an X display when they are written.
-experiments::RunFileWriters graphics_run_file_writers();
+// Writers for every kind of `keep` that graphics provides: "mesh" (outputs.mesh_format) always,
+// "image" (.png, outputs.image_size and image_view) when fspm was built with VTK. Images need an X
+// display when they are written.
+experiments::RunFileWriters graphics_run_file_writers(const experiments::Experiment& experiment);
 
-// The tree meshed (bark and leaves) and rendered offscreen from the front, ground included, into
-// a PNG at `png_path` (atomically). Renders are serialized: one VTK window at a time, whichever
-// thread asks. Throws ValueError without VTK, IoError without an X display.
-void render_tree_png(const TreeGraph& tree, const std::string& png_path, int width = 640,
-                     int height = 480);
+// The tree meshed (bark and leaves) and rendered offscreen with the experiment's image size and
+// view, ground included, into a PNG at `png_path` (atomically). Renders are serialized: one VTK
+// window at a time, whichever thread asks. Throws ValueError without VTK, IoError without an X
+// display.
+void render_tree_png(const TreeGraph& tree, const experiments::Experiment& experiment,
+                     const std::string& png_path);
 
 }  // namespace fspm::cli

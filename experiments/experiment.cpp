@@ -2,6 +2,7 @@
 
 #include <toml++/toml.h>
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -266,6 +267,17 @@ const toml::array& table_array(const Reader& r, const toml::table& root, const s
   if (!node->is_array_of_tables())
     r.fail(name, *node, "expected an array of tables [[" + name + "]]");
   return *node->as_array();
+}
+
+// "WxH" with 1 <= W, H <= 16384 (the sizes fspm render accepts).
+bool parse_image_size(std::string_view text, int& width, int& height) {
+  const auto x = text.find_first_of("xX");
+  if (x == std::string_view::npos) return false;
+  auto number = [](std::string_view s, int& out) {
+    const auto r = std::from_chars(s.data(), s.data() + s.size(), out);
+    return r.ec == std::errc() && r.ptr == s.data() + s.size() && out > 0 && out <= 16384;
+  };
+  return number(text.substr(0, x), width) && number(text.substr(x + 1), height);
 }
 
 // [distance], [[comparison]], [[ttest]], [[table]] (docs/experiments.md).
@@ -544,7 +556,28 @@ Experiment parse_experiment(std::string_view toml_text, const std::string& path)
   }
 
   if (const toml::table* out = r.table(root, "outputs", false)) {
-    r.only_keys("outputs", *out, {"metrics", "keep", "reference"});
+    r.only_keys("outputs", *out,
+                {"metrics", "keep", "reference", "mesh_format", "image_size", "image_view"});
+    if (const toml::node* n = out->get("mesh_format")) {
+      x.mesh_format = r.string("outputs.mesh_format", *n);
+      if (x.mesh_format != "glb" && x.mesh_format != "ply" && x.mesh_format != "vtp") {
+        r.fail("outputs.mesh_format", *n, "expected \"glb\", \"ply\" or \"vtp\"");
+      }
+    }
+    if (const toml::node* n = out->get("image_view")) {
+      x.image_view = r.string("outputs.image_view", *n);
+      if (x.image_view != "front" && x.image_view != "side" && x.image_view != "top" &&
+          x.image_view != "iso") {
+        r.fail("outputs.image_view", *n, "expected front, side, top or iso");
+      }
+    }
+    if (const toml::node* n = out->get("image_size")) {
+      const std::string size = r.string("outputs.image_size", *n);
+      if (!parse_image_size(size, x.image_width, x.image_height)) {
+        r.fail("outputs.image_size", *n,
+               "expected \"WIDTHxHEIGHT\", each 1..16384, e.g. \"640x480\"");
+      }
+    }
     if (const toml::node* n = out->get("reference")) {
       x.reference_file = r.resolve("outputs.reference", *n);
     }

@@ -64,6 +64,10 @@ struct Experiment {
   std::vector<std::string> metrics;
   std::vector<std::string> keep;  // per-run files to keep: "tree", "mesh", "image"
   int keep_line = 0;
+  std::string mesh_format = "glb";  // outputs.mesh_format: glb | ply | vtp
+  int image_width = 640;            // outputs.image_size "WxH": kept images and report renders
+  int image_height = 480;
+  std::string image_view = "front";  // outputs.image_view: front | side | top | iso
   std::optional<double> time_limit_s;
   std::map<std::string, int> parameter_lines;  // line of every fixed, swept or sampled key
   int model_kind_line = 0;

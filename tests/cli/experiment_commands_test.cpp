@@ -181,8 +181,8 @@ namespace fspm::testing {
 namespace {
 
 // Two MPI ranks on this machine give the rows of the local runner (timings aside).
-// keep = ["mesh", "image"]: a binary glTF and a PNG per run, listed in the run's row; the report
-// renders the median tree of each point.
+// keep = ["mesh", "image"]: a mesh (here PLY) and a PNG of the requested size per run, listed in
+// the run's row; the report renders the median tree of the first point at the same size.
 TEST(ExperimentCommands, KeptMeshesAndImagesAndReportRenders) {
   const fs::path dir = scratch_dir("exp_keep");
   const std::string exp = write_file(
@@ -192,7 +192,8 @@ TEST(ExperimentCommands, KeptMeshesAndImagesAndReportRenders) {
           std::string(FSPM_SOURCE_DIR) +
           "/examples/lsystems/stochastic_plant.l\"\n"
           "[sweep]\nsteps = [2, 3]\n[outputs]\nmetrics = [\"internodes\", \"height\"]\n"
-          "keep = [\"mesh\", \"image\"]\n[report]\nrenders = 1\n");
+          "keep = [\"mesh\", \"image\"]\nmesh_format = \"ply\"\nimage_size = \"160x120\"\n"
+          "[report]\nrenders = 1\n");
   const std::string out = (dir / "out").string();
   const CommandResult run = run_fspm("run " + exp + " --jobs 2 --out " + out);
   if (run.err.find("needs a writer") != std::string::npos ||
@@ -200,6 +201,16 @@ TEST(ExperimentCommands, KeptMeshesAndImagesAndReportRenders) {
     GTEST_SKIP() << run.err;  // built without VTK, or no display and no xvfb-run
   }
   ASSERT_EQ(run.exit_code, 0) << run.err;
+  // PNG: the signature, then the IHDR chunk with the width and height (big-endian) at 16 and 20.
+  auto png_size = [](const std::string& png) {
+    if (png.size() < 24 || png.substr(1, 3) != "PNG") return std::pair<long, long>(-1, -1);
+    auto be = [&](std::size_t at) {
+      long v = 0;
+      for (std::size_t i = 0; i < 4; ++i) v = v * 256 + static_cast<unsigned char>(png[at + i]);
+      return v;
+    };
+    return std::pair<long, long>(be(16), be(20));
+  };
   const auto all = nlohmann::json::parse(run_fspm("results export " + out + " --json").out);
   ASSERT_EQ(all["runs"].size(), 4u);
   for (const auto& row : all["runs"]) {
@@ -207,10 +218,10 @@ TEST(ExperimentCommands, KeptMeshesAndImagesAndReportRenders) {
     char stem[32];
     std::snprintf(stem, sizeof stem, "runs/run-%07zu", index);
     EXPECT_EQ(row["files"],
-              nlohmann::json({std::string(stem) + ".glb", std::string(stem) + ".png"}));
-    // File signatures: glTF 2.0 binary ("glTF") and PNG ("\x89PNG").
-    EXPECT_EQ(read_text(dir / "out" / (std::string(stem) + ".glb")).substr(0, 4), "glTF");
-    EXPECT_EQ(read_text(dir / "out" / (std::string(stem) + ".png")).substr(1, 3), "PNG");
+              nlohmann::json({std::string(stem) + ".ply", std::string(stem) + ".png"}));
+    EXPECT_EQ(read_text(dir / "out" / (std::string(stem) + ".ply")).substr(0, 4), "ply\n");
+    EXPECT_EQ(png_size(read_text(dir / "out" / (std::string(stem) + ".png"))),
+              std::make_pair(160L, 120L));
   }
   EXPECT_FALSE(fs::exists(dir / "out" / "runs" / "run-0000000.tree"));  // not asked for
   // The report renders one tree (renders = 1: the first point), run again from its seed.
@@ -223,7 +234,7 @@ TEST(ExperimentCommands, KeptMeshesAndImagesAndReportRenders) {
   ASSERT_NE(at, std::string::npos) << md;
   const std::string figure = md.substr(md.find('(', at) + 1, 23);
   EXPECT_NE(md.find("steps = 2; internodes = "), std::string::npos) << md;
-  EXPECT_EQ(read_text(dir / "out" / figure).substr(1, 3), "PNG") << figure;
+  EXPECT_EQ(png_size(read_text(dir / "out" / figure)), std::make_pair(160L, 120L)) << figure;
   // --no-figures leaves the renders out.
   fs::remove_all(dir / "out" / "figures");
   ASSERT_EQ(run_fspm("report " + out + " --no-figures").exit_code, 0);

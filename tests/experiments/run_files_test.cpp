@@ -126,5 +126,30 @@ TEST(RunFiles, KeepAcceptsTreeMeshImageOnce) {
   EXPECT_THROW(synthetic("[outputs]\nkeep = [\"mesh\", \"mesh\"]\n"), ValueError);
 }
 
+TEST(RunFiles, MeshFormatImageSizeAndView) {
+  const Experiment defaults = synthetic("");
+  EXPECT_EQ(defaults.mesh_format, "glb");
+  EXPECT_EQ(defaults.image_width, 640);
+  EXPECT_EQ(defaults.image_height, 480);
+  EXPECT_EQ(defaults.image_view, "front");
+  const Experiment x = synthetic(
+      "[outputs]\nmesh_format = \"ply\"\nimage_size = \"160x90\"\nimage_view = \"iso\"\n");
+  EXPECT_EQ(x.mesh_format, "ply");
+  EXPECT_EQ(x.image_width, 160);
+  EXPECT_EQ(x.image_height, 90);
+  EXPECT_EQ(x.image_view, "iso");
+  for (const char* bad :
+       {"mesh_format = \"obj\"", "image_size = \"160\"", "image_size = \"0x90\"",
+        "image_size = \"160x90x2\"", "image_size = \"20000x10\"", "image_view = \"below\""}) {
+    try {
+      synthetic(std::string("[outputs]\n") + bad + "\n");
+      ADD_FAILURE() << "no error for " << bad;
+    } catch (const ValueError& e) {
+      EXPECT_EQ(e.line(), 8) << e.what();
+      EXPECT_NE(std::string(e.what()).find("outputs."), std::string::npos) << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace fspm::experiments
