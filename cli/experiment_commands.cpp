@@ -198,7 +198,10 @@ void run_command(const RunOptions& o) {
       throw IoError(
           "outputs.keep: images are rendered with VTK, which needs an X display; run under "
           "xvfb-run -a" +
-              std::string(o.mpi ? " on every rank (mpirun ... xvfb-run -a fspm run ...)" : ""),
+              std::string(
+                  o.mpi ? " (every rank needs a display: xvfb-run -a mpirun ... on one machine, "
+                          "mpirun ... xvfb-run -a fspm run ... on several)"
+                        : ""),
           x.path, x.keep_line);
     }
   }
