@@ -33,4 +33,16 @@ bool Scene::segment_blocked(const Eigen::Vector3d& a, const Eigen::Vector3d& b) 
   return false;
 }
 
+Scene translated(const Scene& scene, const Eigen::Vector3d& offset_m) {
+  Scene out = scene;
+  for (Sphere& s : out.spheres) s.center += offset_m;
+  for (Box& b : out.boxes) b.center += offset_m;
+  for (TriangleMesh& m : out.meshes) {
+    for (Eigen::Vector3d& v : m.vertices) v += offset_m;
+    m.update_bounds();
+  }
+  if (out.ground) out.ground->height_m += offset_m.z();
+  return out;
+}
+
 }  // namespace fspm::environment

@@ -22,4 +22,9 @@ struct Scene {
   bool segment_blocked(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
 };
 
+// The scene with every occluder moved by `offset_m` (the sky and a horizontal ground are unchanged
+// by a horizontal move; the ground follows a vertical one). Moving the scene by -p puts a tree
+// standing at the origin at p without touching the tree, so its analysis can be reused.
+Scene translated(const Scene& scene, const Eigen::Vector3d& offset_m);
+
 }  // namespace fspm::environment

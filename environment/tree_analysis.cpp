@@ -97,25 +97,34 @@ std::vector<Sphere> cluster_spheres(const std::vector<LeafCluster>& clusters) {
   return out;
 }
 
+void AnalysisParams::validate() const {
+  if (!(min_cluster_radius_m > 0.0)) {
+    throw ValueError("plastic analysis: min_cluster_radius_m must be > 0");
+  }
+  if (!(gamma0 > 0.0 && gamma0 <= 1.0)) {
+    throw ValueError("plastic analysis: gamma0 must be in (0, 1]");
+  }
+  if (light_directions < 1 || !(light_significance > 0.0)) {
+    throw ValueError("plastic analysis: light_directions must be >= 1, light_significance > 0");
+  }
+  if (!(pruning_strength >= 0.0)) {
+    throw ValueError("plastic analysis: pruning_strength (c_psi) must be >= 0");
+  }
+  if (!(phototropism >= 0.0 && gravitropism >= 0.0 && phototropism + gravitropism < 1.0)) {
+    throw ValueError("plastic analysis: tropism weights must be >= 0 with a sum < 1 (eq. 4.7)");
+  }
+  if (!(reference_percentile >= 0.0 && reference_percentile <= 1.0)) {
+    throw ValueError("plastic analysis: reference_percentile must be in [0, 1]");
+  }
+  if (!std::isfinite(skeleton_radius_m)) {
+    throw ValueError("plastic analysis: skeleton_radius_m must be a number (<= 0: automatic)");
+  }
+}
+
 TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
                           const Eigen::Vector3d& brightest) {
   if (t.empty()) throw ValueError("plastic analysis: the tree is empty");
-  if (!(params.min_cluster_radius_m > 0.0)) {
-    throw ValueError("plastic analysis: min_cluster_radius_m must be > 0");
-  }
-  if (!(params.gamma0 > 0.0 && params.gamma0 <= 1.0)) {
-    throw ValueError("plastic analysis: gamma0 must be in (0, 1]");
-  }
-  if (params.light_directions < 1 || !(params.light_significance > 0.0)) {
-    throw ValueError("plastic analysis: light_directions must be >= 1, light_significance > 0");
-  }
-  if (!(params.pruning_strength >= 0.0)) {
-    throw ValueError("plastic analysis: pruning_strength (c_psi) must be >= 0");
-  }
-  if (!(params.phototropism >= 0.0 && params.gravitropism >= 0.0 &&
-        params.phototropism + params.gravitropism < 1.0)) {
-    throw ValueError("plastic analysis: tropism weights must be >= 0 with a sum < 1 (eq. 4.7)");
-  }
+  params.validate();
   const std::size_t n = t.size();
   TreeAnalysis a;
   a.params = params;

@@ -43,6 +43,9 @@ struct AnalysisParams {
   // Light as in the growth model: few directions, a coarse shadow-volume cutoff (see Sky).
   int light_directions = 64;
   double light_significance = 0.01;
+
+  // Throws ValueError naming the parameter and its allowed range.
+  void validate() const;
 };
 
 struct LeafCluster {

@@ -7,15 +7,14 @@
 #include <fstream>
 #include <map>
 #include <mutex>
-#include <numbers>
 #include <sstream>
 
 #include "environment/growth_model.hpp"
 #include "environment/growth_params.hpp"
-#include "environment/light_model.hpp"
 #include "environment/plastic_adaptation.hpp"
 #include "environment/scene_file.hpp"
 #include "environment/tree_analysis.hpp"
+#include "experiments/light_interception.hpp"
 #include "experiments/metrics.hpp"
 
 namespace fspm::experiments {
@@ -44,23 +43,6 @@ env::Scene open_version(const env::Scene& scene) {
   open.sky = scene.sky;
   open.ground = scene.ground;
   return open;
-}
-
-// Light the leaf clusters absorb: sum of (1 - gamma) pi r^2 i_c, i_c the light at the cluster's
-// centre with the cluster itself left out (its own foliage does not shade its centre).
-double light_interception(const env::Scene& scene, const std::vector<env::Sphere>& clusters) {
-  if (clusters.empty()) return 0.0;
-  env::Scene lit = scene;
-  const auto first = static_cast<std::uint32_t>(lit.spheres.size());
-  lit.spheres.insert(lit.spheres.end(), clusters.begin(), clusters.end());
-  const env::LightModel light(lit);
-  double total = 0.0;
-  for (std::uint32_t i = 0; i < clusters.size(); ++i) {
-    const env::Sphere& c = clusters[i];
-    const double area = std::numbers::pi * c.radius_m * c.radius_m;
-    total += (1.0 - c.translucency) * area * light.evaluate(c.center, first + i).light;
-  }
-  return total;
 }
 
 class GrowModel final : public Model {

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "experiments/adapt_model.hpp"
 #include "experiments/greenlab_model.hpp"
 #include "experiments/grow_model.hpp"
 #include "experiments/lsystem_model.hpp"
@@ -15,6 +16,14 @@ void require_file(const Experiment& x) {
     throw ValueError("model.file: missing (model kind " + x.model_kind + " needs a file)", x.path,
                      x.model_kind_line);
   }
+}
+
+// Folder that relative scene parameters are resolved against: the experiment file's.
+std::string base_dir(const Experiment& x) {
+  const std::string dir = x.path == "<string>"
+                              ? std::string(".")
+                              : std::filesystem::path(x.path).parent_path().string();
+  return dir.empty() ? "." : dir;
 }
 
 }  // namespace
@@ -31,15 +40,14 @@ std::unique_ptr<Model> make_model(const Experiment& x) {
     require_file(x);
     return make_greenlab_model(x.model_file);
   }
-  if (x.model_kind == "grow") {
-    const std::string base_dir = x.path == "<string>"
-                                     ? std::string(".")
-                                     : std::filesystem::path(x.path).parent_path().string();
-    return make_grow_model(x.model_file, x.model_scene, base_dir.empty() ? "." : base_dir);
+  if (x.model_kind == "grow") return make_grow_model(x.model_file, x.model_scene, base_dir(x));
+  if (x.model_kind == "adapt") {
+    require_file(x);
+    return make_adapt_model(x.model_file, x.model_scene, base_dir(x));
   }
   if (x.model_kind == "synthetic") return make_synthetic_model();
   throw ValueError("model.kind: unknown kind '" + x.model_kind +
-                       "' (expected lsystem, greenlab, grow or synthetic)",
+                       "' (expected lsystem, greenlab, grow, adapt or synthetic)",
                    x.path, x.model_kind_line);
 }
 

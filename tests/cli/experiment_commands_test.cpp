@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <set>
@@ -62,6 +63,45 @@ TEST(ExperimentCommands, ExampleSweepExportsOneCsvRowPerRun) {
   const CommandResult again = run_fspm("run " + example + " --out " + (dir / "out").string());
   EXPECT_EQ(again.exit_code, 1);
   EXPECT_NE(again.err.find("--resume"), std::string::npos) << again.err;
+}
+
+// The adapt kind's example: a grown tree moved toward a wall. For every c_psi the tree nearest
+// the wall bends more, intercepts less light and loses at least as much as the farthest one; far
+// from the wall the default c_psi prunes nothing.
+TEST(ExperimentCommands, AdaptExampleSweepsTheWallDistance) {
+  const fs::path dir = scratch_dir("exp_adapt");
+  const std::string example =
+      std::string(FSPM_SOURCE_DIR) + "/examples/experiments/wall_distance.toml";
+  const CommandResult run =
+      run_fspm("run " + example + " --jobs 2 --out " + (dir / "out").string() + " --json");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(nlohmann::json::parse(run.out)["ok"], 15);
+  const CommandResult out = run_fspm("results export " + (dir / "out").string() + " --json");
+  ASSERT_EQ(out.exit_code, 0) << out.err;
+  const auto rows = nlohmann::json::parse(out.out)["runs"];
+  ASSERT_EQ(rows.size(), 15u);
+  std::map<std::pair<double, double>, nlohmann::json> at;  // (c_psi, x) -> metrics
+  std::set<double> xs, strengths;
+  for (const auto& r : rows) {
+    const double x = r["parameters"]["tree_x_m"].get<double>();
+    const double s = r["parameters"]["pruning_strength"].get<double>();
+    at[{s, x}] = r["metrics"];
+    xs.insert(x);
+    strengths.insert(s);
+  }
+  ASSERT_EQ(xs.size(), 5u);
+  ASSERT_EQ(strengths.size(), 3u);
+  const double far = *xs.begin(), near = *xs.rbegin();
+  for (const double s : strengths) {
+    const auto& f = at[{s, far}];
+    const auto& n = at[{s, near}];
+    EXPECT_GT(n["tip_displacement"].get<double>(), f["tip_displacement"].get<double>()) << s;
+    EXPECT_LT(n["light_interception"].get<double>(), f["light_interception"].get<double>()) << s;
+    EXPECT_GE(n["pruned_nodes"].get<double>(), f["pruned_nodes"].get<double>()) << s;
+    EXPECT_GT(n["pruned_nodes"].get<double>(), 0.0) << s;
+  }
+  const auto& default_far = at[{0.8, far}];
+  EXPECT_EQ(default_far["pruned_nodes"].get<double>(), 0.0);
 }
 
 TEST(ExperimentCommands, BadExperimentIsReportedBeforeAnyRun) {

@@ -1,0 +1,218 @@
+#include "experiments/adapt_model.hpp"
+
+#include <Eigen/Core>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <future>
+#include <map>
+#include <mutex>
+#include <tuple>
+
+#include "environment/plastic_adaptation.hpp"
+#include "environment/scene_file.hpp"
+#include "environment/tree_analysis.hpp"
+#include "experiments/light_interception.hpp"
+#include "experiments/metrics.hpp"
+#include "fspm/tree_file.hpp"
+
+namespace fspm::experiments {
+namespace {
+
+namespace env = fspm::environment;
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+bool is_analysis_parameter(const std::string& name) {
+  static const char* const kNames[] = {
+      "skeleton_radius_m",    "min_cluster_radius_m", "gamma0",       "pruning_strength",
+      "reference_percentile", "temporal_pruning",     "phototropism", "gravitropism",
+      "light_directions",     "light_significance"};
+  for (const char* n : kNames) {
+    if (name == n) return true;
+  }
+  return false;
+}
+
+// The analysis parameters of a run over the defaults; validated.
+env::AnalysisParams analysis_params(const ParameterSet& parameters) {
+  env::AnalysisParams p;
+  for (const auto& [name, value] : parameters) {
+    if (name == "skeleton_radius_m") p.skeleton_radius_m = parameter_number(value, name);
+    if (name == "min_cluster_radius_m") p.min_cluster_radius_m = parameter_number(value, name);
+    if (name == "gamma0") p.gamma0 = parameter_number(value, name);
+    if (name == "pruning_strength") p.pruning_strength = parameter_number(value, name);
+    if (name == "reference_percentile") p.reference_percentile = parameter_number(value, name);
+    if (name == "phototropism") p.phototropism = parameter_number(value, name);
+    if (name == "gravitropism") p.gravitropism = parameter_number(value, name);
+    if (name == "light_significance") p.light_significance = parameter_number(value, name);
+    if (name == "temporal_pruning") {
+      const std::int64_t v = parameter_integer(value, name);
+      if (v != 0 && v != 1) throw ValueError("temporal_pruning must be 0 or 1");
+      p.temporal_pruning = v == 1;
+    }
+    if (name == "light_directions") {
+      const std::int64_t v = parameter_integer(value, name);
+      if (v < 1 || v > 4096) throw ValueError("light_directions must be in [1, 4096]");
+      p.light_directions = static_cast<int>(v);
+    }
+  }
+  p.validate();
+  return p;
+}
+
+using AnalysisKey =
+    std::tuple<double, double, double, double, double, bool, double, double, int, double>;
+
+AnalysisKey key_of(const env::AnalysisParams& p) {
+  return {p.skeleton_radius_m,    p.min_cluster_radius_m, p.gamma0,       p.pruning_strength,
+          p.reference_percentile, p.temporal_pruning,     p.phototropism, p.gravitropism,
+          p.light_directions,     p.light_significance};
+}
+
+class AdaptModel final : public Model {
+ public:
+  AdaptModel(const std::string& tree_file, const std::string& scene_file, std::string base_dir)
+      : tree_(read_tree_file(tree_file)),
+        tree_file_(tree_file),
+        default_scene_(scene_file),
+        base_dir_(std::move(base_dir)) {
+    if (tree_.empty()) throw ValueError("model.file: the tree is empty", tree_file);
+    if (!default_scene_.empty()) scene(default_scene_);
+  }
+
+  void check_parameter(const std::string& name, const ParameterValue& value) const override {
+    if (name == "scene") {
+      const std::string s = text(value, name);
+      if (s != "open") scene(resolve(s));
+      return;
+    }
+    if (name == "tree_x_m" || name == "tree_y_m") {
+      if (!std::isfinite(parameter_number(value, name))) {
+        throw ValueError(name + " must be a finite number");
+      }
+      return;
+    }
+    if (!is_analysis_parameter(name)) {
+      throw ValueError(
+          "unknown parameter of model kind adapt (expected scene, tree_x_m, "
+          "tree_y_m or an analysis parameter: skeleton_radius_m, "
+          "min_cluster_radius_m, gamma0, pruning_strength, reference_percentile, "
+          "temporal_pruning, phototropism, gravitropism, light_directions, "
+          "light_significance)");
+    }
+    analysis_params({{name, value}});
+  }
+
+  void check_setup(const ParameterSet& parameters) const override { analysis_params(parameters); }
+
+  RunResult run(const ParameterSet& parameters, std::uint64_t /*seed*/,
+                const RunContext& context) const override {
+    const env::AnalysisParams params = analysis_params(parameters);
+    std::string scene_path = default_scene_;
+    Eigen::Vector3d at = Eigen::Vector3d::Zero();
+    for (const auto& [name, value] : parameters) {
+      if (name == "scene") {
+        const std::string s = text(value, name);
+        scene_path = s == "open" ? std::string() : resolve(s);
+      }
+      if (name == "tree_x_m") at.x() = parameter_number(value, name);
+      if (name == "tree_y_m") at.y() = parameter_number(value, name);
+    }
+    const env::Scene empty;
+    // The tree stays where it is; the scene moves the other way.
+    const env::Scene placed = env::translated(scene_path.empty() ? empty : scene(scene_path), -at);
+
+    RunResult result;
+    const auto [analysis, analysis_seconds] = analysis_for(params, placed.sky.brightest);
+    result.metrics["analysis_seconds"] = analysis_seconds;
+    context.check();
+    const Clock::time_point t0 = Clock::now();
+    env::AdaptationResult adapted = env::adapt_tree(tree_, *analysis, placed);
+    result.metrics["adapt_seconds"] = seconds_since(t0);
+    result.metrics["pruned_nodes"] = static_cast<double>(adapted.pruned_nodes);
+    result.metrics["tip_displacement"] = adapted.mean_tip_displacement_m;
+    result.metrics["light_interception"] =
+        light_interception(placed, env::cluster_spheres(adapted.clusters));
+    result.tree = env::remove_pruned(adapted.tree);
+    for (auto& [name, value] : tree_metrics(*result.tree)) result.metrics[name] = value;
+    return result;
+  }
+
+ private:
+  using Analysis = std::pair<std::shared_ptr<const env::TreeAnalysis>, double>;
+
+  static std::string text(const ParameterValue& value, const std::string& name) {
+    if (const auto* s = std::get_if<std::string>(&value)) return *s;
+    throw ValueError(name + " must be text");
+  }
+
+  std::string resolve(const std::string& path) const {
+    fs::path p(path);
+    if (p.is_relative()) p = fs::path(base_dir_) / p;
+    return p.lexically_normal().string();
+  }
+
+  const env::Scene& scene(const std::string& path) const {
+    const std::lock_guard lock(mutex_);
+    auto it = scenes_.find(path);
+    if (it == scenes_.end()) it = scenes_.emplace(path, env::read_scene_file(path)).first;
+    return it->second;
+  }
+
+  // The analysis for these parameters, made by the first run that needs it while the others
+  // wait for it (the sky the tree grew under is the scene's: the open-grown tree saw the same
+  // brightest point). Its time is reported with every run that uses it.
+  Analysis analysis_for(const env::AnalysisParams& params, const Eigen::Vector3d& brightest) const {
+    const AnalysisKey key = key_of(params);
+    const std::tuple<double, double, double> sky{brightest.x(), brightest.y(), brightest.z()};
+    std::promise<Analysis> promise;
+    std::shared_future<Analysis> future;
+    bool mine = false;
+    {
+      const std::lock_guard lock(mutex_);
+      auto it = analyses_.find({key, sky});
+      if (it == analyses_.end()) {
+        future = promise.get_future().share();
+        analyses_.emplace(std::make_pair(key, sky), future);
+        mine = true;
+      } else {
+        future = it->second;
+      }
+    }
+    if (mine) {
+      try {
+        const Clock::time_point t0 = Clock::now();
+        auto a = std::make_shared<const env::TreeAnalysis>(env::analyze_tree(
+            tree_, params, brightest.norm() > 0 ? brightest : Eigen::Vector3d::UnitZ()));
+        promise.set_value({std::move(a), seconds_since(t0)});
+      } catch (...) {
+        promise.set_exception(std::current_exception());
+      }
+    }
+    return future.get();
+  }
+
+  TreeGraph tree_;
+  std::string tree_file_;
+  std::string default_scene_;
+  std::string base_dir_;
+  mutable std::mutex mutex_;
+  mutable std::map<std::string, env::Scene> scenes_;
+  mutable std::map<std::pair<AnalysisKey, std::tuple<double, double, double>>,
+                   std::shared_future<Analysis>>
+      analyses_;
+};
+
+}  // namespace
+
+std::unique_ptr<Model> make_adapt_model(const std::string& tree_file, const std::string& scene_file,
+                                        const std::string& base_dir) {
+  return std::make_unique<AdaptModel>(tree_file, scene_file, base_dir);
+}
+
+}  // namespace fspm::experiments

@@ -1,0 +1,26 @@
+#include "experiments/light_interception.hpp"
+
+#include <cstdint>
+#include <numbers>
+
+#include "environment/light_model.hpp"
+
+namespace fspm::experiments {
+
+double light_interception(const environment::Scene& scene,
+                          const std::vector<environment::Sphere>& clusters) {
+  if (clusters.empty()) return 0.0;
+  environment::Scene lit = scene;
+  const auto first = static_cast<std::uint32_t>(lit.spheres.size());
+  lit.spheres.insert(lit.spheres.end(), clusters.begin(), clusters.end());
+  const environment::LightModel light(lit);
+  double total = 0.0;
+  for (std::uint32_t i = 0; i < clusters.size(); ++i) {
+    const environment::Sphere& c = clusters[i];
+    const double area = std::numbers::pi * c.radius_m * c.radius_m;
+    total += (1.0 - c.translucency) * area * light.evaluate(c.center, first + i).light;
+  }
+  return total;
+}
+
+}  // namespace fspm::experiments
