@@ -3,6 +3,8 @@
 # per benchmark program (Google Benchmark's format) on stdout. Pass a regex to filter programs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# ccache keys on paths relative to the checkout, so a fresh clone elsewhere (CI) reuses the cache.
+export CCACHE_BASEDIR="$(pwd)"
 filter="${1:-.}"
 scripts/deps.sh >&2
 cmake -S . -B build-bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DFSPM_BUILD_TESTS=OFF \

@@ -5,6 +5,8 @@
 # Exits non-zero on any failure; the output ends with the CTest summary of the main build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# ccache keys on paths relative to the checkout, so a fresh clone elsewhere (CI) reuses the cache.
+export CCACHE_BASEDIR="$(pwd)"
 root=$(pwd)
 jobs=$(nproc)
 
