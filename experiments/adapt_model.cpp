@@ -3,24 +3,22 @@
 #include <Eigen/Core>
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <future>
 #include <map>
 #include <mutex>
 #include <tuple>
 
 #include "environment/plastic_adaptation.hpp"
-#include "environment/scene_file.hpp"
 #include "environment/tree_analysis.hpp"
 #include "experiments/light_interception.hpp"
 #include "experiments/metrics.hpp"
+#include "experiments/scene_cache.hpp"
 #include "fspm/tree_file.hpp"
 
 namespace fspm::experiments {
 namespace {
 
 namespace env = fspm::environment;
-namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) {
@@ -80,14 +78,14 @@ class AdaptModel final : public Model {
       : tree_(read_tree_file(tree_file)),
         tree_file_(tree_file),
         default_scene_(scene_file),
-        base_dir_(std::move(base_dir)) {
+        scenes_(std::move(base_dir)) {
     if (tree_.empty()) throw ValueError("model.file: the tree is empty", tree_file);
     if (!default_scene_.empty()) scene(default_scene_);
   }
 
   void check_parameter(const std::string& name, const ParameterValue& value) const override {
     if (name == "scene") {
-      const std::string s = text(value, name);
+      const std::string s = parameter_string(value, name);
       if (s != "open") scene(resolve(s));
       return;
     }
@@ -117,7 +115,7 @@ class AdaptModel final : public Model {
     Eigen::Vector3d at = Eigen::Vector3d::Zero();
     for (const auto& [name, value] : parameters) {
       if (name == "scene") {
-        const std::string s = text(value, name);
+        const std::string s = parameter_string(value, name);
         scene_path = s == "open" ? std::string() : resolve(s);
       }
       if (name == "tree_x_m") at.x() = parameter_number(value, name);
@@ -146,23 +144,8 @@ class AdaptModel final : public Model {
  private:
   using Analysis = std::pair<std::shared_ptr<const env::TreeAnalysis>, double>;
 
-  static std::string text(const ParameterValue& value, const std::string& name) {
-    if (const auto* s = std::get_if<std::string>(&value)) return *s;
-    throw ValueError(name + " must be text");
-  }
-
-  std::string resolve(const std::string& path) const {
-    fs::path p(path);
-    if (p.is_relative()) p = fs::path(base_dir_) / p;
-    return p.lexically_normal().string();
-  }
-
-  const env::Scene& scene(const std::string& path) const {
-    const std::lock_guard lock(mutex_);
-    auto it = scenes_.find(path);
-    if (it == scenes_.end()) it = scenes_.emplace(path, env::read_scene_file(path)).first;
-    return it->second;
-  }
+  const env::Scene& scene(const std::string& path) const { return scenes_.get(path); }
+  std::string resolve(const std::string& path) const { return scenes_.resolve(path); }
 
   // The analysis for these parameters, made by the first run that needs it while the others
   // wait for it (the sky the tree grew under is the scene's: the open-grown tree saw the same
@@ -200,9 +183,8 @@ class AdaptModel final : public Model {
   TreeGraph tree_;
   std::string tree_file_;
   std::string default_scene_;
-  std::string base_dir_;
-  mutable std::mutex mutex_;
-  mutable std::map<std::string, env::Scene> scenes_;
+  mutable std::mutex mutex_;  // guards analyses_
+  SceneCache scenes_;
   mutable std::map<std::pair<AnalysisKey, std::tuple<double, double, double>>,
                    std::shared_future<Analysis>>
       analyses_;

@@ -3,25 +3,21 @@
 #include <toml++/toml.h>
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <fstream>
-#include <map>
-#include <mutex>
 #include <sstream>
 
 #include "environment/growth_model.hpp"
 #include "environment/growth_params.hpp"
 #include "environment/plastic_adaptation.hpp"
-#include "environment/scene_file.hpp"
 #include "environment/tree_analysis.hpp"
 #include "experiments/light_interception.hpp"
 #include "experiments/metrics.hpp"
+#include "experiments/scene_cache.hpp"
 
 namespace fspm::experiments {
 namespace {
 
 namespace env = fspm::environment;
-namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) {
@@ -51,19 +47,19 @@ class GrowModel final : public Model {
       : base_text_(params_file.empty() ? std::string() : read_text(params_file)),
         base_name_(params_file.empty() ? std::string("<grow parameters>") : params_file),
         default_scene_(scene_file),
-        base_dir_(std::move(base_dir)) {
+        scenes_(std::move(base_dir)) {
     env::parse_growth_params(base_text_, base_name_);  // report a bad file before any run
     if (!default_scene_.empty()) scene(default_scene_);
   }
 
   void check_parameter(const std::string& name, const ParameterValue& value) const override {
     if (name == "set") {
-      const std::string s = text(value, name);
+      const std::string s = parameter_string(value, name);
       if (s != "O" && s != "G" && s != "T") throw ValueError("set must be \"O\", \"G\" or \"T\"");
       return;
     }
     if (name == "scene") {
-      const std::string s = text(value, name);
+      const std::string s = parameter_string(value, name);
       if (s != "open") scene(resolve(s));
       return;
     }
@@ -84,7 +80,7 @@ class GrowModel final : public Model {
       const double years = growth_params(parameters, 1).years;
       double factor = 1.0;
       if (const auto it = parameters.find("set"); it != parameters.end()) {
-        const std::string s = text(it->second, "set");
+        const std::string s = parameter_string(it->second, "set");
         factor = s == "G" ? 0.3 : s == "T" ? 0.7 : 1.0;
       }
       return factor * std::exp(0.25 * std::min(years, 2000.0));
@@ -100,9 +96,9 @@ class GrowModel final : public Model {
     std::string scene_path = default_scene_;
     bool measure_regrowth = false;
     if (const auto it = parameters.find("set"); it != parameters.end())
-      set = text(it->second, "set");
+      set = parameter_string(it->second, "set");
     if (const auto it = parameters.find("scene"); it != parameters.end()) {
-      const std::string s = text(it->second, "scene");
+      const std::string s = parameter_string(it->second, "scene");
       scene_path = s == "open" ? std::string() : resolve(s);
     }
     if (const auto it = parameters.find("measure_regrowth"); it != parameters.end()) {
@@ -152,24 +148,8 @@ class GrowModel final : public Model {
   }
 
  private:
-  static std::string text(const ParameterValue& value, const std::string& name) {
-    if (const auto* s = std::get_if<std::string>(&value)) return *s;
-    throw ValueError(name + " must be text");
-  }
-
-  std::string resolve(const std::string& path) const {
-    fs::path p(path);
-    if (p.is_relative()) p = fs::path(base_dir_) / p;
-    return p.lexically_normal().string();
-  }
-
-  // Parsed once per path; runs share them read-only.
-  const env::Scene& scene(const std::string& path) const {
-    const std::lock_guard lock(mutex_);
-    auto it = scenes_.find(path);
-    if (it == scenes_.end()) it = scenes_.emplace(path, env::read_scene_file(path)).first;
-    return it->second;
-  }
+  const env::Scene& scene(const std::string& path) const { return scenes_.get(path); }
+  std::string resolve(const std::string& path) const { return scenes_.resolve(path); }
 
   // The parameter file's table with the run's growth parameters put over it, read by the growth
   // parameter parser so that names, ranges and messages are those of `fspm grow`.
@@ -190,9 +170,7 @@ class GrowModel final : public Model {
   std::string base_text_;
   std::string base_name_;
   std::string default_scene_;
-  std::string base_dir_;
-  mutable std::mutex mutex_;
-  mutable std::map<std::string, env::Scene> scenes_;
+  SceneCache scenes_;
 };
 
 }  // namespace

@@ -24,6 +24,11 @@ double parameter_number(const ParameterValue& value, const std::string& name) {
                    std::get<std::string>(value) + "'");
 }
 
+std::string parameter_string(const ParameterValue& value, const std::string& name) {
+  if (const auto* s = std::get_if<std::string>(&value)) return *s;
+  throw ValueError(name + " must be text, not the number " + parameter_text(value));
+}
+
 std::int64_t parameter_integer(const ParameterValue& value, const std::string& name) {
   if (const auto* i = std::get_if<std::int64_t>(&value)) return *i;
   const double d = parameter_number(value, name);

@@ -18,6 +18,9 @@ std::string parameter_text(const ParameterValue& value);
 // The value as a real number; throws ValueError naming `name` when it is text.
 double parameter_number(const ParameterValue& value, const std::string& name);
 
+// The text of a text value; throws ValueError naming `name` when it is a number.
+std::string parameter_string(const ParameterValue& value, const std::string& name);
+
 // The value as an integer; throws ValueError naming `name` when it is text or a real with a
 // fractional part.
 std::int64_t parameter_integer(const ParameterValue& value, const std::string& name);
