@@ -5,6 +5,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 # ccache keys on paths relative to the checkout, so a fresh clone elsewhere (CI) reuses the cache.
 export CCACHE_BASEDIR="$(pwd)"
+# Debug builds would otherwise hash the build folder too (it is in their debug information).
+export CCACHE_NOHASHDIR=true
 filter="${1:-.}"
 scripts/deps.sh >&2
 cmake -S . -B build-bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DFSPM_BUILD_TESTS=OFF \

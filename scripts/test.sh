@@ -7,6 +7,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 # ccache keys on paths relative to the checkout, so a fresh clone elsewhere (CI) reuses the cache.
 export CCACHE_BASEDIR="$(pwd)"
+# Debug builds would otherwise hash the build folder too (it is in their debug information).
+export CCACHE_NOHASHDIR=true
 root=$(pwd)
 jobs=$(nproc)
 
