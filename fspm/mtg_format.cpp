@@ -1,8 +1,15 @@
 #include "fspm/mtg_format.hpp"
 
+#include <Eigen/Geometry>
+#include <array>
 #include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
 #include <ostream>
 #include <vector>
+
+#include "fspm/error.hpp"
 
 #include "fspm/number_text.hpp"
 
@@ -105,6 +112,404 @@ void write_mtg(const TreeGraph& tree, std::ostream& out) {
     }
     for (auto b = branches.rbegin(); b != branches.rend(); ++b) stack.push_back({*b, "+"});
   }
+}
+
+}  // namespace fspm
+
+namespace fspm {
+namespace {
+
+// One entity of the MTG table, at any scale.
+struct Entity {
+  char symbol = 'I';
+  char relation = 0;  // '/', '<', '+', or 0 for a top-level entity
+  int ref = -1;       // the entity it relates to
+  int scale = 1;
+  int complex = -1;  // the entity it is a component of (-1: none)
+  // The complex whose main axis it continues: its complex for a first component ('/'), its
+  // predecessor's for '<', none (-1) for a branch ('+').
+  int axis_of = -1;
+  int line = 0;
+  std::vector<std::string_view> values;  // feature cells (the last entity of a line only)
+};
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) {
+    s.remove_prefix(1);
+  }
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
+    s.remove_suffix(1);
+  return s;
+}
+
+std::vector<std::string_view> split_tabs(std::string_view line) {
+  std::vector<std::string_view> cells;
+  std::size_t from = 0;
+  while (true) {
+    const std::size_t tab = line.find('\t', from);
+    cells.push_back(line.substr(from, tab == std::string_view::npos ? tab : tab - from));
+    if (tab == std::string_view::npos) break;
+    from = tab + 1;
+  }
+  return cells;
+}
+
+bool is_letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+OrganKind kind_of(char symbol) {
+  switch (symbol) {
+    case 'L':
+      return OrganKind::kLeaf;
+    case 'F':
+      return OrganKind::kFlower;
+    case 'B':
+      return OrganKind::kBud;
+    default:
+      return OrganKind::kInternode;
+  }
+}
+
+// A unit vector perpendicular to d.
+Eigen::Vector3d perpendicular(const Eigen::Vector3d& d) {
+  const Eigen::Vector3d a =
+      std::abs(d.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  return d.cross(a).normalized();
+}
+
+}  // namespace
+
+TreeGraph parse_mtg(std::string_view text, const std::string& file) {
+  // Lines without comments ('#' to the end of the line).
+  std::vector<std::string_view> lines;
+  for (std::size_t from = 0; from <= text.size();) {
+    std::size_t end = text.find('\n', from);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view line = text.substr(from, end - from);
+    if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) {
+      line = line.substr(0, hash);
+    }
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    lines.push_back(line);
+    from = end + 1;
+  }
+  const auto fail = [&](const std::string& what, std::size_t index) -> void {
+    throw ParseError(what, file, static_cast<int>(index + 1));
+  };
+
+  // CLASSES gives each symbol's scale (used to find what '^' and a branch refer to); features
+  // are named in the table's own header.
+  std::size_t k = 0;
+  std::array<int, 128> class_scale;
+  class_scale.fill(-1);
+  while (k < lines.size() && trim(lines[k]) != "MTG:") {
+    if (trim(lines[k]) == "CLASSES:") {
+      for (++k; k < lines.size(); ++k) {
+        const std::string_view row = trim(lines[k]);
+        if (row.empty() || row.starts_with("SYMBOL")) continue;
+        if (row.back() == ':' || row.starts_with("DESCRIPTION") || row.starts_with("FEATURES") ||
+            row == "MTG:") {
+          break;
+        }
+        const std::vector<std::string_view> cells = split_tabs(row);
+        const std::string_view sym = trim(cells[0]);
+        if (sym.size() == 1 && cells.size() > 1) {
+          if (const auto sc = parse_number(trim(cells[1]))) {
+            class_scale[static_cast<unsigned char>(sym[0]) & 127] = static_cast<int>(*sc);
+          }
+        }
+      }
+      continue;
+    }
+    ++k;
+  }
+  if (k == lines.size()) fail("no 'MTG:' section: expected an MTG (FORM-A) file", 0);
+  ++k;
+  while (k < lines.size() && trim(lines[k]).empty()) ++k;
+  if (k == lines.size() || !trim(lines[k]).starts_with("ENTITY-CODE")) {
+    fail("expected the header line 'ENTITY-CODE' after 'MTG:'", std::min(k, lines.size() - 1));
+  }
+  // Header: ENTITY-CODE, empty cells for the code columns, then the feature names.
+  const std::vector<std::string_view> header = split_tabs(lines[k]);
+  std::size_t code_columns = 1;
+  while (code_columns < header.size() && trim(header[code_columns]).empty()) ++code_columns;
+  std::vector<std::string> features;
+  for (std::size_t c = code_columns; c < header.size(); ++c) {
+    features.emplace_back(trim(header[c]));
+  }
+  ++k;
+
+  std::vector<Entity> entities;
+  // Entities written in each code column, oldest first.
+  std::vector<std::vector<int>> column_entities(code_columns);
+  // A symbol's scale: CLASSES', else the scale it had where it appeared first in the table.
+  std::array<int, 128> seen_scale;
+  seen_scale.fill(-1);
+  const auto scale_of_symbol = [&](char c) {
+    const int from_classes = class_scale[static_cast<unsigned char>(c) & 127];
+    return from_classes >= 0 ? from_classes : seen_scale[static_cast<unsigned char>(c) & 127];
+  };
+  // Whether an entity already in the table has the scale of a new entity's symbol (unknown for
+  // a symbol not seen yet: then any entity will do).
+  const auto same_scale = [&](const Entity& candidate, char symbol) {
+    const int want = scale_of_symbol(symbol);
+    if (want < 0) return true;
+    const int have = class_scale[static_cast<unsigned char>(candidate.symbol) & 127];
+    return (have >= 0 ? have : candidate.scale) == want;
+  };
+  // What a line's first entity refers to in a column: for '/', the last entity there; for '<'
+  // and '+', the last one of the same scale (so that "^<U2" follows the unit U1 above, not the
+  // internodes written after it).
+  const auto last_in_column = [&](std::size_t col, char relation, char symbol) {
+    const std::vector<int>& list = column_entities[col];
+    for (auto it = list.rbegin(); it != list.rend(); ++it) {
+      if (relation == '/' || same_scale(entities[static_cast<std::size_t>(*it)], symbol)) {
+        return *it;
+      }
+    }
+    return -1;
+  };
+  for (; k < lines.size(); ++k) {
+    if (trim(lines[k]).empty()) continue;
+    const std::vector<std::string_view> cells = split_tabs(lines[k]);
+    std::size_t column = 0;
+    while (column < cells.size() && column < code_columns && trim(cells[column]).empty()) {
+      ++column;
+    }
+    if (column >= code_columns || column >= cells.size()) {
+      fail("expected an entity code in the first " + std::to_string(code_columns) +
+               " columns (the ENTITY-CODE columns of the header)",
+           k);
+    }
+    const std::string_view code = trim(cells[column]);
+    int previous = -1;
+    for (std::size_t p = 0; p < code.size();) {
+      Entity e;
+      e.line = static_cast<int>(k + 1);
+      bool same_column = false;
+      if (code[p] == '^') {
+        same_column = true;
+        ++p;
+      }
+      if (p >= code.size() || (code[p] != '/' && code[p] != '<' && code[p] != '+')) {
+        fail("entity code '" + std::string(code) +
+                 "': expected a relation '/', '<' or '+' (optionally after '^')",
+             k);
+      }
+      e.relation = code[p++];
+      if (p >= code.size() || !is_letter(code[p])) {
+        fail("entity code '" + std::string(code) + "': expected a symbol letter after '" +
+                 std::string(1, e.relation) + "'",
+             k);
+      }
+      e.symbol = code[p++];
+      while (p < code.size() && is_digit(code[p])) ++p;  // the index: not needed
+      if (previous >= 0) {
+        if (same_column) fail("entity code '" + std::string(code) + "': '^' only at its start", k);
+        e.ref = previous;
+      } else if (same_column) {
+        e.ref = last_in_column(column, e.relation, e.symbol);
+        if (e.ref < 0) {
+          fail(
+              "'^' refers to an entity above in this column (of the same scale), but there is "
+              "none",
+              k);
+        }
+      } else if (column > 0) {
+        e.ref = last_in_column(column - 1, e.relation, e.symbol);
+        if (e.ref < 0) {
+          fail("the entity refers to the column on its left, which holds none of its scale", k);
+        }
+      }
+      if (e.ref < 0 && e.relation != '/') {
+        fail("the first entity must be a plant or component ('/'), not '" +
+                 std::string(1, e.relation) + "'",
+             k);
+      }
+      if (e.ref >= 0) {
+        const Entity& r = entities[static_cast<std::size_t>(e.ref)];
+        e.scale = e.relation == '/' ? r.scale + 1 : r.scale;
+        e.complex = e.relation == '/' ? e.ref : r.complex;
+        e.axis_of = e.relation == '/' ? e.ref : e.relation == '<' ? r.axis_of : -1;
+      }
+      int& seen = seen_scale[static_cast<unsigned char>(e.symbol) & 127];
+      if (seen < 0) seen = e.scale;
+      previous = static_cast<int>(entities.size());
+      column_entities[column].push_back(previous);
+      entities.push_back(std::move(e));
+    }
+    if (previous < 0) fail("empty entity code", k);
+    Entity& last = entities[static_cast<std::size_t>(previous)];
+    for (std::size_t c = code_columns; c < cells.size(); ++c) last.values.push_back(cells[c]);
+    if (last.values.size() > features.size()) {
+      bool extra = false;
+      for (std::size_t c = features.size(); c < last.values.size(); ++c) {
+        extra = extra || !trim(last.values[c]).empty();
+      }
+      if (extra) fail("more feature values than feature names in the header", k);
+    }
+  }
+  if (entities.empty()) return {};
+
+  // The finest scale's entities are the nodes. A component's parent at that scale: its
+  // predecessor or bearer there, or, for the first component of a complex ('/'), the last
+  // finest component of whatever that complex follows or is borne by.
+  int finest = 0;
+  for (const Entity& e : entities) finest = std::max(finest, e.scale);
+  if (finest <= 1) return {};  // plants without components (what write_mtg gives for no tree)
+  std::vector<NodeId> node_of(entities.size(), kNoNode);
+  std::vector<NodeId> last_component(entities.size(), kNoNode);
+  std::vector<char> edge(entities.size(), 0);  // '<' or '+' toward the node's parent
+
+  // Feature columns by role.
+  const auto find_feature = [&](std::initializer_list<const char*> names) {
+    for (const char* n : names) {
+      for (std::size_t f = 0; f < features.size(); ++f) {
+        if (features[f] == n) return static_cast<int>(f);
+      }
+    }
+    return -1;
+  };
+  const int fx = find_feature({"XX"}), fy = find_feature({"YY"}), fz = find_feature({"ZZ"});
+  const int f_length = find_feature({"Length", "length"});
+  const int f_radius = find_feature({"Radius", "radius"});
+  const int f_diameter = find_feature({"Diameter", "diameter", "TopDia", "TopDiameter"});
+  const int f_birth = find_feature({"BirthTime"});
+  const int f_order = find_feature({"Order"});
+  TreeGraph tree;
+  std::vector<std::pair<int, std::string>> attributes;
+  for (std::size_t f = 0; f < features.size(); ++f) {
+    const int fi = static_cast<int>(f);
+    if (fi == fx || fi == fy || fi == fz || fi == f_length || fi == f_radius || fi == f_diameter ||
+        fi == f_birth || fi == f_order || features[f].empty()) {
+      continue;
+    }
+    attributes.emplace_back(fi, features[f]);
+  }
+  // Feature values are numbers where given; a cell that is not a number is an error for the
+  // geometric features and leaves other features out (text features such as dates are kept out
+  // of the tree's numeric attributes).
+  std::vector<std::uint8_t> numeric(features.size(), 1);
+  for (const Entity& e : entities) {
+    for (std::size_t f = 0; f < e.values.size() && f < features.size(); ++f) {
+      const std::string_view v = trim(e.values[f]);
+      if (!v.empty() && !parse_number(v)) numeric[f] = 0;
+    }
+  }
+  for (const auto& [f, name] : attributes) {
+    if (numeric[static_cast<std::size_t>(f)] && !tree.has_attribute(name)) {
+      tree.add_attribute(name, std::numeric_limits<double>::quiet_NaN());
+    }
+  }
+  const auto value = [&](const Entity& e, int f) -> std::optional<double> {
+    if (f < 0 || static_cast<std::size_t>(f) >= e.values.size()) return std::nullopt;
+    const std::string_view v = trim(e.values[static_cast<std::size_t>(f)]);
+    if (v.empty()) return std::nullopt;
+    const std::optional<double> d = parse_number(v);
+    if (!d) {
+      throw ParseError("feature " + features[static_cast<std::size_t>(f)] + ": '" + std::string(v) +
+                           "' is not a number",
+                       file, e.line);
+    }
+    return d;
+  };
+
+  std::vector<int> branches_of(1, 0);  // per node: branches placed so far (turtle)
+  constexpr double kBranchAngle = 45.0 * std::numbers::pi / 180.0;
+  constexpr double kDivergence = 137.5 * std::numbers::pi / 180.0;
+  for (std::size_t i = 0; i < entities.size(); ++i) {
+    const Entity& e = entities[i];
+    if (e.scale != finest) continue;
+    NodeId parent = kNoNode;
+    char relation = e.relation;
+    if (e.relation != '/' && e.ref >= 0 && node_of[static_cast<std::size_t>(e.ref)] != kNoNode) {
+      parent = node_of[static_cast<std::size_t>(e.ref)];
+    } else {
+      // First component of a complex: climb the complexes until one follows or is borne by
+      // another entity with finest components.
+      int c = e.relation == '/' ? e.ref : -1;
+      while (c >= 0 && parent == kNoNode) {
+        const Entity& ce = entities[static_cast<std::size_t>(c)];
+        if (ce.relation != '/' && ce.ref >= 0) {
+          parent = last_component[static_cast<std::size_t>(ce.ref)];
+          relation = ce.relation;
+        }
+        c = ce.relation == '/' ? ce.ref : -1;
+      }
+    }
+    if (parent == kNoNode && !tree.empty()) {
+      throw ParseError(
+          "a second tree: this entity is connected to nothing before it (fspm reads one plant "
+          "per file)",
+          file, e.line);
+    }
+    NodeData d;
+    d.kind = kind_of(e.symbol);
+    const std::optional<double> length = value(e, f_length);
+    const std::optional<double> x = value(e, fx), y = value(e, fy), z = value(e, fz);
+    if (const auto r = value(e, f_radius)) {
+      d.radius = *r;
+    } else if (const auto dia = value(e, f_diameter)) {
+      d.radius = 0.5 * *dia;
+    }
+    if (const auto b = value(e, f_birth)) d.birth_time = *b;
+    const Eigen::Vector3d base = parent == kNoNode ? Eigen::Vector3d::Zero() : tree.end(parent);
+    if (x && y && z) {
+      d.end = {*x, *y, *z};
+      if (length && *length == 0.0) {
+        d.start = d.end;  // a point organ (a leaf cluster, a bud)
+      } else if (parent != kNoNode) {
+        d.start = base;
+      } else {
+        d.start = d.end - length.value_or(0.0) * Eigen::Vector3d::UnitZ();
+      }
+      if (length) d.length = *length;
+    } else {
+      // Turtle: continue the parent's heading, or branch off it.
+      Eigen::Vector3d heading = Eigen::Vector3d::UnitZ();
+      if (parent != kNoNode) {
+        heading = tree.direction(parent);
+        if (heading.squaredNorm() == 0.0) heading = Eigen::Vector3d::UnitZ();
+        if (relation == '+') {
+          const int k_branch = branches_of[parent]++;
+          const Eigen::Vector3d side =
+              Eigen::AngleAxisd(kDivergence * k_branch, heading) * perpendicular(heading);
+          heading = Eigen::AngleAxisd(kBranchAngle, side) * heading;
+        }
+      }
+      const double len = length.value_or(1.0);
+      d.start = base;
+      d.end = base + len * heading.normalized();
+      d.length = len;
+      d.direction = heading.normalized();
+    }
+    if (parent != kNoNode) {
+      d.order = static_cast<std::uint16_t>(tree.order(parent) + (relation == '+' ? 1 : 0));
+    }
+    if (const auto o = value(e, f_order)) {
+      if (*o < 0 || *o > 65535 || std::floor(*o) != *o) {
+        throw ParseError("feature Order: expected a whole number in [0, 65535]", file, e.line);
+      }
+      d.order = static_cast<std::uint16_t>(*o);
+    }
+    if (d.length >= 0.0 && d.direction.squaredNorm() == 0.0) {
+      const Eigen::Vector3d seg = d.end - d.start;
+      if (seg.norm() > 0.0) d.direction = seg.normalized();
+    }
+    const NodeId id = tree.add_node(parent, d);
+    node_of[i] = id;
+    branches_of.resize(tree.size(), 0);
+    for (const auto& [f, name] : attributes) {
+      if (!numeric[static_cast<std::size_t>(f)]) continue;
+      if (const auto v = value(e, f)) tree.attribute(name)[id] = *v;
+    }
+    // On the main axis of its complexes, this node is now their last finest component.
+    for (int c = e.axis_of; c >= 0; c = entities[static_cast<std::size_t>(c)].axis_of) {
+      last_component[static_cast<std::size_t>(c)] = id;
+    }
+    last_component[i] = id;
+  }
+  return tree;
 }
 
 }  // namespace fspm

@@ -44,10 +44,6 @@ std::string_view tree_format_name(TreeFormat format) {
 
 TreeGraph read_tree_file(const std::string& path, std::string_view format) {
   const TreeFormat f = tree_format_for(path, format);
-  if (f == TreeFormat::kMtg) {
-    throw ValueError("MTG is an export format: fspm writes .mtg files but does not read them",
-                     path);
-  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError("cannot open the file for reading (does it exist?)", path);
   switch (f) {
@@ -58,7 +54,7 @@ TreeGraph read_tree_file(const std::string& path, std::string_view format) {
     default: {
       std::ostringstream text;
       text << in.rdbuf();
-      return parse_newick(text.str(), path);
+      return f == TreeFormat::kMtg ? parse_mtg(text.str(), path) : parse_newick(text.str(), path);
     }
   }
 }

@@ -29,6 +29,29 @@ TEST(TreeCli, NewickSurvivesConversionThroughEveryFormat) {
   EXPECT_NE(read_text(dir / "x.mtg").find("MTG:"), std::string::npos);
 }
 
+// A grown tree through MTG and back: every summary figure is the same (MTG carries the node
+// ends, lengths, radii, birth times, orders and attributes; node numbering is depth first).
+TEST(TreeCli, GrownTreeSurvivesMtgExportAndImport) {
+  const auto dir = scratch_dir("mtg");
+  const std::string open = std::string(FSPM_SOURCE_DIR) + "/examples/trees/open_a12.treeb";
+  auto r = run_fspm("tree convert " + open + " " + (dir / "t.mtg").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_fspm("tree convert " + (dir / "t.mtg").string() + " " + (dir / "back.tree").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto a = nlohmann::json::parse(run_fspm("tree info --json " + open).out);
+  const auto b =
+      nlohmann::json::parse(run_fspm("tree info --json " + (dir / "back.tree").string()).out);
+  for (const char* key : {"nodes", "internodes", "leaves", "tips", "max_order", "max_depth"}) {
+    EXPECT_EQ(a[key], b[key]) << key;
+  }
+  EXPECT_DOUBLE_EQ(a["height"].get<double>(), b["height"].get<double>());
+  EXPECT_NEAR(a["total_length"].get<double>(), b["total_length"].get<double>(), 1e-9);
+  write_text(dir / "bad.mtg", "MTG:\nENTITY-CODE\t\tLength\n/P1\n^/I1\t\tten\n");
+  r = run_fspm("tree info " + (dir / "bad.mtg").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("bad.mtg:4"), std::string::npos) << r.err;
+}
+
 TEST(TreeCli, InfoJsonCountsNodes) {
   const auto dir = scratch_dir("info");
   write_text(dir / "x.nwk", "((1,2)3,(4,(5,6)7)8)9;\n");
