@@ -214,7 +214,8 @@ TreeGraph parse_mtg(std::string_view text, const std::string& file) {
         const std::vector<std::string_view> cells = split_tabs(row);
         const std::string_view sym = trim(cells[0]);
         if (sym.size() == 1 && cells.size() > 1) {
-          if (const auto sc = parse_number(trim(cells[1]))) {
+          const auto sc = parse_number(trim(cells[1]));
+          if (sc && *sc >= 0.0 && *sc <= 1000.0) {  // a scale is a small whole number
             class_scale[static_cast<unsigned char>(sym[0]) & 127] = static_cast<int>(*sc);
           }
         }
