@@ -75,7 +75,7 @@ void add_tree_commands(CLI::App& app) {
 
   auto info = std::make_shared<InfoOptions>();
   CLI::App* i = tree->add_subcommand("info", "Print the summary of a tree file");
-  i->add_option("FILE", info->file, "Tree file (.tree, .treeb, .nwk)")->required();
+  i->add_option("FILE", info->file, "Tree file (.tree, .treeb, .nwk, .mtg)")->required();
   i->add_option("--format", info->format, "Input format: " + formats);
   i->add_flag("--json", info->json, "Machine-readable JSON on stdout");
   i->callback([info] { run_info(*info); });

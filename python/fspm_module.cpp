@@ -234,7 +234,7 @@ PYBIND11_MODULE(_fspm, m) {
         py::gil_scoped_release release;
         return fspm::read_tree_file(path, format);
       },
-      py::arg("path"), py::arg("format") = "", "Read a .tree, .treeb or .nwk file");
+      py::arg("path"), py::arg("format") = "", "Read a .tree, .treeb, .nwk or .mtg file");
   m.def(
       "write_tree",
       [](const TreeGraph& t, const std::string& path, const std::string& format) {
