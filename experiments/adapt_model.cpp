@@ -134,9 +134,12 @@ class AdaptModel final : public Model {
     result.metrics["adapt_seconds"] = seconds_since(t0);
     result.metrics["pruned_nodes"] = static_cast<double>(adapted.pruned_nodes);
     result.metrics["tip_displacement"] = adapted.mean_tip_displacement_m;
-    result.metrics["light_interception"] =
-        light_interception(placed, env::cluster_spheres(adapted.clusters));
     result.tree = env::remove_pruned(adapted.tree);
+    // The tree's own leaf clusters where it has them (a grown tree), moved by the adaptation;
+    // otherwise the analysis' clusters.
+    std::vector<env::Sphere> clusters = leaf_cluster_spheres(*result.tree);
+    if (clusters.empty()) clusters = env::cluster_spheres(adapted.clusters);
+    result.metrics["light_interception"] = light_interception(placed, clusters);
     for (auto& [name, value] : tree_metrics(*result.tree)) result.metrics[name] = value;
     return result;
   }

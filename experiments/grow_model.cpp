@@ -133,9 +133,11 @@ class GrowModel final : public Model {
       result.metrics["adapt_seconds"] = seconds_since(t0);
       result.metrics["pruned_nodes"] = static_cast<double>(adapted.pruned_nodes);
       result.metrics["tip_displacement"] = adapted.mean_tip_displacement_m;
-      result.metrics["light_interception"] =
-          light_interception(full, env::cluster_spheres(adapted.clusters));
       result.tree = env::remove_pruned(adapted.tree);
+      // The growth model's clusters as adaptation moved them (the leaf nodes), so that the
+      // metric means the same for sets O, G and T.
+      result.metrics["light_interception"] =
+          light_interception(full, leaf_cluster_spheres(*result.tree));
       if (measure_regrowth) {
         context.check();
         t0 = Clock::now();

@@ -23,4 +23,15 @@ double light_interception(const environment::Scene& scene,
   return total;
 }
 
+std::vector<environment::Sphere> leaf_cluster_spheres(const TreeGraph& tree) {
+  std::vector<environment::Sphere> out;
+  if (!tree.has_attribute("translucency")) return out;
+  const auto gamma = tree.attribute("translucency");
+  for (NodeId n = 0; n < tree.size(); ++n) {
+    if (tree.kind(n) != OrganKind::kLeaf || !(tree.radius(n) > 0.0)) continue;
+    out.push_back({tree.end(n), tree.radius(n), gamma[n], false});
+  }
+  return out;
+}
+
 }  // namespace fspm::experiments

@@ -4,6 +4,7 @@
 
 #include "environment/occluders.hpp"
 #include "environment/scene.hpp"
+#include "fspm/tree_graph.hpp"
 
 namespace fspm::experiments {
 
@@ -12,5 +13,10 @@ namespace fspm::experiments {
 // lit horizontal area that absorbs as much, in m^2.
 double light_interception(const environment::Scene& scene,
                           const std::vector<environment::Sphere>& clusters);
+
+// The leaf clusters a tree carries as leaf nodes with a "translucency" attribute, as the growth
+// model writes them and plastic adaptation moves them: a sphere at the node's end with its radius
+// and translucency. Empty when the tree has none.
+std::vector<environment::Sphere> leaf_cluster_spheres(const TreeGraph& tree);
 
 }  // namespace fspm::experiments

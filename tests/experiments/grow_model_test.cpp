@@ -60,6 +60,23 @@ TEST(GrowModel, SetTIsTheOpenTreeAdaptedAndPruned) {
   EXPECT_GT(t.metrics.at("tip_displacement"), 0.0);
 }
 
+// Adapting to the open sky changes nothing, so every metric of set T equals set O's; the light
+// interception of both comes from the same leaf clusters.
+TEST(GrowModel, SetTInTheOpenIsSetO) {
+  const Fixture f("grow_t_open");
+  ParameterSet p{
+      {"preset", std::string("A")}, {"years", std::int64_t{7}}, {"scene", std::string("open")}};
+  p["set"] = std::string("O");
+  const RunResult o = f.model->run(p, 4, RunContext{});
+  p["set"] = std::string("T");
+  const RunResult t = f.model->run(p, 4, RunContext{});
+  EXPECT_EQ(t.metrics.at("pruned_nodes"), 0.0);
+  EXPECT_EQ(t.metrics.at("nodes"), o.metrics.at("nodes"));
+  EXPECT_NEAR(t.metrics.at("height"), o.metrics.at("height"), 1e-9);
+  EXPECT_NEAR(t.metrics.at("light_interception"), o.metrics.at("light_interception"),
+              1e-9 * o.metrics.at("light_interception"));
+}
+
 TEST(GrowModel, BadParametersAreRejectedBeforeRunning) {
   const Fixture f("grow_bad");
   EXPECT_THROW(f.model->check_parameter("set", std::string("X")), ValueError);
