@@ -130,6 +130,7 @@ struct Entity {
   // predecessor's for '<', none (-1) for a branch ('+').
   int axis_of = -1;
   int line = 0;
+  double index = std::numeric_limits<double>::quiet_NaN();  // the label's number (I12: 12)
   std::vector<std::string_view> values;  // feature cells (the last entity of a line only)
 };
 
@@ -304,7 +305,10 @@ TreeGraph parse_mtg(std::string_view text, const std::string& file) {
              k);
       }
       e.symbol = code[p++];
-      while (p < code.size() && is_digit(code[p])) ++p;  // the index: not needed
+      const std::size_t digits = p;
+      while (p < code.size() && is_digit(code[p]) && p - digits < 15) ++p;
+      if (p > digits) e.index = *parse_number(code.substr(digits, p - digits));
+      while (p < code.size() && is_digit(code[p])) ++p;  // beyond 15 digits: not kept
       if (previous >= 0) {
         if (same_column) fail("entity code '" + std::string(code) + "': '^' only at its start", k);
         e.ref = previous;
@@ -400,6 +404,29 @@ TreeGraph parse_mtg(std::string_view text, const std::string& file) {
   for (const auto& [f, name] : attributes) {
     if (numeric[static_cast<std::size_t>(f)] && !tree.has_attribute(name)) {
       tree.add_attribute(name, std::numeric_limits<double>::quiet_NaN());
+    }
+  }
+  // The label numbers: each node's own ("index") and those of the complexes it belongs to, one
+  // attribute per coarser symbol ("U_index": the growth unit of an internode), so that what the
+  // coarser scales group stays available.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::array<std::uint8_t, 128> complex_symbol{};
+  for (const Entity& e : entities) {
+    if (e.scale != finest) continue;
+    for (int c = e.complex; c >= 0; c = entities[static_cast<std::size_t>(c)].complex) {
+      complex_symbol[static_cast<unsigned char>(entities[static_cast<std::size_t>(c)].symbol) &
+                     127] = 1;
+    }
+  }
+  // A feature of the same name (a file fspm wrote from an imported tree) keeps its values.
+  const auto index_name = [](char symbol) { return std::string(1, symbol) + "_index"; };
+  const bool own_index = !tree.has_attribute("index");
+  if (own_index) tree.add_attribute("index", nan);
+  for (int c = 0; c < 128; ++c) {
+    if (complex_symbol[static_cast<std::size_t>(c)] && tree.has_attribute(index_name(char(c)))) {
+      complex_symbol[static_cast<std::size_t>(c)] = 0;
+    } else if (complex_symbol[static_cast<std::size_t>(c)]) {
+      tree.add_attribute(index_name(static_cast<char>(c)), nan);
     }
   }
   const auto value = [&](const Entity& e, int f) -> std::optional<double> {
@@ -503,6 +530,13 @@ TreeGraph parse_mtg(std::string_view text, const std::string& file) {
     for (const auto& [f, name] : attributes) {
       if (!numeric[static_cast<std::size_t>(f)]) continue;
       if (const auto v = value(e, f)) tree.attribute(name)[id] = *v;
+    }
+    if (own_index) tree.attribute("index")[id] = e.index;
+    for (int c = e.complex; c >= 0; c = entities[static_cast<std::size_t>(c)].complex) {
+      const Entity& ce = entities[static_cast<std::size_t>(c)];
+      if (complex_symbol[static_cast<unsigned char>(ce.symbol) & 127]) {
+        tree.attribute(index_name(ce.symbol))[id] = ce.index;
+      }
     }
     // On the main axis of its complexes, this node is now their last finest component.
     for (int c = e.axis_of; c >= 0; c = entities[static_cast<std::size_t>(c)].axis_of) {

@@ -105,6 +105,31 @@ TEST(MtgRead, FinestScaleOfAMultiscaleFile) {
   EXPECT_NEAR(t.direction(2).dot(t.direction(1)), std::cos(std::numbers::pi / 4), 1e-12);
   EXPECT_EQ(t.start(4), t.end(1));
   EXPECT_FALSE(t.has_attribute("Date"));  // a date is not a number
+  // What the coarser scales group: each internode's growth unit and plant, and its own label.
+  ASSERT_TRUE(t.has_attribute("U_index"));
+  const std::vector<double> unit = {1, 1, 1, 1, 2, 3};
+  for (NodeId n = 0; n < t.size(); ++n) {
+    EXPECT_EQ(t.attribute("U_index")[n], unit[n]) << n;
+    EXPECT_EQ(t.attribute("P_index")[n], 1.0);
+    EXPECT_EQ(t.attribute("index")[n], static_cast<double>(n + 1));
+  }
+}
+
+// Imported, exported and imported again: the label numbers of the first file survive as the
+// features they were exported as, not replaced by the new file's labels.
+TEST(MtgRead, IndicesOfAnImportedFileSurviveAnotherRoundTrip) {
+  const TreeGraph t = parse_mtg(kMultiscale, "plant.mtg");
+  std::ostringstream out;
+  write_mtg(t, out);
+  const TreeGraph again = parse_mtg(out.str(), "again.mtg");
+  ASSERT_EQ(again.size(), t.size());
+  double units = 0.0, indices = 0.0;
+  for (NodeId n = 0; n < again.size(); ++n) {
+    units += again.attribute("U_index")[n];
+    indices += again.attribute("index")[n];
+  }
+  EXPECT_EQ(units, 1 + 1 + 1 + 1 + 2 + 3);
+  EXPECT_EQ(indices, 1 + 2 + 3 + 4 + 5 + 6);
 }
 
 TEST(MtgRead, LeavesFlowersAndAttributes) {
