@@ -442,7 +442,9 @@ TreeGraph parse_mtg(std::string_view text, const std::string& file) {
     return d;
   };
 
-  std::vector<int> branches_of(1, 0);  // per node: branches placed so far (turtle)
+  // Turtle: branches placed on each node so far, and each node's depth, so that branches turn by
+  // the divergence angle from node to node along an axis (phyllotaxis) and between siblings.
+  std::vector<int> branches_of(1, 0), depth_of(1, 0);
   constexpr double kBranchAngle = 45.0 * std::numbers::pi / 180.0;
   constexpr double kDivergence = 137.5 * std::numbers::pi / 180.0;
   for (std::size_t i = 0; i < entities.size(); ++i) {
@@ -499,7 +501,7 @@ TreeGraph parse_mtg(std::string_view text, const std::string& file) {
         heading = tree.direction(parent);
         if (heading.squaredNorm() == 0.0) heading = Eigen::Vector3d::UnitZ();
         if (relation == '+') {
-          const int k_branch = branches_of[parent]++;
+          const int k_branch = depth_of[parent] + branches_of[parent]++;
           const Eigen::Vector3d side =
               Eigen::AngleAxisd(kDivergence * k_branch, heading) * perpendicular(heading);
           heading = Eigen::AngleAxisd(kBranchAngle, side) * heading;
@@ -527,6 +529,8 @@ TreeGraph parse_mtg(std::string_view text, const std::string& file) {
     const NodeId id = tree.add_node(parent, d);
     node_of[i] = id;
     branches_of.resize(tree.size(), 0);
+    depth_of.resize(tree.size(), 0);
+    if (parent != kNoNode) depth_of[id] = depth_of[parent] + 1;
     for (const auto& [f, name] : attributes) {
       if (!numeric[static_cast<std::size_t>(f)]) continue;
       if (const auto v = value(e, f)) tree.attribute(name)[id] = *v;

@@ -11,11 +11,10 @@
 // leaves, flowers and buds, every other symbol an internode. Geometry from the features XX YY ZZ
 // (the entity's top), Length, Radius (or Diameter, TopDia: halved), BirthTime and Order; an
 // entity without coordinates is drawn by a turtle (continuing its predecessor, branches at 45
-// degrees, 137.5 degrees apart) with its Length or 1. Other numeric features become attributes,
-// and so do the label numbers: "index" (the node's own) and "<S>_index" per coarser symbol S
-// (U_index: the growth unit an internode belongs to).
-// One tree per file: a second finest-scale root is an error; plants without components give an
-// empty tree.
+// degrees, turned 137.5 degrees per node along the axis) with its Length or 1. Other numeric
+// features become attributes, and so do the label numbers: "index" (the node's own) and "<S>_index"
+// per coarser symbol S (U_index: the growth unit an internode belongs to). One tree per file: a
+// second finest-scale root is an error; plants without components give an empty tree.
 #include <iosfwd>
 #include <string>
 #include <string_view>
