@@ -76,7 +76,6 @@ class AdaptModel final : public Model {
  public:
   AdaptModel(const std::string& tree_file, const std::string& scene_file, std::string base_dir)
       : tree_(read_tree_file(tree_file)),
-        tree_file_(tree_file),
         default_scene_(scene_file),
         scenes_(std::move(base_dir)) {
     if (tree_.empty()) throw ValueError("model.file: the tree is empty", tree_file);
@@ -184,7 +183,6 @@ class AdaptModel final : public Model {
   }
 
   TreeGraph tree_;
-  std::string tree_file_;
   std::string default_scene_;
   mutable std::mutex mutex_;  // guards analyses_
   SceneCache scenes_;
