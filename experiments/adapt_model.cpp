@@ -75,9 +75,7 @@ AnalysisKey key_of(const env::AnalysisParams& p) {
 class AdaptModel final : public Model {
  public:
   AdaptModel(const std::string& tree_file, const std::string& scene_file, std::string base_dir)
-      : tree_(read_tree_file(tree_file)),
-        default_scene_(scene_file),
-        scenes_(std::move(base_dir)) {
+      : tree_(read_tree_file(tree_file)), default_scene_(scene_file), scenes_(std::move(base_dir)) {
     if (tree_.empty()) throw ValueError("model.file: the tree is empty", tree_file);
     if (!default_scene_.empty()) scene(default_scene_);
   }
