@@ -21,10 +21,6 @@ namespace {
 namespace env = fspm::environment;
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
 bool is_analysis_parameter(const std::string& name) {
   static const char* const kNames[] = {
       "skeleton_radius_m",    "min_cluster_radius_m", "gamma0",       "pruning_strength",

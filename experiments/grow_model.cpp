@@ -20,10 +20,6 @@ namespace {
 namespace env = fspm::environment;
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
 std::string read_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError("cannot read the growth parameter file", path);
@@ -114,8 +110,6 @@ class GrowModel final : public Model {
     result.metrics["grow_seconds"] = seconds_since(t0);
     context.check();
     if (set != "T") {
-      result.metrics["light_interception"] =
-          light_interception(set == "G" ? full : open, grown.cluster_spheres);
       result.tree = std::move(grown.tree);
     } else {
       env::AnalysisParams ap;
@@ -134,10 +128,6 @@ class GrowModel final : public Model {
       result.metrics["pruned_nodes"] = static_cast<double>(adapted.pruned_nodes);
       result.metrics["tip_displacement"] = adapted.mean_tip_displacement_m;
       result.tree = env::remove_pruned(adapted.tree);
-      // The growth model's clusters as adaptation moved them (the leaf nodes), so that the
-      // metric means the same for sets O, G and T.
-      result.metrics["light_interception"] =
-          light_interception(full, leaf_cluster_spheres(*result.tree));
       if (measure_regrowth) {
         context.check();
         t0 = Clock::now();
@@ -145,6 +135,10 @@ class GrowModel final : public Model {
         result.metrics["regrow_seconds"] = seconds_since(t0);
       }
     }
+    // The growth model's leaf clusters (leaf nodes), in set T as the adaptation moved them, so
+    // that the metric means the same for sets O, G and T.
+    result.metrics["light_interception"] =
+        light_interception(set == "O" ? open : full, leaf_cluster_spheres(*result.tree));
     for (auto& [name, value] : tree_metrics(*result.tree)) result.metrics[name] = value;
     return result;
   }

@@ -43,6 +43,11 @@ class RunContext {
   const std::atomic<bool>* interrupted_ = nullptr;
 };
 
+// Wall-clock seconds since t0 (run times and the models' own timing metrics).
+inline double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
 struct RunResult {
   std::map<std::string, double> metrics;  // by metric name (experiments/metrics.hpp)
   std::optional<TreeGraph> tree;          // when the model builds an explicit tree

@@ -28,10 +28,6 @@ std::string utc_now() {
   return buf;
 }
 
-double since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
 }  // namespace
 
 ExecutionSettings execution_settings(const Experiment& experiment, const std::string& out_dir,
@@ -79,7 +75,7 @@ std::optional<RunRecord> execute_run(const Model& model, const RunSpec& spec,
   const RunContext context(deadline, settings.interrupt);
   try {
     RunResult result = model.run(spec.parameters, spec.seed, context);
-    record.seconds = since(t0);
+    record.seconds = seconds_since(t0);
     if (settings.reference && result.tree) {
       // Not part of the run's time: it measures the model, not the comparison.
       result.metrics["distance_to_reference"] =
@@ -110,16 +106,16 @@ std::optional<RunRecord> execute_run(const Model& model, const RunSpec& spec,
       }
     }
   } catch (const RunStopped& e) {
-    record.seconds = since(t0);
+    record.seconds = seconds_since(t0);
     if (!e.timed_out()) return std::nullopt;  // interrupted: no row, --resume runs it again
     record.status = RunStatus::kTimeout;
     record.error = limit_text;
   } catch (const std::exception& e) {
-    record.seconds = since(t0);
+    record.seconds = seconds_since(t0);
     record.status = RunStatus::kError;
     record.error = e.what();
   } catch (...) {
-    record.seconds = since(t0);
+    record.seconds = seconds_since(t0);
     record.status = RunStatus::kError;
     record.error = "unknown exception";
   }
