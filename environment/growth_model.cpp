@@ -4,9 +4,12 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <optional>
 #include <random>
 
 #include "environment/light_model.hpp"
+#include "environment/shadow_grid.hpp"
+#include "environment/space_colonization.hpp"
 #include "fspm/error.hpp"
 
 namespace fspm::environment {
@@ -45,7 +48,7 @@ Eigen::Vector3d lateral_direction(const Eigen::Vector3d& h, double angle_rad, do
 class Grower {
  public:
   Grower(const GrowthParams& p, const Scene& scene, const Eigen::Vector3d& base)
-      : p_(p), scene_(scene), base_(base), rng_(p.seed) {
+      : p_(p), scene_(scene), base_(base), rng_(p.seed), grid_(p.shadow_grid) {
     if (!scene_.ground) scene_.ground = Ground{base.z(), 1.0, true};  // obstruction only
     wsum_ = p_.phototropism + p_.gravitropism;
     // Pirk eq. 4.7 with l_s = l_i: each internode keeps (1 - sum w)^1 of its default direction.
@@ -81,10 +84,14 @@ class Grower {
       sh.sphere = -1;
       if (!sh.alive || year - sh.year > p_.leaf_years) continue;
       Eigen::Vector3d c = Eigen::Vector3d::Zero();
+      double length = 0.0;
       const int n = sh.last - sh.first + 1;
-      for (int i = sh.first; i <= sh.last; ++i) c += 0.5 * (ms_[i].start + ms_[i].end);
+      for (int i = sh.first; i <= sh.last; ++i) {
+        c += 0.5 * (ms_[i].start + ms_[i].end);
+        length += (ms_[i].end - ms_[i].start).norm();
+      }
       c /= n;
-      const double r = std::max(p_.cluster_radius_m, 0.5 * n * p_.internode_length_m);
+      const double r = std::max(p_.cluster_radius_m, 0.5 * length);
       sh.sphere = static_cast<std::int32_t>(s.spheres.size());
       s.spheres.push_back({c, r, cluster_translucency(r, p_.gamma0), false});
     }
@@ -107,32 +114,133 @@ class Grower {
   }
 
   void cycle(int year) {
+    expire_lateral_buds(year);
+    sense_light(year);
+    accumulate_light(year);
+    allocate_vigour();
     const std::size_t n = ms_.size();
-    // 1. Light at every node that carries a live bud (Q and V, Palubicki step 1).
+    // 4. Bud fate (step 4, Palubicki's continuous option): every bud with v >= min_shoot_vigour
+    // grows a shoot whose length follows v.
+    for (std::size_t k = 0; k < n; ++k) {
+      if (!ms_[k].alive) continue;
+      const double vmin = std::max(p_.min_shoot_vigour, 1e-9);
+      if (ms_[k].terminal_bud && v_terminal_[k] >= vmin) grow_shoot(k, true, v_terminal_[k], year);
+      if (ms_[k].lateral_bud && v_lateral_[k] >= vmin) grow_shoot(k, false, v_lateral_[k], year);
+    }
+  }
+
+  void expire_lateral_buds(int year) {
     for (auto& m : ms_) {
       if (m.alive && m.lateral_bud && year - m.birth_year > p_.lateral_bud_lifetime_years) {
         m.lateral_bud = false;
       }
     }
+  }
+
+  bool has_bud(const Metamer& m) const { return m.alive && (m.terminal_bud || m.lateral_bud); }
+
+  // 1. Light Q and optimal growth direction V of every live bud (Palubicki step 1).
+  void sense_light(int year) {
+    const std::size_t n = ms_.size();
+    q_terminal_.assign(n, 0.0);
+    q_lateral_.assign(n, 0.0);
+    dir_terminal_.assign(n, Eigen::Vector3d::UnitZ());
+    dir_lateral_.assign(n, Eigen::Vector3d::UnitZ());
+    switch (p_.light_model) {
+      case BudLightModel::kSky:
+        sense_sky(year);
+        break;
+      case BudLightModel::kShadowGrid:
+        sense_shadow_grid();
+        break;
+      case BudLightModel::kSpaceColonization:
+        sense_markers();
+        break;
+    }
+    if (p_.sky_light_fraction != 1.0) {
+      for (std::size_t i = 0; i < n; ++i) {
+        q_terminal_[i] *= p_.sky_light_fraction;
+        q_lateral_[i] *= p_.sky_light_fraction;
+      }
+    }
+  }
+
+  void sense_sky(int year) {
     const LightModel light(light_scene(year));
-    q_bud_.assign(n, 0.0);
-    v_dir_.assign(n, Eigen::Vector3d::UnitZ());
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < ms_.size(); ++i) {
       const Metamer& m = ms_[i];
-      if (!m.alive || !(m.terminal_bud || m.lateral_bud)) continue;
+      if (!has_bud(m)) continue;
       const std::int32_t own = shoots_[m.shoot].sphere;
       const LightSample s =
           light.evaluate(m.end, own < 0 ? kNoSphere : static_cast<std::uint32_t>(own));
-      q_bud_[i] = s.light;
-      v_dir_[i] = s.direction;
+      q_terminal_[i] = q_lateral_[i] = s.light;
+      dir_terminal_[i] = dir_lateral_[i] = s.direction;
     }
-    // 2. Basipetal accumulation, shedding lateral branches below the pruning factor (step 5).
+  }
+
+  void sense_shadow_grid() {
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
+    for (const Metamer& m : ms_) {
+      if (!has_bud(m)) continue;
+      lo = lo.cwiseMin(m.end);
+      hi = hi.cwiseMax(m.end);
+    }
+    if (lo.x() > hi.x()) return;
+    grid_.reset(lo, hi);
+    grid_.add_obstacles(scene_);
+    for (const Metamer& m : ms_) {
+      if (has_bud(m))
+        grid_.add_bud(m.end, (m.terminal_bud ? 1.0 : 0.0) + (m.lateral_bud ? 1.0 : 0.0));
+    }
+    grid_.propagate();
+    for (std::size_t i = 0; i < ms_.size(); ++i) {
+      if (!has_bud(ms_[i])) continue;
+      q_terminal_[i] = q_lateral_[i] = grid_.bud_light(ms_[i].end);
+      dir_terminal_[i] = dir_lateral_[i] = grid_.growth_direction(ms_[i].end);
+    }
+  }
+
+  void sense_markers() {
+    if (!markers_) {
+      markers_.emplace(p_.space_colonization, scene_, base_, rng_);
+    }
+    // Markers within the occupancy radius of the tree's nodes are gone (Runions et al. 2007).
+    node_points_.clear();
+    for (const Metamer& m : ms_) {
+      if (m.alive && m.birth_year >= occupied_year_) node_points_.push_back(m.end);
+    }
+    occupied_year_ = ms_.empty() ? 0 : ms_.back().birth_year + 1;
+    markers_->occupy(node_points_);
+    queries_.clear();
+    query_node_.clear();
+    for (std::size_t i = 0; i < ms_.size(); ++i) {
+      const Metamer& m = ms_[i];
+      if (!m.alive) continue;
+      // Terminal buds look along the shoot, lateral buds along their branching direction.
+      if (m.terminal_bud) queries_.push_back({m.end, m.heading});
+      if (m.terminal_bud) query_node_.push_back(static_cast<std::int32_t>(i));
+      if (m.lateral_bud) queries_.push_back({m.end, m.lateral_dir});
+      if (m.lateral_bud) query_node_.push_back(-1 - static_cast<std::int32_t>(i));
+    }
+    perceptions_.resize(queries_.size());
+    markers_->perceive(queries_, perceptions_);
+    for (std::size_t k = 0; k < queries_.size(); ++k) {
+      const std::int32_t tag = query_node_[k];
+      const std::size_t i = static_cast<std::size_t>(tag >= 0 ? tag : -1 - tag);
+      (tag >= 0 ? q_terminal_ : q_lateral_)[i] = perceptions_[k].light;
+      (tag >= 0 ? dir_terminal_ : dir_lateral_)[i] = perceptions_[k].direction;
+    }
+  }
+
+  // 2. Basipetal accumulation, shedding lateral branches below the pruning factor (step 5).
+  void accumulate_light(int year) {
+    const std::size_t n = ms_.size();
     q_.assign(n, 0.0);
     count_.assign(n, 0);
     for (std::size_t k = n; k-- > 0;) {
       Metamer& m = ms_[k];
       if (!m.alive) continue;
-      double q = (m.terminal_bud ? q_bud_[k] : 0.0) + (m.lateral_bud ? q_bud_[k] : 0.0);
+      double q = (m.terminal_bud ? q_terminal_[k] : 0.0) + (m.lateral_bud ? q_lateral_[k] : 0.0);
       std::int64_t c = 1;
       if (m.main >= 0 && ms_[m.main].alive) {
         q += q_[m.main];
@@ -150,7 +258,11 @@ class Grower {
       q_[k] = q;
       count_[k] = c;
     }
-    // 3. Acropetal extended Borchert-Honda allocation with apical control lambda (step 3).
+  }
+
+  // 3. Acropetal extended Borchert-Honda allocation with apical control lambda (step 3).
+  void allocate_vigour() {
+    const std::size_t n = ms_.size();
     const double lambda = p_.apical_control;
     v_.assign(n, 0.0);
     v_terminal_.assign(n, 0.0);
@@ -161,37 +273,28 @@ class Grower {
       if (!m.alive || v_[k] <= 0.0) continue;
       const bool main_alive = m.main >= 0 && ms_[m.main].alive;
       const bool lat_alive = m.lateral >= 0 && ms_[m.lateral].alive;
-      const double qm = main_alive ? q_[m.main] : (m.terminal_bud ? q_bud_[k] : 0.0);
-      const double ql = lat_alive ? q_[m.lateral] : (m.lateral_bud ? q_bud_[k] : 0.0);
+      const double qm = main_alive ? q_[m.main] : (m.terminal_bud ? q_terminal_[k] : 0.0);
+      const double ql = lat_alive ? q_[m.lateral] : (m.lateral_bud ? q_lateral_[k] : 0.0);
       const double den = lambda * qm + (1.0 - lambda) * ql;
       if (den <= 0.0) continue;
       const double vm = v_[k] * lambda * qm / den;
       const double vl = v_[k] * (1.0 - lambda) * ql / den;
-      if (main_alive) {
-        v_[m.main] = vm;
-      } else {
-        v_terminal_[k] = vm;
-      }
-      if (lat_alive) {
-        v_[m.lateral] = vl;
-      } else {
-        v_lateral_[k] = vl;
-      }
-    }
-    // 4. Bud fate: a bud with v >= 1 grows floor(v) metamers (step 4).
-    for (std::size_t k = 0; k < n; ++k) {
-      if (!ms_[k].alive) continue;
-      if (ms_[k].terminal_bud && v_terminal_[k] >= 1.0) grow_shoot(k, true, v_terminal_[k], year);
-      if (ms_[k].lateral_bud && v_lateral_[k] >= 1.0) grow_shoot(k, false, v_lateral_[k], year);
+      (main_alive ? v_[m.main] : v_terminal_[k]) = vm;
+      (lat_alive ? v_[m.lateral] : v_lateral_[k]) = vl;
     }
   }
 
   void grow_shoot(std::size_t from, bool terminal, double v, int year) {
-    const int count = std::min(static_cast<int>(std::floor(v)), p_.max_shoot_metamers);
+    // Palubicki's continuous option: the shoot is v internode lengths long, in round(v) metamers.
+    const int count = std::clamp(static_cast<int>(std::lround(v)), 1, p_.max_shoot_metamers);
+    const double length = v * p_.internode_length_m / count;
     Eigen::Vector3d d = terminal ? ms_[from].heading : ms_[from].lateral_dir;
+    const Eigen::Vector3d& light_dir = terminal ? dir_terminal_[from] : dir_lateral_[from];
     // Tropism direction t (Pirk eq. 4.6): weighted mean of the light and gravity directions.
     Eigen::Vector3d t = Eigen::Vector3d::Zero();
-    if (wsum_ > 0) t = (p_.phototropism * v_dir_[from] + p_.gravitropism * gravity_) / wsum_;
+    if (wsum_ > 0) t = (p_.phototropism * light_dir + p_.gravitropism * gravity_) / wsum_;
+    // Pirk eq. 4.7: the default direction keeps (1 - sum w)^(l_s / l_i) of its weight.
+    const double ws = std::pow(ws_, length / p_.internode_length_m);
     const std::uint16_t order = ms_[from].order + (terminal ? 0 : 1);
     double roll = ms_[from].roll + (terminal ? p_.phyllotaxy_deg : 90.0) * kDeg;
     std::int32_t prev = static_cast<std::int32_t>(from);
@@ -200,7 +303,7 @@ class Grower {
     int made = 0;
     std::uniform_real_distribution<double> u(0.0, 1.0);
     for (int i = 0; i < count; ++i) {
-      Eigen::Vector3d h = ws_ * d + (1.0 - ws_) * t;  // Pirk eq. 4.6
+      Eigen::Vector3d h = ws * d + (1.0 - ws) * t;  // Pirk eq. 4.6
       if (p_.perturbation_deg > 0) {
         const double z = 2.0 * u(rng_) - 1.0, phi = 2.0 * std::numbers::pi * u(rng_);
         const double s = std::sqrt(1.0 - z * z);
@@ -209,7 +312,7 @@ class Grower {
       }
       if (h.norm() < 1e-12) h = d;
       h.normalize();
-      const Eigen::Vector3d end = pos + p_.internode_length_m * h;
+      const Eigen::Vector3d end = pos + length * h;
       if (scene_.segment_blocked(pos, end)) break;  // no growth into solid obstacles
       Metamer m;
       m.start = pos;
@@ -276,7 +379,9 @@ class Grower {
       d.kind = OrganKind::kInternode;
       const NodeId id = out.tree.add_node(m.parent < 0 ? kNoNode : new_id[m.parent], d);
       new_id[k] = id;
-      if (static_cast<std::size_t>(k) < q_bud_.size()) out.tree.attribute("light")[id] = q_bud_[k];
+      if (static_cast<std::size_t>(k) < q_terminal_.size()) {
+        out.tree.attribute("light")[id] = m.terminal_bud ? q_terminal_[k] : q_lateral_[k];
+      }
       top = std::max(top, m.end.z());
       if (m.lateral >= 0 && ms_[m.lateral].alive) stack.push_back(m.lateral);
       if (m.main >= 0 && ms_[m.main].alive) stack.push_back(m.main);
@@ -316,8 +421,17 @@ class Grower {
   Eigen::Vector3d gravity_;
   std::vector<Metamer> ms_;
   std::vector<Shoot> shoots_;
-  std::vector<double> q_bud_, q_, v_, v_terminal_, v_lateral_;
-  std::vector<Eigen::Vector3d> v_dir_;
+  // Per node, this cycle: light Q and direction V of its terminal and lateral bud.
+  std::vector<double> q_terminal_, q_lateral_;
+  std::vector<Eigen::Vector3d> dir_terminal_, dir_lateral_;
+  std::vector<double> q_, v_, v_terminal_, v_lateral_;
+  ShadowGrid grid_;
+  std::optional<MarkerField> markers_;
+  int occupied_year_ = 0;  // nodes born before this year have occupied their markers
+  std::vector<Eigen::Vector3d> node_points_;
+  std::vector<BudQuery> queries_;
+  std::vector<std::int32_t> query_node_;
+  std::vector<BudPerception> perceptions_;
   std::vector<std::int64_t> count_;
   std::size_t shed_ = 0, grown_ = 0;
 };

@@ -1,12 +1,13 @@
 #pragma once
 // Self-organizing tree growth (Palubicki et al. 2009), the model Pirk 4.5.4 grows its sets O and G
-// with. Each cycle (a year): leaf clusters of the young shoots and the scene's occluders shade
-// the buds (LightModel: Q = light at the bud, V = mean light direction); light is summed
-// basipetally; lateral branches whose light per supported internode falls below the pruning
-// factor are shed; the resource alpha * Q_base is distributed acropetally by the extended
-// Borchert-Honda model with apical control lambda; a bud receiving v grows floor(v) metamers,
-// each heading from its default direction bent by phototropism and gravitropism (Pirk eq.
-// 4.6-4.7); shoots stop where they would enter a solid obstacle. Deterministic per seed.
+// with. Each cycle (a year): every bud senses its light Q and optimal growth direction V (from the
+// shadow grid, space colonization or the sky hemisphere: GrowthParams::light_model); light is
+// summed basipetally; lateral branches whose light per supported internode falls below the
+// pruning factor are shed; the resource alpha * Q_base is distributed acropetally by the extended
+// Borchert-Honda model with apical control lambda; a bud receiving v grows a shoot v internodes
+// long in round(v) metamers (Palubicki's continuous option), each heading from its default
+// direction bent by phototropism and gravitropism (Pirk eq. 4.6-4.7); shoots stop where they would
+// enter a solid obstacle. Deterministic per seed.
 #include <cstddef>
 #include <vector>
 

@@ -12,31 +12,146 @@
 
 namespace fspm::environment {
 
-GrowthParams growth_preset(std::string_view name) {
-  // The defaults are type A. Vigour (alpha, apical control, and for B the pruning factor) is
-  // fitted per type so that trees of 10 / 20 / 30 cycles have about Pirk Table 4.2's 530 /
-  // 2 500 / 9 100 internodes, averaged over seeds 1-12 (docs/environment.md, "Presets").
+std::string_view bud_light_model_name(BudLightModel model) {
+  switch (model) {
+    case BudLightModel::kSky:
+      return "sky";
+    case BudLightModel::kShadowGrid:
+      return "shadow_grid";
+    case BudLightModel::kSpaceColonization:
+      return "space_colonization";
+  }
+  return "sky";
+}
+
+std::optional<BudLightModel> bud_light_model_from_name(std::string_view name) {
+  for (BudLightModel m :
+       {BudLightModel::kSky, BudLightModel::kShadowGrid, BudLightModel::kSpaceColonization}) {
+    if (name == bud_light_model_name(m)) return m;
+  }
+  return std::nullopt;
+}
+
+std::string_view tropism_pairing_name(TropismPairing pairing) {
+  return pairing == TropismPairing::kText ? "text" : "appendix";
+}
+
+std::optional<TropismPairing> tropism_pairing_from_name(std::string_view name) {
+  if (name == "text") return TropismPairing::kText;
+  if (name == "appendix") return TropismPairing::kAppendix;
+  return std::nullopt;
+}
+
+namespace {
+
+// Vigour alpha per tree type (A, B, C) and light model (sky, shadow grid, space colonization),
+// fitted so that the mean size of 20-cycle trees (seeds 1-4) is Pirk Table 4.2's 2 541
+// internodes (docs/environment.md, "Presets").
+constexpr double kFittedAlpha[3][3] = {
+    {2.87, 3.25, 1.51},  // A
+    {2.83, 3.33, 1.51},  // B (not fitted for space colonization: it does not grow, see docs)
+    {2.76, 2.64, 2.57},  // C
+};
+
+int light_model_index(BudLightModel m) {
+  switch (m) {
+    case BudLightModel::kSky:
+      return 0;
+    case BudLightModel::kShadowGrid:
+      return 1;
+    case BudLightModel::kSpaceColonization:
+      return 2;
+  }
+  return 1;
+}
+
+}  // namespace
+
+GrowthParams growth_preset(std::string_view name, BudLightModel light_model,
+                           TropismPairing pairing) {
   GrowthParams p;
+  p.light_model = light_model;
+  const bool text = pairing == TropismPairing::kText;
+  int type = 0;
   if (name == "A" || name == "a") {
     p.phototropism = 0.25;
     p.gravitropism = 0.12;
   } else if (name == "B" || name == "b") {
+    type = 1;
     p.phototropism = 0.45;
-    p.gravitropism = 0.44;
-    p.alpha = 2.9;
+    p.gravitropism = text ? 0.44 : 0.03;
     p.apical_control = 0.48;
     p.pruning_factor = 0.09;
   } else if (name == "C" || name == "c") {
-    p.phototropism = 0.03;
+    type = 2;
+    p.phototropism = text ? 0.03 : 0.44;
     p.gravitropism = 0.23;
     p.years = 30;
     p.pruning_factor = 0.06;
-    p.alpha = 3.2;  // fitted to the 10- and 20-cycle sizes (it stays smaller at 30, see docs)
   } else {
     throw ValueError("unknown preset \"" + std::string(name) + "\", expected A, B or C");
   }
+  p.alpha = kFittedAlpha[type][light_model_index(light_model)];
   return p;
 }
+
+namespace {
+
+template <typename Check>
+void validate_light_model(const GrowthParams& p, const Check& check) {
+  const ShadowGridParams& g = p.shadow_grid;
+  auto positive = [](double v) { return v > 0 && std::isfinite(v); };
+  check(positive(g.voxel_size_m), "voxel_size_m", "a positive length");
+  check(positive(g.shade_a), "shadow_a", "a positive number");
+  check(g.shade_b > 1 && std::isfinite(g.shade_b), "shadow_b", "a number > 1");
+  check(g.depth_voxels >= 0 && g.depth_voxels <= 64, "shadow_depth_voxels",
+        "an integer in [0, 64]");
+  check(positive(g.full_light), "full_light", "a positive number");
+  check(g.obstacle_shade >= 0 && std::isfinite(g.obstacle_shade), "obstacle_shade",
+        "a non-negative number");
+  const SpaceColonizationParams& c = p.space_colonization;
+  check(positive(c.marker_density_per_m3), "marker_density_per_m3", "a positive number");
+  check(positive(c.perception_radius_m), "perception_radius_m", "a positive length");
+  check(c.perception_angle_deg > 0 && c.perception_angle_deg <= 360, "perception_angle_deg",
+        "an angle in (0, 360]");
+  check(positive(c.occupancy_radius_m), "occupancy_radius_m", "a positive length");
+  check(positive(c.region_radius_m), "marker_region_radius_m", "a positive length");
+  check(positive(c.region_height_m), "marker_region_height_m", "a positive length");
+}
+
+// The preset a parameter table names, fitted for the table's light model and tropism pairing.
+GrowthParams preset_from_table(const toml::table& table, const toml::node& preset,
+                               const std::string& file_name) {
+  auto line_of = [](const toml::node& n) { return static_cast<int>(n.source().begin.line); };
+  const auto name = preset.value<std::string>();
+  if (!name) throw ParseError("preset: expected \"A\", \"B\" or \"C\"", file_name, line_of(preset));
+  BudLightModel model = GrowthParams{}.light_model;
+  if (const toml::node* n = table.get("light_model")) {
+    const auto v = n->value<std::string>();
+    const auto m = v ? bud_light_model_from_name(*v) : std::nullopt;
+    if (!m) {
+      throw ValueError("light_model: expected \"sky\", \"shadow_grid\" or \"space_colonization\"",
+                       file_name, line_of(*n));
+    }
+    model = *m;
+  }
+  TropismPairing pairing = TropismPairing::kText;
+  if (const toml::node* n = table.get("preset_tropisms")) {
+    const auto v = n->value<std::string>();
+    const auto t = v ? tropism_pairing_from_name(*v) : std::nullopt;
+    if (!t)
+      throw ValueError("preset_tropisms: expected \"text\" or \"appendix\"", file_name,
+                       line_of(*n));
+    pairing = *t;
+  }
+  try {
+    return growth_preset(*name, model, pairing);
+  } catch (const ValueError& e) {
+    throw ValueError(e.message(), file_name, line_of(preset));
+  }
+}
+
+}  // namespace
 
 void validate(const GrowthParams& p) {
   auto check = [](bool ok, const char* name, const char* expected) {
@@ -48,6 +163,10 @@ void validate(const GrowthParams& p) {
   check(p.internode_length_m > 0 && std::isfinite(p.internode_length_m), "internode_length_m",
         "a positive length");
   check(p.max_shoot_metamers >= 1, "max_shoot_metamers", "an integer >= 1");
+  check(p.min_shoot_vigour >= 0 && std::isfinite(p.min_shoot_vigour), "min_shoot_vigour",
+        "a non-negative number");
+  check(p.sky_light_fraction >= 0 && p.sky_light_fraction <= 1, "sky_light_fraction",
+        "a fraction in [0, 1]");
   check(std::isfinite(p.branching_angle_deg), "branching_angle_deg", "a finite angle");
   check(std::isfinite(p.phyllotaxy_deg), "phyllotaxy_deg", "a finite angle");
   check(p.perturbation_deg >= 0 && p.perturbation_deg <= 90, "perturbation_deg",
@@ -66,6 +185,7 @@ void validate(const GrowthParams& p) {
   check(p.light_directions >= 1, "light_directions", "an integer >= 1");
   check(p.light_significance >= 0 && p.light_significance < 1, "light_significance",
         "a number in [0, 1)");
+  validate_light_model(p, check);
   check(p.tip_radius_m > 0 && std::isfinite(p.tip_radius_m), "tip_radius_m", "a positive length");
   check(p.pipe_exponent >= 1 && p.pipe_exponent <= 4, "pipe_exponent", "a number in [1, 4]");
 }
@@ -81,14 +201,10 @@ GrowthParams parse_growth_params(std::string_view text, const std::string& file_
   }
   GrowthParams p;
   if (auto preset = table["preset"]) {
-    const auto name = preset.value<std::string>();
-    const int line = static_cast<int>(preset.node()->source().begin.line);
-    if (!name) throw ParseError("preset: expected \"A\", \"B\" or \"C\"", file_name, line);
-    try {
-      p = growth_preset(*name);
-    } catch (const ValueError& e) {
-      throw ValueError(e.message(), file_name, line);
-    }
+    p = preset_from_table(table, *preset.node(), file_name);
+  } else if (const toml::node* n = table.get("preset_tropisms")) {
+    throw ValueError("preset_tropisms: chooses the tropisms of a preset; expected a preset key too",
+                     file_name, static_cast<int>(n->source().begin.line));
   }
   using Setter = std::function<bool(const toml::node&)>;
   auto real = [](double& out, double lo, double hi) -> Setter {
@@ -132,6 +248,35 @@ GrowthParams parse_growth_params(std::string_view text, const std::string& file_
       {"light_significance", {real(p.light_significance, 0, 0.999), "a number in [0, 1)"}},
       {"tip_radius_m", {real(p.tip_radius_m, 1e-12, kBig), "a positive length"}},
       {"pipe_exponent", {real(p.pipe_exponent, 1, 4), "a number in [1, 4]"}},
+      {"min_shoot_vigour", {real(p.min_shoot_vigour, 0, kBig), "a non-negative number"}},
+      {"sky_light_fraction", {real(p.sky_light_fraction, 0, 1), "a fraction in [0, 1]"}},
+      {"light_model",
+       {[&p](const toml::node& n) {
+          const auto name = n.value<std::string>();
+          const auto model = name ? bud_light_model_from_name(*name) : std::nullopt;
+          if (model) p.light_model = *model;
+          return model.has_value();
+        },
+        "\"sky\", \"shadow_grid\" or \"space_colonization\""}},
+      {"voxel_size_m", {real(p.shadow_grid.voxel_size_m, 1e-3, kBig), "a length >= 0.001"}},
+      {"shadow_a", {real(p.shadow_grid.shade_a, 1e-12, kBig), "a positive number"}},
+      {"shadow_b", {real(p.shadow_grid.shade_b, 1.000001, kBig), "a number > 1"}},
+      {"shadow_depth_voxels",
+       {integer(p.shadow_grid.depth_voxels, 0, 64), "an integer in [0, 64]"}},
+      {"full_light", {real(p.shadow_grid.full_light, 1e-12, kBig), "a positive number"}},
+      {"obstacle_shade", {real(p.shadow_grid.obstacle_shade, 0, kBig), "a non-negative number"}},
+      {"marker_density_per_m3",
+       {real(p.space_colonization.marker_density_per_m3, 1e-12, kBig), "a positive number"}},
+      {"perception_radius_m",
+       {real(p.space_colonization.perception_radius_m, 1e-6, kBig), "a positive length"}},
+      {"perception_angle_deg",
+       {real(p.space_colonization.perception_angle_deg, 1e-6, 360), "an angle in (0, 360]"}},
+      {"occupancy_radius_m",
+       {real(p.space_colonization.occupancy_radius_m, 1e-6, kBig), "a positive length"}},
+      {"marker_region_radius_m",
+       {real(p.space_colonization.region_radius_m, 1e-6, kBig), "a positive length"}},
+      {"marker_region_height_m",
+       {real(p.space_colonization.region_height_m, 1e-6, kBig), "a positive length"}},
       {"gravity_direction",
        {[&p](const toml::node& n) {
           const auto* a = n.as_array();
@@ -149,7 +294,7 @@ GrowthParams parse_growth_params(std::string_view text, const std::string& file_
     const std::string name(key.str());
     const int line = static_cast<int>(node.source().begin.line);
     const int column = static_cast<int>(node.source().begin.column);
-    if (name == "preset") continue;
+    if (name == "preset" || name == "preset_tropisms") continue;
     const auto it = keys.find(name);
     if (it == keys.end()) {
       throw ParseError("unknown parameter \"" + name +

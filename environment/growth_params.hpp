@@ -3,10 +3,25 @@
 // read from TOML (docs/environment.md) or taken from Pirk's tree types A, B and C.
 #include <Eigen/Core>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 
+#include "environment/shadow_grid.hpp"
+#include "environment/space_colonization.hpp"
+
 namespace fspm::environment {
+
+// Where a bud's light Q and optimal growth direction V come from (Palubicki et al. 2009, 4.1).
+enum class BudLightModel {
+  kSky,                // the sky hemisphere of Pirk eq. 4.3, shaded by leaf clusters and occluders
+  kShadowGrid,         // Palubicki's shadow propagation in a voxel grid (local shade)
+  kSpaceColonization,  // marker points and perception cones (Runions et al. 2007)
+};
+// The name used in parameter files ("sky", "shadow_grid", "space_colonization").
+std::string_view bud_light_model_name(BudLightModel model);
+// The model of a name, or nullopt for an unknown one.
+std::optional<BudLightModel> bud_light_model_from_name(std::string_view name);
 
 struct GrowthParams {
   int years = 20;          // growth cycles
@@ -14,9 +29,12 @@ struct GrowthParams {
   // Borchert-Honda allocation (Palubicki eq. for v_base = alpha * Q_base, apical control lambda).
   double alpha = 3.0;
   double apical_control = 0.47;
-  // Shoots: n = floor(v) metamers, at most max_shoot_metamers, each internode_length_m long.
+  // Shoots (Palubicki's continuous option): a bud with vigour v >= min_shoot_vigour grows a shoot
+  // of total length v * internode_length_m, in n = round(v) metamers (at least 1, at most
+  // max_shoot_metamers) of equal length, so no fraction of v is lost.
   double internode_length_m = 0.15;
   int max_shoot_metamers = 5;
+  double min_shoot_vigour = 0.5;
   double branching_angle_deg = 40.0;
   double phyllotaxy_deg = 137.5;
   double perturbation_deg = 4.0;
@@ -35,19 +53,36 @@ struct GrowthParams {
   int leaf_years = 2;
   double cluster_radius_m = 0.3;
   double gamma0 = 0.5;
-  // Light at buds (see Sky): fewer directions and a coarser shadow-volume cutoff than `fspm light`.
+  // Light at buds.
+  BudLightModel light_model = BudLightModel::kShadowGrid;
+  // Share of the open sky's light that reaches the stand (1: open site); scales every bud's Q.
+  double sky_light_fraction = 1.0;
+  // kSky: fewer directions and a coarser shadow-volume cutoff than `fspm light`.
   int light_directions = 64;
   double light_significance = 0.01;
+  ShadowGridParams shadow_grid;                // kShadowGrid
+  SpaceColonizationParams space_colonization;  // kSpaceColonization
   // Geometry: pipe model r^n = sum r_child^n from the tip radius.
   double tip_radius_m = 0.004;
   double pipe_exponent = 2.5;
 };
 
-// Pirk's tree types (4.5.4): "A" phototropism 0.25, gravitropism 0.12; "B" 0.45, 0.44; "C" 0.03,
-// 0.23, older and with a smaller pruning factor. Throws ValueError for another name.
-GrowthParams growth_preset(std::string_view name);
+// Which tropism weights Pirk's tree types take. Pirk's text (4.5.4) pairs them as A 0.25 / 0.12,
+// B 0.45 / 0.44, C 0.03 / 0.23 (phototropism / gravitropism); the captions of the thesis'
+// appendix tables read A 0.25 / 0.12, B 0.45 / 0.03, C 0.44 / 0.23.
+enum class TropismPairing { kText, kAppendix };
+std::string_view tropism_pairing_name(TropismPairing pairing);  // "text", "appendix"
+std::optional<TropismPairing> tropism_pairing_from_name(std::string_view name);
 
-// Reads a TOML parameter file; `preset = "A"` starts from a preset, other keys override it.
+// Pirk's tree types (4.5.4) "A", "B", "C" (C older and with a smaller pruning factor), with the
+// vigour alpha fitted for `light_model` so that trees of 10 / 20 / 30 cycles have about Pirk
+// Table 4.2's sizes. Throws ValueError for another name.
+GrowthParams growth_preset(std::string_view name,
+                           BudLightModel light_model = BudLightModel::kShadowGrid,
+                           TropismPairing pairing = TropismPairing::kText);
+
+// Reads a TOML parameter file; `preset = "A"` starts from a preset (fitted for the file's
+// `light_model` and `preset_tropisms`), other keys override it.
 // Throws ParseError (bad TOML, unknown key) or ValueError (value out of range) naming file and
 // line.
 GrowthParams read_growth_params(const std::string& path);

@@ -252,11 +252,54 @@ void bind_light(py::module_& m) {
       "(light (N,), directions (N, 3))");
 }
 
+// A field of a nested parameter struct, bound flat under its parameter-file name.
+template <typename Outer, typename Inner, typename T>
+void nested_field(py::class_<Outer>& cls, const char* name, Inner Outer::*inner, T Inner::*field) {
+  cls.def_property(
+      name, [inner, field](const Outer& o) { return o.*inner.*field; },
+      [inner, field](Outer& o, T v) { o.*inner.*field = v; });
+}
+
+void bind_growth_light(py::class_<env::GrowthParams>& gp) {
+  gp.def_property(
+      "light_model",
+      [](const env::GrowthParams& p) {
+        return std::string(env::bud_light_model_name(p.light_model));
+      },
+      [](env::GrowthParams& p, const std::string& name) {
+        const auto model = env::bud_light_model_from_name(name);
+        if (!model) {
+          throw ValueError(
+              "light_model: expected \"sky\", \"shadow_grid\" or "
+              "\"space_colonization\", got \"" +
+              name + "\"");
+        }
+        p.light_model = *model;
+      },
+      "Where buds get light: 'sky', 'shadow_grid' or 'space_colonization'");
+  using GP = env::GrowthParams;
+  using SG = env::ShadowGridParams;
+  using SC = env::SpaceColonizationParams;
+  nested_field(gp, "voxel_size_m", &GP::shadow_grid, &SG::voxel_size_m);
+  nested_field(gp, "shadow_a", &GP::shadow_grid, &SG::shade_a);
+  nested_field(gp, "shadow_b", &GP::shadow_grid, &SG::shade_b);
+  nested_field(gp, "shadow_depth_voxels", &GP::shadow_grid, &SG::depth_voxels);
+  nested_field(gp, "full_light", &GP::shadow_grid, &SG::full_light);
+  nested_field(gp, "obstacle_shade", &GP::shadow_grid, &SG::obstacle_shade);
+  nested_field(gp, "marker_density_per_m3", &GP::space_colonization, &SC::marker_density_per_m3);
+  nested_field(gp, "perception_radius_m", &GP::space_colonization, &SC::perception_radius_m);
+  nested_field(gp, "perception_angle_deg", &GP::space_colonization, &SC::perception_angle_deg);
+  nested_field(gp, "occupancy_radius_m", &GP::space_colonization, &SC::occupancy_radius_m);
+  nested_field(gp, "marker_region_radius_m", &GP::space_colonization, &SC::region_radius_m);
+  nested_field(gp, "marker_region_height_m", &GP::space_colonization, &SC::region_height_m);
+}
+
 void bind_growth(py::module_& m) {
   py::class_<env::GrowthParams> gp(
       m, "GrowthParams",
       "Parameters of the self-organizing growth model (docs/environment.md). "
       "GrowthParams(preset='A', years=10) starts from Pirk's tree type A");
+  bind_growth_light(gp);
   Fields<env::GrowthParams>(gp)
       .add("years", &env::GrowthParams::years)
       .add("seed", &env::GrowthParams::seed)
@@ -264,6 +307,8 @@ void bind_growth(py::module_& m) {
       .add("apical_control", &env::GrowthParams::apical_control)
       .add("internode_length_m", &env::GrowthParams::internode_length_m)
       .add("max_shoot_metamers", &env::GrowthParams::max_shoot_metamers)
+      .add("min_shoot_vigour", &env::GrowthParams::min_shoot_vigour)
+      .add("sky_light_fraction", &env::GrowthParams::sky_light_fraction)
       .add("branching_angle_deg", &env::GrowthParams::branching_angle_deg)
       .add("phyllotaxy_deg", &env::GrowthParams::phyllotaxy_deg)
       .add("perturbation_deg", &env::GrowthParams::perturbation_deg)
@@ -279,6 +324,19 @@ void bind_growth(py::module_& m) {
       .add("light_significance", &env::GrowthParams::light_significance)
       .add("tip_radius_m", &env::GrowthParams::tip_radius_m)
       .add("pipe_exponent", &env::GrowthParams::pipe_exponent)
+      .existing("light_model")
+      .existing("voxel_size_m")
+      .existing("shadow_a")
+      .existing("shadow_b")
+      .existing("shadow_depth_voxels")
+      .existing("full_light")
+      .existing("obstacle_shade")
+      .existing("marker_density_per_m3")
+      .existing("perception_radius_m")
+      .existing("perception_angle_deg")
+      .existing("occupancy_radius_m")
+      .existing("marker_region_radius_m")
+      .existing("marker_region_height_m")
       .finish(&growth_base);
   gp.def(
       "validate", [](const env::GrowthParams& p) { env::validate(p); },

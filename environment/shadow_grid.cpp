@@ -1,0 +1,249 @@
+#include "environment/shadow_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "fspm/error.hpp"
+
+namespace fspm::environment {
+namespace {
+
+constexpr double kMaxVoxels = 6e7;  // about 1 GB of grid buffers
+constexpr double kUnknown = -1.0;   // shade not computed yet (shade is never negative)
+
+}  // namespace
+
+ShadowGrid::ShadowGrid(const ShadowGridParams& params) : p_(params) {
+  if (!(p_.voxel_size_m > 0) || !(p_.shade_a > 0) || !(p_.shade_b > 1) || p_.depth_voxels < 0 ||
+      !(p_.full_light > 0) || !(p_.obstacle_shade >= 0)) {
+    throw ValueError(
+        "shadow grid: expected voxel_size_m > 0, shadow_a > 0, shadow_b > 1, "
+        "shadow_depth_voxels >= 0 and full_light > 0");
+  }
+}
+
+void ShadowGrid::reset(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+  const double h = p_.voxel_size_m;
+  const int reach = p_.depth_voxels + 1;
+  // Voxels are aligned to multiples of h so that the same point always falls in the same voxel.
+  const Eigen::Vector3d first = (lo / h).array().floor() - Eigen::Array3d(reach, reach, 1);
+  const Eigen::Vector3d last = (hi / h).array().floor() + Eigen::Array3d(reach, reach, reach);
+  const double voxels = (last - first + Eigen::Vector3d::Ones()).prod();
+  if (!(voxels <= kMaxVoxels)) {
+    throw ValueError(
+        "shadow grid: the tree spans more than 6 x 10^7 voxels; use a larger "
+        "voxel_size_m");
+  }
+  origin_ = first * h;
+  n_ = (last - first).cast<int>() + Eigen::Vector3i::Ones();
+  const std::size_t total = static_cast<std::size_t>(n_.x()) * n_.y() * n_.z();
+  // Buffers only grow, and by half again, so a growing tree does not touch fresh memory every
+  // cycle; only the used part is cleared.
+  auto clear = [total](auto& v, auto value) {
+    if (v.capacity() < total) v.reserve(total + total / 2);
+    v.assign(total, value);
+  };
+  clear(source_, 0.0);
+  clear(shade_, kUnknown);
+  clear(obstacle_, std::uint8_t{0});
+}
+
+std::size_t ShadowGrid::index(int i, int j, int k) const {
+  return (static_cast<std::size_t>(k) * n_.y() + j) * n_.x() + i;
+}
+
+Eigen::Vector3d ShadowGrid::voxel_center(int i, int j, int k) const {
+  return origin_ + p_.voxel_size_m * Eigen::Vector3d(i + 0.5, j + 0.5, k + 0.5);
+}
+
+bool ShadowGrid::voxel_of(const Eigen::Vector3d& p, Eigen::Vector3i& v) const {
+  const Eigen::Vector3d f = ((p - origin_) / p_.voxel_size_m).array().floor();
+  if (!f.allFinite()) return false;
+  for (int a = 0; a < 3; ++a) {
+    if (f[a] < 0 || f[a] >= n_[a]) return false;
+    v[a] = static_cast<int>(f[a]);
+  }
+  return true;
+}
+
+void ShadowGrid::mark_obstacle(int i, int j, int k, double translucency, double fraction) {
+  const std::size_t at = index(i, j, k);
+  if (obstacle_[at]) return;  // a voxel casts the shade of one obstacle at most
+  obstacle_[at] = 1;
+  source_[at] +=
+      p_.obstacle_shade * p_.full_light * (1.0 - std::clamp(translucency, 0.0, 1.0)) * fraction;
+}
+
+template <typename Inside>
+void ShadowGrid::fill_region(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
+                             double translucency, const Inside& inside) {
+  // The share of a voxel an obstacle fills, from 4 x 4 x 4 sample points, so that a wall casts
+  // shade in proportion to its thickness whatever its alignment to the grid.
+  constexpr int kSamples = 4;
+  const double h = p_.voxel_size_m;
+  Eigen::Vector3i a, b;
+  for (int d = 0; d < 3; ++d) {
+    a[d] = std::max(0, static_cast<int>(std::floor((lo[d] - origin_[d]) / h)));
+    b[d] = std::min(n_[d] - 1, static_cast<int>(std::floor((hi[d] - origin_[d]) / h)));
+  }
+  for (int k = a.z(); k <= b.z(); ++k) {
+    for (int j = a.y(); j <= b.y(); ++j) {
+      for (int i = a.x(); i <= b.x(); ++i) {
+        const Eigen::Vector3d corner = origin_ + h * Eigen::Vector3d(i, j, k);
+        int hits = 0;
+        for (int s = 0; s < kSamples * kSamples * kSamples; ++s) {
+          const Eigen::Vector3d f((s % kSamples + 0.5) / kSamples,
+                                  (s / kSamples % kSamples + 0.5) / kSamples,
+                                  (s / (kSamples * kSamples) + 0.5) / kSamples);
+          hits += inside(corner + h * f) ? 1 : 0;
+        }
+        if (hits > 0)
+          mark_obstacle(i, j, k, translucency, hits / double(kSamples * kSamples * kSamples));
+      }
+    }
+  }
+}
+
+void ShadowGrid::add_bud(const Eigen::Vector3d& p, double weight) {
+  Eigen::Vector3i v;
+  if (voxel_of(p, v)) source_[index(v.x(), v.y(), v.z())] += p_.shade_a * weight;
+}
+
+void ShadowGrid::add_obstacles(const Scene& scene) {
+  for (const Box& b : scene.boxes) add_box(b);
+  for (const Sphere& s : scene.spheres) add_sphere(s);
+  for (const TriangleMesh& m : scene.meshes) add_mesh(m);
+}
+
+void ShadowGrid::add_box(const Box& box) {
+  const Eigen::Vector3d reach = box.rotation.cwiseAbs() * box.half_extent;
+  fill_region(box.center - reach, box.center + reach, box.translucency,
+              [&box](const Eigen::Vector3d& p) { return box.contains(p); });
+}
+
+void ShadowGrid::add_sphere(const Sphere& sphere) {
+  const Eigen::Vector3d reach = Eigen::Vector3d::Constant(sphere.radius_m);
+  const double r2 = sphere.radius_m * sphere.radius_m;
+  fill_region(sphere.center - reach, sphere.center + reach, sphere.translucency,
+              [&](const Eigen::Vector3d& p) { return (p - sphere.center).squaredNorm() <= r2; });
+}
+
+void ShadowGrid::add_mesh(const TriangleMesh& mesh) {
+  // Triangles are sampled at a third of a voxel, so no voxel they cross is missed.
+  const double step = p_.voxel_size_m / 3.0;
+  for (const Eigen::Vector3i& t : mesh.triangles) {
+    const Eigen::Vector3d& a = mesh.vertices[t[0]];
+    const Eigen::Vector3d e1 = mesh.vertices[t[1]] - a, e2 = mesh.vertices[t[2]] - a;
+    const int n = std::max(1, static_cast<int>(std::ceil(std::max(e1.norm(), e2.norm()) / step)));
+    if (n > 100000) throw ValueError("shadow grid: a mesh triangle spans more than 10^5 voxels");
+    for (int u = 0; u <= n; ++u) {
+      for (int w = 0; u + w <= n; ++w) {
+        Eigen::Vector3i v;
+        if (voxel_of(a + (u * e1 + w * e2) / n, v)) {
+          mark_obstacle(v.x(), v.y(), v.z(), mesh.translucency, 1.0);
+        }
+      }
+    }
+  }
+}
+
+void ShadowGrid::build_summed_area_tables() {
+  const int sx = n_.x() + 1, sy = n_.y() + 1;
+  const std::size_t total = static_cast<std::size_t>(sx) * sy * n_.z();
+  if (sat_.capacity() < total) sat_.reserve(total + total / 2);
+  sat_.assign(total, 0.0);
+  for (int k = 0; k < n_.z(); ++k) {
+    double* layer = sat_.data() + static_cast<std::size_t>(k) * sx * sy;
+    for (int j = 0; j < n_.y(); ++j) {
+      double row = 0.0;
+      for (int i = 0; i < n_.x(); ++i) {
+        row += source_[index(i, j, k)];
+        layer[(j + 1) * sx + i + 1] = layer[j * sx + i + 1] + row;
+      }
+    }
+  }
+}
+
+double ShadowGrid::box_sum(int k, int i0, int i1, int j0, int j1) const {
+  // Sum of source_ over layer k, i in [i0, i1], j in [j0, j1] (clipped to the grid).
+  i0 = std::max(i0, 0);
+  j0 = std::max(j0, 0);
+  i1 = std::min(i1, n_.x() - 1);
+  j1 = std::min(j1, n_.y() - 1);
+  if (i0 > i1 || j0 > j1) return 0.0;
+  const int sx = n_.x() + 1;
+  const double* layer = sat_.data() + static_cast<std::size_t>(k) * sx * (n_.y() + 1);
+  return layer[(j1 + 1) * sx + i1 + 1] - layer[j0 * sx + i1 + 1] - layer[(j1 + 1) * sx + i0] +
+         layer[j0 * sx + i0];
+}
+
+void ShadowGrid::propagate() {
+  build_summed_area_tables();
+  falloff_.resize(p_.depth_voxels + 1);
+  for (int q = 0; q <= p_.depth_voxels; ++q) falloff_[q] = std::pow(p_.shade_b, -q);
+}
+
+double ShadowGrid::voxel_shade(int i, int j, int k) const {
+  // Computed when first asked: buds and their neighbours are a small part of the grid.
+  double& s = shade_[index(i, j, k)];
+  if (s != kUnknown) return s;
+  // Palubicki: s(i, j, k) = sum over q of b^-q times the sources of layer k + q within the
+  // square of half width q above (i, j).
+  const int q_last = std::min(p_.depth_voxels, n_.z() - 1 - k);
+  double sum = 0.0;
+  for (int q = 0; q <= q_last; ++q) sum += falloff_[q] * box_sum(k + q, i - q, i + q, j - q, j + q);
+  s = sum;
+  return s;
+}
+
+double ShadowGrid::shade(const Eigen::Vector3d& p) const {
+  Eigen::Vector3i v;
+  return voxel_of(p, v) ? voxel_shade(v.x(), v.y(), v.z()) : 0.0;
+}
+
+bool ShadowGrid::obstacle(const Eigen::Vector3d& p) const {
+  Eigen::Vector3i v;
+  return voxel_of(p, v) && obstacle_[index(v.x(), v.y(), v.z())] != 0;
+}
+
+double ShadowGrid::bud_light(const Eigen::Vector3d& p) const {
+  Eigen::Vector3i v;
+  if (!voxel_of(p, v)) return 1.0;
+  const std::size_t at = index(v.x(), v.y(), v.z());
+  if (obstacle_[at]) return 0.0;
+  // Palubicki: Q = max(C - s + a, 0).
+  const double q = std::max(p_.full_light - voxel_shade(v.x(), v.y(), v.z()) + p_.shade_a, 0.0);
+  return std::min(q / p_.full_light, 1.0);
+}
+
+Eigen::Vector3d ShadowGrid::growth_direction(const Eigen::Vector3d& p) const {
+  Eigen::Vector3i v;
+  if (!voxel_of(p, v)) return Eigen::Vector3d::UnitZ();
+  constexpr double kTie = 1e-9;
+  double best = 1e300;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (int dk = -1; dk <= 1; ++dk) {
+    for (int dj = -1; dj <= 1; ++dj) {
+      for (int di = -1; di <= 1; ++di) {
+        const Eigen::Vector3i w = v + Eigen::Vector3i(di, dj, dk);
+        if ((di == 0 && dj == 0 && dk == 0) || (w.array() < 0).any() ||
+            (w.array() >= n_.array()).any()) {
+          continue;
+        }
+        const std::size_t at = index(w.x(), w.y(), w.z());
+        if (obstacle_[at]) continue;
+        const double s = voxel_shade(w.x(), w.y(), w.z());
+        const Eigen::Vector3d u = Eigen::Vector3d(di, dj, dk).normalized();
+        if (s < best - kTie) {
+          best = s;
+          sum = u;
+        } else if (s <= best + kTie) {
+          sum += u;
+        }
+      }
+    }
+  }
+  return sum.norm() > 1e-12 ? Eigen::Vector3d(sum.normalized()) : Eigen::Vector3d::UnitZ();
+}
+
+}  // namespace fspm::environment

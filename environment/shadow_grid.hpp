@@ -1,0 +1,91 @@
+#pragma once
+// Shadow propagation in a voxel grid (Palubicki et al. 2009, section 4.1, "shadow propagation").
+// Every bud adds shade to the pyramid of voxels below it: the voxel (i +- p, j +- p, k - q) gets
+// a * b^-q for q = 0..q_max and |p| <= q. A bud's light is Q = max(C - s + a, 0) (s the shade of
+// its voxel, the + a removes its own), reported here as Q / C in [0, 1]; its optimal growth
+// direction points to the least shaded of the 26 neighbouring voxels. The shade is local: nothing
+// further than q_max voxels away reaches a bud, which is what lets a tree beside a wall keep the
+// light of its far side.
+//
+// Obstacles take part as voxels: a voxel overlapping an obstacle is fully shaded (no light for a
+// bud inside it, never chosen as a growth direction) and casts obstacle_shade * C * (1 -
+// translucency) times the share of the voxel it fills into the pyramid below it, so an opaque
+// roof darkens what lies under it and a wall shades the buds within about q_max voxels of it. The
+// pyramid is vertical: the sky's brightest point is taken at the zenith, as in Palubicki's model.
+//
+// The pyramid sum is computed per layer from 2D summed-area tables, so a voxel's shade costs
+// O(q_max) whatever the number of buds; it is computed only for the voxels asked about. Buffers
+// are kept between resets.
+#include <Eigen/Core>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "environment/scene.hpp"
+
+namespace fspm::environment {
+
+struct ShadowGridParams {
+  double voxel_size_m = 0.15;
+  double shade_a = 1.0;     // a: shade a bud casts into its own voxel
+  double shade_b = 2.0;     // b: each layer further down receives 1/b of the layer above
+  int depth_voxels = 8;     // q_max
+  double full_light = 3.0;  // C: the light of an unshaded voxel, in units of a
+  // Shade a voxel filled by an opaque obstacle casts, in units of C. 0.1 gives a bud one voxel
+  // from a tall opaque wall one voxel thick Q / C = 1 - 0.1 * sum_q (2q + 1) 2^-q = 0.51, about
+  // the half sky the wall hides.
+  double obstacle_shade = 0.1;
+};
+
+class ShadowGrid {
+ public:
+  explicit ShadowGrid(const ShadowGridParams& params);
+
+  // Empties the grid and sizes it to cover every bud inside [lo, hi] together with every voxel
+  // whose shade can reach them (q_max voxels beside and above).
+  void reset(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi);
+  // Marks the voxels the scene's occluders overlap (boxes, spheres, triangle meshes; the ground
+  // only shades below itself and is skipped) as obstacles and as shade sources.
+  void add_obstacles(const Scene& scene);
+  // A bud at p casts a (strength 1) or `weight` times a.
+  void add_bud(const Eigen::Vector3d& p, double weight = 1.0);
+  // Propagates the shade of every source; call after the last add_* and before any query.
+  void propagate();
+
+  // Palubicki's Q / C for a bud at p (its own shade a removed), in [0, 1].
+  double bud_light(const Eigen::Vector3d& p) const;
+  // Unit vector from p towards the least shaded neighbouring voxels (their mean when several tie);
+  // straight up when every neighbour is an obstacle.
+  Eigen::Vector3d growth_direction(const Eigen::Vector3d& p) const;
+
+  // Shade s of the voxel containing p (0 outside the grid), for tests.
+  double shade(const Eigen::Vector3d& p) const;
+  bool obstacle(const Eigen::Vector3d& p) const;
+  Eigen::Vector3i dimensions() const { return n_; }
+
+ private:
+  bool voxel_of(const Eigen::Vector3d& p, Eigen::Vector3i& v) const;
+  std::size_t index(int i, int j, int k) const;
+  Eigen::Vector3d voxel_center(int i, int j, int k) const;
+  void mark_obstacle(int i, int j, int k, double translucency, double fraction);
+  template <typename Inside>
+  void fill_region(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, double translucency,
+                   const Inside& inside);
+  void add_box(const Box& box);
+  void add_sphere(const Sphere& sphere);
+  void add_mesh(const TriangleMesh& mesh);
+  void build_summed_area_tables();
+  double box_sum(int k, int i0, int i1, int j0, int j1) const;
+  double voxel_shade(int i, int j, int k) const;
+
+  ShadowGridParams p_;
+  Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();  // corner of voxel (0, 0, 0)
+  Eigen::Vector3i n_ = Eigen::Vector3i::Zero();
+  std::vector<double> source_;         // shade cast per voxel, in units of a
+  mutable std::vector<double> shade_;  // s per voxel, computed when first asked
+  std::vector<double> falloff_;        // b^-q
+  std::vector<std::uint8_t> obstacle_;
+  std::vector<double> sat_;  // per layer (nx + 1) x (ny + 1) summed-area table of source_
+};
+
+}  // namespace fspm::environment

@@ -1,0 +1,133 @@
+#include "environment/shadow_grid.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "fspm/error.hpp"
+
+namespace fspm::environment {
+namespace {
+
+// Palubicki's pyramid written out directly: the shade a source at voxel (si, sj, sk) casts on
+// voxel (i, j, k) is strength * b^-q with q = sk - k when max(|i - si|, |j - sj|) <= q <= q_max.
+double pyramid_shade(const ShadowGridParams& p, const Eigen::Vector3i& source, double strength,
+                     const Eigen::Vector3i& at) {
+  const int q = source.z() - at.z();
+  if (q < 0 || q > p.depth_voxels) return 0.0;
+  if (std::abs(at.x() - source.x()) > q || std::abs(at.y() - source.y()) > q) return 0.0;
+  return strength * std::pow(p.shade_b, -q);
+}
+
+Eigen::Vector3d center_of(const Eigen::Vector3i& v, double h) {
+  return h * (v.cast<double>() + Eigen::Vector3d::Constant(0.5));
+}
+
+TEST(ShadowGrid, LoneBudHasFullLightAndCastsThePyramid) {
+  ShadowGridParams p;
+  ShadowGrid grid(p);
+  const double h = p.voxel_size_m;
+  const Eigen::Vector3i bud(10, 10, 20);
+  grid.reset(center_of(bud, h) - Eigen::Vector3d::Constant(3 * h), center_of(bud, h));
+  grid.add_bud(center_of(bud, h));
+  grid.propagate();
+  EXPECT_DOUBLE_EQ(grid.bud_light(center_of(bud, h)), 1.0);
+  EXPECT_DOUBLE_EQ(grid.shade(center_of(bud, h)), p.shade_a);
+  // One layer down, the 3 x 3 square gets a / b; two layers down the 5 x 5 square a / b^2.
+  EXPECT_DOUBLE_EQ(grid.shade(center_of(bud + Eigen::Vector3i(1, -1, -1), h)), 0.5);
+  EXPECT_DOUBLE_EQ(grid.shade(center_of(bud + Eigen::Vector3i(2, 0, -1), h)), 0.0);
+  EXPECT_DOUBLE_EQ(grid.shade(center_of(bud + Eigen::Vector3i(-2, 2, -2), h)), 0.25);
+  EXPECT_DOUBLE_EQ(grid.shade(center_of(bud + Eigen::Vector3i(0, 0, 1), h)), 0.0);
+  // Its optimal direction avoids the shade below: the mean of the 17 unshaded neighbours is up.
+  const Eigen::Vector3d v = grid.growth_direction(center_of(bud, h));
+  EXPECT_NEAR(v.x(), 0.0, 1e-12);
+  EXPECT_NEAR(v.y(), 0.0, 1e-12);
+  EXPECT_GT(v.z(), 0.5);
+}
+
+TEST(ShadowGrid, BudBelowAnotherHasPalubickisLight) {
+  ShadowGridParams p;
+  ShadowGrid grid(p);
+  const double h = p.voxel_size_m;
+  const Eigen::Vector3i top(4, 4, 9), below(4, 4, 8);
+  grid.reset(center_of(below, h), center_of(top, h));
+  grid.add_bud(center_of(top, h));
+  grid.add_bud(center_of(below, h));
+  grid.propagate();
+  // Q = C - s + a with s = a (its own) + a / b (the bud above), as a share of C.
+  EXPECT_DOUBLE_EQ(grid.bud_light(center_of(below, h)), (p.full_light - 0.5) / p.full_light);
+  EXPECT_DOUBLE_EQ(grid.bud_light(center_of(top, h)), 1.0);
+}
+
+TEST(ShadowGrid, ShadeOfManyBudsEqualsTheDirectSum) {
+  ShadowGridParams p;
+  p.depth_voxels = 5;
+  p.shade_b = 1.7;
+  const double h = p.voxel_size_m;
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<int> coord(0, 12);
+  std::vector<Eigen::Vector3i> buds;
+  for (int n = 0; n < 60; ++n) buds.emplace_back(coord(rng), coord(rng), coord(rng));
+  ShadowGrid grid(p);
+  grid.reset(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(13 * h));
+  for (const auto& b : buds) grid.add_bud(center_of(b, h));
+  grid.propagate();
+  for (int k = 0; k < 13; ++k) {
+    for (int j = 0; j < 13; ++j) {
+      for (int i = 0; i < 13; ++i) {
+        double expect = 0.0;
+        for (const auto& b : buds) expect += pyramid_shade(p, b, p.shade_a, {i, j, k});
+        EXPECT_NEAR(grid.shade(center_of({i, j, k}, h)), expect, 1e-9) << i << " " << j << " " << k;
+      }
+    }
+  }
+}
+
+TEST(ShadowGrid, WallShadesOnlyNearbyBudsAndTurnsThemAway) {
+  ShadowGridParams p;
+  const double h = p.voxel_size_m;
+  Scene scene;
+  scene.boxes.push_back(Box::wall({2.0, -20}, {2.0, 20}, 0.0, 4.0, 0.2));
+  ShadowGrid grid(p);
+  grid.reset(Eigen::Vector3d(-4, -1, 0), Eigen::Vector3d(1.9, 1, 3));
+  grid.add_obstacles(scene);
+  // Buds side by side at one height do not shade each other (shade only falls).
+  const Eigen::Vector3d far_bud(2.0 - (p.depth_voxels + 2) * h, -1.0, 1.0), mid_bud(1.2, 0.0, 1.0),
+      near_bud(1.75, 1.0, 1.0);
+  for (const auto& b : {far_bud, mid_bud, near_bud}) grid.add_bud(b);
+  grid.propagate();
+  EXPECT_TRUE(grid.obstacle({2.0, 0.0, 1.0}));
+  EXPECT_FALSE(grid.obstacle({1.5, 0.0, 1.0}));
+  // Light falls towards the wall, and nothing beyond q_max voxels of it is shaded.
+  const double far = grid.bud_light(far_bud);
+  const double mid = grid.bud_light(mid_bud);
+  const double near = grid.bud_light(near_bud);
+  EXPECT_DOUBLE_EQ(far, 1.0);
+  EXPECT_LT(mid, 1.0);
+  EXPECT_LT(near, mid);
+  EXPECT_DOUBLE_EQ(grid.bud_light({2.0, 0.0, 1.0}), 0.0);  // inside the wall
+  EXPECT_LT(grid.growth_direction({1.5, 0.0, 1.0}).x(), -0.1);
+  // Above the wall's top there is no shade from it.
+  EXPECT_DOUBLE_EQ(grid.shade({1.75, 0.0, 4.3}), 0.0);
+}
+
+TEST(ShadowGrid, OpaqueRoofDarkensWhatLiesBelow) {
+  ShadowGridParams p;
+  Scene scene;
+  scene.boxes.push_back(Box::from_min_max({-1, -1, 2.0}, {1, 1, 2.2}));
+  ShadowGrid grid(p);
+  grid.reset(Eigen::Vector3d(-0.1, -0.1, 1.5), Eigen::Vector3d(0.1, 0.1, 1.6));
+  grid.add_obstacles(scene);
+  grid.add_bud({0.01, 0.01, 1.85});
+  grid.propagate();
+  // The roof fills 3 of the 4 sample heights of the layers [1.95, 2.1) and [2.1, 2.25) m, 1 and
+  // 2 voxels above the bud: s = 0.1 C * 3/4 * (9 / 2 + 25 / 4), so Q / C = 1 - 0.075 * 10.75.
+  EXPECT_NEAR(grid.bud_light({0.01, 0.01, 1.85}), 1.0 - 0.075 * 10.75, 1e-9);
+  EXPECT_TRUE(grid.obstacle({0.0, 0.0, 2.1}));
+  EXPECT_THROW(ShadowGrid(ShadowGridParams{0.0}), ValueError);
+}
+
+}  // namespace
+}  // namespace fspm::environment
