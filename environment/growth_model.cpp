@@ -157,11 +157,14 @@ class Grower {
         sense_markers();
         break;
     }
-    if (p_.sky_light_fraction != 1.0) {
-      for (std::size_t i = 0; i < n; ++i) {
-        q_terminal_[i] *= p_.sky_light_fraction;
-        q_lateral_[i] *= p_.sky_light_fraction;
-      }
+    const double f = p_.sky_light_fraction, k = p_.light_half_saturation;
+    auto response = [f, k](double q) {
+      q *= f;
+      return std::isinf(k) ? q : q * (1.0 + k) / (q + k);
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+      q_terminal_[i] = response(q_terminal_[i]);
+      q_lateral_[i] = response(q_lateral_[i]);
     }
   }
 
@@ -312,8 +315,14 @@ class Grower {
       }
       if (h.norm() < 1e-12) h = d;
       h.normalize();
-      const Eigen::Vector3d end = pos + length * h;
-      if (scene_.segment_blocked(pos, end)) break;  // no growth into solid obstacles
+      Eigen::Vector3d end = pos + length * h;
+      if (scene_.segment_blocked(pos, end)) {
+        // A shoot that meets a solid turns to its optimal growth direction V (away from the
+        // obstacle's shade) and stops only when that is blocked too.
+        h = light_dir;
+        end = pos + length * h;
+        if (scene_.segment_blocked(pos, end)) break;
+      }
       Metamer m;
       m.start = pos;
       m.end = end;

@@ -57,6 +57,11 @@ struct GrowthParams {
   BudLightModel light_model = BudLightModel::kShadowGrid;
   // Share of the open sky's light that reaches the stand (1: open site); scales every bud's Q.
   double sky_light_fraction = 1.0;
+  // Photosynthetic light response, a rectangular hyperbola (Thornley and Johnson 1990): the
+  // resource of a bud with light Q is P(Q) = Q (1 + K) / (Q + K), 1 in full light, with K the
+  // half-saturation light; K = inf gives Palubicki's linear Q. It is what keeps a little less
+  // light from costing much more than a little size (docs/environment.md, "Size against light").
+  double light_half_saturation = 0.2;
   // kSky: fewer directions and a coarser shadow-volume cutoff than `fspm light`.
   int light_directions = 64;
   double light_significance = 0.01;

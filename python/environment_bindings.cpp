@@ -309,6 +309,7 @@ void bind_growth(py::module_& m) {
       .add("max_shoot_metamers", &env::GrowthParams::max_shoot_metamers)
       .add("min_shoot_vigour", &env::GrowthParams::min_shoot_vigour)
       .add("sky_light_fraction", &env::GrowthParams::sky_light_fraction)
+      .add("light_half_saturation", &env::GrowthParams::light_half_saturation)
       .add("branching_angle_deg", &env::GrowthParams::branching_angle_deg)
       .add("phyllotaxy_deg", &env::GrowthParams::phyllotaxy_deg)
       .add("perturbation_deg", &env::GrowthParams::perturbation_deg)
