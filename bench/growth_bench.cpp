@@ -7,9 +7,11 @@
 
 namespace {
 
-void grow_preset(benchmark::State& state, const char* preset) {
-  fspm::environment::GrowthParams p = fspm::environment::growth_preset(preset);
-  p.years = static_cast<int>(state.range(0));
+void grow_preset(
+    benchmark::State& state, const char* preset, int years,
+    fspm::environment::BudLightModel model = fspm::environment::BudLightModel::kShadowGrid) {
+  fspm::environment::GrowthParams p = fspm::environment::growth_preset(preset, model);
+  p.years = years;
   std::size_t internodes = 0, grown = 0;
   for (auto _ : state) {
     const auto r = fspm::environment::grow_tree(p);
@@ -26,10 +28,24 @@ void grow_preset(benchmark::State& state, const char* preset) {
                          benchmark::Counter::kIsRate);
 }
 
-void BM_GrowPresetA(benchmark::State& state) { grow_preset(state, "A"); }
+void BM_GrowPresetA(benchmark::State& state) {
+  grow_preset(state, "A", static_cast<int>(state.range(0)));
+}
 BENCHMARK(BM_GrowPresetA)->Arg(10)->Arg(20)->Arg(30)->Unit(benchmark::kMillisecond);
 
-void BM_GrowPresetB(benchmark::State& state) { grow_preset(state, "B"); }
+void BM_GrowPresetB(benchmark::State& state) {
+  grow_preset(state, "B", static_cast<int>(state.range(0)));
+}
+
+// Preset A at 30 years with each light model: 0 sky, 1 shadow grid (the default), 2 space
+// colonization.
+void BM_GrowLightModel(benchmark::State& state) {
+  using fspm::environment::BudLightModel;
+  const BudLightModel models[] = {BudLightModel::kSky, BudLightModel::kShadowGrid,
+                                  BudLightModel::kSpaceColonization};
+  grow_preset(state, "A", 30, models[state.range(0)]);
+}
+BENCHMARK(BM_GrowLightModel)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GrowPresetB)->Arg(10)->Arg(20)->Arg(30)->Unit(benchmark::kMillisecond);
 
 void BM_GrowBesideWall(benchmark::State& state) {

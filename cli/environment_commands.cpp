@@ -32,6 +32,8 @@ struct LightOptions {
 struct GrowOptions {
   std::string params;
   std::string preset;
+  std::string light_model;  // with --preset: the light model the preset is fitted for
+  std::string tropisms;     // with --preset: "text" or "appendix"
   std::string scene;
   std::string out;
   std::string format;
@@ -63,14 +65,44 @@ void run_light(const LightOptions& o) {
   }
 }
 
+// The parameters of `fspm grow`: a file, or a preset fitted for --light-model with --tropisms.
+environment::GrowthParams grow_params(const GrowOptions& o) {
+  if (o.preset.empty() && (!o.light_model.empty() || !o.tropisms.empty())) {
+    throw ValueError(
+        "--light-model and --tropisms choose a preset; with PARAMS.toml, set "
+        "light_model and preset_tropisms in the file");
+  }
+  environment::GrowthParams params;
+  if (o.preset.empty()) {
+    params = environment::read_growth_params(o.params);
+  } else {
+    auto model = environment::GrowthParams{}.light_model;
+    if (!o.light_model.empty()) {
+      const auto m = environment::bud_light_model_from_name(o.light_model);
+      if (!m) {
+        throw ValueError("--light-model: expected sky, shadow_grid or space_colonization, got '" +
+                         o.light_model + "'");
+      }
+      model = *m;
+    }
+    auto pairing = environment::TropismPairing::kText;
+    if (!o.tropisms.empty()) {
+      const auto t = environment::tropism_pairing_from_name(o.tropisms);
+      if (!t) throw ValueError("--tropisms: expected text or appendix, got '" + o.tropisms + "'");
+      pairing = *t;
+    }
+    params = environment::growth_preset(o.preset, model, pairing);
+  }
+  if (o.years >= 0) params.years = o.years;
+  if (o.seed >= 0) params.seed = static_cast<std::uint64_t>(o.seed);
+  return params;
+}
+
 void run_grow(const GrowOptions& o) {
   if (o.params.empty() == o.preset.empty()) {
     throw ValueError("expected either a PARAMS.toml file or --preset A|B|C (not both)");
   }
-  environment::GrowthParams params = o.preset.empty() ? environment::read_growth_params(o.params)
-                                                      : environment::growth_preset(o.preset);
-  if (o.years >= 0) params.years = o.years;
-  if (o.seed >= 0) params.seed = static_cast<std::uint64_t>(o.seed);
+  const environment::GrowthParams params = grow_params(o);
   environment::Scene scene;
   if (!o.scene.empty()) scene = environment::read_scene_file(o.scene);
   tree_format_for(o.out, o.format);  // fail on a bad output name before growing
@@ -86,6 +118,7 @@ void run_grow(const GrowOptions& o) {
                 {"height", r.height_m},
                 {"seconds", seconds},
                 {"years", params.years},
+                {"light_model", std::string(environment::bud_light_model_name(params.light_model))},
                 {"output", o.out}});
     return;
   }
@@ -111,6 +144,10 @@ void add_environment_commands(CLI::App& app) {
       "grow", "Self-organizing tree growth (Palubicki 2009) with light, walls and obstacles");
   g->add_option("PARAMS", grow->params, "Growth parameters (TOML, see docs/environment.md)");
   g->add_option("--preset", grow->preset, "Pirk's tree type A, B or C instead of PARAMS");
+  g->add_option("--light-model", grow->light_model,
+                "With --preset: shadow_grid (default), sky or space_colonization");
+  g->add_option("--tropisms", grow->tropisms,
+                "With --preset: Pirk's tropism pairing, text (default) or appendix");
   g->add_option("--scene", grow->scene, "Scene with obstacles and sky (JSON)");
   g->add_option("--years", grow->years, "Growth cycles (default: from the parameters)");
   g->add_option("--seed", grow->seed, "Random seed (default: from the parameters)");

@@ -16,11 +16,32 @@ namespace {
 
 namespace env = fspm::environment;
 
+// GrowthParams(preset=..., light_model=..., preset_tropisms=...): the preset fitted for the light
+// model and with the tropism pairing given, as `preset` in a parameter file.
 env::GrowthParams growth_base(py::dict& values) {
-  if (!values.contains("preset")) return {};
+  if (!values.contains("preset")) {
+    if (values.contains("preset_tropisms")) {
+      throw ValueError("preset_tropisms: chooses the tropisms of a preset; expected a preset too");
+    }
+    return {};
+  }
   const std::string name = py::str(values["preset"]);
   PyDict_DelItemString(values.ptr(), "preset");
-  return env::growth_preset(name);
+  env::BudLightModel model = env::GrowthParams{}.light_model;
+  if (values.contains("light_model")) {
+    const auto m = env::bud_light_model_from_name(std::string(py::str(values["light_model"])));
+    if (m) model = *m;  // an unknown name is refused by the field itself
+  }
+  env::TropismPairing pairing = env::TropismPairing::kText;
+  if (values.contains("preset_tropisms")) {
+    const std::string t = py::str(values["preset_tropisms"]);
+    PyDict_DelItemString(values.ptr(), "preset_tropisms");
+    const auto p = env::tropism_pairing_from_name(t);
+    if (!p)
+      throw ValueError("preset_tropisms: expected \"text\" or \"appendix\", got \"" + t + "\"");
+    pairing = *p;
+  }
+  return env::growth_preset(name, model, pairing);
 }
 
 // Light samples as two numpy arrays viewing one C++ buffer: light (N,) and directions (N, 3).
@@ -343,7 +364,26 @@ void bind_growth(py::module_& m) {
       "validate", [](const env::GrowthParams& p) { env::validate(p); },
       "Raises ParameterError naming the first parameter out of range");
 
-  m.def("growth_preset", &env::growth_preset, py::arg("name"), "Pirk's tree type 'A', 'B' or 'C'");
+  m.def(
+      "growth_preset",
+      [](const std::string& name, const std::string& light_model, const std::string& tropisms) {
+        const auto model = env::bud_light_model_from_name(light_model);
+        if (!model) {
+          throw ValueError(
+              "light_model: expected \"sky\", \"shadow_grid\" or "
+              "\"space_colonization\", got \"" +
+              light_model + "\"");
+        }
+        const auto pairing = env::tropism_pairing_from_name(tropisms);
+        if (!pairing) {
+          throw ValueError("preset_tropisms: expected \"text\" or \"appendix\", got \"" + tropisms +
+                           "\"");
+        }
+        return env::growth_preset(name, *model, *pairing);
+      },
+      py::arg("name"), py::arg("light_model") = "shadow_grid", py::arg("preset_tropisms") = "text",
+      "Pirk's tree type 'A', 'B' or 'C', with vigour fitted for the light model and the tropism "
+      "weights of Pirk's text ('text') or of his appendix captions ('appendix')");
   m.def(
       "read_growth_params",
       [](const std::string& path) {

@@ -105,6 +105,22 @@ def test_growth_parameters_presets_dicts_and_toml(tmp_path):
         fspm.grow_tree(bad)
 
 
+def test_growth_light_models_and_tropism_pairings():
+    p = fspm.GrowthParams(preset="B", light_model="sky", preset_tropisms="appendix")
+    assert p.light_model == "sky" and (p.phototropism, p.gravitropism) == (0.45, 0.03)
+    assert p.alpha == fspm.growth_preset("B", light_model="sky").alpha
+    assert fspm.growth_preset("B").light_model == "shadow_grid"
+    assert fspm.growth_preset("C", preset_tropisms="appendix").phototropism == 0.44
+    with pytest.raises(fspm.ParameterError, match="light_model"):
+        fspm.GrowthParams(light_model="voxels")
+    with pytest.raises(fspm.ParameterError, match="preset_tropisms"):
+        fspm.GrowthParams(preset="A", preset_tropisms="captions")
+    q = fspm.GrowthParams(preset="A", years=5, voxel_size_m=0.2, sky_light_fraction=0.5)
+    assert q.to_dict()["voxel_size_m"] == 0.2
+    # No light, no growth: the first internode only.
+    assert fspm.grow_tree(fspm.GrowthParams(preset="A", years=5, sky_light_fraction=0.0)).internodes == 1
+
+
 def test_grow_tree_is_deterministic_and_consistent():
     params = fspm.GrowthParams(preset="A", years=6, seed=3)
     r = fspm.grow_tree(params)

@@ -82,6 +82,27 @@ TEST(EnvironmentCli, GrowPresetWritesTreeAndJson) {
   EXPECT_EQ(nlohmann::json::parse(again.out)["internodes"], j["internodes"]);
 }
 
+TEST(EnvironmentCli, GrowChoosesTheLightModelOfAPreset) {
+  const auto dir = scratch_dir("grow_models");
+  const std::string out = " -o " + (dir / "t.tree").string() + " --json";
+  for (const char* model : {"sky", "shadow_grid", "space_colonization"}) {
+    const auto r = run_fspm(std::string("grow --preset A --years 6 --light-model ") + model + out);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["light_model"], model);
+  }
+  EXPECT_EQ(nlohmann::json::parse(run_fspm("grow --preset A --years 6" + out).out)["light_model"],
+            "shadow_grid");
+  auto r = run_fspm("grow --preset A --light-model voxels" + out);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("--light-model"), std::string::npos) << r.err;
+  r = run_fspm("grow --preset B --tropisms captions" + out);
+  EXPECT_EQ(r.exit_code, 1);
+  write_text(dir / "p.toml", "years = 3\n");
+  r = run_fspm("grow " + (dir / "p.toml").string() + " --light-model sky" + out);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("light_model"), std::string::npos) << r.err;
+}
+
 TEST(EnvironmentCli, GrowBadInput) {
   const auto dir = scratch_dir("grow_bad");
   write_text(dir / "p.toml", "years = 5\nbranching = 3\n");
