@@ -142,7 +142,7 @@ def test_grow_tree_is_deterministic_and_consistent():
 
 
 def test_plastic_adaptation():
-    tree = fspm.grow_tree(fspm.GrowthParams(preset="A", years=6)).tree
+    tree = fspm.read_tree(str(ROOT / "examples/trees/open_a12.treeb"))  # a 12-year tree of type A
     analysis = fspm.analyze_tree(tree)
     assert analysis.skeleton.shape == (len(tree),)
     assert analysis.clusters.shape[1] == 5 and len(analysis.clusters) > 0

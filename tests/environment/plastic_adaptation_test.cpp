@@ -7,16 +7,28 @@
 #include "environment/growth_model.hpp"
 #include "environment/tree_analysis.hpp"
 #include "fspm/error.hpp"
+#include "fspm/tree_file.hpp"
+#include "fspm/tree_summary.hpp"
 
 namespace fspm::environment {
 namespace {
 
-const GrowthResult& grown_a() {
-  // Grown under the sky model, whose light the analysis estimates (Pirk 4.3.2).
-  static const GrowthResult r = [] {
-    GrowthParams p = growth_preset("A", BudLightModel::kSky);
-    p.years = 12;
-    return grow_tree(p);
+// A fixed open-grown input tree: the shipped 12-year tree of type A (grown by an earlier version
+// of the growth model: sky light, shoots of floor(v) internodes of 0.15 m), so these tests of the
+// analysis and the adaptation do not move when the growth model does.
+struct OpenTree {
+  TreeGraph tree;
+  double height_m = 0.0;
+  std::size_t internodes = 0;
+};
+
+const OpenTree& grown_a() {
+  static const OpenTree r = [] {
+    OpenTree t;
+    t.tree = read_tree_file(FSPM_SOURCE_DIR "/examples/trees/open_a12.treeb");
+    t.height_m = summarize(t.tree).height_m;
+    t.internodes = summarize(t.tree).internodes;
+    return t;
   }();
   return r;
 }
@@ -46,9 +58,9 @@ TEST(PlasticAnalysis, InverseTropismUndoesEquation46) {
 }
 
 TEST(PlasticAnalysis, InternodeLengthMatchesTheGrowthModel) {
-  const GrowthResult& g = grown_a();
+  const OpenTree& g = grown_a();
   const TreeAnalysis a = analyze_tree(g.tree);
-  // Most internodes of the growth model are growth_preset("A").internode_length_m long.
+  // Every internode of the shipped tree is growth_preset("A").internode_length_m long.
   EXPECT_NEAR(a.internode_length_m, growth_preset("A").internode_length_m, 0.015);
   EXPECT_FALSE(a.clusters.empty());
   std::size_t skeleton = 0;
@@ -71,7 +83,7 @@ TEST(PlasticAnalysis, InternodeLengthMatchesTheGrowthModel) {
 TEST(PlasticAnalysis, AgesFollowTheGrowthHistory) {
   // Estimated ages (eq. 4.1-4.2) against the year the growth model created each internode:
   // ages never decrease from parent to child and correlate with the true birth year.
-  const GrowthResult& g = grown_a();
+  const OpenTree& g = grown_a();
   const TreeAnalysis a = analyze_tree(g.tree);
   double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
   double count = 0;
@@ -90,7 +102,7 @@ TEST(PlasticAnalysis, AgesFollowTheGrowthHistory) {
 }
 
 TEST(PlasticAnalysis, IsDeterministic) {
-  const GrowthResult& g = grown_a();
+  const OpenTree& g = grown_a();
   const TreeAnalysis a = analyze_tree(g.tree);
   const TreeAnalysis b = analyze_tree(g.tree);
   EXPECT_EQ(a.age, b.age);
@@ -116,7 +128,7 @@ TEST(PlasticAnalysis, RejectsBadInput) {
 }
 
 TEST(PlasticAdaptation, EmptySceneLeavesTheTreeUnchanged) {
-  const GrowthResult& g = grown_a();
+  const OpenTree& g = grown_a();
   const TreeAnalysis a = analyze_tree(g.tree);
   const AdaptationResult r = adapt_tree(g.tree, a, Scene{});
   EXPECT_EQ(r.pruned_nodes, 0u);
@@ -130,7 +142,7 @@ TEST(PlasticAdaptation, EmptySceneLeavesTheTreeUnchanged) {
 }
 
 TEST(PlasticAdaptation, WallBendsTipsAwayAndPrunesItsShadow) {
-  const GrowthResult& g = grown_a();
+  const OpenTree& g = grown_a();
   const TreeAnalysis a = analyze_tree(g.tree);
   Scene scene;
   // An opaque wall 1.5 m east of the trunk, taller than the tree.
@@ -172,7 +184,7 @@ TEST(PlasticAdaptation, WallBendsTipsAwayAndPrunesItsShadow) {
 
 TEST(PlasticAdaptation, GlobalLightMovesTipsTowardTheNewBrightestPoint) {
   // Grown under a zenith sky, adapted under a sky whose brightest point is low in the west.
-  const GrowthResult& g = grown_a();
+  const OpenTree& g = grown_a();
   const TreeAnalysis a = analyze_tree(g.tree, {}, Eigen::Vector3d::UnitZ());
   Scene scene;
   scene.sky.brightest = Eigen::Vector3d(-1.0, 0.0, 0.5).normalized();
@@ -254,7 +266,7 @@ TEST(PlasticAdaptation, TwoTreesSideBySideLeanApart) {
 TEST(PlasticAnalysis, TemporalStagesOnlyLowerThePruningThresholds) {
   // Eq. 4.12 takes a minimum over stages, so adding the earlier stages (eq. 4.5) can only lower
   // every threshold; an empty scene still leaves the tree unchanged.
-  const GrowthResult& g = grown_a();
+  const OpenTree& g = grown_a();
   AnalysisParams p;
   const TreeAnalysis final_only = analyze_tree(g.tree, p);
   p.temporal_pruning = true;

@@ -12,6 +12,7 @@
 #include "environment/plastic_adaptation.hpp"
 #include "environment/solid_push.hpp"
 #include "environment/tree_analysis.hpp"
+#include "fspm/tree_file.hpp"
 
 namespace fspm::environment {
 namespace {
@@ -20,7 +21,8 @@ const GrowthResult& grown(int years) {
   static std::map<int, GrowthResult> cache;
   auto it = cache.find(years);
   if (it == cache.end()) {
-    GrowthParams p = growth_preset("A");
+    // The sky model branches at most nodes, so the analysis (Pirk 4.3.1) tells the ages apart.
+    GrowthParams p = growth_preset("A", BudLightModel::kSky);
     p.years = years;
     it = cache.emplace(years, grow_tree(p)).first;
   }
@@ -157,14 +159,17 @@ TEST(PlasticAdaptation, LeafDensityFollowsTheLight) {
   }
 }
 
-TEST(PlasticAdaptation, YoungTreeBesideAWallBendsAndPrunes) {
-  // The python test's case (python/tests/test_environment.py): 6 years, wall at x = 0.7.
-  const GrowthResult& g = grown(6);
+TEST(PlasticAdaptation, TreeCloseToAWallBendsAndPrunes) {
+  // The python test's case (python/tests/test_environment.py): the shipped 12-year tree of type
+  // A (examples/trees/open_a12.treeb), a 6 m wall at x = 0.7.
+  struct {
+    TreeGraph tree;
+  } g{read_tree_file(FSPM_SOURCE_DIR "/examples/trees/open_a12.treeb")};
   const TreeAnalysis a = analyze_tree(g.tree);
   Scene scene;
   scene.boxes.push_back(Box::wall({0.7, -20}, {0.7, 20}, 0.0, 6.0, 0.2));
   const AdaptationResult r = adapt_tree(g.tree, a, scene);
-  std::printf("6 years beside a wall: pruned %zu, shift x %.3f\n", r.pruned_nodes,
+  std::printf("12 years close to a wall: pruned %zu, shift x %.3f\n", r.pruned_nodes,
               r.mean_tip_shift.x());
   EXPECT_LT(r.mean_tip_shift.x(), 0.0);
   EXPECT_GT(r.pruned_nodes, 0u);
