@@ -466,6 +466,9 @@ void ClusterLightField::evaluate_batch(std::span<const std::uint32_t> which,
   world.sky.brightest = brightest_;
   world.sky.directions = dirs_.size();
   world.sky.significance = significance_;
+  // The per-cluster path samples the obstacles over the directions: the batch must compute the same
+  // integral, so LightModel's closed-form boxes stay off here.
+  world.sky.analytic_boxes = false;
   std::vector<std::uint32_t> sphere_of(center_.size(), kNoSphere);
   for (std::uint32_t c = 0; c < center_.size(); ++c) {
     if (!alive_[c]) continue;

@@ -107,13 +107,6 @@ double top_z(const Box& b) {
 
 }  // namespace
 
-struct LightModel::Cap {
-  Eigen::Vector3d axis;
-  double cos_a;
-  double sin_a;
-  double gamma;
-};
-
 LightModel::LightModel(const Scene& scene) : scene_(scene), dirs_(scene.sky.directions) {
   Eigen::Vector3d b = scene_.sky.brightest;
   b = b.norm() > 0 ? Eigen::Vector3d(b.normalized()) : Eigen::Vector3d::UnitZ();
@@ -128,6 +121,7 @@ LightModel::LightModel(const Scene& scene) : scene_(scene), dirs_(scene.sky.dire
   }
   open_direction_ = m.norm() > 0 ? Eigen::Vector3d(m.normalized()) : Eigen::Vector3d::UnitZ();
   for (auto& mesh : scene_.meshes) mesh.update_bounds();
+  if (!scene_.boxes.empty()) build_fine_directions();
 
   const double eps = scene_.sky.significance;
   const std::size_t n = scene_.spheres.size();
@@ -256,6 +250,12 @@ bool LightModel::box_relevant(std::size_t i, const Eigen::Vector3d& p) const {
   return (b.center - p).squaredNorm() <= box_reach2_[i];
 }
 
+bool LightModel::mesh_relevant(std::size_t i, const Eigen::Vector3d& p) const {
+  const auto& m = scene_.meshes[i];
+  return mesh_reach2_[i] >= 0 && m.center.z() + m.bounding_radius_m > p.z() &&
+         (m.center - p).squaredNorm() <= mesh_reach2_[i];
+}
+
 LightSample LightModel::evaluate(const Eigen::Vector3d& p, std::uint32_t ignore) const {
   thread_local std::vector<Cap> caps;
   caps.clear();
@@ -295,12 +295,12 @@ LightSample LightModel::evaluate(const Eigen::Vector3d& p, std::uint32_t ignore)
   }
   bool boxes = false;
   for (std::size_t i = 0; i < scene_.boxes.size() && !boxes; ++i) boxes = box_relevant(i, p);
-  for (std::size_t i = 0; i < scene_.meshes.size() && !boxes; ++i) {
-    const auto& m = scene_.meshes[i];
-    boxes = mesh_reach2_[i] >= 0 && m.center.z() + m.bounding_radius_m > p.z() &&
-            (m.center - p).squaredNorm() <= mesh_reach2_[i];
-  }
+  for (std::size_t i = 0; i < scene_.meshes.size() && !boxes; ++i) boxes = mesh_relevant(i, p);
 
+  if (scene_.sky.analytic && scene_.sky.analytic_boxes && boxes) {
+    LightSample out;
+    if (analytic_with_boxes(p, caps, all, out)) return out;
+  }
   if (scene_.sky.analytic && !boxes && caps.size() <= kMaxAnalyticCaps &&
       analytic_caps_exact(std::span<const Cap>(caps))) {
     const AnalyticLight a = analytic_cap_light(scene_.sky.brightest, std::span<const Cap>(caps));
@@ -370,25 +370,7 @@ LightSample LightModel::finish(const Eigen::Vector3d& p, std::vector<double>& vi
         dirs_.for_each_in_cap(d / dist, std::sqrt(dist * dist - r * r) / dist, hit);
       }
     }
-    for (std::size_t k = 0; k < scene_.meshes.size(); ++k) {
-      const auto& m = scene_.meshes[k];
-      if (mesh_reach2_[k] < 0 || m.center.z() + m.bounding_radius_m <= p.z() ||
-          (m.center - p).squaredNorm() > mesh_reach2_[k]) {
-        continue;
-      }
-      const Eigen::Vector3d d = m.center - p;
-      const double dist = d.norm();
-      const double r = m.bounding_radius_m;
-      auto hit = [&](int i) {
-        const int n = m.crossings(p, dirs_.direction(i));
-        if (n > 0) vis[i] *= std::pow(m.translucency, n);
-      };
-      if (dist <= r) {
-        for (int i = 0; i < dirs_.size(); ++i) hit(i);
-      } else {
-        dirs_.for_each_in_cap(d / dist, std::sqrt(dist * dist - r * r) / dist, hit);
-      }
-    }
+    apply_meshes(p, vis);
   }
   double sum = 0.0;
   Eigen::Vector3d m = Eigen::Vector3d::Zero();
@@ -401,6 +383,25 @@ LightSample LightModel::finish(const Eigen::Vector3d& p, std::vector<double>& vi
   out.light = weight_sum_ > 0 ? std::clamp(sum / weight_sum_, 0.0, 1.0) : 0.0;
   out.direction = m.norm() > 1e-300 ? Eigen::Vector3d(m.normalized()) : open_direction_;
   return out;
+}
+
+void LightModel::apply_meshes(const Eigen::Vector3d& p, std::vector<double>& vis) const {
+  for (std::size_t k = 0; k < scene_.meshes.size(); ++k) {
+    if (!mesh_relevant(k, p)) continue;
+    const auto& m = scene_.meshes[k];
+    const Eigen::Vector3d d = m.center - p;
+    const double dist = d.norm();
+    const double r = m.bounding_radius_m;
+    auto hit = [&](int i) {
+      const int n = m.crossings(p, dirs_.direction(i));
+      if (n > 0) vis[i] *= std::pow(m.translucency, n);
+    };
+    if (dist <= r) {
+      for (int i = 0; i < dirs_.size(); ++i) hit(i);
+    } else {
+      dirs_.for_each_in_cap(d / dist, std::sqrt(dist * dist - r * r) / dist, hit);
+    }
+  }
 }
 
 void LightModel::evaluate(std::span<const Eigen::Vector3d> points,

@@ -16,9 +16,19 @@
 // bounding cap. When every occluder relevant to a point is a sphere, their caps lie above the
 // horizon and do not overlap (at most 16 of them), the integral is evaluated analytically
 // (closed-form cap integrals of cos^2) and is exact.
+//
+// Boxes (and walls) are integrated in closed form too when Sky::analytic_boxes is set
+// (light_model_boxes.cpp): a box seen from p is the union of its front faces' spherical polygons
+// clipped to the horizon (spherical_polygon.hpp, Arvo 1995), and overlapping boxes are expanded
+// by inclusion-exclusion over the polygons' intersections, so boxes alone are exact at any
+// direction count. Sphere caps above the horizon enter linearly; where a cap overlaps another
+// occluder, crosses the horizon, or a mesh is relevant, only the difference between the true
+// visibility (product of translucencies) and the closed form's model is sampled, on finer
+// stratified directions and only inside those caps and meshes.
 #include <Eigen/Core>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -54,17 +64,53 @@ class LightModel {
   std::size_t index_entries() const { return cell_items_.size(); }
 
  private:
-  struct Cap;
+  struct Cap {
+    Eigen::Vector3d axis;
+    double cos_a;
+    double sin_a;
+    double gamma;
+  };
+  struct BoxSky;
+  struct Region;
+  struct FineSky;
   LightSample sampled(const Eigen::Vector3d& p, std::span<const Cap> caps, double all_factor,
                       bool boxes) const;
   LightSample finish(const Eigen::Vector3d& p, std::vector<double>& vis, bool boxes) const;
   bool box_relevant(std::size_t i, const Eigen::Vector3d& p) const;
+  bool mesh_relevant(std::size_t i, const Eigen::Vector3d& p) const;
+  void apply_meshes(const Eigen::Vector3d& p, std::vector<double>& vis) const;
+  // Closed-form path for points with relevant boxes (light_model_boxes.cpp); false when the
+  // closed forms are not finite (then the caller samples).
+  bool analytic_with_boxes(const Eigen::Vector3d& p, std::span<const Cap> caps, double all,
+                           LightSample& out) const;
+  void sample_residual(const Eigen::Vector3d& p, std::span<const Cap> caps,
+                       std::span<const BoxSky> boxes, bool boxes_exact, double& integral,
+                       Eigen::Vector3d& moment) const;
+  void sample_fine(const FineSky& fine, const Eigen::Vector3d& p, std::span<const Cap> caps,
+                   std::span<const BoxSky> boxes, bool all_caps, std::span<const Region> regions,
+                   double& integral, Eigen::Vector3d& moment) const;
+  void build_fine_directions();
 
   Scene scene_;
   HemisphereDirections dirs_;
   std::vector<double> weight_;  // I(d) per direction
   double weight_sum_ = 0.0;
   Eigen::Vector3d open_direction_ = Eigen::Vector3d::UnitZ();
+  // Finer directions for the remainder of the closed-form box path (built only with boxes):
+  // kFewCapsRefinement times the sky's directions when at most kMaxAnalyticCaps caps are relevant
+  // (the remainder is then sampled only inside overlapping caps), kManyCapsRefinement times
+  // otherwise (inside every cap: the cost grows with it); at most kMaxResidualDirections, never
+  // fewer than the sky's.
+  static constexpr int kFewCapsRefinement = 16;
+  static constexpr int kManyCapsRefinement = 4;
+  static constexpr int kMaxResidualDirections = 16384;
+  struct FineSky {
+    HemisphereDirections dirs;
+    std::vector<double> weight;  // I(d)
+    double weight_sum = 0.0;
+    FineSky(int count, const Eigen::Vector3d& brightest);
+  };
+  std::optional<FineSky> fine_few_, fine_many_;
   std::vector<double> reach2_;      // squared shadow-volume radius per sphere (inf: unbounded)
   std::vector<double> box_reach2_;  // the same for boxes and meshes (by bounding sphere)
   std::vector<double> mesh_reach2_;

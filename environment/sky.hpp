@@ -10,6 +10,9 @@ struct Sky {
   int directions = 256;        // stratified sample directions over the upper hemisphere
   double significance = 1e-3;  // shadow-volume cutoff: max ignored share of light per occluder
   bool analytic = true;        // exact sphere-cap integrals where they are exact (see light_model)
+  // With analytic: boxes and walls in closed form (spherical polygons, see light_model). Off, they
+  // are ray-cast over the directions like meshes.
+  bool analytic_boxes = true;
 };
 
 // Unit direction from elevation above the horizon and azimuth clockwise from north (degrees).
