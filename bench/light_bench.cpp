@@ -51,6 +51,21 @@ void BM_Light10kPoints1kClusters(benchmark::State& state) {
 // Arg 1: default shadow-volume cutoff (significance 1e-3); arg 0: no cutoff (exact).
 BENCHMARK(BM_Light10kPoints1kClusters)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
 
+// The same crown beside a 15 m wall (boxes in closed form, overlaps with clusters sampled finer).
+void BM_Light10kPointsBesideWall(benchmark::State& state) {
+  Scene s = crown_scene(1000, 1e-3);
+  s.boxes.push_back(fspm::environment::Box::wall({-1, -5}, {-1, 25}, 0, 15, 0.3));
+  const LightModel model(s);
+  const auto points = crown_points(10000);
+  std::vector<LightSample> out(points.size());
+  for (auto _ : state) {
+    model.evaluate(points, out);
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(points.size()));
+}
+BENCHMARK(BM_Light10kPointsBesideWall)->Unit(benchmark::kMillisecond);
+
 void BM_LightBuildIndex(benchmark::State& state) {
   const Scene s = crown_scene(1000, 1e-3);
   for (auto _ : state) {
