@@ -5,6 +5,7 @@
 #include <array>
 #include <bit>
 #include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <deque>
@@ -50,13 +51,15 @@ class GlbBuilder {
     using nlohmann::json;
     const std::size_t nv = mesh.vertex_count();
     if (mesh.empty() || nv == 0) return -1;
-    // Indices split by material, bark first.
+    // Indices split by material in the order of kMaterials (bark, leaf, obstacle), which is
+    // also the order of the glTF materials.
     auto& indices = index_store_.emplace_back();
-    const std::size_t leaf_count = mesh.triangle_count(Material::kLeaf);
-    indices[0].reserve(3 * (mesh.triangle_count() - leaf_count));
-    indices[1].reserve(3 * leaf_count);
+    for (Material m : kMaterials) {
+      indices[static_cast<std::size_t>(m)].reserve(3 * mesh.triangle_count(m));
+    }
     for (std::size_t i = 0; i < mesh.triangle_count(); ++i) {
-      const int m = i < mesh.materials.size() && mesh.materials[i] == Material::kLeaf ? 1 : 0;
+      const auto m =
+          static_cast<std::size_t>(i < mesh.materials.size() ? mesh.materials[i] : Material::kBark);
       indices[m].insert(indices[m].end(), mesh.triangles[i].begin(), mesh.triangles[i].end());
     }
     json attributes = json::object();
@@ -79,7 +82,7 @@ class GlbBuilder {
       names[key] = a.name;
     }
     json primitives = json::array();
-    for (int m = 0; m < 2; ++m) {
+    for (std::size_t m = 0; m < indices.size(); ++m) {
       if (indices[m].empty()) continue;
       const std::size_t acc =
           add_accessor(add_view(indices[m].data(), indices[m].size() * 4, kElementArrayBuffer),
@@ -99,17 +102,7 @@ class GlbBuilder {
         {"asset", {{"version", "2.0"}, {"generator", "fspm"}}},
         {"scene", 0},
         {"scenes", json::array({{{"nodes", json::array({0})}}})},
-        {"materials", json::array({{{"name", "bark"},
-                                    {"pbrMetallicRoughness",
-                                     {{"baseColorFactor", {0.45, 0.32, 0.20, 1.0}},
-                                      {"metallicFactor", 0.0},
-                                      {"roughnessFactor", 0.9}}}},
-                                   {{"name", "leaf"},
-                                    {"doubleSided", true},
-                                    {"pbrMetallicRoughness",
-                                     {{"baseColorFactor", {0.25, 0.55, 0.15, 1.0}},
-                                      {"metallicFactor", 0.0},
-                                      {"roughnessFactor", 0.7}}}}})},
+        {"materials", materials_json()},
         {"nodes", std::move(nodes)},
     };
     // glTF forbids empty arrays: an empty tree is a scene without a mesh.
@@ -168,8 +161,28 @@ class GlbBuilder {
     return accessors_.size() - 1;
   }
 
+  static double rounded(float x) { return std::round(1000.0 * x) / 1000.0; }  // 0.45, not 0.449999
+
+  // One glTF material per fspm Material, in the order of kMaterials (the primitives' index).
+  static nlohmann::json materials_json() {
+    nlohmann::json out = nlohmann::json::array();
+    for (Material m : kMaterials) {
+      const std::array<float, 3> c = material_color(m);
+      const double roughness = m == Material::kLeaf ? 0.7 : m == Material::kObstacle ? 0.95 : 0.9;
+      nlohmann::json material = {
+          {"name", material_name(m)},
+          {"pbrMetallicRoughness",
+           {{"baseColorFactor", {rounded(c[0]), rounded(c[1]), rounded(c[2]), 1.0}},
+            {"metallicFactor", 0.0},
+            {"roughnessFactor", roughness}}}};
+      if (m == Material::kLeaf) material["doubleSided"] = true;
+      out.push_back(std::move(material));
+    }
+    return out;
+  }
+
   std::vector<View> views_;
-  std::deque<std::array<std::vector<std::uint32_t>, 2>> index_store_;  // stable addresses
+  std::deque<std::array<std::vector<std::uint32_t>, kMaterials.size()>> index_store_;  // stable
   nlohmann::json buffer_views_ = nlohmann::json::array();
   nlohmann::json accessors_ = nlohmann::json::array();
   nlohmann::json meshes_ = nlohmann::json::array();
@@ -191,7 +204,10 @@ void write_glb(const InstancedMesh& scene, const std::string& path) {
   GlbBuilder glb;
   std::vector<long> index;
   for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
-    index.push_back(glb.add_mesh(scene.meshes[i], "substructure_" + std::to_string(i)));
+    const TriangleMesh& mesh = scene.meshes[i];
+    const bool obstacles = mesh.triangle_count(Material::kObstacle) == mesh.triangle_count();
+    index.push_back(
+        glb.add_mesh(mesh, obstacles ? "obstacles" : "substructure_" + std::to_string(i)));
   }
   // Node 0 is the scene root; every instance is a child node referencing its shared mesh
   // (glTF 2.0 section 3.5: a mesh may be instantiated by many nodes).

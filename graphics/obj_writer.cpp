@@ -1,4 +1,5 @@
-// Wavefront OBJ with an MTL material library: one material per organ kind (bark, leaf).
+// Wavefront OBJ with an MTL material library: one material per kind of surface (bark, leaf,
+// obstacle).
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -14,7 +15,8 @@ void write_mtl(const std::string& path) {
   write_file_atomically(path, [](std::ostream& out) {
     out << "# fspm materials\n"
            "newmtl bark\nKa 0 0 0\nKd 0.45 0.32 0.20\nKs 0.05 0.05 0.05\nNs 10\nillum 2\n\n"
-           "newmtl leaf\nKa 0 0 0\nKd 0.25 0.55 0.15\nKs 0.10 0.10 0.10\nNs 20\nillum 2\n";
+           "newmtl leaf\nKa 0 0 0\nKd 0.25 0.55 0.15\nKs 0.10 0.10 0.10\nNs 20\nillum 2\n\n"
+           "newmtl obstacle\nKa 0 0 0\nKd 0.62 0.61 0.58\nKs 0.02 0.02 0.02\nNs 5\nillum 2\n";
   });
 }
 

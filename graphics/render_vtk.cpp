@@ -24,9 +24,12 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
+#include <span>
 
 #include "fspm/error.hpp"
 #include "graphics/render.hpp"
@@ -36,8 +39,13 @@
 namespace fspm::graphics {
 namespace {
 
-constexpr unsigned char kBarkRgb[3] = {115, 82, 51};
-constexpr unsigned char kLeafRgb[3] = {64, 140, 38};
+// The material colour as 8-bit RGB (bark 115 82 51, leaf 64 140 38).
+std::array<unsigned char, 3> material_rgb(Material material) {
+  const std::array<float, 3> c = material_color(material);
+  std::array<unsigned char, 3> rgb;
+  for (int k = 0; k < 3; ++k) rgb[k] = static_cast<unsigned char>(std::lround(255.0f * c[k]));
+  return rgb;
+}
 
 vtkNew<vtkPolyData> to_polydata(const TriangleMesh& mesh, const std::string& color_by) {
   vtkNew<vtkPolyData> poly;
@@ -81,9 +89,10 @@ vtkNew<vtkPolyData> to_polydata(const TriangleMesh& mesh, const std::string& col
     colors->SetName("material_rgb");
     colors->SetNumberOfComponents(3);
     colors->SetNumberOfTuples(nt);
+    std::array<std::array<unsigned char, 3>, kMaterials.size()> rgb;
+    for (Material m : kMaterials) rgb[static_cast<std::size_t>(m)] = material_rgb(m);
     for (vtkIdType t = 0; t < nt; ++t) {
-      const unsigned char* rgb = mesh.materials[t] == Material::kLeaf ? kLeafRgb : kBarkRgb;
-      colors->SetTypedTuple(t, rgb);
+      colors->SetTypedTuple(t, rgb[static_cast<std::size_t>(mesh.materials[t])].data());
     }
     poly->GetCellData()->SetScalars(colors);
   }
@@ -225,8 +234,21 @@ Image render_with(const RenderOptions& options, Eigen::Vector3f lo, Eigen::Vecto
   return window_image(window);
 }
 
-void add_glyph_actor(vtkRenderer* renderer, vtkPolyData* instances, const TriangleMesh& part,
-                     const unsigned char* rgb) {
+// Stone: the obstacle colour, flat faces, some ambient light so walls turned away from the key
+// light stay grey rather than black, hardly any shine. Opaque like everything else.
+void stone_look(vtkActor* actor) {
+  const auto rgb = material_rgb(Material::kObstacle);
+  vtkProperty* p = actor->GetProperty();
+  p->SetColor(rgb[0] / 255.0, rgb[1] / 255.0, rgb[2] / 255.0);
+  p->SetInterpolationToFlat();
+  p->SetAmbient(0.35);
+  p->SetDiffuse(0.75);
+  p->SetSpecular(0.05);
+  p->SetOpacity(1.0);
+}
+
+vtkActor* add_glyph_actor(vtkRenderer* renderer, vtkPolyData* instances, const TriangleMesh& part,
+                          const std::array<unsigned char, 3>& rgb) {
   vtkNew<vtkPolyData> source = to_polydata(part, "");
   vtkNew<vtkGlyph3DMapper> mapper;
   mapper->SetInputData(instances);
@@ -246,6 +268,7 @@ void add_glyph_actor(vtkRenderer* renderer, vtkPolyData* instances, const Triang
   actor->GetProperty()->SetSpecularPower(20.0);
   actor->GetProperty()->BackfaceCullingOff();
   renderer->AddActor(actor);
+  return actor.Get();
 }
 
 // The triangles of one material as a mesh of their own (positions and normals only).
@@ -270,6 +293,75 @@ TriangleMesh material_part(const TriangleMesh& mesh, Material material) {
   return part;
 }
 
+// `mesh` without the triangles of one material (vertices and attributes kept as they are).
+TriangleMesh without_material(const TriangleMesh& mesh, Material material) {
+  TriangleMesh out = mesh;
+  out.triangles.clear();
+  out.materials.clear();
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    if (mesh.materials[t] == material) continue;
+    out.triangles.push_back(mesh.triangles[t]);
+    out.materials.push_back(mesh.materials[t]);
+  }
+  return out;
+}
+
+// Adds an actor for `mapper` with the shared surface look; the renderer keeps it alive.
+vtkActor* add_surface_actor(vtkRenderer* renderer, vtkPolyDataMapper* mapper) {
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetInterpolationToPhong();
+  actor->GetProperty()->SetSpecular(0.15);
+  actor->GetProperty()->SetSpecularPower(20.0);
+  actor->GetProperty()->BackfaceCullingOff();
+  renderer->AddActor(actor);
+  return actor.Get();
+}
+
+// Range of an attribute over the vertices the triangles use ([v, v + 1] when constant).
+std::array<double, 2> attribute_range(const TriangleMesh& mesh, std::span<const float> values) {
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -lo;
+  for (const auto& t : mesh.triangles) {
+    for (std::uint32_t i : t) {
+      lo = std::min(lo, static_cast<double>(values[i]));
+      hi = std::max(hi, static_cast<double>(values[i]));
+    }
+  }
+  if (!(lo <= hi)) lo = hi = 0.0;
+  if (hi <= lo) hi = lo + 1.0;
+  return {lo, hi};
+}
+
+// The mesh coloured by options.color_by through a blue-to-red lookup table, with a scalar bar.
+void add_colored_actor(vtkRenderer* renderer, const TriangleMesh& mesh,
+                       const RenderOptions& options) {
+  vtkNew<vtkPolyData> poly = to_polydata(mesh, options.color_by);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(poly);
+  std::array<double, 2> range = attribute_range(mesh, mesh.attribute(options.color_by));
+  vtkNew<vtkLookupTable> lut;
+  lut->SetHueRange(0.667, 0.0);  // blue (low) to red (high)
+  lut->SetTableRange(range.data());
+  lut->Build();
+  mapper->SetLookupTable(lut);
+  mapper->SetScalarModeToUsePointData();
+  mapper->SetScalarRange(range.data());
+  mapper->ScalarVisibilityOn();
+  add_surface_actor(renderer, mapper);
+  if (!options.scalar_bar) return;
+  vtkNew<vtkScalarBarActor> bar;
+  bar->SetLookupTable(lut);
+  bar->SetTitle(options.color_by.c_str());
+  bar->SetNumberOfLabels(5);
+  bar->SetMaximumWidthInPixels(std::max(60, options.width / 10));
+  bar->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
+  bar->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
+  bar->GetTitleTextProperty()->ShadowOff();
+  bar->GetLabelTextProperty()->ShadowOff();
+  renderer->AddActor2D(bar);
+}
+
 }  // namespace
 
 bool render_available() { return true; }
@@ -277,48 +369,32 @@ bool render_available() { return true; }
 Image render_mesh(const TriangleMesh& mesh, const RenderOptions& options) {
   if (!options.color_by.empty()) (void)mesh.attribute(options.color_by);  // ValueError first
   return render_with(options, mesh.bbox_min(), mesh.bbox_max(), [&](vtkRenderer* renderer) {
-    if (!mesh.empty()) {
-      vtkNew<vtkPolyData> poly = to_polydata(mesh, options.color_by);
+    if (mesh.empty()) return;
+    // Obstacles always in stone, as an actor of their own (lit like stone, and outside the
+    // colour scale, which spans the plants' values only).
+    const TriangleMesh* plants = &mesh;
+    TriangleMesh without_obstacles;
+    if (mesh.triangle_count(Material::kObstacle) > 0) {
+      vtkNew<vtkPolyData> poly = to_polydata(material_part(mesh, Material::kObstacle), "");
       vtkNew<vtkPolyDataMapper> mapper;
       mapper->SetInputData(poly);
-      vtkNew<vtkActor> actor;
-      actor->SetMapper(mapper);
-      actor->GetProperty()->SetInterpolationToPhong();
-      actor->GetProperty()->SetSpecular(0.15);
-      actor->GetProperty()->SetSpecularPower(20.0);
-      actor->GetProperty()->BackfaceCullingOff();
-      if (options.color_by.empty()) {
-        mapper->SetScalarModeToUseCellData();
-        mapper->SetColorModeToDirectScalars();
-        mapper->ScalarVisibilityOn();
-      } else {
-        const auto values = mesh.attribute(options.color_by);
-        auto [mn, mx] = std::minmax_element(values.begin(), values.end());
-        double range[2] = {*mn, *mx};
-        if (range[1] <= range[0]) range[1] = range[0] + 1.0;
-        vtkNew<vtkLookupTable> lut;
-        lut->SetHueRange(0.667, 0.0);  // blue (low) to red (high)
-        lut->SetTableRange(range);
-        lut->Build();
-        mapper->SetLookupTable(lut);
-        mapper->SetScalarModeToUsePointData();
-        mapper->SetScalarRange(range);
-        mapper->ScalarVisibilityOn();
-        if (options.scalar_bar) {
-          vtkNew<vtkScalarBarActor> bar;
-          bar->SetLookupTable(lut);
-          bar->SetTitle(options.color_by.c_str());
-          bar->SetNumberOfLabels(5);
-          bar->SetMaximumWidthInPixels(std::max(60, options.width / 10));
-          bar->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
-          bar->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
-          bar->GetTitleTextProperty()->ShadowOff();
-          bar->GetLabelTextProperty()->ShadowOff();
-          renderer->AddActor2D(bar);
-        }
-      }
-      renderer->AddActor(actor);
+      mapper->ScalarVisibilityOff();
+      stone_look(add_surface_actor(renderer, mapper));
+      without_obstacles = without_material(mesh, Material::kObstacle);
+      plants = &without_obstacles;
     }
+    if (plants->empty()) return;
+    if (!options.color_by.empty()) {
+      add_colored_actor(renderer, *plants, options);
+      return;
+    }
+    vtkNew<vtkPolyData> poly = to_polydata(*plants, "");
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(poly);
+    mapper->SetScalarModeToUseCellData();
+    mapper->SetColorModeToDirectScalars();
+    mapper->ScalarVisibilityOn();
+    add_surface_actor(renderer, mapper);
   });
 }
 
@@ -356,10 +432,11 @@ Image render_scene(const InstancedMesh& scene, const RenderOptions& options) {
       instances->SetPoints(points);
       instances->GetPointData()->AddArray(orientation);
       instances->GetPointData()->AddArray(scale);
-      for (Material material : {Material::kBark, Material::kLeaf}) {
+      for (Material material : kMaterials) {  // obstacles opaque like the rest
         if (mesh.triangle_count(material) == 0) continue;
-        add_glyph_actor(renderer, instances, material_part(mesh, material),
-                        material == Material::kLeaf ? kLeafRgb : kBarkRgb);
+        vtkActor* actor = add_glyph_actor(renderer, instances, material_part(mesh, material),
+                                          material_rgb(material));
+        if (material == Material::kObstacle) stone_look(actor);
       }
     }
   });

@@ -7,7 +7,33 @@
 namespace fspm::graphics {
 
 std::string_view material_name(Material material) {
-  return material == Material::kLeaf ? "leaf" : "bark";
+  switch (material) {
+    case Material::kLeaf:
+      return "leaf";
+    case Material::kObstacle:
+      return "obstacle";
+    case Material::kBark:
+      break;
+  }
+  return "bark";
+}
+
+std::array<float, 3> material_color(Material material) {
+  switch (material) {
+    case Material::kLeaf:
+      return {0.25f, 0.55f, 0.15f};
+    case Material::kObstacle:
+      return {0.62f, 0.61f, 0.58f};
+    case Material::kBark:
+      break;
+  }
+  return {0.45f, 0.32f, 0.20f};
+}
+
+Material material_from_index(int index) {
+  if (index == static_cast<int>(Material::kLeaf)) return Material::kLeaf;
+  if (index == static_cast<int>(Material::kObstacle)) return Material::kObstacle;
+  return Material::kBark;
 }
 
 std::vector<float>& TriangleMesh::add_attribute(const std::string& name) {

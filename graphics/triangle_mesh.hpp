@@ -2,7 +2,8 @@
 // TriangleMesh: the indexed triangle soup every exporter and renderer consumes. Positions,
 // normals and texture coordinates are per vertex; named float attributes (age, order, light,
 // pruned, ...) are per vertex too so colouring survives interpolation in any viewer. Each
-// triangle carries a material (bark or leaf) so OBJ/MTL and glTF can split the two.
+// triangle carries a material (bark, leaf or obstacle: walls and boxes of a growth scene) so
+// OBJ/MTL and glTF can split them.
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
@@ -13,10 +14,20 @@
 
 namespace fspm::graphics {
 
-enum class Material : std::uint8_t { kBark = 0, kLeaf = 1 };
+enum class Material : std::uint8_t { kBark = 0, kLeaf = 1, kObstacle = 2 };
 
-// "bark", "leaf".
+inline constexpr std::array<Material, 3> kMaterials = {Material::kBark, Material::kLeaf,
+                                                       Material::kObstacle};
+
+// "bark", "leaf", "obstacle".
 std::string_view material_name(Material material);
+
+// The material's diffuse colour, linear RGB in [0, 1], shared by every renderer and exporter:
+// brown bark, green leaves, neutral grey stone for obstacles.
+std::array<float, 3> material_color(Material material);
+
+// Material from the byte stored in PLY and VTP files; unknown values are bark.
+Material material_from_index(int index);
 
 struct VertexAttribute {
   std::string name;

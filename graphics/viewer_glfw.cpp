@@ -7,6 +7,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <glm/glm.hpp>
@@ -224,17 +225,22 @@ GpuMesh upload(const TriangleMesh& mesh, const std::vector<glm::mat4>& models,
                const ViewerOptions& o, float value_lo, float value_hi, float value_offset) {
   std::vector<float> v;
   v.reserve(mesh.vertex_count() * 9);
-  std::vector<glm::vec3> colors(mesh.vertex_count(), glm::vec3(0.45f, 0.32f, 0.20f));
+  auto rgb = [](Material m) {
+    const std::array<float, 3> c = material_color(m);
+    return glm::vec3(c[0], c[1], c[2]);
+  };
+  std::vector<glm::vec3> colors(mesh.vertex_count(), rgb(Material::kBark));
   if (!o.color_by.empty()) {
     const auto a = mesh.attribute(o.color_by);
     const float span = value_hi > value_lo ? value_hi - value_lo : 1.0f;
     for (std::size_t i = 0; i < colors.size(); ++i)
       colors[i] = colormap((a[i] + value_offset - value_lo) / span);
-  } else {
-    for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-      if (mesh.materials[t] != Material::kLeaf) continue;
-      for (auto i : mesh.triangles[t]) colors[i] = glm::vec3(0.25f, 0.55f, 0.15f);
-    }
+  }
+  // Leaves in their colour unless coloured by an attribute; obstacles always in stone.
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    const Material m = mesh.materials[t];
+    if (m == Material::kBark || (m == Material::kLeaf && !o.color_by.empty())) continue;
+    for (auto i : mesh.triangles[t]) colors[i] = rgb(m);
   }
   for (std::size_t i = 0; i < mesh.vertex_count(); ++i) {
     const auto& p = mesh.positions[i];

@@ -91,8 +91,9 @@ TriangleMesh read_vtp_mesh(const std::string& path) {
   vtkNew<vtkIdList> ids;
   for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c) {
     cells->GetCellAtId(c, ids);
-    const Material m = material != nullptr && material->GetComponent(c, 0) == 1.0 ? Material::kLeaf
-                                                                                  : Material::kBark;
+    const double index = material != nullptr ? material->GetComponent(c, 0) : 0.0;
+    const Material m =
+        material_from_index(index >= 0.0 && index < 256.0 ? static_cast<int>(index) : 0);
     for (vtkIdType k = 1; k + 1 < ids->GetNumberOfIds(); ++k) {  // a fan over the polygon
       mesh.triangles.push_back({static_cast<std::uint32_t>(ids->GetId(0)),
                                 static_cast<std::uint32_t>(ids->GetId(k)),

@@ -96,11 +96,13 @@ void bind_mesh(py::module_& m) {
           "triangle_count",
           [](const TM& mesh, std::optional<std::string> material) {
             if (!material) return mesh.triangle_count();
-            if (*material == "bark") return mesh.triangle_count(gr::Material::kBark);
-            if (*material == "leaf") return mesh.triangle_count(gr::Material::kLeaf);
-            throw ValueError("unknown material '" + *material + "' (expected bark or leaf)");
+            for (gr::Material m : gr::kMaterials) {
+              if (*material == gr::material_name(m)) return mesh.triangle_count(m);
+            }
+            throw ValueError("unknown material '" + *material +
+                             "' (expected bark, leaf or obstacle)");
           },
-          py::arg("material") = py::none(), "Triangles, or those of 'bark' or 'leaf'")
+          py::arg("material") = py::none(), "Triangles, or those of 'bark', 'leaf' or 'obstacle'")
       .def_property_readonly(
           "positions",
           [](py::object self) {
@@ -131,7 +133,7 @@ void bind_mesh(py::module_& m) {
                               reinterpret_cast<const std::uint8_t*>(mat.data()), mat.size()),
                           self);
           },
-          "Per triangle: 0 bark, 1 leaf")
+          "Per triangle: 0 bark, 1 leaf, 2 obstacle")
       .def("attribute_names", &TM::attribute_names)
       .def(
           "attribute",

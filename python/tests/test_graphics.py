@@ -47,6 +47,7 @@ def test_forked_tree_and_counts():
     mesh = fspm.mesh_tree(tree)
     assert mesh.triangle_count() == mesh.triangle_count("bark") == expected
     assert mesh.triangle_count("leaf") == 0
+    assert mesh.triangle_count("obstacle") == 0
     counts = fspm.count_mesh(tree)
     assert counts["triangles"] == expected and counts["tubes"] == 3
     assert counts["vertices"] == mesh.vertex_count

@@ -1,0 +1,149 @@
+// The obstacle material (walls and boxes of a growth scene) through every exporter and renderer.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "graphics/instanced_mesh.hpp"
+#include "graphics/mesh_writers.hpp"
+#include "graphics/render.hpp"
+#include "graphics/tree_mesher.hpp"
+#include "graphics/vtk_readback.hpp"
+#include "tests/graphics/test_trees.hpp"
+
+namespace fspm::graphics {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A vertical square of side 1 in the plane y = y0, x in [x0, x0 + 1], z in [0, 1], facing -y.
+TriangleMesh stone_square(float x0, float y0) {
+  TriangleMesh m;
+  for (const auto& [x, z] : {std::pair{0.f, 0.f}, {1.f, 0.f}, {1.f, 1.f}, {0.f, 1.f}}) {
+    m.positions.emplace_back(x0 + x, y0, z);
+    m.normals.emplace_back(0, -1, 0);
+    m.uvs.emplace_back(x, z);
+  }
+  m.triangles = {{0, 1, 2}, {0, 2, 3}};
+  m.materials = {Material::kObstacle, Material::kObstacle};
+  return m;
+}
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class ObstacleMaterial : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("fspm_obstacle_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+    MeshOptions o;
+    o.leaves = true;
+    tree_ = mesh_tree(testing::small_tree(), o);
+    mesh_ = tree_;
+    mesh_.append(stone_square(0.5f, -0.5f));
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path dir_;
+  TriangleMesh tree_, mesh_;
+};
+
+TEST_F(ObstacleMaterial, NameColourAndIndex) {
+  EXPECT_EQ(material_name(Material::kObstacle), "obstacle");
+  EXPECT_EQ(material_from_index(2), Material::kObstacle);
+  EXPECT_EQ(material_from_index(7), Material::kBark);
+  const auto c = material_color(Material::kObstacle);
+  EXPECT_NEAR(c[0], c[1], 0.05);  // neutral: a grey
+  EXPECT_NEAR(c[1], c[2], 0.05);
+  EXPECT_EQ(mesh_.triangle_count(Material::kObstacle), 2u);
+}
+
+TEST_F(ObstacleMaterial, ObjUsesTheObstacleMaterial) {
+  write_obj(mesh_, (dir_ / "m.obj").string());
+  const std::string obj = slurp(dir_ / "m.obj");
+  const auto at = obj.find("usemtl obstacle\n");
+  ASSERT_NE(at, std::string::npos);
+  std::size_t faces = 0;
+  for (auto f = obj.find("\nf ", at); f != std::string::npos; f = obj.find("\nf ", f + 1)) ++faces;
+  EXPECT_EQ(faces, 2u);  // exactly the square's triangles follow it
+  EXPECT_NE(slurp(dir_ / "m.mtl").find("newmtl obstacle"), std::string::npos);
+}
+
+TEST_F(ObstacleMaterial, PlyStoresMaterialTwo) {
+  write_ply(mesh_, (dir_ / "m.ply").string());
+  const std::string data = slurp(dir_ / "m.ply");
+  // Faces (uchar 3, 3 uint, uchar material = 14 bytes) end the file; the last two are the square.
+  ASSERT_GT(data.size(), 28u);
+  EXPECT_EQ(data[data.size() - 1], 2);
+  EXPECT_EQ(data[data.size() - 15], 2);
+  EXPECT_EQ(data[data.size() - 29], 1);  // the last leaf triangle before them
+}
+
+TEST_F(ObstacleMaterial, GlbHasThreeMaterials) {
+  write_glb(mesh_, (dir_ / "m.glb").string());
+  const std::string data = slurp(dir_ / "m.glb");
+  std::uint32_t json_len = 0;
+  std::memcpy(&json_len, data.data() + 12, 4);
+  const auto doc = nlohmann::json::parse(data.substr(20, json_len));
+  ASSERT_EQ(doc["materials"].size(), 3u);
+  EXPECT_EQ(doc["materials"][2]["name"], "obstacle");
+  const auto& prims = doc["meshes"][0]["primitives"];
+  ASSERT_EQ(prims.size(), 3u);
+  EXPECT_EQ(prims[2]["material"], 2);
+  EXPECT_EQ(doc["accessors"][prims[2]["indices"].get<std::size_t>()]["count"], 6);
+}
+
+TEST_F(ObstacleMaterial, VtpRoundTripKeepsTheMaterial) {
+  if (!vtk_available()) GTEST_SKIP() << "built without VTK";
+  write_vtp(mesh_, (dir_ / "m.vtp").string());
+  const TriangleMesh back = read_vtp_mesh((dir_ / "m.vtp").string());
+  EXPECT_EQ(back.materials, mesh_.materials);
+  EXPECT_EQ(back.triangle_count(Material::kObstacle), 2u);
+}
+
+// Grey pixels: the obstacle's stone under the light kit's warm key light (red >= blue); not the
+// white-to-blue background (blue > red) nor bark or leaves (far from grey).
+std::size_t stone_pixels(const Image& image) {
+  std::size_t n = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const auto* p = image.pixel(x, y);
+      const int lo = std::min({p[0], p[1], p[2]}), hi = std::max({p[0], p[1], p[2]});
+      if (hi - lo < 24 && p[0] >= p[2] && hi > 60 && hi < 235) ++n;
+    }
+  }
+  return n;
+}
+
+TEST_F(ObstacleMaterial, RendersDrawTheStoneInFlatInstancedAndColouredPaths) {
+  if (!render_available()) GTEST_SKIP() << "built without VTK";
+  if (!display_available()) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
+  RenderOptions o;
+  o.width = 200;
+  o.height = 160;
+  o.view = View::kFront;
+  o.ground = false;
+  const std::size_t without = stone_pixels(render_mesh(tree_, o));
+  EXPECT_GT(stone_pixels(render_mesh(mesh_, o)), without + 400);
+  InstancedMesh scene = InstancedMesh::single(tree_);
+  scene.meshes.push_back(stone_square(0.5f, -0.5f));
+  scene.instances.push_back({1});
+  EXPECT_GT(stone_pixels(render_scene(scene, o)), without + 400);
+  o.color_by = "light";  // the flattened scene: obstacles in stone, not mapped to light = 0
+  o.scalar_bar = false;
+  EXPECT_GT(stone_pixels(render_scene(scene, o)), 400u);
+}
+
+}  // namespace
+}  // namespace fspm::graphics
