@@ -17,8 +17,11 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/obstacle_crop.hpp"
+#include "cli/obstacle_mesh.hpp"
 #include "cli/output.hpp"
 #include "cli/xvfb.hpp"
+#include "environment/scene_file.hpp"
 #include "fspm/compressed_tree_graph.hpp"
 #include "fspm/error.hpp"
 #include "fspm/tree_file.hpp"
@@ -47,6 +50,7 @@ struct MeshCommand {
   int max_sides = 16;
   std::string junctions = "separate";
   bool reynolds_width = false;
+  std::string obstacles;
   bool json = false;
 };
 
@@ -67,6 +71,7 @@ struct RenderCommand {
   bool no_ground = false;
   double edge_length_m = 0.01;
   double ortho_height_m = 0.0;
+  std::string obstacles;
   bool json = false;
 };
 
@@ -175,6 +180,34 @@ nlohmann::json instancing_json(const graphics::InstancedMesh& m) {
           {"bounds", {{"min", {lo.x(), lo.y(), lo.z()}}, {"max", {hi.x(), hi.y(), hi.z()}}}}};
 }
 
+// Adds the walls, boxes, spheres and meshes of the growth scene file at `path` to `scene` as one
+// more mesh (material obstacle) placed once; returns its triangle count. `near_plants`: only the
+// obstacles near the plants, boxes cut to that region (renders, so a long wall does not shrink
+// the tree to a dot); otherwise all of them whole (mesh files).
+std::size_t add_obstacles(graphics::InstancedMesh& scene, const std::string& path,
+                          bool near_plants) {
+  environment::Scene obstacles = environment::read_scene_file(path);
+  if (near_plants) {
+    Eigen::Vector3f lo, hi;
+    scene.bounds(lo, hi);
+    Eigen::Vector2d region_lo, region_hi;
+    obstacle_region(lo.cast<double>(), hi.cast<double>(), region_lo, region_hi);
+    obstacles = obstacles_near(obstacles, region_lo, region_hi);
+  }
+  graphics::TriangleMesh mesh = mesh_obstacles(obstacles);
+  const std::size_t triangles = mesh.triangle_count();
+  if (triangles == 0) {
+    spdlog::warn("{}: no walls, boxes, spheres or meshes{} to draw", path,
+                 near_plants ? " near the plants" : "");
+    return 0;
+  }
+  graphics::MeshInstance instance;
+  instance.mesh = static_cast<std::uint32_t>(scene.meshes.size());
+  scene.meshes.push_back(std::move(mesh));
+  scene.instances.push_back(instance);
+  return triangles;
+}
+
 void run_mesh(const MeshCommand& c) {
   const auto t0 = std::chrono::steady_clock::now();
   const graphics::MeshFormat format = graphics::mesh_format_for(c.out);
@@ -190,6 +223,9 @@ void run_mesh(const MeshCommand& c) {
   if (format == graphics::MeshFormat::kPvd) {
     if (kind == InputKind::kScene || kind == InputKind::kPvd) {
       throw ValueError("a .pvd growth sequence is made from one tree or plant", c.tree);
+    }
+    if (!c.obstacles.empty()) {
+      throw ValueError("--obstacles applies to .obj, .ply, .vtp and .glb outputs, not .pvd", c.out);
     }
     // Growth of a compressed plant: its explicit tree filtered by birth date (Jaeger 3.2.2).
     const TreeGraph tree = is_compressed(kind)
@@ -211,7 +247,8 @@ void run_mesh(const MeshCommand& c) {
     if (!c.ages.empty()) {
       throw ValueError("--ages makes a growth sequence: use an output ending in .pvd", c.out);
     }
-    const graphics::InstancedMesh mesh = load_instanced(c.tree, c.format, options);
+    graphics::InstancedMesh mesh = load_instanced(c.tree, c.format, options);
+    if (!c.obstacles.empty()) j["obstacle_triangles"] = add_obstacles(mesh, c.obstacles, false);
     graphics::write_mesh(mesh, c.out);
     vertices = mesh.vertex_count();
     triangles = mesh.triangle_count();
@@ -243,10 +280,13 @@ void run_render(const RenderCommand& c) {
   graphics::MeshOptions mesh_options;
   mesh_options.leaves = c.leaves;
   mesh_options.edge_length_m = c.edge_length_m;
-  const graphics::InstancedMesh mesh = load_instanced(c.tree, c.format, mesh_options);
+  graphics::InstancedMesh mesh = load_instanced(c.tree, c.format, mesh_options);
   if (!c.color_by.empty()) {
     for (const auto& m : mesh.meshes) (void)m.attribute(c.color_by);  // unknown: ValueError
   }
+  // Obstacles take 0 for every attribute; the renderer draws them in stone all the same.
+  const std::size_t obstacle_triangles =
+      c.obstacles.empty() ? 0 : add_obstacles(mesh, c.obstacles, true);
   rerun_under_xvfb_if_needed();
   const graphics::Image image = graphics::render_scene(mesh, options);
   graphics::write_image(image, c.out);
@@ -256,6 +296,7 @@ void run_render(const RenderCommand& c) {
                 {"width", image.width},
                 {"height", image.height},
                 {"triangles", mesh.triangle_count()},
+                {"obstacle_triangles", obstacle_triangles},
                 {"meshes", mesh.meshes.size()},
                 {"instances", mesh.instances.size()},
                 {"seconds", seconds_since(t0)}});
@@ -435,6 +476,9 @@ void add_graphics_commands(CLI::App& app) {
       ->capture_default_str();
   m->add_flag("--reynolds-width", mesh->reynolds_width,
               "Continuous mode: radius along each axis from Reynolds' expression 1");
+  m->add_option("--obstacles", mesh->obstacles,
+                "Growth scene file (.json, docs/environment.md) whose walls, boxes, spheres and "
+                "meshes are added, whole, as material obstacle (not with .pvd)");
   m->add_flag("--json", mesh->json, "Machine-readable JSON on stdout");
   m->callback([mesh] { run_mesh(*mesh); });
 
@@ -458,6 +502,10 @@ void add_graphics_commands(CLI::App& app) {
   r->add_option("--ortho-height", render->ortho_height_m,
                 "Parallel projection whose image height spans this many metres (a known scale)")
       ->check(CLI::PositiveNumber);
+  r->add_option("--obstacles", render->obstacles,
+                "Growth scene file (.json, docs/environment.md) whose walls, boxes, spheres and "
+                "meshes near the tree are drawn in stone (long walls cut to the tree's "
+                "surroundings)");
   r->add_flag("--json", render->json, "Machine-readable JSON on stdout");
   r->callback([render] { run_render(*render); });
 
