@@ -12,6 +12,7 @@
 #include "graphics/mesh_writers.hpp"
 #include "graphics/render.hpp"
 #include "graphics/tree_mesher.hpp"
+#include "graphics/viewer.hpp"
 #include "graphics/vtk_readback.hpp"
 #include "tests/graphics/test_trees.hpp"
 
@@ -143,6 +144,24 @@ TEST_F(ObstacleMaterial, RendersDrawTheStoneInFlatInstancedAndColouredPaths) {
   o.color_by = "light";  // the flattened scene: obstacles in stone, not mapped to light = 0
   o.scalar_bar = false;
   EXPECT_GT(stone_pixels(render_scene(scene, o)), 400u);
+}
+
+TEST_F(ObstacleMaterial, ViewerDrawsTheStone) {
+  if (!viewer_available() || !render_available()) GTEST_SKIP() << "built without viewer/VTK";
+  if (!display_available()) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
+  ViewerOptions o;
+  o.width = 240;
+  o.height = 180;
+  o.frames = 2;
+  o.shadows = false;
+  o.screenshot = (dir_ / "shot.png").string();
+  (void)run_viewer({tree_}, {0.0}, o);
+  const std::size_t without = stone_pixels(read_image(o.screenshot));
+  (void)run_viewer({mesh_}, {0.0}, o);
+  EXPECT_GT(stone_pixels(read_image(o.screenshot)), without + 300);
+  o.color_by = "light";  // obstacles stay stone when the plants are coloured
+  (void)run_viewer({mesh_}, {0.0}, o);
+  EXPECT_GT(stone_pixels(read_image(o.screenshot)), without + 300);
 }
 
 }  // namespace
