@@ -76,21 +76,11 @@ environment::GrowthParams grow_params(const GrowOptions& o) {
   if (o.preset.empty()) {
     params = environment::read_growth_params(o.params);
   } else {
-    auto model = environment::GrowthParams{}.light_model;
-    if (!o.light_model.empty()) {
-      const auto m = environment::bud_light_model_from_name(o.light_model);
-      if (!m) {
-        throw ValueError("--light-model: expected sky, shadow_grid or space_colonization, got '" +
-                         o.light_model + "'");
-      }
-      model = *m;
-    }
-    auto pairing = environment::TropismPairing::kText;
-    if (!o.tropisms.empty()) {
-      const auto t = environment::tropism_pairing_from_name(o.tropisms);
-      if (!t) throw ValueError("--tropisms: expected text or appendix, got '" + o.tropisms + "'");
-      pairing = *t;
-    }
+    const auto model = o.light_model.empty()
+                           ? environment::GrowthParams{}.light_model
+                           : environment::bud_light_model_from_name(o.light_model);
+    const auto pairing = o.tropisms.empty() ? environment::TropismPairing::kText
+                                            : environment::tropism_pairing_from_name(o.tropisms);
     params = environment::growth_preset(o.preset, model, pairing);
   }
   if (o.years >= 0) params.years = o.years;

@@ -24,22 +24,25 @@ std::string_view bud_light_model_name(BudLightModel model) {
   return "sky";
 }
 
-std::optional<BudLightModel> bud_light_model_from_name(std::string_view name) {
+BudLightModel bud_light_model_from_name(std::string_view name) {
   for (BudLightModel m :
        {BudLightModel::kSky, BudLightModel::kShadowGrid, BudLightModel::kSpaceColonization}) {
     if (name == bud_light_model_name(m)) return m;
   }
-  return std::nullopt;
+  throw ValueError(
+      "light_model: expected \"sky\", \"shadow_grid\" or \"space_colonization\", got \"" +
+      std::string(name) + "\"");
 }
 
 std::string_view tropism_pairing_name(TropismPairing pairing) {
   return pairing == TropismPairing::kText ? "text" : "appendix";
 }
 
-std::optional<TropismPairing> tropism_pairing_from_name(std::string_view name) {
+TropismPairing tropism_pairing_from_name(std::string_view name) {
   if (name == "text") return TropismPairing::kText;
   if (name == "appendix") return TropismPairing::kAppendix;
-  return std::nullopt;
+  throw ValueError("preset_tropisms: expected \"text\" or \"appendix\", got \"" +
+                   std::string(name) + "\"");
 }
 
 namespace {
@@ -125,24 +128,16 @@ GrowthParams preset_from_table(const toml::table& table, const toml::node& prese
   auto line_of = [](const toml::node& n) { return static_cast<int>(n.source().begin.line); };
   const auto name = preset.value<std::string>();
   if (!name) throw ParseError("preset: expected \"A\", \"B\" or \"C\"", file_name, line_of(preset));
+  // The name as a string, or "" (refused below) for another type.
+  auto text_of = [](const toml::node& n) { return n.value<std::string>().value_or(""); };
   BudLightModel model = GrowthParams{}.light_model;
-  if (const toml::node* n = table.get("light_model")) {
-    const auto v = n->value<std::string>();
-    const auto m = v ? bud_light_model_from_name(*v) : std::nullopt;
-    if (!m) {
-      throw ValueError("light_model: expected \"sky\", \"shadow_grid\" or \"space_colonization\"",
-                       file_name, line_of(*n));
-    }
-    model = *m;
-  }
   TropismPairing pairing = TropismPairing::kText;
-  if (const toml::node* n = table.get("preset_tropisms")) {
-    const auto v = n->value<std::string>();
-    const auto t = v ? tropism_pairing_from_name(*v) : std::nullopt;
-    if (!t)
-      throw ValueError("preset_tropisms: expected \"text\" or \"appendix\"", file_name,
-                       line_of(*n));
-    pairing = *t;
+  const toml::node* at = nullptr;
+  try {
+    if ((at = table.get("light_model"))) model = bud_light_model_from_name(text_of(*at));
+    if ((at = table.get("preset_tropisms"))) pairing = tropism_pairing_from_name(text_of(*at));
+  } catch (const ValueError& e) {
+    throw ValueError(e.message(), file_name, line_of(*at));
   }
   try {
     return growth_preset(*name, model, pairing);
@@ -262,10 +257,12 @@ GrowthParams parse_growth_params(std::string_view text, const std::string& file_
         "a positive number or inf"}},
       {"light_model",
        {[&p](const toml::node& n) {
-          const auto name = n.value<std::string>();
-          const auto model = name ? bud_light_model_from_name(*name) : std::nullopt;
-          if (model) p.light_model = *model;
-          return model.has_value();
+          try {
+            p.light_model = bud_light_model_from_name(n.value<std::string>().value_or(""));
+            return true;
+          } catch (const ValueError&) {
+            return false;
+          }
         },
         "\"sky\", \"shadow_grid\" or \"space_colonization\""}},
       {"voxel_size_m", {real(p.shadow_grid.voxel_size_m, 1e-3, kBig), "a length >= 0.001"}},

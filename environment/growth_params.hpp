@@ -3,7 +3,6 @@
 // read from TOML (docs/environment.md) or taken from Pirk's tree types A, B and C.
 #include <Eigen/Core>
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <string_view>
 
@@ -20,8 +19,8 @@ enum class BudLightModel {
 };
 // The name used in parameter files ("sky", "shadow_grid", "space_colonization").
 std::string_view bud_light_model_name(BudLightModel model);
-// The model of a name, or nullopt for an unknown one.
-std::optional<BudLightModel> bud_light_model_from_name(std::string_view name);
+// The model of a name; throws ValueError naming the three for an unknown one.
+BudLightModel bud_light_model_from_name(std::string_view name);
 
 struct GrowthParams {
   int years = 20;          // growth cycles
@@ -77,7 +76,8 @@ struct GrowthParams {
 // appendix tables read A 0.25 / 0.12, B 0.45 / 0.03, C 0.44 / 0.23.
 enum class TropismPairing { kText, kAppendix };
 std::string_view tropism_pairing_name(TropismPairing pairing);  // "text", "appendix"
-std::optional<TropismPairing> tropism_pairing_from_name(std::string_view name);
+// Throws ValueError for a name other than "text" and "appendix".
+TropismPairing tropism_pairing_from_name(std::string_view name);
 
 // Pirk's tree types (4.5.4) "A", "B", "C" (C older and with a smaller pruning factor), with the
 // vigour alpha fitted for `light_model` so that trees of 10 / 20 / 30 cycles have about Pirk

@@ -64,9 +64,7 @@ class GrowModel final : public Model {
       return;
     }
     if (name == "preset_tropisms") {  // needs a preset: the whole set is checked by check_setup
-      if (!env::tropism_pairing_from_name(parameter_string(value, name))) {
-        throw ValueError("preset_tropisms must be \"text\" or \"appendix\"");
-      }
+      env::tropism_pairing_from_name(parameter_string(value, name));
       return;
     }
     growth_params({{name, value}}, 1);

@@ -29,8 +29,7 @@ env::GrowthParams growth_base(py::dict& values) {
   PyDict_DelItemString(values.ptr(), "preset");
   env::BudLightModel model = env::GrowthParams{}.light_model;
   if (values.contains("light_model")) {
-    const auto m = env::bud_light_model_from_name(std::string(py::str(values["light_model"])));
-    if (m) model = *m;  // an unknown name is refused by the field itself
+    model = env::bud_light_model_from_name(std::string(py::str(values["light_model"])));
   }
   env::TropismPairing pairing = env::TropismPairing::kText;
   if (values.contains("preset_tropisms")) {
@@ -288,14 +287,7 @@ void bind_growth_light(py::class_<env::GrowthParams>& gp) {
         return std::string(env::bud_light_model_name(p.light_model));
       },
       [](env::GrowthParams& p, const std::string& name) {
-        const auto model = env::bud_light_model_from_name(name);
-        if (!model) {
-          throw ValueError(
-              "light_model: expected \"sky\", \"shadow_grid\" or "
-              "\"space_colonization\", got \"" +
-              name + "\"");
-        }
-        p.light_model = *model;
+        p.light_model = env::bud_light_model_from_name(name);
       },
       "Where buds get light: 'sky', 'shadow_grid' or 'space_colonization'");
   using GP = env::GrowthParams;
@@ -367,19 +359,8 @@ void bind_growth(py::module_& m) {
   m.def(
       "growth_preset",
       [](const std::string& name, const std::string& light_model, const std::string& tropisms) {
-        const auto model = env::bud_light_model_from_name(light_model);
-        if (!model) {
-          throw ValueError(
-              "light_model: expected \"sky\", \"shadow_grid\" or "
-              "\"space_colonization\", got \"" +
-              light_model + "\"");
-        }
-        const auto pairing = env::tropism_pairing_from_name(tropisms);
-        if (!pairing) {
-          throw ValueError("preset_tropisms: expected \"text\" or \"appendix\", got \"" + tropisms +
-                           "\"");
-        }
-        return env::growth_preset(name, *model, *pairing);
+        return env::growth_preset(name, env::bud_light_model_from_name(light_model),
+                                  env::tropism_pairing_from_name(tropisms));
       },
       py::arg("name"), py::arg("light_model") = "shadow_grid", py::arg("preset_tropisms") = "text",
       "Pirk's tree type 'A', 'B' or 'C', with vigour fitted for the light model and the tropism "

@@ -94,7 +94,7 @@ TEST(EnvironmentCli, GrowChoosesTheLightModelOfAPreset) {
             "shadow_grid");
   auto r = run_fspm("grow --preset A --light-model voxels" + out);
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("--light-model"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("light_model"), std::string::npos) << r.err;
   r = run_fspm("grow --preset B --tropisms captions" + out);
   EXPECT_EQ(r.exit_code, 1);
   write_text(dir / "p.toml", "years = 3\n");
