@@ -35,10 +35,7 @@ env::GrowthParams growth_base(py::dict& values) {
   if (values.contains("preset_tropisms")) {
     const std::string t = py::str(values["preset_tropisms"]);
     PyDict_DelItemString(values.ptr(), "preset_tropisms");
-    const auto p = env::tropism_pairing_from_name(t);
-    if (!p)
-      throw ValueError("preset_tropisms: expected \"text\" or \"appendix\", got \"" + t + "\"");
-    pairing = *p;
+    pairing = env::tropism_pairing_from_name(t);
   }
   return env::growth_preset(name, model, pairing);
 }
