@@ -51,9 +51,9 @@ namespace {
 // fitted so that the mean size of 20-cycle trees (seeds 1-8) is Pirk Table 4.2's 2 541
 // internodes (docs/environment.md, "Presets").
 constexpr double kFittedAlpha[3][3] = {
-    {1.42, 1.94, 1.46},  // A
-    {1.66, 2.20, 1.46},  // B (not fitted for space colonization: it does not grow, see docs)
-    {1.22, 1.77, 2.60},  // C
+    {1.42, 1.94, 1.15},  // A
+    {1.66, 2.20, 1.15},  // B (not fitted for space colonization: it does not grow, see docs)
+    {1.22, 1.77, 1.41},  // C
 };
 
 int light_model_index(BudLightModel m) {

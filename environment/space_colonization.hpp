@@ -18,7 +18,7 @@ namespace fspm::environment {
 
 struct SpaceColonizationParams {
   double marker_density_per_m3 = 30.0;
-  double perception_radius_m = 0.6;
+  double perception_radius_m = 0.9;    // 6 internode lengths (Palubicki: 4-6)
   double perception_angle_deg = 90.0;  // full opening angle of the cone
   double occupancy_radius_m = 0.3;
   // Markers fill a vertical cylinder of this radius and height standing on the tree's base.
