@@ -37,9 +37,9 @@ std::vector<Eigen::Vector3d> crown_points(int n) {
   return p;
 }
 
-void BM_Light10kPoints1kClusters(benchmark::State& state) {
-  const double significance = state.range(0) == 0 ? 0.0 : 1e-3;
-  const LightModel model(crown_scene(1000, significance));
+// Light at 10 000 points of the crown of `scene`, per iteration.
+void light_at_crown_points(benchmark::State& state, const Scene& scene) {
+  const LightModel model(scene);
   const auto points = crown_points(10000);
   std::vector<LightSample> out(points.size());
   for (auto _ : state) {
@@ -48,6 +48,11 @@ void BM_Light10kPoints1kClusters(benchmark::State& state) {
   }
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(points.size()));
 }
+
+void BM_Light10kPoints1kClusters(benchmark::State& state) {
+  const double significance = state.range(0) == 0 ? 0.0 : 1e-3;
+  light_at_crown_points(state, crown_scene(1000, significance));
+}
 // Arg 1: default shadow-volume cutoff (significance 1e-3); arg 0: no cutoff (exact).
 BENCHMARK(BM_Light10kPoints1kClusters)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
 
@@ -55,14 +60,7 @@ BENCHMARK(BM_Light10kPoints1kClusters)->Arg(1)->Arg(0)->Unit(benchmark::kMillise
 void BM_Light10kPointsBesideWall(benchmark::State& state) {
   Scene s = crown_scene(1000, 1e-3);
   s.boxes.push_back(fspm::environment::Box::wall({-1, -5}, {-1, 25}, 0, 15, 0.3));
-  const LightModel model(s);
-  const auto points = crown_points(10000);
-  std::vector<LightSample> out(points.size());
-  for (auto _ : state) {
-    model.evaluate(points, out);
-    benchmark::DoNotOptimize(out.data());
-  }
-  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(points.size()));
+  light_at_crown_points(state, s);
 }
 BENCHMARK(BM_Light10kPointsBesideWall)->Unit(benchmark::kMillisecond);
 

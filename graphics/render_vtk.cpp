@@ -247,6 +247,18 @@ void stone_look(vtkActor* actor) {
   p->SetOpacity(1.0);
 }
 
+// Adds an actor for `mapper` with the shared surface look; the renderer keeps it alive.
+vtkActor* add_surface_actor(vtkRenderer* renderer, vtkMapper* mapper) {
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetInterpolationToPhong();
+  actor->GetProperty()->SetSpecular(0.15);
+  actor->GetProperty()->SetSpecularPower(20.0);
+  actor->GetProperty()->BackfaceCullingOff();
+  renderer->AddActor(actor);
+  return actor.Get();
+}
+
 vtkActor* add_glyph_actor(vtkRenderer* renderer, vtkPolyData* instances, const TriangleMesh& part,
                           const std::array<unsigned char, 3>& rgb) {
   vtkNew<vtkPolyData> source = to_polydata(part, "");
@@ -260,15 +272,9 @@ vtkActor* add_glyph_actor(vtkRenderer* renderer, vtkPolyData* instances, const T
   mapper->ScalingOn();
   mapper->OrientOn();
   mapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
+  vtkActor* actor = add_surface_actor(renderer, mapper);
   actor->GetProperty()->SetColor(rgb[0] / 255.0, rgb[1] / 255.0, rgb[2] / 255.0);
-  actor->GetProperty()->SetInterpolationToPhong();
-  actor->GetProperty()->SetSpecular(0.15);
-  actor->GetProperty()->SetSpecularPower(20.0);
-  actor->GetProperty()->BackfaceCullingOff();
-  renderer->AddActor(actor);
-  return actor.Get();
+  return actor;
 }
 
 // The triangles of one material as a mesh of their own (positions and normals only).
@@ -304,18 +310,6 @@ TriangleMesh without_material(const TriangleMesh& mesh, Material material) {
     out.materials.push_back(mesh.materials[t]);
   }
   return out;
-}
-
-// Adds an actor for `mapper` with the shared surface look; the renderer keeps it alive.
-vtkActor* add_surface_actor(vtkRenderer* renderer, vtkPolyDataMapper* mapper) {
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetInterpolationToPhong();
-  actor->GetProperty()->SetSpecular(0.15);
-  actor->GetProperty()->SetSpecularPower(20.0);
-  actor->GetProperty()->BackfaceCullingOff();
-  renderer->AddActor(actor);
-  return actor.Get();
 }
 
 // Range of an attribute over the vertices the triangles use ([v, v + 1] when constant).
