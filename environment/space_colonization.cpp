@@ -83,6 +83,15 @@ MarkerField::MarkerField(const SpaceColonizationParams& params, const Scene& sce
   owner_.assign(markers_.size(), -1);
 }
 
+std::vector<Eigen::Vector3d> MarkerField::live_marker_positions() const {
+  std::vector<Eigen::Vector3d> out;
+  out.reserve(live_);
+  for (std::size_t i = 0; i < markers_.size(); ++i) {
+    if (alive_[i]) out.push_back(markers_[i]);
+  }
+  return out;
+}
+
 std::int64_t MarkerField::cell_key(const Eigen::Vector3d& p) const {
   auto c = [&](double x) {
     const double f = std::floor(x / cell_);

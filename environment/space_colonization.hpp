@@ -49,6 +49,8 @@ class MarkerField {
   void perceive(std::span<const BudQuery> buds, std::span<BudPerception> out);
 
   std::size_t live_markers() const { return live_; }
+  // The positions of the live markers (for tests and pictures).
+  std::vector<Eigen::Vector3d> live_marker_positions() const;
 
  private:
   std::int64_t cell_key(const Eigen::Vector3d& p) const;
