@@ -5,6 +5,7 @@
 
 #include "fspm/tree_file.hpp"
 #include "tests/cli/run_command.hpp"
+#include "tests/cli/small_tree.hpp"
 
 namespace fspm {
 namespace {
@@ -12,32 +13,11 @@ namespace {
 using testing::run_fspm;
 using testing::scratch_dir;
 
-// Two internodes up z (radius 0.05 m, born 0 and 1) and a leaf on the top one (born 2).
-std::string write_tree(const std::filesystem::path& dir) {
-  TreeGraph t;
-  NodeData d;
-  d.end = {0, 0, 1};
-  d.radius = 0.05;
-  NodeId a = t.add_node(kNoNode, d);
-  d.start = {0, 0, 1};
-  d.end = {0, 0, 2};
-  d.birth_time = 1;
-  NodeId b = t.add_node(a, d);
-  d.start = {0, 0, 2};
-  d.end = {0.2, 0, 2};
-  d.radius = 0;
-  d.birth_time = 2;
-  d.kind = OrganKind::kLeaf;
-  t.add_node(b, d);
-  t.add_attribute("light", 0.5);
-  const std::string path = (dir / "t.tree").string();
-  write_tree_file(t, path);
-  return path;
-}
+using testing::write_small_tree;
 
 TEST(GraphicsCli, MeshEveryFormatWithCounts) {
   const auto dir = scratch_dir("mesh");
-  const std::string tree = write_tree(dir);
+  const std::string tree = write_small_tree(dir);
   // One tube of 2 segments with 16 sides (ceil(2 pi 0.05 / 0.01) clamped): 3 rings of 17
   // vertices and two caps of 17; 64 wall and 32 cap triangles. The leaf adds 4 and 2.
   for (const char* ext : {"obj", "ply", "vtp", "glb"}) {
@@ -58,7 +38,7 @@ TEST(GraphicsCli, MeshEveryFormatWithCounts) {
 
 TEST(GraphicsCli, GrowthSequence) {
   const auto dir = scratch_dir("pvd");
-  const std::string tree = write_tree(dir);
+  const std::string tree = write_small_tree(dir);
   auto r = run_fspm("mesh " + tree + " -o " + (dir / "g.pvd").string() +
                     " --leaves --ages 0,1,2 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -77,7 +57,7 @@ TEST(GraphicsCli, GrowthSequence) {
 
 TEST(GraphicsCli, BadInputsExitOneWithoutOutput) {
   const auto dir = scratch_dir("mesh_bad");
-  const std::string tree = write_tree(dir);
+  const std::string tree = write_small_tree(dir);
   auto r = run_fspm("mesh " + (dir / "missing.tree").string() + " -o " + (dir / "x.glb").string());
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("missing.tree"), std::string::npos) << r.err;
@@ -92,7 +72,7 @@ TEST(GraphicsCli, BadInputsExitOneWithoutOutput) {
 
 TEST(GraphicsCli, RenderPngAndUnknownAttribute) {
   const auto dir = scratch_dir("render");
-  const std::string tree = write_tree(dir);
+  const std::string tree = write_small_tree(dir);
   auto r = run_fspm("render " + tree + " -o " + (dir / "x.png").string() +
                     " --color-by no_such_attribute");
   EXPECT_EQ(r.exit_code, 1);
@@ -120,7 +100,7 @@ TEST(GraphicsCli, RenderPngAndUnknownAttribute) {
 
 TEST(GraphicsCli, ViewerScreenshot) {
   const auto dir = scratch_dir("view");
-  const std::string tree = write_tree(dir);
+  const std::string tree = write_small_tree(dir);
   auto r = run_fspm("view " + tree + " --leaves --ages 0,2 --screenshot " +
                     (dir / "v.png").string() + " --frames 2 --size 160x120 --json");
   if (r.err.find("without the viewer") != std::string::npos ||

@@ -9,6 +9,7 @@
 #include "fspm/tree_file.hpp"
 #include "graphics/image.hpp"
 #include "tests/cli/run_command.hpp"
+#include "tests/cli/small_tree.hpp"
 
 namespace fspm {
 namespace {
@@ -19,26 +20,7 @@ using testing::run_fspm;
 using testing::scratch_dir;
 using testing::write_text;
 
-// A trunk of two internodes up z (radius 0.05 m) with a leaf at the top; attribute "light".
-std::string write_tree(const fs::path& dir) {
-  TreeGraph t;
-  NodeData d;
-  d.end = {0, 0, 1};
-  d.radius = 0.05;
-  NodeId a = t.add_node(kNoNode, d);
-  d.start = {0, 0, 1};
-  d.end = {0, 0, 2};
-  NodeId b = t.add_node(a, d);
-  d.start = {0, 0, 2};
-  d.end = {0.2, 0, 2};
-  d.radius = 0;
-  d.kind = OrganKind::kLeaf;
-  t.add_node(b, d);
-  t.add_attribute("light", 0.5);
-  const std::string path = (dir / "t.tree").string();
-  write_tree_file(t, path);
-  return path;
-}
+using testing::write_small_tree;
 
 // A wall across the view of the front camera (which looks along +y), 0.6 m before the trunk and
 // 1.2 m high, with a ground plane that is not drawn.
@@ -59,7 +41,7 @@ std::size_t count(const std::string& text, const std::string& what) {
 
 TEST(ObstacleCli, ObjHasTheWallsTwelveTrianglesUnderUsemtlObstacle) {
   const auto dir = scratch_dir("obstacle_obj");
-  const std::string tree = write_tree(dir);
+  const std::string tree = write_small_tree(dir);
   const std::string scene = write_scene(dir);
   auto r = run_fspm("mesh " + tree + " --leaves -o " + (dir / "t.obj").string() + " --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -91,7 +73,7 @@ TEST(ObstacleCli, ObjHasTheWallsTwelveTrianglesUnderUsemtlObstacle) {
 
 TEST(ObstacleCli, GlbHasThreeMaterialsAndTheWallAsOneMorePlacedMesh) {
   const auto dir = scratch_dir("obstacle_glb");
-  const std::string tree = write_tree(dir);
+  const std::string tree = write_small_tree(dir);
   auto r = run_fspm("mesh " + tree + " --leaves --obstacles " + write_scene(dir) + " -o " +
                     (dir / "w.glb").string() + " --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -143,7 +125,7 @@ std::size_t stone_pixels(const graphics::Image& image) {
 
 TEST(ObstacleCli, RenderWithAWallBeforeTheCameraShowsTheWall) {
   const auto dir = scratch_dir("obstacle_render");
-  const std::string tree = write_tree(dir);
+  const std::string tree = write_small_tree(dir);
   const std::string scene = write_scene(dir);
   const std::string common = " --view front --size 200x160 --no-ground --json";
   auto r = run_fspm("render " + tree + " -o " + (dir / "a.png").string() + common);
