@@ -240,6 +240,23 @@ bool ClusterLightField::obstacles_stale(std::uint32_t c) const {
   return has_obstacles_ && (center_[c] - obstacle_at_[c]).squaredNorm() > obstacle_tolerance2_[c];
 }
 
+double ClusterLightField::sky_light(std::uint32_t c, Eigen::Vector3d& direction) const {
+  const std::vector<float>& vis = obstacle_vis_[c];
+  if (vis.empty()) {
+    direction = open_direction_;
+    return 1.0;
+  }
+  double sum = 0.0;
+  Eigen::Vector3d m = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < vis.size(); ++i) {
+    const double w = vis[i] * weight_[i];
+    sum += w;
+    m += w * dirs_.direction(static_cast<int>(i));
+  }
+  direction = m.norm() > 1e-300 ? Eigen::Vector3d(m.normalized()) : open_direction_;
+  return weight_sum_ > 0 ? std::clamp(sum / weight_sum_, 0.0, 1.0) : 0.0;
+}
+
 bool ClusterLightField::update_obstacles(std::uint32_t c) {
   double distance = kInf;
   obstacle_visibility(center_[c], scratch_vis_, distance);

@@ -51,6 +51,9 @@ class ClusterLightField {
   bool update_obstacles(std::uint32_t c);
   // True when c moved far enough since its obstacle visibility was computed to need a new one.
   bool obstacles_stale(std::uint32_t c) const;
+  // Cluster c's light from the sky through the obstacles alone (its cached visibility, no
+  // clusters): the share of the open sky's light, and its mean direction in `direction`.
+  double sky_light(std::uint32_t c, Eigen::Vector3d& direction) const;
 
   // Light and direction of cluster c from the alive clusters and the cached obstacle visibility.
   // The candidates are c's neighbour list (whose relative positions are refreshed) unless c

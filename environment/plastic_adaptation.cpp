@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 
+#include "environment/cluster_grid_light.hpp"
 #include "environment/cluster_light.hpp"
 #include "environment/solid_push.hpp"
 #include "fspm/error.hpp"
@@ -87,6 +89,16 @@ class Engine {
   void mark_dirty(std::uint32_t c);
   void check_moved();
   void refresh();
+  void setup_grid();
+  void regrid();
+  void update_light() {
+    if (grid_) {
+      regrid();
+    } else {
+      check_moved();
+      refresh();
+    }
+  }
   void finish(TreeRun& r);
   const Eigen::Quaterniond& anchor_rotation(std::uint32_t c) const {
     const TreeRun& r = runs_[owner_[c]];
@@ -110,6 +122,12 @@ class Engine {
   // Counts changes of what aggregate() reads (cluster light and life, pruned nodes), so that an
   // unchanged tree is not summed again.
   std::uint64_t epoch_ = 0;
+  // Shadow-grid light (ClusterLightModel::kShadowGrid): every cluster's buds, as analysed and as
+  // moved, refilled into the grid after every step that moved or pruned something.
+  std::unique_ptr<ClusterGridLight> grid_;
+  std::vector<Eigen::Vector3d> buds0_, buds_;
+  std::vector<std::uint32_t> bud_start_, bud_cluster_;
+  std::uint64_t grid_epoch_ = ~std::uint64_t{0};
 };
 
 Engine::Engine(const std::vector<const TreeGraph*>& trees,
@@ -150,7 +168,6 @@ Engine::Engine(const std::vector<const TreeGraph*>& trees,
   for (TreeRun& r : runs_) r.first_step = max_levels - (r.a->max_age + 1);
 
   field_.set_clusters(centers, radii, gammas);
-  field_.set_obstacles(scene);
   center0_ = centers;
   const std::size_t nc = centers.size();
   eval_q_.assign(nc, Eigen::Quaterniond::Identity());
@@ -162,6 +179,16 @@ Engine::Engine(const std::vector<const TreeGraph*>& trees,
   eval_path_.assign(nc, 0.0);
   eval_all_path_.assign(nc, 0.0);
   check_.assign(nc, 0);
+  field_.set_obstacles(scene);
+  if (runs_.front().a->params.light_model == ClusterLightModel::kShadowGrid) {
+    for (const TreeRun& r : runs_) {
+      if (r.a->params.light_model != ClusterLightModel::kShadowGrid) {
+        throw ValueError("plastic adaptation: the trees were analysed with different light models");
+      }
+    }
+    setup_grid();
+    return;
+  }
   bool sky_changed = false;
   for (const TreeRun& r : runs_) {
     const TreeAnalysis& a = *r.a;
@@ -213,6 +240,66 @@ Engine::Engine(const std::vector<const TreeGraph*>& trees,
     }
   }
   refresh();
+}
+
+void Engine::setup_grid() {
+  const std::size_t nc = field_.size();
+  field_.light_.assign(nc, 1.0);
+  bud_start_.assign(1, 0);
+  for (TreeRun& r : runs_) {
+    setup_tree(r);
+    std::vector<Eigen::Vector3d> buds;
+    std::vector<std::uint32_t> start;
+    cluster_buds(*r.tree, r.a->clusters, buds, start);
+    for (std::size_t c = 0; c + 1 < start.size(); ++c) {
+      for (std::uint32_t b = start[c]; b < start[c + 1]; ++b) {
+        buds0_.push_back(buds[b]);
+        bud_cluster_.push_back(static_cast<std::uint32_t>(bud_start_.size() - 1));
+      }
+      bud_start_.push_back(static_cast<std::uint32_t>(buds0_.size()));
+    }
+  }
+  buds_ = buds0_;
+  grid_ = std::make_unique<ClusterGridLight>(runs_.front().a->params.shadow_grid, scene_);
+  const Eigen::Vector3d brightest = scene_.sky.brightest.norm() > 0
+                                        ? Eigen::Vector3d(scene_.sky.brightest.normalized())
+                                        : Eigen::Vector3d::UnitZ();
+  if (!field_.has_obstacles() && runs_.size() == 1 &&
+      (runs_.front().a->brightest - brightest).norm() <= 1e-12) {
+    // The analysis' own light: nothing differs from the open scene until something moves.
+    field_.light_ = runs_.front().a->cluster_light;
+    field_.direction_ = runs_.front().a->cluster_direction;
+    grid_epoch_ = epoch_;
+    return;
+  }
+  for (std::uint32_t c = 0; c < nc; ++c) field_.update_obstacles(c);
+  regrid();
+}
+
+// The buds follow their cluster's anchor; the grid is refilled and every living cluster's light
+// read again, unless nothing moved or was pruned since the last time.
+void Engine::regrid() {
+  moved_.clear();
+  vanished_.clear();
+  if (grid_epoch_ == epoch_) return;
+  for (std::size_t b = 0; b < buds_.size(); ++b) {
+    const std::uint32_t g = bud_cluster_[b];
+    const TreeRun& r = runs_[owner_[g]];
+    const NodeId anchor = r.a->clusters[g - r.first_cluster].anchor;
+    if (r.stamp[anchor] >= 0) buds_[b] = r.F[anchor](buds0_[b]);
+  }
+  grid_->evaluate(buds_, bud_start_, field_.center_, field_.alive_, field_.light_,
+                  field_.direction_);
+  for (std::uint32_t c = 0; c < field_.size(); ++c) {
+    if (!field_.alive_[c]) continue;
+    if (field_.obstacles_stale(c)) field_.update_obstacles(c);
+    Eigen::Vector3d sky_direction;
+    const double sky = field_.sky_light(c, sky_direction);
+    combine_sky_and_grid(sky, sky_direction, field_.light_[c], field_.direction_[c]);
+    ++field_.evaluations_;
+  }
+  ++epoch_;
+  grid_epoch_ = epoch_;
 }
 
 void Engine::setup_tree(TreeRun& r) {
@@ -362,6 +449,7 @@ void Engine::bend(TreeRun& r, int level, int step) {
     cgroup_[gc] = r.group[anchor];
     moved_.push_back(gc);
   }
+  if (grid_) ++epoch_;  // the grid's light is read again after every move
   field_.mark_moved();
 }
 
@@ -370,10 +458,15 @@ void Engine::bend(TreeRun& r, int level, int step) {
 void Engine::prune(TreeRun& r, int level) {
   const TreeAnalysis& a = *r.a;
   aggregate(r);
+  // With relative pruning the thresholds scale with the tree's resources per length.
+  const double scale =
+      a.params.relative_pruning && a.pruning_factor[0] > 0.0 && r.length_below[0] > 0.0
+          ? r.zeta[0] / r.length_below[0] / a.pruning_factor[0]
+          : 1.0;
   for (const NodeId s : r.skeleton) {
     if (s == 0 || !r.lateral[s] || r.pruned[s]) continue;
     if (a.age[s] > level || r.length_below[s] <= 0.0) continue;
-    if (r.zeta[s] / r.length_below[s] >= a.min_pruning_factor[s]) continue;
+    if (r.zeta[s] / r.length_below[s] >= scale * a.min_pruning_factor[s]) continue;
     for (std::uint32_t k = r.pre_pos[s]; k < r.pre_pos[s] + r.pre_size[s]; ++k) {
       const NodeId m = r.pre[k];
       r.pruned[m] = 1;
@@ -531,18 +624,14 @@ std::vector<AdaptationResult> Engine::run() {
       aggregate(r);
       bend(r, level, step);
     }
-    check_moved();
-    refresh();
+    update_light();
     for (TreeRun& r : runs_) {
       const int level = step - r.first_step;
       if (level >= 0 && level <= r.a->max_age) prune(r, level);
     }
     // The clusters a pruning brightened are re-evaluated with the next step's moves (the next
     // bending still sees the light before this pruning: one level of lag, one evaluation less).
-    if (step + 1 == steps) {
-      check_moved();
-      refresh();
-    }
+    if (step + 1 == steps) update_light();
   }
   std::vector<AdaptationResult> out;
   for (TreeRun& r : runs_) {

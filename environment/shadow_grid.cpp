@@ -8,12 +8,15 @@
 namespace fspm::environment {
 namespace {
 
-constexpr double kMaxVoxels = 6e7;  // about 1 GB of grid buffers
-constexpr double kUnknown = -1.0;   // shade not computed yet (shade is never negative)
+constexpr double kMaxVoxels = 6e7;  // about 1.5 GB of grid buffers
 
 }  // namespace
 
-ShadowGrid::ShadowGrid(const ShadowGridParams& params) : p_(params) {
+ShadowGrid::ShadowGrid(const ShadowGridParams& params) { set_params(params); }
+
+void ShadowGrid::set_params(const ShadowGridParams& params) {
+  p_ = params;
+  n_ = Eigen::Vector3i::Zero();
   if (!(p_.voxel_size_m > 0) || !(p_.shade_a > 0) || !(p_.shade_b > 1) || p_.depth_voxels < 0 ||
       !(p_.full_light > 0) || !(p_.obstacle_shade >= 0)) {
     throw ValueError(
@@ -44,8 +47,36 @@ void ShadowGrid::reset(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
     v.assign(total, value);
   };
   clear(source_, 0.0);
-  clear(shade_, kUnknown);
+  clear(shade_, 0.0);
+  clear(shade_stamp_, std::uint32_t{0});
   clear(obstacle_, std::uint8_t{0});
+  stamp_ = 1;
+  obstacle_source_.clear();
+  touched_.clear();
+  const std::size_t sat_total = static_cast<std::size_t>(n_.x() + 1) * (n_.y() + 1) * n_.z();
+  // The first row and column of every layer stay zero; build_summed_area_tables() writes the rest.
+  if (sat_.capacity() < sat_total) sat_.reserve(sat_total + sat_total / 2);
+  sat_.assign(sat_total, 0.0);
+}
+
+void ShadowGrid::keep_obstacles() { obstacle_source_ = source_; }
+
+void ShadowGrid::clear_buds() {
+  // Only the voxels buds were added to changed since keep_obstacles().
+  const bool kept = obstacle_source_.size() == source_.size();
+  for (const std::size_t at : touched_) source_[at] = kept ? obstacle_source_[at] : 0.0;
+  touched_.clear();
+}
+
+bool ShadowGrid::covers(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) const {
+  // The same voxel range reset() would choose for [lo, hi] must lie inside the grid.
+  const double h = p_.voxel_size_m;
+  const int reach = p_.depth_voxels + 1;
+  const Eigen::Vector3d first = (lo / h).array().floor() - Eigen::Array3d(reach, reach, 1);
+  const Eigen::Vector3d last = (hi / h).array().floor() + Eigen::Array3d(reach, reach, reach);
+  const Eigen::Vector3d have = (origin_ / h).array().round();
+  return n_.prod() > 0 && (first.array() >= have.array()).all() &&
+         (last.array() < (have + n_.cast<double>()).array()).all();
 }
 
 std::size_t ShadowGrid::index(int i, int j, int k) const {
@@ -106,7 +137,10 @@ void ShadowGrid::fill_region(const Eigen::Vector3d& lo, const Eigen::Vector3d& h
 
 void ShadowGrid::add_bud(const Eigen::Vector3d& p, double weight) {
   Eigen::Vector3i v;
-  if (voxel_of(p, v)) source_[index(v.x(), v.y(), v.z())] += p_.shade_a * weight;
+  if (!voxel_of(p, v)) return;
+  const std::size_t at = index(v.x(), v.y(), v.z());
+  source_[at] += p_.shade_a * weight;
+  touched_.push_back(at);
 }
 
 void ShadowGrid::add_obstacles(const Scene& scene) {
@@ -149,16 +183,16 @@ void ShadowGrid::add_mesh(const TriangleMesh& mesh) {
 
 void ShadowGrid::build_summed_area_tables() {
   const int sx = n_.x() + 1, sy = n_.y() + 1;
-  const std::size_t total = static_cast<std::size_t>(sx) * sy * n_.z();
-  if (sat_.capacity() < total) sat_.reserve(total + total / 2);
-  sat_.assign(total, 0.0);
   for (int k = 0; k < n_.z(); ++k) {
     double* layer = sat_.data() + static_cast<std::size_t>(k) * sx * sy;
     for (int j = 0; j < n_.y(); ++j) {
+      const double* src = source_.data() + index(0, j, k);
+      const double* above = layer + j * sx + 1;
+      double* out = layer + (j + 1) * sx + 1;
       double row = 0.0;
       for (int i = 0; i < n_.x(); ++i) {
-        row += source_[index(i, j, k)];
-        layer[(j + 1) * sx + i + 1] = layer[j * sx + i + 1] + row;
+        row += src[i];
+        out[i] = above[i] + row;
       }
     }
   }
@@ -179,14 +213,20 @@ double ShadowGrid::box_sum(int k, int i0, int i1, int j0, int j1) const {
 
 void ShadowGrid::propagate() {
   build_summed_area_tables();
+  if (++stamp_ == 0) {  // the stamps wrapped: every shade is unknown again
+    std::fill(shade_stamp_.begin(), shade_stamp_.end(), 0u);
+    stamp_ = 1;
+  }
   falloff_.resize(p_.depth_voxels + 1);
   for (int q = 0; q <= p_.depth_voxels; ++q) falloff_[q] = std::pow(p_.shade_b, -q);
 }
 
 double ShadowGrid::voxel_shade(int i, int j, int k) const {
   // Computed when first asked: buds and their neighbours are a small part of the grid.
-  double& s = shade_[index(i, j, k)];
-  if (s != kUnknown) return s;
+  const std::size_t at = index(i, j, k);
+  double& s = shade_[at];
+  if (shade_stamp_[at] == stamp_) return s;
+  shade_stamp_[at] = stamp_;
   // Palubicki: s(i, j, k) = sum over q of b^-q times the sources of layer k + q within the
   // square of half width q above (i, j).
   const int q_last = std::min(p_.depth_voxels, n_.z() - 1 - k);
@@ -244,6 +284,27 @@ Eigen::Vector3d ShadowGrid::growth_direction(const Eigen::Vector3d& p) const {
     }
   }
   return sum.norm() > 1e-12 ? Eigen::Vector3d(sum.normalized()) : Eigen::Vector3d::UnitZ();
+}
+
+Eigen::Vector3d ShadowGrid::light_direction(const Eigen::Vector3d& p) const {
+  Eigen::Vector3i v;
+  if (!voxel_of(p, v)) return Eigen::Vector3d::UnitZ();
+  const double dark = p_.full_light + p_.shade_a;
+  const auto shade_at = [&](Eigen::Vector3i w) {
+    // Beyond the grid's side nothing is known: the same as the voxel itself.
+    for (int a = 0; a < 2; ++a) w[a] = std::clamp(w[a], 0, n_[a] - 1);
+    return obstacle_[index(w.x(), w.y(), w.z())] ? dark : voxel_shade(w.x(), w.y(), w.z());
+  };
+  // The light comes through the 45-degree cone of the shadow pyramid: from the zenith when both
+  // sides are equally shaded, tilted toward the brighter side by up to the cone's half angle when
+  // one side is dark (a shade difference of C) and the other open.
+  const Eigen::Vector2d away(
+      shade_at(v - Eigen::Vector3i::UnitX()) - shade_at(v + Eigen::Vector3i::UnitX()),
+      shade_at(v - Eigen::Vector3i::UnitY()) - shade_at(v + Eigen::Vector3i::UnitY()));
+  const double norm = away.norm();
+  if (norm <= 1e-12) return Eigen::Vector3d::UnitZ();
+  const double tilt = std::min(1.0, norm / p_.full_light);  // tan of the tilt angle
+  return Eigen::Vector3d(tilt * away.x() / norm, tilt * away.y() / norm, 1.0).normalized();
 }
 
 }  // namespace fspm::environment

@@ -40,6 +40,8 @@ struct ShadowGridParams {
 class ShadowGrid {
  public:
   explicit ShadowGrid(const ShadowGridParams& params);
+  // New parameters for a grid whose buffers are reused; call reset() before adding anything.
+  void set_params(const ShadowGridParams& params);
 
   // Empties the grid and sizes it to cover every bud inside [lo, hi] together with every voxel
   // whose shade can reach them (q_max voxels beside and above).
@@ -51,12 +53,23 @@ class ShadowGrid {
   void add_bud(const Eigen::Vector3d& p, double weight = 1.0);
   // Propagates the shade of every source; call after the last add_* and before any query.
   void propagate();
+  // Remembers the sources added so far (the obstacles) so that clear_buds() can return to them:
+  // a grid re-filled with moving buds at every step rasterizes its obstacles once.
+  void keep_obstacles();
+  // Removes every bud, keeping the obstacles of the last keep_obstacles() (or none).
+  void clear_buds();
+  // Whether a bud anywhere in [lo, hi] lies in the grid with all the voxels that can shade it.
+  bool covers(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) const;
 
   // Palubicki's Q / C for a bud at p (its own shade a removed), in [0, 1].
   double bud_light(const Eigen::Vector3d& p) const;
   // Unit vector from p towards the least shaded neighbouring voxels (their mean when several tie);
   // straight up when every neighbour is an obstacle.
   Eigen::Vector3d growth_direction(const Eigen::Vector3d& p) const;
+  // Mean light direction at p: the zenith tilted toward the less shaded side (central differences
+  // over the four side neighbours, an obstacle voxel counting as C + a of shade) by up to the 45
+  // degrees of the shadow pyramid. Smooth where growth_direction picks one of 26.
+  Eigen::Vector3d light_direction(const Eigen::Vector3d& p) const;
 
   // Shade s of the voxel containing p (0 outside the grid), for tests.
   double shade(const Eigen::Vector3d& p) const;
@@ -81,9 +94,14 @@ class ShadowGrid {
   ShadowGridParams p_;
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();  // corner of voxel (0, 0, 0)
   Eigen::Vector3i n_ = Eigen::Vector3i::Zero();
-  std::vector<double> source_;         // shade cast per voxel, in units of a
-  mutable std::vector<double> shade_;  // s per voxel, computed when first asked
-  std::vector<double> falloff_;        // b^-q
+  std::vector<double> source_;           // shade cast per voxel, in units of a
+  std::vector<double> obstacle_source_;  // source_ after keep_obstacles()
+  mutable std::vector<double> shade_;    // s per voxel, computed when first asked
+  // shade_ holds the current s where its stamp equals stamp_ (clear_buds() only bumps stamp_).
+  mutable std::vector<std::uint32_t> shade_stamp_;
+  std::uint32_t stamp_ = 1;
+  std::vector<std::size_t> touched_;  // voxels add_bud() changed since the last clear
+  std::vector<double> falloff_;       // b^-q
   std::vector<std::uint8_t> obstacle_;
   std::vector<double> sat_;  // per layer (nx + 1) x (ny + 1) summed-area table of source_
 };

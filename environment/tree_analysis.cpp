@@ -121,6 +121,71 @@ void AnalysisParams::validate() const {
   }
 }
 
+ClusterLightModel cluster_light_model_from_name(const std::string& name) {
+  if (name == "sky") return ClusterLightModel::kSky;
+  if (name == "shadow_grid") return ClusterLightModel::kShadowGrid;
+  throw ValueError("plastic analysis: unknown light_model '" + name.substr(0, 40) +
+                   "' (expected sky or shadow_grid)");
+}
+
+const char* cluster_light_model_name(ClusterLightModel model) {
+  return model == ClusterLightModel::kSky ? "sky" : "shadow_grid";
+}
+
+void cluster_buds(const TreeGraph& t, const std::vector<LeafCluster>& clusters,
+                  std::vector<Eigen::Vector3d>& buds, std::vector<std::uint32_t>& bud_start) {
+  buds.clear();
+  bud_start.assign(1, 0);
+  for (const LeafCluster& c : clusters) {
+    // The tips (leaves, or bare shoot ends) carry the buds and leaves that cast shade.
+    for (const NodeId m : c.nodes) {
+      if (t.children(m).empty()) buds.push_back(t.end(m));
+    }
+    bud_start.push_back(static_cast<std::uint32_t>(buds.size()));
+  }
+}
+
+namespace {
+
+// The clusters alone under an open sky, one evaluation per cluster, with the neighbour lists the
+// adaptation starts from.
+void sky_light(TreeAnalysis& a, ClusterLightField& field) {
+  std::vector<Eigen::Vector3d> centers;
+  std::vector<double> radii, gammas;
+  for (const LeafCluster& c : a.clusters) {
+    centers.push_back(c.center);
+    radii.push_back(c.radius_m);
+    gammas.push_back(c.translucency);
+  }
+  field.set_clusters(centers, radii, gammas);
+  field.rebuild_grid();
+  for (std::uint32_t c = 0; c < a.clusters.size(); ++c) field.evaluate(c);
+  a.cluster_light = field.light_;
+  a.cluster_direction = field.direction_;
+  a.cluster_neighbors = std::move(field.neighbors_);
+}
+
+// The clusters' buds alone in the shadow grid of an open scene.
+void grid_light(const TreeGraph& t, const Scene& open, const Eigen::Vector3d& sky_direction,
+                TreeAnalysis& a) {
+  const std::size_t nc = a.clusters.size();
+  std::vector<Eigen::Vector3d> buds, centers(nc);
+  std::vector<std::uint32_t> bud_start;
+  cluster_buds(t, a.clusters, buds, bud_start);
+  for (std::size_t c = 0; c < nc; ++c) centers[c] = a.clusters[c].center;
+  a.cluster_light.assign(nc, 1.0);
+  a.cluster_direction.assign(nc, Eigen::Vector3d::UnitZ());
+  a.cluster_neighbors.assign(nc, {});
+  ClusterGridLight light(a.params.shadow_grid, open);
+  light.evaluate(buds, bud_start, centers, std::vector<std::uint8_t>(nc, 1), a.cluster_light,
+                 a.cluster_direction);
+  for (std::size_t c = 0; c < nc; ++c) {
+    combine_sky_and_grid(1.0, sky_direction, a.cluster_light[c], a.cluster_direction[c]);
+  }
+}
+
+}  // namespace
+
 TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
                           const Eigen::Vector3d& brightest) {
   if (t.empty()) throw ValueError("plastic analysis: the tree is empty");
@@ -232,21 +297,11 @@ TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
   scene.sky.directions = params.light_directions;
   scene.sky.significance = params.light_significance;
   ClusterLightField field(params.light_directions, params.light_significance, a.brightest);
-  {
-    std::vector<Eigen::Vector3d> centers;
-    std::vector<double> radii, gammas;
-    for (const LeafCluster& c : a.clusters) {
-      centers.push_back(c.center);
-      radii.push_back(c.radius_m);
-      gammas.push_back(c.translucency);
-    }
-    field.set_clusters(centers, radii, gammas);
-    field.rebuild_grid();
-    for (std::uint32_t c = 0; c < a.clusters.size(); ++c) field.evaluate(c);
+  if (params.light_model == ClusterLightModel::kShadowGrid) {
+    grid_light(t, scene, field.open_direction(), a);
+  } else {
+    sky_light(a, field);
   }
-  a.cluster_light = field.light_;
-  a.cluster_direction = field.direction_;
-  a.cluster_neighbors = std::move(field.neighbors_);
 
   // Pruning: zeta (eq. 4.11) over the clusters below, over the skeleton length below; the light
   // direction of every segment from the same sums (the adaptation repeats this loop exactly).

@@ -16,15 +16,27 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
+#include "environment/cluster_grid_light.hpp"
 #include "environment/cluster_light.hpp"
 #include "environment/occluders.hpp"
+#include "environment/shadow_grid.hpp"
 #include "fspm/tree_graph.hpp"
 
 namespace fspm::environment {
 
 inline constexpr std::uint32_t kNoCluster = std::numeric_limits<std::uint32_t>::max();
+
+// Which light the analysis and the adaptation give the leaf clusters: the sky hemisphere with the
+// other clusters as caps (Pirk eq. 4.3; ClusterLightField), or Palubicki's local shadow grid
+// (ClusterGridLight), the light the growth model's default trees grew under.
+enum class ClusterLightModel { kSky, kShadowGrid };
+
+// "sky" or "shadow_grid"; throws ValueError naming the choices otherwise.
+ClusterLightModel cluster_light_model_from_name(const std::string& name);
+const char* cluster_light_model_name(ClusterLightModel model);
 
 struct AnalysisParams {
   // Internodes at least this thick belong to the skeleton; <= 0 picks 2.5 times the thinnest
@@ -36,13 +48,20 @@ struct AnalysisParams {
   double reference_percentile = 0.05;  // psi_ref, Pirk 4.3.4
   // psi_s(t) over every earlier stage (eq. 4.5 cluster propagation) instead of the final one.
   bool temporal_pruning = false;
+  // During adaptation the thresholds of eq. 4.12 follow the whole tree's resources per length
+  // (psi at the root now against at the analysis), so a branch is pruned when it falls behind the
+  // rest of the crown, not when the whole crown gets less light (see docs/environment.md).
+  bool relative_pruning = true;
   // Tropism weights w_tau of eq. 4.6-4.7 (Pirk exposes them as user parameters; defaults: type A).
   double phototropism = 0.25;
   double gravitropism = 0.12;
   Eigen::Vector3d gravity_direction = -Eigen::Vector3d::UnitZ();
+  ClusterLightModel light_model = ClusterLightModel::kSky;
   // Light as in the growth model: few directions, a coarse shadow-volume cutoff (see Sky).
   int light_directions = 64;
   double light_significance = 0.01;
+  // The grid of light_model kShadowGrid (cluster_grid_light.hpp).
+  ShadowGridParams shadow_grid = cluster_grid_params();
 
   // Throws ValueError naming the parameter and its allowed range.
   void validate() const;
@@ -111,6 +130,11 @@ Eigen::Vector3d inverse_tropism(const Eigen::Vector3d& h, const Eigen::Vector3d&
 // parameters.
 TreeAnalysis analyze_tree(const TreeGraph& tree, const AnalysisParams& params = {},
                           const Eigen::Vector3d& brightest = Eigen::Vector3d::UnitZ());
+
+// The member node ends of every cluster, grouped by cluster: those of cluster c are
+// buds[bud_start[c] .. bud_start[c + 1]) (the buds of ClusterGridLight).
+void cluster_buds(const TreeGraph& tree, const std::vector<LeafCluster>& clusters,
+                  std::vector<Eigen::Vector3d>& buds, std::vector<std::uint32_t>& bud_start);
 
 // The analysis' clusters as light-model spheres (non-solid).
 std::vector<Sphere> cluster_spheres(const std::vector<LeafCluster>& clusters);

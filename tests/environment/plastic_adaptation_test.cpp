@@ -290,3 +290,29 @@ TEST(PlasticAnalysis, TemporalStagesOnlyLowerThePruningThresholds) {
 
 }  // namespace
 }  // namespace fspm::environment
+
+namespace fspm::environment {
+namespace {
+
+// A translucent roof far above the crown dims every cluster by about the same share. Pirk's
+// thresholds (eq. 4.12, absolute) then prune every branch that was near the reference; relative
+// pruning keeps them, since no branch fell behind the rest of the crown.
+TEST(PlasticAdaptation, UniformShadePrunesOnlyWithAbsoluteThresholds) {
+  const OpenTree& g = grown_a();
+  Scene scene;
+  scene.boxes.push_back(Box::from_min_max({-60, -60, 30}, {60, 60, 30.5}));
+  scene.boxes.back().translucency = 0.5;
+  AnalysisParams params;
+  const TreeAnalysis relative = analyze_tree(g.tree, params);
+  params.relative_pruning = false;
+  const TreeAnalysis absolute = analyze_tree(g.tree, params);
+  const AdaptationResult r = adapt_tree(g.tree, relative, scene);
+  const AdaptationResult a = adapt_tree(g.tree, absolute, scene);
+  std::printf("roof: pruned %zu (relative) against %zu (absolute) of %zu\n", r.pruned_nodes,
+              a.pruned_nodes, g.tree.size());
+  EXPECT_GT(a.pruned_nodes, g.tree.size() / 10);
+  EXPECT_LT(r.pruned_nodes, a.pruned_nodes / 5);
+}
+
+}  // namespace
+}  // namespace fspm::environment

@@ -1,0 +1,63 @@
+#pragma once
+// Light of leaf clusters from Palubicki's shadow grid (shadow_grid.hpp), for the analysis and the
+// plastic adaptation of a tree grown with the same local light (Palubicki et al. 2009, 4.1). Every
+// tip of a living cluster is a bud that casts shade into the pyramid below it; a cluster's light
+// is the mean Q / C of its buds (each without its own shade) and its light direction is the
+// zenith tilted toward the less shaded side (ShadowGrid::light_direction). Obstacles are voxels,
+// as in growth; the adaptation also takes the sky they hide from each cluster
+// (combine_sky_and_grid), which the grid's local shade alone would miss beyond q_max voxels.
+//
+// The grid is coarser than the growth model's so that it can be filled and propagated again at
+// every age level of an adaptation (see cluster_grid_params).
+#include <Eigen/Core>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "environment/scene.hpp"
+#include "environment/shadow_grid.hpp"
+
+namespace fspm::environment {
+
+// A cluster's light and direction from the share `sky` of the sky's light it sees past the
+// obstacles (mean direction `sky_direction`) and from its shade in the grid (`light`,
+// `direction` as ClusterGridLight gives them, replaced by the result): the shares multiply (the
+// foliage and the obstacles are taken to block independent parts of the sky) and the grid's tilt
+// toward the less shaded side is added to the sky's direction.
+inline void combine_sky_and_grid(double sky, const Eigen::Vector3d& sky_direction, double& light,
+                                 Eigen::Vector3d& direction) {
+  light *= sky;
+  const Eigen::Vector3d tilt(direction.x() / direction.z(), direction.y() / direction.z(), 0.0);
+  direction = (sky_direction + tilt).normalized();
+}
+
+// Default grid of the cluster light: the growth model's default grid made twice as coarse, its
+// shade per bud and per obstacle voxel fitted to give the clusters the fine grid's light.
+ShadowGridParams cluster_grid_params();
+
+class ClusterGridLight {
+ public:
+  // Throws ValueError for invalid grid parameters.
+  ClusterGridLight(const ShadowGridParams& params, const Scene& scene);
+  ~ClusterGridLight();
+  ClusterGridLight(const ClusterGridLight&) = delete;
+  ClusterGridLight& operator=(const ClusterGridLight&) = delete;
+
+  // Buds of cluster c: buds[bud_start[c] .. bud_start[c + 1]). Clusters with alive[c] == 0 cast
+  // no shade and keep their light. Writes light[c] in [0, 1] and the unit direction[c].
+  void evaluate(const std::vector<Eigen::Vector3d>& buds,
+                const std::vector<std::uint32_t>& bud_start,
+                const std::vector<Eigen::Vector3d>& centers, const std::vector<std::uint8_t>& alive,
+                std::vector<double>& light, std::vector<Eigen::Vector3d>& direction);
+
+ private:
+  void fit(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi);
+
+  // Taken from a per-thread pool and given back: touching fresh memory costs more than an
+  // adaptation on virtual machines, and experiments adapt thousands of trees in turn.
+  std::unique_ptr<ShadowGrid> grid_;
+  const Scene& scene_;
+  bool sized_ = false;
+};
+
+}  // namespace fspm::environment
