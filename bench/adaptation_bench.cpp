@@ -45,11 +45,13 @@ void BM_AdaptBesideWall(benchmark::State& state) {
   const Case& c = case_for(static_cast<int>(state.range(0)));
   std::size_t pruned = 0;
   std::size_t evaluations = 0;
+  double tip_shift_x = 0.0;
   const auto t0 = std::chrono::steady_clock::now();
   for (auto _ : state) {
     const AdaptationResult r = adapt_tree(c.open.tree, c.analysis, c.wall);
     pruned = r.pruned_nodes;
     evaluations = r.light_evaluations;
+    tip_shift_x = r.mean_tip_shift.x();
     benchmark::DoNotOptimize(r.tree.size());
   }
   const double per_run =
@@ -62,6 +64,7 @@ void BM_AdaptBesideWall(benchmark::State& state) {
   state.counters["regrow_ms"] = 1e3 * c.regrow_seconds;
   state.counters["regrown_nodes"] = static_cast<double>(c.regrown_nodes);
   state.counters["regrow_ratio"] = c.regrow_seconds / per_run;
+  state.counters["tip_shift_x_m"] = tip_shift_x;
 }
 BENCHMARK(BM_AdaptBesideWall)->Arg(10)->Arg(20)->Arg(30)->Unit(benchmark::kMillisecond);
 
@@ -90,6 +93,26 @@ BENCHMARK(BM_AdaptBesideWallCoarseLight)
     ->Args({30, 5})
     ->Args({30, 10})
     ->Unit(benchmark::kMillisecond);
+
+// The same wall with the leaf clusters' light from Palubicki's shadow grid
+// (AnalysisParams::light_model = kShadowGrid): one grid fill and propagation per age level instead
+// of per-cluster hemisphere evaluations; pruning and tip shift reported, as they differ.
+void BM_AdaptBesideWallGridLight(benchmark::State& state) {
+  const Case& c = case_for(static_cast<int>(state.range(0)));
+  AnalysisParams params;
+  params.light_model = ClusterLightModel::kShadowGrid;
+  const TreeAnalysis analysis = analyze_tree(c.open.tree, params);
+  AdaptationResult r;
+  for (auto _ : state) {
+    r = adapt_tree(c.open.tree, analysis, c.wall);
+    benchmark::DoNotOptimize(r.tree.size());
+  }
+  state.counters["nodes"] = static_cast<double>(c.open.tree.size());
+  state.counters["pruned"] = static_cast<double>(r.pruned_nodes);
+  state.counters["light_evals"] = static_cast<double>(r.light_evaluations);
+  state.counters["tip_shift_x_m"] = r.mean_tip_shift.x();
+}
+BENCHMARK(BM_AdaptBesideWallGridLight)->Arg(10)->Arg(20)->Arg(30)->Unit(benchmark::kMillisecond);
 
 // A local change: a 1 m x 1 m x 2 m box 2.5 m east of the trunk (a bench or a car beside the tree).
 // Only the clusters it shades (and their neighbours) are re-evaluated.

@@ -34,6 +34,8 @@ struct AdaptOptions {
   bool remove = false;
   bool together = false;
   bool temporal = false;
+  bool absolute_pruning = false;
+  std::string light_model = "sky";
   bool json = false;
 };
 
@@ -79,6 +81,8 @@ void run_adapt(const AdaptOptions& o) {
   params.phototropism = o.phototropism;
   params.gravitropism = o.gravitropism;
   params.temporal_pruning = o.temporal;
+  params.relative_pruning = !o.absolute_pruning;
+  params.light_model = environment::cluster_light_model_from_name(o.light_model);
   Eigen::Vector3d grown_brightest = scenes.front().sky.brightest;
   if (!o.grown_brightest.empty()) {
     grown_brightest = {o.grown_brightest[0], o.grown_brightest[1], o.grown_brightest[2]};
@@ -153,6 +157,10 @@ void run_adapt(const AdaptOptions& o) {
           {"pruned_nodes", r.pruned_nodes},
           {"mean_tip_displacement", r.mean_tip_displacement_m},
           {"mean_tip_shift", {r.mean_tip_shift.x(), r.mean_tip_shift.y(), r.mean_tip_shift.z()}},
+          {"pruned_centroid",
+           {r.pruned_centroid.x(), r.pruned_centroid.y(), r.pruned_centroid.z()}},
+          {"internode_centroid",
+           {r.internode_centroid.x(), r.internode_centroid.y(), r.internode_centroid.z()}},
           {"seconds", seconds[k]},
           {"analysis_seconds", analysis_seconds[k]}};
       if (several_scenes) {
@@ -200,6 +208,11 @@ void add_adapt_commands(CLI::App& app) {
       ->expected(3);
   a->add_flag("--temporal-pruning", opt->temporal,
               "Pruning thresholds over all earlier growth stages (eq. 4.5), not the final one");
+  a->add_flag("--absolute-pruning", opt->absolute_pruning,
+              "Pirk's eq. 4.12 thresholds as analysed, not scaled with the crown's resources");
+  a->add_option("--light-model", opt->light_model,
+                "Cluster light: sky (hemisphere with the clusters as caps, default) or "
+                "shadow_grid (Palubicki's voxel shade, faster)");
   a->add_flag("--together", opt->together,
               "Trees shade each other, adapted in lock-step (world coordinates, Pirk 4.4.3)");
   a->add_flag("--remove-pruned", opt->remove, "Drop pruned nodes instead of flagging them");

@@ -693,15 +693,23 @@ void Engine::finish(TreeRun& r) {
   for (NodeId i = 1; i < n; ++i) {
     if (is_internode(t, i)) internode_child[t.parent(i)] = 1;
   }
+  std::size_t internodes = 0, pruned_internodes = 0;
   for (NodeId i = 0; i < n; ++i) {
     disp[i] = (t.end(i) - tree.end(i)).norm();
     pr[i] = pruned[i];
     res.pruned_nodes += pruned[i];
+    if (is_internode(t, i)) {
+      ++internodes;
+      res.internode_centroid += tree.end(i);
+      if (pruned[i]) ++pruned_internodes, res.pruned_centroid += tree.end(i);
+    }
     if (pruned[i] || !is_internode(t, i) || internode_child[i]) continue;
     ++res.tips;
     res.mean_tip_displacement_m += disp[i];
     res.mean_tip_shift += t.end(i) - tree.end(i);
   }
+  if (internodes > 0) res.internode_centroid /= static_cast<double>(internodes);
+  if (pruned_internodes > 0) res.pruned_centroid /= static_cast<double>(pruned_internodes);
   if (res.tips > 0) {
     res.mean_tip_displacement_m /= static_cast<double>(res.tips);
     res.mean_tip_shift /= static_cast<double>(res.tips);

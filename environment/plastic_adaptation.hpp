@@ -34,6 +34,10 @@ struct AdaptationResult {
   std::size_t tips = 0;           // internode tips that survived (no internode child)
   double mean_tip_displacement_m = 0.0;
   Eigen::Vector3d mean_tip_shift = Eigen::Vector3d::Zero();
+  // Where the pruning happened: the centroid of the pruned internodes' ends in the input tree
+  // (zero when nothing was pruned), to set against the input tree's `internode_centroid`.
+  Eigen::Vector3d pruned_centroid = Eigen::Vector3d::Zero();
+  Eigen::Vector3d internode_centroid = Eigen::Vector3d::Zero();
   std::vector<LeafCluster> clusters;  // the adapted clusters (pruned ones removed)
   std::size_t light_evaluations = 0;  // cluster light evaluations the adaptation needed
   std::size_t pushed_clusters = 0;    // clusters moved out of solid obstacles

@@ -25,11 +25,17 @@ bool is_analysis_parameter(const std::string& name) {
   static const char* const kNames[] = {
       "skeleton_radius_m",    "min_cluster_radius_m", "gamma0",       "pruning_strength",
       "reference_percentile", "temporal_pruning",     "phototropism", "gravitropism",
-      "light_directions",     "light_significance"};
+      "light_directions",     "light_significance",   "light_model",  "relative_pruning"};
   for (const char* n : kNames) {
     if (name == n) return true;
   }
   return false;
+}
+
+bool parameter_flag(const ParameterValue& value, const std::string& name) {
+  const std::int64_t v = parameter_integer(value, name);
+  if (v != 0 && v != 1) throw ValueError(name + " must be 0 or 1");
+  return v == 1;
 }
 
 // The analysis parameters of a run over the defaults; validated.
@@ -44,10 +50,10 @@ env::AnalysisParams analysis_params(const ParameterSet& parameters) {
     if (name == "phototropism") p.phototropism = parameter_number(value, name);
     if (name == "gravitropism") p.gravitropism = parameter_number(value, name);
     if (name == "light_significance") p.light_significance = parameter_number(value, name);
-    if (name == "temporal_pruning") {
-      const std::int64_t v = parameter_integer(value, name);
-      if (v != 0 && v != 1) throw ValueError("temporal_pruning must be 0 or 1");
-      p.temporal_pruning = v == 1;
+    if (name == "temporal_pruning") p.temporal_pruning = parameter_flag(value, name);
+    if (name == "relative_pruning") p.relative_pruning = parameter_flag(value, name);
+    if (name == "light_model") {
+      p.light_model = env::cluster_light_model_from_name(parameter_string(value, name));
     }
     if (name == "light_directions") {
       const std::int64_t v = parameter_integer(value, name);
@@ -59,13 +65,13 @@ env::AnalysisParams analysis_params(const ParameterSet& parameters) {
   return p;
 }
 
-using AnalysisKey =
-    std::tuple<double, double, double, double, double, bool, double, double, int, double>;
+using AnalysisKey = std::tuple<double, double, double, double, double, bool, double, double, int,
+                               double, env::ClusterLightModel, bool>;
 
 AnalysisKey key_of(const env::AnalysisParams& p) {
   return {p.skeleton_radius_m,    p.min_cluster_radius_m, p.gamma0,       p.pruning_strength,
           p.reference_percentile, p.temporal_pruning,     p.phototropism, p.gravitropism,
-          p.light_directions,     p.light_significance};
+          p.light_directions,     p.light_significance,   p.light_model,  p.relative_pruning};
 }
 
 class AdaptModel final : public Model {
@@ -94,7 +100,7 @@ class AdaptModel final : public Model {
           "tree_y_m or an analysis parameter: skeleton_radius_m, "
           "min_cluster_radius_m, gamma0, pruning_strength, reference_percentile, "
           "temporal_pruning, phototropism, gravitropism, light_directions, "
-          "light_significance)");
+          "light_significance, light_model, relative_pruning)");
     }
     analysis_params({{name, value}});
   }

@@ -411,13 +411,24 @@ void bind_growth(py::module_& m) {
 void bind_adaptation(py::module_& m) {
   py::class_<env::AnalysisParams> ap(
       m, "AnalysisParams", "Parameters of the open-sky analysis for plastic adaptation (Pirk 4.3)");
+  ap.def_property(
+      "light_model",
+      [](const env::AnalysisParams& p) {
+        return std::string(env::cluster_light_model_name(p.light_model));
+      },
+      [](env::AnalysisParams& p, const std::string& name) {
+        p.light_model = env::cluster_light_model_from_name(name);
+      },
+      "Light of the leaf clusters: 'sky' (hemisphere, clusters as caps) or 'shadow_grid'");
   Fields<env::AnalysisParams>(ap)
+      .existing("light_model")
       .add("skeleton_radius_m", &env::AnalysisParams::skeleton_radius_m)
       .add("min_cluster_radius_m", &env::AnalysisParams::min_cluster_radius_m)
       .add("gamma0", &env::AnalysisParams::gamma0)
       .add("pruning_strength", &env::AnalysisParams::pruning_strength)
       .add("reference_percentile", &env::AnalysisParams::reference_percentile)
       .add("temporal_pruning", &env::AnalysisParams::temporal_pruning)
+      .add("relative_pruning", &env::AnalysisParams::relative_pruning)
       .add("phototropism", &env::AnalysisParams::phototropism)
       .add("gravitropism", &env::AnalysisParams::gravitropism)
       .add("gravity_direction", &env::AnalysisParams::gravity_direction)
@@ -491,6 +502,12 @@ void bind_adaptation(py::module_& m) {
       .def_readonly("tips", &AR::tips)
       .def_readonly("mean_tip_displacement_m", &AR::mean_tip_displacement_m)
       .def_property_readonly("mean_tip_shift", [](const AR& r) { return r.mean_tip_shift; })
+      .def_property_readonly(
+          "pruned_centroid", [](const AR& r) { return r.pruned_centroid; },
+          "Centroid of the pruned internodes in the input tree (m; zero when none)")
+      .def_property_readonly(
+          "internode_centroid", [](const AR& r) { return r.internode_centroid; },
+          "Centroid of the input tree's internodes (m)")
       .def_property_readonly(
           "clusters", [](const AR& r) { return cluster_array(r.clusters); },
           "Adapted leaf clusters as rows x, y, z, radius, translucency")
