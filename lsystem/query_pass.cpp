@@ -19,7 +19,7 @@ class QueryVisitor {
   void vertex(const Eigen::Vector3d&) {}
   void polygon_end(const detail::Frame&) {}
   void surface(double, const detail::Frame&) {}
-  void sphere(double, const detail::Frame&) {}
+  void sphere(double, bool, const detail::Frame&) {}
   void query(std::size_t, detail::Action, const detail::Frame& f) { frames.push_back(f); }
   std::vector<detail::Frame> frames;
 };

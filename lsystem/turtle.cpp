@@ -1,5 +1,6 @@
 #include "lsystem/turtle.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
@@ -46,6 +47,42 @@ std::vector<double> numbers(std::string_view text, const std::string& file, int 
   return out;
 }
 
+// cpfg reads `initial line width: w [unit]`: no unit selects the polygon line style (model
+// units), a word starting with 'p' (pixels) the pixel style, one with 's' or 'c' cylinders.
+LineWidthUnit initial_width_unit(std::string_view value) {
+  const auto word = std::find_if(value.begin(), value.end(), [](char c) {
+    return std::isalpha(static_cast<unsigned char>(c)) != 0;
+  });
+  if (word != value.end() && std::tolower(static_cast<unsigned char>(*word)) == 'p') {
+    return LineWidthUnit::kPixel;
+  }
+  return LineWidthUnit::kModel;
+}
+
+// `line style: pixel | polygon | cylinder` (or cpfg's 1 | 2 | 3).
+LineWidthUnit line_style_unit(std::string_view value, const std::string& file, int line,
+                              int column) {
+  const std::string style = lower(value);
+  if (style == "pixel" || style == "1") return LineWidthUnit::kPixel;
+  if (style == "polygon" || style == "cylinder" || style == "2" || style == "3") {
+    return LineWidthUnit::kModel;
+  }
+  throw ParseError("expected a line style: pixel, polygon or cylinder", file, line, column);
+}
+
+// Largest side of the box around every drawn point (internode and organ ends, leaf vertices).
+double largest_extent(const Interpretation& out) {
+  Eigen::AlignedBox3d box;
+  for (NodeId n = 0; n < out.tree.size(); ++n) {
+    box.extend(out.tree.start(n));
+    box.extend(out.tree.end(n));
+  }
+  for (const LeafPolygon& leaf : out.leaves) {
+    for (const Eigen::Vector3d& v : leaf.vertices) box.extend(v);
+  }
+  return box.isEmpty() ? 0.0 : box.sizes().maxCoeff();
+}
+
 class GraphBuilder {
  public:
   explicit GraphBuilder(Interpretation& out) : out_(out) {}
@@ -57,10 +94,11 @@ class GraphBuilder {
     d.end = f.position;
     d.direction = heading;
     d.length = std::abs(length);
-    d.radius = f.width * radius_per_width_;
+    d.radius = 0.5 * f.width;  // the line width is the diameter (cpfg polygons, cylinders)
     d.order = static_cast<std::uint16_t>(std::min(f.depth, 65535));
     d.kind = OrganKind::kInternode;
     f.node = add(f.node, d, f.color);
+    line_width_nodes_.push_back(f.node);
   }
   void polygon_begin(const detail::Frame& f) { polygons_.push_back({f.node, {}}); }
   void vertex(const Eigen::Vector3d& v) {
@@ -106,7 +144,8 @@ class GraphBuilder {
     add(f.node, d, f.color);
   }
   // cpfg @o(d): a sphere of diameter d, recorded as a flower organ at the turtle position.
-  void sphere(double diameter, const detail::Frame& f) {
+  // Without d the sphere takes the line width (and its unit).
+  void sphere(double diameter, bool line_width, const detail::Frame& f) {
     NodeData d;
     d.start = f.position;
     d.end = f.position;
@@ -115,12 +154,13 @@ class GraphBuilder {
     d.radius = std::abs(diameter) * 0.5;
     d.order = static_cast<std::uint16_t>(std::min(f.depth, 65535));
     d.kind = OrganKind::kFlower;
-    add(f.node, d, f.color);
+    const NodeId id = add(f.node, d, f.color);
+    if (line_width) line_width_nodes_.push_back(id);
   }
   void query(std::size_t, detail::Action, const detail::Frame&) {}
 
-  double radius_per_width_ = 0.5;
   std::vector<double> colors_;
+  std::vector<NodeId> line_width_nodes_;  // radius = half a line width, in the width's unit
 
  private:
   NodeId add(NodeId parent, const NodeData& d, int color) {
@@ -162,6 +202,9 @@ TurtleSettings parse_view(std::string_view text, const std::string& name, Turtle
       s.angle_deg = one("an angle increment in degrees");
     } else if (key == "initiallinewidth") {
       s.initial_line_width = one("a line width");
+      s.line_width_unit = initial_width_unit(value);
+    } else if (key == "linestyle") {
+      s.line_width_unit = line_style_unit(value, name, line_no, column);
     } else if (key == "linewidthincrement") {
       s.line_width_increment = one("a line width increment");
     } else if (key == "tropismdirection") {
@@ -209,9 +252,15 @@ Interpretation interpret(const ModuleString& s, const SymbolTable& symbols,
   }
   out.tree.reserve(drawn);
   GraphBuilder builder(out);
-  builder.radius_per_width_ = settings.radius_per_width;
   builder.colors_.reserve(drawn);
   detail::walk(s, actions, settings, builder);
+  if (settings.line_width_unit == LineWidthUnit::kPixel) {
+    // Pixel widths: the plant spans kPixelsAcrossPlant pixels of the picture they were drawn in.
+    const double units_per_pixel = largest_extent(out) / kPixelsAcrossPlant;
+    for (NodeId n : builder.line_width_nodes_) {
+      out.tree.set_radius(n, out.tree.radius(n) * units_per_pixel);
+    }
+  }
   out.tree.add_attribute("color_index");
   auto colors = out.tree.attribute("color_index");
   std::copy(builder.colors_.begin(), builder.colors_.end(), colors.begin());

@@ -7,14 +7,16 @@
 //   G, g      forward / move, never a polygon vertex           + - (a)  turn left / right about U
 //   & ^ (a)   pitch down / up about L                          \ / (a)  roll left / right about H
 //   |         turn around                                      $        roll until L is horizontal
-//   [ ]       push / pop the turtle state                      ! (w)    decrease line width / set
-//   it # (w)     increase line width / set it                     ; ' , (c) color index + / set, -
+//   [ ]       push / pop the turtle state                      ; ' , (c) color index + / set, -
+//   ! (w)     decrease the line width / set it                 # (w)    increase it / set it
 //   { . }     polygon: begin, record a vertex, end (a leaf)    ~x(s)    predefined surface (a leaf)
 //   @o(d)     sphere of diameter d: a flower organ
+// The line width is the drawn internode's diameter, in pixels or model units (LineWidthUnit).
 // Tropism (ABOP section 2.2, bending by elasticity): after every F the heading turns toward T by
 // e |H x T|, e = initial elasticity + elasticity increment * branch depth.
 #include <Eigen/Core>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,19 +26,33 @@
 
 namespace fspm::lsystem {
 
+// What a line width (`!`, `#`, `initial line width`) measures, as cpfg's line styles do.
+//   kPixel: a line width in pixels of a picture in which the plant's largest extent spans
+//     kPixelsAcrossPlant pixels (cpfg's default style, `line style: pixel`, or
+//     `initial line width: w pixels`). The internode diameter is w * extent / kPixelsAcrossPlant
+//     model units, so the drawn plant keeps the proportions of the line drawing.
+//   kModel: a diameter in model units, the units of F (cpfg's `line style: polygon` or
+//     `cylinder`, or `initial line width: w` without a unit).
+enum class LineWidthUnit : std::uint8_t { kPixel, kModel };
+
+// Size of the reference picture of pixel line widths: the plant's largest extent in pixels.
+inline constexpr double kPixelsAcrossPlant = 500.0;
+
 struct TurtleSettings {
   double angle_deg = 90.0;
   double step = 1.0;  // length of F without a parameter
   double initial_line_width = 1.0;
   double line_width_increment = 1.0;
-  double radius_per_width = 0.5;  // internode radius = line width * this
+  LineWidthUnit line_width_unit = LineWidthUnit::kPixel;                // cpfg's default line style
   Eigen::Vector3d tropism_direction = Eigen::Vector3d(0.0, 0.0, -1.0);  // z-up coordinates
   double initial_elasticity = 0.0;
   double elasticity_increment = 0.0;
 };
 
 // View file keys (case-insensitive, unknown keys ignored as cpfg has many display settings):
-// `angle factor: n` (angle = 360/n), `angle increment: deg`, `initial line width: w`,
+// `angle factor: n` (angle = 360/n), `angle increment: deg`, `initial line width: w [pixels]`
+// (without a unit the widths become model units, with `p`/`pixels` pixels, as in cpfg),
+// `line style: pixel|polygon|cylinder` (pixel widths, or model-unit widths for the other two),
 // `line width increment: w`, `tropism direction: x,y,z` (cpfg frame, y up),
 // `initial elasticity: e`, `elasticity increment: e`, `step: l` (fspm extension).
 TurtleSettings parse_view(std::string_view text, const std::string& name = "<view>",

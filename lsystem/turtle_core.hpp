@@ -255,7 +255,7 @@ void walk(const ModuleString& s, const std::vector<Action>& actions, const Turtl
         visitor.surface(has ? p[0] : 1.0, f);
         break;
       case Action::kSphere:
-        visitor.sphere(has ? p[0] : f.width, f);
+        visitor.sphere(has ? p[0] : f.width, !has, f);
         break;
       case Action::kQueryP:
       case Action::kQueryH:

@@ -1,2 +1,3 @@
 angle increment: 22.5
-initial line width: 0.1
+/* ABOP draws these plants with thin lines, so the width is in pixels */
+initial line width: 2 pixels

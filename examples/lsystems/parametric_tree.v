@@ -1,2 +1,3 @@
 angle increment: 85
-initial line width: 0.05
+/* ABOP draws this tree with thin lines, so the width is in pixels */
+initial line width: 2 pixels

@@ -68,6 +68,7 @@ TEST(LsystemTurtle, MoveWithoutDrawingLeavesAGap) {
 
 TEST(LsystemTurtle, LineWidthGivesRadius) {
   TurtleSettings s;
+  s.line_width_unit = LineWidthUnit::kModel;  // the width is a diameter in model units
   s.initial_line_width = 4;
   s.line_width_increment = 1;
   const Interpretation r = draw("F!F!(1)F#F", s);
@@ -75,6 +76,25 @@ TEST(LsystemTurtle, LineWidthGivesRadius) {
   EXPECT_DOUBLE_EQ(r.tree.radius(1), 1.5);
   EXPECT_DOUBLE_EQ(r.tree.radius(2), 0.5);
   EXPECT_DOUBLE_EQ(r.tree.radius(3), 1.0);
+}
+
+TEST(LsystemTurtle, PixelWidthsScaleWithThePlant) {
+  // cpfg's default line style: widths in pixels of a picture kPixelsAcrossPlant wide. A 10-unit
+  // stem (extent 10) of width 5 px: diameter 5 * 10 / 500 = 0.1, radius 0.05.
+  const Interpretation r = draw("!(5)F(4)F(6)");
+  ASSERT_EQ(r.tree.size(), 2u);
+  EXPECT_NEAR(r.tree.radius(0), 0.5 * 5.0 * 10.0 / kPixelsAcrossPlant, 1e-12);
+  EXPECT_NEAR(r.tree.radius(1), r.tree.radius(0), 1e-12);
+  // Twice the plant, twice the radius: the picture keeps its proportions.
+  const Interpretation big = draw("!(5)F(8)F(12)");
+  EXPECT_NEAR(big.tree.radius(0), 2.0 * r.tree.radius(0), 1e-12);
+  // The extent is the largest side of the box: a 3 x 4 L spans 4.
+  const Interpretation l = draw("!(2)F(4)+F(3)");
+  EXPECT_NEAR(l.tree.radius(1), 0.5 * 2.0 * 4.0 / kPixelsAcrossPlant, 1e-12);
+  // A sphere without a diameter takes the line width in pixels; with one, model units.
+  const Interpretation o = draw("!(10)F(5)@o@o(2)");
+  EXPECT_NEAR(o.tree.radius(1), 0.5 * 10.0 * 5.0 / kPixelsAcrossPlant, 1e-12);
+  EXPECT_NEAR(o.tree.radius(2), 1.0, 1e-12);
 }
 
 TEST(LsystemTurtle, PolygonsBecomeLeavesWithTheirArea) {
@@ -122,7 +142,17 @@ TEST(LsystemTurtle, ViewFileKeys) {
       "projection: parallel\n");
   EXPECT_DOUBLE_EQ(s.angle_deg, 45.0);
   EXPECT_DOUBLE_EQ(s.initial_line_width, 3.0);
+  EXPECT_EQ(s.line_width_unit, LineWidthUnit::kPixel);
   EXPECT_DOUBLE_EQ(s.line_width_increment, 0.5);
+  // cpfg: a width without a unit is in model units; `line style` decides when given after it.
+  EXPECT_EQ(parse_view("initial line width: 0.1\n").line_width_unit, LineWidthUnit::kModel);
+  EXPECT_EQ(parse_view("initial line width: 2 p\n").line_width_unit, LineWidthUnit::kPixel);
+  EXPECT_EQ(parse_view("angle increment: 30\n").line_width_unit, LineWidthUnit::kPixel);
+  EXPECT_EQ(parse_view("initial line width: 2 pixels\nline style: cylinder\n").line_width_unit,
+            LineWidthUnit::kModel);
+  EXPECT_EQ(parse_view("initial line width: 2\nLine Style: pixel\n").line_width_unit,
+            LineWidthUnit::kPixel);
+  EXPECT_THROW(parse_view("line style: thick\n"), ParseError);
   EXPECT_TRUE(s.tropism_direction.isApprox(Eigen::Vector3d(0, 0, -1)));  // cpfg y-up
   EXPECT_DOUBLE_EQ(s.initial_elasticity, 0.1);
   EXPECT_DOUBLE_EQ(s.elasticity_increment, 0.05);
@@ -201,7 +231,9 @@ TEST(LsystemTurtle, Abop124aGeometry) {
   }
   EXPECT_EQ(trunk, 243);
   EXPECT_NEAR(top, 243.0, 1e-9);
-  EXPECT_NEAR(big.tree.radius(0), 0.05, 1e-12);  // initial line width 0.1
+  // Initial line width 2 pixels of a picture kPixelsAcrossPlant across the plant's height 243.
+  EXPECT_EQ(view.line_width_unit, LineWidthUnit::kPixel);
+  EXPECT_NEAR(big.tree.radius(0), 0.5 * 2.0 * 243.0 / kPixelsAcrossPlant, 1e-9);
 }
 
 TEST(LsystemTurtle, LeafyShootLeavesAreRhombi) {
