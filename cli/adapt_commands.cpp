@@ -31,7 +31,8 @@ struct AdaptOptions {
   double phototropism = 0.25;
   double gravitropism = 0.12;
   std::vector<double> grown_brightest;
-  bool remove = false;
+  bool keep_pruned = false;
+  bool remove_pruned = true;  // the default; the flag only confirms it
   bool together = false;
   bool temporal = false;
   bool absolute_pruning = false;
@@ -145,10 +146,11 @@ void run_adapt(const AdaptOptions& o) {
     for (std::size_t k = 0; k < trees.size(); ++k) {
       const environment::AdaptationResult& r = adapted[k];
       const std::string& output = outputs[s][k];
-      if (o.remove) {
-        write_tree_file(environment::remove_pruned(r.tree), output, o.format);
-      } else {
+      // The adapted tree as it stands: pruned branches gone unless asked to keep them flagged.
+      if (o.keep_pruned) {
         write_tree_file(r.tree, output, o.format);
+      } else {
+        write_tree_file(environment::remove_pruned(r.tree), output, o.format);
       }
       nlohmann::json item = {
           {"input", o.trees[k]},
@@ -215,7 +217,13 @@ void add_adapt_commands(CLI::App& app) {
                 "shadow_grid (Palubicki's voxel shade, faster)");
   a->add_flag("--together", opt->together,
               "Trees shade each other, adapted in lock-step (world coordinates, Pirk 4.4.3)");
-  a->add_flag("--remove-pruned", opt->remove, "Drop pruned nodes instead of flagging them");
+  a->add_flag("--keep-pruned", opt->keep_pruned,
+              "Keep pruned nodes in the output, flagged by the attribute \"pruned\" (default: "
+              "drop them)");
+  // Removal became the default; the old flag stays accepted so scripts keep working.
+  a->add_flag("--remove-pruned", opt->remove_pruned,
+              "Drop pruned nodes (the default; kept for compatibility)")
+      ->excludes("--keep-pruned");
   a->add_flag("--json", opt->json, "Machine-readable JSON on stdout");
   a->callback([opt] { run_adapt(*opt); });
 }

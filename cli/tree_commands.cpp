@@ -1,5 +1,6 @@
 // fspm tree info | convert: inspect and convert tree graph files.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -25,22 +26,31 @@ struct ConvertOptions {
   std::string to;
 };
 
+// Nodes flagged by plastic adaptation's "pruned" attribute (kept with fspm adapt --keep-pruned).
+std::size_t pruned_count(const TreeGraph& tree) {
+  const auto pruned = tree.attribute("pruned");
+  return static_cast<std::size_t>(
+      std::count_if(pruned.begin(), pruned.end(), [](double v) { return v != 0.0; }));
+}
+
 nlohmann::json summary_json(const std::string& file, const TreeGraph& tree) {
   const TreeSummary s = summarize(tree);
-  return {{"file", file},
-          {"nodes", s.nodes},
-          {"internodes", s.internodes},
-          {"leaves", s.leaves},
-          {"flowers", s.flowers},
-          {"buds", s.buds},
-          {"tips", s.tips},
-          {"max_order", s.max_order},
-          {"max_depth", s.max_depth},
-          {"height", s.height_m},
-          {"total_length", s.total_length_m},
-          {"bbox_min", {s.bbox_min.x(), s.bbox_min.y(), s.bbox_min.z()}},
-          {"bbox_max", {s.bbox_max.x(), s.bbox_max.y(), s.bbox_max.z()}},
-          {"attributes", tree.attribute_names()}};
+  nlohmann::json j = {{"file", file},
+                      {"nodes", s.nodes},
+                      {"internodes", s.internodes},
+                      {"leaves", s.leaves},
+                      {"flowers", s.flowers},
+                      {"buds", s.buds},
+                      {"tips", s.tips},
+                      {"max_order", s.max_order},
+                      {"max_depth", s.max_depth},
+                      {"height", s.height_m},
+                      {"total_length", s.total_length_m},
+                      {"bbox_min", {s.bbox_min.x(), s.bbox_min.y(), s.bbox_min.z()}},
+                      {"bbox_max", {s.bbox_max.x(), s.bbox_max.y(), s.bbox_max.z()}},
+                      {"attributes", tree.attribute_names()}};
+  if (tree.has_attribute("pruned")) j["pruned"] = pruned_count(tree);
+  return j;
 }
 
 void run_info(const InfoOptions& o) {
@@ -52,8 +62,8 @@ void run_info(const InfoOptions& o) {
   }
   std::cout << o.file << '\n';
   for (const char* key : {"nodes", "internodes", "leaves", "flowers", "buds", "tips", "max_order",
-                          "max_depth", "height", "total_length"}) {
-    std::cout << "  " << key << ": " << j[key].dump() << '\n';
+                          "max_depth", "height", "total_length", "pruned"}) {
+    if (j.contains(key)) std::cout << "  " << key << ": " << j[key].dump() << '\n';
   }
   std::cout << "  attributes: " << j["attributes"].dump() << '\n';
 }

@@ -37,11 +37,39 @@ TEST(AdaptCli, EmptySceneKeepsTheTreeAndAWallBendsItAway) {
   EXPECT_LT(jw["mean_tip_shift"][0].get<double>(), 0.0);
   EXPECT_GT(jw["pruned_nodes"].get<int>(), 0);
   EXPECT_GE(jw["seconds"].get<double>(), 0.0);
+  // By default the pruned branches are gone from the output.
+  const std::size_t nodes = jw["nodes"].get<std::size_t>();
+  const std::size_t pruned = jw["pruned_nodes"].get<std::size_t>();
   const TreeGraph adapted = read_tree_file((dir / "w.tree").string());
+  EXPECT_EQ(adapted.size(), nodes - pruned);
   EXPECT_TRUE(adapted.has_attribute("displacement"));
-  EXPECT_TRUE(adapted.has_attribute("pruned"));
 
-  // Several trees: -o is a directory and the JSON is a list.
+  // --keep-pruned keeps them, flagged, and tree info counts them.
+  const auto k = run_fspm("adapt " + tree + " --scene " + (dir / "wall.json").string() + " -o " +
+                          (dir / "k.tree").string() + " --keep-pruned");
+  ASSERT_EQ(k.exit_code, 0) << k.err;
+  const TreeGraph kept = read_tree_file((dir / "k.tree").string());
+  ASSERT_EQ(kept.size(), nodes);
+  ASSERT_TRUE(kept.has_attribute("pruned"));
+  std::size_t flagged = 0;
+  for (double v : kept.attribute("pruned")) flagged += v != 0.0 ? 1 : 0;
+  EXPECT_EQ(flagged, pruned);
+  const auto info = run_fspm("tree info " + (dir / "k.tree").string() + " --json");
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  EXPECT_EQ(nlohmann::json::parse(info.out)["pruned"].get<std::size_t>(), pruned);
+  const auto text = run_fspm("tree info " + (dir / "k.tree").string());
+  EXPECT_NE(text.out.find("pruned: " + std::to_string(pruned)), std::string::npos) << text.out;
+  // A tree without the attribute says nothing about pruning.
+  const auto plain = run_fspm("tree info " + tree + " --json");
+  EXPECT_FALSE(nlohmann::json::parse(plain.out).contains("pruned"));
+  // Asking for both is a usage error.
+  EXPECT_NE(run_fspm("adapt " + tree + " --scene " + (dir / "wall.json").string() + " -o " +
+                     (dir / "x.tree").string() + " --keep-pruned --remove-pruned")
+                .exit_code,
+            0);
+
+  // Several trees: -o is a directory and the JSON is a list; --remove-pruned (the default) is
+  // still accepted.
   const auto m =
       run_fspm("adapt " + tree + " " + tree + " --scene " + (dir / "wall.json").string() + " -o " +
                (dir / "many").string() + " --json --remove-pruned");
@@ -81,7 +109,7 @@ TEST(AdaptCli, SeveralScenesReadaptTheSameAnalysis) {
                    js["mean_tip_displacement"].get<double>());
   EXPECT_TRUE(std::filesystem::exists(dir / "out" / "empty" / "a.tree"));
   EXPECT_EQ(read_tree_file((dir / "out" / "wall" / "a.tree").string()).size(),
-            js["nodes"].get<std::size_t>());
+            js["nodes"].get<std::size_t>() - js["pruned_nodes"].get<std::size_t>());
 }
 
 TEST(AdaptCli, BadSceneIsAUserError) {
