@@ -56,7 +56,10 @@ TEST(LsystemCli, InterpretWritesATreeFile) {
   const TreeGraph tree = read_tree_file(out);
   EXPECT_EQ(tree.size(), 1023u);  // 2^10 - 1 internodes (one F per apex per step)
   EXPECT_NEAR(tree.length(0), 1.0, 1e-9);
-  EXPECT_NEAR(tree.radius(0), 5.0, 1e-9);  // !(10): width 10 -> radius 5
+  // !(10) in pixels (the view file's unit) of a picture 500 pixels across the plant's largest
+  // extent, its height: the trunk of lengths 0.9^k, k < 10, sum (1 - 0.9^10) / 0.1.
+  const double height = (1.0 - std::pow(0.9, 10)) / 0.1;
+  EXPECT_NEAR(tree.radius(0), 0.5 * 10.0 * height / 500.0, 1e-9);
 }
 
 TEST(LsystemCli, BadInputExitsOneWithPosition) {
