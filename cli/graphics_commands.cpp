@@ -25,6 +25,7 @@
 #include "fspm/compressed_tree_graph.hpp"
 #include "fspm/error.hpp"
 #include "fspm/tree_file.hpp"
+#include "graphics/foliage.hpp"
 #include "graphics/image.hpp"
 #include "graphics/instanced_mesh.hpp"
 #include "graphics/mesh_writers.hpp"
@@ -50,6 +51,8 @@ struct MeshCommand {
   int max_sides = 16;
   std::string junctions = "separate";
   bool reynolds_width = false;
+  std::string foliage = "leaves";
+  std::uint64_t seed = 1;
   std::string obstacles;
   bool json = false;
 };
@@ -68,6 +71,8 @@ struct RenderCommand {
   std::string view = "iso";
   std::string size = "1024x768";
   bool leaves = false;
+  std::string foliage = "leaves";
+  std::uint64_t seed = 1;
   bool no_ground = false;
   double edge_length_m = 0.01;
   double ortho_height_m = 0.0;
@@ -84,12 +89,34 @@ struct ViewCommand {
   std::string size = "1280x800";
   int frames = 1;
   bool leaves = false;
+  std::string foliage = "leaves";
+  std::uint64_t seed = 1;
   bool no_shadows = false;
   bool json = false;
 };
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Leaves on or off, and how leaf clusters are drawn (the name becomes an enum right away).
+void set_leaves(graphics::MeshOptions& options, bool leaves, const std::string& foliage,
+                std::uint64_t seed) {
+  options.leaves = leaves;
+  options.foliage.mode = graphics::foliage_mode_from_name(foliage);
+  options.foliage_seed = seed;
+}
+
+// --leaves that finds no leaf, polygon or leaf cluster says so instead of drawing nothing quietly.
+void report_missing_leaves(const graphics::InstancedMesh& mesh, const std::string& file) {
+  for (const auto& m : mesh.meshes) {
+    if (m.triangle_count(graphics::Material::kLeaf) + m.triangle_count(graphics::Material::kCrown) >
+        0) {
+      return;
+    }
+  }
+  spdlog::warn("{}: --leaves found no leaves to draw (no leaf nodes with a length or a radius)",
+               file);
 }
 
 // What a graphics command was given: a tree file, a compressed graph (.ctree) or a GreenLab plant
@@ -213,7 +240,7 @@ void run_mesh(const MeshCommand& c) {
   const graphics::MeshFormat format = graphics::mesh_format_for(c.out);
   const InputKind kind = input_kind(c.tree);
   graphics::MeshOptions options;
-  options.leaves = c.leaves;
+  set_leaves(options, c.leaves, c.foliage, c.seed);
   options.edge_length_m = c.edge_length_m;
   options.max_sides = c.max_sides;
   options.junctions = junction_mode(c.junctions);
@@ -248,6 +275,7 @@ void run_mesh(const MeshCommand& c) {
       throw ValueError("--ages makes a growth sequence: use an output ending in .pvd", c.out);
     }
     graphics::InstancedMesh mesh = load_instanced(c.tree, c.format, options);
+    if (c.leaves) report_missing_leaves(mesh, c.tree);
     if (!c.obstacles.empty()) j["obstacle_triangles"] = add_obstacles(mesh, c.obstacles, false);
     graphics::write_mesh(mesh, c.out);
     vertices = mesh.vertex_count();
@@ -278,9 +306,10 @@ void run_render(const RenderCommand& c) {
   }
   graphics::check_image_path(c.out);
   graphics::MeshOptions mesh_options;
-  mesh_options.leaves = c.leaves;
+  set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
   mesh_options.edge_length_m = c.edge_length_m;
   graphics::InstancedMesh mesh = load_instanced(c.tree, c.format, mesh_options);
+  if (c.leaves) report_missing_leaves(mesh, c.tree);
   if (!c.color_by.empty()) {
     for (const auto& m : mesh.meshes) (void)m.attribute(c.color_by);  // unknown: ValueError
   }
@@ -413,7 +442,7 @@ void run_view(const ViewCommand& c) {
     if (ages.empty()) ages.push_back(std::numeric_limits<double>::infinity());
     std::sort(ages.begin(), ages.end());
     graphics::MeshOptions mesh_options;
-    mesh_options.leaves = c.leaves;
+    set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
     steps = view_steps(sources, c.format, ages, mesh_options);
     // Far level of detail: rings four times coarser, at most six sides.
     graphics::MeshOptions coarse = mesh_options;
@@ -462,7 +491,13 @@ void add_graphics_commands(CLI::App& app) {
                 "Output: .obj (+.mtl), .ply, .vtp, .pvd or .glb (.glb keeps the instancing)")
       ->required();
   m->add_option("--format", mesh->format, "Input format: " + formats);
-  m->add_flag("--leaves", mesh->leaves, "Mesh leaf nodes as quads");
+  m->add_flag("--leaves", mesh->leaves, "Mesh leaf nodes as quads, leaf clusters as foliage");
+  m->add_option("--foliage", mesh->foliage,
+                "Leaf clusters of grown and adapted trees with --leaves: leaves (a cloud of small "
+                "leaves) or volumes (translucent crown spheres)")
+      ->capture_default_str();
+  m->add_option("--seed", mesh->seed, "Seed of the leaf placement in clusters")
+      ->capture_default_str();
   m->add_option("--ages", mesh->ages,
                 "Ages of a .pvd growth sequence (default: the birth times, at most 20)")
       ->delimiter(',');
@@ -495,7 +530,13 @@ void add_graphics_commands(CLI::App& app) {
                 "tree attribute) with a scalar bar");
   r->add_option("--view", render->view, "front, side, top or iso")->capture_default_str();
   r->add_option("--size", render->size, "WIDTHxHEIGHT in pixels")->capture_default_str();
-  r->add_flag("--leaves", render->leaves, "Show leaves");
+  r->add_flag("--leaves", render->leaves, "Show leaves and leaf clusters");
+  r->add_option("--foliage", render->foliage,
+                "Leaf clusters of grown and adapted trees with --leaves: leaves (a cloud of small "
+                "leaves) or volumes (translucent crown spheres)")
+      ->capture_default_str();
+  r->add_option("--seed", render->seed, "Seed of the leaf placement in clusters")
+      ->capture_default_str();
   r->add_flag("--no-ground", render->no_ground, "Leave out the ground plane");
   r->add_option("--edge-length", render->edge_length_m, "Target ring edge length in m")
       ->check(CLI::PositiveNumber);
@@ -524,7 +565,13 @@ void add_graphics_commands(CLI::App& app) {
                 "cycle), latest birth times of trees")
       ->delimiter(',');
   v->add_option("--color-by", view->color_by, "Colour by a vertex attribute");
-  v->add_flag("--leaves", view->leaves, "Show leaves");
+  v->add_flag("--leaves", view->leaves, "Show leaves and leaf clusters");
+  v->add_option("--foliage", view->foliage,
+                "Leaf clusters of grown and adapted trees with --leaves: leaves (a cloud of small "
+                "leaves) or volumes (translucent crown spheres)")
+      ->capture_default_str();
+  v->add_option("--seed", view->seed, "Seed of the leaf placement in clusters")
+      ->capture_default_str();
   v->add_flag("--no-shadows", view->no_shadows, "Start without shadows");
   v->add_option("--size", view->size, "Window WIDTHxHEIGHT")->capture_default_str();
   v->add_option("--screenshot", view->screenshot,

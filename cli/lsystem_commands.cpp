@@ -106,13 +106,19 @@ void run_interpret(const LsystemOptions& o) {
     throw ValueError("the derived string draws nothing (no F module): no tree to write", o.file);
   }
   write_tree_file(result.tree, o.output, o.format);
+  // Leaves: polygons { . } and predefined surfaces ~x alike (leaf nodes of the graph).
+  std::size_t leaves = 0;
+  for (NodeId n = 0; n < result.tree.size(); ++n) {
+    leaves += result.tree.kind(n) == OrganKind::kLeaf ? 1 : 0;
+  }
   spdlog::info("{}: {} steps, {} modules -> {} nodes ({} leaves) in {}", o.file, d.steps_done(),
-               d.string().size(), result.tree.size(), result.leaves.size(), o.output);
+               d.string().size(), result.tree.size(), leaves, o.output);
   if (o.json) {
     print_json({{"steps", d.steps_done()},
                 {"modules", d.string().size()},
                 {"nodes", result.tree.size()},
-                {"leaves", result.leaves.size()},
+                {"leaves", leaves},
+                {"polygons", result.leaves.size()},
                 {"output", o.output}});
   }
 }

@@ -398,6 +398,7 @@ class Grower {
     out.internodes = out.tree.size();
     // Leaf clusters of the young shoots, as after one more cycle.
     const Scene s = light_scene(p_.years + 1);
+    const LightModel cluster_light(s);
     out.tree.add_attribute("translucency", 1.0);
     for (const auto& sh : shoots_) {
       if (sh.sphere < 0 || !sh.alive) continue;
@@ -414,6 +415,10 @@ class Grower {
       d.kind = OrganKind::kLeaf;
       const NodeId id = out.tree.add_node(new_id[sh.last], d);
       out.tree.attribute("translucency")[id] = c.translucency;
+      // Light at the cluster's centre (Pirk eq. 4.3 over the final clusters, its own left out),
+      // as plastic adaptation evaluates clusters: the shoots of the last cycle had no bud light.
+      out.tree.attribute("light")[id] =
+          cluster_light.evaluate(c.center, static_cast<std::uint32_t>(sh.sphere)).light;
     }
     out.clusters = out.cluster_spheres.size();
     out.shed = shed_;

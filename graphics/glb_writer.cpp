@@ -51,7 +51,7 @@ class GlbBuilder {
     using nlohmann::json;
     const std::size_t nv = mesh.vertex_count();
     if (mesh.empty() || nv == 0) return -1;
-    // Indices split by material in the order of kMaterials (bark, leaf, obstacle), which is
+    // Indices split by material in the order of kMaterials (bark, leaf, obstacle, crown), which is
     // also the order of the glTF materials.
     auto& indices = index_store_.emplace_back();
     for (Material m : kMaterials) {
@@ -169,13 +169,15 @@ class GlbBuilder {
     for (Material m : kMaterials) {
       const std::array<float, 3> c = material_color(m);
       const double roughness = m == Material::kLeaf ? 0.7 : m == Material::kObstacle ? 0.95 : 0.9;
+      const double alpha = m == Material::kCrown ? rounded(kCrownOpacity) : 1.0;
       nlohmann::json material = {
           {"name", material_name(m)},
           {"pbrMetallicRoughness",
-           {{"baseColorFactor", {rounded(c[0]), rounded(c[1]), rounded(c[2]), 1.0}},
+           {{"baseColorFactor", {rounded(c[0]), rounded(c[1]), rounded(c[2]), alpha}},
             {"metallicFactor", 0.0},
             {"roughnessFactor", roughness}}}};
-      if (m == Material::kLeaf) material["doubleSided"] = true;
+      if (m == Material::kLeaf || m == Material::kCrown) material["doubleSided"] = true;
+      if (m == Material::kCrown) material["alphaMode"] = "BLEND";  // crowns seen through
       out.push_back(std::move(material));
     }
     return out;

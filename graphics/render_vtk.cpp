@@ -327,13 +327,13 @@ std::array<double, 2> attribute_range(const TriangleMesh& mesh, std::span<const 
   return {lo, hi};
 }
 
-// The mesh coloured by options.color_by through a blue-to-red lookup table, with a scalar bar.
-void add_colored_actor(vtkRenderer* renderer, const TriangleMesh& mesh,
-                       const RenderOptions& options) {
+// The mesh coloured by options.color_by through a blue-to-red lookup table over `range`, with a
+// scalar bar when `bar` (and options.scalar_bar).
+vtkActor* add_colored_actor(vtkRenderer* renderer, const TriangleMesh& mesh,
+                            const RenderOptions& options, std::array<double, 2> range, bool bar) {
   vtkNew<vtkPolyData> poly = to_polydata(mesh, options.color_by);
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputData(poly);
-  std::array<double, 2> range = attribute_range(mesh, mesh.attribute(options.color_by));
   vtkNew<vtkLookupTable> lut;
   lut->SetHueRange(0.667, 0.0);  // blue (low) to red (high)
   lut->SetTableRange(range.data());
@@ -342,18 +342,62 @@ void add_colored_actor(vtkRenderer* renderer, const TriangleMesh& mesh,
   mapper->SetScalarModeToUsePointData();
   mapper->SetScalarRange(range.data());
   mapper->ScalarVisibilityOn();
-  add_surface_actor(renderer, mapper);
-  if (!options.scalar_bar) return;
-  vtkNew<vtkScalarBarActor> bar;
-  bar->SetLookupTable(lut);
-  bar->SetTitle(options.color_by.c_str());
-  bar->SetNumberOfLabels(5);
-  bar->SetMaximumWidthInPixels(std::max(60, options.width / 10));
-  bar->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
-  bar->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
-  bar->GetTitleTextProperty()->ShadowOff();
-  bar->GetLabelTextProperty()->ShadowOff();
-  renderer->AddActor2D(bar);
+  vtkActor* actor = add_surface_actor(renderer, mapper);
+  if (!bar || !options.scalar_bar) return actor;
+  vtkNew<vtkScalarBarActor> scalar_bar;
+  scalar_bar->SetLookupTable(lut);
+  scalar_bar->SetTitle(options.color_by.c_str());
+  scalar_bar->SetNumberOfLabels(5);
+  scalar_bar->SetMaximumWidthInPixels(std::max(60, options.width / 10));
+  scalar_bar->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
+  scalar_bar->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
+  scalar_bar->GetTitleTextProperty()->ShadowOff();
+  scalar_bar->GetLabelTextProperty()->ShadowOff();
+  renderer->AddActor2D(scalar_bar);
+  return actor;
+}
+
+// Crown volumes are seen through: the branches and the other crowns show behind them.
+void crown_look(vtkActor* actor) { actor->GetProperty()->SetOpacity(kCrownOpacity); }
+
+// Only the triangles of one material (vertices and attributes kept as they are).
+TriangleMesh only_material(const TriangleMesh& mesh, Material material) {
+  TriangleMesh out = mesh;
+  out.triangles.clear();
+  out.materials.clear();
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    if (mesh.materials[t] != material) continue;
+    out.triangles.push_back(mesh.triangles[t]);
+    out.materials.push_back(material);
+  }
+  return out;
+}
+
+// Plants (no obstacles) as an opaque actor and, for crown volumes, a translucent one; both on
+// one colour scale when coloured by an attribute.
+void add_plant_actors(vtkRenderer* renderer, const TriangleMesh& plants,
+                      const RenderOptions& options) {
+  const bool crowns = plants.triangle_count(Material::kCrown) > 0;
+  const TriangleMesh opaque = crowns ? without_material(plants, Material::kCrown) : TriangleMesh{};
+  const TriangleMesh& solid = crowns ? opaque : plants;
+  const TriangleMesh crown = crowns ? only_material(plants, Material::kCrown) : TriangleMesh{};
+  if (!options.color_by.empty()) {
+    const auto range = attribute_range(plants, plants.attribute(options.color_by));
+    if (!solid.empty()) add_colored_actor(renderer, solid, options, range, true);
+    if (crowns) crown_look(add_colored_actor(renderer, crown, options, range, solid.empty()));
+    return;
+  }
+  for (const TriangleMesh* part : {&solid, &crown}) {
+    if (part->empty()) continue;
+    vtkNew<vtkPolyData> poly = to_polydata(*part, "");
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(poly);
+    mapper->SetScalarModeToUseCellData();
+    mapper->SetColorModeToDirectScalars();
+    mapper->ScalarVisibilityOn();
+    vtkActor* actor = add_surface_actor(renderer, mapper);
+    if (part == &crown) crown_look(actor);
+  }
 }
 
 }  // namespace
@@ -378,17 +422,7 @@ Image render_mesh(const TriangleMesh& mesh, const RenderOptions& options) {
       plants = &without_obstacles;
     }
     if (plants->empty()) return;
-    if (!options.color_by.empty()) {
-      add_colored_actor(renderer, *plants, options);
-      return;
-    }
-    vtkNew<vtkPolyData> poly = to_polydata(*plants, "");
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(poly);
-    mapper->SetScalarModeToUseCellData();
-    mapper->SetColorModeToDirectScalars();
-    mapper->ScalarVisibilityOn();
-    add_surface_actor(renderer, mapper);
+    add_plant_actors(renderer, *plants, options);
   });
 }
 
@@ -431,6 +465,7 @@ Image render_scene(const InstancedMesh& scene, const RenderOptions& options) {
         vtkActor* actor = add_glyph_actor(renderer, instances, material_part(mesh, material),
                                           material_rgb(material));
         if (material == Material::kObstacle) stone_look(actor);
+        if (material == Material::kCrown) crown_look(actor);
       }
     }
   });

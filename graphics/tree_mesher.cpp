@@ -25,6 +25,7 @@ void validate(const MeshOptions& o) {
   if (!(o.leaf_width_ratio > 0.0)) throw ValueError("leaf_width_ratio must be > 0");
   if (o.leaf_bend_segments < 1) throw ValueError("leaf_bend_segments must be >= 1");
   if (std::isnan(o.max_birth_time)) throw ValueError("max_birth_time must be a number");
+  if (o.leaves) validate_foliage(o.foliage);
 }
 
 struct ChainPlan {
@@ -39,6 +40,7 @@ struct Plan {
   std::vector<NodeId> segments;
   std::vector<ChainPlan> chains;
   std::vector<NodeId> leaves;
+  std::vector<NodeId> clusters;  // leaf nodes of length 0 with a radius: foliage
   double reference_time = 0.0;
   MeshCounts counts;
 };
@@ -148,14 +150,21 @@ Plan make_plan(const TreeGraph& tree, const MeshOptions& options) {
     Eigen::Vector3d dir;
     double length = 0.0;
     for (NodeId id = 0; id < n; ++id) {
-      if (kept[id] && tree.kind(id) == OrganKind::kLeaf && leaf_axis(tree, id, dir, length)) {
+      if (!kept[id] || tree.kind(id) != OrganKind::kLeaf) continue;
+      if (leaf_axis(tree, id, dir, length)) {
         plan.leaves.push_back(id);
+      } else if (tree.radius(id) > 0.0) {
+        plan.clusters.push_back(id);
       }
     }
     const auto segs = static_cast<std::size_t>(leaf_segs);
+    const FoliageCounts per_cluster = cluster_counts(options.foliage);
     plan.counts.leaves = plan.leaves.size();
-    plan.counts.vertices += plan.leaves.size() * 2 * (segs + 1);
-    plan.counts.triangles += plan.leaves.size() * 2 * segs;
+    plan.counts.clusters = plan.clusters.size();
+    plan.counts.vertices +=
+        plan.leaves.size() * 2 * (segs + 1) + plan.clusters.size() * per_cluster.vertices;
+    plan.counts.triangles +=
+        plan.leaves.size() * 2 * segs + plan.clusters.size() * per_cluster.triangles;
   }
   if (plan.counts.vertices > std::numeric_limits<std::uint32_t>::max()) {
     throw ValueError("mesh would have " + std::to_string(plan.counts.vertices) +
@@ -237,9 +246,8 @@ int sides_for_radius(double radius_m, const MeshOptions& options, double distanc
 MeshCounts count_mesh(const TreeGraph& tree, const MeshOptions& options) {
   if (options.junctions == JunctionMode::kContinuous) {
     const TriangleMesh mesh = mesh_tree_continuous(tree, options);
-    return {mesh.vertex_count(), mesh.triangle_count(), 0,
-            mesh.triangle_count(Material::kLeaf) /
-                (2 * static_cast<std::size_t>(leaf_segments(options)))};
+    const MeshCounts organs = make_plan(tree, options).counts;
+    return {mesh.vertex_count(), mesh.triangle_count(), 0, organs.leaves, organs.clusters};
   }
   return make_plan(tree, options).counts;
 }
@@ -398,6 +406,12 @@ TriangleMesh mesh_tree(const TreeGraph& tree, const MeshOptions& options) {
         tri[t++] = {a, c, d2};
       }
     }
+  }
+  std::mt19937_64 rng(options.foliage_seed);
+  for (NodeId id : plan.clusters) {
+    const std::uint32_t first = v;
+    write_cluster(tree.start(id), tree.radius(id), options.foliage, rng, mesh, v, t);
+    attributes.fill(id, first, v - first);
   }
   return mesh;
 }

@@ -1,14 +1,18 @@
 #pragma once
 // Meshing a TreeGraph: every chain of internodes becomes one generalized cylinder (a tube of
 // rings swept along the chain with parallel transport frames, Pirk 6.1.2), closed by a cap at
-// each end; leaf nodes become quads (optionally bent) placed on their metamer. Node columns and
-// user attributes are carried to the vertices as named float attributes.
+// each end; leaf nodes become quads (optionally bent) placed on their metamer, and leaf clusters
+// (leaf nodes of length 0 and radius > 0, as grown and adapted trees keep them) a cloud of leaves
+// or a crown volume (graphics/foliage.hpp). Node columns and user attributes are carried to the
+// vertices as named float attributes.
 #include <Eigen/Core>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <optional>
 
 #include "fspm/tree_graph.hpp"
+#include "graphics/foliage.hpp"
 #include "graphics/triangle_mesh.hpp"
 
 namespace fspm::graphics {
@@ -49,6 +53,10 @@ struct MeshOptions {
   // Droop of the blade tip as a fraction of its length (0 = flat quad).
   double leaf_bend = 0.0;
   int leaf_bend_segments = 4;
+  // Leaf clusters (with leaves on): how they are drawn, and the seed of the generator placing
+  // their leaves (same seed, same mesh).
+  FoliageOptions foliage;
+  std::uint64_t foliage_seed = 1;
 
   // Growth sequences: nodes born after this time (and their subtrees) are left out, and the
   // "age" attribute is measured from it. Infinity = keep all, age measured from the latest birth.
@@ -65,7 +73,8 @@ struct MeshCounts {
   std::size_t vertices = 0;
   std::size_t triangles = 0;
   std::size_t tubes = 0;
-  std::size_t leaves = 0;
+  std::size_t leaves = 0;    // leaf nodes drawn as quads
+  std::size_t clusters = 0;  // leaf clusters drawn as foliage
 };
 
 // Ring resolution for a radius at a distance from the camera (0 without a camera).

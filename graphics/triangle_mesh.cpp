@@ -12,6 +12,8 @@ std::string_view material_name(Material material) {
       return "leaf";
     case Material::kObstacle:
       return "obstacle";
+    case Material::kCrown:
+      return "crown";
     case Material::kBark:
       break;
   }
@@ -24,6 +26,8 @@ std::array<float, 3> material_color(Material material) {
       return {0.25f, 0.55f, 0.15f};
     case Material::kObstacle:
       return {0.62f, 0.61f, 0.58f};
+    case Material::kCrown:
+      return {0.35f, 0.62f, 0.25f};
     case Material::kBark:
       break;
   }
@@ -33,6 +37,7 @@ std::array<float, 3> material_color(Material material) {
 Material material_from_index(int index) {
   if (index == static_cast<int>(Material::kLeaf)) return Material::kLeaf;
   if (index == static_cast<int>(Material::kObstacle)) return Material::kObstacle;
+  if (index == static_cast<int>(Material::kCrown)) return Material::kCrown;
   return Material::kBark;
 }
 

@@ -2,8 +2,8 @@
 // TriangleMesh: the indexed triangle soup every exporter and renderer consumes. Positions,
 // normals and texture coordinates are per vertex; named float attributes (age, order, light,
 // pruned, ...) are per vertex too so colouring survives interpolation in any viewer. Each
-// triangle carries a material (bark, leaf or obstacle: walls and boxes of a growth scene) so
-// OBJ/MTL and glTF can split them.
+// triangle carries a material (bark, leaf, crown: the translucent volume of a leaf cluster, or
+// obstacle: walls and boxes of a growth scene) so OBJ/MTL and glTF can split them.
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
@@ -14,16 +14,19 @@
 
 namespace fspm::graphics {
 
-enum class Material : std::uint8_t { kBark = 0, kLeaf = 1, kObstacle = 2 };
+enum class Material : std::uint8_t { kBark = 0, kLeaf = 1, kObstacle = 2, kCrown = 3 };
 
-inline constexpr std::array<Material, 3> kMaterials = {Material::kBark, Material::kLeaf,
-                                                       Material::kObstacle};
+inline constexpr std::array<Material, 4> kMaterials = {Material::kBark, Material::kLeaf,
+                                                       Material::kObstacle, Material::kCrown};
 
-// "bark", "leaf", "obstacle".
+// Opacity of the crown material (leaf-cluster volumes seen through); the others are opaque.
+inline constexpr float kCrownOpacity = 0.35f;
+
+// "bark", "leaf", "obstacle", "crown".
 std::string_view material_name(Material material);
 
 // The material's diffuse colour, linear RGB in [0, 1], shared by every renderer and exporter:
-// brown bark, green leaves, neutral grey stone for obstacles.
+// brown bark, green leaves, neutral grey stone for obstacles, a lighter green for crowns.
 std::array<float, 3> material_color(Material material);
 
 // Material from the byte stored in PLY and VTP files; unknown values are bark.

@@ -236,10 +236,11 @@ GpuMesh upload(const TriangleMesh& mesh, const std::vector<glm::mat4>& models,
     for (std::size_t i = 0; i < colors.size(); ++i)
       colors[i] = colormap((a[i] + value_offset - value_lo) / span);
   }
-  // Leaves in their colour unless coloured by an attribute; obstacles always in stone.
+  // Leaves and crowns in their colour unless coloured by an attribute; obstacles always in stone.
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
     const Material m = mesh.materials[t];
-    if (m == Material::kBark || (m == Material::kLeaf && !o.color_by.empty())) continue;
+    const bool foliage = m == Material::kLeaf || m == Material::kCrown;
+    if (m == Material::kBark || (foliage && !o.color_by.empty())) continue;
     for (auto i : mesh.triangles[t]) colors[i] = rgb(m);
   }
   for (std::size_t i = 0; i < mesh.vertex_count(); ++i) {

@@ -70,6 +70,17 @@ void bind_mesh(py::module_& m) {
         }
       },
       "'separate' (one closed tube per chain) or 'continuous' (Reynolds)");
+  // Foliage of leaf clusters is a name too, like --foliage.
+  mo.def_property(
+      "foliage",
+      [](const gr::MeshOptions& o) {
+        return o.foliage.mode == gr::FoliageMode::kVolumes ? "volumes" : "leaves";
+      },
+      [](gr::MeshOptions& o, const std::string& name) {
+        o.foliage.mode = gr::foliage_mode_from_name(name);
+      },
+      "Leaf clusters (with leaves=True): 'leaves' (a cloud of leaves) or 'volumes' (translucent "
+      "crown spheres)");
   Fields<gr::MeshOptions>(mo)
       .add("reynolds_width", &gr::MeshOptions::reynolds_width)
       .add("edge_length_m", &gr::MeshOptions::edge_length_m,
@@ -86,7 +97,10 @@ void bind_mesh(py::module_& m) {
       .add("leaf_bend", &gr::MeshOptions::leaf_bend)
       .add("leaf_bend_segments", &gr::MeshOptions::leaf_bend_segments)
       .add("max_birth_time", &gr::MeshOptions::max_birth_time)
+      .add("foliage_seed", &gr::MeshOptions::foliage_seed,
+           "Seed of the leaf placement in clusters (same seed, same mesh)")
       .existing("junctions")
+      .existing("foliage")
       .finish();
 
   using TM = gr::TriangleMesh;
@@ -100,9 +114,10 @@ void bind_mesh(py::module_& m) {
               if (*material == gr::material_name(m)) return mesh.triangle_count(m);
             }
             throw ValueError("unknown material '" + *material +
-                             "' (expected bark, leaf or obstacle)");
+                             "' (expected bark, leaf, obstacle or crown)");
           },
-          py::arg("material") = py::none(), "Triangles, or those of 'bark', 'leaf' or 'obstacle'")
+          py::arg("material") = py::none(),
+          "Triangles, or those of 'bark', 'leaf', 'obstacle' or 'crown'")
       .def_property_readonly(
           "positions",
           [](py::object self) {
@@ -174,10 +189,12 @@ void bind_mesh(py::module_& m) {
         d["triangles"] = c.triangles;
         d["tubes"] = c.tubes;
         d["leaves"] = c.leaves;
+        d["clusters"] = c.clusters;
         return d;
       },
       py::arg("tree"), py::arg("options") = py::none(),
-      "What mesh_tree would produce (vertices, triangles, tubes, leaves) without building it");
+      "What mesh_tree would produce (vertices, triangles, tubes, leaves, clusters) without "
+      "building it");
   m.def(
       "sides_for_radius",
       [](double radius, std::optional<gr::MeshOptions> options, double distance) {

@@ -58,6 +58,26 @@ def test_forked_tree_and_counts():
     assert order.dtype == np.float32 and set(np.unique(order)) == {0.0, 1.0}
 
 
+def test_leaf_clusters_become_foliage():
+    # Grown trees keep their leaves as clusters (leaf nodes of length 0): with leaves=True each
+    # is a cloud of 32 leaves (4 vertices, 2 triangles each) or a crown sphere of 8 x 12 cells
+    # (9 * 13 vertices, 2 * 12 * 7 triangles).
+    grown = fspm.grow_tree(fspm.GrowthParams(preset="A", years=5, seed=2))
+    tree = grown.tree
+    bare = fspm.mesh_tree(tree)
+    cloud = fspm.mesh_tree(tree, leaves=True, foliage_seed=5)
+    assert cloud.triangle_count("leaf") == 64 * grown.clusters > 0
+    assert cloud.vertex_count == bare.vertex_count + 128 * grown.clusters
+    assert fspm.count_mesh(tree, leaves=True)["clusters"] == grown.clusters
+    np.testing.assert_array_equal(
+        fspm.mesh_tree(tree, leaves=True, foliage_seed=5).positions, cloud.positions)
+    volumes = fspm.mesh_tree(tree, leaves=True, foliage="volumes")
+    assert volumes.triangle_count("crown") == 168 * grown.clusters
+    assert volumes.vertex_count == bare.vertex_count + 117 * grown.clusters
+    with pytest.raises(fspm.ParameterError, match="volumes"):
+        fspm.MeshOptions(foliage="fog")
+
+
 def test_mesh_views_keep_the_mesh_alive():
     mesh = fspm.mesh_tree(chain_tree(2, 0.01))
     positions = mesh.positions

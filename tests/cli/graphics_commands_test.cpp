@@ -98,6 +98,63 @@ TEST(GraphicsCli, RenderPngAndUnknownAttribute) {
   EXPECT_EQ(r.exit_code, 1);
 }
 
+// Leaf clusters of a grown tree (leaf nodes of length 0) become foliage with --leaves: 32 quads
+// (64 triangles) per cluster as leaves, a sphere of 8 x 12 cells (168 triangles) as volumes.
+TEST(GraphicsCli, GrownTreeFoliageAndLeaflessWarning) {
+  const auto dir = scratch_dir("foliage");
+  const std::string tree = (dir / "g.tree").string();
+  ASSERT_EQ(run_fspm("grow --preset A --years 6 -o " + tree).exit_code, 0);
+  const auto info = run_fspm("tree info " + tree + " --json");
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  const std::size_t clusters = nlohmann::json::parse(info.out)["leaves"].get<std::size_t>();
+  ASSERT_GT(clusters, 0u);
+  auto triangles = [&](const std::string& flags) {
+    const auto r =
+        run_fspm("mesh " + tree + " -o " + (dir / "g.ply").string() + " --json " + flags);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return nlohmann::json::parse(r.out)["triangles"].get<std::size_t>();
+  };
+  const std::size_t bark = triangles("");
+  EXPECT_EQ(triangles("--leaves"), bark + 64 * clusters);
+  EXPECT_EQ(triangles("--leaves --foliage volumes"), bark + 168 * clusters);
+  auto r = run_fspm("mesh " + tree + " -o " + (dir / "g.ply").string() + " --leaves --foliage fog");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("volumes"), std::string::npos) << r.err;
+
+  // A tree without leaves: --leaves says so in one line instead of drawing nothing quietly.
+  testing::write_text(dir / "bare.l", "Axiom: FF\n");
+  ASSERT_EQ(run_fspm("lsystem interpret " + (dir / "bare.l").string() + " -o " +
+                     (dir / "bare.tree").string())
+                .exit_code,
+            0);
+  r = run_fspm("mesh " + (dir / "bare.tree").string() + " -o " + (dir / "b.ply").string() +
+               " --leaves");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("no leaves to draw"), std::string::npos) << r.err;
+  r = run_fspm("mesh " + tree + " -o " + (dir / "g.ply").string() + " --leaves");
+  EXPECT_EQ(r.err.find("no leaves to draw"), std::string::npos) << r.err;
+}
+
+// L-system leaves, polygons and predefined surfaces alike, are counted and meshed.
+TEST(GraphicsCli, LsystemLeavesAreCountedAndDrawn) {
+  const auto dir = scratch_dir("lsystem_leaves");
+  testing::write_text(dir / "leafy.l", "Axiom: F[~l(0.3)]F[{.f(0.2)+(90)f(0.2)+(90)f(0.2).}]F\n");
+  const std::string tree = (dir / "leafy.tree").string();
+  auto r = run_fspm("lsystem interpret " + (dir / "leafy.l").string() + " -o " + tree + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["leaves"], 2);
+  EXPECT_EQ(j["polygons"], 1);
+  r = run_fspm("tree info " + tree + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["leaves"], 2);
+  // Each leaf is one flat quad: 2 triangles.
+  r = run_fspm("mesh " + tree + " -o " + (dir / "l.ply").string() + " --json");
+  const std::size_t bare = nlohmann::json::parse(r.out)["triangles"].get<std::size_t>();
+  r = run_fspm("mesh " + tree + " -o " + (dir / "l.ply").string() + " --json --leaves");
+  EXPECT_EQ(nlohmann::json::parse(r.out)["triangles"].get<std::size_t>(), bare + 4);
+}
+
 TEST(GraphicsCli, ViewerScreenshot) {
   const auto dir = scratch_dir("view");
   const std::string tree = write_small_tree(dir);

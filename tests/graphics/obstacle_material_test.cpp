@@ -91,14 +91,19 @@ TEST_F(ObstacleMaterial, PlyStoresMaterialTwo) {
   EXPECT_EQ(data[data.size() - 29], 1);  // the last leaf triangle before them
 }
 
-TEST_F(ObstacleMaterial, GlbHasThreeMaterials) {
+TEST_F(ObstacleMaterial, GlbHasOneMaterialPerKind) {
   write_glb(mesh_, (dir_ / "m.glb").string());
   const std::string data = slurp(dir_ / "m.glb");
   std::uint32_t json_len = 0;
   std::memcpy(&json_len, data.data() + 12, 4);
   const auto doc = nlohmann::json::parse(data.substr(20, json_len));
-  ASSERT_EQ(doc["materials"].size(), 3u);
+  ASSERT_EQ(doc["materials"].size(), 4u);
   EXPECT_EQ(doc["materials"][2]["name"], "obstacle");
+  // Leaf-cluster crowns are seen through: blended, alpha the crown opacity.
+  EXPECT_EQ(doc["materials"][3]["name"], "crown");
+  EXPECT_EQ(doc["materials"][3]["alphaMode"], "BLEND");
+  EXPECT_NEAR(doc["materials"][3]["pbrMetallicRoughness"]["baseColorFactor"][3].get<double>(),
+              kCrownOpacity, 1e-3);
   const auto& prims = doc["meshes"][0]["primitives"];
   ASSERT_EQ(prims.size(), 3u);
   EXPECT_EQ(prims[2]["material"], 2);
