@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -66,6 +67,36 @@ TEST(GrowthModel, StructureIsConsistent) {
   }
   EXPECT_EQ(t.birth_time(0), 0.0);
   EXPECT_NEAR(r.height_m, summarize(t).height_m, 1e-9);
+}
+
+// Each leaf cluster carries the light at its centre, the other final clusters shading it:
+// against brute-force ray casting over the sky's directions (no shadow volumes, no closed form),
+// within the error of the growth model's significance cutoff.
+TEST(GrowthModel, ClustersCarryTheLightAtTheirCentres) {
+  GrowthParams p = growth_preset("A");
+  p.years = 8;
+  const GrowthResult r = grow_tree(p);
+  const TreeGraph& t = r.tree;
+  ASSERT_GT(r.clusters, 10u);
+  const auto light = t.attribute("light");
+  std::size_t k = 0;
+  double lo = 1.0, hi = 0.0;
+  for (NodeId i = 0; i < t.size(); ++i) {
+    if (t.kind(i) != OrganKind::kLeaf) continue;
+    ASSERT_LT(k, r.cluster_spheres.size());
+    Scene s;
+    s.sky.directions = p.light_directions;
+    for (std::size_t j = 0; j < r.cluster_spheres.size(); ++j) {
+      if (j != k) s.spheres.push_back(r.cluster_spheres[j]);
+    }
+    const double expected = LightModel(s).evaluate_brute_force(t.start(i)).light;
+    EXPECT_NEAR(light[i], expected, 0.02) << "cluster " << k;
+    lo = std::min(lo, light[i]);
+    hi = std::max(hi, light[i]);
+    ++k;
+  }
+  EXPECT_EQ(k, r.clusters);
+  EXPECT_GT(hi - lo, 0.05);  // the crown shades some clusters more than others
 }
 
 TEST(GrowthModel, PruningFactorSheds) {
