@@ -86,6 +86,8 @@ class Engine {
   void aggregate(TreeRun& r);
   void bend(TreeRun& r, int level, int step);
   void prune(TreeRun& r, int level);
+  void prune_subtree(TreeRun& r, NodeId s);
+  void prune_blocked(TreeRun& r, int step);
   void mark_dirty(std::uint32_t c);
   void check_moved();
   void refresh();
@@ -125,6 +127,7 @@ class Engine {
   // Shadow-grid light (ClusterLightModel::kShadowGrid): every cluster's buds, as analysed and as
   // moved, refilled into the grid after every step that moved or pruned something.
   std::unique_ptr<ClusterGridLight> grid_;
+  bool has_solids_ = false;  // the scene has a solid box, sphere or mesh
   std::vector<Eigen::Vector3d> buds0_, buds_;
   std::vector<std::uint32_t> bud_start_, bud_cluster_;
   std::uint64_t grid_epoch_ = ~std::uint64_t{0};
@@ -180,6 +183,9 @@ Engine::Engine(const std::vector<const TreeGraph*>& trees,
   eval_all_path_.assign(nc, 0.0);
   check_.assign(nc, 0);
   field_.set_obstacles(scene);
+  for (const Box& b : scene.boxes) has_solids_ = has_solids_ || b.solid;
+  for (const Sphere& b : scene.spheres) has_solids_ = has_solids_ || b.solid;
+  for (const TriangleMesh& m : scene.meshes) has_solids_ = has_solids_ || m.solid;
   if (runs_.front().a->params.light_model == ClusterLightModel::kShadowGrid) {
     for (const TreeRun& r : runs_) {
       if (r.a->params.light_model != ClusterLightModel::kShadowGrid) {
@@ -467,17 +473,34 @@ void Engine::prune(TreeRun& r, int level) {
     if (s == 0 || !r.lateral[s] || r.pruned[s]) continue;
     if (a.age[s] > level || r.length_below[s] <= 0.0) continue;
     if (r.zeta[s] / r.length_below[s] >= scale * a.min_pruning_factor[s]) continue;
-    for (std::uint32_t k = r.pre_pos[s]; k < r.pre_pos[s] + r.pre_size[s]; ++k) {
-      const NodeId m = r.pre[k];
-      r.pruned[m] = 1;
-      ++epoch_;
-      for (std::uint32_t j = r.cluster_start[m]; j < r.cluster_start[m + 1]; ++j) {
-        const std::uint32_t gc = r.first_cluster + r.cluster_items[j];
-        if (!field_.alive_[gc]) continue;
-        field_.alive_[gc] = 0;
-        vanished_.push_back(gc);
-      }
+    prune_subtree(r, s);
+  }
+}
+
+void Engine::prune_subtree(TreeRun& r, NodeId s) {
+  for (std::uint32_t k = r.pre_pos[s]; k < r.pre_pos[s] + r.pre_size[s]; ++k) {
+    const NodeId m = r.pre[k];
+    if (r.pruned[m]) continue;
+    r.pruned[m] = 1;
+    ++epoch_;
+    for (std::uint32_t j = r.cluster_start[m]; j < r.cluster_start[m + 1]; ++j) {
+      const std::uint32_t gc = r.first_cluster + r.cluster_items[j];
+      if (!field_.alive_[gc]) continue;
+      field_.alive_[gc] = 0;
+      vanished_.push_back(gc);
     }
+  }
+}
+
+// A branch cannot pass through a solid obstacle: a skeleton segment that enters one where it
+// stands now (at the first step: as grown; later: after it moved) is pruned with its subtree.
+// Clusters that enter a solid are clipped or pushed out at the end (Pirk Fig. 4.6).
+void Engine::prune_blocked(TreeRun& r, int step) {
+  if (!has_solids_) return;
+  const TreeGraph& t = *r.tree;
+  for (const NodeId m : r.skeleton) {
+    if (m == 0 || r.pruned[m] || (step > r.first_step && r.stamp[m] != step)) continue;
+    if (scene_.segment_blocked(r.F[m](t.start(m)), r.F[m](t.end(m)))) prune_subtree(r, m);
   }
 }
 
@@ -623,6 +646,9 @@ std::vector<AdaptationResult> Engine::run() {
       }
       aggregate(r);
       bend(r, level, step);
+    }
+    for (TreeRun& r : runs_) {
+      if (step >= r.first_step) prune_blocked(r, step);
     }
     update_light();
     for (TreeRun& r : runs_) {
