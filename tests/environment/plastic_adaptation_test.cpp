@@ -334,7 +334,16 @@ TEST(PlasticAdaptation, EveryTypeLeansAwayFromTheWallAndPrunesItsSide) {
     AnalysisParams ap;
     ap.phototropism = p.phototropism;
     ap.gravitropism = p.gravitropism;
-    const AdaptationResult r = adapt_tree(open.tree, analyze_tree(open.tree, ap), wall);
+    const TreeAnalysis a = analyze_tree(open.tree, ap);
+    const AdaptationResult r = adapt_tree(open.tree, a, wall);
+    // No branch of the skeleton passes through the wall.
+    const auto pruned = r.tree.attribute("pruned");
+    std::size_t through = 0;
+    for (NodeId i = 1; i < r.tree.size(); ++i) {
+      through +=
+          a.skeleton[i] && pruned[i] == 0.0 && wall.segment_blocked(r.tree.start(i), r.tree.end(i));
+    }
+    EXPECT_EQ(through, 0u) << type;
     std::printf("type %s: tips shift x %+.2f m, pruned %zu, pruned centroid x %+.2f (tree %+.2f)\n",
                 type, r.mean_tip_shift.x(), r.pruned_nodes, r.pruned_centroid.x(),
                 r.internode_centroid.x());
