@@ -17,8 +17,9 @@ using testing::scratch_dir;
 TEST(AdaptCli, EmptySceneKeepsTheTreeAndAWallBendsItAway) {
   const auto dir = scratch_dir("adapt");
   std::ofstream(dir / "empty.json") << R"({"occluders": []})";
+  // 1 m east: the wall cuts through the crown, whose branches there are pruned.
   std::ofstream(dir / "wall.json")
-      << R"({"occluders": [{"type": "wall", "from": [1.5, -20], "to": [1.5, 20], "height": 20}]})";
+      << R"({"occluders": [{"type": "wall", "from": [1.0, -20], "to": [1.0, 20], "height": 20}]})";
   const auto tree = (dir / "a.tree").string();
   ASSERT_EQ(run_fspm("grow --preset A --years 10 -o " + tree).exit_code, 0);
 
@@ -120,6 +121,36 @@ TEST(AdaptCli, BadSceneIsAUserError) {
                           (dir / "x.tree").string());
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("missing.json"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace fspm
+
+namespace fspm {
+namespace {
+
+using testing::run_fspm;
+using testing::scratch_dir;
+
+TEST(AdaptCli, LightModelAndPruningRuleAreChosenOnTheCommandLine) {
+  const auto dir = scratch_dir("adapt_models");
+  std::ofstream(dir / "wall.json")
+      << R"({"occluders": [{"type": "wall", "from": [1.5, -20], "to": [1.5, 20], "height": 20}]})";
+  const auto tree = (dir / "a.tree").string();
+  ASSERT_EQ(run_fspm("grow --preset A --years 10 -o " + tree).exit_code, 0);
+  const std::string base =
+      "adapt " + tree + " --scene " + (dir / "wall.json").string() + " --json -o ";
+  const auto grid = run_fspm(base + (dir / "g.tree").string() + " --light-model shadow_grid");
+  ASSERT_EQ(grid.exit_code, 0) << grid.err;
+  const auto jg = nlohmann::json::parse(grid.out);
+  EXPECT_LT(jg["mean_tip_shift"][0].get<double>(), 0.0);
+  ASSERT_EQ(jg["pruned_centroid"].size(), 3u);
+  const auto absolute = run_fspm(base + (dir / "a2.tree").string() + " --absolute-pruning");
+  ASSERT_EQ(absolute.exit_code, 0) << absolute.err;
+  const auto bad = run_fspm(base + (dir / "b.tree").string() + " --light-model sunny");
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.err.find("expected sky or shadow_grid"), std::string::npos) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "b.tree"));
 }
 
 }  // namespace
