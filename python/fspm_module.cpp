@@ -138,26 +138,41 @@ fspm::TreeGraph tree_from_arrays(
   return t;
 }
 
+// A new exception class fspm._fspm.NAME deriving from every class in `bases`, added to the module;
+// kept alive for the interpreter's lifetime.
+PyObject* new_exception(py::module_& m, const char* name, std::initializer_list<PyObject*> bases) {
+  py::tuple base_tuple(bases.size());
+  std::size_t k = 0;
+  for (PyObject* b : bases) base_tuple[k++] = py::reinterpret_borrow<py::object>(b);
+  const std::string full = std::string("fspm._fspm.") + name;
+  PyObject* type = PyErr_NewException(full.c_str(), base_tuple.ptr(), nullptr);
+  if (type == nullptr) throw py::error_already_set();
+  m.add_object(name, py::reinterpret_borrow<py::object>(type));
+  return type;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_fspm, m) {
   m.doc() = "fspm core bindings";
 
-  static py::exception<fspm::Error> error(m, "Error", PyExc_RuntimeError);
-  static py::exception<fspm::ParseError> parse_error(m, "ParseError", error.ptr());
-  static py::exception<fspm::IoError> io_error(m, "IoError", error.ptr());
-  static py::exception<fspm::ValueError> value_error(m, "ValueError_", error.ptr());
+  // Errors are fspm.Error and the matching built-in exception at once, so `except ValueError`
+  // and `except OSError` catch them as they would catch Python's own.
+  static PyObject* const error = new_exception(m, "Error", {PyExc_RuntimeError});
+  static PyObject* const parse_error = new_exception(m, "ParseError", {error, PyExc_ValueError});
+  static PyObject* const io_error = new_exception(m, "IoError", {error, PyExc_OSError});
+  static PyObject* const value_error = new_exception(m, "ValueError_", {error, PyExc_ValueError});
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const fspm::ParseError& e) {
-      PyErr_SetString(parse_error.ptr(), e.what());
+      PyErr_SetString(parse_error, e.what());
     } catch (const fspm::IoError& e) {
-      PyErr_SetString(io_error.ptr(), e.what());
+      PyErr_SetString(io_error, e.what());
     } catch (const fspm::ValueError& e) {
-      PyErr_SetString(value_error.ptr(), e.what());
+      PyErr_SetString(value_error, e.what());
     } catch (const fspm::Error& e) {
-      PyErr_SetString(error.ptr(), e.what());
+      PyErr_SetString(error, e.what());
     }
   });
 

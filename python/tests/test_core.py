@@ -37,6 +37,20 @@ def test_errors_are_python_exceptions_with_locations(tmp_path):
         fspm.read_tree(42)
 
 
+def test_errors_are_also_the_matching_builtin_exceptions(tmp_path):
+    # A parse error is a ValueError, a file error an OSError, a bad parameter a ValueError, and
+    # all of them fspm.Error.
+    with pytest.raises(ValueError):
+        fspm.parse_newick("(1,abc);")
+    with pytest.raises(OSError):
+        fspm.read_tree(str(tmp_path / "missing.tree"))
+    with pytest.raises(ValueError, match="expected sky or shadow_grid"):
+        fspm.AnalysisParams(light_model="sunny")
+    for exc in (fspm.ParseError, fspm.IoError, fspm.ParameterError):
+        assert issubclass(exc, fspm.Error)
+    assert issubclass(fspm.ParseError, ValueError) and issubclass(fspm.IoError, OSError)
+
+
 def test_write_and_read_every_format(tmp_path):
     t = fspm.parse_newick("((1,2)3,(4,(5,6)7)8)9;")
     for ext in ("tree", "treeb", "nwk"):
