@@ -23,6 +23,8 @@ int main(int argc, char** argv) {
   app.add_flag("-v,--verbose", verbose, "More log output on stderr (repeat for more)");
   app.add_flag("-q,--quiet", quiet, "Only warnings and errors on stderr");
   app.parse_complete_callback([&] { fspm::cli::set_verbosity(quiet ? 0 : (verbose > 0 ? 2 : 1)); });
+  // -q and -v are accepted after the subcommand too (subcommands created below inherit this).
+  app.fallthrough();
 
   fspm::cli::add_tree_commands(app);
   fspm::cli::add_environment_commands(app);

@@ -93,3 +93,23 @@ TEST(TreeCli, UsageErrorsExitOneAndHelpExitsZero) {
 
 }  // namespace
 }  // namespace fspm
+
+namespace fspm {
+namespace {
+
+TEST(GlobalOptions, QuietAndVerboseWorkBeforeAndAfterTheSubcommand) {
+  const auto dir = testing::scratch_dir("global_options");
+  const std::string tree = (dir / "a.tree").string();
+  const auto after = testing::run_fspm("grow --preset A --years 3 -o " + tree + " -q");
+  ASSERT_EQ(after.exit_code, 0) << after.err;
+  EXPECT_EQ(after.err.find("[info]"), std::string::npos) << after.err;
+  const auto before = testing::run_fspm("-q grow --preset A --years 3 -o " + tree);
+  ASSERT_EQ(before.exit_code, 0) << before.err;
+  EXPECT_EQ(before.err.find("[info]"), std::string::npos) << before.err;
+  const auto loud = testing::run_fspm("grow --preset A --years 3 -o " + tree);
+  EXPECT_NE(loud.err.find("[info]"), std::string::npos) << loud.err;
+  EXPECT_EQ(testing::run_fspm("grow --preset A --years 3 -o " + tree + " --bogus").exit_code, 1);
+}
+
+}  // namespace
+}  // namespace fspm
