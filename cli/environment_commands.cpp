@@ -39,6 +39,7 @@ struct GrowOptions {
   std::string format;
   int years = -1;
   std::int64_t seed = -1;
+  std::vector<std::string> settings;  // --set NAME=VALUE
   bool json = false;
 };
 
@@ -74,7 +75,7 @@ environment::GrowthParams grow_params(const GrowOptions& o) {
   }
   environment::GrowthParams params;
   if (o.preset.empty()) {
-    params = environment::read_growth_params(o.params);
+    params = environment::read_growth_params(o.params, o.settings);
   } else {
     const auto model = o.light_model.empty()
                            ? environment::GrowthParams{}.light_model
@@ -82,6 +83,14 @@ environment::GrowthParams grow_params(const GrowOptions& o) {
     const auto pairing = o.tropisms.empty() ? environment::TropismPairing::kText
                                             : environment::tropism_pairing_from_name(o.tropisms);
     params = environment::growth_preset(o.preset, model, pairing);
+    if (!o.settings.empty()) {
+      // The preset as a parameter file, the settings over it.
+      const std::string base = "preset = \"" + o.preset + "\"\nlight_model = \"" +
+                               std::string(environment::bud_light_model_name(model)) +
+                               "\"\npreset_tropisms = \"" +
+                               std::string(environment::tropism_pairing_name(pairing)) + "\"\n";
+      params = environment::parse_growth_params(base, "--preset", o.settings);
+    }
   }
   if (o.years >= 0) params.years = o.years;
   if (o.seed >= 0) params.seed = static_cast<std::uint64_t>(o.seed);
@@ -141,6 +150,9 @@ void add_environment_commands(CLI::App& app) {
   g->add_option("--scene", grow->scene, "Scene with obstacles and sky (JSON)");
   g->add_option("--years", grow->years, "Growth cycles (default: from the parameters)");
   g->add_option("--seed", grow->seed, "Random seed (default: from the parameters)");
+  g->add_option("--set", grow->settings,
+                "NAME=VALUE: any parameter of docs/environment.md over the preset or PARAMS "
+                "(repeatable), e.g. --set apical_control=0.6");
   g->add_option("-o,--output", grow->out, "Output tree file (.tree, .treeb, .nwk, .mtg)")
       ->required();
   g->add_option("--format", grow->format, "Output format (default: from the extension)");

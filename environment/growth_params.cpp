@@ -6,6 +6,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "fspm/error.hpp"
@@ -146,6 +147,33 @@ GrowthParams preset_from_table(const toml::table& table, const toml::node& prese
   }
 }
 
+// "key=value" as a one-key TOML table; a value that is not TOML (a bare word) is a string.
+toml::table override_table(const std::string& setting) {
+  const auto eq = setting.find('=');
+  const std::string key = setting.substr(0, eq);
+  if (eq == std::string::npos || key.empty() ||
+      key.find_first_not_of("abcdefghijklmnopqrstuvwxyz_0123456789") != std::string::npos) {
+    throw ValueError("--set " + setting.substr(0, 60) + ": expected NAME=VALUE");
+  }
+  const std::string value = setting.substr(eq + 1);
+  const std::string as_toml = key + " = " + value;
+  try {
+    return toml::parse(std::string_view(as_toml), std::string_view("--set"));
+  } catch (const toml::parse_error&) {
+    std::string quoted = "\"";
+    for (const char c : value) {
+      if (c == '"' || c == '\\') quoted += '\\';
+      quoted += c;
+    }
+    const std::string as_string = key + " = " + quoted + "\"";
+    try {
+      return toml::parse(std::string_view(as_string), std::string_view("--set"));
+    } catch (const toml::parse_error&) {
+      throw ValueError("--set " + setting.substr(0, 60) + ": expected NAME=VALUE");
+    }
+  }
+}
+
 }  // namespace
 
 void validate(const GrowthParams& p) {
@@ -187,7 +215,8 @@ void validate(const GrowthParams& p) {
   check(p.pipe_exponent >= 1 && p.pipe_exponent <= 4, "pipe_exponent", "a number in [1, 4]");
 }
 
-GrowthParams parse_growth_params(std::string_view text, const std::string& file_name) {
+GrowthParams parse_growth_params(std::string_view text, const std::string& file_name,
+                                 const std::vector<std::string>& overrides) {
   toml::table table;
   try {
     table = toml::parse(text, file_name);
@@ -195,6 +224,13 @@ GrowthParams parse_growth_params(std::string_view text, const std::string& file_
     throw ParseError("expected valid TOML (" + std::string(e.description()) + ")", file_name,
                      static_cast<int>(e.source().begin.line),
                      static_cast<int>(e.source().begin.column));
+  }
+  std::set<std::string> from_command_line;
+  for (const std::string& setting : overrides) {
+    for (auto&& [key, node] : override_table(setting)) {
+      from_command_line.insert(std::string(key.str()));
+      table.insert_or_assign(key, std::move(node));
+    }
   }
   GrowthParams p;
   if (auto preset = table["preset"]) {
@@ -303,13 +339,15 @@ GrowthParams parse_growth_params(std::string_view text, const std::string& file_
     const int column = static_cast<int>(node.source().begin.column);
     if (name == "preset" || name == "preset_tropisms") continue;
     const auto it = keys.find(name);
+    const bool set = from_command_line.count(name) > 0;
     if (it == keys.end()) {
-      throw ParseError("unknown parameter \"" + name +
-                           "\"; expected one of the keys in "
-                           "docs/environment.md",
-                       file_name, line, column);
+      const std::string what = "unknown parameter \"" + name.substr(0, 60) +
+                               "\"; expected one of the keys in docs/environment.md";
+      if (set) throw ValueError("--set " + what);
+      throw ParseError(what, file_name, line, column);
     }
     if (!it->second.first(node)) {
+      if (set) throw ValueError("--set " + name + ": expected " + it->second.second);
       throw ValueError(name + ": expected " + it->second.second, file_name, line, column);
     }
   }
@@ -321,12 +359,13 @@ GrowthParams parse_growth_params(std::string_view text, const std::string& file_
   return p;
 }
 
-GrowthParams read_growth_params(const std::string& path) {
+GrowthParams read_growth_params(const std::string& path,
+                                const std::vector<std::string>& overrides) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError("cannot open parameter file for reading", path);
   std::ostringstream text;
   text << in.rdbuf();
-  return parse_growth_params(text.str(), path);
+  return parse_growth_params(text.str(), path, overrides);
 }
 
 }  // namespace fspm::environment

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "environment/shadow_grid.hpp"
 #include "environment/space_colonization.hpp"
@@ -90,8 +91,12 @@ GrowthParams growth_preset(std::string_view name,
 // `light_model` and `preset_tropisms`), other keys override it.
 // Throws ParseError (bad TOML, unknown key) or ValueError (value out of range) naming file and
 // line.
-GrowthParams read_growth_params(const std::string& path);
-GrowthParams parse_growth_params(std::string_view text, const std::string& file_name = "<params>");
+GrowthParams read_growth_params(const std::string& path,
+                                const std::vector<std::string>& overrides = {});
+// `overrides` are "key=value" settings applied over the text's keys (the value in TOML syntax; a
+// bare word is taken as a string), as `fspm grow --set` gives them.
+GrowthParams parse_growth_params(std::string_view text, const std::string& file_name = "<params>",
+                                 const std::vector<std::string>& overrides = {});
 
 // Throws ValueError naming the parameter when one is out of range.
 void validate(const GrowthParams& p);

@@ -117,3 +117,35 @@ TEST(EnvironmentCli, GrowBadInput) {
 
 }  // namespace
 }  // namespace fspm
+
+namespace fspm {
+namespace {
+
+TEST(GrowCli, SetOverridesAnyParameterOverThePresetOrTheFile) {
+  const auto dir = testing::scratch_dir("grow_set");
+  const std::string out = (dir / "t.tree").string();
+  const auto plain = testing::run_fspm("grow --preset B --years 6 --json -o " + out);
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  const auto set = testing::run_fspm(
+      "grow --preset B --set years=6 --set apical_control=0.95 --set light_model=sky --json -o " +
+      out);
+  ASSERT_EQ(set.exit_code, 0) << set.err;
+  const auto jp = nlohmann::json::parse(plain.out), js = nlohmann::json::parse(set.out);
+  EXPECT_EQ(js["years"], 6);
+  EXPECT_EQ(js["light_model"], "sky");
+  EXPECT_NE(js["internodes"], jp["internodes"]);
+  // Over a file: the file's years replaced.
+  testing::write_text(dir / "p.toml", "preset = \"A\"\nyears = 4\n");
+  const auto file =
+      testing::run_fspm("grow " + (dir / "p.toml").string() + " --set years=2 --json -o " + out);
+  ASSERT_EQ(file.exit_code, 0) << file.err;
+  EXPECT_EQ(nlohmann::json::parse(file.out)["years"], 2);
+  const auto unknown = testing::run_fspm("grow --preset B --set apical_contrl=0.6 -o " + out);
+  EXPECT_EQ(unknown.exit_code, 1);
+  EXPECT_NE(unknown.err.find("apical_contrl"), std::string::npos) << unknown.err;
+  EXPECT_EQ(testing::run_fspm("grow --preset B --set apical_control=2 -o " + out).exit_code, 1);
+  EXPECT_EQ(testing::run_fspm("grow --preset B --set nonsense -o " + out).exit_code, 1);
+}
+
+}  // namespace
+}  // namespace fspm
