@@ -1,4 +1,5 @@
 // fspm tree info | convert: inspect and convert tree graph files.
+#include <spdlog/fmt/fmt.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <iostream>
@@ -46,6 +47,9 @@ nlohmann::json summary_json(const std::string& file, const TreeGraph& tree) {
                       {"max_depth", s.max_depth},
                       {"height", s.height_m},
                       {"total_length", s.total_length_m},
+                      {"crown_width", s.crown_width_m},
+                      {"crown_depth", s.crown_depth_m},
+                      {"branches_per_order", s.branches_per_order},
                       {"bbox_min", {s.bbox_min.x(), s.bbox_min.y(), s.bbox_min.z()}},
                       {"bbox_max", {s.bbox_max.x(), s.bbox_max.y(), s.bbox_max.z()}},
                       {"attributes", tree.attribute_names()}};
@@ -60,11 +64,16 @@ void run_info(const InfoOptions& o) {
     print_json(j);
     return;
   }
+  // Text for reading: lengths in metres to the centimetre, counts as they are.
   std::cout << o.file << '\n';
   for (const char* key : {"nodes", "internodes", "leaves", "flowers", "buds", "tips", "max_order",
-                          "max_depth", "height", "total_length", "pruned"}) {
+                          "max_depth", "pruned"}) {
     if (j.contains(key)) std::cout << "  " << key << ": " << j[key].dump() << '\n';
   }
+  for (const char* key : {"height", "total_length", "crown_width", "crown_depth"}) {
+    std::cout << "  " << key << ": " << fmt::format("{:.2f}", j[key].get<double>()) << " m\n";
+  }
+  std::cout << "  branches_per_order: " << j["branches_per_order"].dump() << '\n';
   std::cout << "  attributes: " << j["attributes"].dump() << '\n';
 }
 

@@ -1,56 +1,12 @@
 #include "experiments/metrics.hpp"
 
 #include <algorithm>
-#include <boost/geometry.hpp>
-#include <boost/geometry/geometries/point_xy.hpp>
-#include <boost/geometry/geometries/polygon.hpp>
 #include <cmath>
 #include <limits>
 
 #include "fspm/tree_summary.hpp"
 
 namespace fspm::experiments {
-namespace {
-
-namespace bg = boost::geometry;
-using Point2 = bg::model::d2::point_xy<double>;
-
-// Largest distance between two points of the ground projection: the diameter of its convex hull,
-// found by comparing every pair of hull vertices (hulls of trees have few vertices).
-double projection_diameter(const TreeGraph& tree) {
-  bg::model::multi_point<Point2> points;
-  points.reserve(tree.size() * 2);
-  for (NodeId n = 0; n < tree.size(); ++n) {
-    points.emplace_back(tree.start(n).x(), tree.start(n).y());
-    points.emplace_back(tree.end(n).x(), tree.end(n).y());
-  }
-  bg::model::polygon<Point2> hull;
-  bg::convex_hull(points, hull);
-  const auto& ring = hull.outer();
-  double best = 0.0;
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    for (std::size_t j = i + 1; j < ring.size(); ++j) {
-      best = std::max(best, bg::distance(ring[i], ring[j]));
-    }
-  }
-  return best;
-}
-
-// Crown base: the lowest start of a lateral (order >= 1) node or a leaf. The crown depth is the
-// vertical extent from there to the highest point of the tree.
-double crown_depth(const TreeGraph& tree) {
-  double base = std::numeric_limits<double>::infinity();
-  double top = -std::numeric_limits<double>::infinity();
-  for (NodeId n = 0; n < tree.size(); ++n) {
-    top = std::max({top, tree.start(n).z(), tree.end(n).z()});
-    if (tree.order(n) >= 1 || tree.kind(n) == OrganKind::kLeaf) {
-      base = std::min(base, std::min(tree.start(n).z(), tree.end(n).z()));
-    }
-  }
-  return std::isfinite(base) ? top - base : 0.0;
-}
-
-}  // namespace
 
 const std::vector<MetricInfo>& metric_catalog() {
   static const std::vector<MetricInfo> catalog = {
@@ -104,8 +60,8 @@ std::map<std::string, double> tree_metrics(const TreeGraph& tree) {
       {"tips", static_cast<double>(s.tips)},
       {"max_order", static_cast<double>(s.max_order)},
       {"height", s.height_m},
-      {"crown_width", tree.empty() ? 0.0 : projection_diameter(tree)},
-      {"crown_depth", tree.empty() ? 0.0 : crown_depth(tree)},
+      {"crown_width", s.crown_width_m},
+      {"crown_depth", s.crown_depth_m},
       {"total_length", s.total_length_m},
       {"leaf_area", leaf_area},
   };

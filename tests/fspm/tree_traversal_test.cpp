@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "fspm/tree_summary.hpp"
@@ -97,6 +98,10 @@ TEST(Summary, CountsAndExtentsOfSample) {
   EXPECT_DOUBLE_EQ(s.height_m, 4.0);
   EXPECT_DOUBLE_EQ(s.total_length_m, 6.0);
   EXPECT_DOUBLE_EQ(s.bbox_max.x(), 2.0);
+  // Ground projection: (0, 0), (1, 0), (2, 0), (0, 0.5); widest pair (2, 0)-(0, 0.5).
+  EXPECT_DOUBLE_EQ(s.crown_width_m, std::sqrt(4.25));
+  EXPECT_DOUBLE_EQ(s.crown_depth_m, 2.0);  // top 4 m, lowest lateral start 2 m
+  EXPECT_EQ(s.branches_per_order, (std::vector<std::size_t>{1, 1}));  // the leaf is no axis
 }
 
 }  // namespace
