@@ -148,8 +148,10 @@ void add_environment_commands(CLI::App& app) {
   g->add_option("--tropisms", grow->tropisms,
                 "With --preset: Pirk's tropism pairing, text (default) or appendix");
   g->add_option("--scene", grow->scene, "Scene with obstacles and sky (JSON)");
-  g->add_option("--years", grow->years, "Growth cycles (default: from the parameters)");
-  g->add_option("--seed", grow->seed, "Random seed (default: from the parameters)");
+  g->add_option("--years", grow->years, "Growth cycles (default: from the parameters)")
+      ->check(number_in(0, environment::kMaxYears));
+  g->add_option("--seed", grow->seed, "Random seed (default: from the parameters)")
+      ->check(number_in(0, kMaxSeed));
   g->add_option("--set", grow->settings,
                 "NAME=VALUE: any parameter of docs/environment.md over the preset or PARAMS "
                 "(repeatable), e.g. --set apical_control=0.6");

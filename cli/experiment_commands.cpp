@@ -401,7 +401,7 @@ void add_experiment_commands(CLI::App& app) {
   r->add_option("--time-limit", run->time_limit_s, "Seconds per run (overrides the file)");
   r->add_option("--replicates", run->replicates,
                 "Replicates per point (overrides the file; a quick, smaller version of a sweep)")
-      ->check(CLI::PositiveNumber);
+      ->check(number_in(1, 1e9));
   r->add_flag("--grid-order", run->grid_order,
               "Hand out runs in index order (default: the costliest first)");
   r->add_flag("--json", run->json, "Machine-readable JSON summary on stdout");

@@ -503,7 +503,7 @@ void add_graphics_commands(CLI::App& app) {
       ->delimiter(',');
   m->add_option("--edge-length", mesh->edge_length_m,
                 "Target ring edge length in m (ring resolution from radius)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number(1e6));
   m->add_option("--max-sides", mesh->max_sides, "Most sides of a ring")->check(CLI::Range(3, 256));
   m->add_option("--junctions", mesh->junctions,
                 "separate (a closed tube per chain) or continuous (Reynolds: one surface through "
@@ -539,10 +539,10 @@ void add_graphics_commands(CLI::App& app) {
       ->capture_default_str();
   r->add_flag("--no-ground", render->no_ground, "Leave out the ground plane");
   r->add_option("--edge-length", render->edge_length_m, "Target ring edge length in m")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number(1e6));
   r->add_option("--ortho-height", render->ortho_height_m,
                 "Parallel projection whose image height spans this many metres (a known scale)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number(1e6));
   r->add_option("--obstacles", render->obstacles,
                 "Growth scene file (.json, docs/environment.md) whose walls, boxes, spheres and "
                 "meshes near the tree are drawn in stone (long walls cut to the tree's "

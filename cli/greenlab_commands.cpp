@@ -17,6 +17,7 @@
 #include "fspm/atomic_file.hpp"
 #include "fspm/compressed_tree_graph.hpp"
 #include "fspm/error.hpp"
+#include "fspm/input_file.hpp"
 #include "fspm/tree_file.hpp"
 #include "greenlab/calibration.hpp"
 #include "greenlab/plant_params.hpp"
@@ -53,12 +54,7 @@ struct FitOptions {
 
 void run_simulate(const SimulateOptions& o) {
   greenlab::PlantParams params = greenlab::read_plant_params(o.params);
-  if (o.cycles >= 0) {
-    if (o.cycles > greenlab::kMaxCycles) {
-      throw ValueError("--cycles must be at most " + std::to_string(greenlab::kMaxCycles));
-    }
-    params.cycles = o.cycles;
-  }
+  if (o.cycles >= 0) params.cycles = o.cycles;
   if (o.seed >= 0) params.seed = static_cast<std::uint64_t>(o.seed);
   const auto t0 = std::chrono::steady_clock::now();
   const CompressedTreeGraph g = greenlab::simulate_compressed(params);
@@ -111,16 +107,13 @@ void run_reconstruct(const ReconstructOptions& o) {
 }
 
 void run_fit(const FitOptions& o) {
-  std::ifstream in(o.params, std::ios::binary);
-  if (!in) throw IoError("cannot open plant description", o.params);
-  std::ostringstream text;
-  text << in.rdbuf();
-  const greenlab::PlantParams params = greenlab::parse_plant_params(text.str(), o.params);
+  const std::string text = read_input_file(o.params);
+  const greenlab::PlantParams params = greenlab::parse_plant_params(text, o.params);
   const auto targets = greenlab::read_targets_csv(o.targets);
   greenlab::FitOptions fo;
   fo.max_iterations = o.max_iterations;
   const greenlab::FitResult fit = greenlab::fit_gl1(params, targets, {}, fo);
-  const std::string toml = greenlab::fitted_toml(text.str(), fit, o.params);
+  const std::string toml = greenlab::fitted_toml(text, fit, o.params);
   write_file_atomically(o.out, [&](std::ostream& out) { out << toml; });
   nlohmann::json parameters = nlohmann::json::array();
   for (std::size_t i = 0; i < fit.names.size(); ++i) {
@@ -157,8 +150,10 @@ void add_greenlab_commands(CLI::App& app) {
   CLI::App* s = gl->add_subcommand(
       "simulate", "Simulate a plant description into a compressed tree graph (.ctree)");
   s->add_option("PARAMS", sim->params, "Plant description (TOML)")->required();
-  s->add_option("--cycles", sim->cycles, "Growth cycles (default: plant.cycles)");
-  s->add_option("--seed", sim->seed, "Random seed for GL2 plants (default: plant.seed)");
+  s->add_option("--cycles", sim->cycles, "Growth cycles (default: plant.cycles)")
+      ->check(number_in(0, greenlab::kMaxCycles));
+  s->add_option("--seed", sim->seed, "Random seed for GL2 plants (default: plant.seed)")
+      ->check(number_in(0, kMaxSeed));
   s->add_option("-o,--output", sim->out, "Output .ctree file")->required();
   s->add_flag("--json", sim->json, "Machine-readable JSON on stdout");
   s->callback([sim] { run_simulate(*sim); });
@@ -167,7 +162,8 @@ void add_greenlab_commands(CLI::App& app) {
   CLI::App* r = gl->add_subcommand(
       "reconstruct", "Rebuild the explicit tree at any age from a compressed tree graph");
   r->add_option("PLANT", rec->graph, "Compressed tree graph (.ctree)")->required();
-  r->add_option("--age", rec->age, "Plant age in cycles (default: the simulated age)");
+  r->add_option("--age", rec->age, "Plant age in cycles (default: the simulated age)")
+      ->check(number_in(0, greenlab::kMaxCycles));
   r->add_option("-o,--output", rec->out, "Output tree file (.tree, .treeb, .nwk, .mtg)")
       ->required();
   r->add_option("--format", rec->format, "Output format (default: from the extension)");
@@ -183,7 +179,7 @@ void add_greenlab_commands(CLI::App& app) {
   f->add_option("TARGET", fit->targets, "Target data (CSV)")->required();
   f->add_option("-o,--output", fit->out, "Fitted plant description (TOML)")->required();
   f->add_option("--max-iterations", fit->max_iterations, "Solver iteration limit")
-      ->check(CLI::PositiveNumber);
+      ->check(number_in(1, 1e6));
   f->add_flag("--json", fit->json, "Machine-readable JSON on stdout");
   f->callback([fit] { run_fit(*fit); });
 }

@@ -55,12 +55,12 @@ lsystem::DeriveOptions derive_options(const LsystemOptions& o) {
 void add_common(CLI::App* cmd, LsystemOptions& o) {
   cmd->add_option("file", o.file, "L-system file (.l, cpfg syntax)")->required();
   cmd->add_option("--steps", o.steps, "Derivation steps (overrides 'derivation length:')")
-      ->check(CLI::NonNegativeNumber);
+      ->check(number_in(0, lsystem::kMaxDerivationLength));
   cmd->add_option("--seed", o.seed, "Seed of ran() and stochastic productions")
-      ->check(CLI::NonNegativeNumber);
+      ->check(number_in(0, kMaxSeed));
   cmd->add_option("--define", o.defines, "Override a #define: NAME=VALUE (repeatable)");
   cmd->add_option("--budget", o.budget, "Largest string allowed, in modules")
-      ->check(CLI::PositiveNumber);
+      ->check(number_in(1, 1e15));
 }
 
 void run_derive(const LsystemOptions& o) {

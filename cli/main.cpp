@@ -36,10 +36,14 @@ int main(int argc, char** argv) {
   fspm::cli::add_adapt_commands(app);
 
   try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 1;
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+      const int code = app.exit(e);  // --help and --version print on stdout
+      fspm::cli::finish_standard_output();
+      return code == 0 ? 0 : 1;
+    }
+    fspm::cli::finish_standard_output();
   } catch (const fspm::Error& e) {
     std::cerr << "fspm: error: " << e.what() << '\n';
     return 1;

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "fspm/error.hpp"
+#include "fspm/input_file.hpp"
 
 namespace fspm::environment {
 
@@ -180,7 +181,8 @@ void validate(const GrowthParams& p) {
   auto check = [](bool ok, const char* name, const char* expected) {
     if (!ok) throw ValueError(std::string(name) + ": expected " + expected);
   };
-  check(p.years >= 0 && p.years <= 1000, "years", "an integer in [0, 1000]");
+  check(p.years >= 0 && p.years <= kMaxYears, "years", "an integer in [0, 1000]");
+  static_assert(kMaxYears == 1000, "keep the message above in step");
   check(p.alpha > 0 && std::isfinite(p.alpha), "alpha", "a positive number");
   check(p.apical_control >= 0 && p.apical_control <= 1, "apical_control", "a number in [0, 1]");
   check(p.internode_length_m > 0 && std::isfinite(p.internode_length_m), "internode_length_m",
@@ -361,11 +363,7 @@ GrowthParams parse_growth_params(std::string_view text, const std::string& file_
 
 GrowthParams read_growth_params(const std::string& path,
                                 const std::vector<std::string>& overrides) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot open parameter file for reading", path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_growth_params(text.str(), path, overrides);
+  return parse_growth_params(read_input_file(path), path, overrides);
 }
 
 }  // namespace fspm::environment

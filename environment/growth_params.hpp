@@ -23,8 +23,10 @@ std::string_view bud_light_model_name(BudLightModel model);
 // The model of a name; throws ValueError naming the three for an unknown one.
 BudLightModel bud_light_model_from_name(std::string_view name);
 
+inline constexpr int kMaxYears = 1000;  // growth cycles a simulation may run
+
 struct GrowthParams {
-  int years = 20;          // growth cycles
+  int years = 20;          // growth cycles, at most kMaxYears
   std::uint64_t seed = 1;  // randomness only for small heading perturbations
   // Borchert-Honda allocation (Palubicki eq. for v_base = alpha * Q_base, apical control lambda).
   double alpha = 3.0;

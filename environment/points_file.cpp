@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "fspm/error.hpp"
+#include "fspm/input_file.hpp"
 
 namespace fspm::environment {
 namespace {
@@ -78,11 +79,7 @@ std::vector<Eigen::Vector3d> parse_points_csv(std::string_view text, const std::
 }
 
 std::vector<Eigen::Vector3d> read_points_csv(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot open points file for reading", path);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parse_points_csv(ss.str(), path);
+  return parse_points_csv(read_input_file(path), path);
 }
 
 void write_light_csv(std::ostream& out, std::span<const Eigen::Vector3d> points,

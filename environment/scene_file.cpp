@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "fspm/error.hpp"
+#include "fspm/input_file.hpp"
+#include "fspm/nesting_depth.hpp"
 
 namespace fspm::environment {
 namespace {
@@ -228,6 +230,7 @@ class Reader {
 }  // namespace
 
 Scene parse_scene_json(std::string_view text, const std::string& file_name) {
+  check_json_depth(text, file_name);
   json doc;
   try {
     doc = json::parse(text.begin(), text.end());
@@ -269,11 +272,7 @@ Scene parse_scene_json(std::string_view text, const std::string& file_name) {
 }
 
 Scene read_scene_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot open scene file for reading", path);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parse_scene_json(ss.str(), path);
+  return parse_scene_json(read_input_file(path), path);
 }
 
 }  // namespace fspm::environment

@@ -12,6 +12,7 @@
 
 #include "experiments/metrics.hpp"
 #include "fspm/error.hpp"
+#include "fspm/input_file.hpp"
 
 namespace fspm::experiments {
 namespace {
@@ -635,11 +636,7 @@ void override_replicates(Experiment& x, std::size_t replicates) {
 }
 
 Experiment read_experiment(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot read the experiment file", path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_experiment(text.str(), path);
+  return parse_experiment(read_input_file(path), path);
 }
 
 }  // namespace fspm::experiments

@@ -13,20 +13,13 @@
 #include "experiments/light_interception.hpp"
 #include "experiments/metrics.hpp"
 #include "experiments/scene_cache.hpp"
+#include "fspm/input_file.hpp"
 
 namespace fspm::experiments {
 namespace {
 
 namespace env = fspm::environment;
 using Clock = std::chrono::steady_clock;
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot read the growth parameter file", path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // The scene without its obstacles: the same sky and ground, so that set O differs from G only by
 // what the obstacles do.
@@ -40,7 +33,7 @@ env::Scene open_version(const env::Scene& scene) {
 class GrowModel final : public Model {
  public:
   GrowModel(const std::string& params_file, const std::string& scene_file, std::string base_dir)
-      : base_text_(params_file.empty() ? std::string() : read_text(params_file)),
+      : base_text_(params_file.empty() ? std::string() : read_input_file(params_file)),
         base_name_(params_file.empty() ? std::string("<grow parameters>") : params_file),
         default_scene_(scene_file),
         scenes_(std::move(base_dir)) {

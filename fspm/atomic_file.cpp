@@ -1,12 +1,21 @@
 #include "fspm/atomic_file.hpp"
 
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <system_error>
 
 #include "fspm/error.hpp"
 
 namespace fspm {
+namespace {
+
+std::string system_reason(int error) {
+  return error != 0 ? std::generic_category().message(error) : std::string("write failed");
+}
+
+}  // namespace
 
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,
                            bool binary) {
@@ -28,12 +37,18 @@ void write_file_atomically(const std::string& path, const std::function<void(std
   const fs::path tmp = dir / name;
   try {
     {
+      errno = 0;
       std::ofstream out(tmp, binary ? std::ios::binary | std::ios::trunc : std::ios::trunc);
-      if (!out) throw IoError("cannot open for writing (permission denied?)", path);
+      if (!out) throw IoError("cannot open for writing: " + system_reason(errno), path);
       out.exceptions(std::ios::badbit);
-      write(out);
-      out.flush();
-      if (!out) throw IoError("write failed (disk full?)", path);
+      try {
+        write(out);
+        out.close();
+      } catch (const std::ios_base::failure&) {
+        // A failed write (full disk, file size limit): the reason is still in errno.
+        throw IoError("cannot write: " + system_reason(errno), path);
+      }
+      if (out.fail()) throw IoError("cannot write: " + system_reason(errno), path);
     }
     fs::rename(tmp, target, ec);
     if (ec) throw IoError("cannot replace the file: " + ec.message(), path);

@@ -7,6 +7,7 @@
 
 #include "fspm/atomic_file.hpp"
 #include "fspm/error.hpp"
+#include "fspm/input_file.hpp"
 
 namespace fspm {
 namespace {
@@ -348,11 +349,7 @@ void write_ctree_file(const CompressedTreeGraph& graph, const std::string& path)
 }
 
 CompressedTreeGraph read_ctree_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot open .ctree file", path);
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return decode_ctree(buffer.str(), path);
+  return decode_ctree(read_input_file(path), path);
 }
 
 }  // namespace fspm

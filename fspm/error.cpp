@@ -15,12 +15,22 @@ std::string format_location(const std::string& message, const std::string& file,
   return out + message;
 }
 
+// A message quoting a pathological input (a megabyte-long line, a deeply nested value) keeps
+// its start and end, so that it still fits on one terminal line or two.
+std::string bounded(const std::string& text) {
+  if (text.size() <= kMaxErrorMessageLength) return text;
+  constexpr std::size_t kTail = 60;
+  const std::size_t head = kMaxErrorMessageLength - kTail;
+  return text.substr(0, head) + " [... " + std::to_string(text.size() - head - kTail) +
+         " characters left out ...] " + text.substr(text.size() - kTail);
+}
+
 }  // namespace
 
 Error::Error(const std::string& message, std::string file, int line, int column)
-    : std::runtime_error(format_location(message, file, line, column)),
-      message_(message),
-      file_(std::move(file)),
+    : std::runtime_error(format_location(bounded(message), bounded(file), line, column)),
+      message_(bounded(message)),
+      file_(bounded(file)),
       line_(line),
       column_(column) {}
 

@@ -1,10 +1,14 @@
 #pragma once
 // Errors raised for user mistakes (bad files, bad parameters). The library never exits or aborts;
 // the CLI turns these into one clear message and exit code 1, Python into exceptions.
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
 namespace fspm {
+
+// Messages (and file names) longer than this are shortened in the middle.
+inline constexpr std::size_t kMaxErrorMessageLength = 300;
 
 // Base of every user-facing error. Carries where the problem is (file, line, column: 0 = unknown)
 // and what was expected, so a message can point at the exact spot.

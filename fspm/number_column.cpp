@@ -1,9 +1,10 @@
 #include "fspm/number_column.hpp"
 
 #include <cmath>
-#include <fstream>
+#include <sstream>
 
 #include "fspm/error.hpp"
+#include "fspm/input_file.hpp"
 #include "fspm/number_text.hpp"
 
 namespace fspm {
@@ -56,8 +57,7 @@ double parse_field(const Field& f, const std::string& path, int line) {
 }  // namespace
 
 std::vector<double> read_number_column(const std::string& path, std::string_view column) {
-  std::ifstream in(path);
-  if (!in) throw IoError("cannot open the file for reading (does it exist?)", path);
+  std::istringstream in(read_input_file(path));
   std::vector<double> values;
   std::string text;
   int line = 0;

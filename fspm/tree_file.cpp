@@ -7,6 +7,7 @@
 #include "fspm/atomic_file.hpp"
 #include "fspm/binary_tree_format.hpp"
 #include "fspm/error.hpp"
+#include "fspm/input_file.hpp"
 #include "fspm/mtg_format.hpp"
 #include "fspm/newick_format.hpp"
 #include "fspm/text_tree_format.hpp"
@@ -44,17 +45,14 @@ std::string_view tree_format_name(TreeFormat format) {
 
 TreeGraph read_tree_file(const std::string& path, std::string_view format) {
   const TreeFormat f = tree_format_for(path, format);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot open the file for reading (does it exist?)", path);
   switch (f) {
     case TreeFormat::kText:
-      return read_tree_text(in, path);
+      return read_tree_text(*open_input_file(path, kMaxTreeFileBytes), path);
     case TreeFormat::kBinary:
-      return read_tree_binary(in, path);
+      return read_tree_binary(*open_input_file(path, kMaxTreeFileBytes), path);
     default: {
-      std::ostringstream text;
-      text << in.rdbuf();
-      return f == TreeFormat::kMtg ? parse_mtg(text.str(), path) : parse_newick(text.str(), path);
+      const std::string text = read_input_file(path);
+      return f == TreeFormat::kMtg ? parse_mtg(text, path) : parse_newick(text, path);
     }
   }
 }

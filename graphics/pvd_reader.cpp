@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "fspm/error.hpp"
+#include "fspm/input_file.hpp"
 #include "graphics/vtk_readback.hpp"
 
 namespace fspm::graphics {
@@ -32,11 +33,7 @@ bool attribute_value(const std::string& element, const std::string& name, std::s
 }  // namespace
 
 std::vector<PvdStep> read_pvd_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot open .pvd file", path);
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
+  const std::string text = read_input_file(path);
   if (text.find("<VTKFile") == std::string::npos || text.find("Collection") == std::string::npos) {
     throw ParseError("not a ParaView collection (expected <VTKFile type=\"Collection\">)", path);
   }

@@ -12,6 +12,8 @@
 #include <sstream>
 
 #include "fspm/error.hpp"
+#include "fspm/input_file.hpp"
+#include "fspm/nesting_depth.hpp"
 
 namespace fspm::graphics {
 namespace {
@@ -49,6 +51,7 @@ bool is_scene_path(const std::string& path) {
 }
 
 SceneFile parse_scene(const std::string& text, const std::string& scene_path) {
+  check_json_depth(text, scene_path);
   nlohmann::json doc;
   try {
     doc = nlohmann::json::parse(text);
@@ -127,12 +130,7 @@ SceneFile parse_scene(const std::string& text, const std::string& scene_path) {
 }
 
 SceneFile read_scene_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot open scene file", path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw IoError("cannot read scene file", path);
-  return parse_scene(text.str(), path);
+  return parse_scene(read_input_file(path), path);
 }
 
 }  // namespace fspm::graphics

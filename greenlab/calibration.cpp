@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "fspm/error.hpp"
+#include "fspm/input_file.hpp"
 #include "greenlab/functional.hpp"
 #include "greenlab/simulation.hpp"
 
@@ -156,11 +157,7 @@ std::vector<Target> parse_targets_csv(const std::string& text, const std::string
 }
 
 std::vector<Target> read_targets_csv(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot open target file", path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_targets_csv(text.str(), path);
+  return parse_targets_csv(read_input_file(path), path);
 }
 
 std::vector<double> predict_targets(const PlantParams& params, const std::vector<Target>& targets) {

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "fspm/error.hpp"
+#include "fspm/input_file.hpp"
 
 namespace fspm::greenlab {
 namespace {
@@ -366,11 +367,7 @@ PlantParams parse_plant_params(std::string_view toml_text, const std::string& so
 }
 
 PlantParams read_plant_params(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot open plant description", path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_plant_params(text.str(), path);
+  return parse_plant_params(read_input_file(path), path);
 }
 
 namespace {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "fspm/error.hpp"
+#include "fspm/number_text.hpp"
 #include "lsystem/query_pass.hpp"
 #include "lsystem/turtle.hpp"
 
@@ -302,7 +303,13 @@ bool Derivation::rewrite(const ProductionGroup& group, const ModuleString& in, M
         const Production& q = productions[candidates[d]];
         if (q.probability.empty() || (d != c && !match(q, in, i))) continue;
         EvalState state{locals_.data(), globals_.data(), &rng_};
-        const double w = std::max(0.0, q.probability.evaluate(state));
+        const double w = q.probability.evaluate(state);
+        if (!(w >= 0.0 && w <= 1.0)) {
+          std::string value;
+          append_number(value, w);
+          throw ValueError("a production probability must be in [0, 1], got " + value,
+                           q.position.file, q.position.line, q.position.column);
+        }
         total += w;
         choices.emplace_back(candidates[d], w);
       }

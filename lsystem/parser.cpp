@@ -6,6 +6,7 @@
 #include <set>
 
 #include "fspm/error.hpp"
+#include "fspm/nesting_depth.hpp"
 
 namespace fspm::lsystem {
 
@@ -111,8 +112,11 @@ class Parser {
         sys_.seed = static_cast<std::uint64_t>(clamp_to_integer(v < 0 ? -v : v, 0, 1LL << 62));
       } else if (match_header(b, eol, "derivation length", after)) {
         const double v = header_number(after, eol, "a derivation length (an integer >= 0)");
-        if (v < 0 || v > 1e9)
-          Cursor(src_, after, eol).fail_at(after, "derivation length must be >= 0");
+        if (!(v >= 0 && v <= kMaxDerivationLength)) {
+          Cursor(src_, after, eol)
+              .fail_at(after, "derivation length must be an integer in [0, " +
+                                  std::to_string(kMaxDerivationLength) + "]");
+        }
         sys_.derivation_length = static_cast<int>(v);
       } else if (match_header(b, eol, "maximum depth", after)) {
         const double v = header_number(after, eol, "a maximum depth (an integer >= 1)");
@@ -378,6 +382,7 @@ class Parser {
       }
     }
     cur.set_pos(star);
+    std::vector<std::size_t> open;  // positions of the '[' not closed yet
     for (;;) {
       cur.skip_space();
       if (cur.at_end() || (stop_at_colon && cur.peek() == ':')) break;
@@ -386,6 +391,7 @@ class Parser {
       if (name == "(" || name == ")" || name == ",") {
         cur.fail_at(at, "expected a module, found '" + name + "'");
       }
+      track_bracket(cur, name, at, open);
       ModuleTemplate m;
       m.symbol = sys_.symbols.intern(name);
       if (cur.peek() == '(') {
@@ -400,7 +406,22 @@ class Parser {
       }
       out.push_back(std::move(m));
     }
+    if (!open.empty()) cur.fail_at(open.back(), "this '[' is never closed by a ']'");
     return out;
+  }
+
+  // Branches of an axiom or successor must balance, and nest at most kMaxTreeDepth deep.
+  static void track_bracket(const Cursor& cur, const std::string& name, std::size_t at,
+                            std::vector<std::size_t>& open) {
+    if (name == "[") {
+      if (open.size() >= static_cast<std::size_t>(kMaxTreeDepth)) {
+        cur.fail_at(at, nesting_too_deep(kMaxTreeDepth, "branches '['"));
+      }
+      open.push_back(at);
+    } else if (name == "]") {
+      if (open.empty()) cur.fail_at(at, "']' without a matching '['");
+      open.pop_back();
+    }
   }
 
   std::vector<Expression> read_inline_block(Cursor& cur, LocalScope& scope) {

@@ -8,8 +8,14 @@
 
 namespace fspm::lsystem {
 
+// "derivation length:" (and --steps) above this is a typo, not a plan: a step costs at least a
+// pass over the module string.
+inline constexpr int kMaxDerivationLength = 1000000000;
+
 // Throws IoError when the file cannot be read and ParseError (file:line:column, what was
-// expected) on malformed input.
+// expected) on malformed input: unbalanced '[' ']' in an axiom or successor, branches nested
+// deeper than kMaxTreeDepth, a misplaced or missing part of a production. ValueError when an
+// override names a macro the grammar never uses.
 LSystem parse_lsystem_file(const std::string& path, const MacroOverrides& overrides = {});
 LSystem parse_lsystem(std::string_view text, const std::string& name = "<string>",
                       const MacroOverrides& overrides = {}, const std::string& include_dir = ".");

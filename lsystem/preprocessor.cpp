@@ -1,5 +1,6 @@
 #include "lsystem/preprocessor.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
@@ -7,7 +8,9 @@
 #include <sstream>
 #include <vector>
 
+#include "fspm/closest_name.hpp"
 #include "fspm/error.hpp"
+#include "fspm/input_file.hpp"
 #include "lsystem/expression.hpp"
 
 namespace fspm::lsystem {
@@ -88,6 +91,7 @@ class Preprocessor {
       }
       lines.push_back(std::move(current));
     }
+    note_overridden_names(lines);
     const std::size_t stack_depth = conditionals_.size();
     for (std::size_t i = 0; i < lines.size(); ++i) {
       const int line_no = static_cast<int>(i) + 1;
@@ -124,6 +128,17 @@ class Preprocessor {
 
   SourceText take() { return std::move(out_); }
 
+  // An override of a name the grammar never uses (a misspelled --define or define.NAME) would
+  // silently change nothing: refuse it, naming the closest #define.
+  void check_overrides_used(const std::string& file) const {
+    for (const auto& [name, value] : overrides_) {
+      if (used_names_.count(name)) continue;
+      throw ValueError("cannot override the macro '" + name + "': the L-system never uses it" +
+                           closest_name_hint(name, defined_names_),
+                       file);
+    }
+  }
+
  private:
   static bool abop_header(const std::string& line, std::size_t hash) {
     for (const char* word : {"ignore", "consider"}) {
@@ -138,6 +153,23 @@ class Preprocessor {
   }
 
   bool active() const { return conditionals_.empty() || conditionals_.back().active; }
+
+  void note_overridden_names(const std::vector<std::string>& lines) {
+    if (overrides_.empty()) return;
+    for (const std::string& line : lines) {
+      for (std::size_t at = 0; at < line.size();) {
+        if (!ident_start(line[at]) || (at > 0 && ident_char(line[at - 1]))) {
+          ++at;
+          continue;
+        }
+        std::size_t end = at;
+        while (end < line.size() && ident_char(line[end])) ++end;
+        const std::string word = line.substr(at, end - at);
+        if (overrides_.count(word)) used_names_.insert(word);
+        at = end;
+      }
+    }
+  }
 
   void directive(const std::string& line, std::size_t hash, const std::string& file,
                  const std::string& dir, int line_no, int depth) {
@@ -223,6 +255,9 @@ class Preprocessor {
       std::string body = line.substr(std::min(at, line.size()));
       while (!body.empty() && body.back() == ' ') body.pop_back();
       m.body = body;
+      if (std::find(defined_names_.begin(), defined_names_.end(), name) == defined_names_.end()) {
+        defined_names_.push_back(name);
+      }
       if (!overrides_.count(name)) macros_[name] = m;
       return;
     }
@@ -242,14 +277,14 @@ class Preprocessor {
       if (e == std::string::npos) fail("expected the closing quote of the #include file", at);
       const std::string rel = line.substr(at + 1, e - at - 1);
       const std::filesystem::path path = std::filesystem::path(dir) / rel;
-      std::ifstream in(path, std::ios::binary);
-      if (!in) {
-        throw IoError("cannot open included file '" + path.string() + "'", file, line_no,
-                      static_cast<int>(at) + 1);
+      std::string included;
+      try {
+        included = read_input_file(path.string());
+      } catch (const IoError& e) {
+        throw IoError("cannot read included file '" + path.string() + "': " + e.message(), file,
+                      line_no, static_cast<int>(at) + 1);
       }
-      std::stringstream ss;
-      ss << in.rdbuf();
-      run(ss.str(), path.string(), path.parent_path().string(), depth + 1);
+      run(included, path.string(), path.parent_path().string(), depth + 1);
       return;
     }
     if (word == "pragma" || word == "line" || word.empty()) return;
@@ -430,6 +465,8 @@ class Preprocessor {
 
   const MacroOverrides& overrides_;
   std::map<std::string, Macro> macros_;
+  std::set<std::string> used_names_;        // overridden names the text mentions
+  std::vector<std::string> defined_names_;  // every #define, for "did you mean"
   std::vector<Conditional> conditionals_;
   SourceText out_;
 };
@@ -440,16 +477,14 @@ SourceText preprocess_text(std::string_view text, const std::string& name,
                            const MacroOverrides& overrides, const std::string& include_dir) {
   Preprocessor pp(overrides);
   pp.run(text, name, include_dir, 0);
+  pp.check_overrides_used(name);
   return pp.take();
 }
 
 SourceText preprocess_file(const std::string& path, const MacroOverrides& overrides) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot open L-system file '" + path + "'", path);
-  std::stringstream ss;
-  ss << in.rdbuf();
+  const std::string text = read_input_file(path);
   const std::string dir = std::filesystem::path(path).parent_path().string();
-  return preprocess_text(ss.str(), path, overrides, dir.empty() ? "." : dir);
+  return preprocess_text(text, path, overrides, dir.empty() ? "." : dir);
 }
 
 }  // namespace fspm::lsystem

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "fspm/error.hpp"
+#include "fspm/input_file.hpp"
 #include "lsystem/turtle_core.hpp"
 
 namespace fspm::lsystem {
@@ -226,11 +227,7 @@ TurtleSettings parse_view(std::string_view text, const std::string& name, Turtle
 }
 
 TurtleSettings read_view_file(const std::string& path, TurtleSettings base) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot open view file '" + path + "'", path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_view(ss.str(), path, base);
+  return parse_view(read_input_file(path), path, base);
 }
 
 TurtleSettings view_for_lsystem(const std::string& lsystem_path) {

@@ -1,0 +1,17 @@
+#pragma once
+// "Did you mean ...?" for misspelled names (macros, keys, parameters).
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fspm {
+
+// The known name nearest to `name` by edit distance (ignoring case), or "" when `known` is
+// empty or nothing is reasonably close (more than half of the letters differ).
+std::string closest_name(std::string_view name, const std::vector<std::string>& known);
+
+// " (did you mean 'X'?)" for the closest known name, or " (known: a, b, c)" when none is close,
+// or "" when `known` is empty: a suffix for error messages.
+std::string closest_name_hint(std::string_view name, const std::vector<std::string>& known);
+
+}  // namespace fspm

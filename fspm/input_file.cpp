@@ -1,0 +1,95 @@
+#include "fspm/input_file.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+#include "fspm/error.hpp"
+
+namespace fspm {
+namespace {
+
+std::string reason(int error) { return std::generic_category().message(error); }
+
+std::string size_text(std::uint64_t bytes) {
+  if (bytes >= (std::uint64_t{1} << 30) && bytes % (std::uint64_t{1} << 30) == 0) {
+    return std::to_string(bytes >> 30) + " GiB";
+  }
+  return std::to_string(bytes) + " bytes";
+}
+
+[[noreturn]] void too_large(const std::string& path, std::uint64_t limit) {
+  throw IoError("larger than the limit of " + size_text(limit) + " for an input file", path);
+}
+
+// A file descriptor closed on every path out.
+class Descriptor {
+ public:
+  explicit Descriptor(const std::string& path) : fd_(::open(path.c_str(), O_RDONLY | O_CLOEXEC)) {
+    if (fd_ < 0) throw IoError("cannot open for reading: " + reason(errno), path);
+  }
+  ~Descriptor() { ::close(fd_); }
+  Descriptor(const Descriptor&) = delete;
+  Descriptor& operator=(const Descriptor&) = delete;
+  int get() const { return fd_; }
+
+ private:
+  int fd_;
+};
+
+// Status of an open file; throws for a directory.
+struct stat checked_status(const Descriptor& fd, const std::string& path) {
+  struct stat st {};
+  if (::fstat(fd.get(), &st) != 0) throw IoError("cannot read: " + reason(errno), path);
+  if (S_ISDIR(st.st_mode)) throw IoError("is a directory, expected a file", path);
+  return st;
+}
+
+std::string read_all(const Descriptor& fd, const struct stat& st, const std::string& path,
+                     std::uint64_t limit) {
+  std::string text;
+  if (S_ISREG(st.st_mode)) {
+    if (static_cast<std::uint64_t>(st.st_size) > limit) too_large(path, limit);
+    text.reserve(static_cast<std::size_t>(st.st_size));
+  }
+  char buffer[1 << 16];
+  for (;;) {
+    const ssize_t n = ::read(fd.get(), buffer, sizeof buffer);
+    if (n == 0) break;
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      throw IoError("cannot read: " + reason(errno), path);
+    }
+    if (text.size() + static_cast<std::size_t>(n) > limit) too_large(path, limit);
+    text.append(buffer, static_cast<std::size_t>(n));
+  }
+  return text;
+}
+
+}  // namespace
+
+std::string read_input_file(const std::string& path, std::uint64_t limit) {
+  const Descriptor fd(path);
+  return read_all(fd, checked_status(fd, path), path, limit);
+}
+
+std::unique_ptr<std::istream> open_input_file(const std::string& path, std::uint64_t limit) {
+  const Descriptor fd(path);
+  const struct stat st = checked_status(fd, path);
+  if (!S_ISREG(st.st_mode)) {
+    return std::make_unique<std::istringstream>(
+        read_all(fd, st, path, std::min(limit, kMaxInputFileBytes)));
+  }
+  if (static_cast<std::uint64_t>(st.st_size) > limit) too_large(path, limit);
+  auto in = std::make_unique<std::ifstream>(path, std::ios::binary);
+  if (!*in) throw IoError("cannot open for reading: " + reason(errno), path);
+  return in;
+}
+
+}  // namespace fspm
