@@ -44,6 +44,7 @@ struct GrowOptions {
 };
 
 void run_light(const LightOptions& o) {
+  refuse_overwriting_input(o.out, {o.scene, o.points});
   environment::Scene scene = environment::read_scene_file(o.scene);
   if (o.directions != 0) {
     if (o.directions < 1) throw ValueError("--directions: expected a count >= 1");
@@ -98,6 +99,7 @@ environment::GrowthParams grow_params(const GrowOptions& o) {
 }
 
 void run_grow(const GrowOptions& o) {
+  refuse_overwriting_input(o.out, {o.params, o.scene});
   if (o.params.empty() == o.preset.empty()) {
     throw ValueError("expected either a PARAMS.toml file or --preset A|B|C (not both)");
   }

@@ -236,6 +236,7 @@ std::size_t add_obstacles(graphics::InstancedMesh& scene, const std::string& pat
 }
 
 void run_mesh(const MeshCommand& c) {
+  refuse_overwriting_input(c.out, {c.tree, c.obstacles});
   const auto t0 = std::chrono::steady_clock::now();
   const graphics::MeshFormat format = graphics::mesh_format_for(c.out);
   const InputKind kind = input_kind(c.tree);
@@ -294,6 +295,7 @@ void run_mesh(const MeshCommand& c) {
 }
 
 void run_render(const RenderCommand& c) {
+  refuse_overwriting_input(c.out, {c.tree, c.obstacles});
   const auto t0 = std::chrono::steady_clock::now();
   graphics::RenderOptions options;
   options.view = graphics::view_from_name(c.view);

@@ -53,6 +53,7 @@ struct FitOptions {
 };
 
 void run_simulate(const SimulateOptions& o) {
+  refuse_overwriting_input(o.out, {o.params});
   greenlab::PlantParams params = greenlab::read_plant_params(o.params);
   if (o.cycles >= 0) params.cycles = o.cycles;
   if (o.seed >= 0) params.seed = static_cast<std::uint64_t>(o.seed);
@@ -79,6 +80,7 @@ void run_simulate(const SimulateOptions& o) {
 }
 
 void run_reconstruct(const ReconstructOptions& o) {
+  refuse_overwriting_input(o.out, {o.graph});
   const CompressedTreeGraph g = read_ctree_file(o.graph);
   greenlab::ReconstructionOptions ro;
   ro.age = o.age;
@@ -107,6 +109,7 @@ void run_reconstruct(const ReconstructOptions& o) {
 }
 
 void run_fit(const FitOptions& o) {
+  refuse_overwriting_input(o.out, {o.params, o.targets});
   const std::string text = read_input_file(o.params);
   const greenlab::PlantParams params = greenlab::parse_plant_params(text, o.params);
   const auto targets = greenlab::read_targets_csv(o.targets);

@@ -93,6 +93,7 @@ void run_derive(const LsystemOptions& o) {
 }
 
 void run_interpret(const LsystemOptions& o) {
+  refuse_overwriting_input(o.output, {o.file, o.view});
   const lsystem::LSystem sys = lsystem::parse_lsystem_file(o.file, parse_defines(o.defines));
   const lsystem::TurtleSettings view =
       o.view.empty() ? lsystem::view_for_lsystem(o.file) : lsystem::read_view_file(o.view);

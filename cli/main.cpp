@@ -5,12 +5,14 @@
 
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <string>
 
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
 #include "fspm/error.hpp"
 
 int main(int argc, char** argv) {
+  fspm::cli::use_checked_standard_output();
   // Logs and progress go to stderr so stdout stays machine-readable.
   spdlog::set_default_logger(spdlog::stderr_color_mt("fspm"));
   spdlog::set_pattern("%^[%l]%$ %v");
@@ -48,7 +50,9 @@ int main(int argc, char** argv) {
     std::cerr << "fspm: error: " << e.what() << '\n';
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "fspm: internal error: " << e.what() << '\n';
+    const std::string what = e.what();
+    std::cerr << "fspm: internal error: " << what.substr(0, fspm::kMaxErrorMessageLength)
+              << (what.size() > fspm::kMaxErrorMessageLength ? " [...]" : "") << '\n';
     return 2;
   }
   return 0;

@@ -2,10 +2,14 @@
 
 #include <spdlog/spdlog.h>
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <cerrno>
-#include <cstdio>
+#include <cmath>
+#include <filesystem>
 #include <iostream>
+#include <streambuf>
 #include <nlohmann/json.hpp>
 #include <system_error>
 
@@ -16,7 +20,47 @@ namespace fspm::cli {
 namespace {
 int g_verbosity = 1;
 
+// std::cout's buffer: writes to file descriptor 1 and keeps the system's reason of the first
+// failed write (errno is long overwritten by the time the command line ends).
+class StandardOutputBuffer : public std::streambuf {
+ public:
+  StandardOutputBuffer() { setp(buffer_, buffer_ + sizeof buffer_); }
+  int error() const { return error_; }
+
+ protected:
+  int_type overflow(int_type c) override {
+    if (!write_out()) return traits_type::eof();
+    if (!traits_type::eq_int_type(c, traits_type::eof())) {
+      *pptr() = traits_type::to_char_type(c);
+      pbump(1);
+    }
+    return traits_type::not_eof(c);
+  }
+  int sync() override { return write_out() ? 0 : -1; }
+
+ private:
+  // Writes the buffer out (dropped after a failure: nothing more can reach the output).
+  bool write_out() {
+    for (const char* p = pbase(); error_ == 0 && p < pptr();) {
+      const ssize_t n = ::write(STDOUT_FILENO, p, static_cast<std::size_t>(pptr() - p));
+      if (n >= 0) {
+        p += n;
+      } else if (errno != EINTR) {
+        error_ = errno;
+      }
+    }
+    setp(buffer_, buffer_ + sizeof buffer_);
+    return error_ == 0;
+  }
+
+  char buffer_[1 << 16];
+  int error_ = 0;
+};
+
 std::string bound_text(double value) {
+  if (value == std::floor(value) && std::abs(value) < 1e15) {
+    return std::to_string(static_cast<long long>(value));
+  }
   std::string out;
   append_number(out, value);
   return out;
@@ -37,21 +81,34 @@ CLI::Validator range_check(double low, double high, bool low_inclusive) {
 
 }  // namespace
 
+void refuse_overwriting_input(const std::string& output, std::initializer_list<std::string> inputs) {
+  if (output.empty()) return;
+  for (const std::string& input : inputs) {
+    std::error_code ec;
+    if (!input.empty() && std::filesystem::equivalent(output, input, ec) && !ec) {
+      throw ValueError("the output would overwrite an input ('" + input +
+                           "'): choose another output file",
+                       output);
+    }
+  }
+}
+
 CLI::Validator number_in(double low, double high) { return range_check(low, high, true); }
 CLI::Validator positive_number(double high) { return range_check(0.0, high, false); }
 
 void print_json(const nlohmann::json& document) { std::cout << document.dump(2) << '\n'; }
 
+void use_checked_standard_output() {
+  // Never destroyed: std::cout is flushed once more after main returns.
+  static auto* buffer = new StandardOutputBuffer();
+  std::cout.rdbuf(buffer);
+}
+
 void finish_standard_output() {
-  errno = 0;
   std::cout.flush();
-  // std::cout writes through C stdio (synchronised), whose error flag also records earlier
-  // failures; flushing again sets errno to the reason when the failure persists.
-  const bool failed = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout) != 0;
-  if (!failed) return;
-  const int reason = errno;
-  std::clearerr(stdout);
-  std::cout.clear();
+  auto* buffer = dynamic_cast<StandardOutputBuffer*>(std::cout.rdbuf());
+  const int reason = buffer != nullptr ? buffer->error() : 0;
+  if (std::cout && reason == 0) return;
   throw IoError("cannot write: " +
                     (reason != 0 ? std::generic_category().message(reason) : "write failed"),
                 "standard output");

@@ -1,5 +1,6 @@
 #pragma once
 // Shared helpers of the subcommands: machine-readable output on stdout, logs on stderr.
+#include <initializer_list>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 
@@ -12,10 +13,16 @@ namespace fspm::cli {
 // Prints one JSON document on stdout (pretty, newline-terminated).
 void print_json(const nlohmann::json& document);
 
-// Flushes standard output and throws IoError naming "standard output" and the system's reason
-// (e.g. "No space left on device", "Bad file descriptor") when any write to it failed. Called
-// once, where the command line ends, rather than after each print.
+// Routes std::cout through a buffer that remembers the system's reason of a failed write; then
+// finish_standard_output() flushes and throws IoError naming "standard output" and that reason
+// ("No space left on device", "Bad file descriptor") when any write failed. Both are called
+// once, where the command line starts and ends, rather than after each print.
+void use_checked_standard_output();
 void finish_standard_output();
+
+// Throws ValueError naming `output` when it is, or resolves to (a link, "./", ".."), one of
+// `inputs`: the command would replace a file it reads. Empty names are skipped.
+void refuse_overwriting_input(const std::string& output, std::initializer_list<std::string> inputs);
 
 // Checks of numeric options with short messages ("expected a number in [0, 1000], got '-1'"),
 // refusing nan and inf: in [low, high], or in (0, high] for positive_number.

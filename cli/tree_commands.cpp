@@ -78,6 +78,7 @@ void run_info(const InfoOptions& o) {
 }
 
 void run_convert(const ConvertOptions& o) {
+  refuse_overwriting_input(o.out, {o.in});
   const TreeGraph tree = read_tree_file(o.in, o.from);
   write_tree_file(tree, o.out, o.to);
   if (verbosity() > 0) {

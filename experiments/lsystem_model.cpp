@@ -8,6 +8,7 @@
 #include "experiments/metrics.hpp"
 #include "lsystem/derivation.hpp"
 #include "lsystem/parser.hpp"
+#include "lsystem/preprocessor.hpp"
 #include "lsystem/turtle.hpp"
 
 namespace fspm::experiments {
@@ -42,6 +43,13 @@ class LSystemModel final : public Model {
     }
     if (name.starts_with(kDefine)) {
       if (name.size() == kDefine.size()) throw ValueError("define. needs a macro name");
+      // A macro the grammar never uses would make every run identical: the preprocessor refuses
+      // it, and the caller adds the experiment file's line.
+      try {
+        lsystem::preprocess_file(file_, {{name.substr(kDefine.size()), "0"}});
+      } catch (const ValueError& e) {
+        throw ValueError(e.message());
+      }
       return;
     }
     if (name.starts_with(kTurtle)) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fspm/error.hpp"
+#include "fspm/finite_geometry.hpp"
 
 namespace fspm {
 namespace {
@@ -62,6 +63,13 @@ class Reader {
       done += m;
     }
     return v;
+  }
+
+  // A complete tree followed by more bytes is a damaged or concatenated file.
+  void expect_end() {
+    if (in_.peek() != std::char_traits<char>::eof()) {
+      fail("unexpected data after the end of the tree");
+    }
   }
 
   [[noreturn]] void fail(const std::string& what) const {
@@ -163,11 +171,16 @@ TreeGraph read_tree_binary(std::istream& in, const std::string& source) {
     const NodeId id = tree.add_node(p, d);
     tree.set_length(id, lengths[i]);
     tree.set_direction(id, dirs[i]);
+    if (const char* field = non_finite_geometry(tree, id)) {
+      r.fail("node " + std::to_string(i) + ": its " + field +
+             " is nan or infinite, expected finite geometry");
+    }
   }
   for (const auto& [name, def] : attrs) {
     const auto values = r.get_array<double>(n, "an attribute column");
     std::copy(values.begin(), values.end(), tree.attribute(name).begin());
   }
+  r.expect_end();
   return tree;
 }
 

@@ -1,5 +1,6 @@
 #include "fspm/compressed_tree_graph.hpp"
 
+#include <cmath>
 #include <bit>
 #include <cstring>
 #include <fstream>
@@ -7,6 +8,7 @@
 
 #include "fspm/atomic_file.hpp"
 #include "fspm/error.hpp"
+#include "fspm/number_text.hpp"
 #include "fspm/input_file.hpp"
 
 namespace fspm {
@@ -267,6 +269,19 @@ std::string encode_ctree(const CompressedTreeGraph& graph) {
   return out;
 }
 
+namespace {
+
+// Ages and dates of a plant in growth cycles: anything beyond this is a damaged header.
+constexpr double kMaxCtreeAge = 1e6;
+
+std::string number_text(double value) {
+  std::string out;
+  append_number(out, value);
+  return out;
+}
+
+}  // namespace
+
 CompressedTreeGraph decode_ctree(std::string_view bytes, const std::string& source_name) {
   Reader in(bytes, source_name);
   if (in.take(sizeof(kMagic), "the magic FSPMCTRE") != std::string_view(kMagic, sizeof(kMagic))) {
@@ -284,6 +299,13 @@ CompressedTreeGraph decode_ctree(std::string_view bytes, const std::string& sour
   CompressedTreeGraph g;
   g.final_age = in.get<double>("the final age");
   g.birth_date = in.get<double>("the birth date");
+  if (!(g.final_age >= 0.0 && g.final_age <= kMaxCtreeAge)) {
+    in.fail("the final age " + number_text(g.final_age) + " is out of range: expected a finite age in [0, " +
+            number_text(kMaxCtreeAge) + "]");
+  }
+  if (!(std::abs(g.birth_date) <= kMaxCtreeAge)) {
+    in.fail("the birth date " + number_text(g.birth_date) + " is out of range: expected a finite date");
+  }
   const auto n_meta = in.get<std::uint32_t>("the metadata count");
   for (std::uint32_t i = 0; i < n_meta; ++i) {
     const auto len = in.get<std::uint16_t>("a metadata key length");
@@ -312,6 +334,10 @@ CompressedTreeGraph decode_ctree(std::string_view bytes, const std::string& sour
     r.ring_volume = in.get<double>("a ring volume");
     r.leaf_volume = in.get<double>("a leaf volume");
     r.multiplicity = in.get<std::uint64_t>("a multiplicity");
+    if (!std::isfinite(r.birth) || !std::isfinite(r.pith_volume) ||
+        !std::isfinite(r.ring_volume) || !std::isfinite(r.leaf_volume)) {
+      in.fail("a record's birth date or volume is nan or infinite, expected finite numbers");
+    }
   }
   if (begin != n_refs) in.fail("axillary counts do not add up to the reference count");
   std::vector<RecordId> refs(n_refs);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "fspm/error.hpp"
+#include "fspm/nesting_depth.hpp"
 
 #include "fspm/number_text.hpp"
 
@@ -235,6 +236,10 @@ TreeGraph parse_mtg(std::string_view text, const std::string& file) {
   const std::vector<std::string_view> header = split_tabs(lines[k]);
   std::size_t code_columns = 1;
   while (code_columns < header.size() && trim(header[code_columns]).empty()) ++code_columns;
+  // Each code column is one more level of branching.
+  if (code_columns > static_cast<std::size_t>(kMaxTreeDepth)) {
+    fail(nesting_too_deep(kMaxTreeDepth, "ENTITY-CODE columns"), k);
+  }
   std::vector<std::string> features;
   for (std::size_t c = code_columns; c < header.size(); ++c) {
     features.emplace_back(trim(header[c]));
@@ -354,7 +359,10 @@ TreeGraph parse_mtg(std::string_view text, const std::string& file) {
       if (extra) fail("more feature values than feature names in the header", k);
     }
   }
-  if (entities.empty()) return {};
+  if (entities.empty()) {
+    fail("the MTG: table has no entity after its ENTITY-CODE header (is the file truncated?)",
+         lines.size() - 1);
+  }
 
   // The finest scale's entities are the nodes. A component's parent at that scale: its
   // predecessor or bearer there, or, for the first component of a complex ('/'), the last

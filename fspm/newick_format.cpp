@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "fspm/error.hpp"
+#include "fspm/nesting_depth.hpp"
 #include "fspm/number_text.hpp"
 
 namespace fspm {
@@ -122,6 +123,9 @@ TreeGraph parse_newick(std::string_view text, const std::string& source) {
     // Expect a subtree.
     s.skip_space();
     if (s.peek() == '(') {
+      if (open.size() >= static_cast<std::size_t>(kMaxTreeDepth)) {
+        s.fail(nesting_too_deep(kMaxTreeDepth, "parentheses"));
+      }
       open_line.push_back(s.line());
       open_col.push_back(s.column());
       s.advance();

@@ -26,6 +26,15 @@ void require(std::span<const double> v, std::size_t n, const char* what) {
   }
 }
 
+// Finite values whose squares or differences overflow (around 1e154 and beyond) give an infinite
+// or nan spread: say so, rather than calling the data constant.
+void require_no_overflow(bool finite, const char* what) {
+  if (!finite) {
+    throw ValueError(std::string(what) +
+                     ": the values are too large (their spread overflows a double); rescale them");
+  }
+}
+
 void check_level(double level) {
   if (!(level > 0.0 && level < 1.0)) {
     throw ValueError("confidence level must be in (0, 1), got " + std::to_string(level));
@@ -36,6 +45,7 @@ void check_level(double level) {
 // freedom.
 void finish_t_test(TTestResult& r, double se, Alternative alt, double level) {
   check_level(level);
+  require_no_overflow(std::isfinite(se) && std::isfinite(r.estimate), "t-test");
   if (!(se > 0.0)) {
     throw ValueError("t-test: the data are constant (zero standard error); t is undefined");
   }
@@ -265,6 +275,7 @@ double cohens_d(std::span<const double> a, std::span<const double> b) {
   require(b, 2, "Cohen's d sample b");
   const double na = static_cast<double>(a.size()), nb = static_cast<double>(b.size());
   const double pooled = ((na - 1.0) * variance(a) + (nb - 1.0) * variance(b)) / (na + nb - 2.0);
+  require_no_overflow(std::isfinite(pooled) && std::isfinite(mean(a) - mean(b)), "Cohen's d");
   if (!(pooled > 0.0)) throw ValueError("Cohen's d: both samples are constant");
   return (mean(a) - mean(b)) / std::sqrt(pooled);
 }

@@ -1,6 +1,7 @@
 #include "fspm/text_tree_format.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <istream>
 #include <ostream>
 #include <vector>
@@ -80,6 +81,17 @@ class Reader {
            t.column);
     }
     return static_cast<Int>(v);
+  }
+
+  // Geometry is finite: nan and inf are for attributes only.
+  double finite_number(const Token& t, const char* field) const {
+    const double v = number(t, field);
+    if (!std::isfinite(v)) {
+      fail(std::string("expected a finite number for ") + field + ", found '" +
+               std::string(t.text) + "'",
+           t.column);
+    }
+    return v;
   }
 
   int line() const { return line_no_; }
@@ -210,11 +222,11 @@ TreeGraph read_tree_text(std::istream& in, const std::string& source) {
     static const char* kVecFields[] = {"start", "end", "direction"};
     for (int v = 0; v < 3; ++v) {
       Eigen::Vector3d& dst = v == 0 ? d.start : (v == 1 ? d.end : d.direction);
-      for (int k = 0; k < 3; ++k) dst[k] = r.number(t[5 + 3 * v + k], kVecFields[v]);
+      for (int k = 0; k < 3; ++k) dst[k] = r.finite_number(t[5 + 3 * v + k], kVecFields[v]);
     }
-    d.length = r.number(t[14], "length");
-    d.radius = r.number(t[15], "radius");
-    d.birth_time = r.number(t[16], "birth time");
+    d.length = r.finite_number(t[14], "length");
+    d.radius = r.finite_number(t[15], "radius");
+    d.birth_time = r.finite_number(t[16], "birth time");
     for (std::size_t k = 0; k < names.size(); ++k) {
       attrs[k] = r.number(t[kFixedFields + k], names[k].c_str());
     }

@@ -1,12 +1,12 @@
 #include "fspm/tree_file.hpp"
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <iterator>
 
 #include "fspm/atomic_file.hpp"
 #include "fspm/binary_tree_format.hpp"
 #include "fspm/error.hpp"
+#include "fspm/finite_geometry.hpp"
 #include "fspm/input_file.hpp"
 #include "fspm/mtg_format.hpp"
 #include "fspm/newick_format.hpp"
@@ -44,14 +44,16 @@ std::string_view tree_format_name(TreeFormat format) {
 }
 
 TreeGraph read_tree_file(const std::string& path, std::string_view format) {
+  // The path first: a directory or a missing file is not "an unknown format".
+  const auto in = open_input_file(path, kMaxTreeFileBytes);
   const TreeFormat f = tree_format_for(path, format);
   switch (f) {
     case TreeFormat::kText:
-      return read_tree_text(*open_input_file(path, kMaxTreeFileBytes), path);
+      return read_tree_text(*in, path);
     case TreeFormat::kBinary:
-      return read_tree_binary(*open_input_file(path, kMaxTreeFileBytes), path);
+      return read_tree_binary(*in, path);
     default: {
-      const std::string text = read_input_file(path);
+      const std::string text{std::istreambuf_iterator<char>(*in), {}};
       return f == TreeFormat::kMtg ? parse_mtg(text, path) : parse_newick(text, path);
     }
   }
@@ -59,6 +61,7 @@ TreeGraph read_tree_file(const std::string& path, std::string_view format) {
 
 void write_tree_file(const TreeGraph& tree, const std::string& path, std::string_view format) {
   const TreeFormat f = tree_format_for(path, format);
+  require_finite_geometry(tree, path);
   write_file_atomically(
       path,
       [&](std::ostream& out) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 #include <string>
 
 #include "fspm/error.hpp"
@@ -304,10 +305,11 @@ bool Derivation::rewrite(const ProductionGroup& group, const ModuleString& in, M
         if (q.probability.empty() || (d != c && !match(q, in, i))) continue;
         EvalState state{locals_.data(), globals_.data(), &rng_};
         const double w = q.probability.evaluate(state);
-        if (!(w >= 0.0 && w <= 1.0)) {
+        // Relative weights (documented: `: 1` and `: 3`), so any finite w >= 0.
+        if (!(w >= 0.0 && w <= std::numeric_limits<double>::max())) {
           std::string value;
           append_number(value, w);
-          throw ValueError("a production probability must be in [0, 1], got " + value,
+          throw ValueError("a production probability must be a finite weight >= 0, got " + value,
                            q.position.file, q.position.line, q.position.column);
         }
         total += w;

@@ -16,15 +16,17 @@ struct CommandResult {
   std::string err;  // stderr
 };
 
-// `args` is appended to the executable path as shell words (quote them yourself).
-inline CommandResult run_fspm(const std::string& args) {
+// `args` is appended to the executable path as shell words (quote them yourself); redirections
+// of stdout in `args` take the place of the capture. `shell_prefix` runs before, in the same
+// shell (e.g. "ulimit -f 4; ").
+inline CommandResult run_fspm(const std::string& args, const std::string& shell_prefix = {}) {
   namespace fs = std::filesystem;
   static int counter = 0;
   const fs::path err_file =
       fs::temp_directory_path() /
       ("fspm_cli_err_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-  const std::string cmd =
-      std::string(FSPM_EXE) + " " + args + " 2>" + err_file.string() + " </dev/null";
+  const std::string cmd = shell_prefix + std::string(FSPM_EXE) + " " + args + " 2>" +
+                          err_file.string() + " </dev/null";
   CommandResult r;
   FILE* pipe = ::popen(cmd.c_str(), "r");
   if (pipe == nullptr) return r;

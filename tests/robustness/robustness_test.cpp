@@ -1,0 +1,236 @@
+// Robustness catalogue: wrong input, pathological input and failing output, each run through the
+// `fspm` executable as a user would. Every case names its arguments (with redirections where the
+// case is about them), the exit code, a pattern of the one-line message, and output files that
+// must not appear or change.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "tests/cli/run_command.hpp"
+
+namespace fspm::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Case {
+  std::string name;
+  // Written into the case's scratch directory; "@PATH" copies the file PATH.
+  std::map<std::string, std::string> files;
+  std::vector<std::string> setup;            // fspm commands that must succeed first
+  std::string args;                          // {dir}: scratch directory, {src}: source tree
+  int exit_code;
+  std::string message;                 // regex searched in stderr
+  std::vector<std::string> untouched;  // files of {dir} that must not appear or change
+  std::string shell_prefix;            // e.g. a lower file size limit; runs after the setup
+
+  Case(std::string name_, std::map<std::string, std::string> files_,
+       std::vector<std::string> setup_, std::string args_, int exit_code_, std::string message_,
+       std::vector<std::string> untouched_ = {}, std::string shell_prefix_ = {})
+      : name(std::move(name_)),
+        files(std::move(files_)),
+        setup(std::move(setup_)),
+        args(std::move(args_)),
+        exit_code(exit_code_),
+        message(std::move(message_)),
+        untouched(std::move(untouched_)),
+        shell_prefix(std::move(shell_prefix_)) {}
+};
+
+std::string repeat(const std::string& s, int n) {
+  std::string out;
+  out.reserve(s.size() * static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) out += s;
+  return out;
+}
+
+std::string expand(std::string text, const fs::path& dir) {
+  for (const auto& [key, value] :
+       {std::pair<std::string, std::string>{"{dir}", dir.string()}, {"{src}", FSPM_SOURCE_DIR}}) {
+    for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at)) {
+      text.replace(at, key.size(), value);
+      at += value.size();
+    }
+  }
+  return text;
+}
+
+const std::string kExamples = "{src}/examples";
+const std::string kTree = kExamples + "/trees/small.nwk";
+const std::string kScene = kExamples + "/environment/wall_scene.json";
+const std::string kPoints = kExamples + "/environment/points.csv";
+const std::string kGrowth = kExamples + "/environment/tree_a.toml";
+const std::string kPlant = kExamples + "/greenlab/gl1_plant.toml";
+const std::string kGrammar = kExamples + "/lsystems/parametric_tree.l";
+const std::string kFull = "No space left on device";
+// 1e300 and nan as little-endian doubles, in printf's octal escapes.
+const std::string kHugeDouble = "\\234\\165\\000\\210\\074\\344\\067\\176";
+const std::string kNanDouble = "\\000\\000\\000\\000\\000\\000\\370\\177";
+const std::string kSynthetic = "[experiment]\nname = \"s\"\n[model]\nkind = \"synthetic\"\n";
+
+std::vector<Case> output_cases() {
+  return {
+      {"ExportCsvToFullStdout", {{"e.toml", kSynthetic}}, {"run {dir}/e.toml --out {dir}/out"},
+       "results export {dir}/out --csv >/dev/full", 1, "standard output: cannot write: " + kFull},
+      {"DeriveStringToFullStdout", {}, {}, "lsystem derive " + kGrammar + " --string >/dev/full",
+       1, "standard output: cannot write: " + kFull},
+      {"TreeInfoJsonToFullStdout", {}, {}, "tree info " + kTree + " --json >/dev/full", 1,
+       "standard output: cannot write: " + kFull},
+      {"LightToFullStdout", {}, {}, "light --scene " + kScene + " --points " + kPoints +
+       " >/dev/full", 1, "standard output: cannot write: " + kFull},
+      {"TreeInfoToClosedStdout", {}, {}, "tree info " + kTree + " >&-", 1,
+       "standard output: cannot write: Bad file descriptor"},
+      {"HelpToFullStdout", {}, {}, "--help >/dev/full", 1, "standard output: cannot write"},
+      {"TreeFileOverTheSizeLimit", {}, {},
+       "tree convert " + kExamples + "/trees/open_a12.treeb {dir}/big.tree", 1,
+       "big.tree: cannot write: File too large", {"big.tree"}, "ulimit -f 4; trap '' XFSZ; "},
+  };
+}
+
+std::vector<Case> nesting_cases() {
+  const std::string deep = repeat("[", 100000) + repeat("]", 100000);
+  const std::string deep_tree = repeat("(", 100000) + "1" + repeat(")", 100000) + ";";
+  return {
+      {"DeepJsonSceneForLight", {{"deep.json", deep}}, {},
+       "light --scene {dir}/deep.json --points " + kPoints + " -o {dir}/light.csv", 1,
+       "deep.json:1:65: nesting deeper than the limit of 64 levels", {"light.csv"}},
+      {"DeepJsonSceneForGrow", {{"deep.json", deep}}, {},
+       "grow " + kGrowth + " --years 1 --scene {dir}/deep.json -o {dir}/t.tree", 1,
+       "deep.json:1:65: nesting deeper than the limit of 64 levels", {"t.tree"}},
+      {"HalfDeepJsonScene", {{"deep.json", repeat("[", 50000)}}, {},
+       "light --scene {dir}/deep.json --points " + kPoints, 1, "nesting deeper than the limit"},
+      {"DeepToml", {{"deep.toml", "years = " + deep}}, {}, "grow {dir}/deep.toml -o {dir}/t.tree",
+       1, "deep.toml.*nested", {"t.tree"}},
+      {"DeepNewick", {{"deep.nwk", deep_tree}}, {}, "tree convert {dir}/deep.nwk {dir}/t.tree",
+       1, "deep.nwk:1:10001: nesting deeper than the limit of 10000 levels", {"t.tree"}},
+      {"DeepBrackets", {{"deep.l", "Axiom: " + repeat("[", 20000) + repeat("]", 20000) + "\n"}},
+       {}, "lsystem derive {dir}/deep.l", 1,
+       "deep.l:1:10008: nesting deeper than the limit of 10000 levels"},
+      {"LongLineInError", {{"long.l", "Axiom: F\nF --> F(" + repeat("1+", 100000) + "\n"}}, {},
+       "lsystem derive {dir}/long.l", 1, "long.l:2"},
+  };
+}
+
+std::vector<Case> wrong_input_cases() {
+  const std::string grammar = "#define LEN 2\nAxiom: F(LEN)\nF(x) --> F(x*LEN)\n";
+  const std::string sweep =
+      "[experiment]\nname = \"d\"\n[model]\nkind = \"lsystem\"\nfile = \"g.l\"\n"
+      "[sweep]\nsteps = [1]\n\"define.LNE\" = [1, 2]\n";
+  return {
+      {"MisspelledSweepDefine", {{"g.l", grammar}, {"e.toml", sweep}}, {},
+       "run {dir}/e.toml --out {dir}/out", 1, "e.toml:8: define.LNE: cannot override .*never uses it \\(did you mean 'LEN'\\?\\)",
+       {"out"}},
+      {"MisspelledDefineOption", {{"g.l", grammar}}, {}, "lsystem derive {dir}/g.l --define zz=1",
+       1, "g.l: cannot override the macro 'zz'"},
+      {"NegativeProbability", {{"p.l", "Axiom: F\nF --> FF : -0.5\nF --> F : 1.5\n"}}, {},
+       "lsystem derive {dir}/p.l --steps 2", 1,
+       "p.l:2:1: a production probability must be a finite weight >= 0, got -0.5"},
+      {"TruncatedGrammar", {{"t.l", "Axiom: F\nF --> F[+F[-F"}}, {}, "lsystem derive {dir}/t.l",
+       1, "t.l:2:11: this '\\[' is never closed"},
+      {"UnbalancedAxiom", {{"u.l", "Axiom: F]F\n"}}, {}, "lsystem derive {dir}/u.l", 1,
+       "u.l:1:9: '\\]' without a matching '\\['"},
+      {"NegativeCycles", {}, {}, "greenlab simulate " + kPlant + " --cycles -3 -o {dir}/p.ctree",
+       1, "--cycles: expected a number in \\[0, 10000\\], got '-3'", {"p.ctree"}},
+      {"NegativeYears", {}, {}, "grow " + kGrowth + " --years -1 -o {dir}/t.tree", 1,
+       "--years: expected a number in \\[0, 1000\\]", {"t.tree"}},
+      {"NegativeAge", {}, {"greenlab simulate " + kPlant + " -o {dir}/p.ctree"}, "greenlab reconstruct {dir}/p.ctree --age -2 -o {dir}/t.tree", 1,
+       "--age: expected a number in", {"t.tree"}},
+      {"NanAge", {}, {"greenlab simulate " + kPlant + " -o {dir}/p.ctree"}, "greenlab reconstruct {dir}/p.ctree --age nan -o {dir}/t.tree", 1,
+       "--age: expected a number in .*got 'nan'", {"t.tree"}},
+      {"NanGeometry",
+       {{"n.tree", "fspm-tree 1\nnodes 1\n0 - internode 0 0 0 0 0 0 0 nan 0 0 1 1 0.1 0\n"}},
+       {}, "tree convert {dir}/n.tree {dir}/m.treeb", 1,
+       "n.tree:3:[0-9]+: expected a finite number for end, found 'nan'", {"m.treeb"}},
+      {"NanGeometryFromGrammar", {{"n.l", "Axiom: F(sqrt(-1))\n"}}, {},
+       "lsystem interpret {dir}/n.l -o {dir}/t.tree", 1,
+       "t.tree: cannot write node 0: its (end|length) is nan or infinite", {"t.tree"}},
+      {"OutputIsInput", {{"p.toml", "@" + kPlant}}, {}, "greenlab simulate {dir}/p.toml -o {dir}/./p.toml",
+       1, "p.toml: the output would overwrite an input", {"p.toml"}},
+      {"HalfAnMtg", {{"h.mtg", "CODE:\tFORM-A\n\nCLASSES:\nSYMBOL\tSCALE\n"}}, {},
+       "tree convert {dir}/h.mtg {dir}/t.tree", 1, "h.mtg", {"t.tree"}},
+      {"TreebWithTrailingGarbage", {}, {"tree convert " + kTree + " {dir}/g.treeb"},
+       "tree info {dir}/g.treeb", 1, "g.treeb: unexpected data after the end of the tree", {},
+       "printf 'junk' >> {dir}/g.treeb; "},
+      // The final age is the double at byte 24 of a .ctree.
+      {"CtreeWithHugeAge", {}, {"greenlab simulate " + kPlant + " -o {dir}/p.ctree"},
+       "greenlab reconstruct {dir}/p.ctree -o {dir}/t.tree", 1,
+       "p.ctree: the final age 1e\\+300 is out of range", {"t.tree"},
+       "printf '" + kHugeDouble + "' | dd of={dir}/p.ctree bs=1 seek=24 conv=notrunc 2>/dev/null; "},
+      {"CtreeWithNanAge", {}, {"greenlab simulate " + kPlant + " -o {dir}/p.ctree"},
+       "greenlab reconstruct {dir}/p.ctree -o {dir}/t.tree", 1,
+       "p.ctree: the final age nan is out of range", {"t.tree"},
+       "printf '" + kNanDouble + "' | dd of={dir}/p.ctree bs=1 seek=24 conv=notrunc 2>/dev/null; "},
+  };
+}
+
+std::vector<Case> message_cases() {
+  return {
+      {"DirectoryAsTree", {}, {}, "tree info {dir}", 1, "is a directory, expected a file"},
+      {"DirectoryAsParameters", {}, {}, "grow {dir} -o {dir}/t.tree", 1,
+       "is a directory, expected a file", {"t.tree"}},
+      {"MissingFile", {}, {}, "tree info {dir}/none.tree", 1,
+       "none.tree: cannot open for reading: No such file or directory"},
+      {"HugeDerivationLength", {{"h.l", "derivation length: 2000000000\nAxiom: F\n"}}, {},
+       "lsystem derive {dir}/h.l", 1,
+       "h.l:1:19: derivation length must be an integer in \\[0, 1000000000\\]"},
+      {"NegativeSteps", {}, {}, "lsystem derive " + kGrammar + " --steps -1", 1,
+       "--steps: expected a number in \\[0, 1000000000\\], got '-1'"},
+      {"HugeValuesInTtest", {{"a.txt", "1e308\n-1e308\n1e308\n"}, {"b.txt", "1\n2\n3\n"}}, {},
+       "stats ttest {dir}/a.txt {dir}/b.txt", 1, "too large"},
+      {"EndlessInput", {}, {}, "grow /dev/zero -o {dir}/t.tree", 1,
+       "/dev/zero: larger than the limit of 1 GiB", {"t.tree"}},
+  };
+}
+
+class Robustness : public ::testing::TestWithParam<Case> {};
+
+TEST_P(Robustness, FailsCleanly) {
+  const Case& c = GetParam();
+  const fs::path dir = scratch_dir("robust_" + c.name);
+  for (const auto& [name, text] : c.files) {
+    if (text.starts_with("@")) {
+      fs::copy_file(expand(text.substr(1), dir), dir / name);
+    } else {
+      write_text(dir / name, text);
+    }
+  }
+  for (const std::string& setup : c.setup) {
+    const CommandResult r = run_fspm(expand(setup, dir));
+    ASSERT_EQ(r.exit_code, 0) << setup << "\n" << r.err;
+  }
+  std::map<std::string, std::string> before;
+  for (const std::string& name : c.untouched) {
+    before[name] = fs::exists(dir / name) ? read_text(dir / name) : "<absent>";
+  }
+  const CommandResult r = run_fspm(expand(c.args, dir), expand(c.shell_prefix, dir));
+  EXPECT_EQ(r.exit_code, c.exit_code) << r.err;
+  EXPECT_TRUE(std::regex_search(r.err, std::regex(expand(c.message, dir)))) << r.err;
+  // One line, short even when the input is huge.
+  EXPECT_LT(r.err.size(), 600u) << r.err.substr(0, 600);
+  EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+  for (const std::string& name : c.untouched) {
+    const std::string after = fs::exists(dir / name) ? read_text(dir / name) : "<absent>";
+    EXPECT_EQ(after, before[name]) << name << " appeared or changed";
+  }
+  // No temporary file of an atomic write is left behind.
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos)
+        << entry.path();
+  }
+  fs::remove_all(dir);
+}
+
+std::string case_name(const ::testing::TestParamInfo<Case>& info) { return info.param.name; }
+
+INSTANTIATE_TEST_SUITE_P(Output, Robustness, ::testing::ValuesIn(output_cases()), case_name);
+INSTANTIATE_TEST_SUITE_P(Nesting, Robustness, ::testing::ValuesIn(nesting_cases()), case_name);
+INSTANTIATE_TEST_SUITE_P(WrongInput, Robustness, ::testing::ValuesIn(wrong_input_cases()),
+                         case_name);
+INSTANTIATE_TEST_SUITE_P(Messages, Robustness, ::testing::ValuesIn(message_cases()), case_name);
+
+}  // namespace
+}  // namespace fspm::testing
