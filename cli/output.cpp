@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -9,8 +10,8 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
-#include <streambuf>
 #include <nlohmann/json.hpp>
+#include <streambuf>
 #include <system_error>
 
 #include "fspm/error.hpp"
@@ -24,7 +25,19 @@ int g_verbosity = 1;
 // failed write (errno is long overwritten by the time the command line ends).
 class StandardOutputBuffer : public std::streambuf {
  public:
-  StandardOutputBuffer() { setp(buffer_, buffer_ + sizeof buffer_); }
+  StandardOutputBuffer() {
+    setp(buffer_, buffer_ + sizeof buffer_);
+    // Started with stdout closed (`>&-`): hold descriptor 1 with /dev/null so that no file the
+    // command opens lands there, and fail the first write as a closed stdout would.
+    if (::fcntl(STDOUT_FILENO, F_GETFD) == -1 && errno == EBADF) {
+      const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+      if (null >= 0 && null != STDOUT_FILENO) {
+        ::dup2(null, STDOUT_FILENO);
+        ::close(null);
+      }
+      closed_ = true;
+    }
+  }
   int error() const { return error_; }
 
  protected:
@@ -41,6 +54,7 @@ class StandardOutputBuffer : public std::streambuf {
  private:
   // Writes the buffer out (dropped after a failure: nothing more can reach the output).
   bool write_out() {
+    if (closed_ && pptr() > pbase()) error_ = EBADF;
     for (const char* p = pbase(); error_ == 0 && p < pptr();) {
       const ssize_t n = ::write(STDOUT_FILENO, p, static_cast<std::size_t>(pptr() - p));
       if (n >= 0) {
@@ -55,6 +69,7 @@ class StandardOutputBuffer : public std::streambuf {
 
   char buffer_[1 << 16];
   int error_ = 0;
+  bool closed_ = false;
 };
 
 std::string bound_text(double value) {
@@ -81,14 +96,15 @@ CLI::Validator range_check(double low, double high, bool low_inclusive) {
 
 }  // namespace
 
-void refuse_overwriting_input(const std::string& output, std::initializer_list<std::string> inputs) {
+void refuse_overwriting_input(const std::string& output,
+                              std::initializer_list<std::string> inputs) {
   if (output.empty()) return;
   for (const std::string& input : inputs) {
     std::error_code ec;
     if (!input.empty() && std::filesystem::equivalent(output, input, ec) && !ec) {
-      throw ValueError("the output would overwrite an input ('" + input +
-                           "'): choose another output file",
-                       output);
+      throw ValueError(
+          "the output would overwrite an input ('" + input + "'): choose another output file",
+          output);
     }
   }
 }
@@ -109,9 +125,9 @@ void finish_standard_output() {
   auto* buffer = dynamic_cast<StandardOutputBuffer*>(std::cout.rdbuf());
   const int reason = buffer != nullptr ? buffer->error() : 0;
   if (std::cout && reason == 0) return;
-  throw IoError("cannot write: " +
-                    (reason != 0 ? std::generic_category().message(reason) : "write failed"),
-                "standard output");
+  throw IoError(
+      "cannot write: " + (reason != 0 ? std::generic_category().message(reason) : "write failed"),
+      "standard output");
 }
 
 void set_verbosity(int level) {

@@ -1,15 +1,15 @@
 #include "fspm/compressed_tree_graph.hpp"
 
-#include <cmath>
 #include <bit>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 
 #include "fspm/atomic_file.hpp"
 #include "fspm/error.hpp"
-#include "fspm/number_text.hpp"
 #include "fspm/input_file.hpp"
+#include "fspm/number_text.hpp"
 
 namespace fspm {
 namespace {
@@ -300,11 +300,12 @@ CompressedTreeGraph decode_ctree(std::string_view bytes, const std::string& sour
   g.final_age = in.get<double>("the final age");
   g.birth_date = in.get<double>("the birth date");
   if (!(g.final_age >= 0.0 && g.final_age <= kMaxCtreeAge)) {
-    in.fail("the final age " + number_text(g.final_age) + " is out of range: expected a finite age in [0, " +
-            number_text(kMaxCtreeAge) + "]");
+    in.fail("the final age " + number_text(g.final_age) +
+            " is out of range: expected a finite age in [0, " + number_text(kMaxCtreeAge) + "]");
   }
   if (!(std::abs(g.birth_date) <= kMaxCtreeAge)) {
-    in.fail("the birth date " + number_text(g.birth_date) + " is out of range: expected a finite date");
+    in.fail("the birth date " + number_text(g.birth_date) +
+            " is out of range: expected a finite date");
   }
   const auto n_meta = in.get<std::uint32_t>("the metadata count");
   for (std::uint32_t i = 0; i < n_meta; ++i) {
@@ -334,8 +335,8 @@ CompressedTreeGraph decode_ctree(std::string_view bytes, const std::string& sour
     r.ring_volume = in.get<double>("a ring volume");
     r.leaf_volume = in.get<double>("a leaf volume");
     r.multiplicity = in.get<std::uint64_t>("a multiplicity");
-    if (!std::isfinite(r.birth) || !std::isfinite(r.pith_volume) ||
-        !std::isfinite(r.ring_volume) || !std::isfinite(r.leaf_volume)) {
+    if (!std::isfinite(r.birth) || !std::isfinite(r.pith_volume) || !std::isfinite(r.ring_volume) ||
+        !std::isfinite(r.leaf_volume)) {
       in.fail("a record's birth date or volume is nan or infinite, expected finite numbers");
     }
   }

@@ -25,8 +25,8 @@ inline CommandResult run_fspm(const std::string& args, const std::string& shell_
   const fs::path err_file =
       fs::temp_directory_path() /
       ("fspm_cli_err_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-  const std::string cmd = shell_prefix + std::string(FSPM_EXE) + " " + args + " 2>" +
-                          err_file.string() + " </dev/null";
+  const std::string cmd =
+      shell_prefix + std::string(FSPM_EXE) + " " + args + " 2>" + err_file.string() + " </dev/null";
   CommandResult r;
   FILE* pipe = ::popen(cmd.c_str(), "r");
   if (pipe == nullptr) return r;

@@ -1,0 +1,112 @@
+// Core helpers of hardened input and output: file checks, nesting bounds, message length,
+// "did you mean", finite geometry and the reason of a failed atomic write.
+#include <gtest/gtest.h>
+#include <sys/resource.h>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <limits>
+
+#include "fspm/atomic_file.hpp"
+#include "fspm/closest_name.hpp"
+#include "fspm/error.hpp"
+#include "fspm/finite_geometry.hpp"
+#include "fspm/input_file.hpp"
+#include "fspm/nesting_depth.hpp"
+
+namespace fspm {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("fspm_input_checks_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string message_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "<no error>";
+}
+
+TEST(InputFile, SaysWhatIsWrongWithThePath) {
+  const fs::path dir = scratch("paths");
+  EXPECT_EQ(message_of([&] { read_input_file(dir.string()); }),
+            dir.string() + ": is a directory, expected a file");
+  EXPECT_EQ(message_of([&] { read_input_file((dir / "none").string()); }),
+            (dir / "none").string() + ": cannot open for reading: No such file or directory");
+  std::ofstream(dir / "ten") << "0123456789";
+  EXPECT_EQ(read_input_file((dir / "ten").string()), "0123456789");
+  EXPECT_EQ(message_of([&] { read_input_file((dir / "ten").string(), 9); }),
+            (dir / "ten").string() + ": larger than the limit of 9 bytes for an input file");
+  // A device without end is cut at the limit, not read until memory runs out.
+  EXPECT_EQ(message_of([&] { read_input_file("/dev/zero", 1 << 20); }),
+            "/dev/zero: larger than the limit of 1048576 bytes for an input file");
+  fs::remove_all(dir);
+}
+
+TEST(NestingDepth, JsonBoundCountsBracketsOutsideStrings) {
+  EXPECT_NO_THROW(check_json_depth("[[1], {\"a\": [2]}]", "x.json", 3));
+  EXPECT_NO_THROW(check_json_depth("[\"[[[[[[\"]", "x.json", 1));
+  EXPECT_EQ(message_of([] { check_json_depth("[\n [[\"\\\"\"]]]", "x.json", 2); }),
+            "x.json:2:3: nesting deeper than the limit of 2 levels (JSON arrays and objects)");
+}
+
+TEST(ErrorMessage, LongQuotedInputIsShortenedInTheMiddle) {
+  const Error e("found '" + std::string(100000, 'x') + "' at the end", "f.txt", 3);
+  EXPECT_LE(std::string(e.what()).size(), kMaxErrorMessageLength + 100);
+  EXPECT_TRUE(std::string(e.what()).starts_with("f.txt:3: found 'xxx"));
+  EXPECT_TRUE(std::string(e.what()).ends_with("x' at the end"));
+}
+
+TEST(ClosestName, SwapsAndTyposFindTheKnownName) {
+  EXPECT_EQ(closest_name("LNE", {"LEN", "ANGLE"}), "LEN");
+  EXPECT_EQ(closest_name("angel", {"LEN", "ANGLE"}), "ANGLE");
+  EXPECT_EQ(closest_name("zz", {"LEN", "ANGLE"}), "");
+  EXPECT_EQ(closest_name_hint("zz", {"LEN"}), " (known: LEN)");
+  EXPECT_EQ(closest_name_hint("LNE", {"LEN"}), " (did you mean 'LEN'?)");
+  EXPECT_EQ(closest_name_hint("LNE", {}), "");
+}
+
+TEST(FiniteGeometry, NanAndInfinityAreNamed) {
+  TreeGraph t;
+  NodeData d;
+  d.end = {0, 0, 1};
+  t.add_node(kNoNode, d);
+  EXPECT_EQ(non_finite_geometry(t, 0), nullptr);
+  t.set_radius(0, std::numeric_limits<double>::infinity());
+  EXPECT_STREQ(non_finite_geometry(t, 0), "radius");
+  EXPECT_THROW(require_finite_geometry(t, "t.tree"), ValueError);
+}
+
+TEST(AtomicFile, FailedWriteNamesThePathAndTheReasonAndLeavesNothing) {
+  const fs::path dir = scratch("atomic");
+  const std::string path = (dir / "big.txt").string();
+  // A file size limit makes writes fail with EFBIG (SIGXFSZ ignored) in this process only.
+  rlimit old{};
+  ::getrlimit(RLIMIT_FSIZE, &old);
+  const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit small = old;
+  small.rlim_cur = 4096;
+  ::setrlimit(RLIMIT_FSIZE, &small);
+  const std::string message = message_of([&] {
+    write_file_atomically(path, [](std::ostream& out) { out << std::string(1 << 20, 'x'); });
+  });
+  ::setrlimit(RLIMIT_FSIZE, &old);
+  std::signal(SIGXFSZ, old_handler);
+  EXPECT_EQ(message, path + ": cannot write: File too large");
+  EXPECT_TRUE(fs::is_empty(dir));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace fspm
