@@ -8,6 +8,7 @@
 #include "fspm/binary_tree_format.hpp"
 #include "fspm/error.hpp"
 #include "fspm/mtg_format.hpp"
+#include "fspm/nesting_depth.hpp"
 #include "fspm/newick_format.hpp"
 #include "fspm/text_tree_format.hpp"
 #include "fspm/tree_file.hpp"
@@ -147,6 +148,14 @@ TEST(Newick, DeepNestingDoesNotOverflowTheStack) {
   const TreeGraph t = parse_newick(text);
   EXPECT_EQ(t.size(), static_cast<std::size_t>(depth) + 1);
   EXPECT_EQ(to_newick(t), text);
+  // Input that is nothing but nesting stops at the bound, with its position.
+  const std::string deeper = std::string(kMaxTreeDepth + 1, '(');
+  try {
+    parse_newick(deeper, "deep.nwk");
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.column(), kMaxTreeDepth + 1);
+  }
 }
 
 TEST(Mtg, WritesSuccessorsAndBranchesInColumns) {

@@ -297,6 +297,21 @@ TEST(LsystemDerivation, DivisionByZeroIsAValueError) {
   }
 }
 
+TEST(LsystemDerivation, NegativeOrNanProbabilityIsAValueErrorAtTheProduction) {
+  for (const char* weight : {"-0.5", "0/0 + 1", "sqrt(-1)"}) {
+    const LSystem sys =
+        parse_lsystem(std::string("Axiom: A\nA --> B : 1\nA --> C : ") + weight + "\n", "p.l");
+    DeriveOptions o;
+    o.steps = 1;
+    try {
+      derive(sys, o);
+      FAIL() << weight;
+    } catch (const ValueError& e) {
+      EXPECT_EQ(e.line(), 3) << e.what();
+    }
+  }
+}
+
 TEST(LsystemDerivation, FastAndGenericPathsAgree) {
   // A condition (always true) forces the generic path; both paths must give the same string.
   const std::string fast = derived("Axiom: X\nX --> F-[[X]+X]+F[+FX]-X\nF --> FF\n", 4);

@@ -225,5 +225,37 @@ TEST(LsystemParser, NumberedModuleNamesOnlyForGreenLabStyleFiles) {
   EXPECT_EQ(to_string(s, gl.symbols), "M0[B1]B0");
 }
 
+TEST(LsystemParser, BracketsBalanceInAxiomsAndSuccessors) {
+  const auto error_at = [](const std::string& text) {
+    try {
+      parse_lsystem(text, "b.l");
+    } catch (const ParseError& e) {
+      return std::to_string(e.line()) + ":" + std::to_string(e.column()) + " " + e.message();
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error_at("Axiom: F]F\n"), "1:9 ']' without a matching '['");
+  EXPECT_EQ(error_at("Axiom: F\nF --> F[+F[-F]\n"), "2:8 this '[' is never closed by a ']'");
+  EXPECT_EQ(error_at("Axiom: F[[F]F]\nF --> F[+F][-F]\n"), "no error");
+  EXPECT_EQ(error_at("Axiom: " + std::string(1000001, '[') + std::string(1000001, ']') + "\n"),
+            "1:1000008 nesting deeper than the limit of 1000000 levels (branches '[')");
+  EXPECT_EQ(error_at("derivation length: 2e9\nAxiom: F\n"),
+            "1:19 derivation length must be an integer in [0, 1000000000]");
+}
+
+TEST(LsystemParser, OverrideOfAnUnusedNameIsRefusedWithTheClosestDefine) {
+  const std::string text = "#define LEN 2\n#ifdef DEBUG\n#endif\nAxiom: F(LEN)\n";
+  EXPECT_EQ(derived(text, 0, {{"LEN", "3"}}), "F(3)");
+  EXPECT_NO_THROW(parse_lsystem(text, "o.l", {{"DEBUG", "1"}}));  // tested by #ifdef: used
+  try {
+    parse_lsystem(text, "o.l", {{"LNE", "3"}});
+    FAIL() << "no error";
+  } catch (const ValueError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "o.l: cannot override the macro 'LNE': the L-system never uses it (did you mean "
+              "'LEN'?)");
+  }
+}
+
 }  // namespace
 }  // namespace fspm::lsystem

@@ -56,7 +56,7 @@ TEST(LsystemTurtle, BranchesSetParentsAndOrders) {
   EXPECT_EQ(r.tree.parent(2), 1u);
   EXPECT_EQ(r.tree.parent(3), 0u);
   EXPECT_TRUE(r.tree.start(3).isApprox(Eigen::Vector3d(0, 0, 1)));
-  EXPECT_THROW(draw("F]F"), ValueError);
+  EXPECT_THROW(draw("F]F"), ParseError);  // refused by the parser, at its line and column
 }
 
 TEST(LsystemTurtle, MoveWithoutDrawingLeavesAGap) {

@@ -125,7 +125,7 @@ std::vector<Case> output_cases() {
 
 std::vector<Case> nesting_cases() {
   const std::string deep = repeat("[", 100000) + repeat("]", 100000);
-  const std::string deep_tree = repeat("(", 100000) + "1" + repeat(")", 100000) + ";";
+  const std::string deep_tree = repeat("(", 1000001) + "1" + repeat(")", 1000001) + ";";
   return {
       {"DeepJsonSceneForLight",
        {{"deep.json", deep}},
@@ -159,14 +159,14 @@ std::vector<Case> nesting_cases() {
        {},
        "tree convert {dir}/deep.nwk {dir}/t.tree",
        1,
-       "deep.nwk:1:10001: nesting deeper than the limit of 10000 levels",
+       "deep.nwk:1:1000001: nesting deeper than the limit of 1000000 levels",
        {"t.tree"}},
       {"DeepBrackets",
-       {{"deep.l", "Axiom: " + repeat("[", 20000) + repeat("]", 20000) + "\n"}},
+       {{"deep.l", "Axiom: " + repeat("[", 1000001) + repeat("]", 1000001) + "\n"}},
        {},
        "lsystem derive {dir}/deep.l",
        1,
-       "deep.l:1:10008: nesting deeper than the limit of 10000 levels"},
+       "deep.l:1:1000008: nesting deeper than the limit of 1000000 levels"},
       {"LongLineInError",
        {{"long.l", "Axiom: F\nF --> F(" + repeat("1+", 100000) + "\n"}},
        {},
