@@ -252,6 +252,7 @@ void run_command(const RunOptions& o) {
 
 void export_command(const ExportOptions& o) {
   if (o.csv == o.json) throw ValueError("results export: give exactly one of --csv and --json");
+  refuse_overwriting_input(o.output, {(fs::path(o.dir) / ex::kDatabaseFile).string()});
   const ex::ResultsDb db(o.dir, ex::ResultsDb::Mode::kRead);
   const std::vector<ex::RunRecord> runs = db.read_all();
   auto write = [&](std::ostream& out) {

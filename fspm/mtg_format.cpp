@@ -233,6 +233,7 @@ TreeGraph parse_mtg(std::string_view text, const std::string& file) {
     fail("expected the header line 'ENTITY-CODE' after 'MTG:'", std::min(k, lines.size() - 1));
   }
   // Header: ENTITY-CODE, empty cells for the code columns, then the feature names.
+  const std::size_t header_index = k;
   const std::vector<std::string_view> header = split_tabs(lines[k]);
   std::size_t code_columns = 1;
   while (code_columns < header.size() && trim(header[code_columns]).empty()) ++code_columns;
@@ -361,7 +362,7 @@ TreeGraph parse_mtg(std::string_view text, const std::string& file) {
   }
   if (entities.empty()) {
     fail("the MTG: table has no entity after its ENTITY-CODE header (is the file truncated?)",
-         lines.size() - 1);
+         header_index);
   }
 
   // The finest scale's entities are the nodes. A component's parent at that scale: its

@@ -262,12 +262,26 @@ std::vector<Case> wrong_input_cases() {
        1,
        "p.toml: the output would overwrite an input",
        {"p.toml"}},
+      {"ExportOverItsDatabase",
+       {{"e.toml", kSynthetic}},
+       {"run {dir}/e.toml --out {dir}/out"},
+       "results export {dir}/out --csv -o {dir}/out/results.sqlite",
+       1,
+       "results.sqlite: the output would overwrite an input",
+       {"out/results.sqlite"}},
       {"HalfAnMtg",
        {{"h.mtg", "CODE:\tFORM-A\n\nCLASSES:\nSYMBOL\tSCALE\n"}},
        {},
        "tree convert {dir}/h.mtg {dir}/t.tree",
        1,
-       "h.mtg",
+       "h.mtg:1: no 'MTG:' section",
+       {"t.tree"}},
+      {"MtgCutAfterItsHeader",
+       {{"h.mtg", "CODE:\tFORM-A\nMTG:\nENTITY-CODE\t\tLength\n"}},
+       {},
+       "tree convert {dir}/h.mtg {dir}/t.tree",
+       1,
+       "h.mtg:3: the MTG: table has no entity after its ENTITY-CODE header",
        {"t.tree"}},
       {"TreebWithTrailingGarbage",
        {},
@@ -341,6 +355,9 @@ std::vector<Case> message_cases() {
        {"t.tree"}},
   };
 }
+
+// Test names in ctest and failure reports show the case's name, not its bytes.
+void PrintTo(const Case& c, std::ostream* out) { *out << c.name; }
 
 class Robustness : public ::testing::TestWithParam<Case> {};
 
