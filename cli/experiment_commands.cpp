@@ -399,7 +399,8 @@ void add_experiment_commands(CLI::App& app) {
   r->add_option("-o,--out", run->out, "Output directory (default: NAME-results)");
   r->add_flag("--resume", run->resume, "Continue the database in the output directory");
   r->add_option("--shard", run->shard, "Run only shard I of N (runs with index % N == I)");
-  r->add_option("--time-limit", run->time_limit_s, "Seconds per run (overrides the file)");
+  r->add_option("--time-limit", run->time_limit_s, "Seconds per run (overrides the file)")
+      ->check(positive_number(1e9));
   r->add_option("--replicates", run->replicates,
                 "Replicates per point (overrides the file; a quick, smaller version of a sweep)")
       ->check(number_in(1, 1e9));
@@ -408,7 +409,8 @@ void add_experiment_commands(CLI::App& app) {
   r->add_flag("--json", run->json, "Machine-readable JSON summary on stdout");
   r->add_flag("--mpi", run->mpi, "Spread the runs over the MPI ranks (under mpirun)");
   r->add_flag("--emit-slurm", run->emit_slurm, "Write a Slurm job-array script instead of running");
-  r->add_option("--shards", run->shards, "--emit-slurm: number of array tasks (default 4)");
+  r->add_option("--shards", run->shards, "--emit-slurm: number of array tasks (default 4)")
+      ->check(number_in(1, 1e6));
   r->add_option("--slurm-file", run->slurm_file, "--emit-slurm: script path (default NAME.slurm)");
   r->add_option("--slurm-time", run->slurm_time, "--emit-slurm: time limit of one task");
   r->callback([run] { run_command(*run); });

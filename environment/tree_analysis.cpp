@@ -98,17 +98,17 @@ std::vector<Sphere> cluster_spheres(const std::vector<LeafCluster>& clusters) {
 }
 
 void AnalysisParams::validate() const {
-  if (!(min_cluster_radius_m > 0.0)) {
-    throw ValueError("plastic analysis: min_cluster_radius_m must be > 0");
+  if (!(min_cluster_radius_m > 0.0 && std::isfinite(min_cluster_radius_m))) {
+    throw ValueError("plastic analysis: min_cluster_radius_m must be a finite number > 0");
   }
   if (!(gamma0 > 0.0 && gamma0 <= 1.0)) {
     throw ValueError("plastic analysis: gamma0 must be in (0, 1]");
   }
-  if (light_directions < 1 || !(light_significance > 0.0)) {
+  if (light_directions < 1 || !(light_significance > 0.0 && std::isfinite(light_significance))) {
     throw ValueError("plastic analysis: light_directions must be >= 1, light_significance > 0");
   }
-  if (!(pruning_strength >= 0.0)) {
-    throw ValueError("plastic analysis: pruning_strength (c_psi) must be >= 0");
+  if (!(pruning_strength >= 0.0 && std::isfinite(pruning_strength))) {
+    throw ValueError("plastic analysis: pruning_strength (c_psi) must be a finite number >= 0");
   }
   if (!(phototropism >= 0.0 && gravitropism >= 0.0 && phototropism + gravitropism < 1.0)) {
     throw ValueError("plastic analysis: tropism weights must be >= 0 with a sum < 1 (eq. 4.7)");

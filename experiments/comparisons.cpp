@@ -19,6 +19,8 @@
 #include "fspm/atomic_file.hpp"
 #include "fspm/edit_cost_model.hpp"
 #include "fspm/error.hpp"
+#include "fspm/input_file.hpp"
+#include "fspm/nesting_depth.hpp"
 #include "fspm/statistics.hpp"
 #include "fspm/tree_file.hpp"
 
@@ -303,11 +305,13 @@ void write_comparisons(const ComparisonResults& results, const std::string& out_
 
 bool read_comparisons(const std::string& out_dir, ComparisonResults& results) {
   const fs::path path = fs::path(out_dir) / kComparisonsFile;
-  std::ifstream in(path);
-  if (!in) return false;
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return false;
+  const std::string text = read_input_file(path.string());
+  check_json_depth(text, path.string());
   json j;
   try {
-    j = json::parse(in);
+    j = json::parse(text);
     results = {};
     for (const json& p : j.at("pairs")) {
       PairDistance d;
