@@ -71,10 +71,8 @@ BENCHMARK(BM_AdaptBesideWall)->Arg(10)->Arg(20)->Arg(30)->Unit(benchmark::kMilli
 // The same wall with a coarser shadow-volume cutoff (AnalysisParams::light_significance = 0.05
 // instead of 0.01): shorter shadow volumes, fewer neighbours per cluster, fewer and cheaper light
 // evaluations; reported with the tip displacement and pruning so the loss of accuracy is visible.
-void BM_AdaptBesideWallCoarseLight(benchmark::State& state) {
-  const Case& c = case_for(static_cast<int>(state.range(0)));
-  AnalysisParams params;
-  params.light_significance = static_cast<double>(state.range(1)) / 100.0;
+// Adapts the case's open tree to its wall with the analysis `params`, timed by `state`.
+void adapt_beside_wall(benchmark::State& state, const Case& c, const AnalysisParams& params) {
   const TreeAnalysis analysis = analyze_tree(c.open.tree, params);
   AdaptationResult r;
   for (auto _ : state) {
@@ -87,6 +85,12 @@ void BM_AdaptBesideWallCoarseLight(benchmark::State& state) {
   state.counters["tip_displacement_m"] = r.mean_tip_displacement_m;
   state.counters["tip_shift_x_m"] = r.mean_tip_shift.x();
 }
+
+void BM_AdaptBesideWallCoarseLight(benchmark::State& state) {
+  AnalysisParams params;
+  params.light_significance = static_cast<double>(state.range(1)) / 100.0;
+  adapt_beside_wall(state, case_for(static_cast<int>(state.range(0))), params);
+}
 BENCHMARK(BM_AdaptBesideWallCoarseLight)
     ->Args({30, 1})
     ->Args({30, 3})
@@ -98,19 +102,9 @@ BENCHMARK(BM_AdaptBesideWallCoarseLight)
 // (AnalysisParams::light_model = kShadowGrid): one grid fill and propagation per age level instead
 // of per-cluster hemisphere evaluations; pruning and tip shift reported, as they differ.
 void BM_AdaptBesideWallGridLight(benchmark::State& state) {
-  const Case& c = case_for(static_cast<int>(state.range(0)));
   AnalysisParams params;
   params.light_model = ClusterLightModel::kShadowGrid;
-  const TreeAnalysis analysis = analyze_tree(c.open.tree, params);
-  AdaptationResult r;
-  for (auto _ : state) {
-    r = adapt_tree(c.open.tree, analysis, c.wall);
-    benchmark::DoNotOptimize(r.tree.size());
-  }
-  state.counters["nodes"] = static_cast<double>(c.open.tree.size());
-  state.counters["pruned"] = static_cast<double>(r.pruned_nodes);
-  state.counters["light_evals"] = static_cast<double>(r.light_evaluations);
-  state.counters["tip_shift_x_m"] = r.mean_tip_shift.x();
+  adapt_beside_wall(state, case_for(static_cast<int>(state.range(0))), params);
 }
 BENCHMARK(BM_AdaptBesideWallGridLight)->Arg(10)->Arg(20)->Arg(30)->Unit(benchmark::kMillisecond);
 

@@ -477,6 +477,17 @@ void run_view(const ViewCommand& c) {
   }
 }
 
+// --foliage and --seed of the commands that draw leaf clusters.
+void add_foliage_options(CLI::App* command, std::string& foliage, std::uint64_t& seed) {
+  command
+      ->add_option("--foliage", foliage,
+                   "Leaf clusters of grown and adapted trees with --leaves: leaves (a cloud of "
+                   "small leaves) or volumes (translucent crown spheres)")
+      ->capture_default_str();
+  command->add_option("--seed", seed, "Seed of the leaf placement in clusters")
+      ->capture_default_str();
+}
+
 }  // namespace
 
 void add_graphics_commands(CLI::App& app) {
@@ -494,12 +505,7 @@ void add_graphics_commands(CLI::App& app) {
       ->required();
   m->add_option("--format", mesh->format, "Input format: " + formats);
   m->add_flag("--leaves", mesh->leaves, "Mesh leaf nodes as quads, leaf clusters as foliage");
-  m->add_option("--foliage", mesh->foliage,
-                "Leaf clusters of grown and adapted trees with --leaves: leaves (a cloud of small "
-                "leaves) or volumes (translucent crown spheres)")
-      ->capture_default_str();
-  m->add_option("--seed", mesh->seed, "Seed of the leaf placement in clusters")
-      ->capture_default_str();
+  add_foliage_options(m, mesh->foliage, mesh->seed);
   m->add_option("--ages", mesh->ages,
                 "Ages of a .pvd growth sequence (default: the birth times, at most 20)")
       ->delimiter(',');
@@ -533,12 +539,7 @@ void add_graphics_commands(CLI::App& app) {
   r->add_option("--view", render->view, "front, side, top or iso")->capture_default_str();
   r->add_option("--size", render->size, "WIDTHxHEIGHT in pixels")->capture_default_str();
   r->add_flag("--leaves", render->leaves, "Show leaves and leaf clusters");
-  r->add_option("--foliage", render->foliage,
-                "Leaf clusters of grown and adapted trees with --leaves: leaves (a cloud of small "
-                "leaves) or volumes (translucent crown spheres)")
-      ->capture_default_str();
-  r->add_option("--seed", render->seed, "Seed of the leaf placement in clusters")
-      ->capture_default_str();
+  add_foliage_options(r, render->foliage, render->seed);
   r->add_flag("--no-ground", render->no_ground, "Leave out the ground plane");
   r->add_option("--edge-length", render->edge_length_m, "Target ring edge length in m")
       ->check(positive_number(1e6));
@@ -568,12 +569,7 @@ void add_graphics_commands(CLI::App& app) {
       ->delimiter(',');
   v->add_option("--color-by", view->color_by, "Colour by a vertex attribute");
   v->add_flag("--leaves", view->leaves, "Show leaves and leaf clusters");
-  v->add_option("--foliage", view->foliage,
-                "Leaf clusters of grown and adapted trees with --leaves: leaves (a cloud of small "
-                "leaves) or volumes (translucent crown spheres)")
-      ->capture_default_str();
-  v->add_option("--seed", view->seed, "Seed of the leaf placement in clusters")
-      ->capture_default_str();
+  add_foliage_options(v, view->foliage, view->seed);
   v->add_flag("--no-shadows", view->no_shadows, "Start without shadows");
   v->add_option("--size", view->size, "Window WIDTHxHEIGHT")->capture_default_str();
   v->add_option("--screenshot", view->screenshot,
