@@ -20,6 +20,13 @@ Families (names follow the C++ API):
   ``render`` (VTK offscreen, to a numpy image and .png)
 * experiments: ``run_experiment``, ``compare_results``, ``read_results``
 """
+try:
+    import numpy  # noqa: F401  (every column and image is a numpy array)
+except ImportError as missing:
+    raise ImportError(
+        "fspm needs numpy: install it (Debian: apt install python3-numpy; pip: pip install numpy)"
+    ) from missing
+
 from ._fspm import (  # noqa: F401
     AdaptationResult,
     AnalysisParams,

@@ -132,3 +132,13 @@ def test_greenlab_line_tree_matches_the_explicit_tree():
     np.testing.assert_allclose(lines.starts, tree.starts, atol=1e-5)
     np.testing.assert_allclose(lines.lengths, tree.lengths, rtol=1e-6)
     assert len(lines.to_tree()) == len(tree)
+
+
+def test_import_without_numpy_names_the_missing_package():
+    import subprocess
+    import sys
+
+    code = "import sys; sys.modules['numpy'] = None; import fspm"
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert r.returncode != 0
+    assert "fspm needs numpy" in r.stderr
