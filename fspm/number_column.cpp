@@ -1,5 +1,6 @@
 #include "fspm/number_column.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <sstream>
 
@@ -62,6 +63,7 @@ std::vector<double> read_number_column(const std::string& path, std::string_view
   std::string text;
   int line = 0;
   long index = -1;  // column index once the header is read
+  bool header_skipped = false;
   while (std::getline(in, text)) {
     ++line;
     int offset = 1;
@@ -73,6 +75,14 @@ std::vector<double> read_number_column(const std::string& path, std::string_view
             "expected one number per line, found several fields; use --column "
             "NAME to pick a column of a CSV file",
             path, line, offset);
+      }
+      // A one-column CSV file: its first line, a name rather than a number, is the header.
+      // ("inf" and "nan" are numbers, refused below, not names.)
+      if (values.empty() && !header_skipped && !parse_number(content) &&
+          (std::isalpha(static_cast<unsigned char>(content.front())) != 0 ||
+           content.front() == '"')) {
+        header_skipped = true;
+        continue;
       }
       values.push_back(parse_field({content, offset}, path, line));
       continue;

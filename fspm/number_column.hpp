@@ -1,6 +1,7 @@
 #pragma once
 // Reading one list of numbers from a text file, as `fspm stats` takes its samples: either one
-// number per line, or one column of a CSV file chosen by its header name. Blank lines and lines
+// number per line (a first line that is a name, not a number, is the header of a one-column CSV
+// file and skipped), or one column of a CSV file chosen by its header name. Blank lines and lines
 // starting with '#' are skipped.
 #include <string>
 #include <string_view>

@@ -22,6 +22,18 @@ TEST(NumberColumn, OneNumberPerLineSkipsBlanksAndComments) {
   EXPECT_EQ(read_number_column(p), (std::vector<double>{1.5, -2000.0, 7.0}));
 }
 
+TEST(NumberColumn, OneColumnCsvHeaderIsSkippedOnlyOnTheFirstLine) {
+  EXPECT_EQ(read_number_column(write_temp("header", "height_m\n1.5\n2\n")),
+            (std::vector<double>{1.5, 2.0}));
+  EXPECT_EQ(read_number_column(write_temp("quoted", "# comment\n\"h\"\n3\n")),
+            (std::vector<double>{3.0}));
+  // Only the first line may be a name, and "nan" is a number (refused), not a name.
+  EXPECT_THROW(read_number_column(write_temp("late", "1\nheight\n")), ParseError);
+  EXPECT_THROW(read_number_column(write_temp("two", "a\nb\n1\n")), ParseError);
+  EXPECT_THROW(read_number_column(write_temp("nanfirst", "nan\n1\n")), ParseError);
+  EXPECT_THROW(read_number_column(write_temp("only", "height\n")), ParseError);
+}
+
 TEST(NumberColumn, CsvColumnByName) {
   const auto p = write_temp("csv", "a, \"b\" ,c\n1,2,3\n4, 5 ,6\n");
   EXPECT_EQ(read_number_column(p, "b"), (std::vector<double>{2.0, 5.0}));
