@@ -49,6 +49,13 @@ py::array column(const std::span<const T> values, py::handle owner, std::size_t 
   return a;
 }
 
+// Parent ids as a read-only signed view: the root's parent (kNoNode, all ones) reads -1.
+inline py::array parent_column(std::span<const std::uint32_t> parents, py::handle owner) {
+  return column(std::span<const std::int32_t>(reinterpret_cast<const std::int32_t*>(parents.data()),
+                                              parents.size()),
+                owner);
+}
+
 // A 1-D numpy array that takes ownership of `values` (no copy of the elements).
 template <typename T>
 py::array_t<T> adopt(std::vector<T>&& values) {

@@ -32,6 +32,7 @@ namespace {
 using fspm::TreeGraph;
 
 using fspm::python::column;
+using fspm::python::parent_column;
 
 py::dict summary_dict(const TreeGraph& t) {
   const fspm::TreeSummary s = fspm::summarize(t);
@@ -187,7 +188,10 @@ PYBIND11_MODULE(_fspm, m) {
            })
       .def_property_readonly(
           "parents",
-          [](py::object self) { return column(self.cast<const TreeGraph&>().parents(), self); })
+          [](py::object self) {
+            return parent_column(self.cast<const TreeGraph&>().parents(), self);
+          },
+          "Parent of every node (int32; -1 for the root)")
       .def_property_readonly(
           "starts",
           [](py::object self) { return column(self.cast<const TreeGraph&>().starts(), self, 3); })
@@ -389,7 +393,8 @@ PYBIND11_MODULE(_fspm, m) {
       .def("__len__", &fspm::LineTree::size)
       .def_property_readonly("parents",
                              [](py::object self) {
-                               return column(self.cast<const fspm::LineTree&>().parents(), self);
+                               return parent_column(self.cast<const fspm::LineTree&>().parents(),
+                                                    self);
                              })
       .def_property_readonly("starts",
                              [](py::object self) {

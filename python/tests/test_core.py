@@ -14,7 +14,8 @@ def test_newick_round_trip_and_labels():
     t = fspm.parse_newick("(100,(200,300)1)1000;")
     assert len(t) == 5
     np.testing.assert_array_equal(t.attribute("label"), [1000, 100, 1, 200, 300])
-    np.testing.assert_array_equal(t.parents[1:], [0, 0, 2, 2])
+    np.testing.assert_array_equal(t.parents, [-1, 0, 0, 2, 2])  # signed: the root's parent is -1
+    assert t.parents.dtype == np.int32
     assert fspm.to_newick(t) == "(100,(200,300)1)1000;"
 
 
