@@ -64,7 +64,12 @@ class Mailbox {
 ExperimentInfo experiment_info(const Experiment& experiment) {
   ExperimentInfo info;
   info.name = experiment.name;
-  info.experiment_path = experiment.path;
+  // Absolute, so that `fspm report` and `fspm compare` find the model's files (resolved next
+  // to the experiment file) from any working folder.
+  info.experiment_path =
+      experiment.path.empty()
+          ? experiment.path
+          : std::filesystem::absolute(experiment.path).lexically_normal().string();
   info.experiment_text = experiment.text;
   info.total_runs = experiment.runs();
   info.swept = experiment.swept_names();
