@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 #include <memory>
@@ -27,7 +28,39 @@ struct LightOptions {
   std::string points;
   std::string out;
   int directions = 0;
+  bool json = false;
 };
+
+// `fspm light --json`: counts, the light's range and mean, and the samples themselves when they
+// are not written to a file.
+nlohmann::json light_json(const LightOptions& o, const std::vector<Eigen::Vector3d>& points,
+                          const std::vector<environment::LightSample>& samples, double seconds) {
+  double sum = 0.0, lo = 1.0, hi = 0.0;
+  nlohmann::json rows = nlohmann::json::array();
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    const environment::LightSample& s = samples[k];
+    sum += s.light;
+    lo = std::min(lo, s.light);
+    hi = std::max(hi, s.light);
+    if (o.out.empty()) {
+      rows.push_back({{"point", {points[k].x(), points[k].y(), points[k].z()}},
+                      {"light", s.light},
+                      {"direction", {s.direction.x(), s.direction.y(), s.direction.z()}}});
+    }
+  }
+  nlohmann::json j = {{"scene", o.scene},
+                      {"points", samples.size()},
+                      {"mean_light", samples.empty() ? 0.0 : sum / samples.size()},
+                      {"min_light", samples.empty() ? 0.0 : lo},
+                      {"max_light", samples.empty() ? 0.0 : hi},
+                      {"seconds", seconds}};
+  if (o.out.empty()) {
+    j["samples"] = std::move(rows);
+  } else {
+    j["output"] = o.out;
+  }
+  return j;
+}
 
 struct GrowOptions {
   std::string params;
@@ -55,15 +88,19 @@ void run_light(const LightOptions& o) {
   const environment::LightModel model(scene);
   std::vector<environment::LightSample> samples(points.size());
   model.evaluate(points, samples);
-  spdlog::debug("light: {} points in {:.3f} s", points.size(),
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  if (o.out.empty()) {
-    environment::write_light_csv(std::cout, points, samples);
-    std::cout.flush();
-  } else {
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  spdlog::debug("light: {} points in {:.3f} s", points.size(), seconds);
+  if (!o.out.empty()) {
     write_file_atomically(
         o.out, [&](std::ostream& out) { environment::write_light_csv(out, points, samples); });
     spdlog::info("wrote {} ({} points)", o.out, points.size());
+  }
+  if (o.json) {
+    print_json(light_json(o, points, samples, seconds));
+  } else if (o.out.empty()) {
+    environment::write_light_csv(std::cout, points, samples);
+    std::cout.flush();
   }
 }
 
@@ -138,6 +175,9 @@ void add_environment_commands(CLI::App& app) {
   l->add_option("--directions", light->directions,
                 "Stratified sky directions (default: the scene's sky.directions, 256)");
   l->add_option("-o,--output", light->out, "Output CSV x,y,z,light,dx,dy,dz (default: stdout)");
+  l->add_flag("--json", light->json,
+              "One JSON object on stdout: points, mean/min/max light, seconds, and the samples "
+              "unless -o writes them");
   l->callback([light] { run_light(*light); });
 
   auto grow = std::make_shared<GrowOptions>();

@@ -149,3 +149,34 @@ TEST(GrowCli, SetOverridesAnyParameterOverThePresetOrTheFile) {
 
 }  // namespace
 }  // namespace fspm
+
+namespace fspm {
+namespace {
+
+TEST(EnvironmentCli, LightJsonSummarizesTheSamples) {
+  const auto dir = testing::scratch_dir("light_json");
+  testing::write_text(dir / "open.json", R"({"occluders": []})");
+  testing::write_text(dir / "p.csv", "x,y,z\n0,0,1\n3,1,2\n-1,4,0.5\n");
+  const std::string base = "light --scene " + (dir / "open.json").string() + " --points " +
+                           (dir / "p.csv").string() + " --json";
+  const auto r = testing::run_fspm(base);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  // Under an open sky every point gets all of it, from the zenith.
+  EXPECT_EQ(j["points"], 3);
+  EXPECT_NEAR(j["mean_light"].get<double>(), 1.0, 1e-12);
+  EXPECT_NEAR(j["min_light"].get<double>(), 1.0, 1e-12);
+  ASSERT_EQ(j["samples"].size(), 3u);
+  EXPECT_EQ(j["samples"][1]["point"][0], 3.0);
+  EXPECT_NEAR(j["samples"][2]["direction"][2].get<double>(), 1.0, 1e-9);
+  // With -o the samples go to the file and the JSON names it.
+  const auto w = testing::run_fspm(base + " -o " + (dir / "out.csv").string());
+  ASSERT_EQ(w.exit_code, 0) << w.err;
+  const auto jw = nlohmann::json::parse(w.out);
+  EXPECT_FALSE(jw.contains("samples"));
+  EXPECT_EQ(jw["output"], (dir / "out.csv").string());
+  EXPECT_TRUE(std::filesystem::exists(dir / "out.csv"));
+}
+
+}  // namespace
+}  // namespace fspm
