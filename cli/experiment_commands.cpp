@@ -87,6 +87,7 @@ struct ReportOptions {
 struct CompareOptions {
   std::string dir;
   std::size_t jobs = 0;
+  bool json = false;
 };
 
 struct MergeOptions {
@@ -138,8 +139,8 @@ void emit_slurm(const RunOptions& o, const ex::Experiment& x) {
 
 // The experiment's comparisons over the runs recorded in `dir` (after fspm run, or after merging
 // shards with fspm compare).
-void compare_runs(const std::string& dir, std::size_t jobs, bool quiet) {
-  const ex::ComparisonResults c = ex::compare_results(dir, jobs);
+ex::ComparisonResults compare_runs(const std::string& dir, std::size_t jobs, bool quiet) {
+  ex::ComparisonResults c = ex::compare_results(dir, jobs);
   // A small version of a big experiment falls short in every group: a few notes suffice.
   constexpr std::size_t kShownNotes = 3;
   for (std::size_t i = 0; i < c.notes.size() && i < kShownNotes; ++i) {
@@ -149,7 +150,7 @@ void compare_runs(const std::string& dir, std::size_t jobs, bool quiet) {
     std::cerr << "fspm: ... and " << c.notes.size() - kShownNotes << " more notes in "
               << (fs::path(dir) / ex::kComparisonsFile).string() << '\n';
   }
-  if (quiet) return;
+  if (quiet) return c;
   std::cout << (fs::path(dir) / ex::kPairsFile).string() << ": " << c.pairs.size()
             << " pairs compared in " << c.seconds << " s\n";
   for (const ex::TTestRow& t : c.tests) {
@@ -157,6 +158,35 @@ void compare_runs(const std::string& dir, std::size_t jobs, bool quiet) {
               << ", df = " << t.df << ", p = " << t.p
               << (t.significant() ? " (significant)" : " (not significant)") << '\n';
   }
+  return c;
+}
+
+// `fspm compare --json`: the files written, the number of pairs and every t-test.
+nlohmann::json comparisons_json(const std::string& dir, const ex::ComparisonResults& c) {
+  nlohmann::json tests = nlohmann::json::array();
+  for (const ex::TTestRow& t : c.tests) {
+    tests.push_back({{"a", t.a},
+                     {"b", t.b},
+                     {"group", t.group},
+                     {"test", t.welch ? "welch" : "student"},
+                     {"alternative", t.alternative},
+                     {"t", t.t},
+                     {"df", t.df},
+                     {"p", t.p},
+                     {"alpha", t.alpha},
+                     {"significant", t.significant()},
+                     {"mean_a", t.mean_a},
+                     {"sd_a", t.sd_a},
+                     {"n_a", t.n_a},
+                     {"mean_b", t.mean_b},
+                     {"sd_b", t.sd_b},
+                     {"n_b", t.n_b}});
+  }
+  return {{"pairs_file", (fs::path(dir) / ex::kPairsFile).string()},
+          {"pairs", c.pairs.size()},
+          {"seconds", c.seconds},
+          {"notes", c.notes.size()},
+          {"ttests", std::move(tests)}};
 }
 
 // The experiment a result database was made from, read back from its stored text.
@@ -342,7 +372,10 @@ std::string tree_renders(const ex::Experiment& x, const std::vector<ex::RunRecor
   return md + notes;
 }
 
-void compare_command(const CompareOptions& o) { compare_runs(o.dir, o.jobs, false); }
+void compare_command(const CompareOptions& o) {
+  const ex::ComparisonResults c = compare_runs(o.dir, o.jobs, o.json);
+  if (o.json) print_json(comparisons_json(o.dir, c));
+}
 
 void report_command(const ReportOptions& o) {
   // Figures and renders draw through VTK, which needs an X display.
@@ -421,6 +454,8 @@ void add_experiment_commands(CLI::App& app) {
   cmp->add_option("DIR", compare->dir, "Output directory of fspm run (or of results merge)")
       ->required();
   cmp->add_option("-j,--jobs", compare->jobs, "Threads (default: one per hardware thread)");
+  cmp->add_flag("--json", compare->json,
+                "One JSON object on stdout: pairs, seconds and every t-test (t, df, p, means)");
   cmp->callback([compare] { compare_command(*compare); });
 
   auto report = std::make_shared<ReportOptions>();

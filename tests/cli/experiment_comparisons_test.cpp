@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "run_command.hpp"
@@ -50,6 +51,16 @@ TEST(ExperimentComparisons, RunComparesReportShowsAndCompareRecomputes) {
   const std::string md = read_text(dir / "out" / "report.md");
   EXPECT_NE(md.find("## Comparisons"), std::string::npos) << md;
   EXPECT_NE(md.find("| all | mean | 4 | 0 |"), std::string::npos) << md;
+  // --json: the closed-form distances (4 across, 0 within) in the t-test's means.
+  const CommandResult json = run_fspm("compare " + out + " --json");
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  const auto j = nlohmann::json::parse(json.out);
+  EXPECT_EQ(j["pairs"], 6);
+  ASSERT_EQ(j["ttests"].size(), 1u);
+  EXPECT_EQ(j["ttests"][0]["a"], "2-6");
+  EXPECT_EQ(j["ttests"][0]["mean_a"], 4.0);
+  EXPECT_EQ(j["ttests"][0]["mean_b"], 0.0);
+  EXPECT_EQ(j["ttests"][0]["n_a"], 4);
 }
 
 TEST(ExperimentComparisons, BadComparisonIsOneMessageBeforeAnyRun) {
