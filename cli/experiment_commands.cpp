@@ -82,6 +82,7 @@ struct ReportOptions {
   std::string dir;
   std::string output;
   bool no_figures = false;
+  bool json = false;
 };
 
 struct CompareOptions {
@@ -404,7 +405,16 @@ void report_command(const ReportOptions& o) {
   }
   const std::string path = o.output.empty() ? (fs::path(o.dir) / "report.md").string() : o.output;
   write_file_atomically(path, [&](std::ostream& out) { out << md; });
-  std::cout << path << '\n';
+  if (!o.json) {
+    std::cout << path << '\n';
+    return;
+  }
+  // What went in, and what was left out (a note in the report says why).
+  print_json({{"report", path},
+              {"runs", runs.size()},
+              {"experiment", x.has_value()},
+              {"figures", md.find("](figures/") != std::string::npos},
+              {"notes", md.find("\nNote: ") != std::string::npos}});
 }
 
 void merge_command(const MergeOptions& o) {
@@ -463,6 +473,9 @@ void add_experiment_commands(CLI::App& app) {
   rep->add_option("DIR", report->dir, "Output directory of fspm run")->required();
   rep->add_option("-o,--output", report->output, "Report path (default DIR/report.md)");
   rep->add_flag("--no-figures", report->no_figures, "Tables only (figures need an X display)");
+  rep->add_flag("--json", report->json,
+                "One JSON object on stdout: report path, runs, and whether the experiment's "
+                "tables, figures and notes are in it");
   rep->callback([report] { report_command(*report); });
 
   CLI::App* results = app.add_subcommand("results", "Export, summarize and merge sweep results");

@@ -61,6 +61,13 @@ TEST(ExperimentComparisons, RunComparesReportShowsAndCompareRecomputes) {
   EXPECT_EQ(j["ttests"][0]["mean_a"], 4.0);
   EXPECT_EQ(j["ttests"][0]["mean_b"], 0.0);
   EXPECT_EQ(j["ttests"][0]["n_a"], 4);
+  const CommandResult rj = run_fspm("report " + out + " --no-figures --json");
+  ASSERT_EQ(rj.exit_code, 0) << rj.err;
+  const auto r = nlohmann::json::parse(rj.out);
+  EXPECT_EQ(r["runs"], 8);
+  EXPECT_EQ(r["experiment"], true);
+  EXPECT_EQ(r["figures"], false);
+  EXPECT_EQ(r["report"], (dir / "out" / "report.md").string());
 }
 
 TEST(ExperimentComparisons, BadComparisonIsOneMessageBeforeAnyRun) {
