@@ -186,7 +186,9 @@ void add_adapt_commands(CLI::App& app) {
   auto opt = std::make_shared<AdaptOptions>();
   CLI::App* a = app.add_subcommand(
       "adapt", "Plastic trees (Pirk 4.3-4.4): bend and prune trees grown in the open for a scene");
-  a->add_option("TREE", opt->trees, "Input tree files (grown without obstacles)")->required();
+  a->add_option("TREE", opt->trees,
+                "Input tree files (.tree, .treeb, .nwk, .mtg), grown without obstacles")
+      ->required();
   a->add_option("--scene", opt->scenes,
                 "Scene file (JSON, see docs/environment.md); repeat it to re-adapt the same "
                 "analysed trees to several scenes (-o is then a directory, one folder per scene)")

@@ -211,9 +211,9 @@ void add_evaluation_commands(CLI::App& app) {
   auto d = std::make_shared<DistanceOptions>();
   CLI::App* dist = app.add_subcommand(
       "distance", "Constrained edit distance between two trees (Zhang; Ferraro and Godin)");
-  dist->add_option("A", d->a, "Tree file (.tree, .treeb, .nwk) or a Newick string '(...);'")
+  dist->add_option("A", d->a, "Tree file (.tree, .treeb, .nwk, .mtg) or a Newick string '(...);'")
       ->required();
-  dist->add_option("B", d->b, "Tree file or Newick string")->required();
+  dist->add_option("B", d->b, "Tree file (.tree, .treeb, .nwk, .mtg) or Newick string")->required();
   dist->add_option("--cost", d->cost, "Cost model: topological, absolute or standardized")
       ->capture_default_str();
   dist->add_option("--attr", d->attributes,
@@ -230,7 +230,8 @@ void add_evaluation_commands(CLI::App& app) {
 
   CLI::App* stats = app.add_subcommand("stats", "Statistics over groups of measurements");
   stats->require_subcommand(1);
-  const std::string file_help = "File with one number per line, or a CSV file with --column";
+  const std::string file_help =
+      "Text file with one number per line (a header line allowed), or a CSV file with --column";
 
   auto t = std::make_shared<TTestOptions>();
   CLI::App* tt = stats->add_subcommand("ttest", "Two-sample t-test (Student by default)");

@@ -496,9 +496,11 @@ void add_graphics_commands(CLI::App& app) {
   auto mesh = std::make_shared<MeshCommand>();
   CLI::App* m = app.add_subcommand(
       "mesh", "Mesh a tree: generalized cylinders along its chains, leaves as quads");
-  m->add_option("TREE", mesh->tree,
-                "Tree file, compressed plant (.ctree or plant .toml, meshed per substructure) or "
-                "scene (.json)")
+  m->add_option(
+       "TREE", mesh->tree,
+       "Tree file (.tree, .treeb, .nwk, .mtg), compressed plant (.ctree or plant .toml, meshed "
+       "per substructure) or "
+       "scene (.json)")
       ->required();
   m->add_option("-o,--output", mesh->out,
                 "Output: .obj (+.mtl), .ply, .vtp, .pvd or .glb (.glb keeps the instancing)")
@@ -529,7 +531,8 @@ void add_graphics_commands(CLI::App& app) {
   CLI::App* r =
       app.add_subcommand("render", "Offscreen figure of a tree or a scene of trees with VTK");
   r->add_option("TREE", render->tree,
-                "Tree file, compressed plant (.ctree, plant .toml) or scene (.json)")
+                "Tree file (.tree, .treeb, .nwk, .mtg), compressed plant (.ctree, plant .toml) or "
+                "scene (.json)")
       ->required();
   r->add_option("-o,--output", render->out, "Image: .png, .tif or .exr")->required();
   r->add_option("--format", render->format, "Input format: " + formats);
@@ -558,9 +561,11 @@ void add_graphics_commands(CLI::App& app) {
       "view",
       "Real-time viewer: drag to orbit, right-drag to pan, wheel to zoom, [ ] growth steps, "
       "S shadows, R reset, Esc quit");
-  v->add_option("FILE", view->trees,
-                "Tree files, compressed plants (.ctree, plant .toml) or scenes (.json), placed "
-                "side by side; or one .pvd growth sequence")
+  v->add_option(
+       "FILE", view->trees,
+       "Tree files (.tree, .treeb, .nwk, .mtg), compressed plants (.ctree, plant .toml) or "
+       "scenes (.json), placed "
+       "side by side; or one .pvd growth sequence")
       ->required();
   v->add_option("--format", view->format, "Input format: " + formats);
   v->add_option("--ages", view->ages,

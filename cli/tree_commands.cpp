@@ -102,7 +102,7 @@ void add_tree_commands(CLI::App& app) {
 
   auto conv = std::make_shared<ConvertOptions>();
   CLI::App* c = tree->add_subcommand("convert", "Convert a tree file to another format");
-  c->add_option("IN", conv->in, "Input tree file")->required();
+  c->add_option("IN", conv->in, "Input tree file (.tree, .treeb, .nwk, .mtg)")->required();
   c->add_option("OUT", conv->out, "Output tree file (.tree, .treeb, .nwk, .mtg)")->required();
   c->add_option("--from", conv->from, "Input format: " + formats);
   c->add_option("--format,--to", conv->to, "Output format: " + formats);
