@@ -120,11 +120,12 @@ std::string number(double v, int precision = 6) {
   return out.str();
 }
 
+// Two significant digits down to 0.001 (p = 0.0016, p = 0.034, p = 0.27), below it p < 0.001.
 std::string p_text(double p) {
   if (!std::isfinite(p)) return "p undefined";
   if (p < 0.001) return "p < 0.001";
   std::ostringstream out;
-  out.precision(2);
+  out.precision(p < 0.01 ? 4 : p < 0.1 ? 3 : 2);
   out << std::fixed << "p = " << p;
   return out.str();
 }

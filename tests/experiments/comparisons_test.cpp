@@ -120,6 +120,15 @@ TEST(Comparisons, SameSeedSamePairsAndFilesRoundTrip) {
   EXPECT_EQ(header, "comparison,group,run_a,run_b,seed_a,seed_b,distance,nodes_a,nodes_b");
   const std::string md = comparisons_markdown(x, back);
   EXPECT_NE(md.find("| length=1 | mean | 2 | 0 |"), std::string::npos) << md;
+  // p-values keep two significant digits down to 0.001.
+  back.tests = comparison_ttests(x, back.pairs);
+  ASSERT_FALSE(back.tests.empty());
+  for (const auto& [p, text] : std::vector<std::pair<double, std::string>>{
+           {0.0016, "p = 0.0016"}, {0.034, "p = 0.034"}, {0.27, "p = 0.27"}, {2e-5, "p < 0.001"}}) {
+    back.tests[0].p = p;
+    const std::string with_p = comparisons_markdown(x, back);
+    EXPECT_NE(with_p.find(text), std::string::npos) << p << "\n" << with_p;
+  }
 }
 
 TEST(Comparisons, SummaryTableGroupsRuns) {
