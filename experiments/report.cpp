@@ -1,5 +1,7 @@
 #include "experiments/report.hpp"
 
+#include <toml++/toml.h>
+
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -38,9 +40,30 @@ std::string cell(const Moments& m) {
   return m.n > 1 ? number(m.mean) + " ± " + number(m.sd()) : number(m.mean);
 }
 
-std::string unit_of(const std::string& metric) {
+// The unit of lengths: an L-system plant measures in the L-system's own units, every other model
+// (growth, adaptation, GreenLab, synthetic) in metres.
+std::string length_unit(std::string_view model_kind) {
+  return model_kind == "lsystem" ? "model units" : "m";
+}
+
+// The model kind of a stored experiment text, "" when it cannot be read.
+std::string model_kind_of(const std::string& experiment_text) {
+  try {
+    const toml::table t = toml::parse(std::string_view(experiment_text));
+    return t["model"]["kind"].value_or(std::string());
+  } catch (const toml::parse_error&) {
+    return {};
+  }
+}
+
+// " (unit)" of a metric, with the catalogue's "length" written as the model's length unit.
+std::string unit_of(const std::string& metric, std::string_view model_kind) {
   const MetricInfo* info = find_metric(metric);
-  return info == nullptr ? std::string() : " (" + std::string(info->unit) + ")";
+  if (info == nullptr) return {};
+  std::string unit(info->unit);
+  if (unit == "length") unit = length_unit(model_kind);
+  if (unit == "length^2") unit = length_unit(model_kind) + "^2";
+  return " (" + unit + ")";
 }
 
 std::string escape(const std::string& text) {
@@ -102,7 +125,10 @@ std::string markdown_report(const ExperimentInfo& info, const std::vector<RunRec
   md << "## Metrics per parameter point\n\nMean ± sample standard deviation over the successful "
         "replicates of each point.\n\n| point | runs |";
   for (const std::string& name : info.swept) md << ' ' << escape(name) << " |";
-  for (const std::string& metric : info.metrics) md << ' ' << metric << unit_of(metric) << " |";
+  const std::string kind = model_kind_of(info.experiment_text);
+  for (const std::string& metric : info.metrics) {
+    md << ' ' << metric << unit_of(metric, kind) << " |";
+  }
   md << "\n|---|---|";
   for (std::size_t i = 0; i < info.swept.size() + info.metrics.size(); ++i) md << "---|";
   md << '\n';
@@ -158,7 +184,9 @@ std::string summary_tables_markdown(const Experiment& experiment,
     md << "mean ± sample standard deviation over the successful runs.\n\n|";
     for (const std::string& name : table.by) md << ' ' << escape(name) << " |";
     md << " runs |";
-    for (const std::string& metric : table.metrics) md << ' ' << metric << unit_of(metric) << " |";
+    for (const std::string& metric : table.metrics) {
+      md << ' ' << metric << unit_of(metric, experiment.model_kind) << " |";
+    }
     md << "\n|";
     for (std::size_t i = 0; i < table.by.size() + table.metrics.size() + 1; ++i) md << "---|";
     md << '\n';

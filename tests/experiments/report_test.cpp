@@ -31,8 +31,13 @@ TEST(Report, MeansAndSampleDeviationsPerPoint) {
   EXPECT_NE(md.find("| 6 | 5 | 4 | 1 | 0 | 1 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| 0 | 3 | 6 | 2 ± 1 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| 1 | 2 | 7 | 10 |"), std::string::npos) << md;
-  EXPECT_NE(md.find("| height (length) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| height (m) |"), std::string::npos) << md;  // no model kind: metres
   EXPECT_NE(md.find("| 4 | error | boom \\| bang |"), std::string::npos) << md;
+  // An L-system plant measures in its own units.
+  info.experiment_text = "[experiment]\nname = \"r\"\n[model]\nkind = \"lsystem\"\n";
+  EXPECT_NE(markdown_report(info, runs).find("| height (model units) |"), std::string::npos);
+  info.experiment_text = "[model]\nkind = \"grow\"\n";
+  EXPECT_NE(markdown_report(info, runs).find("| height (m) |"), std::string::npos);
 }
 
 }  // namespace
