@@ -10,6 +10,7 @@
 #include "graphics/image.hpp"
 #include "tests/cli/run_command.hpp"
 #include "tests/cli/small_tree.hpp"
+#include "tests/graphics/image_checks.hpp"
 
 namespace fspm {
 namespace {
@@ -109,19 +110,7 @@ std::size_t changed_pixels(const graphics::Image& a, const graphics::Image& b) {
   return n;
 }
 
-// Grey pixels: the stone under the light kit's warm key light (red >= blue); neither the
-// white-to-blue background (blue > red) nor bark, leaves or grass (far from grey).
-std::size_t stone_pixels(const graphics::Image& image) {
-  std::size_t n = 0;
-  for (int y = 0; y < image.height; ++y) {
-    for (int x = 0; x < image.width; ++x) {
-      const auto* p = image.pixel(x, y);
-      const int lo = std::min({p[0], p[1], p[2]}), hi = std::max({p[0], p[1], p[2]});
-      if (hi - lo < 24 && p[0] >= p[2] && hi > 60 && hi < 235) ++n;
-    }
-  }
-  return n;
-}
+using graphics::testing::stone_pixels;
 
 TEST(ObstacleCli, RenderWithAWallBeforeTheCameraShowsTheWall) {
   const auto dir = scratch_dir("obstacle_render");

@@ -14,6 +14,7 @@
 #include "graphics/tree_mesher.hpp"
 #include "graphics/viewer.hpp"
 #include "graphics/vtk_readback.hpp"
+#include "tests/graphics/image_checks.hpp"
 #include "tests/graphics/test_trees.hpp"
 
 namespace fspm::graphics {
@@ -118,19 +119,7 @@ TEST_F(ObstacleMaterial, VtpRoundTripKeepsTheMaterial) {
   EXPECT_EQ(back.triangle_count(Material::kObstacle), 2u);
 }
 
-// Grey pixels: the obstacle's stone under the light kit's warm key light (red >= blue); not the
-// white-to-blue background (blue > red) nor bark or leaves (far from grey).
-std::size_t stone_pixels(const Image& image) {
-  std::size_t n = 0;
-  for (int y = 0; y < image.height; ++y) {
-    for (int x = 0; x < image.width; ++x) {
-      const auto* p = image.pixel(x, y);
-      const int lo = std::min({p[0], p[1], p[2]}), hi = std::max({p[0], p[1], p[2]});
-      if (hi - lo < 24 && p[0] >= p[2] && hi > 60 && hi < 235) ++n;
-    }
-  }
-  return n;
-}
+using testing::stone_pixels;
 
 TEST_F(ObstacleMaterial, RendersDrawTheStoneInFlatInstancedAndColouredPaths) {
   if (!render_available()) GTEST_SKIP() << "built without VTK";
