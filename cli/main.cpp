@@ -30,15 +30,15 @@ int main(int argc, char** argv) {
 
   fspm::cli::add_tree_commands(app);
   fspm::cli::add_environment_commands(app);
-  fspm::cli::add_experiment_commands(app);
   fspm::cli::add_lsystem_commands(app);
-  fspm::cli::add_graphics_commands(app);
   fspm::cli::add_greenlab_commands(app);
   fspm::cli::add_evaluation_commands(app);
   fspm::cli::add_adapt_commands(app);
+  fspm::cli::add_full_commands(app);
 
   try {
     try {
+      fspm::cli::hand_over_full_commands(argc, argv);
       app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
       const int code = app.exit(e);  // --help and --version print on stdout

@@ -1,0 +1,91 @@
+// fspm: the commands that need the graphics and experiments libraries are listed in --help like
+// the others, and hand the whole command line to fspm-full, which lies beside this executable.
+// Loading VTK, OpenImageIO and MPI (about 300 shared libraries, most of a second) is then paid
+// only by the commands that use them; `fspm --version` and `fspm tree info` start at once.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <array>
+#include <cerrno>
+#include <climits>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
+#include "fspm/error.hpp"
+
+namespace fspm::cli {
+namespace {
+
+struct ForwardedCommand {
+  const char* name;
+  const char* description;
+};
+
+// The same names and descriptions as fspm-full's (tested: both --help list the same commands).
+constexpr std::array<ForwardedCommand, 7> kForwarded = {{
+    {"run", "Run a parameter sweep described by an experiment file"},
+    {"compare", "Compute an experiment's [[comparison]] distances and t-tests over its results"},
+    {"report", "Write DIR/report.md: tables of a sweep's results"},
+    {"results", "Export, summarize and merge sweep results"},
+    {"mesh", "Mesh a tree: generalized cylinders along its chains, leaves as quads"},
+    {"render", "Offscreen figure of a tree or a scene of trees with VTK"},
+    {"view",
+     "Real-time viewer: drag to orbit, right-drag to pan, wheel to zoom, [ ] growth steps, "
+     "S shadows, R reset, Esc quit"},
+}};
+
+std::filesystem::path full_executable() {
+  std::array<char, PATH_MAX> self{};
+  const ssize_t n = ::readlink("/proc/self/exe", self.data(), self.size() - 1);
+  if (n <= 0) {
+    throw IoError(std::string("cannot find this executable's folder (/proc/self/exe): ") +
+                  std::strerror(errno));
+  }
+  return std::filesystem::path(std::string(self.data(), static_cast<std::size_t>(n)))
+             .parent_path() /
+         "fspm-full";
+}
+
+// Replaces this process by fspm-full with the same arguments: its output, exit code and signals
+// are the command's own. Returns only by throwing.
+[[noreturn]] void hand_over(int argc, char** argv) {
+  const std::filesystem::path full = full_executable();
+  std::cout.flush();
+  finish_standard_output();
+  std::string program = full.string();
+  std::vector<char*> args(argv, argv + argc);
+  args.push_back(nullptr);
+  args[0] = program.data();
+  ::execv(program.c_str(), args.data());
+  throw IoError("this command needs " + program + " (installed beside fspm): " +
+                std::strerror(errno));
+}
+
+}  // namespace
+
+void add_full_commands(CLI::App& app) {
+  // Listed for --help only: hand_over_full_commands() has replaced the process before parsing
+  // when the command line names one of them.
+  for (const ForwardedCommand& c : kForwarded) app.add_subcommand(c.name, c.description);
+}
+
+void hand_over_full_commands(int argc, char** argv) {
+  // The command is the first argument that is not an option: fspm's own options (-v, -q,
+  // --help, --version) take no value.
+  for (int k = 1; k < argc; ++k) {
+    const std::string_view arg = argv[k];
+    if (arg.starts_with('-')) continue;
+    for (const ForwardedCommand& c : kForwarded) {
+      if (arg == c.name) hand_over(argc, argv);
+    }
+    return;
+  }
+}
+
+}  // namespace fspm::cli
