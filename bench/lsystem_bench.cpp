@@ -1,14 +1,18 @@
-// L-system throughput (issue 3, item 8). Single core.
+// L-system throughput. Single core.
 //   derive/abop_1_24a/10: ABOP fig. 1.24a, F -> F[+F]F[-F]F, n = 10 (24.4 million modules).
 //     Goals: >= 100 million modules/s, <= 16 bytes/module.
 //   derive/parametric_tree/20: ABOP eq. 1.9, A(s) -> F(s)[+A(s/R)][-A(s/R)], n = 20
 //     (8.4 million modules). Goal: >= 20 million modules/s.
 //   interpret/abop_1_24a/N: turtle into a TreeGraph. Goal: >= 20 million modules/s.
+//   derive_compressed/abop_1_24a/20 and derive_compressed/parametric_tree/40: the same grammars
+//     derived into shared substructures (Jaeger et al. 2010, 2.1.3) at n where no explicit
+//     string fits (2.4 * 10^14 and 8.8 * 10^12 modules). Goal: under 1 ms and 1 MB each.
 // "modules/s" counts the modules of the final string per second of the whole run.
 #include <benchmark/benchmark.h>
 
 #include "lsystem/derivation.hpp"
 #include "lsystem/parser.hpp"
+#include "lsystem/substructure_derivation.hpp"
 #include "lsystem/turtle.hpp"
 
 namespace {
@@ -46,6 +50,40 @@ BENCHMARK(BM_DeriveParametricTree)
     ->Name("derive/parametric_tree")
     ->Arg(20)
     ->Unit(benchmark::kMillisecond);
+
+void derive_compressed_bench(benchmark::State& state, const char* grammar) {
+  const LSystem sys = parse_lsystem(grammar);
+  DeriveOptions options;
+  options.steps = static_cast<int>(state.range(0));
+  SubstructureCounts counts;
+  std::size_t nodes = 0, bytes = 0;
+  for (auto _ : state) {
+    const SubstructureGraph g = derive_substructures(sys, options);
+    counts = count_modules(g, sys.symbols.size());
+    nodes = g.nodes.size();
+    bytes = g.memory_bytes();
+    benchmark::DoNotOptimize(counts.modules);
+  }
+  state.counters["modules"] = static_cast<double>(counts.modules);
+  state.counters["graph_nodes"] = static_cast<double>(nodes);
+  state.counters["graph_bytes"] = static_cast<double>(bytes);
+}
+
+void BM_DeriveCompressedAbop124a(benchmark::State& state) {
+  derive_compressed_bench(state, kAbop124a);
+}
+BENCHMARK(BM_DeriveCompressedAbop124a)
+    ->Name("derive_compressed/abop_1_24a")
+    ->Arg(20)
+    ->Unit(benchmark::kMicrosecond);
+
+void BM_DeriveCompressedParametricTree(benchmark::State& state) {
+  derive_compressed_bench(state, kParametricTree);
+}
+BENCHMARK(BM_DeriveCompressedParametricTree)
+    ->Name("derive_compressed/parametric_tree")
+    ->Arg(40)
+    ->Unit(benchmark::kMicrosecond);
 
 void BM_InterpretAbop124a(benchmark::State& state) {
   const LSystem sys = parse_lsystem(kAbop124a);

@@ -14,6 +14,7 @@
 #include "fspm/tree_file.hpp"
 #include "lsystem/derivation.hpp"
 #include "lsystem/parser.hpp"
+#include "lsystem/substructure_derivation.hpp"
 #include "lsystem/turtle.hpp"
 
 namespace fspm::cli {
@@ -27,6 +28,7 @@ struct LsystemOptions {
   std::size_t budget = lsystem::kDefaultModuleBudget;
   bool string = false;
   bool json = false;
+  bool compressed = false;
   std::string view;
   std::string output;
   std::string format;
@@ -63,8 +65,67 @@ void add_common(CLI::App* cmd, LsystemOptions& o) {
       ->check(number_in(1, 1e15));
 }
 
+nlohmann::json symbol_counts(const std::vector<std::uint64_t>& per_symbol,
+                             const lsystem::SymbolTable& table) {
+  nlohmann::json symbols = nlohmann::json::object();
+  for (std::size_t i = 0; i < per_symbol.size(); ++i) {
+    if (per_symbol[i]) symbols[table.name(static_cast<lsystem::SymbolId>(i))] = per_symbol[i];
+  }
+  return symbols;
+}
+
+// --compressed: the string as a graph of shared substructures (Jaeger 2.1.3), its module counts
+// computed on the graph.
+void run_derive_compressed(const LsystemOptions& o, const lsystem::LSystem& sys) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const lsystem::SubstructureGraph g = lsystem::derive_substructures(sys, derive_options(o));
+  const lsystem::SubstructureCounts c = lsystem::count_modules(g, sys.symbols.size());
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const std::size_t graph_bytes = g.memory_bytes();
+  const double compression =
+      static_cast<double>(c.explicit_bytes) / static_cast<double>(std::max<std::size_t>(graph_bytes, 1));
+  spdlog::info("{}: {} steps, {} modules as {} substructures ({} bytes) in {:.6f} s", o.file,
+               g.steps, c.modules, g.nodes.size(), graph_bytes, seconds);
+  const nlohmann::json symbols = symbol_counts(c.per_symbol, sys.symbols);
+  std::string text;
+  if (o.string) text = lsystem::to_string(lsystem::expand(g, o.budget), sys.symbols);
+  if (o.json) {
+    nlohmann::json j = {{"steps", g.steps},          {"modules", c.modules},
+                        {"symbols", symbols},        {"compressed", true},
+                        {"graph_nodes", g.nodes.size()}, {"graph_bytes", graph_bytes},
+                        {"explicit_bytes", c.explicit_bytes}, {"compression", compression},
+                        {"seconds", seconds}};
+    // Counts of 2^64 - 1 or more stay at 2^64 - 1.
+    if (c.saturated) j["counts_saturated"] = true;
+    if (o.string) j["string"] = text;
+    print_json(j);
+    return;
+  }
+  if (o.string) {
+    std::cout << text << '\n';
+    return;
+  }
+  std::cout << "steps: " << g.steps << '\n'
+            << "modules: " << (c.saturated ? "at least " : "") << c.modules << '\n';
+  std::cout << "symbols: " << symbols.dump() << (c.saturated ? " (counts stop at 2^64 - 1)" : "")
+            << '\n';
+  std::cout << "substructures: " << g.nodes.size() << " (" << graph_bytes << " bytes, "
+            << compression << " times smaller than the string)\n";
+}
+
 void run_derive(const LsystemOptions& o) {
   const lsystem::LSystem sys = lsystem::parse_lsystem_file(o.file, parse_defines(o.defines));
+  std::string why_not;
+  if (o.compressed) {
+    if (const auto obstacle = lsystem::factorization_obstacle(sys)) {
+      why_not = "it has " + *obstacle;
+      spdlog::warn("{}: derived explicitly, not into substructures: {}", o.file, why_not);
+    } else {
+      run_derive_compressed(o, sys);
+      return;
+    }
+  }
   const auto t0 = std::chrono::steady_clock::now();
   lsystem::Derivation d(sys, derive_options(o));
   d.run();
@@ -74,12 +135,13 @@ void run_derive(const LsystemOptions& o) {
   spdlog::info("{}: {} steps, {} modules in {:.3f} s", o.file, d.steps_done(), s.size(), seconds);
   std::vector<std::uint64_t> per_symbol(sys.symbols.size(), 0);
   for (lsystem::SymbolId id : s.symbols()) ++per_symbol[id];
-  nlohmann::json symbols = nlohmann::json::object();
-  for (std::size_t i = 0; i < per_symbol.size(); ++i) {
-    if (per_symbol[i]) symbols[sys.symbols.name(static_cast<lsystem::SymbolId>(i))] = per_symbol[i];
-  }
+  const nlohmann::json symbols = symbol_counts(per_symbol, sys.symbols);
   if (o.json) {
     nlohmann::json j = {{"steps", d.steps_done()}, {"modules", s.size()}, {"symbols", symbols}};
+    if (o.compressed) {
+      j["compressed"] = false;
+      j["why_not_compressed"] = why_not;
+    }
     if (o.string) j["string"] = lsystem::to_string(s, sys.symbols);
     print_json(j);
     return;
@@ -135,6 +197,10 @@ void add_lsystem_commands(CLI::App& app) {
   add_common(derive, *derive_opts);
   derive->add_flag("--string", derive_opts->string, "Print the derived string (cpfg notation)");
   derive->add_flag("--json", derive_opts->json, "One JSON object: steps, modules, symbols");
+  derive->add_flag("--compressed", derive_opts->compressed,
+                   "Derive into shared substructures (context-free L-systems without ran() or "
+                   "per-step blocks): counts of strings far too large to hold; --json adds "
+                   "graph_nodes, graph_bytes, explicit_bytes and compression");
   derive->callback([derive_opts] { run_derive(*derive_opts); });
 
   auto interp_opts = std::make_shared<LsystemOptions>();

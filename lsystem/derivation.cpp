@@ -110,6 +110,19 @@ void Derivation::step() {
   run_block(sys_.end_each_block);
 }
 
+void Derivation::rewrite_module(SymbolId symbol, std::span<const double> parameters,
+                                ModuleString& out) {
+  module_.clear();
+  if (parametric_) module_.make_parametric();
+  module_.push_back(symbol, parameters);
+  if (fast_) {
+    rewrite_fast(module_, out);
+  } else {
+    rewrite(sys_.productions, module_, out);
+  }
+  apply_group_repeatedly(sys_.decomposition, out);
+}
+
 void Derivation::check_budget(std::size_t size) const {
   if (size > options_.module_budget) {
     throw ValueError("the string grows past the module budget of " +

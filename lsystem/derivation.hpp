@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <optional>
 #include <random>
+#include <span>
 #include <vector>
 
 #include "lsystem/lsystem.hpp"
@@ -57,6 +58,11 @@ class Derivation {
   // unchanged).
   ModuleString interpretation_string();
 
+  // One derivation step of a single module (its production, then decomposition) into `out`.
+  // For a context-free L-system without cut, queries or per-step blocks this is exactly the
+  // module's part of step() in any string (lsystem/substructure_derivation.hpp relies on it).
+  void rewrite_module(SymbolId symbol, std::span<const double> parameters, ModuleString& out);
+
  private:
   // Rewrites `in` into `out` with `group`; returns true when some production applied.
   bool rewrite(const ProductionGroup& group, const ModuleString& in, ModuleString& out);
@@ -80,6 +86,7 @@ class Derivation {
   std::vector<double> locals_;
   std::vector<double> args_;
   ModuleString current_, next_;
+  ModuleString module_;  // rewrite_module's input
   int steps_done_ = 0;
   int target_steps_ = 0;
   bool parametric_ = false;

@@ -110,6 +110,13 @@ bool Expression::is_constant(double* out) const {
   return true;
 }
 
+bool Expression::is_pure() const {
+  for (const Node& node : nodes_) {
+    if (node.op == Op::kAssignGlobal || node.op == Op::kRan || node.op == Op::kNran) return false;
+  }
+  return true;
+}
+
 void Expression::division_by_zero() const {
   throw ValueError("division by zero", position_.file, position_.line, position_.column);
 }

@@ -53,6 +53,10 @@ class Expression {
   double evaluate(EvalState& state) const { return eval(root_, state); }
   // True when the expression is a plain constant (value in *out).
   bool is_constant(double* out = nullptr) const;
+  // True when evaluating it draws no random number and assigns no global variable (local
+  // assignments allowed): its value depends only on the locals and globals it reads, so the
+  // same module rewrites the same way wherever and whenever it stands.
+  bool is_pure() const;
   const SourcePosition& position() const { return position_; }
 
  private:

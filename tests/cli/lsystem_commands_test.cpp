@@ -33,6 +33,44 @@ TEST(LsystemCli, DeriveJsonCountsFollowTheClosedForm) {
   EXPECT_FALSE(j.contains("string"));
 }
 
+// n = 20 is 2.4 * 10^14 modules: only the substructure graph holds it. Counts from the closed
+// form above; at n = 5 the compressed and explicit derivations print the same counts.
+TEST(LsystemCli, CompressedDeriveCountsStringsTooLargeToHold) {
+  const auto r =
+      run_fspm("lsystem derive " + example("abop_1_24a.l") + " --steps 20 --compressed --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const std::uint64_t f = 95367431640625;  // 5^20
+  EXPECT_EQ(j["compressed"], true);
+  EXPECT_EQ(j["symbols"]["F"], f);
+  EXPECT_EQ(j["symbols"]["["], (f - 1) / 2);
+  EXPECT_EQ(j["symbols"]["+"], (f - 1) / 4);
+  EXPECT_LE(j["graph_nodes"].get<int>(), 25);
+  EXPECT_LT(j["graph_bytes"].get<double>(), 1e6);
+  EXPECT_GT(j["compression"].get<double>(), 1e9);
+  const auto small = nlohmann::json::parse(
+      run_fspm("lsystem derive " + example("monopodial_tree.l") + " --compressed --json").out);
+  const auto expl = nlohmann::json::parse(
+      run_fspm("lsystem derive " + example("monopodial_tree.l") + " --json").out);
+  EXPECT_EQ(small["symbols"], expl["symbols"]);
+  EXPECT_EQ(small["modules"], expl["modules"]);
+}
+
+TEST(LsystemCli, CompressedDeriveOfAContextSensitiveSystemSaysWhyAndDerivesExplicitly) {
+  const auto r = run_fspm("lsystem derive " + example("context_sensitive_plant.l") +
+                          " --compressed --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["compressed"], false);
+  EXPECT_NE(j["why_not_compressed"].get<std::string>().find("context-sensitive"),
+            std::string::npos);
+  EXPECT_NE(r.err.find("context-sensitive"), std::string::npos) << r.err;
+  const auto plain =
+      nlohmann::json::parse(run_fspm("lsystem derive " + example("context_sensitive_plant.l") +
+                                     " --json").out);
+  EXPECT_EQ(j["modules"], plain["modules"]);
+}
+
 TEST(LsystemCli, DeriveStringStepsDefineAndSeed) {
   const auto r = run_fspm("lsystem derive " + example("parametric_tree.l") +
                           " --steps 1 --define R=2 --string --json");
