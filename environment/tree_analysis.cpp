@@ -186,15 +186,12 @@ void grid_light(const TreeGraph& t, const Scene& open, const Eigen::Vector3d& sk
 
 }  // namespace
 
-TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
-                          const Eigen::Vector3d& brightest) {
-  if (t.empty()) throw ValueError("plastic analysis: the tree is empty");
-  params.validate();
-  const std::size_t n = t.size();
-  TreeAnalysis a;
-  a.params = params;
+namespace {
 
-  // Skeleton threshold.
+// Skeleton threshold and skeleton: internodes at least 2.5 times as thick as the thinnest (or
+// params.skeleton_radius_m), connected to the root.
+void find_skeleton(const TreeGraph& t, const AnalysisParams& params, TreeAnalysis& a) {
+  const std::size_t n = t.size();
   double thinnest = std::numeric_limits<double>::infinity();
   for (NodeId i = 0; i < n; ++i) {
     if (is_internode(t, i) && t.radius(i) > 0.0) thinnest = std::min(thinnest, t.radius(i));
@@ -209,8 +206,12 @@ TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
     a.skeleton[i] =
         i == 0 || (is_internode(t, i) && t.radius(i) >= a.skeleton_radius_m && a.skeleton[p] != 0);
   }
+}
 
-  // Fine subtrees hanging from the skeleton become leaf clusters.
+// Fine subtrees hanging from the skeleton become leaf clusters: centre, bounding radius and
+// translucency (eq. 4.4).
+void form_leaf_clusters(const TreeGraph& t, const AnalysisParams& params, TreeAnalysis& a) {
+  const std::size_t n = t.size();
   a.cluster_of.assign(n, kNoCluster);
   for (NodeId i = 1; i < n; ++i) {
     if (a.skeleton[i]) continue;
@@ -237,18 +238,23 @@ TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
     c.radius_m = r;
     c.translucency = cluster_translucency(r, params.gamma0);  // eq. 4.4
   }
+}
 
-  // Internode length l_i: mean-shift mode of the nearest-branching distances (Fig. 4.2 a).
-  {
-    std::vector<double> d = branching_distances(t);
-    std::vector<double> sorted = d;
-    std::sort(sorted.begin(), sorted.end());
-    const double median = sorted.empty() ? 0.0 : sorted[sorted.size() / 2];
-    a.internode_length_m = mean_shift_mode(std::move(d), 0.25 * median);
-    if (!(a.internode_length_m > 0.0)) a.internode_length_m = std::max(t.length(0), 1e-3);
-  }
+// Internode length l_i: mean-shift mode of the nearest-branching distances (Fig. 4.2 a).
+void estimate_internode_length(const TreeGraph& t, TreeAnalysis& a) {
+  std::vector<double> d = branching_distances(t);
+  std::vector<double> sorted = d;
+  std::sort(sorted.begin(), sorted.end());
+  const double median = sorted.empty() ? 0.0 : sorted[sorted.size() / 2];
+  a.internode_length_m = mean_shift_mode(std::move(d), 0.25 * median);
+  if (!(a.internode_length_m > 0.0)) a.internode_length_m = std::max(t.length(0), 1e-3);
+}
 
-  // Path distances: d_{s,r} root -> segment start, d_{s,l} segment start -> furthest tip below.
+// Growth rates (Pirk eq. 4.1) from the path distances d_{s,r} (root to segment start) and
+// d_{s,l} (segment start to the furthest tip below), and the season each segment started in
+// (eq. 4.2).
+void estimate_ages(const TreeGraph& t, TreeAnalysis& a) {
+  const std::size_t n = t.size();
   std::vector<double> to_root(n, 0.0), to_leaf(n, 0.0);
   for (NodeId i = 1; i < n; ++i) {
     to_root[i] =
@@ -287,6 +293,180 @@ TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
     a.age[i] = static_cast<int>(std::floor(before + 1e-9));
     a.max_age = std::max(a.max_age, a.age[i]);
   }
+}
+
+// Pruning factors of the final stage: zeta (eq. 4.11) over the clusters below, over the skeleton
+// length below; `light_sum` gets every segment's light direction from the same sums (the
+// adaptation repeats this loop exactly). Every factor is also appended to `all`.
+void final_pruning_factors(const TreeGraph& t, TreeAnalysis& a,
+                           std::vector<Eigen::Vector3d>& light_sum, std::vector<double>& all) {
+  const std::size_t n = t.size();
+  std::vector<double> zeta(n, 0.0), length_below(n, 0.0);
+  light_sum.assign(n, Eigen::Vector3d::Zero());
+  for (std::uint32_t c = 0; c < a.clusters.size(); ++c) {
+    const double z = cluster_resources(a.clusters[c].radius_m, a.cluster_light[c]);
+    zeta[a.clusters[c].anchor] += z;
+    light_sum[a.clusters[c].anchor] += z * a.cluster_direction[c];
+  }
+  for (NodeId i = static_cast<NodeId>(n); i-- > 0;) {
+    if (!a.skeleton[i]) continue;
+    length_below[i] += t.length(i);
+    if (i > 0) {
+      zeta[t.parent(i)] += zeta[i];
+      light_sum[t.parent(i)] += light_sum[i];
+      length_below[t.parent(i)] += length_below[i];
+    }
+  }
+  a.pruning_factor.assign(n, 0.0);
+  for (NodeId i = 0; i < n; ++i) {
+    if (!a.skeleton[i] || length_below[i] <= 0.0) continue;
+    a.pruning_factor[i] = zeta[i] / length_below[i];
+    all.push_back(a.pruning_factor[i]);
+  }
+}
+
+// A leaf cluster of an earlier growth stage (Pirk 4.3.2, Fig. 4.3).
+struct StageCluster {
+  NodeId node;
+  Eigen::Vector3d center;
+  double radius_m;
+  bool moved = false;
+};
+
+// Stage T: the segments younger than T are gone and their clusters move to the nearest remaining
+// ancestor; clusters meeting on one node merge with the radius of eq. 4.5.
+std::vector<StageCluster> earlier_stage(const TreeGraph& t, const TreeAnalysis& a, int T,
+                                        std::vector<StageCluster> stage) {
+  const Eigen::Vector3d root = t.start(0);
+  for (StageCluster& c : stage) {
+    c.moved = false;
+    while (c.node != 0 && a.age[c.node] > T) {
+      c.node = t.parent(c.node);
+      c.moved = true;
+    }
+  }
+  std::stable_sort(stage.begin(), stage.end(),
+                   [](const StageCluster& x, const StageCluster& y) { return x.node < y.node; });
+  std::vector<StageCluster> merged;
+  for (std::size_t i = 0; i < stage.size();) {
+    std::size_t j = i;
+    while (j < stage.size() && stage[j].node == stage[i].node) ++j;
+    if (j - i == 1 && !stage[i].moved) {
+      merged.push_back(stage[i]);
+    } else {
+      // Pirk eq. 4.5, read with the distance ratio per child inside the sum:
+      // r_n^3 = sum r_i^3 d_n / d_i (the printed product over all children shrinks a merged
+      // cluster below any of its parts once a few merge); centre at the node.
+      const Eigen::Vector3d centre = t.end(stage[i].node);
+      const double d_n = (centre - root).norm();
+      double volume = 0.0;
+      for (std::size_t k = i; k < j; ++k) {
+        const double d_i = (stage[k].center - root).norm();
+        const double ratio = d_i > 1e-9 ? std::min(1.0, d_n / d_i) : 1.0;
+        volume += std::pow(stage[k].radius_m, 3) * ratio;
+      }
+      merged.push_back({stage[i].node, centre, std::max(1e-3, std::cbrt(volume)), false});
+    }
+    i = j;
+  }
+  return merged;
+}
+
+// Every earlier stage's light gives psi_s(T) for the segments alive then: `stage_min` keeps each
+// segment's smallest, `all` gets every one.
+void stage_pruning_factors(const TreeGraph& t, const AnalysisParams& params, const Scene& scene,
+                           const TreeAnalysis& a, std::vector<double>& stage_min,
+                           std::vector<double>& all) {
+  const std::size_t n = t.size();
+  std::vector<double> zeta(n, 0.0), length_below(n, 0.0);
+  std::vector<StageCluster> stage;
+  for (const LeafCluster& c : a.clusters) stage.push_back({c.anchor, c.center, c.radius_m, false});
+  for (int T = params.temporal_pruning ? a.max_age - 1 : -1; T >= 0; --T) {
+    stage = earlier_stage(t, a, T, std::move(stage));
+    Scene past = scene;
+    past.spheres.clear();
+    for (const StageCluster& c : stage) {
+      past.spheres.push_back(
+          {c.center, c.radius_m, cluster_translucency(c.radius_m, params.gamma0), false});
+    }
+    const LightModel past_light(past);
+    std::fill(zeta.begin(), zeta.end(), 0.0);
+    std::fill(length_below.begin(), length_below.end(), 0.0);
+    for (std::uint32_t c = 0; c < stage.size(); ++c) {
+      const double r = stage[c].radius_m;
+      zeta[stage[c].node] += cluster_resources(r, past_light.evaluate(stage[c].center, c).light);
+    }
+    for (NodeId i = static_cast<NodeId>(n); i-- > 0;) {
+      if (!a.skeleton[i] || a.age[i] > T) continue;
+      length_below[i] += t.length(i);
+      if (i > 0) {
+        zeta[t.parent(i)] += zeta[i];
+        length_below[t.parent(i)] += length_below[i];
+      }
+    }
+    for (NodeId i = 0; i < n; ++i) {
+      if (!a.skeleton[i] || a.age[i] > T || length_below[i] <= 0.0) continue;
+      const double psi = zeta[i] / length_below[i];
+      all.push_back(psi);
+      stage_min[i] = std::min(stage_min[i], psi);
+    }
+  }
+}
+
+// Pirk eq. 4.12 over every stage: the reference factor (a percentile of all) and each skeleton
+// segment's minimum.
+void minimum_pruning_factors(const AnalysisParams& params, const std::vector<double>& stage_min,
+                             std::vector<double> all, TreeAnalysis& a) {
+  if (!all.empty()) {
+    std::sort(all.begin(), all.end());
+    const auto k =
+        static_cast<std::size_t>(params.reference_percentile * static_cast<double>(all.size() - 1));
+    a.reference_pruning_factor = all[k];
+  }
+  a.min_pruning_factor.assign(stage_min.size(), 0.0);
+  for (std::size_t i = 0; i < stage_min.size(); ++i) {
+    if (!a.skeleton[i]) continue;
+    a.min_pruning_factor[i] =
+        params.pruning_strength * std::min(a.reference_pruning_factor, stage_min[i]);
+  }
+}
+
+// Inverse tropism per skeleton segment (eq. 4.7-4.10) with the light direction of its clusters.
+void inverse_tropisms(const TreeGraph& t, const AnalysisParams& params,
+                      const std::vector<Eigen::Vector3d>& light_sum,
+                      const Eigen::Vector3d& open_direction, TreeAnalysis& a) {
+  const std::size_t n = t.size();
+  const double w_sum = params.phototropism + params.gravitropism;
+  const Eigen::Vector3d g = params.gravity_direction.normalized();
+  a.tropism_weight.assign(n, 1.0);
+  a.tropism.assign(n, Eigen::Vector3d::Zero());
+  a.original_direction.assign(n, Eigen::Vector3d::UnitZ());
+  for (NodeId i = 0; i < n; ++i) {
+    const Eigen::Vector3d h =
+        t.direction(i).norm() > 0.0 ? Eigen::Vector3d(t.direction(i)) : Eigen::Vector3d::UnitZ();
+    a.original_direction[i] = h.normalized();
+    if (!a.skeleton[i] || w_sum <= 0.0) continue;
+    const Eigen::Vector3d v = segment_light_direction(light_sum[i], open_direction);
+    a.tropism[i] = (params.phototropism * v + params.gravitropism * g) / w_sum;
+    a.tropism_weight[i] = std::pow(1.0 - w_sum, t.length(i) / a.internode_length_m);
+    a.original_direction[i] = inverse_tropism(h, a.tropism[i], a.tropism_weight[i]);
+  }
+}
+
+}  // namespace
+
+// Pirk 4.3: skeleton and clusters, ages, the final stage's light, pruning factors over every
+// growth stage, and the tropisms that grew the tree.
+TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
+                          const Eigen::Vector3d& brightest) {
+  if (t.empty()) throw ValueError("plastic analysis: the tree is empty");
+  params.validate();
+  TreeAnalysis a;
+  a.params = params;
+  find_skeleton(t, params, a);
+  form_leaf_clusters(t, params, a);
+  estimate_internode_length(t, a);
+  estimate_ages(t, a);
 
   // Light of the final stage: the tree's clusters alone under an open sky, one evaluation per
   // cluster (the adaptation starts from this cache).
@@ -303,139 +483,13 @@ TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
     sky_light(a, field);
   }
 
-  // Pruning: zeta (eq. 4.11) over the clusters below, over the skeleton length below; the light
-  // direction of every segment from the same sums (the adaptation repeats this loop exactly).
-  std::vector<double> zeta(n, 0.0), length_below(n, 0.0);
-  std::vector<Eigen::Vector3d> light_sum(n, Eigen::Vector3d::Zero());
-  for (std::uint32_t c = 0; c < a.clusters.size(); ++c) {
-    const double z = cluster_resources(a.clusters[c].radius_m, a.cluster_light[c]);
-    zeta[a.clusters[c].anchor] += z;
-    light_sum[a.clusters[c].anchor] += z * a.cluster_direction[c];
-  }
-  for (NodeId i = static_cast<NodeId>(n); i-- > 0;) {
-    if (!a.skeleton[i]) continue;
-    length_below[i] += t.length(i);
-    if (i > 0) {
-      zeta[t.parent(i)] += zeta[i];
-      light_sum[t.parent(i)] += light_sum[i];
-      length_below[t.parent(i)] += length_below[i];
-    }
-  }
-  a.pruning_factor.assign(n, 0.0);
+  std::vector<Eigen::Vector3d> light_sum;
   std::vector<double> all;
-  for (NodeId i = 0; i < n; ++i) {
-    if (!a.skeleton[i] || length_below[i] <= 0.0) continue;
-    a.pruning_factor[i] = zeta[i] / length_below[i];
-    all.push_back(a.pruning_factor[i]);
-  }
-  // Earlier growth stages (Pirk 4.3.2, Fig. 4.3): at stage T the segments younger than T are gone
-  // and their clusters move to the nearest remaining ancestor; clusters meeting on one node merge
-  // with the radius of eq. 4.5. Every stage's light gives psi_s(T) for the segments alive then.
+  final_pruning_factors(t, a, light_sum, all);
   std::vector<double> stage_min = a.pruning_factor;
-  {
-    struct StageCluster {
-      NodeId node;
-      Eigen::Vector3d center;
-      double radius_m;
-      bool moved = false;
-    };
-    std::vector<StageCluster> stage;
-    for (const LeafCluster& c : a.clusters)
-      stage.push_back({c.anchor, c.center, c.radius_m, false});
-    const Eigen::Vector3d root = t.start(0);
-    for (int T = params.temporal_pruning ? a.max_age - 1 : -1; T >= 0; --T) {
-      for (StageCluster& c : stage) {
-        c.moved = false;
-        while (c.node != 0 && a.age[c.node] > T) {
-          c.node = t.parent(c.node);
-          c.moved = true;
-        }
-      }
-      std::stable_sort(
-          stage.begin(), stage.end(),
-          [](const StageCluster& x, const StageCluster& y) { return x.node < y.node; });
-      std::vector<StageCluster> merged;
-      for (std::size_t i = 0; i < stage.size();) {
-        std::size_t j = i;
-        while (j < stage.size() && stage[j].node == stage[i].node) ++j;
-        if (j - i == 1 && !stage[i].moved) {
-          merged.push_back(stage[i]);
-        } else {
-          // Pirk eq. 4.5, read with the distance ratio per child inside the sum:
-          // r_n^3 = sum r_i^3 d_n / d_i (the printed product over all children shrinks a merged
-          // cluster below any of its parts once a few merge); centre at the node.
-          const Eigen::Vector3d centre = t.end(stage[i].node);
-          const double d_n = (centre - root).norm();
-          double volume = 0.0;
-          for (std::size_t k = i; k < j; ++k) {
-            const double d_i = (stage[k].center - root).norm();
-            const double ratio = d_i > 1e-9 ? std::min(1.0, d_n / d_i) : 1.0;
-            volume += std::pow(stage[k].radius_m, 3) * ratio;
-          }
-          merged.push_back({stage[i].node, centre, std::max(1e-3, std::cbrt(volume)), false});
-        }
-        i = j;
-      }
-      stage = std::move(merged);
-      Scene past = scene;
-      past.spheres.clear();
-      for (const StageCluster& c : stage) {
-        past.spheres.push_back(
-            {c.center, c.radius_m, cluster_translucency(c.radius_m, params.gamma0), false});
-      }
-      const LightModel past_light(past);
-      std::fill(zeta.begin(), zeta.end(), 0.0);
-      std::fill(length_below.begin(), length_below.end(), 0.0);
-      for (std::uint32_t c = 0; c < stage.size(); ++c) {
-        const double r = stage[c].radius_m;
-        zeta[stage[c].node] += cluster_resources(r, past_light.evaluate(stage[c].center, c).light);
-      }
-      for (NodeId i = static_cast<NodeId>(n); i-- > 0;) {
-        if (!a.skeleton[i] || a.age[i] > T) continue;
-        length_below[i] += t.length(i);
-        if (i > 0) {
-          zeta[t.parent(i)] += zeta[i];
-          length_below[t.parent(i)] += length_below[i];
-        }
-      }
-      for (NodeId i = 0; i < n; ++i) {
-        if (!a.skeleton[i] || a.age[i] > T || length_below[i] <= 0.0) continue;
-        const double psi = zeta[i] / length_below[i];
-        all.push_back(psi);
-        stage_min[i] = std::min(stage_min[i], psi);
-      }
-    }
-  }
-  if (!all.empty()) {
-    std::sort(all.begin(), all.end());
-    const auto k =
-        static_cast<std::size_t>(params.reference_percentile * static_cast<double>(all.size() - 1));
-    a.reference_pruning_factor = all[k];
-  }
-  a.min_pruning_factor.assign(n, 0.0);
-  for (NodeId i = 0; i < n; ++i) {
-    if (!a.skeleton[i]) continue;
-    // Pirk eq. 4.12 over every stage.
-    a.min_pruning_factor[i] =
-        params.pruning_strength * std::min(a.reference_pruning_factor, stage_min[i]);
-  }
-
-  // Inverse tropism per skeleton segment (eq. 4.7-4.10) with the light direction of its clusters.
-  const double w_sum = params.phototropism + params.gravitropism;
-  const Eigen::Vector3d g = params.gravity_direction.normalized();
-  a.tropism_weight.assign(n, 1.0);
-  a.tropism.assign(n, Eigen::Vector3d::Zero());
-  a.original_direction.assign(n, Eigen::Vector3d::UnitZ());
-  for (NodeId i = 0; i < n; ++i) {
-    const Eigen::Vector3d h =
-        t.direction(i).norm() > 0.0 ? Eigen::Vector3d(t.direction(i)) : Eigen::Vector3d::UnitZ();
-    a.original_direction[i] = h.normalized();
-    if (!a.skeleton[i] || w_sum <= 0.0) continue;
-    const Eigen::Vector3d v = segment_light_direction(light_sum[i], field.open_direction());
-    a.tropism[i] = (params.phototropism * v + params.gravitropism * g) / w_sum;
-    a.tropism_weight[i] = std::pow(1.0 - w_sum, t.length(i) / a.internode_length_m);
-    a.original_direction[i] = inverse_tropism(h, a.tropism[i], a.tropism_weight[i]);
-  }
+  stage_pruning_factors(t, params, scene, a, stage_min, all);
+  minimum_pruning_factors(params, stage_min, std::move(all), a);
+  inverse_tropisms(t, params, light_sum, field.open_direction(), a);
   return a;
 }
 
