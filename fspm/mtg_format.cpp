@@ -179,35 +179,60 @@ Eigen::Vector3d perpendicular(const Eigen::Vector3d& d) {
   return d.cross(a).normalized();
 }
 
-}  // namespace
-
-TreeGraph parse_mtg(std::string_view text, const std::string& file) {
-  // Lines without comments ('#' to the end of the line).
-  std::vector<std::string_view> lines;
-  for (std::size_t from = 0; from <= text.size();) {
-    std::size_t end = text.find('\n', from);
-    if (end == std::string_view::npos) end = text.size();
-    std::string_view line = text.substr(from, end - from);
-    if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) {
-      line = line.substr(0, hash);
-    }
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    lines.push_back(line);
-    from = end + 1;
+// The MTG FORM-A reader: the sections in file order (CLASSES, the table header, the entity
+// table), then the tree of the finest scale's entities.
+class MtgParser {
+ public:
+  MtgParser(std::string_view text, const std::string& file) : file_(file) {
+    split_lines(text);
+    class_scale_.fill(-1);
+    seen_scale_.fill(-1);
   }
-  const auto fail = [&](const std::string& what, std::size_t index) -> void {
-    throw ParseError(what, file, static_cast<int>(index + 1));
-  };
 
-  // CLASSES gives each symbol's scale (used to find what '^' and a branch refer to); features
-  // are named in the table's own header.
-  std::size_t k = 0;
-  std::array<int, 128> class_scale;
-  class_scale.fill(-1);
-  while (k < lines.size() && trim(lines[k]) != "MTG:") {
-    if (trim(lines[k]) == "CLASSES:") {
-      for (++k; k < lines.size(); ++k) {
-        const std::string_view row = trim(lines[k]);
+  TreeGraph parse() {
+    std::size_t k = read_classes();
+    k = read_header(k);
+    for (; k < lines_.size(); ++k) {
+      if (!trim(lines_[k]).empty()) read_entity_line(k);
+    }
+    if (entities_.empty()) {
+      fail("the MTG: table has no entity after its ENTITY-CODE header (is the file truncated?)",
+           header_index_);
+    }
+    return build_tree();
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& what, std::size_t index) const {
+    throw ParseError(what, file_, static_cast<int>(index + 1));
+  }
+
+  // Lines without comments ('#' to the end of the line).
+  void split_lines(std::string_view text) {
+    for (std::size_t from = 0; from <= text.size();) {
+      std::size_t end = text.find('\n', from);
+      if (end == std::string_view::npos) end = text.size();
+      std::string_view line = text.substr(from, end - from);
+      if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) {
+        line = line.substr(0, hash);
+      }
+      if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+      lines_.push_back(line);
+      from = end + 1;
+    }
+  }
+
+  // CLASSES gives each symbol's scale (used to find what '^' and a branch refer to). Returns the
+  // index of the "MTG:" line.
+  std::size_t read_classes() {
+    std::size_t k = 0;
+    while (k < lines_.size() && trim(lines_[k]) != "MTG:") {
+      if (trim(lines_[k]) != "CLASSES:") {
+        ++k;
+        continue;
+      }
+      for (++k; k < lines_.size(); ++k) {
+        const std::string_view row = trim(lines_[k]);
         if (row.empty() || row.starts_with("SYMBOL")) continue;
         if (row.back() == ':' || row.starts_with("DESCRIPTION") || row.starts_with("FEATURES") ||
             row == "MTG:") {
@@ -218,280 +243,295 @@ TreeGraph parse_mtg(std::string_view text, const std::string& file) {
         if (sym.size() == 1 && cells.size() > 1) {
           const auto sc = parse_number(trim(cells[1]));
           if (sc && *sc >= 0.0 && *sc <= 1000.0) {  // a scale is a small whole number
-            class_scale[static_cast<unsigned char>(sym[0]) & 127] = static_cast<int>(*sc);
+            class_scale_[static_cast<unsigned char>(sym[0]) & 127] = static_cast<int>(*sc);
           }
         }
       }
-      continue;
     }
-    ++k;
+    if (k == lines_.size()) fail("no 'MTG:' section: expected an MTG (FORM-A) file", 0);
+    return k;
   }
-  if (k == lines.size()) fail("no 'MTG:' section: expected an MTG (FORM-A) file", 0);
-  ++k;
-  while (k < lines.size() && trim(lines[k]).empty()) ++k;
-  if (k == lines.size() || !trim(lines[k]).starts_with("ENTITY-CODE")) {
-    fail("expected the header line 'ENTITY-CODE' after 'MTG:'", std::min(k, lines.size() - 1));
-  }
-  // Header: ENTITY-CODE, empty cells for the code columns, then the feature names.
-  const std::size_t header_index = k;
-  const std::vector<std::string_view> header = split_tabs(lines[k]);
-  std::size_t code_columns = 1;
-  while (code_columns < header.size() && trim(header[code_columns]).empty()) ++code_columns;
-  // Each code column is one more level of branching.
-  if (code_columns > static_cast<std::size_t>(kMaxTreeDepth)) {
-    fail(nesting_too_deep(kMaxTreeDepth, "ENTITY-CODE columns"), k);
-  }
-  std::vector<std::string> features;
-  for (std::size_t c = code_columns; c < header.size(); ++c) {
-    features.emplace_back(trim(header[c]));
-  }
-  ++k;
 
-  std::vector<Entity> entities;
-  // Entities written in each code column, oldest first.
-  std::vector<std::vector<int>> column_entities(code_columns);
+  // Header: ENTITY-CODE, empty cells for the code columns, then the feature names (the features
+  // are named in the table's own header). Returns the index of the first table line.
+  std::size_t read_header(std::size_t k) {
+    ++k;
+    while (k < lines_.size() && trim(lines_[k]).empty()) ++k;
+    if (k == lines_.size() || !trim(lines_[k]).starts_with("ENTITY-CODE")) {
+      fail("expected the header line 'ENTITY-CODE' after 'MTG:'", std::min(k, lines_.size() - 1));
+    }
+    header_index_ = k;
+    const std::vector<std::string_view> header = split_tabs(lines_[k]);
+    code_columns_ = 1;
+    while (code_columns_ < header.size() && trim(header[code_columns_]).empty()) ++code_columns_;
+    // Each code column is one more level of branching.
+    if (code_columns_ > static_cast<std::size_t>(kMaxTreeDepth)) {
+      fail(nesting_too_deep(kMaxTreeDepth, "ENTITY-CODE columns"), k);
+    }
+    for (std::size_t c = code_columns_; c < header.size(); ++c) {
+      features_.emplace_back(trim(header[c]));
+    }
+    column_entities_.resize(code_columns_);
+    return k + 1;
+  }
+
   // A symbol's scale: CLASSES', else the scale it had where it appeared first in the table.
-  std::array<int, 128> seen_scale;
-  seen_scale.fill(-1);
-  const auto scale_of_symbol = [&](char c) {
-    const int from_classes = class_scale[static_cast<unsigned char>(c) & 127];
-    return from_classes >= 0 ? from_classes : seen_scale[static_cast<unsigned char>(c) & 127];
-  };
+  int scale_of_symbol(char c) const {
+    const int from_classes = class_scale_[static_cast<unsigned char>(c) & 127];
+    return from_classes >= 0 ? from_classes : seen_scale_[static_cast<unsigned char>(c) & 127];
+  }
+
   // Whether an entity already in the table has the scale of a new entity's symbol (unknown for
   // a symbol not seen yet: then any entity will do).
-  const auto same_scale = [&](const Entity& candidate, char symbol) {
+  bool same_scale(const Entity& candidate, char symbol) const {
     const int want = scale_of_symbol(symbol);
     if (want < 0) return true;
-    const int have = class_scale[static_cast<unsigned char>(candidate.symbol) & 127];
+    const int have = class_scale_[static_cast<unsigned char>(candidate.symbol) & 127];
     return (have >= 0 ? have : candidate.scale) == want;
-  };
+  }
+
   // What a line's first entity refers to in a column: for '/', the last entity there; for '<'
   // and '+', the last one of the same scale (so that "^<U2" follows the unit U1 above, not the
   // internodes written after it).
-  const auto last_in_column = [&](std::size_t col, char relation, char symbol) {
-    const std::vector<int>& list = column_entities[col];
+  int last_in_column(std::size_t col, char relation, char symbol) const {
+    const std::vector<int>& list = column_entities_[col];
     for (auto it = list.rbegin(); it != list.rend(); ++it) {
-      if (relation == '/' || same_scale(entities[static_cast<std::size_t>(*it)], symbol)) {
+      if (relation == '/' || same_scale(entities_[static_cast<std::size_t>(*it)], symbol)) {
         return *it;
       }
     }
     return -1;
-  };
-  for (; k < lines.size(); ++k) {
-    if (trim(lines[k]).empty()) continue;
-    const std::vector<std::string_view> cells = split_tabs(lines[k]);
+  }
+
+  // One table line: its entity code (one or more entities) in the first non-empty code column,
+  // and the feature cells of its last entity.
+  void read_entity_line(std::size_t k) {
+    const std::vector<std::string_view> cells = split_tabs(lines_[k]);
     std::size_t column = 0;
-    while (column < cells.size() && column < code_columns && trim(cells[column]).empty()) {
+    while (column < cells.size() && column < code_columns_ && trim(cells[column]).empty()) {
       ++column;
     }
-    if (column >= code_columns || column >= cells.size()) {
-      fail("expected an entity code in the first " + std::to_string(code_columns) +
+    if (column >= code_columns_ || column >= cells.size()) {
+      fail("expected an entity code in the first " + std::to_string(code_columns_) +
                " columns (the ENTITY-CODE columns of the header)",
            k);
     }
     const std::string_view code = trim(cells[column]);
     int previous = -1;
     for (std::size_t p = 0; p < code.size();) {
-      Entity e;
-      e.line = static_cast<int>(k + 1);
-      bool same_column = false;
-      if (code[p] == '^') {
-        same_column = true;
-        ++p;
-      }
-      if (p >= code.size() || (code[p] != '/' && code[p] != '<' && code[p] != '+')) {
-        fail("entity code '" + std::string(code) +
-                 "': expected a relation '/', '<' or '+' (optionally after '^')",
-             k);
-      }
-      e.relation = code[p++];
-      if (p >= code.size() || !is_letter(code[p])) {
-        fail("entity code '" + std::string(code) + "': expected a symbol letter after '" +
-                 std::string(1, e.relation) + "'",
-             k);
-      }
-      e.symbol = code[p++];
-      const std::size_t digits = p;
-      while (p < code.size() && is_digit(code[p]) && p - digits < 15) ++p;
-      if (p > digits) e.index = *parse_number(code.substr(digits, p - digits));
-      while (p < code.size() && is_digit(code[p])) ++p;  // beyond 15 digits: not kept
-      if (previous >= 0) {
-        if (same_column) fail("entity code '" + std::string(code) + "': '^' only at its start", k);
-        e.ref = previous;
-      } else if (same_column) {
-        e.ref = last_in_column(column, e.relation, e.symbol);
-        if (e.ref < 0) {
-          fail(
-              "'^' refers to an entity above in this column (of the same scale), but there is "
-              "none",
-              k);
-        }
-      } else if (column > 0) {
-        e.ref = last_in_column(column - 1, e.relation, e.symbol);
-        if (e.ref < 0) {
-          fail("the entity refers to the column on its left, which holds none of its scale", k);
-        }
-      }
-      if (e.ref < 0 && e.relation != '/') {
-        fail("the first entity must be a plant or component ('/'), not '" +
-                 std::string(1, e.relation) + "'",
-             k);
-      }
-      if (e.ref >= 0) {
-        const Entity& r = entities[static_cast<std::size_t>(e.ref)];
-        e.scale = e.relation == '/' ? r.scale + 1 : r.scale;
-        e.complex = e.relation == '/' ? e.ref : r.complex;
-        e.axis_of = e.relation == '/' ? e.ref : e.relation == '<' ? r.axis_of : -1;
-      }
-      int& seen = seen_scale[static_cast<unsigned char>(e.symbol) & 127];
-      if (seen < 0) seen = e.scale;
-      previous = static_cast<int>(entities.size());
-      column_entities[column].push_back(previous);
-      entities.push_back(std::move(e));
+      previous = read_entity(code, p, column, previous, k);
     }
     if (previous < 0) fail("empty entity code", k);
-    Entity& last = entities[static_cast<std::size_t>(previous)];
-    for (std::size_t c = code_columns; c < cells.size(); ++c) last.values.push_back(cells[c]);
-    if (last.values.size() > features.size()) {
+    Entity& last = entities_[static_cast<std::size_t>(previous)];
+    for (std::size_t c = code_columns_; c < cells.size(); ++c) last.values.push_back(cells[c]);
+    if (last.values.size() > features_.size()) {
       bool extra = false;
-      for (std::size_t c = features.size(); c < last.values.size(); ++c) {
+      for (std::size_t c = features_.size(); c < last.values.size(); ++c) {
         extra = extra || !trim(last.values[c]).empty();
       }
       if (extra) fail("more feature values than feature names in the header", k);
     }
   }
-  if (entities.empty()) {
-    fail("the MTG: table has no entity after its ENTITY-CODE header (is the file truncated?)",
-         header_index);
+
+  // The entity at code[p...] ('^'? relation, symbol, digits), related to `previous` on the same
+  // line or to an entity of the column; advances p and returns the entity's index.
+  int read_entity(std::string_view code, std::size_t& p, std::size_t column, int previous,
+                  std::size_t k) {
+    Entity e;
+    e.line = static_cast<int>(k + 1);
+    bool same_column = false;
+    if (code[p] == '^') {
+      same_column = true;
+      ++p;
+    }
+    if (p >= code.size() || (code[p] != '/' && code[p] != '<' && code[p] != '+')) {
+      fail("entity code '" + std::string(code) +
+               "': expected a relation '/', '<' or '+' (optionally after '^')",
+           k);
+    }
+    e.relation = code[p++];
+    if (p >= code.size() || !is_letter(code[p])) {
+      fail("entity code '" + std::string(code) + "': expected a symbol letter after '" +
+               std::string(1, e.relation) + "'",
+           k);
+    }
+    e.symbol = code[p++];
+    const std::size_t digits = p;
+    while (p < code.size() && is_digit(code[p]) && p - digits < 15) ++p;
+    if (p > digits) e.index = *parse_number(code.substr(digits, p - digits));
+    while (p < code.size() && is_digit(code[p])) ++p;  // beyond 15 digits: not kept
+    e.ref = entity_reference(e, code, column, previous, same_column, k);
+    if (e.ref >= 0) {
+      const Entity& r = entities_[static_cast<std::size_t>(e.ref)];
+      e.scale = e.relation == '/' ? r.scale + 1 : r.scale;
+      e.complex = e.relation == '/' ? e.ref : r.complex;
+      e.axis_of = e.relation == '/' ? e.ref : e.relation == '<' ? r.axis_of : -1;
+    }
+    int& seen = seen_scale_[static_cast<unsigned char>(e.symbol) & 127];
+    if (seen < 0) seen = e.scale;
+    const int index = static_cast<int>(entities_.size());
+    column_entities_[column].push_back(index);
+    entities_.push_back(std::move(e));
+    return index;
   }
 
-  // The finest scale's entities are the nodes. A component's parent at that scale: its
-  // predecessor or bearer there, or, for the first component of a complex ('/'), the last
-  // finest component of whatever that complex follows or is borne by.
-  int finest = 0;
-  for (const Entity& e : entities) finest = std::max(finest, e.scale);
-  if (finest <= 1) return {};  // plants without components (what write_mtg gives for no tree)
-  std::vector<NodeId> node_of(entities.size(), kNoNode);
-  std::vector<NodeId> last_component(entities.size(), kNoNode);
-  std::vector<char> edge(entities.size(), 0);  // '<' or '+' toward the node's parent
+  // The entity `e` relates to: the previous one on its line, the last suitable one in its own
+  // column ('^') or in the column on its left; -1 for the first plant.
+  int entity_reference(const Entity& e, std::string_view code, std::size_t column, int previous,
+                       bool same_column, std::size_t k) const {
+    int ref = -1;
+    if (previous >= 0) {
+      if (same_column) fail("entity code '" + std::string(code) + "': '^' only at its start", k);
+      ref = previous;
+    } else if (same_column) {
+      ref = last_in_column(column, e.relation, e.symbol);
+      if (ref < 0) {
+        fail("'^' refers to an entity above in this column (of the same scale), but there is none",
+             k);
+      }
+    } else if (column > 0) {
+      ref = last_in_column(column - 1, e.relation, e.symbol);
+      if (ref < 0) {
+        fail("the entity refers to the column on its left, which holds none of its scale", k);
+      }
+    }
+    if (ref < 0 && e.relation != '/') {
+      fail("the first entity must be a plant or component ('/'), not '" +
+               std::string(1, e.relation) + "'",
+           k);
+    }
+    return ref;
+  }
 
-  // Feature columns by role.
-  const auto find_feature = [&](std::initializer_list<const char*> names) {
+  int find_feature(std::initializer_list<const char*> names) const {
     for (const char* n : names) {
-      for (std::size_t f = 0; f < features.size(); ++f) {
-        if (features[f] == n) return static_cast<int>(f);
+      for (std::size_t f = 0; f < features_.size(); ++f) {
+        if (features_[f] == n) return static_cast<int>(f);
       }
     }
     return -1;
-  };
-  const int fx = find_feature({"XX"}), fy = find_feature({"YY"}), fz = find_feature({"ZZ"});
-  const int f_length = find_feature({"Length", "length"});
-  const int f_radius = find_feature({"Radius", "radius"});
-  const int f_diameter = find_feature({"Diameter", "diameter", "TopDia", "TopDiameter"});
-  const int f_birth = find_feature({"BirthTime"});
-  const int f_order = find_feature({"Order"});
-  TreeGraph tree;
-  std::vector<std::pair<int, std::string>> attributes;
-  for (std::size_t f = 0; f < features.size(); ++f) {
-    const int fi = static_cast<int>(f);
-    if (fi == fx || fi == fy || fi == fz || fi == f_length || fi == f_radius || fi == f_diameter ||
-        fi == f_birth || fi == f_order || features[f].empty()) {
-      continue;
-    }
-    attributes.emplace_back(fi, features[f]);
   }
-  // Feature values are numbers where given; a cell that is not a number is an error for the
-  // geometric features and leaves other features out (text features such as dates are kept out
-  // of the tree's numeric attributes).
-  std::vector<std::uint8_t> numeric(features.size(), 1);
-  for (const Entity& e : entities) {
-    for (std::size_t f = 0; f < e.values.size() && f < features.size(); ++f) {
-      const std::string_view v = trim(e.values[f]);
-      if (!v.empty() && !parse_number(v)) numeric[f] = 0;
+
+  // Feature columns by role; every other named feature becomes a numeric attribute when all its
+  // values are numbers (text features such as dates are kept out of the tree's attributes).
+  void assign_feature_roles(TreeGraph& tree) {
+    fx_ = find_feature({"XX"});
+    fy_ = find_feature({"YY"});
+    fz_ = find_feature({"ZZ"});
+    f_length_ = find_feature({"Length", "length"});
+    f_radius_ = find_feature({"Radius", "radius"});
+    f_diameter_ = find_feature({"Diameter", "diameter", "TopDia", "TopDiameter"});
+    f_birth_ = find_feature({"BirthTime"});
+    f_order_ = find_feature({"Order"});
+    for (std::size_t f = 0; f < features_.size(); ++f) {
+      const int fi = static_cast<int>(f);
+      if (fi == fx_ || fi == fy_ || fi == fz_ || fi == f_length_ || fi == f_radius_ ||
+          fi == f_diameter_ || fi == f_birth_ || fi == f_order_ || features_[f].empty()) {
+        continue;
+      }
+      attributes_.emplace_back(fi, features_[f]);
+    }
+    numeric_.assign(features_.size(), 1);
+    for (const Entity& e : entities_) {
+      for (std::size_t f = 0; f < e.values.size() && f < features_.size(); ++f) {
+        const std::string_view v = trim(e.values[f]);
+        if (!v.empty() && !parse_number(v)) numeric_[f] = 0;
+      }
+    }
+    for (const auto& [f, name] : attributes_) {
+      if (numeric_[static_cast<std::size_t>(f)] && !tree.has_attribute(name)) {
+        tree.add_attribute(name, std::numeric_limits<double>::quiet_NaN());
+      }
     }
   }
-  for (const auto& [f, name] : attributes) {
-    if (numeric[static_cast<std::size_t>(f)] && !tree.has_attribute(name)) {
-      tree.add_attribute(name, std::numeric_limits<double>::quiet_NaN());
-    }
-  }
+
+  static std::string index_name(char symbol) { return std::string(1, symbol) + "_index"; }
+
   // The label numbers: each node's own ("index") and those of the complexes it belongs to, one
   // attribute per coarser symbol ("U_index": the growth unit of an internode), so that what the
-  // coarser scales group stays available.
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::array<std::uint8_t, 128> complex_symbol{};
-  for (const Entity& e : entities) {
-    if (e.scale != finest) continue;
-    for (int c = e.complex; c >= 0; c = entities[static_cast<std::size_t>(c)].complex) {
-      complex_symbol[static_cast<unsigned char>(entities[static_cast<std::size_t>(c)].symbol) &
-                     127] = 1;
+  // coarser scales group stays available. A feature of the same name (a file fspm wrote from an
+  // imported tree) keeps its values.
+  void add_index_attributes(TreeGraph& tree) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (const Entity& e : entities_) {
+      if (e.scale != finest_) continue;
+      for (int c = e.complex; c >= 0; c = entities_[static_cast<std::size_t>(c)].complex) {
+        complex_symbol_[static_cast<unsigned char>(entities_[static_cast<std::size_t>(c)].symbol) &
+                        127] = 1;
+      }
+    }
+    own_index_ = !tree.has_attribute("index");
+    if (own_index_) tree.add_attribute("index", nan);
+    for (int c = 0; c < 128; ++c) {
+      if (complex_symbol_[static_cast<std::size_t>(c)] && tree.has_attribute(index_name(char(c)))) {
+        complex_symbol_[static_cast<std::size_t>(c)] = 0;
+      } else if (complex_symbol_[static_cast<std::size_t>(c)]) {
+        tree.add_attribute(index_name(static_cast<char>(c)), nan);
+      }
     }
   }
-  // A feature of the same name (a file fspm wrote from an imported tree) keeps its values.
-  const auto index_name = [](char symbol) { return std::string(1, symbol) + "_index"; };
-  const bool own_index = !tree.has_attribute("index");
-  if (own_index) tree.add_attribute("index", nan);
-  for (int c = 0; c < 128; ++c) {
-    if (complex_symbol[static_cast<std::size_t>(c)] && tree.has_attribute(index_name(char(c)))) {
-      complex_symbol[static_cast<std::size_t>(c)] = 0;
-    } else if (complex_symbol[static_cast<std::size_t>(c)]) {
-      tree.add_attribute(index_name(static_cast<char>(c)), nan);
-    }
-  }
-  const auto value = [&](const Entity& e, int f) -> std::optional<double> {
+
+  std::optional<double> value(const Entity& e, int f) const {
     if (f < 0 || static_cast<std::size_t>(f) >= e.values.size()) return std::nullopt;
     const std::string_view v = trim(e.values[static_cast<std::size_t>(f)]);
     if (v.empty()) return std::nullopt;
     const std::optional<double> d = parse_number(v);
     if (!d) {
-      throw ParseError("feature " + features[static_cast<std::size_t>(f)] + ": '" + std::string(v) +
-                           "' is not a number",
-                       file, e.line);
+      throw ParseError("feature " + features_[static_cast<std::size_t>(f)] + ": '" +
+                           std::string(v) + "' is not a number",
+                       file_, e.line);
     }
     return d;
-  };
+  }
 
-  // Turtle: branches placed on each node so far, and each node's depth, so that branches turn by
-  // the divergence angle from node to node along an axis (phyllotaxis) and between siblings.
-  std::vector<int> branches_of(1, 0), depth_of(1, 0);
-  constexpr double kBranchAngle = 45.0 * std::numbers::pi / 180.0;
-  constexpr double kDivergence = 137.5 * std::numbers::pi / 180.0;
-  for (std::size_t i = 0; i < entities.size(); ++i) {
-    const Entity& e = entities[i];
-    if (e.scale != finest) continue;
+  // The finest scale's entities are the nodes.
+  TreeGraph build_tree() {
+    for (const Entity& e : entities_) finest_ = std::max(finest_, e.scale);
+    if (finest_ <= 1) return {};  // plants without components (what write_mtg gives for no tree)
+    TreeGraph tree;
+    assign_feature_roles(tree);
+    add_index_attributes(tree);
+    node_of_.assign(entities_.size(), kNoNode);
+    last_component_.assign(entities_.size(), kNoNode);
+    branches_of_.assign(1, 0);
+    depth_of_.assign(1, 0);
+    for (std::size_t i = 0; i < entities_.size(); ++i) {
+      if (entities_[i].scale == finest_) add_node(tree, i);
+    }
+    return tree;
+  }
+
+  // A component's parent at the finest scale: its predecessor or bearer there, or, for the first
+  // component of a complex ('/'), the last finest component of whatever that complex follows or
+  // is borne by. `relation` becomes the relation toward that parent.
+  NodeId parent_node(const Entity& e, char& relation) const {
+    relation = e.relation;
+    if (e.relation != '/' && e.ref >= 0 && node_of_[static_cast<std::size_t>(e.ref)] != kNoNode) {
+      return node_of_[static_cast<std::size_t>(e.ref)];
+    }
+    // First component of a complex: climb the complexes until one follows or is borne by
+    // another entity with finest components.
     NodeId parent = kNoNode;
-    char relation = e.relation;
-    if (e.relation != '/' && e.ref >= 0 && node_of[static_cast<std::size_t>(e.ref)] != kNoNode) {
-      parent = node_of[static_cast<std::size_t>(e.ref)];
-    } else {
-      // First component of a complex: climb the complexes until one follows or is borne by
-      // another entity with finest components.
-      int c = e.relation == '/' ? e.ref : -1;
-      while (c >= 0 && parent == kNoNode) {
-        const Entity& ce = entities[static_cast<std::size_t>(c)];
-        if (ce.relation != '/' && ce.ref >= 0) {
-          parent = last_component[static_cast<std::size_t>(ce.ref)];
-          relation = ce.relation;
-        }
-        c = ce.relation == '/' ? ce.ref : -1;
+    int c = e.relation == '/' ? e.ref : -1;
+    while (c >= 0 && parent == kNoNode) {
+      const Entity& ce = entities_[static_cast<std::size_t>(c)];
+      if (ce.relation != '/' && ce.ref >= 0) {
+        parent = last_component_[static_cast<std::size_t>(ce.ref)];
+        relation = ce.relation;
       }
+      c = ce.relation == '/' ? ce.ref : -1;
     }
-    if (parent == kNoNode && !tree.empty()) {
-      throw ParseError(
-          "a second tree: this entity is connected to nothing before it (fspm reads one plant "
-          "per file)",
-          file, e.line);
-    }
-    NodeData d;
-    d.kind = kind_of(e.symbol);
-    const std::optional<double> length = value(e, f_length);
-    const std::optional<double> x = value(e, fx), y = value(e, fy), z = value(e, fz);
-    if (const auto r = value(e, f_radius)) {
-      d.radius = *r;
-    } else if (const auto dia = value(e, f_diameter)) {
-      d.radius = 0.5 * *dia;
-    }
-    if (const auto b = value(e, f_birth)) d.birth_time = *b;
+    return parent;
+  }
+
+  // Where a node lies: its XX/YY/ZZ when given, else a turtle that continues the parent's heading
+  // or branches off it, turning by the divergence angle from node to node along an axis
+  // (phyllotaxis) and between siblings.
+  void place(const TreeGraph& tree, const Entity& e, NodeId parent, char relation, NodeData& d) {
+    constexpr double kBranchAngle = 45.0 * std::numbers::pi / 180.0;
+    constexpr double kDivergence = 137.5 * std::numbers::pi / 180.0;
+    const std::optional<double> length = value(e, f_length_);
+    const std::optional<double> x = value(e, fx_), y = value(e, fy_), z = value(e, fz_);
     const Eigen::Vector3d base = parent == kNoNode ? Eigen::Vector3d::Zero() : tree.end(parent);
     if (x && y && z) {
       d.end = {*x, *y, *z};
@@ -503,31 +543,52 @@ TreeGraph parse_mtg(std::string_view text, const std::string& file) {
         d.start = d.end - length.value_or(0.0) * Eigen::Vector3d::UnitZ();
       }
       if (length) d.length = *length;
-    } else {
-      // Turtle: continue the parent's heading, or branch off it.
-      Eigen::Vector3d heading = Eigen::Vector3d::UnitZ();
-      if (parent != kNoNode) {
-        heading = tree.direction(parent);
-        if (heading.squaredNorm() == 0.0) heading = Eigen::Vector3d::UnitZ();
-        if (relation == '+') {
-          const int k_branch = depth_of[parent] + branches_of[parent]++;
-          const Eigen::Vector3d side =
-              Eigen::AngleAxisd(kDivergence * k_branch, heading) * perpendicular(heading);
-          heading = Eigen::AngleAxisd(kBranchAngle, side) * heading;
-        }
-      }
-      const double len = length.value_or(1.0);
-      d.start = base;
-      d.end = base + len * heading.normalized();
-      d.length = len;
-      d.direction = heading.normalized();
+      return;
     }
+    Eigen::Vector3d heading = Eigen::Vector3d::UnitZ();
+    if (parent != kNoNode) {
+      heading = tree.direction(parent);
+      if (heading.squaredNorm() == 0.0) heading = Eigen::Vector3d::UnitZ();
+      if (relation == '+') {
+        const int k_branch = depth_of_[parent] + branches_of_[parent]++;
+        const Eigen::Vector3d side =
+            Eigen::AngleAxisd(kDivergence * k_branch, heading) * perpendicular(heading);
+        heading = Eigen::AngleAxisd(kBranchAngle, side) * heading;
+      }
+    }
+    const double len = length.value_or(1.0);
+    d.start = base;
+    d.end = base + len * heading.normalized();
+    d.length = len;
+    d.direction = heading.normalized();
+  }
+
+  // The node of finest entity i: kind, geometry, radius, birth, order and attributes.
+  void add_node(TreeGraph& tree, std::size_t i) {
+    const Entity& e = entities_[i];
+    char relation = 0;
+    const NodeId parent = parent_node(e, relation);
+    if (parent == kNoNode && !tree.empty()) {
+      throw ParseError(
+          "a second tree: this entity is connected to nothing before it (fspm reads one plant "
+          "per file)",
+          file_, e.line);
+    }
+    NodeData d;
+    d.kind = kind_of(e.symbol);
+    if (const auto r = value(e, f_radius_)) {
+      d.radius = *r;
+    } else if (const auto dia = value(e, f_diameter_)) {
+      d.radius = 0.5 * *dia;
+    }
+    if (const auto b = value(e, f_birth_)) d.birth_time = *b;
+    place(tree, e, parent, relation, d);
     if (parent != kNoNode) {
       d.order = static_cast<std::uint16_t>(tree.order(parent) + (relation == '+' ? 1 : 0));
     }
-    if (const auto o = value(e, f_order)) {
+    if (const auto o = value(e, f_order_)) {
       if (*o < 0 || *o > 65535 || std::floor(*o) != *o) {
-        throw ParseError("feature Order: expected a whole number in [0, 65535]", file, e.line);
+        throw ParseError("feature Order: expected a whole number in [0, 65535]", file_, e.line);
       }
       d.order = static_cast<std::uint16_t>(*o);
     }
@@ -536,28 +597,57 @@ TreeGraph parse_mtg(std::string_view text, const std::string& file) {
       if (seg.norm() > 0.0) d.direction = seg.normalized();
     }
     const NodeId id = tree.add_node(parent, d);
-    node_of[i] = id;
-    branches_of.resize(tree.size(), 0);
-    depth_of.resize(tree.size(), 0);
-    if (parent != kNoNode) depth_of[id] = depth_of[parent] + 1;
-    for (const auto& [f, name] : attributes) {
-      if (!numeric[static_cast<std::size_t>(f)]) continue;
+    node_of_[i] = id;
+    branches_of_.resize(tree.size(), 0);
+    depth_of_.resize(tree.size(), 0);
+    if (parent != kNoNode) depth_of_[id] = depth_of_[parent] + 1;
+    set_attributes(tree, e, id);
+    // On the main axis of its complexes, this node is now their last finest component.
+    for (int c = e.axis_of; c >= 0; c = entities_[static_cast<std::size_t>(c)].axis_of) {
+      last_component_[static_cast<std::size_t>(c)] = id;
+    }
+    last_component_[i] = id;
+  }
+
+  void set_attributes(TreeGraph& tree, const Entity& e, NodeId id) const {
+    for (const auto& [f, name] : attributes_) {
+      if (!numeric_[static_cast<std::size_t>(f)]) continue;
       if (const auto v = value(e, f)) tree.attribute(name)[id] = *v;
     }
-    if (own_index) tree.attribute("index")[id] = e.index;
-    for (int c = e.complex; c >= 0; c = entities[static_cast<std::size_t>(c)].complex) {
-      const Entity& ce = entities[static_cast<std::size_t>(c)];
-      if (complex_symbol[static_cast<unsigned char>(ce.symbol) & 127]) {
+    if (own_index_) tree.attribute("index")[id] = e.index;
+    for (int c = e.complex; c >= 0; c = entities_[static_cast<std::size_t>(c)].complex) {
+      const Entity& ce = entities_[static_cast<std::size_t>(c)];
+      if (complex_symbol_[static_cast<unsigned char>(ce.symbol) & 127]) {
         tree.attribute(index_name(ce.symbol))[id] = ce.index;
       }
     }
-    // On the main axis of its complexes, this node is now their last finest component.
-    for (int c = e.axis_of; c >= 0; c = entities[static_cast<std::size_t>(c)].axis_of) {
-      last_component[static_cast<std::size_t>(c)] = id;
-    }
-    last_component[i] = id;
   }
-  return tree;
+
+  const std::string& file_;
+  std::vector<std::string_view> lines_;
+  std::array<int, 128> class_scale_;
+  std::array<int, 128> seen_scale_;
+  std::size_t header_index_ = 0;
+  std::size_t code_columns_ = 1;
+  std::vector<std::string> features_;
+  std::vector<Entity> entities_;
+  std::vector<std::vector<int>> column_entities_;  // entities written in each code column
+  // The tree.
+  int finest_ = 0;
+  int fx_ = -1, fy_ = -1, fz_ = -1, f_length_ = -1, f_radius_ = -1, f_diameter_ = -1,
+      f_birth_ = -1, f_order_ = -1;
+  std::vector<std::pair<int, std::string>> attributes_;
+  std::vector<std::uint8_t> numeric_;
+  std::array<std::uint8_t, 128> complex_symbol_{};
+  bool own_index_ = false;
+  std::vector<NodeId> node_of_, last_component_;
+  std::vector<int> branches_of_, depth_of_;  // branches placed on each node, its depth
+};
+
+}  // namespace
+
+TreeGraph parse_mtg(std::string_view text, const std::string& file) {
+  return MtgParser(text, file).parse();
 }
 
 }  // namespace fspm
