@@ -116,7 +116,9 @@ void Fields<C>::finish(C (*base)(py::dict& values)) {
              return value;
            }),
            "Defaults, with any field given as a keyword argument")
-      .def("to_dict", [](py::handle self) { return fields_dict(self); })
+      .def(
+          "to_dict", [](py::handle self) { return fields_dict(self); },
+          "The fields as a dict (field name -> value), as the keyword constructor takes them")
       .def("__repr__", [](py::handle self) { return fields_repr(self); })
       .def("__copy__", [](const C& self) { return C(self); })
       .def(

@@ -204,7 +204,9 @@ void bind_scene(py::module_& m) {
           },
           py::arg("height") = 0.0, py::arg("translucency") = 0.0, py::arg("solid") = true,
           "Adds (or replaces) the ground plane z = height")
-      .def("inside_solid", &env::Scene::inside_solid, py::arg("point"))
+      .def("inside_solid", &env::Scene::inside_solid, py::arg("point"),
+           "True when the point (x, y, z in m) lies inside a solid box or sphere, or below a solid "
+           "ground")
       .def("__repr__", [](const env::Scene& s) {
         return "<fspm.Scene with " + std::to_string(s.spheres.size()) + " spheres, " +
                std::to_string(s.boxes.size()) + " boxes, " + std::to_string(s.meshes.size()) +
@@ -247,7 +249,7 @@ void bind_light(py::module_& m) {
             return std::make_pair(s.light, s.direction);
           },
           py::arg("point"), "Reference: every direction ray-cast against every occluder")
-      .def_property_readonly("scene", &env::LightModel::scene);
+      .def_property_readonly("scene", &env::LightModel::scene, "The Scene the model was built from");
 
   m.def(
       "light",
@@ -271,10 +273,11 @@ void bind_light(py::module_& m) {
 
 // A field of a nested parameter struct, bound flat under its parameter-file name.
 template <typename Outer, typename Inner, typename T>
-void nested_field(py::class_<Outer>& cls, const char* name, Inner Outer::*inner, T Inner::*field) {
+void nested_field(py::class_<Outer>& cls, const char* name, Inner Outer::*inner, T Inner::*field,
+                  const char* doc) {
   cls.def_property(
       name, [inner, field](const Outer& o) { return o.*inner.*field; },
-      [inner, field](Outer& o, T v) { o.*inner.*field = v; });
+      [inner, field](Outer& o, T v) { o.*inner.*field = v; }, doc);
 }
 
 void bind_growth_light(py::class_<env::GrowthParams>& gp) {
@@ -290,18 +293,30 @@ void bind_growth_light(py::class_<env::GrowthParams>& gp) {
   using GP = env::GrowthParams;
   using SG = env::ShadowGridParams;
   using SC = env::SpaceColonizationParams;
-  nested_field(gp, "voxel_size_m", &GP::shadow_grid, &SG::voxel_size_m);
-  nested_field(gp, "shadow_a", &GP::shadow_grid, &SG::shade_a);
-  nested_field(gp, "shadow_b", &GP::shadow_grid, &SG::shade_b);
-  nested_field(gp, "shadow_depth_voxels", &GP::shadow_grid, &SG::depth_voxels);
-  nested_field(gp, "full_light", &GP::shadow_grid, &SG::full_light);
-  nested_field(gp, "obstacle_shade", &GP::shadow_grid, &SG::obstacle_shade);
-  nested_field(gp, "marker_density_per_m3", &GP::space_colonization, &SC::marker_density_per_m3);
-  nested_field(gp, "perception_radius_m", &GP::space_colonization, &SC::perception_radius_m);
-  nested_field(gp, "perception_angle_deg", &GP::space_colonization, &SC::perception_angle_deg);
-  nested_field(gp, "occupancy_radius_m", &GP::space_colonization, &SC::occupancy_radius_m);
-  nested_field(gp, "marker_region_radius_m", &GP::space_colonization, &SC::region_radius_m);
-  nested_field(gp, "marker_region_height_m", &GP::space_colonization, &SC::region_height_m);
+  nested_field(gp, "voxel_size_m", &GP::shadow_grid, &SG::voxel_size_m,
+               "shadow_grid: edge of a shadow voxel (m, > 0; 0.15)");
+  nested_field(gp, "shadow_a", &GP::shadow_grid, &SG::shade_a,
+               "shadow_grid: shade a a bud casts into its own voxel (> 0; 1)");
+  nested_field(gp, "shadow_b", &GP::shadow_grid, &SG::shade_b,
+               "shadow_grid: each voxel layer further down gets 1/b of the shade above (> 1; 2)");
+  nested_field(gp, "shadow_depth_voxels", &GP::shadow_grid, &SG::depth_voxels,
+               "shadow_grid: q_max, voxel layers a bud shades below it (integer in [0, 64]; 8)");
+  nested_field(gp, "full_light", &GP::shadow_grid, &SG::full_light,
+               "shadow_grid: C, the light of an unshaded voxel in units of shadow_a (> 0; 3)");
+  nested_field(gp, "obstacle_shade", &GP::shadow_grid, &SG::obstacle_shade,
+               "shadow_grid: shade of a voxel filled by an opaque obstacle, in units of full_light (>= 0; 0.1)");
+  nested_field(gp, "marker_density_per_m3", &GP::space_colonization, &SC::marker_density_per_m3,
+               "space_colonization: markers per cubic metre (m^-3, > 0; 30)");
+  nested_field(gp, "perception_radius_m", &GP::space_colonization, &SC::perception_radius_m,
+               "space_colonization: distance within which a bud perceives markers (m, > 0; 0.9)");
+  nested_field(gp, "perception_angle_deg", &GP::space_colonization, &SC::perception_angle_deg,
+               "space_colonization: full opening angle of a bud's perception cone (degrees, in (0, 360]; 90)");
+  nested_field(gp, "occupancy_radius_m", &GP::space_colonization, &SC::occupancy_radius_m,
+               "space_colonization: markers this close to the tree's nodes are removed (m, > 0; 0.3)");
+  nested_field(gp, "marker_region_radius_m", &GP::space_colonization, &SC::region_radius_m,
+               "space_colonization: radius of the marker cylinder on the tree's base (m, > 0; 8)");
+  nested_field(gp, "marker_region_height_m", &GP::space_colonization, &SC::region_height_m,
+               "space_colonization: height of the marker cylinder on the tree's base (m, > 0; 14)");
 }
 
 void bind_growth(py::module_& m) {
@@ -311,30 +326,54 @@ void bind_growth(py::module_& m) {
       "GrowthParams(preset='A', years=10) starts from Pirk's tree type A");
   bind_growth_light(gp);
   Fields<env::GrowthParams>(gp)
-      .add("years", &env::GrowthParams::years)
-      .add("seed", &env::GrowthParams::seed)
-      .add("alpha", &env::GrowthParams::alpha)
-      .add("apical_control", &env::GrowthParams::apical_control)
-      .add("internode_length_m", &env::GrowthParams::internode_length_m)
-      .add("max_shoot_metamers", &env::GrowthParams::max_shoot_metamers)
-      .add("min_shoot_vigour", &env::GrowthParams::min_shoot_vigour)
-      .add("sky_light_fraction", &env::GrowthParams::sky_light_fraction)
-      .add("light_half_saturation", &env::GrowthParams::light_half_saturation)
-      .add("branching_angle_deg", &env::GrowthParams::branching_angle_deg)
-      .add("phyllotaxy_deg", &env::GrowthParams::phyllotaxy_deg)
-      .add("perturbation_deg", &env::GrowthParams::perturbation_deg)
-      .add("lateral_bud_lifetime_years", &env::GrowthParams::lateral_bud_lifetime_years)
-      .add("phototropism", &env::GrowthParams::phototropism)
-      .add("gravitropism", &env::GrowthParams::gravitropism)
-      .add("gravity_direction", &env::GrowthParams::gravity_direction)
-      .add("pruning_factor", &env::GrowthParams::pruning_factor)
-      .add("leaf_years", &env::GrowthParams::leaf_years)
-      .add("cluster_radius_m", &env::GrowthParams::cluster_radius_m)
-      .add("gamma0", &env::GrowthParams::gamma0)
-      .add("light_directions", &env::GrowthParams::light_directions)
-      .add("light_significance", &env::GrowthParams::light_significance)
-      .add("tip_radius_m", &env::GrowthParams::tip_radius_m)
-      .add("pipe_exponent", &env::GrowthParams::pipe_exponent)
+      .add("years", &env::GrowthParams::years,
+           "Growth cycles (years) to simulate (integer in [0, 1000]; 20)")
+      .add("seed", &env::GrowthParams::seed,
+           "Seed of the generator of the small heading perturbations (non-negative integer; 1)")
+      .add("alpha", &env::GrowthParams::alpha,
+           "Borchert-Honda vigour: v_base = alpha * Q_base at the root (> 0; 3, presets fit it)")
+      .add("apical_control", &env::GrowthParams::apical_control,
+           "Borchert-Honda apical control lambda: weight of the main axis' light against the lateral's when vigour is shared ([0, 1]; 0.47)")
+      .add("internode_length_m", &env::GrowthParams::internode_length_m,
+           "Length of one metamer; a shoot of vigour v is v times this long (m, > 0; 0.15)")
+      .add("max_shoot_metamers", &env::GrowthParams::max_shoot_metamers,
+           "Most metamers in one shoot, n = round(v) (integer >= 1; 5)")
+      .add("min_shoot_vigour", &env::GrowthParams::min_shoot_vigour,
+           "Buds with less vigour do not grow a shoot (>= 0; 0.5)")
+      .add("sky_light_fraction", &env::GrowthParams::sky_light_fraction,
+           "Share of the open sky's light reaching the stand, scales every bud's Q ([0, 1], 1 = open site; 1)")
+      .add("light_half_saturation", &env::GrowthParams::light_half_saturation,
+           "K of the light response P(Q) = Q (1 + K) / (Q + K), in units of full light (> 0, inf = linear; 0.2)")
+      .add("branching_angle_deg", &env::GrowthParams::branching_angle_deg,
+           "Angle between a lateral bud and its parent axis (degrees, finite; 40)")
+      .add("phyllotaxy_deg", &env::GrowthParams::phyllotaxy_deg,
+           "Divergence angle between successive lateral buds around the axis (degrees, finite; 137.5)")
+      .add("perturbation_deg", &env::GrowthParams::perturbation_deg,
+           "Heading noise: a random vector of length sin(perturbation_deg) is added to each metamer's unit heading (degrees, [0, 90]; 4)")
+      .add("lateral_bud_lifetime_years", &env::GrowthParams::lateral_bud_lifetime_years,
+           "Dormant lateral buds die after this many cycles (years, integer >= 1; 4)")
+      .add("phototropism", &env::GrowthParams::phototropism,
+           "Weight of the bud's mean light direction in the heading (Pirk eq. 4.6-4.7; >= 0, with gravitropism < 1; 0.25)")
+      .add("gravitropism", &env::GrowthParams::gravitropism,
+           "Weight of gravity_direction in the heading (Pirk eq. 4.6-4.7; >= 0, with phototropism < 1; 0.12)")
+      .add("gravity_direction", &env::GrowthParams::gravity_direction,
+           "Direction gravitropism bends towards (non-zero vector; (0, 0, -1): down, so branches droop)")
+      .add("pruning_factor", &env::GrowthParams::pruning_factor,
+           "Shedding: a lateral branch with less light per supported internode is removed (>= 0; 0.1)")
+      .add("leaf_years", &env::GrowthParams::leaf_years,
+           "Shoots younger than this carry a leaf cluster (years, integer >= 1; 2)")
+      .add("cluster_radius_m", &env::GrowthParams::cluster_radius_m,
+           "Smallest leaf-cluster radius; at least half the shoot length (m, > 0; 0.3)")
+      .add("gamma0", &env::GrowthParams::gamma0,
+           "Leaf-cluster translucency gamma0^r for a radius r in m (Pirk eq. 4.4; [0, 1]; 0.5)")
+      .add("light_directions", &env::GrowthParams::light_directions,
+           "light_model 'sky': sky directions of the light integral (integer >= 1; 64)")
+      .add("light_significance", &env::GrowthParams::light_significance,
+           "light_model 'sky': largest share of light an ignored occluder may remove ([0, 1); 0.01)")
+      .add("tip_radius_m", &env::GrowthParams::tip_radius_m,
+           "Radius of a shoot tip, the start of the pipe model (m, > 0; 0.004)")
+      .add("pipe_exponent", &env::GrowthParams::pipe_exponent,
+           "Pipe model exponent n in r^n = sum r_child^n ([1, 4]; 2.5)")
       .existing("light_model")
       .existing("voxel_size_m")
       .existing("shadow_a")
@@ -374,12 +413,16 @@ void bind_growth(py::module_& m) {
       py::arg("text"), "Growth parameters from TOML text");
 
   py::class_<env::GrowthResult>(m, "GrowthResult", "A grown tree and its counts")
-      .def_readonly("tree", &env::GrowthResult::tree)
-      .def_readonly("internodes", &env::GrowthResult::internodes)
-      .def_readonly("clusters", &env::GrowthResult::clusters)
-      .def_readonly("shed", &env::GrowthResult::shed)
-      .def_readonly("grown", &env::GrowthResult::grown)
-      .def_readonly("height_m", &env::GrowthResult::height_m)
+      .def_readonly("tree", &env::GrowthResult::tree,
+                    "Internodes (birth_time = year, attribute 'light'), then the leaf clusters as "
+                    "leaf nodes (radius = cluster radius, attribute 'translucency')")
+      .def_readonly("internodes", &env::GrowthResult::internodes, "Internodes in the final tree")
+      .def_readonly("clusters", &env::GrowthResult::clusters, "Leaf clusters in the final tree")
+      .def_readonly("shed", &env::GrowthResult::shed, "Internodes removed by shedding over the whole run")
+      .def_readonly("grown", &env::GrowthResult::grown,
+                    "Internodes created over the whole run, shed ones included")
+      .def_readonly("height_m", &env::GrowthResult::height_m,
+                    "Highest internode end above the base (m)")
       .def_property_readonly(
           "cluster_spheres",
           [](const env::GrowthResult& r) { return sphere_array(r.cluster_spheres); },
@@ -422,28 +465,45 @@ void bind_adaptation(py::module_& m) {
       "Light of the leaf clusters: 'sky' (hemisphere, clusters as caps) or 'shadow_grid'");
   Fields<env::AnalysisParams>(ap)
       .existing("light_model")
-      .add("skeleton_radius_m", &env::AnalysisParams::skeleton_radius_m)
-      .add("min_cluster_radius_m", &env::AnalysisParams::min_cluster_radius_m)
-      .add("gamma0", &env::AnalysisParams::gamma0)
-      .add("pruning_strength", &env::AnalysisParams::pruning_strength)
-      .add("reference_percentile", &env::AnalysisParams::reference_percentile)
-      .add("temporal_pruning", &env::AnalysisParams::temporal_pruning)
-      .add("relative_pruning", &env::AnalysisParams::relative_pruning)
-      .add("phototropism", &env::AnalysisParams::phototropism)
-      .add("gravitropism", &env::AnalysisParams::gravitropism)
-      .add("gravity_direction", &env::AnalysisParams::gravity_direction)
-      .add("light_directions", &env::AnalysisParams::light_directions)
-      .add("light_significance", &env::AnalysisParams::light_significance)
+      .add("skeleton_radius_m", &env::AnalysisParams::skeleton_radius_m,
+           "Internodes at least this thick form the skeleton; <= 0 picks 2.5 times the thinnest internode radius (m; 0)")
+      .add("min_cluster_radius_m", &env::AnalysisParams::min_cluster_radius_m,
+           "Smallest leaf-cluster radius (m, > 0; 0.3)")
+      .add("gamma0", &env::AnalysisParams::gamma0,
+           "Leaf-cluster translucency gamma0^r for a radius r in m (Pirk eq. 4.4; (0, 1]; 0.5)")
+      .add("pruning_strength", &env::AnalysisParams::pruning_strength,
+           "c_psi of Pirk eq. 4.12: a skeleton segment is pruned below c_psi * min(psi_ref, its own pruning factor) (>= 0; 0.8)")
+      .add("reference_percentile", &env::AnalysisParams::reference_percentile,
+           "psi_ref is this percentile (a fraction: 0.05 = 5 %) of the skeleton's pruning factors (Pirk 4.3.4; [0, 1]; 0.05)")
+      .add("temporal_pruning", &env::AnalysisParams::temporal_pruning,
+           "Pruning factor over every earlier stage (eq. 4.5 cluster propagation) instead of the final one (False)")
+      .add("relative_pruning", &env::AnalysisParams::relative_pruning,
+           "Pruning thresholds follow the whole tree's resources per length, so a branch is pruned when it falls behind the crown (True)")
+      .add("phototropism", &env::AnalysisParams::phototropism,
+           "Tropism weight towards the light direction (Pirk eq. 4.6-4.7; >= 0, with gravitropism < 1; 0.25)")
+      .add("gravitropism", &env::AnalysisParams::gravitropism,
+           "Tropism weight towards gravity_direction (Pirk eq. 4.6-4.7; >= 0, with phototropism < 1; 0.12)")
+      .add("gravity_direction", &env::AnalysisParams::gravity_direction,
+           "Direction gravitropism bends towards (vector; (0, 0, -1): down)")
+      .add("light_directions", &env::AnalysisParams::light_directions,
+           "light_model 'sky': sky directions of the light integral (integer >= 1; 64)")
+      .add("light_significance", &env::AnalysisParams::light_significance,
+           "light_model 'sky': largest share of light an ignored occluder may remove (> 0; 0.01)")
       .finish();
 
   using TA = env::TreeAnalysis;
   py::class_<TA>(m, "TreeAnalysis", "A tree analysed as grown in the open (analyze_tree)")
-      .def_property_readonly("params", [](const TA& a) { return a.params; })
-      .def_readonly("skeleton_radius_m", &TA::skeleton_radius_m)
-      .def_readonly("internode_length_m", &TA::internode_length_m)
-      .def_readonly("height_path_m", &TA::height_path_m)
-      .def_readonly("max_age", &TA::max_age)
-      .def_readonly("reference_pruning_factor", &TA::reference_pruning_factor)
+      .def_property_readonly(
+          "params", [](const TA& a) { return a.params; }, "The AnalysisParams used (a copy)")
+      .def_readonly("skeleton_radius_m", &TA::skeleton_radius_m,
+                    "Radius from which internodes belong to the skeleton, as chosen (m)")
+      .def_readonly("internode_length_m", &TA::internode_length_m,
+                    "l_i, the mode of the internode lengths (mean shift; m)")
+      .def_readonly("height_path_m", &TA::height_path_m,
+                    "d_r, path length from the root to the furthest tip (m)")
+      .def_readonly("max_age", &TA::max_age, "Largest segment age (seasons, Pirk eq. 4.2)")
+      .def_readonly("reference_pruning_factor", &TA::reference_pruning_factor,
+                    "psi_ref, the reference_percentile of the skeleton's pruning factors")
       .def_property_readonly(
           "skeleton",
           [](py::object self) {
@@ -496,12 +556,18 @@ void bind_adaptation(py::module_& m) {
 
   using AR = env::AdaptationResult;
   py::class_<AR>(m, "AdaptationResult", "An adapted tree (attributes displacement and pruned)")
-      .def_readonly("tree", &AR::tree)
-      .def_readonly("pruned_nodes", &AR::pruned_nodes)
-      .def_readonly("bent_segments", &AR::bent_segments)
-      .def_readonly("tips", &AR::tips)
-      .def_readonly("mean_tip_displacement_m", &AR::mean_tip_displacement_m)
-      .def_property_readonly("mean_tip_shift", [](const AR& r) { return r.mean_tip_shift; })
+      .def_readonly("tree", &AR::tree,
+                    "The input tree with moved nodes and the attributes 'displacement' (m) and "
+                    "'pruned' (1 for pruned nodes, kept at their adapted position)")
+      .def_readonly("pruned_nodes", &AR::pruned_nodes, "Nodes flagged 'pruned'")
+      .def_readonly("bent_segments", &AR::bent_segments,
+                    "Skeleton segments rotated by more than 1e-4 rad")
+      .def_readonly("tips", &AR::tips, "Internode tips that survived (no internode child)")
+      .def_readonly("mean_tip_displacement_m", &AR::mean_tip_displacement_m,
+                    "Mean distance the surviving tips moved (m)")
+      .def_property_readonly(
+          "mean_tip_shift", [](const AR& r) { return r.mean_tip_shift; },
+          "Mean displacement vector (x, y, z) of the surviving tips (m)")
       .def_property_readonly(
           "pruned_centroid", [](const AR& r) { return r.pruned_centroid; },
           "Centroid of the pruned internodes in the input tree (m; zero when none)")
