@@ -249,7 +249,8 @@ void bind_light(py::module_& m) {
             return std::make_pair(s.light, s.direction);
           },
           py::arg("point"), "Reference: every direction ray-cast against every occluder")
-      .def_property_readonly("scene", &env::LightModel::scene, "The Scene the model was built from");
+      .def_property_readonly("scene", &env::LightModel::scene,
+                             "The Scene the model was built from");
 
   m.def(
       "light",
@@ -304,15 +305,18 @@ void bind_growth_light(py::class_<env::GrowthParams>& gp) {
   nested_field(gp, "full_light", &GP::shadow_grid, &SG::full_light,
                "shadow_grid: C, the light of an unshaded voxel in units of shadow_a (> 0; 3)");
   nested_field(gp, "obstacle_shade", &GP::shadow_grid, &SG::obstacle_shade,
-               "shadow_grid: shade of a voxel filled by an opaque obstacle, in units of full_light (>= 0; 0.1)");
+               "shadow_grid: shade of a voxel filled by an opaque obstacle, in units of full_light "
+               "(>= 0; 0.1)");
   nested_field(gp, "marker_density_per_m3", &GP::space_colonization, &SC::marker_density_per_m3,
                "space_colonization: markers per cubic metre (m^-3, > 0; 30)");
   nested_field(gp, "perception_radius_m", &GP::space_colonization, &SC::perception_radius_m,
                "space_colonization: distance within which a bud perceives markers (m, > 0; 0.9)");
   nested_field(gp, "perception_angle_deg", &GP::space_colonization, &SC::perception_angle_deg,
-               "space_colonization: full opening angle of a bud's perception cone (degrees, in (0, 360]; 90)");
-  nested_field(gp, "occupancy_radius_m", &GP::space_colonization, &SC::occupancy_radius_m,
-               "space_colonization: markers this close to the tree's nodes are removed (m, > 0; 0.3)");
+               "space_colonization: full opening angle of a bud's perception cone (degrees, in (0, "
+               "360]; 90)");
+  nested_field(
+      gp, "occupancy_radius_m", &GP::space_colonization, &SC::occupancy_radius_m,
+      "space_colonization: markers this close to the tree's nodes are removed (m, > 0; 0.3)");
   nested_field(gp, "marker_region_radius_m", &GP::space_colonization, &SC::region_radius_m,
                "space_colonization: radius of the marker cylinder on the tree's base (m, > 0; 8)");
   nested_field(gp, "marker_region_height_m", &GP::space_colonization, &SC::region_height_m,
@@ -333,7 +337,8 @@ void bind_growth(py::module_& m) {
       .add("alpha", &env::GrowthParams::alpha,
            "Borchert-Honda vigour: v_base = alpha * Q_base at the root (> 0; 3, presets fit it)")
       .add("apical_control", &env::GrowthParams::apical_control,
-           "Borchert-Honda apical control lambda: weight of the main axis' light against the lateral's when vigour is shared ([0, 1]; 0.47)")
+           "Borchert-Honda apical control lambda: weight of the main axis' light against the "
+           "lateral's when vigour is shared ([0, 1]; 0.47)")
       .add("internode_length_m", &env::GrowthParams::internode_length_m,
            "Length of one metamer; a shoot of vigour v is v times this long (m, > 0; 0.15)")
       .add("max_shoot_metamers", &env::GrowthParams::max_shoot_metamers,
@@ -341,25 +346,33 @@ void bind_growth(py::module_& m) {
       .add("min_shoot_vigour", &env::GrowthParams::min_shoot_vigour,
            "Buds with less vigour do not grow a shoot (>= 0; 0.5)")
       .add("sky_light_fraction", &env::GrowthParams::sky_light_fraction,
-           "Share of the open sky's light reaching the stand, scales every bud's Q ([0, 1], 1 = open site; 1)")
+           "Share of the open sky's light reaching the stand, scales every bud's Q ([0, 1], 1 = "
+           "open site; 1)")
       .add("light_half_saturation", &env::GrowthParams::light_half_saturation,
-           "K of the light response P(Q) = Q (1 + K) / (Q + K), in units of full light (> 0, inf = linear; 0.2)")
+           "K of the light response P(Q) = Q (1 + K) / (Q + K), in units of full light (> 0, inf = "
+           "linear; 0.2)")
       .add("branching_angle_deg", &env::GrowthParams::branching_angle_deg,
            "Angle between a lateral bud and its parent axis (degrees, finite; 40)")
       .add("phyllotaxy_deg", &env::GrowthParams::phyllotaxy_deg,
-           "Divergence angle between successive lateral buds around the axis (degrees, finite; 137.5)")
+           "Divergence angle between successive lateral buds around the axis (degrees, finite; "
+           "137.5)")
       .add("perturbation_deg", &env::GrowthParams::perturbation_deg,
-           "Heading noise: a random vector of length sin(perturbation_deg) is added to each metamer's unit heading (degrees, [0, 90]; 4)")
+           "Heading noise: a random vector of length sin(perturbation_deg) is added to each "
+           "metamer's unit heading (degrees, [0, 90]; 4)")
       .add("lateral_bud_lifetime_years", &env::GrowthParams::lateral_bud_lifetime_years,
            "Dormant lateral buds die after this many cycles (years, integer >= 1; 4)")
       .add("phototropism", &env::GrowthParams::phototropism,
-           "Weight of the bud's mean light direction in the heading (Pirk eq. 4.6-4.7; >= 0, with gravitropism < 1; 0.25)")
+           "Weight of the bud's mean light direction in the heading (Pirk eq. 4.6-4.7; >= 0, with "
+           "gravitropism < 1; 0.25)")
       .add("gravitropism", &env::GrowthParams::gravitropism,
-           "Weight of gravity_direction in the heading (Pirk eq. 4.6-4.7; >= 0, with phototropism < 1; 0.12)")
+           "Weight of gravity_direction in the heading (Pirk eq. 4.6-4.7; >= 0, with phototropism "
+           "< 1; 0.12)")
       .add("gravity_direction", &env::GrowthParams::gravity_direction,
-           "Direction gravitropism bends towards (non-zero vector; (0, 0, -1): down, so branches droop)")
+           "Direction gravitropism bends towards (non-zero vector; (0, 0, -1): down, so branches "
+           "droop)")
       .add("pruning_factor", &env::GrowthParams::pruning_factor,
-           "Shedding: a lateral branch with less light per supported internode is removed (>= 0; 0.1)")
+           "Shedding: a lateral branch with less light per supported internode is removed (>= 0; "
+           "0.1)")
       .add("leaf_years", &env::GrowthParams::leaf_years,
            "Shoots younger than this carry a leaf cluster (years, integer >= 1; 2)")
       .add("cluster_radius_m", &env::GrowthParams::cluster_radius_m,
@@ -368,8 +381,9 @@ void bind_growth(py::module_& m) {
            "Leaf-cluster translucency gamma0^r for a radius r in m (Pirk eq. 4.4; [0, 1]; 0.5)")
       .add("light_directions", &env::GrowthParams::light_directions,
            "light_model 'sky': sky directions of the light integral (integer >= 1; 64)")
-      .add("light_significance", &env::GrowthParams::light_significance,
-           "light_model 'sky': largest share of light an ignored occluder may remove ([0, 1); 0.01)")
+      .add(
+          "light_significance", &env::GrowthParams::light_significance,
+          "light_model 'sky': largest share of light an ignored occluder may remove ([0, 1); 0.01)")
       .add("tip_radius_m", &env::GrowthParams::tip_radius_m,
            "Radius of a shoot tip, the start of the pipe model (m, > 0; 0.004)")
       .add("pipe_exponent", &env::GrowthParams::pipe_exponent,
@@ -418,7 +432,8 @@ void bind_growth(py::module_& m) {
                     "leaf nodes (radius = cluster radius, attribute 'translucency')")
       .def_readonly("internodes", &env::GrowthResult::internodes, "Internodes in the final tree")
       .def_readonly("clusters", &env::GrowthResult::clusters, "Leaf clusters in the final tree")
-      .def_readonly("shed", &env::GrowthResult::shed, "Internodes removed by shedding over the whole run")
+      .def_readonly("shed", &env::GrowthResult::shed,
+                    "Internodes removed by shedding over the whole run")
       .def_readonly("grown", &env::GrowthResult::grown,
                     "Internodes created over the whole run, shed ones included")
       .def_readonly("height_m", &env::GrowthResult::height_m,
@@ -466,23 +481,30 @@ void bind_adaptation(py::module_& m) {
   Fields<env::AnalysisParams>(ap)
       .existing("light_model")
       .add("skeleton_radius_m", &env::AnalysisParams::skeleton_radius_m,
-           "Internodes at least this thick form the skeleton; <= 0 picks 2.5 times the thinnest internode radius (m; 0)")
+           "Internodes at least this thick form the skeleton; <= 0 picks 2.5 times the thinnest "
+           "internode radius (m; 0)")
       .add("min_cluster_radius_m", &env::AnalysisParams::min_cluster_radius_m,
            "Smallest leaf-cluster radius (m, > 0; 0.3)")
       .add("gamma0", &env::AnalysisParams::gamma0,
            "Leaf-cluster translucency gamma0^r for a radius r in m (Pirk eq. 4.4; (0, 1]; 0.5)")
       .add("pruning_strength", &env::AnalysisParams::pruning_strength,
-           "c_psi of Pirk eq. 4.12: a skeleton segment is pruned below c_psi * min(psi_ref, its own pruning factor) (>= 0; 0.8)")
+           "c_psi of Pirk eq. 4.12: a skeleton segment is pruned below psi_min = c_psi * "
+           "min(psi_ref, its analysis pruning factor) (>= 0; 0.8)")
       .add("reference_percentile", &env::AnalysisParams::reference_percentile,
-           "psi_ref is this percentile (a fraction: 0.05 = 5 %) of the skeleton's pruning factors (Pirk 4.3.4; [0, 1]; 0.05)")
+           "psi_ref is this percentile (a fraction: 0.05 = 5 %) of the skeleton's pruning factors "
+           "(Pirk 4.3.4; [0, 1]; 0.05)")
       .add("temporal_pruning", &env::AnalysisParams::temporal_pruning,
-           "Pruning factor over every earlier stage (eq. 4.5 cluster propagation) instead of the final one (False)")
+           "Pruning factor over every earlier stage (eq. 4.5 cluster propagation) instead of the "
+           "final one (False)")
       .add("relative_pruning", &env::AnalysisParams::relative_pruning,
-           "Pruning thresholds follow the whole tree's resources per length, so a branch is pruned when it falls behind the crown (True)")
+           "Pruning thresholds follow the whole tree's resources per length, so a branch is pruned "
+           "when it falls behind the crown (True)")
       .add("phototropism", &env::AnalysisParams::phototropism,
-           "Tropism weight towards the light direction (Pirk eq. 4.6-4.7; >= 0, with gravitropism < 1; 0.25)")
+           "Tropism weight towards the light direction (Pirk eq. 4.6-4.7; >= 0, with gravitropism "
+           "< 1; 0.25)")
       .add("gravitropism", &env::AnalysisParams::gravitropism,
-           "Tropism weight towards gravity_direction (Pirk eq. 4.6-4.7; >= 0, with phototropism < 1; 0.12)")
+           "Tropism weight towards gravity_direction (Pirk eq. 4.6-4.7; >= 0, with phototropism < "
+           "1; 0.12)")
       .add("gravity_direction", &env::AnalysisParams::gravity_direction,
            "Direction gravitropism bends towards (vector; (0, 0, -1): down)")
       .add("light_directions", &env::AnalysisParams::light_directions,
