@@ -141,12 +141,13 @@ fspm::TreeGraph tree_from_arrays(
 
 // A new exception class fspm._fspm.NAME deriving from every class in `bases`, added to the module;
 // kept alive for the interpreter's lifetime.
-PyObject* new_exception(py::module_& m, const char* name, std::initializer_list<PyObject*> bases) {
+PyObject* new_exception(py::module_& m, const char* name, const char* doc,
+                        std::initializer_list<PyObject*> bases) {
   py::tuple base_tuple(bases.size());
   std::size_t k = 0;
   for (PyObject* b : bases) base_tuple[k++] = py::reinterpret_borrow<py::object>(b);
   const std::string full = std::string("fspm._fspm.") + name;
-  PyObject* type = PyErr_NewException(full.c_str(), base_tuple.ptr(), nullptr);
+  PyObject* type = PyErr_NewExceptionWithDoc(full.c_str(), doc, base_tuple.ptr(), nullptr);
   if (type == nullptr) throw py::error_already_set();
   m.add_object(name, py::reinterpret_borrow<py::object>(type));
   return type;
@@ -159,10 +160,24 @@ PYBIND11_MODULE(_fspm, m) {
 
   // Errors are fspm.Error and the matching built-in exception at once, so `except ValueError`
   // and `except OSError` catch them as they would catch Python's own.
-  static PyObject* const error = new_exception(m, "Error", {PyExc_RuntimeError});
-  static PyObject* const parse_error = new_exception(m, "ParseError", {error, PyExc_ValueError});
-  static PyObject* const io_error = new_exception(m, "IoError", {error, PyExc_OSError});
-  static PyObject* const value_error = new_exception(m, "ValueError_", {error, PyExc_ValueError});
+  static PyObject* const error = new_exception(
+      m, "Error",
+      "Base of every error fspm raises for a user mistake (a RuntimeError); the message says where "
+      "(file, line, column when known) and what was expected",
+      {PyExc_RuntimeError});
+  static PyObject* const parse_error =
+      new_exception(m, "ParseError",
+                    "A malformed input text: tree file, Newick string, grammar, TOML, CSV ... "
+                    "(also a ValueError)",
+                    {error, PyExc_ValueError});
+  static PyObject* const io_error =
+      new_exception(m, "IoError", "A file that cannot be opened, read or written (also an OSError)",
+                    {error, PyExc_OSError});
+  static PyObject* const value_error = new_exception(
+      m, "ValueError_",
+      "A parameter outside its valid range, an unknown name or an impossible request (also a "
+      "ValueError); fspm.ParameterError",
+      {error, PyExc_ValueError});
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
@@ -180,7 +195,7 @@ PYBIND11_MODULE(_fspm, m) {
   fspm::python::bind_calibration(m);
 
   py::class_<TreeGraph>(m, "Tree", "A plant's tree graph: one node per internode or organ")
-      .def(py::init<>())
+      .def(py::init<>(), "An empty tree")
       .def("__len__", &TreeGraph::size)
       .def("__repr__",
            [](const TreeGraph& t) {
@@ -194,31 +209,40 @@ PYBIND11_MODULE(_fspm, m) {
           "Parent of every node (int32; -1 for the root)")
       .def_property_readonly(
           "starts",
-          [](py::object self) { return column(self.cast<const TreeGraph&>().starts(), self, 3); })
+          [](py::object self) { return column(self.cast<const TreeGraph&>().starts(), self, 3); },
+          "Segment start points (N, 3): m (model units for L-system trees), z up")
       .def_property_readonly(
           "ends",
-          [](py::object self) { return column(self.cast<const TreeGraph&>().ends(), self, 3); })
-      .def_property_readonly("directions",
-                             [](py::object self) {
-                               return column(self.cast<const TreeGraph&>().directions(), self, 3);
-                             })
+          [](py::object self) { return column(self.cast<const TreeGraph&>().ends(), self, 3); },
+          "Segment end points (N, 3): m (model units for L-system trees), z up")
+      .def_property_readonly(
+          "directions",
+          [](py::object self) {
+            return column(self.cast<const TreeGraph&>().directions(), self, 3);
+          },
+          "Unit headings (N, 3), also of zero-length organs")
       .def_property_readonly(
           "lengths",
-          [](py::object self) { return column(self.cast<const TreeGraph&>().lengths(), self); })
+          [](py::object self) { return column(self.cast<const TreeGraph&>().lengths(), self); },
+          "Segment lengths: m (model units for L-system trees)")
       .def_property_readonly(
           "radii",
-          [](py::object self) { return column(self.cast<const TreeGraph&>().radii(), self); })
+          [](py::object self) { return column(self.cast<const TreeGraph&>().radii(), self); },
+          "Radii: m (model units for L-system trees)")
       .def_property_readonly(
           "birth_times",
-          [](py::object self) { return column(self.cast<const TreeGraph&>().birth_times(), self); })
+          [](py::object self) { return column(self.cast<const TreeGraph&>().birth_times(), self); },
+          "Birth times: growth cycle or year, may be fractional")
       .def_property_readonly(
           "orders",
-          [](py::object self) { return column(self.cast<const TreeGraph&>().orders(), self); })
-      .def_property_readonly("physiological_ages",
-                             [](py::object self) {
-                               return column(self.cast<const TreeGraph&>().physiological_ages(),
-                                             self);
-                             })
+          [](py::object self) { return column(self.cast<const TreeGraph&>().orders(), self); },
+          "Branching orders (uint16): 0 on the trunk, +1 at each lateral branch")
+      .def_property_readonly(
+          "physiological_ages",
+          [](py::object self) {
+            return column(self.cast<const TreeGraph&>().physiological_ages(), self);
+          },
+          "GreenLab physiological ages (uint16, 1 by default)")
       .def_property_readonly(
           "kinds",
           [](py::object self) {
@@ -228,7 +252,8 @@ PYBIND11_MODULE(_fspm, m) {
                           self);
           },
           "Organ kinds: 0 internode, 1 leaf, 2 flower, 3 bud")
-      .def("attribute_names", &TreeGraph::attribute_names)
+      .def("attribute_names", &TreeGraph::attribute_names,
+           "Names of the user attribute columns (light, pruned, label ...)")
       .def(
           "attribute",
           [](py::object self, const std::string& name) {
@@ -264,9 +289,13 @@ PYBIND11_MODULE(_fspm, m) {
       "Write a tree (.tree, .treeb, .nwk or .mtg), atomically");
   m.def(
       "parse_newick", [](const std::string& text) { return fspm::parse_newick(text); },
-      py::arg("text"));
+      py::arg("text"),
+      "A tree from Newick text ending in ';': numeric node labels become the attribute 'label', "
+      "branch lengths 'branch_length' (NaN where missing)");
   m.def(
-      "to_newick", [](const TreeGraph& t) { return fspm::to_newick(t); }, py::arg("tree"));
+      "to_newick", [](const TreeGraph& t) { return fspm::to_newick(t); }, py::arg("tree"),
+      "The tree as Newick text: topology, the attribute 'label' as node labels and "
+      "'branch_length' when present");
 
   m.def(
       "distance",
@@ -324,8 +353,11 @@ PYBIND11_MODULE(_fspm, m) {
       m, "CompressedPlant",
       "A GreenLab plant as a compressed tree graph: one record per substructure")
       .def("__len__", &fspm::CompressedTreeGraph::size)
-      .def_property_readonly("graph_nodes", &fspm::CompressedTreeGraph::size)
-      .def_property_readonly("metamers", &fspm::CompressedTreeGraph::expanded_size)
+      .def_property_readonly("graph_nodes", &fspm::CompressedTreeGraph::size,
+                             "Records of the compressed graph (its substructures)")
+      .def_property_readonly(
+          "metamers", &fspm::CompressedTreeGraph::expanded_size,
+          "Metamers of the explicit plant it stands for (sum of the record multiplicities)")
       .def(
           "counts",
           [](const fspm::CompressedTreeGraph& g) {
@@ -391,40 +423,50 @@ PYBIND11_MODULE(_fspm, m) {
                              "Explicit plant geometry in single precision, one record per "
                              "internode, leaf or flower (parents first)")
       .def("__len__", &fspm::LineTree::size)
-      .def_property_readonly("parents",
-                             [](py::object self) {
-                               return parent_column(self.cast<const fspm::LineTree&>().parents(),
-                                                    self);
-                             })
-      .def_property_readonly("starts",
-                             [](py::object self) {
-                               return column(self.cast<const fspm::LineTree&>().starts(), self, 3);
-                             })
-      .def_property_readonly("directions",
-                             [](py::object self) {
-                               return column(self.cast<const fspm::LineTree&>().directions(), self,
-                                             3);
-                             })
-      .def_property_readonly("lengths",
-                             [](py::object self) {
-                               return column(self.cast<const fspm::LineTree&>().lengths(), self);
-                             })
+      .def_property_readonly(
+          "parents",
+          [](py::object self) {
+            return parent_column(self.cast<const fspm::LineTree&>().parents(), self);
+          },
+          "Parent of every record (int32; -1 for the root), parents first")
+      .def_property_readonly(
+          "starts",
+          [](py::object self) {
+            return column(self.cast<const fspm::LineTree&>().starts(), self, 3);
+          },
+          "Start points (N, 3) float32, m, z up")
+      .def_property_readonly(
+          "directions",
+          [](py::object self) {
+            return column(self.cast<const fspm::LineTree&>().directions(), self, 3);
+          },
+          "Unit headings (N, 3) float32; end = start + direction * length")
+      .def_property_readonly(
+          "lengths",
+          [](py::object self) {
+            return column(self.cast<const fspm::LineTree&>().lengths(), self);
+          },
+          "Lengths (float32, m)")
       .def_property_readonly(
           "radii",
-          [](py::object self) { return column(self.cast<const fspm::LineTree&>().radii(), self); })
-      .def_property_readonly("birth_times",
-                             [](py::object self) {
-                               return column(self.cast<const fspm::LineTree&>().birth_times(),
-                                             self);
-                             })
+          [](py::object self) { return column(self.cast<const fspm::LineTree&>().radii(), self); },
+          "Radii (float32, m)")
+      .def_property_readonly(
+          "birth_times",
+          [](py::object self) {
+            return column(self.cast<const fspm::LineTree&>().birth_times(), self);
+          },
+          "Birth times (float32, growth cycles)")
       .def_property_readonly(
           "orders",
-          [](py::object self) { return column(self.cast<const fspm::LineTree&>().orders(), self); })
-      .def_property_readonly("physiological_ages",
-                             [](py::object self) {
-                               return column(
-                                   self.cast<const fspm::LineTree&>().physiological_ages(), self);
-                             })
+          [](py::object self) { return column(self.cast<const fspm::LineTree&>().orders(), self); },
+          "Branching orders (uint16): 0 on the trunk, +1 at each lateral branch")
+      .def_property_readonly(
+          "physiological_ages",
+          [](py::object self) {
+            return column(self.cast<const fspm::LineTree&>().physiological_ages(), self);
+          },
+          "GreenLab physiological ages (uint16, from 1)")
       .def_property_readonly(
           "kinds",
           [](py::object self) {
