@@ -82,21 +82,38 @@ void bind_mesh(py::module_& m) {
       "Leaf clusters (with leaves=True): 'leaves' (a cloud of leaves) or 'volumes' (translucent "
       "crown spheres)");
   Fields<gr::MeshOptions>(mo)
-      .add("reynolds_width", &gr::MeshOptions::reynolds_width)
+      .add("reynolds_width", &gr::MeshOptions::reynolds_width,
+           "Continuous junctions only: radius along each axis from Reynolds' expression 1 instead "
+           "of the node radii (False)")
       .add("edge_length_m", &gr::MeshOptions::edge_length_m,
-           "sides = ceil(2 pi r / edge_length_m), clamped to [min_sides, max_sides]")
-      .add("min_sides", &gr::MeshOptions::min_sides)
-      .add("max_sides", &gr::MeshOptions::max_sides)
-      .add("min_radius_m", &gr::MeshOptions::min_radius_m)
-      .add("camera_m", &gr::MeshOptions::camera_m, "Camera position for level of detail, or None")
-      .add("lod_distance_m", &gr::MeshOptions::lod_distance_m)
-      .add("caps", &gr::MeshOptions::caps)
-      .add("bark", &gr::MeshOptions::bark)
-      .add("leaves", &gr::MeshOptions::leaves)
-      .add("leaf_width_ratio", &gr::MeshOptions::leaf_width_ratio)
-      .add("leaf_bend", &gr::MeshOptions::leaf_bend)
-      .add("leaf_bend_segments", &gr::MeshOptions::leaf_bend_segments)
-      .add("max_birth_time", &gr::MeshOptions::max_birth_time)
+           "Target edge of a tube's rings: sides = ceil(2 pi r / edge_length_m), clamped to "
+           "[min_sides, max_sides] (m, > 0; 0.01)")
+      .add("min_sides", &gr::MeshOptions::min_sides,
+           "Fewest sides of a tube's rings (integer >= 3; 3)")
+      .add("max_sides", &gr::MeshOptions::max_sides,
+           "Most sides of a tube's rings (integer >= min_sides; 16)")
+      .add(
+          "min_radius_m", &gr::MeshOptions::min_radius_m,
+          "Radii below this are raised to it, so twigs give no degenerate triangles (m, > 0; 1e-4)")
+      .add("camera_m", &gr::MeshOptions::camera_m,
+           "Camera position (x, y, z in m) for level of detail, or None (no level of detail)")
+      .add("lod_distance_m", &gr::MeshOptions::lod_distance_m,
+           "Beyond this distance from camera_m the edge length grows in proportion to the distance "
+           "(m, > 0; 5)")
+      .add("caps", &gr::MeshOptions::caps,
+           "Close every tube with a cap at its base and its tip (True)")
+      .add("bark", &gr::MeshOptions::bark, "Mesh the internode tubes (False: leaves only; True)")
+      .add("leaves", &gr::MeshOptions::leaves,
+           "Mesh leaf nodes as quads and leaf clusters as foliage (False)")
+      .add("leaf_width_ratio", &gr::MeshOptions::leaf_width_ratio,
+           "Leaf blade width / leaf length (> 0; 0.5)")
+      .add("leaf_bend", &gr::MeshOptions::leaf_bend,
+           "Droop of the blade tip as a fraction of its length (0 = flat quad; 0)")
+      .add("leaf_bend_segments", &gr::MeshOptions::leaf_bend_segments,
+           "Segments of a bent blade (integer >= 1; 4)")
+      .add("max_birth_time", &gr::MeshOptions::max_birth_time,
+           "Nodes born after this time (and their subtrees) are left out; the 'age' attribute is "
+           "measured from it (growth cycles or years; inf = keep all)")
       .add("foliage_seed", &gr::MeshOptions::foliage_seed,
            "Seed of the leaf placement in clusters (same seed, same mesh)")
       .existing("junctions")
@@ -105,7 +122,7 @@ void bind_mesh(py::module_& m) {
 
   using TM = gr::TriangleMesh;
   py::class_<TM>(m, "TriangleMesh", "An indexed triangle mesh with per-vertex attributes")
-      .def_property_readonly("vertex_count", &TM::vertex_count)
+      .def_property_readonly("vertex_count", &TM::vertex_count, "Number of vertices")
       .def(
           "triangle_count",
           [](const TM& mesh, std::optional<std::string> material) {
@@ -149,15 +166,20 @@ void bind_mesh(py::module_& m) {
                           self);
           },
           "Per triangle: 0 bark, 1 leaf, 2 obstacle")
-      .def("attribute_names", &TM::attribute_names)
+      .def("attribute_names", &TM::attribute_names,
+           "Names of the per-vertex attributes (age, birth_time, order, ... and the tree's own)")
       .def(
           "attribute",
           [](py::object self, const std::string& name) {
             return column(self.cast<const TM&>().attribute(name), self);
           },
           py::arg("name"), "A per-vertex float32 attribute (read-only view)")
-      .def_property_readonly("bbox_min", &TM::bbox_min)
-      .def_property_readonly("bbox_max", &TM::bbox_max)
+      .def_property_readonly(
+          "bbox_min", &TM::bbox_min,
+          "Smallest x, y, z of the vertices (m, or model units; zeros when empty)")
+      .def_property_readonly(
+          "bbox_max", &TM::bbox_max,
+          "Largest x, y, z of the vertices (m, or model units; zeros when empty)")
       .def(
           "write",
           [](const TM& mesh, const std::string& path) {
