@@ -13,8 +13,10 @@ namespace gl = fspm::greenlab;
 void bind_calibration(py::module_& m) {
   py::class_<gl::PlantParams>(m, "PlantParams",
                               "A GreenLab plant description (TOML, docs/greenlab.md)")
-      .def_readwrite("cycles", &gl::PlantParams::cycles)
-      .def_readwrite("seed", &gl::PlantParams::seed)
+      .def_readwrite("cycles", &gl::PlantParams::cycles,
+                     "Growth cycles to simulate (plant.cycles, integer in [0, 10000])")
+      .def_readwrite("seed", &gl::PlantParams::seed,
+                     "Seed of the generator of stochastic (GL2) plants (plant.seed)")
       .def_readwrite("calibration_parameters", &gl::PlantParams::calibration_parameters,
                      "Names fitted by fit_gl1 when none are given")
       .def_property_readonly(
@@ -23,8 +25,12 @@ void bind_calibration(py::module_& m) {
       .def_property_readonly(
           "functional", [](const gl::PlantParams& p) { return p.functional.enabled; },
           "True when the description has a [functional] (GL1) table")
-      .def_property_readonly("stochastic", &gl::PlantParams::stochastic)
-      .def("validate", &gl::PlantParams::validate)
+      .def_property_readonly("stochastic", &gl::PlantParams::stochastic,
+                             "True when a branching, growth or survival probability is below 1 "
+                             "(GL2)")
+      .def("validate", &gl::PlantParams::validate,
+           "Raises ParameterError when the description is inconsistent (cycles out of [0, "
+           "10000], no age, transitions to lower ages ...)")
       .def(
           "get_parameter",
           [](const gl::PlantParams& p, const std::string& name) {
@@ -36,7 +42,9 @@ void bind_calibration(py::module_& m) {
           [](gl::PlantParams& p, const std::string& name, double value) {
             gl::set_parameter(p, name, value);
           },
-          py::arg("name"), py::arg("value"))
+          py::arg("name"), py::arg("value"),
+          "Sets a numeric parameter by name, as get_parameter names them (ParameterError for an "
+          "unknown name)")
       .def("__copy__", [](const gl::PlantParams& p) { return gl::PlantParams(p); })
       .def(
           "__deepcopy__", [](const gl::PlantParams& p, py::dict) { return gl::PlantParams(p); },
@@ -63,12 +71,17 @@ void bind_calibration(py::module_& m) {
       .def(py::init([](std::string quantity, int age, int cycle, double value) {
              return gl::Target{std::move(quantity), age, cycle, value, 0};
            }),
-           py::arg("quantity"), py::arg("age"), py::arg("cycle"), py::arg("value"))
+           py::arg("quantity"), py::arg("age"), py::arg("cycle"), py::arg("value"),
+           "An observation of `quantity` for physiological age `age` in growth cycle `cycle`")
       .def_readwrite("quantity", &gl::Target::quantity,
                      "leaf_mass, internode_mass, leaf_area or production")
-      .def_readwrite("age", &gl::Target::age)
-      .def_readwrite("cycle", &gl::Target::cycle)
-      .def_readwrite("value", &gl::Target::value)
+      .def_readwrite("age", &gl::Target::age,
+                     "Physiological age of the organ (1 .. number of ages) for leaf_mass and "
+                     "internode_mass; ignored for leaf_area and production (0 when empty in CSV)")
+      .def_readwrite("cycle", &gl::Target::cycle,
+                     "Growth cycle: the organ's birth cycle, or the cycle of leaf_area and "
+                     "production (1 .. cycles; production from 0)")
+      .def_readwrite("value", &gl::Target::value, "The observed value of the quantity")
       .def("__repr__", [](const gl::Target& t) {
         return py::str("Target({!r}, age={}, cycle={}, value={})")
             .format(t.quantity, t.age, t.cycle, t.value)
@@ -90,10 +103,13 @@ void bind_calibration(py::module_& m) {
 
   using FR = gl::FitResult;
   py::class_<FR>(m, "FitResult", "A GL1 calibration: estimates, standard errors, residuals")
-      .def_readonly("names", &FR::names)
-      .def_property_readonly("initial", [](const FR& r) { return adopt(std::vector(r.initial)); })
-      .def_property_readonly("estimates",
-                             [](const FR& r) { return adopt(std::vector(r.estimates)); })
+      .def_readonly("names", &FR::names, "Names of the fitted parameters, in order")
+      .def_property_readonly(
+          "initial", [](const FR& r) { return adopt(std::vector(r.initial)); },
+          "Starting values of the parameters (from the plant description)")
+      .def_property_readonly(
+          "estimates", [](const FR& r) { return adopt(std::vector(r.estimates)); },
+          "Fitted values of the parameters (bounded below by 1e-9)")
       .def_property_readonly(
           "standard_errors", [](const FR& r) { return adopt(std::vector(r.standard_errors)); },
           "NaN where the covariance is rank deficient")
@@ -101,9 +117,9 @@ void bind_calibration(py::module_& m) {
           "residuals", [](const FR& r) { return adopt(std::vector(r.residuals)); },
           "model - target at the estimates")
       .def_readonly("initial_cost", &FR::initial_cost, "1/2 sum of squared residuals")
-      .def_readonly("final_cost", &FR::final_cost)
-      .def_readonly("iterations", &FR::iterations)
-      .def_readonly("converged", &FR::converged)
+      .def_readonly("final_cost", &FR::final_cost, "1/2 sum of squared residuals at the estimates")
+      .def_readonly("iterations", &FR::iterations, "Levenberg-Marquardt iterations done")
+      .def_readonly("converged", &FR::converged, "True when the solver converged")
       .def_readonly("fitted", &FR::fitted, "The plant description with the estimates")
       .def(
           "to_dict",

@@ -32,36 +32,38 @@ py::tuple interval(const Interval& i) { return py::make_tuple(i.low, i.high); }
 
 void bind_statistics(py::module_& m) {
   py::class_<TTestResult>(m, "TTestResult", "A t-test: statistic, degrees of freedom, p-value")
-      .def_readonly("t", &TTestResult::t)
-      .def_readonly("df", &TTestResult::df)
-      .def_readonly("p", &TTestResult::p)
-      .def_readonly("mean_a", &TTestResult::mean_a)
-      .def_readonly("mean_b", &TTestResult::mean_b)
-      .def_readonly("sd_a", &TTestResult::sd_a)
-      .def_readonly("sd_b", &TTestResult::sd_b)
-      .def_readonly("n_a", &TTestResult::n_a)
-      .def_readonly("n_b", &TTestResult::n_b)
+      .def_readonly("t", &TTestResult::t, "t statistic")
+      .def_readonly("df", &TTestResult::df, "Degrees of freedom")
+      .def_readonly("p", &TTestResult::p, "p-value of the chosen alternative, in [0, 1]")
+      .def_readonly("mean_a", &TTestResult::mean_a, "Mean of sample a")
+      .def_readonly("mean_b", &TTestResult::mean_b, "Mean of sample b")
+      .def_readonly("sd_a", &TTestResult::sd_a, "Standard deviation of sample a (divisor n - 1)")
+      .def_readonly("sd_b", &TTestResult::sd_b, "Standard deviation of sample b (divisor n - 1)")
+      .def_readonly("n_a", &TTestResult::n_a, "Size of sample a")
+      .def_readonly("n_b", &TTestResult::n_b, "Size of sample b")
       .def_readonly("estimate", &TTestResult::estimate, "mean_a - mean_b (paired: mean difference)")
       .def_property_readonly(
           "confidence_interval",
           [](const TTestResult& r) { return interval(r.confidence_interval); },
           "(low, high) of the estimate; one-sided tests have an infinite end")
-      .def("to_dict",
-           [](const TTestResult& r) {
-             py::dict d;
-             d["t"] = r.t;
-             d["df"] = r.df;
-             d["p"] = r.p;
-             d["mean_a"] = r.mean_a;
-             d["mean_b"] = r.mean_b;
-             d["sd_a"] = r.sd_a;
-             d["sd_b"] = r.sd_b;
-             d["n_a"] = r.n_a;
-             d["n_b"] = r.n_b;
-             d["estimate"] = r.estimate;
-             d["confidence_interval"] = interval(r.confidence_interval);
-             return d;
-           })
+      .def(
+          "to_dict",
+          [](const TTestResult& r) {
+            py::dict d;
+            d["t"] = r.t;
+            d["df"] = r.df;
+            d["p"] = r.p;
+            d["mean_a"] = r.mean_a;
+            d["mean_b"] = r.mean_b;
+            d["sd_a"] = r.sd_a;
+            d["sd_b"] = r.sd_b;
+            d["n_a"] = r.n_a;
+            d["n_b"] = r.n_b;
+            d["estimate"] = r.estimate;
+            d["confidence_interval"] = interval(r.confidence_interval);
+            return d;
+          },
+          "Every field as a dict (confidence_interval as (low, high))")
       .def("__repr__", [](const TTestResult& r) {
         return py::str("TTestResult(t={:.6g}, df={:.6g}, p={:.6g}, estimate={:.6g})")
             .format(r.t, r.df, r.p, r.estimate)
@@ -70,16 +72,18 @@ void bind_statistics(py::module_& m) {
 
   py::class_<MannWhitneyResult>(m, "MannWhitneyResult", "A Mann-Whitney U test")
       .def_readonly("u", &MannWhitneyResult::u, "U of sample a (R's W)")
-      .def_readonly("p", &MannWhitneyResult::p)
+      .def_readonly("p", &MannWhitneyResult::p, "p-value of the chosen alternative, in [0, 1]")
       .def_readonly("exact", &MannWhitneyResult::exact, "Exact null distribution or normal")
-      .def("to_dict",
-           [](const MannWhitneyResult& r) {
-             py::dict d;
-             d["u"] = r.u;
-             d["p"] = r.p;
-             d["exact"] = r.exact;
-             return d;
-           })
+      .def(
+          "to_dict",
+          [](const MannWhitneyResult& r) {
+            py::dict d;
+            d["u"] = r.u;
+            d["p"] = r.p;
+            d["exact"] = r.exact;
+            return d;
+          },
+          "u, p and exact as a dict")
       .def("__repr__", [](const MannWhitneyResult& r) {
         return py::str("MannWhitneyResult(u={:.6g}, p={:.6g}, exact={})")
             .format(r.u, r.p, r.exact)
