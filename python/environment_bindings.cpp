@@ -131,7 +131,7 @@ void bind_scene(py::module_& m) {
             if (n < 1) throw ValueError("directions: expected a count >= 1");
             s.sky.directions = n;
           },
-          "Stratified sky directions of the light integral")
+          "Stratified sky directions of the light integral (integer >= 1)")
       .def_property(
           "significance", [](const env::Scene& s) { return s.sky.significance; },
           [](env::Scene& s, double v) { s.sky.significance = v; },
@@ -142,7 +142,7 @@ void bind_scene(py::module_& m) {
           "Exact sphere-cap integrals where they apply")
       .def_property_readonly(
           "spheres", [](const env::Scene& s) { return sphere_array(s.spheres); },
-          "Spheres as rows x, y, z, radius, translucency (a copy)")
+          "Spheres as rows x, y, z, radius (m), translucency in [0, 1] (a copy)")
       .def_property_readonly(
           "boxes", [](const env::Scene& s) { return s.boxes.size(); }, "Number of boxes and walls")
       .def_property_readonly(
@@ -153,7 +153,7 @@ void bind_scene(py::module_& m) {
             if (!s.ground) return py::none();
             return py::cast(s.ground->height_m);
           },
-          "Height of the ground plane, or None")
+          "Height z of the ground plane (m), or None")
       .def(
           "add_sphere",
           [](env::Scene& s, const Eigen::Vector3d& center, double radius, double translucency,
@@ -165,7 +165,9 @@ void bind_scene(py::module_& m) {
             s.spheres.push_back({center, radius, translucency, solid});
           },
           py::arg("center"), py::arg("radius"), py::arg("translucency") = 0.0,
-          py::arg("solid") = false, "Adds a sphere (a leaf cluster unless solid)")
+          py::arg("solid") = false,
+          "Adds a sphere: centre (m), radius (m, > 0), translucency in [0, 1] (0: opaque); a leaf "
+          "cluster unless solid")
       .def(
           "add_box",
           [](env::Scene& s, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
@@ -182,7 +184,8 @@ void bind_scene(py::module_& m) {
             s.boxes.push_back(b);
           },
           py::arg("min"), py::arg("max"), py::arg("translucency") = 0.0, py::arg("solid") = true,
-          "Adds an axis-aligned box")
+          "Adds an axis-aligned box from its min to its max corner (m; min < max on every axis), "
+          "translucency in [0, 1]")
       .def(
           "add_wall",
           [](env::Scene& s, const Eigen::Vector2d& from, const Eigen::Vector2d& to, double height,
@@ -196,14 +199,16 @@ void bind_scene(py::module_& m) {
           },
           py::arg("from_xy"), py::arg("to_xy"), py::arg("height"), py::arg("thickness") = 0.2,
           py::arg("base") = 0.0, py::arg("translucency") = 0.0,
-          "Adds a solid vertical wall from (x0, y0) to (x1, y1)")
+          "Adds a solid vertical wall from (x0, y0) to (x1, y1) (m): height (m, > 0), thickness "
+          "(m, > 0), "
+          "base z (m)")
       .def(
           "set_ground",
           [](env::Scene& s, double height, double translucency, bool solid) {
             s.ground = env::Ground{height, translucency, solid};
           },
           py::arg("height") = 0.0, py::arg("translucency") = 0.0, py::arg("solid") = true,
-          "Adds (or replaces) the ground plane z = height")
+          "Adds (or replaces) the ground plane z = height (m)")
       .def("inside_solid", &env::Scene::inside_solid, py::arg("point"),
            "True when the point (x, y, z in m) lies inside a solid box or sphere, or below a solid "
            "ground")
@@ -463,7 +468,8 @@ void bind_growth(py::module_& m) {
       },
       py::arg("params"), py::arg("scene") = py::none(),
       py::arg("base") = Eigen::Vector3d::Zero().eval(),
-      "Grow a tree (GrowthParams, or a dict of them with an optional 'preset') in a scene");
+      "Grow a tree (GrowthParams, or a dict of them with an optional 'preset') in a scene from "
+      "base (x, y, z in m)");
 }
 
 void bind_adaptation(py::module_& m) {
