@@ -1,0 +1,299 @@
+#include "stages/developmental_model.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "fspm/error.hpp"
+
+namespace fspm::stages {
+namespace {
+
+constexpr std::uint32_t kNoChain = ~std::uint32_t{0};
+
+bool is_edge(const TreeGraph& t, NodeId n) { return t.kind(n) == OrganKind::kInternode; }
+
+Eigen::Vector3d heading(const TreeGraph& t, NodeId n) {
+  const Eigen::Vector3d d = t.direction(n);
+  if (d.squaredNorm() > 0.0) return d.normalized();
+  const Eigen::Vector3d s = t.end(n) - t.start(n);
+  return s.squaredNorm() > 0.0 ? Eigen::Vector3d(s.normalized()) : Eigen::Vector3d::UnitZ();
+}
+
+double angle_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+// Within `tolerance` of each other, relative to the larger.
+bool close(double a, double b, double tolerance) {
+  const double scale = std::max(std::abs(a), std::abs(b));
+  return scale == 0.0 || std::abs(a - b) <= tolerance * scale;
+}
+
+}  // namespace
+
+void StagesParams::validate() const {
+  if (rigid_tip_count < 1 || rigid_tip_count > 1'000'000) {
+    throw ValueError("stages: rigid_tip_count must be in [1, 1000000]");
+  }
+  if (!(pipe_exponent >= 1.0 && pipe_exponent <= 4.0)) {
+    throw ValueError("stages: pipe_exponent must be in [1, 4]");
+  }
+  if (!(same_level_tolerance >= 0.0 && same_level_tolerance <= 1.0)) {
+    throw ValueError("stages: same_level_tolerance must be in [0, 1]");
+  }
+}
+
+double seasonal_time(double t, int years, double c, double s) {
+  if (years < 1 || !(c > 0.0) || !std::isfinite(t) || !std::isfinite(s)) {
+    throw ValueError("seasonal time: expected years >= 1, c > 0 and finite t and s");
+  }
+  // Pirk eq. 5.11.
+  const double n = years;
+  return std::sin((t * n - s) * 2.0 * std::numbers::pi) / (2.0 * std::numbers::pi * n * c) + t;
+}
+
+DevelopmentalModel::DevelopmentalModel(const TreeGraph& tree, const StagesParams& params)
+    : tree_(tree), params_(params) {
+  params_.validate();
+  if (tree_.empty() || !is_edge(tree_, 0)) {
+    throw ValueError("developmental stages: the tree needs an internode at its root");
+  }
+  assign_levels_and_chains();
+  compute_growth_times();
+  compute_bending();
+  compute_radius_coefficients();
+}
+
+std::size_t DevelopmentalModel::lateral_chain_count() const {
+  return chain_rate_.empty() ? 0 : chain_rate_.size() - 1;
+}
+
+// Pirk 5.2.2: Gravelius levels and chains. Node ids put parents first, so one pass in id order
+// sees every parent before its children.
+void DevelopmentalModel::assign_levels_and_chains() {
+  const std::size_t n = tree_.size();
+  level_.assign(n, 1);
+  chain_.assign(n, kNoChain);
+  offset_.assign(n, 0.0);
+  chain_base_.assign(n, 0);
+  chain_.front() = 0;
+  chain_rate_.assign(1, 0.0);  // lengths for now; rates in compute_growth_times()
+  std::vector<NodeId> edges;
+  for (NodeId p = 0; p < n; ++p) {
+    if (!is_edge(tree_, p)) {
+      for (const NodeId c : tree_.children(p)) {
+        if (is_edge(tree_, c)) {
+          throw ValueError("developmental stages: internode " + std::to_string(c) +
+                           " grows from an organ (a leaf, flower or bud), not from an internode");
+        }
+        level_[c] = level_[p];
+      }
+      continue;
+    }
+    chain_rate_[chain_[p]] += tree_.length(p);
+    edges.clear();
+    for (const NodeId c : tree_.children(p)) {
+      if (is_edge(tree_, c)) {
+        edges.push_back(c);
+      } else {
+        level_[c] = level_[p];  // an organ belongs to its edge
+      }
+    }
+    if (edges.empty()) continue;
+    const Eigen::Vector3d hp = heading(tree_, p);
+    NodeId apical = edges.front();
+    double least = angle_between(hp, heading(tree_, apical));
+    bool decurrent = true;  // all children alike within the tolerance
+    for (const NodeId c : edges) {
+      const double a = angle_between(hp, heading(tree_, c));
+      decurrent = decurrent &&
+                  close(a, angle_between(hp, heading(tree_, edges.front())),
+                        params_.same_level_tolerance) &&
+                  close(tree_.radius(c), tree_.radius(edges.front()), params_.same_level_tolerance);
+      if (a < least) least = a, apical = c;
+    }
+    for (const NodeId c : edges) {
+      if (c == apical) {
+        chain_[c] = chain_[p];
+        offset_[c] = offset_[p] + tree_.length(p);
+        level_[c] = level_[p];
+        continue;
+      }
+      chain_[c] = static_cast<std::uint32_t>(chain_rate_.size());
+      chain_rate_.push_back(0.0);
+      chain_base_[c] = 1;
+      level_[c] = static_cast<std::uint16_t>(
+          std::min<int>(level_[p] + (decurrent ? 0 : 1), std::numeric_limits<std::uint16_t>::max()));
+    }
+  }
+}
+
+// Pirk eq. 5.3-5.4: a chain starts when its parent chain reaches the branch point and grows at
+// the rate that completes it at t = 1; an edge starts when the chain reaches it.
+void DevelopmentalModel::compute_growth_times() {
+  const std::size_t n = tree_.size();
+  std::vector<double> chain_length = chain_rate_;
+  chain_start_.assign(chain_rate_.size(), 0.0);
+  start_time_.assign(n, 0.0);
+  chain_rate_[0] = chain_length[0];
+  for (NodeId i = 0; i < n; ++i) {
+    if (!is_edge(tree_, i)) {
+      start_time_[i] = start_time_[tree_.parent(i)];
+      continue;
+    }
+    const std::uint32_t c = chain_[i];
+    if (chain_base_[i]) {
+      const NodeId p = tree_.parent(i);
+      // The parent chain reaches the end of edge p (where the branch stands).
+      const double reached =
+          chain_start_[chain_[p]] + (offset_[p] + tree_.length(p)) / chain_rate_[chain_[p]];
+      chain_start_[c] = std::min(reached, 1.0);
+      chain_rate_[c] = chain_length[c] / std::max(1.0 - chain_start_[c], 1e-9);
+    }
+    start_time_[i] = chain_rate_[c] > 0.0 ? chain_start_[c] + offset_[i] / chain_rate_[c]
+                                          : chain_start_[c];
+  }
+}
+
+// Pirk eq. 5.5: each lateral chain turns from the mean angle of its level's branches to its own,
+// until its subtree carries rigid_tip_count growing tips (one per chain started in it).
+void DevelopmentalModel::compute_bending() {
+  const std::size_t n = tree_.size();
+  // Mean branching angle per level of the lateral (alpha_avg^(n)).
+  std::vector<double> angle_sum, angle_count;
+  std::vector<double> final_angle(n, 0.0);
+  for (NodeId i = 1; i < n; ++i) {
+    if (!chain_base_[i]) continue;
+    final_angle[i] = angle_between(heading(tree_, tree_.parent(i)), heading(tree_, i));
+    if (angle_sum.size() <= level_[i]) angle_sum.resize(level_[i] + 1u, 0.0);
+    if (angle_count.size() <= level_[i]) angle_count.resize(level_[i] + 1u, 0.0);
+    angle_sum[level_[i]] += final_angle[i];
+    angle_count[level_[i]] += 1.0;
+  }
+  // Start times of the chains in each subtree, smallest first, kept to rigid_tip_count.
+  const auto keep = static_cast<std::size_t>(params_.rigid_tip_count);
+  std::vector<std::vector<double>> starts(n);
+  for (NodeId i = static_cast<NodeId>(n); i-- > 0;) {
+    if (!is_edge(tree_, i)) continue;
+    if (chain_base_[i] || i == 0) starts[i].push_back(chain_start_[chain_[i]]);
+    std::sort(starts[i].begin(), starts[i].end());
+    if (starts[i].size() > keep) starts[i].resize(keep);
+    if (i > 0) {
+      auto& up = starts[tree_.parent(i)];
+      up.insert(up.end(), starts[i].begin(), starts[i].end());
+    }
+  }
+  bend_axis_.assign(n, Eigen::Vector3d::Zero());
+  bend_angle_.assign(n, 0.0);
+  bend_end_.assign(n, 1.0);
+  for (NodeId i = 1; i < n; ++i) {
+    if (!chain_base_[i]) continue;
+    const Eigen::Vector3d axis = heading(tree_, tree_.parent(i)).cross(heading(tree_, i));
+    if (axis.norm() < 1e-12) continue;  // a lateral in line with its parent does not turn
+    bend_axis_[i] = axis.normalized();
+    bend_angle_[i] = final_angle[i] - angle_sum[level_[i]] / angle_count[level_[i]];
+    bend_end_[i] = starts[i].size() >= keep ? starts[i][keep - 1] : 1.0;
+  }
+}
+
+// Pirk eq. 5.7: b_p = sum r_i^u / r_p^u over the children of the given tree; r_avg over its tips.
+void DevelopmentalModel::compute_radius_coefficients() {
+  const std::size_t n = tree_.size();
+  const double u = params_.pipe_exponent;
+  radius_coefficient_.assign(n, 0.0);
+  double tip_sum = 0.0;
+  std::size_t tips = 0;
+  for (NodeId i = 0; i < n; ++i) {
+    if (!is_edge(tree_, i)) continue;
+    double sum = 0.0;
+    bool has_edge_child = false;
+    for (const NodeId c : tree_.children(i)) {
+      if (!is_edge(tree_, c)) continue;
+      has_edge_child = true;
+      sum += std::pow(tree_.radius(c), u);
+    }
+    const double rp = std::pow(tree_.radius(i), u);
+    if (has_edge_child) {
+      radius_coefficient_[i] = rp > 0.0 ? sum / rp : 0.0;
+    } else {
+      tip_sum += tree_.radius(i);
+      ++tips;
+    }
+  }
+  tip_radius_ = tips > 0 ? tip_sum / static_cast<double>(tips) : 0.0;
+}
+
+TreeGraph DevelopmentalModel::stage(double t) const {
+  TreeGraph out;
+  stage(t, out);
+  return out;
+}
+
+void DevelopmentalModel::stage(double t, TreeGraph& out) const {
+  t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0);
+  const std::size_t n = tree_.size();
+  out.clear_keep_capacity();
+  out.reserve(n);
+  // Forward: grown length, rotation (the bends of the chain bases above), position.
+  std::vector<NodeId> id_of(n, kNoNode);
+  std::vector<Eigen::Quaterniond> turn(n, Eigen::Quaterniond::Identity());
+  std::vector<double> grown(n, 0.0);
+  for (NodeId i = 0; i < n; ++i) {
+    const NodeId p = i == 0 ? kNoNode : tree_.parent(i);
+    if (p != kNoNode && (id_of[p] == kNoNode || grown[p] < tree_.length(p))) continue;
+    NodeData d;
+    d.kind = tree_.kind(i);
+    d.order = static_cast<std::uint16_t>(level_[i] - 1);
+    d.birth_time = start_time_[i];
+    d.physiological_age = tree_.physiological_age(i);
+    d.radius = tree_.radius(i);
+    if (p != kNoNode) turn[i] = turn[p];
+    if (is_edge(tree_, i)) {
+      const double reach = chain_rate_[chain_[i]] * (t - chain_start_[chain_[i]]) - offset_[i];
+      // At t = 1 every edge is complete (rounding must not leave one a hair short).
+      grown[i] = t >= 1.0 ? tree_.length(i) : std::clamp(reach, 0.0, tree_.length(i));
+      if (t < 1.0 && !(reach > 0.0)) continue;  // not started yet
+      if (chain_base_[i] && bend_angle_[i] != 0.0) {
+        // Eq. 5.5: the part of the turn still to come, about the base.
+        const double span = std::max(bend_end_[i] - start_time_[i], 1e-12);
+        const double done = std::clamp((t - start_time_[i]) / span, 0.0, 1.0);
+        turn[i] = turn[i] * Eigen::AngleAxisd(-(1.0 - done) * bend_angle_[i], bend_axis_[i]);
+      }
+      d.direction = (turn[i] * heading(tree_, i)).normalized();
+      d.length = grown[i];
+    } else {
+      grown[i] = tree_.length(i);
+      d.direction = turn[i] * tree_.direction(i);
+      d.length = tree_.length(i);
+    }
+    d.start = p == kNoNode ? tree_.start(0) : out.end(id_of[p]) + turn[i] * (tree_.start(i) - tree_.end(p));
+    d.end = is_edge(tree_, i) ? Eigen::Vector3d(d.start + d.length * d.direction)
+                              : Eigen::Vector3d(d.start + turn[i] * (tree_.end(i) - tree_.start(i)));
+    id_of[i] = out.add_node_unchecked(p == kNoNode ? kNoNode : id_of[p], d);
+  }
+  // Backward: radii from the tips (eq. 5.8).
+  const double u = params_.pipe_exponent;
+  std::vector<double> sum(out.size(), 0.0);
+  std::vector<std::uint8_t> has_child(out.size(), 0);
+  for (NodeId i = static_cast<NodeId>(n); i-- > 0;) {
+    const NodeId k = id_of[i];
+    if (k == kNoNode || !is_edge(tree_, i)) continue;
+    double r = tree_.radius(i);
+    if (has_child[k]) {
+      r = radius_coefficient_[i] > 0.0 ? std::pow(sum[k] / radius_coefficient_[i], 1.0 / u) : r;
+    } else if (radius_coefficient_[i] > 0.0) {
+      r = tip_radius_;  // a tip now that is not one in the given tree
+    }
+    out.set_radius(k, r);
+    if (i > 0) {
+      const NodeId pk = id_of[tree_.parent(i)];
+      sum[pk] += std::pow(r, u);
+      has_child[pk] = 1;
+    }
+  }
+}
+
+}  // namespace fspm::stages

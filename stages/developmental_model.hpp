@@ -1,0 +1,90 @@
+#pragma once
+// Developmental stages of a static tree (Pirk 2013, chapter 5): a reverse growth simulation that
+// turns one given tree into a model of its whole development, from which any intermediate stage
+// t in [0, 1] (t = 1: the given tree) is computed directly, without simulating the stages before.
+//
+// Analysis, once per tree (5.2.2, 5.3):
+//   - Gravelius order: the root edge has level 1; at a bifurcation the child deviating least
+//     from its parent keeps the level and continues the chain, the others start chains one level
+//     higher, or of the same level when all children differ by less than 5 % in angle and radius
+//     (decurrent trees). A chain is a maximal run of edges without a level change.
+//   - Growth rates (eq. 5.3-5.4): the main chain grows from t = 0, a lateral chain from the time
+//     its parent chain reaches the branch point; every chain grows at the constant rate that
+//     makes it reach its full length at t = 1 ("all branches still growing").
+//   - Angle interpolation (eq. 5.5): a lateral chain starts at the mean branching angle of its
+//     level and turns at a constant angular velocity to its final angle, which it reaches when
+//     its subtree carries five growing tips and turns rigid (pipe model, 5.3.2).
+//   - Radius interpolation (eq. 5.6-5.8): tips have the mean radius of the given tree's terminal
+//     edges (their own at the end); every other edge has r_p = (sum r_i^u / b_p)^(1/u) over the
+//     children present, u = 2.5, with b_p taken from the given tree (eq. 5.7), so t = 1 gives
+//     back the given radii.
+//   - Leaves and other organs appear when the edge that bears them is complete.
+// Not modelled: mesh input (5.2.1), the pipe-model distributions and the structures added below
+// the crown and in overlap regions (5.3.4-5.3.6), growth-based editing (5.4.1).
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "fspm/tree_graph.hpp"
+
+namespace fspm::stages {
+
+struct StagesParams {
+  // Pirk 5.3.2: a branch stops bending once its subtree carries this many growing tips.
+  int rigid_tip_count = 5;
+  double pipe_exponent = 2.5;           // u of eq. 5.7-5.8 (Murray's 2.49)
+  double same_level_tolerance = 0.05;   // 5.2.2: children within 5 % keep the parent's level
+  void validate() const;                // throws ValueError for values out of range
+};
+
+// Pirk eq. 5.11: seasonal growth rhythm, t in [0, 1] remapped over `years` seasons with
+// dormancy strength c in [1, 1.4] (c = 1: growth stops once a year) and shift s (0 for growth,
+// 0.5 for the angle interpolation).
+double seasonal_time(double t, int years, double c = 1.2, double s = 0.0);
+
+class DevelopmentalModel {
+ public:
+  // Analyses `tree` (internodes as edges; leaves, flowers and buds as organs on them). Throws
+  // ValueError for an empty tree or bad parameters.
+  explicit DevelopmentalModel(const TreeGraph& tree, const StagesParams& params = {});
+
+  // The stage at time t (clamped to [0, 1]) into `out`, reusing its memory: the edges grown by
+  // then (a growing edge at its partial length), with order = Gravelius level - 1 and
+  // birth_time = the time the edge starts growing.
+  void stage(double t, TreeGraph& out) const;
+  TreeGraph stage(double t) const;
+
+  std::size_t chain_count() const { return chain_rate_.size(); }
+  std::size_t lateral_chain_count() const;
+  // Per node of the given tree: Gravelius level (1 on the main axis; organs take their edge's),
+  // its chain, and the time it starts growing.
+  const std::vector<std::uint16_t>& level() const { return level_; }
+  const std::vector<std::uint32_t>& chain() const { return chain_; }
+  const std::vector<double>& start_time() const { return start_time_; }
+  // Per chain: growth rate (length per unit of t) and the time it starts.
+  const std::vector<double>& chain_rate() const { return chain_rate_; }
+  const std::vector<double>& chain_start() const { return chain_start_; }
+
+ private:
+  void assign_levels_and_chains();
+  void compute_growth_times();
+  void compute_bending();
+  void compute_radius_coefficients();
+
+  const TreeGraph tree_;
+  StagesParams params_;
+  std::vector<std::uint16_t> level_;
+  std::vector<std::uint32_t> chain_;
+  std::vector<double> offset_;      // length of the chain before the edge
+  std::vector<double> start_time_;  // when the edge starts growing
+  std::vector<std::uint8_t> chain_base_;  // first edge of a lateral chain
+  std::vector<double> chain_rate_, chain_start_;
+  // Bending of lateral chain bases (eq. 5.5): axis, final angle minus initial angle, and the
+  // time span over which it is made up.
+  std::vector<Eigen::Vector3d> bend_axis_;
+  std::vector<double> bend_angle_, bend_end_;
+  std::vector<double> radius_coefficient_;  // b_p of eq. 5.7 (0 for final tips)
+  double tip_radius_ = 0.0;                 // r_avg
+};
+
+}  // namespace fspm::stages
