@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   fspm::cli::add_greenlab_commands(app);
   fspm::cli::add_evaluation_commands(app);
   fspm::cli::add_adapt_commands(app);
+  fspm::cli::add_stages_commands(app);
   fspm::cli::add_full_commands(app);
 
   try {

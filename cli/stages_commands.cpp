@@ -1,0 +1,116 @@
+// fspm stages: developmental stages of a static tree (Pirk chapter 5).
+#include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
+#include "fspm/error.hpp"
+#include "fspm/tree_file.hpp"
+#include "stages/developmental_model.hpp"
+
+namespace fspm::cli {
+namespace {
+
+struct StagesOptions {
+  std::string tree;
+  std::string output;
+  std::string format;
+  double at = -1.0;
+  int steps = 0;
+  int season_years = 0;
+  bool json = false;
+};
+
+double seconds_from(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The stage times: one (--at) or N evenly spaced in (0, 1] (--steps), remapped by the seasons.
+std::vector<double> stage_times(const StagesOptions& o) {
+  if ((o.at >= 0.0) == (o.steps > 0)) {
+    throw ValueError("give either --at T (one stage) or --steps N (a sequence)");
+  }
+  std::vector<double> times;
+  if (o.at >= 0.0) {
+    times.push_back(o.at);
+  } else {
+    for (int k = 1; k <= o.steps; ++k) times.push_back(static_cast<double>(k) / o.steps);
+  }
+  if (o.season_years > 0) {
+    for (double& t : times) t = stages::seasonal_time(t, o.season_years);
+  }
+  return times;
+}
+
+// --steps: OUT is a folder of stage_NNN files (created if missing).
+std::string stage_path(const StagesOptions& o, std::size_t k) {
+  if (o.steps <= 0) return o.output;
+  char name[32];
+  std::snprintf(name, sizeof name, "stage_%03zu.%s", k + 1,
+                o.format.empty() ? "treeb" : o.format.c_str());
+  return (std::filesystem::path(o.output) / name).string();
+}
+
+void run_stages(const StagesOptions& o) {
+  refuse_overwriting_input(o.output, {o.tree});
+  const std::vector<double> times = stage_times(o);
+  const TreeGraph tree = read_tree_file(o.tree);
+  auto t0 = std::chrono::steady_clock::now();
+  const stages::DevelopmentalModel model(tree);
+  const double analysis_seconds = seconds_from(t0);
+  if (o.steps > 0) std::filesystem::create_directories(o.output);
+  TreeGraph stage;
+  double stage_seconds = 0.0;
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    t0 = std::chrono::steady_clock::now();
+    model.stage(times[k], stage);
+    stage_seconds += seconds_from(t0);
+    write_tree_file(stage, stage_path(o, k), o.steps > 0 ? std::string_view{} : o.format);
+  }
+  std::size_t branches = 0;
+  for (NodeId i = 0; i < tree.size(); ++i) branches += tree.kind(i) == OrganKind::kInternode;
+  spdlog::info("{}: {} internodes in {} chains; {} stage(s) -> {}", o.tree, branches,
+               model.chain_count(), times.size(), o.output);
+  if (o.json) {
+    print_json({{"branches", branches},
+                {"chains", model.chain_count()},
+                {"stages", times.size()},
+                {"times", times},
+                {"last_stage_nodes", stage.size()},
+                {"analysis_seconds", analysis_seconds},
+                {"seconds_per_stage", stage_seconds / static_cast<double>(times.size())},
+                {"output", o.output}});
+  }
+}
+
+}  // namespace
+
+void add_stages_commands(CLI::App& app) {
+  auto o = std::make_shared<StagesOptions>();
+  CLI::App* s = app.add_subcommand(
+      "stages",
+      "Developmental stages of a static tree (Pirk ch. 5): any stage from young to the given tree");
+  s->add_option("TREE", o->tree, "The grown tree (.tree, .treeb, .nwk, .mtg)")->required();
+  s->add_option("-o,--output", o->output,
+                "Tree file for --at; folder of stage_NNN files for --steps")
+      ->required();
+  s->add_option("--at", o->at, "One stage at time T in [0, 1] (1: the given tree)")
+      ->check(number_in(0.0, 1.0));
+  s->add_option("--steps", o->steps, "N stages at 1/N, 2/N, ..., 1")->check(number_in(1, 100000));
+  s->add_option("--season-years", o->season_years,
+                "Seasonal growth over N years (Pirk eq. 5.11, c = 1.2)")
+      ->check(number_in(1, 10000));
+  s->add_option("--format", o->format, "tree, treeb, nwk, mtg (default: from the extension)");
+  s->add_flag("--json", o->json,
+              "One JSON object on stdout: branches, chains, stages, analysis_seconds, "
+              "seconds_per_stage");
+  s->callback([o] { run_stages(*o); });
+}
+
+}  // namespace fspm::cli
