@@ -14,6 +14,10 @@ namespace fspm::graphics {
 struct ChartSeries {
   std::string name;  // legend entry
   std::vector<double> x, y;
+  int color = -1;        // palette index (chart_color); -1: the series' own index
+  bool dashed = false;   // a dashed line (e.g. mean ± standard deviation around a mean)
+  bool markers = false;  // a dot at every point
+  bool legend = true;    // listed in the legend, which is drawn when it lists several series
 };
 
 struct ChartOptions {
@@ -22,13 +26,17 @@ struct ChartOptions {
   std::string y_label;
   int width = 800;
   int height = 600;
+  // Ticks on the x axis at these positions with these labels (same length; e.g. the values of a
+  // text parameter placed at 0, 1, 2); empty: VTK's own ticks.
+  std::vector<double> x_ticks;
+  std::vector<std::string> x_tick_labels;
 };
 
 // Colour of series (or box) i: the Tableau 10 palette, cycling (8-bit RGB).
 std::array<unsigned char, 3> chart_color(std::size_t i);
 
-// One line per series (points sorted as given), a legend when there are several. Throws
-// ValueError for no series, x and y of different lengths, an empty or non-finite series, a bad
+// One line per series (points sorted as given), a legend when several are listed in it. Throws
+// ValueError for no series, x ticks and labels of different lengths, x and y of different lengths, an empty or non-finite series, a bad
 // size or an image format OpenImageIO does not write; IoError when no display can be opened or
 // the file cannot be written (nothing is left half-written).
 Image line_chart_image(const std::vector<ChartSeries>& series, const ChartOptions& options);

@@ -12,12 +12,14 @@
 #include <vtkPen.h>
 #include <vtkPlot.h>
 #include <vtkPlotBox.h>
+#include <vtkPlotPoints.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkStringArray.h>
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -86,15 +88,36 @@ Image line_chart_image(const std::vector<ChartSeries>& series, const ChartOption
     check_finite(s.x, "series '" + s.name + "'");
     check_finite(s.y, "series '" + s.name + "'");
   }
+  if (o.x_ticks.size() != o.x_tick_labels.size()) {
+    throw ValueError("line chart: " + std::to_string(o.x_tick_labels.size()) + " tick labels for " +
+                     std::to_string(o.x_ticks.size()) + " ticks");
+  }
   check_size(o);
   return render_chart(o, [&](vtkContextView* view) {
     vtkNew<vtkChartXY> chart;
+    if (!o.x_ticks.empty()) {
+      vtkNew<vtkDoubleArray> positions;
+      vtkNew<vtkStringArray> labels;
+      for (std::size_t i = 0; i < o.x_ticks.size(); ++i) {
+        positions->InsertNextValue(o.x_ticks[i]);
+        labels->InsertNextValue(o.x_tick_labels[i]);
+      }
+      vtkAxis* axis = chart->GetAxis(vtkAxis::BOTTOM);
+      axis->SetCustomTickPositions(positions, labels);
+      // Half a step of room on either side, so the first and last points are not on the frame.
+      const auto [lo, hi] = std::minmax_element(o.x_ticks.begin(), o.x_ticks.end());
+      const double pad = o.x_ticks.size() > 1 ? 0.5 * (*hi - *lo) / (o.x_ticks.size() - 1) : 0.5;
+      axis->SetBehavior(vtkAxis::FIXED);
+      axis->SetRange(*lo - pad, *hi + pad);
+    }
     view->GetScene()->AddItem(chart);
     style_title(chart, o.title);
     chart->GetAxis(vtkAxis::BOTTOM)->SetTitle(o.x_label);
     chart->GetAxis(vtkAxis::LEFT)->SetTitle(o.y_label);
-    chart->SetShowLegend(series.size() > 1);
-    if (series.size() > 1) chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+    const auto listed = std::count_if(series.begin(), series.end(),
+                                      [](const ChartSeries& s) { return s.legend; });
+    chart->SetShowLegend(listed > 1);
+    if (listed > 1) chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
     for (std::size_t i = 0; i < series.size(); ++i) {
       const ChartSeries& s = series[i];
       vtkNew<vtkTable> table;
@@ -110,9 +133,15 @@ Image line_chart_image(const std::vector<ChartSeries>& series, const ChartOption
       }
       vtkPlot* line = chart->AddPlot(vtkChart::LINE);
       line->SetInputData(table, 0, 1);
-      const auto c = chart_color(i);
+      const auto c = chart_color(s.color >= 0 ? static_cast<std::size_t>(s.color) : i);
       line->SetColor(c[0], c[1], c[2], 255);
-      line->SetWidth(2.5);
+      line->SetWidth(s.dashed ? 1.5 : 2.5);
+      if (s.dashed) line->GetPen()->SetLineType(vtkPen::DASH_LINE);
+      line->SetLegendVisibility(s.legend);
+      if (auto* points = vtkPlotPoints::SafeDownCast(line); points != nullptr && s.markers) {
+        points->SetMarkerStyle(vtkPlotPoints::CIRCLE);
+        points->SetMarkerSize(8.0);
+      }
     }
   });
 }

@@ -3,6 +3,8 @@
 // colouring by a per-vertex attribute with a scalar bar, fixed camera views. VTK needs an X
 // display for its OpenGL context here (Debian's VTK has no EGL/OSMesa back end); the window
 // itself is never shown, so a virtual server (xvfb-run -a) is enough.
+#include <Eigen/Geometry>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -27,7 +29,25 @@ struct RenderOptions {
   // > 0: parallel projection in which the image height spans this many metres, centred on the
   // tree (figures with a known scale); 0: perspective framing the tree.
   double ortho_height_m = 0.0;
+  // With ortho_height_m > 0 and a unit ("m", "model units"): a black scale bar in the lower left
+  // corner, a round length (1, 2 or 5 times a power of ten) close to a fifth of the image height,
+  // labelled with its length and this unit.
+  std::string scale_bar_unit;
+  // The box the camera is aimed at and fits (the ground plane lies under it); nullopt: the mesh's
+  // bounds. Figures at one common scale give every tree a box of the same height from the ground,
+  // so the ground lies on the same image row in each.
+  std::optional<Eigen::AlignedBox3f> frame;
 };
+
+// The height in metres a parallel projection along `view` needs to show all of the box [lo, hi]
+// in an image of `aspect` = width / height: the box's extent along the view's up direction, or
+// its extent across divided by the aspect, whichever is larger (iso: its diagonal for both).
+double ortho_height_to_fit(View view, const Eigen::Vector3f& lo, const Eigen::Vector3f& hi,
+                           double aspect);
+
+// The scale bar's length for an image `height_m` high: the largest 1, 2 or 5 times a power of ten
+// not above a fifth of it (a fifth of 9 m is 1.8 m: 1 m). 0 for a height that is not positive.
+double scale_bar_length(double height_m);
 
 // "WxH" -> width, height; throws ValueError.
 void parse_size(std::string_view text, int& width, int& height);

@@ -1,6 +1,7 @@
 // VTK offscreen rendering of a TriangleMesh. The window is created off screen on the current X
 // display (a virtual one from xvfb-run is enough) and read back into an Image.
 #include <vtkActor.h>
+#include <vtkActor2D.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -15,10 +16,13 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
+#include <vtkPolyDataMapper2D.h>
 #include <vtkProperty.h>
+#include <vtkProperty2D.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
+#include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
 
@@ -30,6 +34,7 @@
 #include <cstring>
 #include <limits>
 #include <span>
+#include <sstream>
 
 #include "fspm/error.hpp"
 #include "graphics/render.hpp"
@@ -154,6 +159,43 @@ void fit_box(vtkCamera* camera, const Eigen::Vector3f& lo, const Eigen::Vector3f
   camera->SetPosition(placed.data());
 }
 
+// A black bar of scale_bar_length(ortho_height_m) in the lower left corner with its length and
+// unit above it, in pixels: the parallel projection maps ortho_height_m onto the image height.
+void add_scale_bar(vtkRenderer* renderer, const RenderOptions& options) {
+  const double length = scale_bar_length(options.ortho_height_m);
+  if (length <= 0.0) return;
+  const double px = length * options.height / options.ortho_height_m;
+  const double x0 = 0.04 * options.width, y0 = 0.04 * options.height;
+  const double thick = std::max(3.0, 0.008 * options.height);
+  vtkNew<vtkPoints> corners;
+  corners->InsertNextPoint(x0, y0, 0.0);
+  corners->InsertNextPoint(x0 + px, y0, 0.0);
+  corners->InsertNextPoint(x0 + px, y0 + thick, 0.0);
+  corners->InsertNextPoint(x0, y0 + thick, 0.0);
+  vtkNew<vtkCellArray> quad;
+  const vtkIdType ids[4] = {0, 1, 2, 3};
+  quad->InsertNextCell(4, ids);
+  vtkNew<vtkPolyData> bar;
+  bar->SetPoints(corners);
+  bar->SetPolys(quad);
+  vtkNew<vtkPolyDataMapper2D> mapper;
+  mapper->SetInputData(bar);
+  vtkNew<vtkActor2D> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.0, 0.0, 0.0);
+  renderer->AddActor2D(actor);
+
+  std::ostringstream label;
+  label << length << ' ' << options.scale_bar_unit;
+  vtkNew<vtkTextActor> text;
+  text->SetInput(label.str().c_str());
+  text->SetPosition(x0, y0 + thick + 4.0);
+  text->GetTextProperty()->SetFontSize(std::max(12, options.height / 30));
+  text->GetTextProperty()->SetColor(0.0, 0.0, 0.0);
+  text->GetTextProperty()->ShadowOff();
+  renderer->AddActor2D(text);
+}
+
 // Sets up the renderer, lets `add_actors` fill it, adds the ground, lights and camera framing
 // [lo, hi], renders off screen and reads the image back.
 template <typename AddActors>
@@ -220,6 +262,7 @@ Image render_with(const RenderOptions& options, Eigen::Vector3f lo, Eigen::Vecto
     // Parallel projection at a known scale: the image height spans ortho_height_m metres.
     renderer->GetActiveCamera()->ParallelProjectionOn();
     renderer->GetActiveCamera()->SetParallelScale(0.5 * options.ortho_height_m);
+    if (!options.scale_bar_unit.empty()) add_scale_bar(renderer, options);
   }
   renderer->ResetCameraClippingRange();
 
@@ -406,7 +449,9 @@ bool render_available() { return true; }
 
 Image render_mesh(const TriangleMesh& mesh, const RenderOptions& options) {
   if (!options.color_by.empty()) (void)mesh.attribute(options.color_by);  // ValueError first
-  return render_with(options, mesh.bbox_min(), mesh.bbox_max(), [&](vtkRenderer* renderer) {
+  const Eigen::Vector3f lo = options.frame ? options.frame->min() : mesh.bbox_min();
+  const Eigen::Vector3f hi = options.frame ? options.frame->max() : mesh.bbox_max();
+  return render_with(options, lo, hi, [&](vtkRenderer* renderer) {
     if (mesh.empty()) return;
     // Obstacles always in stone, as an actor of their own (lit like stone, and outside the
     // colour scale, which spans the plants' values only).
@@ -433,6 +478,10 @@ Image render_scene(const InstancedMesh& scene, const RenderOptions& options) {
   }
   Eigen::Vector3f lo, hi;
   scene.bounds(lo, hi);
+  if (options.frame) {
+    lo = options.frame->min();
+    hi = options.frame->max();
+  }
   return render_with(options, lo, hi, [&](vtkRenderer* renderer) {
     // GPU instancing through VTK's glyph mapper: one source per shared mesh and material, one
     // glyph (position, quaternion, scale) per instance.
