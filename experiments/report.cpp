@@ -7,24 +7,11 @@
 #include <sstream>
 
 #include "experiments/metrics.hpp"
+#include "experiments/sweep_summary.hpp"
 #include "fspm/number_text.hpp"
 
 namespace fspm::experiments {
 namespace {
-
-// Mean and sample standard deviation (n - 1) by Welford's update (Knuth TAOCP vol. 2, 4.2.2).
-struct Moments {
-  std::size_t n = 0;
-  double mean = 0.0;
-  double m2 = 0.0;
-  void add(double x) {
-    ++n;
-    const double d = x - mean;
-    mean += d / static_cast<double>(n);
-    m2 += d * (x - mean);
-  }
-  double sd() const { return n > 1 ? std::sqrt(m2 / static_cast<double>(n - 1)) : 0.0; }
-};
 
 std::string number(double v) {
   if (!std::isfinite(v)) return "-";
@@ -40,12 +27,6 @@ std::string cell(const Moments& m) {
   return m.n > 1 ? number(m.mean) + " ± " + number(m.sd()) : number(m.mean);
 }
 
-// The unit of lengths: an L-system plant measures in the L-system's own units, every other model
-// (growth, adaptation, GreenLab, synthetic) in metres.
-std::string length_unit(std::string_view model_kind) {
-  return model_kind == "lsystem" ? "model units" : "m";
-}
-
 // The model kind of a stored experiment text, "" when it cannot be read.
 std::string model_kind_of(const std::string& experiment_text) {
   try {
@@ -56,14 +37,10 @@ std::string model_kind_of(const std::string& experiment_text) {
   }
 }
 
-// " (unit)" of a metric, with the catalogue's "length" written as the model's length unit.
+// " (unit)" of a metric, nothing for an unknown one.
 std::string unit_of(const std::string& metric, std::string_view model_kind) {
-  const MetricInfo* info = find_metric(metric);
-  if (info == nullptr) return {};
-  std::string unit(info->unit);
-  if (unit == "length") unit = length_unit(model_kind);
-  if (unit == "length^2") unit = length_unit(model_kind) + "^2";
-  return " (" + unit + ")";
+  const std::string unit = metric_unit(metric, model_kind);
+  return unit.empty() ? unit : " (" + unit + ")";
 }
 
 std::string escape(const std::string& text) {
@@ -79,9 +56,79 @@ std::string escape(const std::string& text) {
   return out;
 }
 
+// The recorded metrics that are (timings) or are not (what the plants did) in seconds.
+std::vector<std::string> metrics_of_kind(const std::vector<std::string>& metrics, bool timings) {
+  std::vector<std::string> out;
+  for (const std::string& m : metrics) {
+    if (is_timing_metric(m) == timings) out.push_back(m);
+  }
+  return out;
+}
+
+// "| a | b |" header and separator for `leading` columns followed by the metrics with units.
+void table_header(std::ostream& md, const std::vector<std::string>& leading,
+                  const std::vector<std::string>& metrics, std::string_view kind) {
+  md << '|';
+  for (const std::string& c : leading) md << ' ' << escape(c) << " |";
+  for (const std::string& m : metrics) md << ' ' << m << unit_of(m, kind) << " |";
+  md << "\n|";
+  for (std::size_t i = 0; i < leading.size() + metrics.size(); ++i) md << "---|";
+  md << '\n';
+}
+
+// Per point: the swept values and the moments of every metric over successful replicates.
+struct Point {
+  std::map<std::string, std::string> values;
+  std::map<std::string, Moments> metrics;
+  std::size_t runs = 0;
+};
+
+void point_table(std::ostream& md, const ExperimentInfo& info, const std::map<std::size_t, Point>& points,
+                 const std::vector<std::string>& metrics, std::string_view kind) {
+  std::vector<std::string> leading = {"point", "runs"};
+  leading.insert(leading.end(), info.swept.begin(), info.swept.end());
+  table_header(md, leading, metrics, kind);
+  for (const auto& [index, p] : points) {
+    md << "| " << index << " | " << p.runs << " |";
+    for (const std::string& name : info.swept) md << ' ' << escape(p.values.at(name)) << " |";
+    for (const std::string& metric : metrics) {
+      const auto it = p.metrics.find(metric);
+      md << ' ' << (it == p.metrics.end() ? "-" : cell(it->second)) << " |";
+    }
+    md << '\n';
+  }
+}
+
+void marginal_table(std::ostream& md, const SweptParameter& parameter,
+                    const std::vector<std::string>& metrics, std::string_view kind) {
+  table_header(md, {parameter.name}, metrics, kind);
+  for (const SweptValue& v : parameter.values) {
+    md << "| " << escape(v.text) << " |";
+    for (const std::string& metric : metrics) {
+      const auto it = v.metrics.find(metric);
+      md << ' ' << (it == v.metrics.end() ? "-" : cell(it->second)) << " |";
+    }
+    md << '\n';
+  }
+}
+
 }  // namespace
 
-std::string markdown_report(const ExperimentInfo& info, const std::vector<RunRecord>& runs) {
+std::string length_unit(std::string_view model_kind) {
+  return model_kind == "lsystem" ? "model units" : "m";
+}
+
+std::string metric_unit(const std::string& metric, std::string_view model_kind) {
+  const MetricInfo* info = find_metric(metric);
+  if (info == nullptr) return {};
+  std::string unit(info->unit);
+  if (unit == "length") unit = length_unit(model_kind);
+  if (unit == "length^2") unit = length_unit(model_kind) + "^2";
+  return unit;
+}
+
+std::string markdown_report(const ExperimentInfo& info, const std::vector<RunRecord>& runs,
+                            const std::string& introduction) {
   std::ostringstream md;
   std::size_t ok = 0;
   std::size_t error = 0;
@@ -92,19 +139,13 @@ std::string markdown_report(const ExperimentInfo& info, const std::vector<RunRec
     timeout += r.status == RunStatus::kTimeout;
   }
   md << "# Experiment " << info.name << "\n\n";
+  md << introduction;
   md << "Experiment file: `" << info.experiment_path << "`\n\n";
   md << "| runs | recorded | ok | error | timeout | missing |\n|---|---|---|---|---|---|\n";
   md << "| " << info.total_runs << " | " << runs.size() << " | " << ok << " | " << error << " | "
      << timeout << " | " << info.total_runs - std::min(info.total_runs, runs.size()) << " |\n\n";
 
-  // Per point: the swept values and the moments of every metric over successful replicates.
-  struct Point {
-    std::map<std::string, std::string> values;
-    std::map<std::string, Moments> metrics;
-    std::size_t runs = 0;
-  };
   std::map<std::size_t, Point> points;
-  std::map<std::string, std::map<std::string, std::map<std::string, Moments>>> marginal;
   for (const RunRecord& r : runs) {
     Point& p = points[r.point];
     ++p.runs;
@@ -117,44 +158,32 @@ std::string markdown_report(const ExperimentInfo& info, const std::vector<RunRec
       const auto it = r.metrics.find(metric);
       if (it == r.metrics.end() || !std::isfinite(it->second)) continue;
       p.metrics[metric].add(it->second);
-      for (const std::string& name : info.swept)
-        marginal[name][p.values[name]][metric].add(it->second);
     }
   }
 
-  md << "## Metrics per parameter point\n\nMean ± sample standard deviation over the successful "
-        "replicates of each point.\n\n| point | runs |";
-  for (const std::string& name : info.swept) md << ' ' << escape(name) << " |";
+  // What the plants did and how long the software took, in separate tables: a botanist reads
+  // the first, whoever plans the next sweep the second.
   const std::string kind = model_kind_of(info.experiment_text);
-  for (const std::string& metric : info.metrics) {
-    md << ' ' << metric << unit_of(metric, kind) << " |";
+  const std::vector<std::string> biological = metrics_of_kind(info.metrics, false);
+  const std::vector<std::string> timings = metrics_of_kind(info.metrics, true);
+  if (!biological.empty()) {
+    md << "## Metrics per parameter point\n\nMean ± sample standard deviation over the successful "
+          "replicates of each point.\n\n";
+    point_table(md, info, points, biological, kind);
   }
-  md << "\n|---|---|";
-  for (std::size_t i = 0; i < info.swept.size() + info.metrics.size(); ++i) md << "---|";
-  md << '\n';
-  for (const auto& [index, p] : points) {
-    md << "| " << index << " | " << p.runs << " |";
-    for (const std::string& name : info.swept) md << ' ' << escape(p.values.at(name)) << " |";
-    for (const std::string& metric : info.metrics) {
-      const auto it = p.metrics.find(metric);
-      md << ' ' << (it == p.metrics.end() ? "-" : cell(it->second)) << " |";
-    }
-    md << '\n';
+  if (!timings.empty()) {
+    md << "\n## Timings per parameter point\n\nSeconds of computing time, mean ± sample standard "
+          "deviation over the successful replicates of each point.\n\n";
+    point_table(md, info, points, timings, kind);
   }
 
-  for (const std::string& name : info.swept) {
-    md << "\n## Marginal means over `" << escape(name) << "`\n\n| " << escape(name) << " |";
-    for (const std::string& metric : info.metrics) md << ' ' << metric << " |";
-    md << "\n|---|";
-    for (std::size_t i = 0; i < info.metrics.size(); ++i) md << "---|";
-    md << '\n';
-    for (const auto& [value, by_metric] : marginal[name]) {
-      md << "| " << escape(value) << " |";
-      for (const std::string& metric : info.metrics) {
-        const auto it = by_metric.find(metric);
-        md << ' ' << (it == by_metric.end() ? "-" : cell(it->second)) << " |";
-      }
-      md << '\n';
+  for (const SweptParameter& parameter : sweep_summary(info, runs)) {
+    md << "\n## Marginal means over `" << escape(parameter.name)
+       << "`\n\nMean ± sample standard deviation over all successful runs with each value.\n\n";
+    if (!biological.empty()) marginal_table(md, parameter, biological, kind);
+    if (!timings.empty()) {
+      if (!biological.empty()) md << "\nTimings:\n\n";
+      marginal_table(md, parameter, timings, kind);
     }
   }
 

@@ -1,8 +1,10 @@
 #pragma once
-// The Markdown report of a result database (fspm report): the run counts, one table of mean and
-// standard deviation of every metric per parameter point (over its successful replicates), one
-// table of marginal means per swept parameter, and the failed runs.
+// The Markdown report of a result database (fspm report): the introduction (report_intro.hpp), the
+// run counts, tables of mean and standard deviation of every metric per parameter point (over its
+// successful replicates), what the plants did and the timings in separate tables, marginal means
+// per swept parameter (sweep_summary.hpp), and the failed runs.
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "experiments/experiment.hpp"
@@ -10,7 +12,16 @@
 
 namespace fspm::experiments {
 
-std::string markdown_report(const ExperimentInfo& info, const std::vector<RunRecord>& runs);
+// The unit of lengths of a model kind: "model units" for L-system plants (the L-system's own
+// units), "m" for every other model.
+std::string length_unit(std::string_view model_kind);
+
+// The unit of a metric as the report prints it ("m", "m^2", "count", "s", ...), the catalogue's
+// "length" written as the model's length unit; empty for an unknown metric.
+std::string metric_unit(const std::string& metric, std::string_view model_kind);
+
+std::string markdown_report(const ExperimentInfo& info, const std::vector<RunRecord>& runs,
+                            const std::string& introduction = "");
 
 // The experiment's [[table]]s: mean ± standard deviation of the listed metrics over the
 // successful runs matching `where`, one row per combination of the `by` values (Pirk Table 4.2

@@ -1,0 +1,45 @@
+#pragma once
+// What a sweep did to every metric: for each swept parameter and each of its values, the mean,
+// sample standard deviation and count of every metric over the successful runs with that value
+// (marginal over the other parameters). `fspm report` prints these as tables and plots each
+// metric against each swept parameter.
+#include <cstddef>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "experiments/results_db.hpp"
+
+namespace fspm::experiments {
+
+// Mean and sample standard deviation (n - 1) by Welford's update (Knuth TAOCP vol. 2, 4.2.2).
+struct Moments {
+  std::size_t n = 0;
+  double mean = 0.0;
+  double m2 = 0.0;
+  void add(double x);
+  double sd() const;  // 0 for fewer than two values
+};
+
+struct SweptValue {
+  std::string text;  // the value as the report prints it
+  double number;     // the value as a number; NaN for a text value
+  std::map<std::string, Moments> metrics;  // over the successful runs with this value
+};
+
+struct SweptParameter {
+  std::string name;
+  std::vector<SweptValue> values;  // ascending by number when all are numbers, else first seen
+  bool numeric() const;            // every value is a number
+};
+
+// One entry per swept parameter of `info` (file order); runs that failed, and metrics that are
+// missing or not finite, are left out of the moments.
+std::vector<SweptParameter> sweep_summary(const ExperimentInfo& info,
+                                          const std::vector<RunRecord>& runs);
+
+// True for the metrics that time the software (unit s: run_time, grow_seconds, ...), which the
+// report keeps apart from what the plants did.
+bool is_timing_metric(const std::string& metric);
+
+}  // namespace fspm::experiments
