@@ -14,6 +14,7 @@
 #include <set>
 #include <sstream>
 
+#include "experiments/report_notes.hpp"
 #include "experiments/results_db.hpp"
 #include "experiments/run_seed.hpp"
 #include "fspm/atomic_file.hpp"
@@ -405,7 +406,7 @@ std::string comparisons_markdown(const Experiment& x, const ComparisonResults& r
          << (t.significant() ? "yes" : "no") << " (" << number(t.alpha) << ") |\n";
     }
   }
-  for (const std::string& note : results.notes) md << "\nNote: " << note << '\n';
+  md << notes_markdown(results.notes);
   return md.str();
 }
 
