@@ -384,7 +384,8 @@ void parse_comparisons(const Reader& r, const toml::table& root, Experiment& x) 
     x.tables.push_back(std::move(s));
   }
   if (const toml::table* rep = r.table(root, "report", false)) {
-    r.only_keys("report", *rep, {"renders", "render_by", "render_where", "render_metric"});
+    r.only_keys("report", *rep, {"renders", "render_by", "render_where", "render_metric", "about"});
+    if (const toml::node* n = rep->get("about")) x.about = r.string("report.about", *n);
     if (const toml::node* n = rep->get("renders")) {
       x.render.renders = static_cast<std::size_t>(r.integer("report.renders", *n, 0));
     }
@@ -461,7 +462,9 @@ Experiment parse_experiment(std::string_view toml_text, const std::string& path)
   if (const toml::node* n = exp.get("replicates")) {
     x.replicates = static_cast<std::size_t>(r.integer("experiment.replicates", *n, 1));
   }
-  if (const toml::node* n = exp.get("description")) r.string("experiment.description", *n);
+  if (const toml::node* n = exp.get("description")) {
+    x.description = r.string("experiment.description", *n);
+  }
 
   const toml::table& model = *r.table(root, "model", true);
   r.only_keys("model", model, {"kind", "file", "view", "scene"});
@@ -624,6 +627,18 @@ Experiment parse_experiment(std::string_view toml_text, const std::string& path)
       const double limit = r.number("runner.time_limit_s", *n);
       if (limit <= 0.0) r.fail("runner.time_limit_s", *n, "must be positive");
       x.time_limit_s = limit;
+    }
+  }
+  // The text a result database stores after override_replicates ends in its marker; reading it
+  // back gives the replicates the runs had.
+  const std::string_view marker = "\n# replicates overridden: ";
+  if (const auto at = toml_text.rfind(marker); at != std::string_view::npos) {
+    std::size_t replicates = 0;
+    const std::string_view digits = toml_text.substr(at + marker.size());
+    const auto [end, error] =
+        std::from_chars(digits.data(), digits.data() + digits.size(), replicates);
+    if (error == std::errc() && replicates > 0 && std::string_view(end, digits.data() + digits.size()) == "\n") {
+      x.replicates = replicates;
     }
   }
   return x;

@@ -46,6 +46,8 @@ struct Experiment {
   std::string path;  // the experiment file ("<string>" when parsed from text)
   std::string text;  // its content, kept to fingerprint the result database
   std::string name;
+  std::string description;  // experiment.description: one line, free text
+  std::string about;        // report.about: what the experiment asks and what is known (report)
   std::uint64_t seed = 0;
   std::size_t replicates = 1;
   std::string model_kind;

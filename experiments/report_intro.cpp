@@ -1,0 +1,194 @@
+#include "experiments/report_intro.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "experiments/metrics.hpp"
+
+namespace fspm::experiments {
+namespace {
+
+// A model or scene file as the experiment file names it: relative to the file's folder.
+std::string shown_path(const Experiment& x, const std::string& file) {
+  if (x.path == "<string>") return file;
+  const std::filesystem::path relative =
+      std::filesystem::path(file).lexically_relative(std::filesystem::path(x.path).parent_path());
+  return relative.empty() ? file : relative.string();
+}
+
+// The model kinds in words, with the literature they follow (docs/references.md).
+std::string model_words(const Experiment& x) {
+  if (x.model_kind == "lsystem") {
+    return "the L-system `" + shown_path(x, x.model_file) + "` (Prusinkiewicz and Lindenmayer 1990), lengths in "
+           "the L-system's own units";
+  }
+  if (x.model_kind == "greenlab") return "the GreenLab model (de Reffye et al. 2003)";
+  if (x.model_kind == "grow") {
+    return "the self-organizing growth model (Palubicki et al. 2009), trees grown from a seed "
+           "under the sky's light";
+  }
+  if (x.model_kind == "adapt") {
+    return "plastic adaptation (Pirk 2013, chapter 4) of the tree `" + shown_path(x, x.model_file) +
+           "` to its scene";
+  }
+  return "the " + x.model_kind + " model";
+}
+
+std::string values_text(const std::vector<ParameterValue>& values) {
+  std::string out;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    out += (i == 0 ? "" : ", ") + parameter_text(values[i]);
+  }
+  return out;
+}
+
+std::string filter_text(const RunFilter& filter) {
+  std::string out;
+  for (const auto& [name, value] : filter) {
+    out += (out.empty() ? "" : " and ") + name + " = " + parameter_text(value);
+  }
+  return out.empty() ? "any run" : out;
+}
+
+std::string names_text(const std::vector<std::string>& names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    out += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+  }
+  return out;
+}
+
+void what_was_run(std::ostream& md, const Experiment& x) {
+  md << "**What was run.** " << x.runs() << " runs of " << model_words(x);
+  if (!x.model_scene.empty()) md << ", in the scene `" << shown_path(x, x.model_scene) << "`";
+  md << ": ";
+  if (x.sweep.empty() && !x.sampling) {
+    md << "one parameter point";
+  } else {
+    md << x.points() << " parameter points (";
+    for (std::size_t i = 0; i < x.sweep.size(); ++i) {
+      md << (i == 0 ? "" : " × ") << x.sweep[i].name << " " << values_text(x.sweep[i].values);
+    }
+    if (x.sampling) {
+      md << (x.sweep.empty() ? "" : ", crossed with ") << x.sampling->samples << " samples of";
+      for (const SampledParameter& p : x.sampling->parameters) {
+        md << ' ' << p.name << " in [" << p.low << ", " << p.high << "]";
+      }
+    }
+    md << ")";
+  }
+  md << ", " << x.replicates << (x.replicates == 1 ? " run" : " runs")
+     << " per point, each with its own random seed derived from the experiment seed " << x.seed
+     << ".";
+  if (!x.fixed.empty()) {
+    md << " Fixed:";
+    std::string sep = " ";
+    for (const auto& [name, value] : x.fixed) {
+      md << sep << name << " = " << parameter_text(value);
+      sep = ", ";
+    }
+    md << ".";
+  }
+  md << " Recorded per run: " << names_text(x.metrics) << ".\n\n";
+}
+
+// The values of `set` (grow model) that the experiment uses, in words.
+void set_meanings(std::ostream& md, const Experiment& x) {
+  if (x.model_kind != "grow") return;
+  std::vector<ParameterValue> sets;
+  for (const SweepAxis& a : x.sweep) {
+    if (a.name == "set") sets = a.values;
+  }
+  if (const auto it = x.fixed.find("set"); it != x.fixed.end()) sets = {it->second};
+  if (sets.empty()) return;
+  md << "**The sets.**";
+  for (const ParameterValue& v : sets) {
+    const std::string name = parameter_text(v);
+    const std::string_view meaning = grow_set_meaning(name);
+    if (!meaning.empty()) md << " **" << name << "**: " << meaning << ".";
+  }
+  md << "\n\n";
+}
+
+void comparison_meanings(std::ostream& md, const Experiment& x) {
+  if (x.comparisons.empty()) return;
+  md << "**The comparisons.** Each compares pairs of trees by the constrained edit distance "
+        "(Zhang 1996; Ferraro and Godin 2000): the cost of turning one tree's branching "
+        "structure into the other's, 0 for identical trees, larger for less alike ones. No tree "
+        "is used twice within a comparison.";
+  for (const ComparisonSpec& c : x.comparisons) {
+    md << " **" << c.name << "**: ";
+    if (c.a == c.b) {
+      md << "two different runs with " << filter_text(c.a);
+    } else {
+      md << "a run with " << filter_text(c.a) << " against one with " << filter_text(c.b);
+    }
+    if (!c.within.empty()) md << ", both with the same " << names_text(c.within);
+    if (!c.where.empty()) md << ", among the runs with " << filter_text(c.where);
+    if (c.pairs > 0) md << " (" << c.pairs << " pairs per group)";
+    md << ".";
+  }
+  md << "\n\n";
+  if (x.ttests.empty()) return;
+  md << "**The tests.**";
+  for (const TTestSpec& t : x.ttests) {
+    md << " Are the " << t.a << " distances " << (t.alternative == "less"      ? "smaller than"
+                                                   : t.alternative == "greater" ? "larger than"
+                                                                                : "different from")
+       << " the " << t.b << " distances? (" << (t.welch ? "Welch's" : "Student's")
+       << " t-test, significant when p < " << t.alpha << ".)";
+  }
+  md << "\n\n";
+}
+
+}  // namespace
+
+std::string_view grow_set_meaning(std::string_view set) {
+  if (set == "O") return "grown in the open, without the scene's obstacles (its sky and ground only)";
+  if (set == "G") return "grown in the scene, beside its obstacles, from the start";
+  if (set == "T") {
+    return "grown like O, then adapted to the scene's obstacles by plastic adaptation "
+           "(Pirk 2013, 4.3-4.4): branches pruned and bent instead of regrown";
+  }
+  return {};
+}
+
+std::string report_introduction(const Experiment& x) {
+  std::ostringstream md;
+  if (!x.description.empty()) md << x.description << "\n\n";
+  what_was_run(md, x);
+  set_meanings(md, x);
+  comparison_meanings(md, x);
+  if (!x.about.empty()) md << x.about << (x.about.ends_with('\n') ? "\n" : "\n\n");
+  return md.str();
+}
+
+std::string ttest_overview(const Experiment& x, const std::vector<TTestRow>& tests) {
+  std::ostringstream md;
+  for (const TTestSpec& spec : x.ttests) {
+    std::size_t groups = 0, significant = 0, a_larger = 0, undefined = 0;
+    for (const TTestRow& t : tests) {
+      if (t.a != spec.a || t.b != spec.b) continue;
+      ++groups;
+      if (std::isnan(t.p)) ++undefined;
+      if (!t.significant()) continue;
+      ++significant;
+      a_larger += t.mean_a > t.mean_b;
+    }
+    if (groups == 0) continue;
+    md << "- " << spec.a << " against " << spec.b << ": significantly different in "
+       << significant << " of " << groups << (groups == 1 ? " group" : " groups");
+    if (significant > 0) {
+      md << " (" << spec.a << " larger in " << a_larger << ", smaller in " << significant - a_larger
+         << ")";
+    }
+    md << ", not in " << groups - significant - undefined;
+    if (undefined > 0) md << ", undefined in " << undefined;
+    md << ".\n";
+  }
+  const std::string text = md.str();
+  return text.empty() ? text : "In short (p < alpha counts as different):\n\n" + text;
+}
+
+}  // namespace fspm::experiments
