@@ -6,6 +6,7 @@
 #include <map>
 #include <sstream>
 
+#include "environment/scene_file.hpp"
 #include "experiments/metrics.hpp"
 #include "experiments/model_factory.hpp"
 #include "fspm/tree_file.hpp"
@@ -123,6 +124,37 @@ TreeGraph recorded_run_tree(const Experiment& x, const RunRecord& record, const 
                      " model gives no tree to render");
   }
   return std::move(*result.tree);
+}
+
+std::optional<environment::Scene> recorded_run_scene(const Experiment& x, const RunRecord& record) {
+  if (x.model_kind != "grow" && x.model_kind != "adapt") return std::nullopt;
+  const auto text = [&](const char* name) -> std::optional<std::string> {
+    const auto it = record.parameters.find(name);
+    if (it == record.parameters.end()) return std::nullopt;
+    return parameter_text(it->second);
+  };
+  if (x.model_kind == "grow" && text("set").value_or("G") == "O") return std::nullopt;
+  std::string path = x.model_scene;
+  if (const auto scene = text("scene")) {
+    if (*scene == "open") return std::nullopt;
+    // As the models resolve it: against the experiment file's folder.
+    const std::filesystem::path p(*scene);
+    path = p.is_absolute() || x.path == "<string>"
+               ? p.string()
+               : (std::filesystem::path(x.path).parent_path() / p).string();
+  }
+  if (path.empty()) return std::nullopt;
+  environment::Scene scene = environment::read_scene_file(path);
+  if (x.model_kind == "adapt") {
+    // The adapt model keeps the tree where it is and moves the scene the other way.
+    Eigen::Vector3d at = Eigen::Vector3d::Zero();
+    if (const auto it = record.parameters.find("tree_x_m"); it != record.parameters.end())
+      at.x() = parameter_number(it->second, "tree_x_m");
+    if (const auto it = record.parameters.find("tree_y_m"); it != record.parameters.end())
+      at.y() = parameter_number(it->second, "tree_y_m");
+    scene = environment::translated(scene, -at);
+  }
+  return scene;
 }
 
 }  // namespace fspm::experiments

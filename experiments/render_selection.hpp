@@ -3,9 +3,11 @@
 // per group, the one whose metric is the group's median, so a figure shows a representative
 // tree rather than the first or an extreme one.
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "environment/scene.hpp"
 #include "experiments/experiment.hpp"
 #include "experiments/run_record.hpp"
 #include "fspm/tree_graph.hpp"
@@ -31,5 +33,13 @@ std::vector<RenderChoice> select_renders(const Experiment& experiment,
 // ValueError when the model gives no tree, and the model's own errors.
 TreeGraph recorded_run_tree(const Experiment& experiment, const RunRecord& record,
                             const std::string& dir);
+
+// The obstacles a recorded run's tree stood beside, in the tree's coordinates, for drawing them
+// with it: the run's scene (its `scene` parameter, relative to the experiment file, else
+// model.scene) for the grow model's sets G and T, and for the adapt model moved by -tree_x_m,
+// -tree_y_m as the model moves it. nullopt for set O (grown without obstacles), scene "open", no
+// scene, and the other model kinds. Throws the scene reader's errors.
+std::optional<environment::Scene> recorded_run_scene(const Experiment& experiment,
+                                                     const RunRecord& record);
 
 }  // namespace fspm::experiments
