@@ -18,21 +18,21 @@
 
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
+#include "cli/report_figures.hpp"
 #include "cli/run_file_writers.hpp"
 #include "cli/xvfb.hpp"
 #include "experiments/comparisons.hpp"
 #include "experiments/experiment.hpp"
 #include "experiments/model_factory.hpp"
 #include "experiments/mpi_runner.hpp"
-#include "experiments/render_selection.hpp"
 #include "experiments/report.hpp"
+#include "experiments/report_intro.hpp"
 #include "experiments/results_export.hpp"
 #include "experiments/run_plan.hpp"
 #include "experiments/runner.hpp"
 #include "experiments/slurm_script.hpp"
 #include "fspm/atomic_file.hpp"
 #include "fspm/error.hpp"
-#include "graphics/chart_figure.hpp"
 #include "graphics/render.hpp"
 
 namespace fspm::cli {
@@ -307,72 +307,6 @@ void show_command(const ShowOptions& o) {
                        : ex::results_summary_text(db.info(), runs));
 }
 
-// Box plots of the comparison distances, one figure per group (Pirk's four groups side by side),
-// into DIR/figures/. Returns the Markdown that shows them; a note when they cannot be drawn (VTK
-// renders through X: run under xvfb-run without a display).
-std::string comparison_figures(const ex::Experiment& x, const ex::ComparisonResults& c,
-                               const std::string& dir) {
-  std::map<std::string, std::map<std::string, std::vector<double>>> by_group;
-  for (const ex::PairDistance& p : c.pairs) by_group[p.group][p.comparison].push_back(p.distance);
-  std::string md = "\n### Figures\n\n";
-  std::size_t index = 0;
-  try {
-    fs::create_directories(fs::path(dir) / "figures");
-    for (const auto& [group, by_comparison] : by_group) {
-      std::vector<std::string> names;
-      std::vector<std::vector<double>> values;
-      for (const ex::ComparisonSpec& spec : x.comparisons) {
-        const auto it = by_comparison.find(spec.name);
-        if (it == by_comparison.end() || it->second.empty()) continue;
-        names.push_back(spec.name);
-        values.push_back(it->second);
-      }
-      if (names.empty()) continue;
-      const std::string file = "figures/comparisons_" + std::to_string(index++) + ".png";
-      graphics::ChartOptions options;
-      options.title = group;
-      options.y_label = "edit distance";
-      options.width = 640;
-      options.height = 420;
-      graphics::write_box_plot(names, values, options, (fs::path(dir) / file).string());
-      md += "![distances, " + group + "](" + file + ")\n";
-    }
-  } catch (const Error& e) {
-    return "\nNote: figures left out: " + std::string(e.what()) + "\n";
-  }
-  return md;
-}
-
-// Renders of typical trees ([report] of the experiment, experiments/render_selection.hpp) into
-// DIR/figures/run-NNNNNNN.png, from the kept trees or by running the model again. Returns the
-// Markdown that shows them with their captions.
-std::string tree_renders(const ex::Experiment& x, const std::vector<ex::RunRecord>& runs,
-                         const std::string& dir) {
-  const std::vector<ex::RenderChoice> choices = ex::select_renders(x, runs);
-  if (choices.empty()) return {};
-  std::map<std::size_t, const ex::RunRecord*> by_run;
-  for (const ex::RunRecord& r : runs) by_run[r.run] = &r;
-  std::string md = "\n## Selected trees\n\n";
-  std::string notes;
-  try {
-    fs::create_directories(fs::path(dir) / "figures");
-  } catch (const std::exception& e) {
-    return md + "Note: renders left out: " + std::string(e.what()) + "\n";
-  }
-  for (const ex::RenderChoice& c : choices) {
-    char name[40];
-    std::snprintf(name, sizeof name, "figures/run-%07zu.png", c.run);
-    try {
-      const TreeGraph tree = ex::recorded_run_tree(x, *by_run.at(c.run), dir);
-      render_tree_png(tree, x, (fs::path(dir) / name).string());
-      md += "![" + c.group + "](" + name + ")\n\n*" + c.caption + "*\n\n";
-    } catch (const Error& e) {
-      notes += "Note: run " + std::to_string(c.run) + " not rendered: " + e.what() + "\n";
-    }
-  }
-  return md + notes;
-}
-
 void compare_command(const CompareOptions& o) {
   const ex::ComparisonResults c = compare_runs(o.dir, o.jobs, o.json);
   if (o.json) print_json(comparisons_json(o.dir, c));
@@ -383,20 +317,25 @@ void report_command(const ReportOptions& o) {
   if (!o.no_figures && graphics::render_available()) rerun_under_xvfb_if_needed();
   const ex::ResultsDb db(o.dir, ex::ResultsDb::Mode::kRead);
   const std::vector<ex::RunRecord> runs = db.read_all();
-  std::string md = ex::markdown_report(db.info(), runs);
   std::optional<ex::Experiment> x;
+  std::string note;
   try {
     x = stored_experiment(db);
   } catch (const Error& e) {
     // The report's main tables need only the database; the extras need the model files too.
-    md += "\nNote: summary tables and comparisons left out: " + std::string(e.what()) + '\n';
+    note = "\nNote: summary tables and comparisons left out: " + std::string(e.what()) + '\n';
   }
+  std::string md = ex::markdown_report(db.info(), runs, x ? ex::report_introduction(*x) : "");
+  md += note;
   if (x) {
+    if (!o.no_figures) md += sweep_figures(*x, db.info(), runs, o.dir);
     md += ex::summary_tables_markdown(*x, runs);
     ex::ComparisonResults c;
     if (!x->comparisons.empty() && ex::read_comparisons(o.dir, c)) {
       c.tests = ex::comparison_ttests(*x, c.pairs);
       md += "\n" + ex::comparisons_markdown(*x, c);
+      const std::string overview = ex::ttest_overview(*x, c.tests);
+      if (!overview.empty()) md += "\n" + overview;
       if (!o.no_figures) md += comparison_figures(*x, c, o.dir);
     } else if (!x->comparisons.empty()) {
       md += "\nThe comparisons have not been computed yet: run `fspm compare " + o.dir + "`.\n";

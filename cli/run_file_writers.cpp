@@ -21,6 +21,10 @@ graphics::MeshOptions run_mesh_options() {
 
 }  // namespace
 
+graphics::TriangleMesh run_tree_mesh(const TreeGraph& tree) {
+  return graphics::mesh_tree(tree, run_mesh_options());
+}
+
 void render_tree_png(const TreeGraph& tree, const experiments::Experiment& experiment,
                      const std::string& png_path) {
   const graphics::TriangleMesh mesh = graphics::mesh_tree(tree, run_mesh_options());

@@ -7,6 +7,7 @@
 #include "experiments/experiment.hpp"
 #include "experiments/run_files.hpp"
 #include "fspm/tree_graph.hpp"
+#include "graphics/triangle_mesh.hpp"
 
 namespace fspm::cli {
 
@@ -14,6 +15,9 @@ namespace fspm::cli {
 // "image" (.png, outputs.image_size and image_view) when fspm was built with VTK. Images need an X
 // display when they are written.
 experiments::RunFileWriters graphics_run_file_writers(const experiments::Experiment& experiment);
+
+// The tree meshed as kept meshes, images and report renders show it: bark and leaves.
+graphics::TriangleMesh run_tree_mesh(const TreeGraph& tree);
 
 // The tree meshed (bark and leaves) and rendered offscreen with the experiment's image size and
 // view, ground included, into a PNG at `png_path` (atomically). Renders are serialized: one VTK

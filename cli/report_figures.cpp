@@ -1,0 +1,260 @@
+#include "cli/report_figures.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+#include "cli/obstacle_crop.hpp"
+#include "cli/obstacle_mesh.hpp"
+#include "cli/run_file_writers.hpp"
+#include "experiments/render_selection.hpp"
+#include "experiments/report.hpp"
+#include "experiments/report_notes.hpp"
+#include "experiments/sweep_summary.hpp"
+#include "fspm/error.hpp"
+#include "graphics/chart_figure.hpp"
+#include "graphics/image.hpp"
+#include "graphics/render.hpp"
+
+namespace fspm::cli {
+namespace {
+
+namespace fs = std::filesystem;
+namespace ex = fspm::experiments;
+
+// Swept values with more distinct values than this get VTK's own ticks instead of one per value.
+constexpr std::size_t kMaxValueTicks = 12;
+
+std::string number_text(double v) {
+  std::ostringstream out;
+  out.precision(4);
+  out << v;
+  return out.str();
+}
+
+// "metric (unit)" for a chart's axis.
+std::string metric_label(const std::string& metric, const std::string& model_kind) {
+  const std::string unit = ex::metric_unit(metric, model_kind);
+  return unit.empty() ? metric : metric + " (" + unit + ")";
+}
+
+// The chart of one metric against one swept parameter; false when fewer than two values have
+// the metric.
+bool sweep_chart(const ex::SweptParameter& parameter, const std::string& metric,
+                 const std::string& model_kind, const std::string& png_path) {
+  // No legend (it would hide the top right corner): the report's text says which line is which.
+  graphics::ChartSeries mean{"mean", {}, {}, 0, false, true, false};
+  graphics::ChartSeries upper{"mean + sd", {}, {}, 0, true, false, false};
+  graphics::ChartSeries lower{"mean - sd", {}, {}, 0, true, false, false};
+  graphics::ChartOptions options;
+  const bool numeric = parameter.numeric();
+  for (std::size_t i = 0; i < parameter.values.size(); ++i) {
+    const ex::SweptValue& v = parameter.values[i];
+    const double x = numeric ? v.number : static_cast<double>(i);
+    if (!numeric || parameter.values.size() <= kMaxValueTicks) {
+      options.x_ticks.push_back(x);
+      options.x_tick_labels.push_back(v.text);
+    }
+    const auto it = v.metrics.find(metric);
+    if (it == v.metrics.end() || it->second.n == 0) continue;
+    mean.x.push_back(x);
+    mean.y.push_back(it->second.mean);
+    upper.x.push_back(x);
+    upper.y.push_back(it->second.mean + it->second.sd());
+    lower.x.push_back(x);
+    lower.y.push_back(it->second.mean - it->second.sd());
+  }
+  // A line needs two values (regrow_seconds, say, is only recorded for one set).
+  if (mean.x.size() < 2) return false;
+  options.title = metric_label(metric, model_kind);
+  options.x_label = parameter.name;
+  options.width = 420;
+  options.height = 300;
+  graphics::write_line_chart({mean, upper, lower}, options, png_path);
+  return true;
+}
+
+// "O 108, G 108, T 108": successful runs per value (those with the first metric).
+std::string runs_per_value(const ex::SweptParameter& parameter, const std::string& metric) {
+  std::string out;
+  for (const ex::SweptValue& v : parameter.values) {
+    const auto it = v.metrics.find(metric);
+    out += (out.empty() ? "" : ", ") + v.text + ": " +
+           std::to_string(it == v.metrics.end() ? 0 : it->second.n);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string sweep_figures(const ex::Experiment& x, const ex::ExperimentInfo& info,
+                          const std::vector<ex::RunRecord>& runs, const std::string& dir) {
+  const std::vector<ex::SweptParameter> summary = ex::sweep_summary(info, runs);
+  std::string md;
+  try {
+    for (std::size_t p = 0; p < summary.size(); ++p) {
+      const ex::SweptParameter& parameter = summary[p];
+      if (parameter.values.size() < 2 || info.metrics.empty()) continue;
+      fs::create_directories(fs::path(dir) / "figures");
+      std::string row;
+      for (const std::string& metric : info.metrics) {
+        const std::string file = "figures/sweep-" + std::to_string(p) + "-" + metric + ".png";
+        if (!sweep_chart(parameter, metric, x.model_kind, (fs::path(dir) / file).string())) {
+          continue;
+        }
+        row += "![" + metric + " against " + parameter.name + "](" + file + ")\n";
+      }
+      if (row.empty()) continue;
+      md += "\n### Against `" + parameter.name + "`\n\nSuccessful runs per value (" +
+            runs_per_value(parameter, info.metrics.front()) + ").\n\n" + row;
+    }
+  } catch (const Error& e) {
+    return "\nNote: plots against the swept parameters left out: " + std::string(e.what()) + "\n";
+  } catch (const fs::filesystem_error& e) {
+    return "\nNote: plots against the swept parameters left out: " + std::string(e.what()) + "\n";
+  }
+  if (md.empty()) return md;
+  return "\n## Metrics against the swept parameters\n\nFor each swept parameter and each value: "
+         "the mean of each metric over all successful runs with that value, the other "
+         "parameters pooled (solid line, dots), and the mean ± its sample standard deviation "
+         "(dashed). The marginal-means tables above give the numbers.\n" +
+         md;
+}
+
+std::string comparison_figures(const ex::Experiment& x, const ex::ComparisonResults& c,
+                               const std::string& dir) {
+  std::map<std::string, std::map<std::string, std::vector<double>>> by_group;
+  for (const ex::PairDistance& p : c.pairs) by_group[p.group][p.comparison].push_back(p.distance);
+  std::string md =
+      "\n### Figures\n\nOne box plot per group: the box spans the middle half of the distances "
+      "(first to third quartile) with a line at the median, the whiskers reach the smallest and "
+      "largest; n is the number of pairs.\n\n";
+  std::size_t index = 0;
+  try {
+    fs::create_directories(fs::path(dir) / "figures");
+    for (const auto& [group, by_comparison] : by_group) {
+      std::vector<std::string> names;
+      std::vector<std::vector<double>> values;
+      for (const ex::ComparisonSpec& spec : x.comparisons) {
+        const auto it = by_comparison.find(spec.name);
+        if (it == by_comparison.end() || it->second.empty()) continue;
+        names.push_back(spec.name + " (n = " + std::to_string(it->second.size()) + ")");
+        values.push_back(it->second);
+      }
+      if (names.empty()) continue;
+      const std::string file = "figures/comparisons_" + std::to_string(index++) + ".png";
+      graphics::ChartOptions options;
+      options.title = group;
+      options.y_label = "edit distance";
+      options.width = 640;
+      options.height = 420;
+      graphics::write_box_plot(names, values, options, (fs::path(dir) / file).string());
+      md += "![distances, " + group + "](" + file + ")\n";
+    }
+  } catch (const Error& e) {
+    return "\nNote: figures left out: " + std::string(e.what()) + "\n";
+  } catch (const fs::filesystem_error& e) {
+    return "\nNote: figures left out: " + std::string(e.what()) + "\n";
+  }
+  return md;
+}
+
+namespace {
+
+// The tree of a recorded run meshed with the obstacles near it; `obstacles` tells whether it
+// had any.
+graphics::TriangleMesh run_scene_mesh(const ex::Experiment& x, const ex::RunRecord& record,
+                                      const std::string& dir, bool& obstacles) {
+  graphics::TriangleMesh mesh = run_tree_mesh(ex::recorded_run_tree(x, record, dir));
+  obstacles = false;
+  if (const std::optional<environment::Scene> scene = ex::recorded_run_scene(x, record)) {
+    Eigen::Vector2d region_lo, region_hi;
+    obstacle_region(mesh.bbox_min().cast<double>(), mesh.bbox_max().cast<double>(), region_lo,
+                    region_hi);
+    const graphics::TriangleMesh stones =
+        mesh_obstacles(obstacles_near(*scene, region_lo, region_hi));
+    obstacles = stones.triangle_count() > 0;
+    mesh.append(stones);
+  }
+  return mesh;
+}
+
+}  // namespace
+
+std::string tree_renders(const ex::Experiment& x, const std::vector<ex::RunRecord>& runs,
+                         const std::string& dir) {
+  const std::vector<ex::RenderChoice> choices = ex::select_renders(x, runs);
+  if (choices.empty()) return {};
+  std::map<std::size_t, const ex::RunRecord*> by_run;
+  for (const ex::RunRecord& r : runs) by_run[r.run] = &r;
+  std::string md = "\n## Selected trees\n\n";
+  std::vector<std::string> notes;
+  try {
+    fs::create_directories(fs::path(dir) / "figures");
+  } catch (const std::exception& e) {
+    return md + "Note: renders left out: " + std::string(e.what()) + "\n";
+  }
+
+  // First pass: the size of every picture's content, for one scale that fits the largest.
+  struct Drawn {
+    const ex::RenderChoice* choice;
+    Eigen::Vector3f lo, hi;
+    bool obstacles;
+  };
+  std::vector<Drawn> drawn;
+  Eigen::Vector3f extent = Eigen::Vector3f::Zero();
+  for (const ex::RenderChoice& c : choices) {
+    try {
+      bool obstacles = false;
+      const graphics::TriangleMesh mesh = run_scene_mesh(x, *by_run.at(c.run), dir, obstacles);
+      drawn.push_back({&c, mesh.bbox_min(), mesh.bbox_max(), obstacles});
+      extent = extent.cwiseMax(mesh.bbox_max() - mesh.bbox_min());
+    } catch (const Error& e) {
+      notes.push_back("not rendered (run " + std::to_string(c.run) + "): " + e.what());
+    }
+  }
+  if (drawn.empty()) return md + ex::notes_markdown(notes);
+
+  graphics::RenderOptions options;
+  options.width = x.image_width;
+  options.height = x.image_height;
+  options.view = graphics::view_from_name(x.image_view);
+  const double aspect = static_cast<double>(options.width) / options.height;
+  // 6 % margin, as the perspective framing has.
+  options.ortho_height_m =
+      1.06 * graphics::ortho_height_to_fit(options.view, Eigen::Vector3f::Zero(), extent, aspect);
+  const std::string unit = ex::length_unit(x.model_kind);
+  options.scale_bar_unit = unit;
+  md += "All pictures at one scale, in a parallel projection (" + x.image_view +
+        " view): the image height spans " + number_text(options.ortho_height_m) + " " + unit +
+        ", the black bar is " + number_text(graphics::scale_bar_length(options.ortho_height_m)) +
+        " " + unit + ".";
+  if (x.model_kind == "grow" || x.model_kind == "adapt") {
+    md += " Grey: the obstacles of the scene the tree grew beside or was adapted to, cut to the "
+          "region around it (trees grown in the open are drawn alone).";
+  }
+  md += "\n\n";
+  for (const Drawn& d : drawn) {
+    const ex::RenderChoice& c = *d.choice;
+    char name[40];
+    std::snprintf(name, sizeof name, "figures/run-%07zu.png", c.run);
+    try {
+      bool obstacles = false;
+      const graphics::TriangleMesh mesh = run_scene_mesh(x, *by_run.at(c.run), dir, obstacles);
+      // The same box height from the ground in every picture, so the ground lies on one row.
+      const Eigen::Vector3f centre = 0.5f * (d.lo + d.hi);
+      Eigen::Vector3f lo(centre.x() - 0.5f * extent.x(), centre.y() - 0.5f * extent.y(), d.lo.z());
+      options.frame = Eigen::AlignedBox3f(lo, lo + extent);
+      const graphics::Image image = graphics::render_mesh(mesh, options);
+      graphics::write_image(image, (fs::path(dir) / name).string());
+      md += "![" + c.group + "](" + std::string(name) + ")\n\n*" + c.caption +
+            (d.obstacles ? "" : x.model_kind == "grow" ? "; no obstacles" : "") + "*\n\n";
+    } catch (const Error& e) {
+      notes.push_back("not rendered (run " + std::to_string(c.run) + "): " + e.what());
+    }
+  }
+  return md + ex::notes_markdown(notes);
+}
+
+}  // namespace fspm::cli
