@@ -39,6 +39,10 @@ TEST(ChartFigure, BadInputIsValueErrorBeforeAnyRendering) {
   ChartOptions tiny;
   tiny.width = 2;
   EXPECT_THROW(line_chart_image({{"a", {1, 2}, {1, 2}}}, tiny), ValueError);
+  ChartOptions ticks;
+  ticks.x_ticks = {1, 2};
+  ticks.x_tick_labels = {"one"};  // a label short
+  EXPECT_THROW(line_chart_image({{"a", {1, 2}, {1, 2}}}, ticks), ValueError);
 }
 
 // Pixels of each palette colour (within a tolerance) and pixels that are not background white.

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include "fspm/error.hpp"
@@ -123,6 +125,56 @@ TEST(Render, ColourByAgeSpansTheLookupTable) {
   EXPECT_GT(red, 20u);
   EXPECT_GT(blue, 20u);
   (void)count_near;
+}
+
+TEST(Render, ScaleBarIsARoundFifthOfTheHeight) {
+  EXPECT_DOUBLE_EQ(scale_bar_length(10.89), 2.0);  // a fifth is 2.18
+  EXPECT_DOUBLE_EQ(scale_bar_length(10.0), 2.0);   // exactly a fifth
+  EXPECT_DOUBLE_EQ(scale_bar_length(9.0), 1.0);    // 1.8
+  EXPECT_DOUBLE_EQ(scale_bar_length(30.0), 5.0);   // 6
+  EXPECT_DOUBLE_EQ(scale_bar_length(60.0), 10.0);  // 12
+  EXPECT_NEAR(scale_bar_length(0.5), 0.1, 1e-15);  // 0.1
+  EXPECT_EQ(scale_bar_length(0.0), 0.0);
+  EXPECT_EQ(scale_bar_length(-1.0), 0.0);
+}
+
+TEST(Render, OrthoHeightFitsTheBoxInEachView) {
+  const Eigen::Vector3f lo(0, 0, 0), hi(2, 4, 10);
+  EXPECT_DOUBLE_EQ(ortho_height_to_fit(View::kFront, lo, hi, 2.0), 10.0);    // z up
+  EXPECT_DOUBLE_EQ(ortho_height_to_fit(View::kFront, lo, Eigen::Vector3f(30, 1, 10), 1.5), 20.0);
+  EXPECT_DOUBLE_EQ(ortho_height_to_fit(View::kSide, lo, Eigen::Vector3f(1, 30, 10), 1.5), 20.0);
+  EXPECT_DOUBLE_EQ(ortho_height_to_fit(View::kTop, lo, hi, 1.0), 4.0);       // y up, x across
+  EXPECT_NEAR(ortho_height_to_fit(View::kIso, lo, hi, 1.0), std::sqrt(120.0), 1e-5);
+}
+
+// A parallel projection 10 m high in 200 pixels draws the 2 m bar 40 pixels long, black, near the
+// lower left corner; without a unit there is no bar.
+TEST(Render, ScaleBarHasItsLengthInPixels) {
+  if (!render_available()) GTEST_SKIP() << "built without VTK";
+  if (!display_available()) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
+  const TriangleMesh mesh = mesh_tree(testing::small_tree(), {});
+  RenderOptions o;
+  o.width = 300;
+  o.height = 200;
+  o.view = View::kFront;
+  o.ground = false;
+  o.ortho_height_m = 10.0;
+  // The longest run of black pixels in one row of the bottom fifth.
+  auto longest_black_run = [](const Image& image) {
+    int longest = 0;
+    for (int y = image.height * 4 / 5; y < image.height; ++y) {
+      int run = 0;
+      for (int x = 0; x < image.width; ++x) {
+        const auto* p = image.pixel(x, y);
+        run = p[0] < 40 && p[1] < 40 && p[2] < 40 ? run + 1 : 0;
+        longest = std::max(longest, run);
+      }
+    }
+    return longest;
+  };
+  EXPECT_EQ(longest_black_run(render_mesh(mesh, o)), 0);
+  o.scale_bar_unit = "m";
+  EXPECT_NEAR(longest_black_run(render_mesh(mesh, o)), 40, 2);
 }
 
 }  // namespace
