@@ -30,7 +30,7 @@ std::string model_words(const Experiment& x) {
   }
   if (x.model_kind == "adapt") {
     return "plastic adaptation (Pirk 2013, chapter 4) of the tree `" + shown_path(x, x.model_file) +
-           "` to its scene";
+           "`";
   }
   return "the " + x.model_kind + " model";
 }
@@ -78,9 +78,12 @@ void what_was_run(std::ostream& md, const Experiment& x) {
     }
     md << ")";
   }
-  md << ", " << x.replicates << (x.replicates == 1 ? " run" : " runs")
-     << " per point, each with its own random seed derived from the experiment seed " << x.seed
-     << ".";
+  md << ", " << x.replicates << (x.replicates == 1 ? " run" : " runs") << " per point";
+  if (x.model_kind == "adapt") {
+    md << " (the adaptation is deterministic: it uses no random numbers).";
+  } else {
+    md << ", each with its own random seed derived from the experiment seed " << x.seed << ".";
+  }
   if (!x.fixed.empty()) {
     md << " Fixed:";
     std::string sep = " ";

@@ -110,5 +110,48 @@ TEST(RenderSelection, TheTreeComesFromTheKeptFileElseFromTheModel) {
   EXPECT_EQ(recorded_run_tree(x, r, dir.string()).size(), 2u);
 }
 
+// The obstacles drawn with a tree: the run's scene for grow sets G and T (not O, not "open"), and
+// for the adapt model moved as the model moves it (by -tree_x_m, -tree_y_m).
+TEST(RenderSelection, TheSceneOfARecordedRun) {
+  const auto dir = testing::scratch("render_scene");
+  testing::write(dir / "wall.json",
+                 R"({"occluders": [{"type": "wall", "from": [2, -5], "to": [2, 5], "height": 3,
+                     "thickness": 0.2}]})");
+  const std::string file = (dir / "e.toml").string();
+  const Experiment grow = parse_experiment(
+      "[experiment]\nname = \"g\"\n[model]\nkind = \"grow\"\nscene = \"wall.json\"\n"
+      "[sweep]\nset = [\"O\", \"G\", \"T\"]\n",
+      file);
+  RunRecord r;
+  r.parameters = {{"set", std::string("O")}};
+  EXPECT_FALSE(recorded_run_scene(grow, r).has_value());
+  for (const char* set : {"G", "T"}) {
+    r.parameters = {{"set", std::string(set)}};
+    const auto scene = recorded_run_scene(grow, r);
+    ASSERT_TRUE(scene.has_value()) << set;
+    ASSERT_EQ(scene->boxes.size(), 1u);
+    EXPECT_NEAR(scene->boxes[0].center.x(), 2.0, 1e-12);
+  }
+  r.parameters = {{"set", std::string("G")}, {"scene", std::string("open")}};
+  EXPECT_FALSE(recorded_run_scene(grow, r).has_value());
+
+  TreeGraph tree;
+  NodeData d;
+  d.end = Eigen::Vector3d(0, 0, 1);
+  tree.add_node(kNoNode, d);
+  write_tree_file(tree, (dir / "t.tree").string());
+  const Experiment adapt = parse_experiment(
+      "[experiment]\nname = \"a\"\n[model]\nkind = \"adapt\"\nfile = \"t.tree\"\n"
+      "[sweep]\ntree_x_m = [1.5]\ntree_y_m = [-1.0]\nscene = [\"wall.json\"]\n",
+      file);
+  r.parameters = {{"tree_x_m", 1.5}, {"tree_y_m", -1.0}, {"scene", std::string("wall.json")}};
+  const auto moved = recorded_run_scene(adapt, r);
+  ASSERT_TRUE(moved.has_value());
+  ASSERT_EQ(moved->boxes.size(), 1u);
+  EXPECT_NEAR(moved->boxes[0].center.x(), 0.5, 1e-12);
+  EXPECT_NEAR(moved->boxes[0].center.y(), 1.0, 1e-12);
+  EXPECT_FALSE(recorded_run_scene(experiment(""), records(experiment(""))[0]).has_value());
+}
+
 }  // namespace
 }  // namespace fspm::experiments

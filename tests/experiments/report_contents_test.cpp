@@ -1,0 +1,203 @@
+// What a report tells its reader: the opening paragraphs, collapsed notes, plant metrics and
+// timings apart, and the per-value statistics behind the plots against each swept parameter.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "experiments/experiment.hpp"
+#include "experiments/report.hpp"
+#include "experiments/report_intro.hpp"
+#include "experiments/report_notes.hpp"
+#include "experiments/sweep_summary.hpp"
+
+namespace fspm::experiments {
+namespace {
+
+TEST(ReportNotes, IdenticalNotesBecomeOneLineWithACount) {
+  const std::vector<std::string> notes = {"tree missing", "other", "tree missing", "tree missing"};
+  EXPECT_EQ(collapse_notes(notes),
+            (std::vector<std::string>{"tree missing (3 times)", "other"}));
+  EXPECT_EQ(notes_markdown(notes), "\nNote: tree missing (3 times)\n\nNote: other\n");
+}
+
+TEST(ReportNotes, NotesDifferingOnlyInTheirGroupBecomeOneLine) {
+  std::vector<std::string> notes;
+  for (const char* g : {"preset=A", "preset=B", "preset=C", "preset=D", "preset=E"}) {
+    notes.push_back(std::string("comparison T-G (") + g + "): only 6 of 50 pairs");
+  }
+  notes.push_back("comparison G-G (preset=A): only 3 of 50 pairs");  // another text: its own line
+  const std::vector<std::string> out = collapse_notes(notes);
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_EQ(out[0],
+            "comparison T-G: only 6 of 50 pairs (5 times: preset=A; preset=B; preset=C; "
+            "preset=D; ...)");
+  EXPECT_EQ(out[1], "comparison G-G (preset=A): only 3 of 50 pairs");  // once: as it was
+}
+
+RunRecord run(std::size_t index, std::int64_t years, std::string set, double height,
+              double seconds, RunStatus status = RunStatus::kOk) {
+  RunRecord r;
+  r.run = index;
+  r.point = index;
+  r.status = status;
+  r.parameters = {{"years", years}, {"set", std::move(set)}};
+  r.metrics = {{"height", height}, {"run_time", seconds}};
+  return r;
+}
+
+TEST(ReportTables, PlantMetricsAndTimingsInSeparateTables) {
+  ExperimentInfo info;
+  info.name = "t";
+  info.total_runs = 2;
+  info.swept = {"years", "set"};
+  info.metrics = {"height", "run_time"};
+  const std::string md =
+      markdown_report(info, {run(0, 10, "O", 2.0, 0.5), run(1, 20, "G", 4.0, 1.5)});
+  const auto plants = md.find("## Metrics per parameter point");
+  const auto timings = md.find("## Timings per parameter point");
+  ASSERT_NE(plants, std::string::npos) << md;
+  ASSERT_NE(timings, std::string::npos) << md;
+  const std::string plant_table = md.substr(plants, timings - plants);
+  EXPECT_NE(plant_table.find("height (m)"), std::string::npos) << plant_table;
+  EXPECT_EQ(plant_table.find("run_time"), std::string::npos) << plant_table;
+  const std::string timing_table = md.substr(timings, md.find("## Marginal") - timings);
+  EXPECT_NE(timing_table.find("| run_time (s) |"), std::string::npos) << timing_table;
+  EXPECT_EQ(timing_table.find("height"), std::string::npos) << timing_table;
+  EXPECT_TRUE(is_timing_metric("grow_seconds"));
+  EXPECT_FALSE(is_timing_metric("nodes"));
+}
+
+// The statistics behind each plot: one entry per swept value (numbers ascending, text in order of
+// first appearance) whose mean and sample standard deviation over the successful runs with that
+// value match a direct computation over the rows.
+TEST(SweepSummary, OneEntryPerValueWithTheMeanOfItsRuns) {
+  ExperimentInfo info;
+  info.swept = {"years", "set"};
+  info.metrics = {"height", "run_time"};
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 10.0);
+  std::vector<RunRecord> runs;
+  const std::int64_t years[] = {30, 10, 20};  // recorded out of order
+  const char* sets[] = {"T", "O", "G"};
+  for (std::size_t i = 0; i < 45; ++i) {
+    runs.push_back(run(i, years[i % 3], sets[(i / 3) % 3], u(rng), u(rng),
+                       i % 7 == 0 ? RunStatus::kError : RunStatus::kOk));
+  }
+  const std::vector<SweptParameter> summary = sweep_summary(info, runs);
+  ASSERT_EQ(summary.size(), 2u);
+  ASSERT_EQ(summary[0].values.size(), 3u);
+  EXPECT_TRUE(summary[0].numeric());
+  EXPECT_EQ(summary[0].values[0].text, "10");
+  EXPECT_EQ(summary[0].values[2].number, 30.0);
+  EXPECT_FALSE(summary[1].numeric());
+  ASSERT_EQ(summary[1].values.size(), 3u);
+  EXPECT_EQ(summary[1].values[0].text, "T");  // first seen
+  for (const SweptParameter& p : summary) {
+    for (const SweptValue& v : p.values) {
+      // Two-pass mean and sample standard deviation over the matching successful rows.
+      double sum = 0.0;
+      std::size_t n = 0;
+      for (const RunRecord& r : runs) {
+        if (r.status == RunStatus::kOk && parameter_text(r.parameters.at(p.name)) == v.text) {
+          sum += r.metrics.at("height");
+          ++n;
+        }
+      }
+      const double mean = sum / static_cast<double>(n);
+      double squares = 0.0;
+      for (const RunRecord& r : runs) {
+        if (r.status == RunStatus::kOk && parameter_text(r.parameters.at(p.name)) == v.text) {
+          squares += (r.metrics.at("height") - mean) * (r.metrics.at("height") - mean);
+        }
+      }
+      const Moments& m = v.metrics.at("height");
+      EXPECT_EQ(m.n, n) << p.name << " = " << v.text;
+      EXPECT_NEAR(m.mean, mean, 1e-12) << p.name << " = " << v.text;
+      EXPECT_NEAR(m.sd(), std::sqrt(squares / static_cast<double>(n - 1)), 1e-12);
+    }
+  }
+}
+
+const char* kGrowExperiment = R"(
+[experiment]
+name = "avg"
+description = "adapted versus grown"
+seed = 5
+replicates = 4
+[model]
+kind = "grow"
+[sweep]
+years = [10, 20]
+set = ["O", "G", "T"]
+[outputs]
+metrics = ["nodes", "height"]
+[[comparison]]
+name = "T-G"
+a = { set = "T" }
+b = { set = "G" }
+within = ["years"]
+pairs = 2
+[[comparison]]
+name = "G-G"
+a = { set = "G" }
+b = { set = "G" }
+within = ["years"]
+[[ttest]]
+a = "T-G"
+b = "G-G"
+[report]
+about = "Pirk found no difference."
+)";
+
+TEST(ReportIntroduction, SaysWhatWasRunAndWhatTheSetsAndGroupsMean) {
+  const Experiment x = parse_experiment(kGrowExperiment);
+  const std::string md = report_introduction(x);
+  EXPECT_NE(md.find("adapted versus grown"), std::string::npos) << md;
+  EXPECT_NE(md.find("24 runs"), std::string::npos) << md;  // 2 x 3 points x 4
+  EXPECT_NE(md.find("years 10, 20 × set O, G, T"), std::string::npos) << md;
+  for (const char* set : {"O", "G", "T"}) {
+    EXPECT_NE(md.find(std::string("**") + set + "**: " + std::string(grow_set_meaning(set))),
+              std::string::npos)
+        << set << "\n"
+        << md;
+  }
+  EXPECT_NE(md.find("**T-G**: a run with set = T against one with set = G, both with the same "
+                    "years (2 pairs per group)"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("**G-G**: two different runs with set = G"), std::string::npos) << md;
+  EXPECT_NE(md.find("Are the T-G distances different from the G-G distances?"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("Pirk found no difference."), std::string::npos) << md;
+}
+
+TEST(ReportIntroduction, TestOverviewCountsSignificantGroups) {
+  const Experiment x = parse_experiment(kGrowExperiment);
+  std::vector<TTestRow> tests(3);
+  const double p[] = {0.01, 0.2, 0.03};
+  const double mean_a[] = {5.0, 1.0, 1.0};
+  for (std::size_t i = 0; i < 3; ++i) {
+    tests[i].a = "T-G";
+    tests[i].b = "G-G";
+    tests[i].group = "years=" + std::to_string(i);
+    tests[i].p = p[i];
+    tests[i].mean_a = mean_a[i];
+    tests[i].mean_b = 2.0;
+  }
+  EXPECT_NE(ttest_overview(x, tests).find("- T-G against G-G: significantly different in 2 of 3 "
+                                          "groups (T-G larger in 1, smaller in 1), not in 1."),
+            std::string::npos)
+      << ttest_overview(x, tests);
+}
+
+TEST(ReportIntroduction, OverriddenReplicatesSurviveTheStoredText) {
+  Experiment x = parse_experiment(kGrowExperiment);
+  override_replicates(x, 2);
+  EXPECT_EQ(parse_experiment(x.text).replicates, 2u);
+  EXPECT_EQ(parse_experiment(x.text).runs(), 12u);
+}
+
+}  // namespace
+}  // namespace fspm::experiments
