@@ -150,7 +150,9 @@ std::string comparison_figures(const ex::Experiment& x, const ex::ComparisonResu
       options.width = 640;
       options.height = 420;
       graphics::write_box_plot(names, values, options, (fs::path(dir) / file).string());
-      md += "![distances, " + group + "](" + file + ")\n";
+      std::string alt = "distances, " + group + ":";
+      for (std::size_t i = 0; i < names.size(); ++i) alt += (i == 0 ? " " : ", ") + names[i];
+      md += "![" + alt + "](" + file + ")\n";
     }
   } catch (const Error& e) {
     return "\nNote: figures left out: " + std::string(e.what()) + "\n";
@@ -162,19 +164,21 @@ std::string comparison_figures(const ex::Experiment& x, const ex::ComparisonResu
 
 namespace {
 
-// The tree of a recorded run meshed with the obstacles near it; `obstacles` tells whether it
-// had any.
+// What a render shows besides the tree.
+enum class Obstacles { kNone, kFarAway, kDrawn };
+
+// The tree of a recorded run meshed with the obstacles near it.
 graphics::TriangleMesh run_scene_mesh(const ex::Experiment& x, const ex::RunRecord& record,
-                                      const std::string& dir, bool& obstacles) {
+                                      const std::string& dir, Obstacles& obstacles) {
   graphics::TriangleMesh mesh = run_tree_mesh(ex::recorded_run_tree(x, record, dir));
-  obstacles = false;
+  obstacles = Obstacles::kNone;
   if (const std::optional<environment::Scene> scene = ex::recorded_run_scene(x, record)) {
     Eigen::Vector2d region_lo, region_hi;
     obstacle_region(mesh.bbox_min().cast<double>(), mesh.bbox_max().cast<double>(), region_lo,
                     region_hi);
     const graphics::TriangleMesh stones =
         mesh_obstacles(obstacles_near(*scene, region_lo, region_hi));
-    obstacles = stones.triangle_count() > 0;
+    obstacles = stones.triangle_count() > 0 ? Obstacles::kDrawn : Obstacles::kFarAway;
     mesh.append(stones);
   }
   return mesh;
@@ -200,13 +204,13 @@ std::string tree_renders(const ex::Experiment& x, const std::vector<ex::RunRecor
   struct Drawn {
     const ex::RenderChoice* choice;
     Eigen::Vector3f lo, hi;
-    bool obstacles;
+    Obstacles obstacles;
   };
   std::vector<Drawn> drawn;
   Eigen::Vector3f extent = Eigen::Vector3f::Zero();
   for (const ex::RenderChoice& c : choices) {
     try {
-      bool obstacles = false;
+      Obstacles obstacles = Obstacles::kNone;
       const graphics::TriangleMesh mesh = run_scene_mesh(x, *by_run.at(c.run), dir, obstacles);
       drawn.push_back({&c, mesh.bbox_min(), mesh.bbox_max(), obstacles});
       extent = extent.cwiseMax(mesh.bbox_max() - mesh.bbox_min());
@@ -240,7 +244,7 @@ std::string tree_renders(const ex::Experiment& x, const std::vector<ex::RunRecor
     char name[40];
     std::snprintf(name, sizeof name, "figures/run-%07zu.png", c.run);
     try {
-      bool obstacles = false;
+      Obstacles obstacles = Obstacles::kNone;
       const graphics::TriangleMesh mesh = run_scene_mesh(x, *by_run.at(c.run), dir, obstacles);
       // The same box height from the ground in every picture, so the ground lies on one row.
       const Eigen::Vector3f centre = 0.5f * (d.lo + d.hi);
@@ -248,8 +252,12 @@ std::string tree_renders(const ex::Experiment& x, const std::vector<ex::RunRecor
       options.frame = Eigen::AlignedBox3f(lo, lo + extent);
       const graphics::Image image = graphics::render_mesh(mesh, options);
       graphics::write_image(image, (fs::path(dir) / name).string());
-      md += "![" + c.group + "](" + std::string(name) + ")\n\n*" + c.caption +
-            (d.obstacles ? "" : x.model_kind == "grow" ? "; no obstacles" : "") + "*\n\n";
+      const char* besides = d.obstacles == Obstacles::kFarAway
+                                ? "; the scene's obstacles are too far from the tree to be drawn"
+                            : d.obstacles == Obstacles::kNone && x.model_kind == "grow"
+                                ? "; grown without obstacles"
+                                : "";
+      md += "![" + c.group + "](" + std::string(name) + ")\n\n*" + c.caption + besides + "*\n\n";
     } catch (const Error& e) {
       notes.push_back("not rendered (run " + std::to_string(c.run) + "): " + e.what());
     }
