@@ -81,5 +81,46 @@ TEST(ExperimentComparisons, BadComparisonIsOneMessageBeforeAnyRun) {
   EXPECT_FALSE(fs::exists(dir / "out" / "results.sqlite"));
 }
 
+// The report with its figures, as a reader opens it: the opening paragraphs name the groups, the
+// box plots say how many pairs each box holds, every recorded metric is plotted against the
+// swept parameter, and the t-tests are summed up.
+TEST(ExperimentComparisons, ReportExplainsAndPlots) {
+  const fs::path dir = scratch_dir("exp_cmp_report");
+  write_text(dir / "chains.toml", std::string(kExperiment) +
+                                      "[outputs]\nmetrics = [\"nodes\", \"height\", "
+                                      "\"run_time\"]\n[report]\nrenders = 0\n");
+  const std::string out = (dir / "out").string();
+  ASSERT_EQ(run_fspm("run " + (dir / "chains.toml").string() + " -j 2 -o " + out).exit_code, 0);
+  const CommandResult report = run_fspm("report " + out);
+  ASSERT_EQ(report.exit_code, 0) << report.err;
+  const std::string md = read_text(dir / "out" / "report.md");
+  if (md.find("Note: figures left out") != std::string::npos) {
+    GTEST_SKIP() << "no figures (no VTK or no display): " << md;
+  }
+  EXPECT_NE(md.find("**What was run.** 8 runs of the synthetic model"), std::string::npos) << md;
+  EXPECT_NE(md.find("**2-6**: a run with nodes = 2 against one with nodes = 6."),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("**2-2**: two different runs with nodes = 2."), std::string::npos) << md;
+  // 4 runs per chain length: 4 pairs across, 2 without reuse within.
+  EXPECT_NE(md.find("![distances, all: 2-6 (n = 4), 2-2 (n = 2)](figures/comparisons_0.png)"),
+            std::string::npos)
+      << md;
+  EXPECT_TRUE(fs::exists(dir / "out" / "figures" / "comparisons_0.png"));
+  // One plot per metric against `nodes` (two values: a line), PNGs on disk.
+  EXPECT_NE(md.find("### Against `nodes`\n\nSuccessful runs per value (2: 4, 6: 4)."),
+            std::string::npos)
+      << md;
+  for (const char* metric : {"nodes", "height", "run_time"}) {
+    const std::string file = std::string("figures/sweep-0-") + metric + ".png";
+    EXPECT_NE(md.find("](" + file + ")"), std::string::npos) << metric << "\n" << md;
+    EXPECT_EQ(read_text(dir / "out" / file).substr(1, 3), "PNG") << file;
+  }
+  // Constant distances within each comparison: the t-test is significant (t infinite or p = 0)
+  // or undefined; either way the summary line counts the single group.
+  EXPECT_NE(md.find("- 2-6 against 2-2: significantly different in "), std::string::npos) << md;
+  EXPECT_NE(md.find(" of 1 group"), std::string::npos) << md;
+}
+
 }  // namespace
 }  // namespace fspm::testing
