@@ -228,12 +228,13 @@ std::string tree_renders(const ex::Experiment& x, const std::vector<ex::RunRecor
   // 6 % margin, as the perspective framing has.
   options.ortho_height_m =
       1.06 * graphics::ortho_height_to_fit(options.view, Eigen::Vector3f::Zero(), extent, aspect);
+  const double bar = graphics::scale_bar_length(options.ortho_height_m);
+  // "1 model unit", "2 model units", "1 m".
   const std::string unit = ex::length_unit(x.model_kind);
-  options.scale_bar_unit = unit;
+  options.scale_bar_unit = bar == 1.0 && unit == "model units" ? "model unit" : unit;
   md += "All pictures at one scale, in a parallel projection (" + x.image_view +
         " view): the image height spans " + number_text(options.ortho_height_m) + " " + unit +
-        ", the black bar is " + number_text(graphics::scale_bar_length(options.ortho_height_m)) +
-        " " + unit + ".";
+        ", the black bar is " + number_text(bar) + " " + options.scale_bar_unit + ".";
   if (x.model_kind == "grow" || x.model_kind == "adapt") {
     md += " Grey: the obstacles of the scene the tree grew beside or was adapted to, cut to the "
           "region around it (trees grown in the open are drawn alone).";

@@ -402,7 +402,7 @@ std::string comparisons_markdown(const Experiment& x, const ComparisonResults& r
     for (const TTestRow& t : results.tests) {
       md << "| " << t.group << " | " << t.a << " | " << t.b << " | "
          << (t.welch ? "Welch" : "Student") << ", " << t.alternative << " | " << number(t.t, 4)
-         << " | " << number(t.df, 4) << " | " << number(t.p, 3) << " | "
+         << " | " << number(t.df, 4) << " | " << p_text(t.p) << " | "
          << (t.significant() ? "yes" : "no") << " (" << number(t.alpha) << ") |\n";
     }
   }
