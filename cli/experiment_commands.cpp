@@ -409,7 +409,8 @@ void add_experiment_commands(CLI::App& app) {
 
   auto report = std::make_shared<ReportOptions>();
   CLI::App* rep = app.add_subcommand(
-      "report", "Write DIR/report.md: what was run, tables, plots and renders of a sweep's results");
+      "report",
+      "Write DIR/report.md: what was run, tables, plots and renders of a sweep's results");
   rep->add_option("DIR", report->dir, "Output directory of fspm run")->required();
   rep->add_option("-o,--output", report->output, "Report path (default DIR/report.md)");
   rep->add_flag("--no-figures", report->no_figures, "Tables only (figures need an X display)");

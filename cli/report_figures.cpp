@@ -236,8 +236,9 @@ std::string tree_renders(const ex::Experiment& x, const std::vector<ex::RunRecor
         " view): the image height spans " + number_text(options.ortho_height_m) + " " + unit +
         ", the black bar is " + number_text(bar) + " " + options.scale_bar_unit + ".";
   if (x.model_kind == "grow" || x.model_kind == "adapt") {
-    md += " Grey: the obstacles of the scene the tree grew beside or was adapted to, cut to the "
-          "region around it (trees grown in the open are drawn alone).";
+    md +=
+        " Grey: the obstacles of the scene the tree grew beside or was adapted to, cut to the "
+        "region around it (trees grown in the open are drawn alone).";
   }
   md += "\n\n";
   for (const Drawn& d : drawn) {

@@ -637,7 +637,8 @@ Experiment parse_experiment(std::string_view toml_text, const std::string& path)
     const std::string_view digits = toml_text.substr(at + marker.size());
     const auto [end, error] =
         std::from_chars(digits.data(), digits.data() + digits.size(), replicates);
-    if (error == std::errc() && replicates > 0 && std::string_view(end, digits.data() + digits.size()) == "\n") {
+    if (error == std::errc() && replicates > 0 &&
+        std::string_view(end, digits.data() + digits.size()) == "\n") {
       x.replicates = replicates;
     }
   }

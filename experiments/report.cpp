@@ -83,7 +83,8 @@ struct Point {
   std::size_t runs = 0;
 };
 
-void point_table(std::ostream& md, const ExperimentInfo& info, const std::map<std::size_t, Point>& points,
+void point_table(std::ostream& md, const ExperimentInfo& info,
+                 const std::map<std::size_t, Point>& points,
                  const std::vector<std::string>& metrics, std::string_view kind) {
   std::vector<std::string> leading = {"point", "runs"};
   leading.insert(leading.end(), info.swept.begin(), info.swept.end());

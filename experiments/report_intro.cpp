@@ -20,7 +20,8 @@ std::string shown_path(const Experiment& x, const std::string& file) {
 // The model kinds in words, with the literature they follow (docs/references.md).
 std::string model_words(const Experiment& x) {
   if (x.model_kind == "lsystem") {
-    return "the L-system `" + shown_path(x, x.model_file) + "` (Prusinkiewicz and Lindenmayer 1990), lengths in "
+    return "the L-system `" + shown_path(x, x.model_file) +
+           "` (Prusinkiewicz and Lindenmayer 1990), lengths in "
            "the L-system's own units";
   }
   if (x.model_kind == "greenlab") return "the GreenLab model (de Reffye et al. 2003)";
@@ -136,9 +137,10 @@ void comparison_meanings(std::ostream& md, const Experiment& x) {
   if (x.ttests.empty()) return;
   md << "**The tests.**";
   for (const TTestSpec& t : x.ttests) {
-    md << " Are the " << t.a << " distances " << (t.alternative == "less"      ? "smaller than"
-                                                   : t.alternative == "greater" ? "larger than"
-                                                                                : "different from")
+    md << " Are the " << t.a << " distances "
+       << (t.alternative == "less"      ? "smaller than"
+           : t.alternative == "greater" ? "larger than"
+                                        : "different from")
        << " the " << t.b << " distances? (" << (t.welch ? "Welch's" : "Student's")
        << " t-test, significant when p < " << t.alpha << ".)";
   }
@@ -148,7 +150,8 @@ void comparison_meanings(std::ostream& md, const Experiment& x) {
 }  // namespace
 
 std::string_view grow_set_meaning(std::string_view set) {
-  if (set == "O") return "grown in the open, without the scene's obstacles (its sky and ground only)";
+  if (set == "O")
+    return "grown in the open, without the scene's obstacles (its sky and ground only)";
   if (set == "G") return "grown in the scene, beside its obstacles, from the start";
   if (set == "T") {
     return "grown like O, then adapted to the scene's obstacles by plastic adaptation "
@@ -180,8 +183,8 @@ std::string ttest_overview(const Experiment& x, const std::vector<TTestRow>& tes
       a_larger += t.mean_a > t.mean_b;
     }
     if (groups == 0) continue;
-    md << "- " << spec.a << " against " << spec.b << ": significantly different in "
-       << significant << " of " << groups << (groups == 1 ? " group" : " groups");
+    md << "- " << spec.a << " against " << spec.b << ": significantly different in " << significant
+       << " of " << groups << (groups == 1 ? " group" : " groups");
     if (significant > 0) {
       md << " (" << spec.a << " larger in " << a_larger << ", smaller in " << significant - a_larger
          << ")";

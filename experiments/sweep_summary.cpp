@@ -35,11 +35,10 @@ std::vector<SweptParameter> sweep_summary(const ExperimentInfo& info,
       const std::string text = parameter_text(it->second);
       auto [pos, inserted] = index.try_emplace(text, p.values.size());
       if (inserted) {
-        const double number = std::holds_alternative<std::string>(it->second)
-                                  ? std::nan("")
-                                  : std::holds_alternative<double>(it->second)
-                                        ? std::get<double>(it->second)
-                                        : static_cast<double>(std::get<std::int64_t>(it->second));
+        const double number = std::holds_alternative<std::string>(it->second) ? std::nan("")
+                              : std::holds_alternative<double>(it->second)
+                                  ? std::get<double>(it->second)
+                                  : static_cast<double>(std::get<std::int64_t>(it->second));
         p.values.push_back({text, number, {}});
       }
       if (r.status != RunStatus::kOk) continue;
@@ -50,8 +49,9 @@ std::vector<SweptParameter> sweep_summary(const ExperimentInfo& info,
       }
     }
     if (p.numeric()) {
-      std::stable_sort(p.values.begin(), p.values.end(),
-                       [](const SweptValue& a, const SweptValue& b) { return a.number < b.number; });
+      std::stable_sort(
+          p.values.begin(), p.values.end(),
+          [](const SweptValue& a, const SweptValue& b) { return a.number < b.number; });
     }
     out.push_back(std::move(p));
   }

@@ -22,8 +22,8 @@ struct Moments {
 };
 
 struct SweptValue {
-  std::string text;  // the value as the report prints it
-  double number;     // the value as a number; NaN for a text value
+  std::string text;                        // the value as the report prints it
+  double number;                           // the value as a number; NaN for a text value
   std::map<std::string, Moments> metrics;  // over the successful runs with this value
 };
 

@@ -36,9 +36,9 @@ struct ChartOptions {
 std::array<unsigned char, 3> chart_color(std::size_t i);
 
 // One line per series (points sorted as given), a legend when several are listed in it. Throws
-// ValueError for no series, x ticks and labels of different lengths, x and y of different lengths, an empty or non-finite series, a bad
-// size or an image format OpenImageIO does not write; IoError when no display can be opened or
-// the file cannot be written (nothing is left half-written).
+// ValueError for no series, x ticks and labels of different lengths, x and y of different lengths,
+// an empty or non-finite series, a bad size or an image format OpenImageIO does not write; IoError
+// when no display can be opened or the file cannot be written (nothing is left half-written).
 Image line_chart_image(const std::vector<ChartSeries>& series, const ChartOptions& options);
 void write_line_chart(const std::vector<ChartSeries>& series, const ChartOptions& options,
                       const std::string& png_path);

@@ -114,8 +114,8 @@ Image line_chart_image(const std::vector<ChartSeries>& series, const ChartOption
     style_title(chart, o.title);
     chart->GetAxis(vtkAxis::BOTTOM)->SetTitle(o.x_label);
     chart->GetAxis(vtkAxis::LEFT)->SetTitle(o.y_label);
-    const auto listed = std::count_if(series.begin(), series.end(),
-                                      [](const ChartSeries& s) { return s.legend; });
+    const auto listed =
+        std::count_if(series.begin(), series.end(), [](const ChartSeries& s) { return s.legend; });
     chart->SetShowLegend(listed > 1);
     if (listed > 1) chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
     for (std::size_t i = 0; i < series.size(); ++i) {

@@ -98,8 +98,7 @@ TEST(ExperimentComparisons, ReportExplainsAndPlots) {
     GTEST_SKIP() << "no figures (no VTK or no display): " << md;
   }
   EXPECT_NE(md.find("**What was run.** 8 runs of the synthetic model"), std::string::npos) << md;
-  EXPECT_NE(md.find("**2-6**: a run with nodes = 2 against one with nodes = 6."),
-            std::string::npos)
+  EXPECT_NE(md.find("**2-6**: a run with nodes = 2 against one with nodes = 6."), std::string::npos)
       << md;
   EXPECT_NE(md.find("**2-2**: two different runs with nodes = 2."), std::string::npos) << md;
   // 4 runs per chain length: 4 pairs across, 2 without reuse within.

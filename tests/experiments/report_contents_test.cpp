@@ -16,8 +16,7 @@ namespace {
 
 TEST(ReportNotes, IdenticalNotesBecomeOneLineWithACount) {
   const std::vector<std::string> notes = {"tree missing", "other", "tree missing", "tree missing"};
-  EXPECT_EQ(collapse_notes(notes),
-            (std::vector<std::string>{"tree missing (3 times)", "other"}));
+  EXPECT_EQ(collapse_notes(notes), (std::vector<std::string>{"tree missing (3 times)", "other"}));
   EXPECT_EQ(notes_markdown(notes), "\nNote: tree missing (3 times)\n\nNote: other\n");
 }
 
@@ -35,8 +34,8 @@ TEST(ReportNotes, NotesDifferingOnlyInTheirGroupBecomeOneLine) {
   EXPECT_EQ(out[1], "comparison G-G (preset=A): only 3 of 50 pairs");  // once: as it was
 }
 
-RunRecord run(std::size_t index, std::int64_t years, std::string set, double height,
-              double seconds, RunStatus status = RunStatus::kOk) {
+RunRecord run(std::size_t index, std::int64_t years, std::string set, double height, double seconds,
+              RunStatus status = RunStatus::kOk) {
   RunRecord r;
   r.run = index;
   r.point = index;
@@ -167,8 +166,7 @@ TEST(ReportIntroduction, SaysWhatWasRunAndWhatTheSetsAndGroupsMean) {
             std::string::npos)
       << md;
   EXPECT_NE(md.find("**G-G**: two different runs with set = G"), std::string::npos) << md;
-  EXPECT_NE(md.find("Are the T-G distances different from the G-G distances?"),
-            std::string::npos)
+  EXPECT_NE(md.find("Are the T-G distances different from the G-G distances?"), std::string::npos)
       << md;
   EXPECT_NE(md.find("Pirk found no difference."), std::string::npos) << md;
 }

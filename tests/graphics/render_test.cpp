@@ -140,10 +140,10 @@ TEST(Render, ScaleBarIsARoundFifthOfTheHeight) {
 
 TEST(Render, OrthoHeightFitsTheBoxInEachView) {
   const Eigen::Vector3f lo(0, 0, 0), hi(2, 4, 10);
-  EXPECT_DOUBLE_EQ(ortho_height_to_fit(View::kFront, lo, hi, 2.0), 10.0);    // z up
+  EXPECT_DOUBLE_EQ(ortho_height_to_fit(View::kFront, lo, hi, 2.0), 10.0);  // z up
   EXPECT_DOUBLE_EQ(ortho_height_to_fit(View::kFront, lo, Eigen::Vector3f(30, 1, 10), 1.5), 20.0);
   EXPECT_DOUBLE_EQ(ortho_height_to_fit(View::kSide, lo, Eigen::Vector3f(1, 30, 10), 1.5), 20.0);
-  EXPECT_DOUBLE_EQ(ortho_height_to_fit(View::kTop, lo, hi, 1.0), 4.0);       // y up, x across
+  EXPECT_DOUBLE_EQ(ortho_height_to_fit(View::kTop, lo, hi, 1.0), 4.0);  // y up, x across
   EXPECT_NEAR(ortho_height_to_fit(View::kIso, lo, hi, 1.0), std::sqrt(120.0), 1e-5);
 }
 
