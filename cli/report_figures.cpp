@@ -184,6 +184,38 @@ graphics::TriangleMesh run_scene_mesh(const ex::Experiment& x, const ex::RunReco
   return mesh;
 }
 
+// The experiment's image size and view in a parallel projection whose height fits a box of
+// `extent` with a 6 % margin (as the perspective framing has), with a scale bar.
+graphics::RenderOptions one_scale_options(const ex::Experiment& x, const Eigen::Vector3f& extent) {
+  graphics::RenderOptions options;
+  options.width = x.image_width;
+  options.height = x.image_height;
+  options.view = graphics::view_from_name(x.image_view);
+  const double aspect = static_cast<double>(options.width) / options.height;
+  options.ortho_height_m =
+      1.06 * graphics::ortho_height_to_fit(options.view, Eigen::Vector3f::Zero(), extent, aspect);
+  // "1 model unit", "2 model units", "1 m".
+  const std::string unit = ex::length_unit(x.model_kind);
+  const bool one = graphics::scale_bar_length(options.ortho_height_m) == 1.0;
+  options.scale_bar_unit = one && unit == "model units" ? "model unit" : unit;
+  return options;
+}
+
+// The paragraph above the renders: their scale, and what the grey shapes are.
+std::string one_scale_text(const ex::Experiment& x, const graphics::RenderOptions& options) {
+  std::string md = "All pictures at one scale, in a parallel projection (" + x.image_view +
+                   " view): the image height spans " + number_text(options.ortho_height_m) + " " +
+                   ex::length_unit(x.model_kind) + ", the black bar is " +
+                   number_text(graphics::scale_bar_length(options.ortho_height_m)) + " " +
+                   options.scale_bar_unit + ".";
+  if (x.model_kind == "grow" || x.model_kind == "adapt") {
+    md +=
+        " Grey: the obstacles of the scene the tree grew beside or was adapted to, cut to the "
+        "region around it (trees grown in the open are drawn alone).";
+  }
+  return md + "\n\n";
+}
+
 }  // namespace
 
 std::string tree_renders(const ex::Experiment& x, const std::vector<ex::RunRecord>& runs,
@@ -220,27 +252,8 @@ std::string tree_renders(const ex::Experiment& x, const std::vector<ex::RunRecor
   }
   if (drawn.empty()) return md + ex::notes_markdown(notes);
 
-  graphics::RenderOptions options;
-  options.width = x.image_width;
-  options.height = x.image_height;
-  options.view = graphics::view_from_name(x.image_view);
-  const double aspect = static_cast<double>(options.width) / options.height;
-  // 6 % margin, as the perspective framing has.
-  options.ortho_height_m =
-      1.06 * graphics::ortho_height_to_fit(options.view, Eigen::Vector3f::Zero(), extent, aspect);
-  const double bar = graphics::scale_bar_length(options.ortho_height_m);
-  // "1 model unit", "2 model units", "1 m".
-  const std::string unit = ex::length_unit(x.model_kind);
-  options.scale_bar_unit = bar == 1.0 && unit == "model units" ? "model unit" : unit;
-  md += "All pictures at one scale, in a parallel projection (" + x.image_view +
-        " view): the image height spans " + number_text(options.ortho_height_m) + " " + unit +
-        ", the black bar is " + number_text(bar) + " " + options.scale_bar_unit + ".";
-  if (x.model_kind == "grow" || x.model_kind == "adapt") {
-    md +=
-        " Grey: the obstacles of the scene the tree grew beside or was adapted to, cut to the "
-        "region around it (trees grown in the open are drawn alone).";
-  }
-  md += "\n\n";
+  graphics::RenderOptions options = one_scale_options(x, extent);
+  md += one_scale_text(x, options);
   for (const Drawn& d : drawn) {
     const ex::RenderChoice& c = *d.choice;
     char name[40];
