@@ -42,7 +42,8 @@ std::string metric_label(const std::string& metric, const std::string& model_kin
 // The chart of one metric against one swept parameter; false when fewer than two values have
 // the metric.
 bool sweep_chart(const ex::SweptParameter& parameter, const std::string& metric,
-                 const std::string& model_kind, const std::string& png_path) {
+                 const std::string& model_kind, const std::string& x_label,
+                 const std::string& png_path) {
   // No legend (it would hide the top right corner): the report's text says which line is which.
   graphics::ChartSeries mean{"mean", {}, {}, 0, false, true, false};
   graphics::ChartSeries upper{"mean + sd", {}, {}, 0, true, false, false};
@@ -68,14 +69,14 @@ bool sweep_chart(const ex::SweptParameter& parameter, const std::string& metric,
   // A line needs two values (regrow_seconds, say, is only recorded for one set).
   if (mean.x.size() < 2) return false;
   options.title = metric_label(metric, model_kind);
-  options.x_label = parameter.name;
+  options.x_label = x_label;
   options.width = 420;
   options.height = 300;
   graphics::write_line_chart({mean, upper, lower}, options, png_path);
   return true;
 }
 
-// "O 108, G 108, T 108": successful runs per value (those with the first metric).
+// "O: 108, G: 108, T: 108": successful runs per value that recorded the metric.
 std::string runs_per_value(const ex::SweptParameter& parameter, const std::string& metric) {
   std::string out;
   for (const ex::SweptValue& v : parameter.values) {
@@ -97,17 +98,29 @@ std::string sweep_figures(const ex::Experiment& x, const ex::ExperimentInfo& inf
       const ex::SweptParameter& parameter = summary[p];
       if (parameter.values.size() < 2 || info.metrics.empty()) continue;
       fs::create_directories(fs::path(dir) / "figures");
+      const std::string counts = runs_per_value(parameter, info.metrics.front());
       std::string row;
-      for (const std::string& metric : info.metrics) {
-        const std::string file = "figures/sweep-" + std::to_string(p) + "-" + metric + ".png";
-        if (!sweep_chart(parameter, metric, x.model_kind, (fs::path(dir) / file).string())) {
-          continue;
+      // What the plants did first, then the timings, as in the tables.
+      for (const bool timings : {false, true}) {
+        std::string charts;
+        for (const std::string& metric : info.metrics) {
+          if (ex::is_timing_metric(metric) != timings) continue;
+          // A metric only some runs record (pruned_nodes: set T) says how many runs it pools.
+          const std::string own = runs_per_value(parameter, metric);
+          const std::string label =
+              own == counts ? parameter.name : parameter.name + " (runs: " + own + ")";
+          const std::string file = "figures/sweep-" + std::to_string(p) + "-" + metric + ".png";
+          if (!sweep_chart(parameter, metric, x.model_kind, label,
+                           (fs::path(dir) / file).string())) {
+            continue;
+          }
+          charts += "![" + metric + " against " + label + "](" + file + ")\n";
         }
-        row += "![" + metric + " against " + parameter.name + "](" + file + ")\n";
+        if (!charts.empty()) row += (timings && !row.empty() ? "\nTimings:\n\n" : "") + charts;
       }
       if (row.empty()) continue;
-      md += "\n### Against `" + parameter.name + "`\n\nSuccessful runs per value (" +
-            runs_per_value(parameter, info.metrics.front()) + ").\n\n" + row;
+      md += "\n### Against `" + parameter.name + "`\n\nSuccessful runs per value (" + counts +
+            ").\n\n" + row;
     }
   } catch (const Error& e) {
     return "\nNote: plots against the swept parameters left out: " + std::string(e.what()) + "\n";
