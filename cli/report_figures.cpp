@@ -25,6 +25,8 @@ namespace ex = fspm::experiments;
 
 // Swept values with more distinct values than this get VTK's own ticks instead of one per value.
 constexpr std::size_t kMaxValueTicks = 12;
+// Numeric values with longer labels than this get VTK's own ticks too.
+constexpr std::size_t kMaxTickLabel = 6;
 
 std::string number_text(double v) {
   std::ostringstream out;
@@ -50,10 +52,16 @@ bool sweep_chart(const ex::SweptParameter& parameter, const std::string& metric,
   graphics::ChartSeries lower{"mean - sd", {}, {}, 0, true, false, false};
   graphics::ChartOptions options;
   const bool numeric = parameter.numeric();
+  // A tick per value when the values are few and short (a grid's 10, 20, 30), VTK's own ticks
+  // for sampled values such as 15.554084...
+  bool value_ticks = !numeric || parameter.values.size() <= kMaxValueTicks;
+  for (const ex::SweptValue& v : parameter.values) {
+    value_ticks = value_ticks && (!numeric || v.text.size() <= kMaxTickLabel);
+  }
   for (std::size_t i = 0; i < parameter.values.size(); ++i) {
     const ex::SweptValue& v = parameter.values[i];
     const double x = numeric ? v.number : static_cast<double>(i);
-    if (!numeric || parameter.values.size() <= kMaxValueTicks) {
+    if (value_ticks) {
       options.x_ticks.push_back(x);
       options.x_tick_labels.push_back(v.text);
     }

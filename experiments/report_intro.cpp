@@ -72,10 +72,17 @@ void what_was_run(std::ostream& md, const Experiment& x) {
       md << (i == 0 ? "" : " × ") << x.sweep[i].name << " " << values_text(x.sweep[i].values);
     }
     if (x.sampling) {
-      md << (x.sweep.empty() ? "" : ", crossed with ") << x.sampling->samples << " samples of";
+      md << (x.sweep.empty() ? "" : ", crossed with ") << x.sampling->samples
+         << (x.sampling->method == SamplingMethod::kLatinHypercube ? " Latin-hypercube" : " random")
+         << " samples of ";
+      std::vector<std::string> ranges;
       for (const SampledParameter& p : x.sampling->parameters) {
-        md << ' ' << p.name << " in [" << p.low << ", " << p.high << "]";
+        std::ostringstream range;
+        range << p.name << (p.integer ? " among the integers " : " in ") << "[" << p.low << ", "
+              << p.high << "]" << (p.log_scale ? " (log-uniform)" : "");
+        ranges.push_back(range.str());
       }
+      md << names_text(ranges);
     }
     md << ")";
   }
