@@ -1,5 +1,6 @@
 #include "experiments/report_intro.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -104,7 +105,7 @@ void what_was_run(std::ostream& md, const Experiment& x) {
   md << " Recorded per run: " << names_text(x.metrics) << ".\n\n";
 }
 
-// The values of `set` (grow model) that the experiment uses, in words.
+// The tree types and the values of `set` (grow model) that the experiment uses, in words.
 void set_meanings(std::ostream& md, const Experiment& x) {
   if (x.model_kind != "grow") return;
   std::vector<ParameterValue> sets;
@@ -112,6 +113,13 @@ void set_meanings(std::ostream& md, const Experiment& x) {
     if (a.name == "set") sets = a.values;
   }
   if (const auto it = x.fixed.find("set"); it != x.fixed.end()) sets = {it->second};
+  const bool presets = std::any_of(x.sweep.begin(), x.sweep.end(),
+                                   [](const SweepAxis& a) { return a.name == "preset"; });
+  if (presets) {
+    md << "**The tree types** (preset): Pirk's types A, B and C (2013, 4.5.4), parameter sets of "
+          "the growth model that differ mainly in phototropism, gravitropism and apical control "
+          "(docs/environment.md).\n\n";
+  }
   if (sets.empty()) return;
   md << "**The sets.**";
   for (const ParameterValue& v : sets) {
@@ -137,7 +145,7 @@ void comparison_meanings(std::ostream& md, const Experiment& x) {
     }
     if (!c.within.empty()) md << ", both with the same " << names_text(c.within);
     if (!c.where.empty()) md << ", among the runs with " << filter_text(c.where);
-    if (c.pairs > 0) md << " (" << c.pairs << " pairs per group)";
+    if (c.pairs > 0) md << " (up to " << c.pairs << " pairs per group)";
     md << ".";
   }
   md << "\n\n";
