@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "cli/commands.hpp"
+#include "cli/full_command_list.hpp"
 #include "cli/output.hpp"
 #include "cli/report_figures.hpp"
 #include "cli/run_file_writers.hpp"
@@ -374,7 +375,7 @@ void merge_command(const MergeOptions& o) {
 
 void add_experiment_commands(CLI::App& app) {
   auto run = std::make_shared<RunOptions>();
-  CLI::App* r = app.add_subcommand("run", "Run a parameter sweep described by an experiment file");
+  CLI::App* r = app.add_subcommand(kRunCommand.name, kRunCommand.description);
   r->add_option("EXPERIMENT", run->experiment, "Experiment file (.toml, see docs/experiments.md)")
       ->required();
   r->add_option("-j,--jobs", run->jobs, "Worker threads (default: one per hardware thread)");
@@ -398,8 +399,7 @@ void add_experiment_commands(CLI::App& app) {
   r->callback([run] { run_command(*run); });
 
   auto compare = std::make_shared<CompareOptions>();
-  CLI::App* cmp = app.add_subcommand(
-      "compare", "Compute an experiment's [[comparison]] distances and t-tests over its results");
+  CLI::App* cmp = app.add_subcommand(kCompareCommand.name, kCompareCommand.description);
   cmp->add_option("DIR", compare->dir, "Output directory of fspm run (or of results merge)")
       ->required();
   cmp->add_option("-j,--jobs", compare->jobs, "Threads (default: one per hardware thread)");
@@ -408,9 +408,7 @@ void add_experiment_commands(CLI::App& app) {
   cmp->callback([compare] { compare_command(*compare); });
 
   auto report = std::make_shared<ReportOptions>();
-  CLI::App* rep = app.add_subcommand(
-      "report",
-      "Write DIR/report.md: what was run, tables, plots and renders of a sweep's results");
+  CLI::App* rep = app.add_subcommand(kReportCommand.name, kReportCommand.description);
   rep->add_option("DIR", report->dir, "Output directory of fspm run")->required();
   rep->add_option("-o,--output", report->output, "Report path (default DIR/report.md)");
   rep->add_flag("--no-figures", report->no_figures, "Tables only (figures need an X display)");
@@ -419,7 +417,7 @@ void add_experiment_commands(CLI::App& app) {
                 "tables, figures and notes are in it");
   rep->callback([report] { report_command(*report); });
 
-  CLI::App* results = app.add_subcommand("results", "Export, summarize and merge sweep results");
+  CLI::App* results = app.add_subcommand(kResultsCommand.name, kResultsCommand.description);
   results->require_subcommand(1);
 
   auto exp = std::make_shared<ExportOptions>();

@@ -16,29 +16,12 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/full_command_list.hpp"
 #include "cli/output.hpp"
 #include "fspm/error.hpp"
 
 namespace fspm::cli {
 namespace {
-
-struct ForwardedCommand {
-  const char* name;
-  const char* description;
-};
-
-// The same names and descriptions as fspm-full's (tested: both --help list the same commands).
-constexpr std::array<ForwardedCommand, 7> kForwarded = {{
-    {"run", "Run a parameter sweep described by an experiment file"},
-    {"compare", "Compute an experiment's [[comparison]] distances and t-tests over its results"},
-    {"report", "Write DIR/report.md: tables of a sweep's results"},
-    {"results", "Export, summarize and merge sweep results"},
-    {"mesh", "Mesh a tree: generalized cylinders along its chains, leaves as quads"},
-    {"render", "Offscreen figure of a tree or a scene of trees with VTK"},
-    {"view",
-     "Real-time viewer: drag to orbit, right-drag to pan, wheel to zoom, [ ] growth steps, "
-     "S shadows, R reset, Esc quit"},
-}};
 
 std::filesystem::path full_executable() {
   std::array<char, PATH_MAX> self{};
@@ -72,7 +55,7 @@ std::filesystem::path full_executable() {
 void add_full_commands(CLI::App& app) {
   // Listed for --help only: hand_over_full_commands() has replaced the process before parsing
   // when the command line names one of them.
-  for (const ForwardedCommand& c : kForwarded) app.add_subcommand(c.name, c.description);
+  for (const FullCommand& c : kFullCommands) app.add_subcommand(c.name, c.description);
 }
 
 void hand_over_full_commands(int argc, char** argv) {
@@ -81,7 +64,7 @@ void hand_over_full_commands(int argc, char** argv) {
   for (int k = 1; k < argc; ++k) {
     const std::string_view arg = argv[k];
     if (arg.starts_with('-')) continue;
-    for (const ForwardedCommand& c : kForwarded) {
+    for (const FullCommand& c : kFullCommands) {
       if (arg == c.name) hand_over(argc, argv);
     }
     return;

@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/full_command_list.hpp"
 #include "cli/obstacle_crop.hpp"
 #include "cli/obstacle_mesh.hpp"
 #include "cli/output.hpp"
@@ -494,8 +495,7 @@ void add_graphics_commands(CLI::App& app) {
   const std::string formats = "tree, treeb, nwk (default: from the extension)";
 
   auto mesh = std::make_shared<MeshCommand>();
-  CLI::App* m = app.add_subcommand(
-      "mesh", "Mesh a tree: generalized cylinders along its chains, leaves as quads");
+  CLI::App* m = app.add_subcommand(kMeshCommand.name, kMeshCommand.description);
   m->add_option(
        "TREE", mesh->tree,
        "Tree file (.tree, .treeb, .nwk, .mtg), compressed plant (.ctree or plant .toml, meshed "
@@ -529,7 +529,7 @@ void add_graphics_commands(CLI::App& app) {
 
   auto render = std::make_shared<RenderCommand>();
   CLI::App* r =
-      app.add_subcommand("render", "Offscreen figure of a tree or a scene of trees with VTK");
+      app.add_subcommand(kRenderCommand.name, kRenderCommand.description);
   r->add_option("TREE", render->tree,
                 "Tree file (.tree, .treeb, .nwk, .mtg), compressed plant (.ctree, plant .toml) or "
                 "scene (.json)")
@@ -557,10 +557,7 @@ void add_graphics_commands(CLI::App& app) {
   r->callback([render] { run_render(*render); });
 
   auto view = std::make_shared<ViewCommand>();
-  CLI::App* v = app.add_subcommand(
-      "view",
-      "Real-time viewer: drag to orbit, right-drag to pan, wheel to zoom, [ ] growth steps, "
-      "S shadows, R reset, Esc quit");
+  CLI::App* v = app.add_subcommand(kViewCommand.name, kViewCommand.description);
   v->add_option(
        "FILE", view->trees,
        "Tree files (.tree, .treeb, .nwk, .mtg), compressed plants (.ctree, plant .toml) or "

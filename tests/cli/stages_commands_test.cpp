@@ -1,0 +1,53 @@
+// fspm stages, run as a user would.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "fspm/tree_file.hpp"
+#include "tests/cli/run_command.hpp"
+
+namespace fspm {
+namespace {
+
+using testing::run_fspm;
+using testing::scratch_dir;
+
+const std::string kTree = std::string(FSPM_SOURCE_DIR) + "/examples/trees/open_a12.treeb";
+
+TEST(StagesCli, TheLastStageIsTheGivenTreeAndStagesGrow) {
+  const auto dir = scratch_dir("stages");
+  auto r = run_fspm("stages " + kTree + " --at 1 -o " + (dir / "last.tree").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const TreeGraph given = read_tree_file(kTree);
+  const TreeGraph last = read_tree_file((dir / "last.tree").string());
+  ASSERT_EQ(last.size(), given.size());
+  for (NodeId i = 0; i < given.size(); ++i) {
+    ASSERT_LT((last.end(i) - given.end(i)).norm(), 1e-9) << i;
+    ASSERT_NEAR(last.radius(i), given.radius(i), 1e-9) << i;
+  }
+  r = run_fspm("stages " + kTree + " --steps 5 -o " + (dir / "seq").string() + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["stages"], 5);
+  EXPECT_GT(j["chains"].get<int>(), 1);
+  std::size_t previous = 0;
+  for (int k = 1; k <= 5; ++k) {
+    const auto path = dir / "seq" / ("stage_00" + std::to_string(k) + ".treeb");
+    const std::size_t n = read_tree_file(path.string()).size();
+    EXPECT_GE(n, previous) << path;
+    previous = n;
+  }
+  EXPECT_EQ(previous, given.size());
+}
+
+TEST(StagesCli, OneOfAtAndStepsIsRequired) {
+  const auto dir = scratch_dir("stages_bad");
+  const auto r = run_fspm("stages " + kTree + " --at 0.5 --steps 3 -o " + (dir / "x").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("either --at"), std::string::npos) << r.err;
+  EXPECT_EQ(run_fspm("stages " + kTree + " --at 1.5 -o " + (dir / "y.tree").string()).exit_code,
+            1);
+}
+
+}  // namespace
+}  // namespace fspm
