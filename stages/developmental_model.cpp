@@ -71,6 +71,25 @@ std::size_t DevelopmentalModel::lateral_chain_count() const {
   return chain_rate_.empty() ? 0 : chain_rate_.size() - 1;
 }
 
+// The child that continues p's axis: Pirk's least deviation from p, or the thickest child (the
+// least deviating among those within the tolerance of the thickest).
+NodeId DevelopmentalModel::continuation(NodeId p, const std::vector<NodeId>& edges) const {
+  const Eigen::Vector3d hp = heading(tree_, p);
+  double thickest = 0.0;
+  for (const NodeId c : edges) thickest = std::max(thickest, tree_.radius(c));
+  NodeId best = kNoNode;
+  double least = std::numeric_limits<double>::infinity();
+  for (const NodeId c : edges) {
+    if (params_.continuation == Continuation::kThickest &&
+        tree_.radius(c) < (1.0 - params_.same_level_tolerance) * thickest) {
+      continue;
+    }
+    const double a = angle_between(hp, heading(tree_, c));
+    if (a < least) least = a, best = c;
+  }
+  return best;
+}
+
 // Pirk 5.2.2: Gravelius levels and chains. Node ids put parents first, so one pass in id order
 // sees every parent before its children.
 void DevelopmentalModel::assign_levels_and_chains() {
@@ -104,16 +123,14 @@ void DevelopmentalModel::assign_levels_and_chains() {
     }
     if (edges.empty()) continue;
     const Eigen::Vector3d hp = heading(tree_, p);
-    NodeId apical = edges.front();
-    double least = angle_between(hp, heading(tree_, apical));
+    const NodeId apical = continuation(p, edges);
     bool decurrent = true;  // all children alike within the tolerance
     for (const NodeId c : edges) {
-      const double a = angle_between(hp, heading(tree_, c));
       decurrent = decurrent &&
-                  close(a, angle_between(hp, heading(tree_, edges.front())),
+                  close(angle_between(hp, heading(tree_, c)),
+                        angle_between(hp, heading(tree_, edges.front())),
                         params_.same_level_tolerance) &&
                   close(tree_.radius(c), tree_.radius(edges.front()), params_.same_level_tolerance);
-      if (a < least) least = a, apical = c;
     }
     for (const NodeId c : edges) {
       if (c == apical) {
@@ -204,6 +221,7 @@ void DevelopmentalModel::compute_radius_coefficients() {
   const std::size_t n = tree_.size();
   const double u = params_.pipe_exponent;
   radius_coefficient_.assign(n, 0.0);
+  edge_children_.assign(n, 0);
   double tip_sum = 0.0;
   std::size_t tips = 0;
   for (NodeId i = 0; i < n; ++i) {
@@ -216,6 +234,7 @@ void DevelopmentalModel::compute_radius_coefficients() {
       sum += std::pow(tree_.radius(c), u);
     }
     const double rp = std::pow(tree_.radius(i), u);
+    for (const NodeId c : tree_.children(i)) edge_children_[i] += is_edge(tree_, c) ? 1u : 0u;
     if (has_edge_child) {
       radius_coefficient_[i] = rp > 0.0 ? sum / rp : 0.0;
     } else {
@@ -224,6 +243,14 @@ void DevelopmentalModel::compute_radius_coefficients() {
     }
   }
   tip_radius_ = tips > 0 ? tip_sum / static_cast<double>(tips) : 0.0;
+  tip_radius_pow_ = std::pow(tip_radius_, u);
+  radius_pow_.assign(n, 0.0);
+  heading_.assign(n, Eigen::Vector3d::UnitZ());
+  for (NodeId i = 0; i < n; ++i) {
+    radius_pow_[i] = std::pow(tree_.radius(i), u);
+    heading_[i] = heading(tree_, i);
+  }
+  turned_.assign(n, 0);
 }
 
 TreeGraph DevelopmentalModel::stage(double t) const {
@@ -234,64 +261,94 @@ TreeGraph DevelopmentalModel::stage(double t) const {
 
 void DevelopmentalModel::stage(double t, TreeGraph& out) const {
   t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0);
-  const std::size_t n = tree_.size();
   out.clear_keep_capacity();
-  out.reserve(n);
-  // Forward: grown length, rotation (the bends of the chain bases above), position.
-  std::vector<NodeId> id_of(n, kNoNode);
-  std::vector<Eigen::Quaterniond> turn(n, Eigen::Quaterniond::Identity());
-  std::vector<double> grown(n, 0.0);
+  out.reserve(tree_.size());
+  place_nodes(t, out);
+  set_radii(out);
+}
+
+// Forward, parents first: grown length, rotation (the bends of the chain bases above), position.
+void DevelopmentalModel::place_nodes(double t, TreeGraph& out) const {
+  const std::size_t n = tree_.size();
+  id_of_.assign(n, kNoNode);
+  turn_.resize(n);
+  grown_.resize(n);
   for (NodeId i = 0; i < n; ++i) {
     const NodeId p = i == 0 ? kNoNode : tree_.parent(i);
-    if (p != kNoNode && (id_of[p] == kNoNode || grown[p] < tree_.length(p))) continue;
+    if (p != kNoNode && (id_of_[p] == kNoNode || grown_[p] < tree_.length(p))) continue;
+    const bool edge = is_edge(tree_, i);
+    double length = tree_.length(i);
+    if (edge) {
+      const double reach = chain_rate_[chain_[i]] * (t - chain_start_[chain_[i]]) - offset_[i];
+      if (t < 1.0 && !(reach > 0.0)) continue;  // not started yet
+      // At t = 1 every edge is complete (rounding must not leave one a hair short).
+      if (t < 1.0) length = std::min(reach, length);
+    }
+    grown_[i] = length;
+    bool turned = p != kNoNode && turned_[p];
+    Eigen::Quaterniond q = turned ? turn_[p] : Eigen::Quaterniond::Identity();
+    if (edge && chain_base_[i] && bend_angle_[i] != 0.0 && t < bend_end_[i]) {
+      // Eq. 5.5: the part of the turn still to come, about the base.
+      const double span = std::max(bend_end_[i] - start_time_[i], 1e-12);
+      const double done = std::clamp((t - start_time_[i]) / span, 0.0, 1.0);
+      q = q * Eigen::AngleAxisd(-(1.0 - done) * bend_angle_[i], bend_axis_[i]);
+      turned = true;
+    }
+    turn_[i] = q;
+    turned_[i] = turned;
     NodeData d;
     d.kind = tree_.kind(i);
     d.order = static_cast<std::uint16_t>(level_[i] - 1);
     d.birth_time = start_time_[i];
     d.physiological_age = tree_.physiological_age(i);
     d.radius = tree_.radius(i);
-    if (p != kNoNode) turn[i] = turn[p];
-    if (is_edge(tree_, i)) {
-      const double reach = chain_rate_[chain_[i]] * (t - chain_start_[chain_[i]]) - offset_[i];
-      // At t = 1 every edge is complete (rounding must not leave one a hair short).
-      grown[i] = t >= 1.0 ? tree_.length(i) : std::clamp(reach, 0.0, tree_.length(i));
-      if (t < 1.0 && !(reach > 0.0)) continue;  // not started yet
-      if (chain_base_[i] && bend_angle_[i] != 0.0) {
-        // Eq. 5.5: the part of the turn still to come, about the base.
-        const double span = std::max(bend_end_[i] - start_time_[i], 1e-12);
-        const double done = std::clamp((t - start_time_[i]) / span, 0.0, 1.0);
-        turn[i] = turn[i] * Eigen::AngleAxisd(-(1.0 - done) * bend_angle_[i], bend_axis_[i]);
-      }
-      d.direction = (turn[i] * heading(tree_, i)).normalized();
-      d.length = grown[i];
+    d.length = length;
+    const Eigen::Vector3d offset = tree_.start(i) - (p == kNoNode ? tree_.start(0) : tree_.end(p));
+    const Eigen::Vector3d base = p == kNoNode ? tree_.start(0) : out.end(id_of_[p]);
+    if (edge) {
+      d.direction = turned ? Eigen::Vector3d(q * heading_[i]) : heading_[i];
+      d.start = base + (turned ? Eigen::Vector3d(q * offset) : offset);
+      d.end = d.start + length * d.direction;
     } else {
-      grown[i] = tree_.length(i);
-      d.direction = turn[i] * tree_.direction(i);
-      d.length = tree_.length(i);
+      d.direction = turned ? Eigen::Vector3d(q * tree_.direction(i)) : tree_.direction(i);
+      d.start = base + (turned ? Eigen::Vector3d(q * offset) : offset);
+      const Eigen::Vector3d span = tree_.end(i) - tree_.start(i);
+      d.end = d.start + (turned ? Eigen::Vector3d(q * span) : span);
     }
-    d.start = p == kNoNode ? tree_.start(0) : out.end(id_of[p]) + turn[i] * (tree_.start(i) - tree_.end(p));
-    d.end = is_edge(tree_, i) ? Eigen::Vector3d(d.start + d.length * d.direction)
-                              : Eigen::Vector3d(d.start + turn[i] * (tree_.end(i) - tree_.start(i)));
-    id_of[i] = out.add_node_unchecked(p == kNoNode ? kNoNode : id_of[p], d);
+    id_of_[i] = out.add_node_unchecked(p == kNoNode ? kNoNode : id_of_[p], d);
   }
-  // Backward: radii from the tips (eq. 5.8).
-  const double u = params_.pipe_exponent;
-  std::vector<double> sum(out.size(), 0.0);
-  std::vector<std::uint8_t> has_child(out.size(), 0);
-  for (NodeId i = static_cast<NodeId>(n); i-- > 0;) {
-    const NodeId k = id_of[i];
+}
+
+// Backward, from the tips: radii by eq. 5.8 (r^u carried, so one root per inner edge). An edge
+// whose subtree is complete has its given radius, which eq. 5.8 gives back by construction of b.
+void DevelopmentalModel::set_radii(TreeGraph& out) const {
+  const double inv_u = 1.0 / params_.pipe_exponent;
+  sum_.assign(out.size(), 0.0);
+  has_child_.assign(out.size(), 0);
+  complete_children_.assign(out.size(), 0);
+  for (NodeId i = static_cast<NodeId>(tree_.size()); i-- > 0;) {
+    const NodeId k = id_of_[i];
     if (k == kNoNode || !is_edge(tree_, i)) continue;
-    double r = tree_.radius(i);
-    if (has_child[k]) {
-      r = radius_coefficient_[i] > 0.0 ? std::pow(sum[k] / radius_coefficient_[i], 1.0 / u) : r;
+    const bool complete =
+        grown_[i] >= tree_.length(i) && complete_children_[k] == edge_children_[i];
+    double r = tree_.radius(i), r_u = radius_pow_[i];
+    if (complete) {
+      // the given radius
+    } else if (has_child_[k]) {
+      if (radius_coefficient_[i] > 0.0) {
+        r_u = sum_[k] / radius_coefficient_[i];
+        r = std::pow(r_u, inv_u);
+      }
     } else if (radius_coefficient_[i] > 0.0) {
       r = tip_radius_;  // a tip now that is not one in the given tree
+      r_u = tip_radius_pow_;
     }
     out.set_radius(k, r);
     if (i > 0) {
-      const NodeId pk = id_of[tree_.parent(i)];
-      sum[pk] += std::pow(r, u);
-      has_child[pk] = 1;
+      const NodeId pk = id_of_[tree_.parent(i)];
+      sum_[pk] += r_u;
+      has_child_[pk] = 1;
+      complete_children_[pk] += complete ? 1u : 0u;
     }
   }
 }

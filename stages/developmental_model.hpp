@@ -22,6 +22,7 @@
 // Not modelled: mesh input (5.2.1), the pipe-model distributions and the structures added below
 // the crown and in overlap regions (5.3.4-5.3.6), growth-based editing (5.4.1).
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <vector>
 
@@ -29,7 +30,17 @@
 
 namespace fspm::stages {
 
+// Which child continues its parent's axis (and keeps its Gravelius level).
+enum class Continuation : std::uint8_t {
+  kLeastDeviation,  // Pirk 5.2.2: the child deviating least from the parent's direction
+  kThickest,        // the thickest child (the least deviating of those within the tolerance)
+};
+
 struct StagesParams {
+  // The thickest child by default: in grown trees a thin lateral is often straighter than the
+  // trunk after a bend, and Pirk's rule then follows it (his input trees are modelled, with
+  // straight trunks).
+  Continuation continuation = Continuation::kThickest;
   // Pirk 5.3.2: a branch stops bending once its subtree carries this many growing tips.
   int rigid_tip_count = 5;
   double pipe_exponent = 2.5;           // u of eq. 5.7-5.8 (Murray's 2.49)
@@ -50,7 +61,8 @@ class DevelopmentalModel {
 
   // The stage at time t (clamped to [0, 1]) into `out`, reusing its memory: the edges grown by
   // then (a growing edge at its partial length), with order = Gravelius level - 1 and
-  // birth_time = the time the edge starts growing.
+  // birth_time = the time the edge starts growing. Reuses buffers of the model too, so one model
+  // computes one stage at a time (use one model per thread).
   void stage(double t, TreeGraph& out) const;
   TreeGraph stage(double t) const;
 
@@ -67,9 +79,12 @@ class DevelopmentalModel {
 
  private:
   void assign_levels_and_chains();
+  NodeId continuation(NodeId p, const std::vector<NodeId>& edges) const;
   void compute_growth_times();
   void compute_bending();
   void compute_radius_coefficients();
+  void place_nodes(double t, TreeGraph& out) const;
+  void set_radii(TreeGraph& out) const;
 
   const TreeGraph tree_;
   StagesParams params_;
@@ -85,6 +100,17 @@ class DevelopmentalModel {
   std::vector<double> bend_angle_, bend_end_;
   std::vector<double> radius_coefficient_;  // b_p of eq. 5.7 (0 for final tips)
   double tip_radius_ = 0.0;                 // r_avg
+  double tip_radius_pow_ = 0.0;             // r_avg^u
+  std::vector<double> radius_pow_;          // r^u of the given tree
+  std::vector<std::uint32_t> edge_children_;  // internode children in the given tree
+  std::vector<Eigen::Vector3d> heading_;    // unit directions of the given tree
+  // Buffers of stage(), kept between calls (a slider computes stage after stage).
+  mutable std::vector<NodeId> id_of_;
+  mutable std::vector<Eigen::Quaterniond> turn_;
+  mutable std::vector<std::uint8_t> turned_;
+  mutable std::vector<double> grown_, sum_;
+  mutable std::vector<std::uint8_t> has_child_;
+  mutable std::vector<std::uint32_t> complete_children_;
 };
 
 }  // namespace fspm::stages

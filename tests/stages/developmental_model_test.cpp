@@ -155,8 +155,26 @@ TEST(DevelopmentalModel, ChildrenAlikeWithinFivePercentKeepTheLevel) {
   EXPECT_EQ(m.level()[1], 1);
   EXPECT_EQ(m.level()[2], 1);
   TreeGraph u = t;
-  u.set_radius(2, 0.2);  // one child twice as thick: a lateral of level 2
-  EXPECT_EQ(DevelopmentalModel(u).level()[2], 2);
+  u.set_radius(1, 0.05);  // one child half as thick: a lateral of level 2
+  EXPECT_EQ(DevelopmentalModel(u).level()[1], 2);
+  EXPECT_EQ(DevelopmentalModel(u).level()[2], 1);
+}
+
+// The trunk after a bend: the straighter child is a thin lateral. Pirk's rule follows the
+// lateral, the default follows the thick trunk.
+TEST(DevelopmentalModel, TheThickChildContinuesTheAxisUnlessPirksRuleIsAsked) {
+  TreeGraph t;
+  const NodeId root = edge(t, kNoNode, Eigen::Vector3d::UnitZ(), 1.0, 0.2);
+  edge(t, root, at_angle(35), 1.0, 0.15);  // the trunk, bent
+  edge(t, root, at_angle(-10), 1.0, 0.03);  // a thin, straighter lateral
+  const DevelopmentalModel thickest(t);
+  EXPECT_EQ(thickest.chain()[1], 0u);
+  EXPECT_EQ(thickest.level()[2], 2);
+  StagesParams pirk;
+  pirk.continuation = Continuation::kLeastDeviation;
+  const DevelopmentalModel least(t, pirk);
+  EXPECT_EQ(least.chain()[2], 0u);
+  EXPECT_EQ(least.level()[1], 2);
 }
 
 TEST(DevelopmentalModel, OrgansAppearWithTheirCompleteEdge) {
