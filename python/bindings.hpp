@@ -129,5 +129,6 @@ void bind_environment(py::module_& m);
 void bind_statistics(py::module_& m);
 void bind_graphics(py::module_& m);
 void bind_calibration(py::module_& m);
+void bind_stages(py::module_& m);
 
 }  // namespace fspm::python

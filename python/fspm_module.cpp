@@ -20,6 +20,7 @@
 #include "greenlab/reconstruction.hpp"
 #include "greenlab/simulation.hpp"
 #include "lsystem/derivation.hpp"
+#include "lsystem/substructure_derivation.hpp"
 #include "lsystem/lsystem.hpp"
 #include "lsystem/parser.hpp"
 #include "lsystem/turtle.hpp"
@@ -552,21 +553,36 @@ PYBIND11_MODULE(_fspm, m) {
   m.def(
       "lsystem_derive",
       [](const std::string& path, std::optional<int> steps, std::optional<std::uint64_t> seed,
-         const std::map<std::string, std::string>& defines) {
+         const std::map<std::string, std::string>& defines, bool compressed) {
         py::dict d;
         std::vector<std::uint64_t> per_symbol;
         int done = 0;
-        std::size_t modules = 0;
+        std::uint64_t modules = 0;
+        std::size_t graph_nodes = 0, graph_bytes = 0;
+        std::uint64_t explicit_bytes = 0;
         fspm::lsystem::LSystem sys;
         {
           py::gil_scoped_release release;
           sys = load_lsystem(path, defines);
-          fspm::lsystem::Derivation der(sys, derive_options(steps, seed));
-          der.run();
-          done = der.steps_done();
-          modules = der.string().size();
-          per_symbol.assign(sys.symbols.size(), 0);
-          for (auto id : der.string().symbols()) ++per_symbol[id];
+          if (compressed) {
+            // Shared substructures (lsystem/substructure_derivation.hpp): counts of strings too
+            // large to hold; ValueError when the L-system cannot be factorized.
+            const auto g = fspm::lsystem::derive_substructures(sys, derive_options(steps, seed));
+            const auto c = fspm::lsystem::count_modules(g, sys.symbols.size());
+            done = g.steps;
+            modules = c.modules;
+            per_symbol = c.per_symbol;
+            graph_nodes = g.nodes.size();
+            graph_bytes = g.memory_bytes();
+            explicit_bytes = c.explicit_bytes;
+          } else {
+            fspm::lsystem::Derivation der(sys, derive_options(steps, seed));
+            der.run();
+            done = der.steps_done();
+            modules = der.string().size();
+            per_symbol.assign(sys.symbols.size(), 0);
+            for (auto id : der.string().symbols()) ++per_symbol[id];
+          }
         }
         py::dict symbols;
         for (std::size_t i = 0; i < per_symbol.size(); ++i) {
@@ -578,11 +594,18 @@ PYBIND11_MODULE(_fspm, m) {
         d["steps"] = done;
         d["modules"] = modules;
         d["symbols"] = symbols;
+        if (compressed) {
+          d["graph_nodes"] = graph_nodes;
+          d["graph_bytes"] = graph_bytes;
+          d["explicit_bytes"] = explicit_bytes;
+        }
         return d;
       },
       py::arg("path"), py::arg("steps") = py::none(), py::arg("seed") = py::none(),
-      py::arg("defines") = std::map<std::string, std::string>{},
-      "Derive an L-system file: steps, modules and the count of each module name");
+      py::arg("defines") = std::map<std::string, std::string>{}, py::arg("compressed") = false,
+      "Derive an L-system file: steps, modules and the count of each module name; "
+      "compressed=True derives into shared substructures (context-free L-systems only, "
+      "docs/lsystem-language.md) and adds graph_nodes, graph_bytes and explicit_bytes");
 
   m.def(
       "lsystem_interpret",
@@ -604,4 +627,5 @@ PYBIND11_MODULE(_fspm, m) {
   fspm::python::bind_statistics(m);
   fspm::python::bind_environment(m);
   fspm::python::bind_graphics(m);
+  fspm::python::bind_stages(m);
 }

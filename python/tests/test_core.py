@@ -81,6 +81,36 @@ def test_lsystem_derive_matches_closed_form():
     assert tree.summary()["internodes"] == 5 ** 2
 
 
+def test_lsystem_derive_compressed_counts_what_cannot_be_held():
+    # 5^20 F modules at n = 20: only the substructure graph holds them.
+    r = fspm.lsystem_derive(str(ROOT / "examples/lsystems/abop_1_24a.l"), steps=20,
+                            compressed=True)
+    assert r["symbols"]["F"] == 5 ** 20
+    assert r["symbols"]["+"] == (5 ** 20 - 1) // 4
+    assert r["graph_nodes"] <= 25
+    small = fspm.lsystem_derive(str(ROOT / "examples/lsystems/monopodial_tree.l"), compressed=True)
+    plain = fspm.lsystem_derive(str(ROOT / "examples/lsystems/monopodial_tree.l"))
+    assert small["symbols"] == plain["symbols"]
+    with pytest.raises(ValueError, match="context-sensitive"):
+        fspm.lsystem_derive(str(ROOT / "examples/lsystems/context_sensitive_plant.l"),
+                            compressed=True)
+
+
+def test_developmental_stages_grow_into_the_given_tree():
+    tree = fspm.read_tree(str(ROOT / "examples/trees/open_a12.treeb"))
+    model = fspm.developmental_model(tree)
+    assert model.chain_count > 1 and model.levels[0] == 1
+    totals = [float(model.stage(t).lengths.sum()) for t in (0.0, 0.3, 0.6, 0.9, 1.0)]
+    assert totals[0] == 0.0
+    assert all(a < b for a, b in zip(totals, totals[1:]))
+    last = model.stage(1.0)
+    assert len(last) == len(tree)
+    assert np.allclose(last.radii, tree.radii) and np.allclose(last.ends, tree.ends)
+    assert abs(fspm.seasonal_time(1.0, 3) - 1.0) < 1e-12
+    with pytest.raises(ValueError):
+        fspm.developmental_model(fspm.Tree())
+
+
 def test_read_results_of_a_sweep(tmp_path):
     out = tmp_path / "sweep"
     summary = fspm.run_experiment(str(ROOT / "examples/experiments/branching.toml"), str(out),

@@ -1,0 +1,59 @@
+// fspm.developmental_model: developmental stages of a static tree (Pirk chapter 5).
+#include <pybind11/stl.h>
+
+#include "python/bindings.hpp"
+#include "stages/developmental_model.hpp"
+
+namespace fspm::python {
+
+void bind_stages(py::module_& m) {
+  using stages::DevelopmentalModel;
+  py::class_<DevelopmentalModel>(
+      m, "DevelopmentalModel",
+      "Developmental stages of a static tree (Pirk 2013, ch. 5; docs/stages.md): any stage t in "
+      "[0, 1] between a seedling (t = 0, empty) and the given tree (t = 1), computed directly")
+      .def(
+          "stage",
+          [](const DevelopmentalModel& model, double t) {
+            TreeGraph out;
+            model.stage(t, out);
+            return out;
+          },
+          py::arg("t"),
+          "The stage at time t in [0, 1] (clamped) as a Tree: the edges grown by then, a growing "
+          "edge at its partial length (m); order is the Gravelius level - 1 and birth_time the "
+          "time in [0, 1] at which the edge starts growing")
+      .def_property_readonly("chain_count", &DevelopmentalModel::chain_count,
+                             "Number of chains (runs of edges of one Gravelius level), >= 1")
+      .def_property_readonly(
+          "levels",
+          [](const DevelopmentalModel& model) {
+            const auto& l = model.level();
+            return std::vector<int>(l.begin(), l.end());
+          },
+          "Gravelius level per node of the given tree (1 on the main axis), a list of int")
+      .def_property_readonly(
+          "start_times",
+          [](const DevelopmentalModel& model) { return model.start_time(); },
+          "Time in [0, 1] at which each node of the given tree starts growing, a list of float");
+
+  m.def(
+      "developmental_model",
+      [](const TreeGraph& tree, bool thickest_continues) {
+        stages::StagesParams p;
+        p.continuation = thickest_continues ? stages::Continuation::kThickest
+                                            : stages::Continuation::kLeastDeviation;
+        return DevelopmentalModel(tree, p);
+      },
+      py::arg("tree"), py::arg("thickest_continues") = true,
+      "Analyse a Tree into a DevelopmentalModel (chains, growth rates, angles, radii). "
+      "thickest_continues=False uses Pirk's rule (the child deviating least continues the axis); "
+      "raises ValueError for an empty tree");
+
+  m.def("seasonal_time", &stages::seasonal_time, py::arg("t"), py::arg("years"),
+        py::arg("c") = 1.2, py::arg("s") = 0.0,
+        "Pirk eq. 5.11: t in [0, 1] remapped over `years` (>= 1) seasons; c in [1, 1.4] is the "
+        "dormancy strength (1: growth stops once a year), s the shift (0 growth, 0.5 angles)");
+}
+
+}  // namespace fspm::python
