@@ -154,6 +154,7 @@ void DevelopmentalModel::compute_growth_times() {
   const std::size_t n = tree_.size();
   std::vector<double> chain_length = chain_rate_;
   chain_start_.assign(chain_rate_.size(), 0.0);
+  chain_last_.assign(chain_rate_.size(), kNoNode);
   start_time_.assign(n, 0.0);
   chain_rate_[0] = chain_length[0];
   for (NodeId i = 0; i < n; ++i) {
@@ -162,6 +163,7 @@ void DevelopmentalModel::compute_growth_times() {
       continue;
     }
     const std::uint32_t c = chain_[i];
+    chain_last_[c] = i;  // ids increase along a chain
     if (chain_base_[i]) {
       const NodeId p = tree_.parent(i);
       // The parent chain reaches the end of edge p (where the branch stands).
@@ -264,7 +266,35 @@ void DevelopmentalModel::stage(double t, TreeGraph& out) const {
   out.clear_keep_capacity();
   out.reserve(tree_.size());
   place_nodes(t, out);
+  if (t < 1.0) add_tip_leaves(out);
   set_radii(out);
+}
+
+// Pirk 5.3.7: a tip of this stage that is not a tip of the given tree carries, for now, the
+// organs of its chain's last edge (the leaves of the chain's tip in the given tree), placed as
+// they sit around that edge's end and turned with the tip.
+void DevelopmentalModel::add_tip_leaves(TreeGraph& out) const {
+  const std::size_t present = out.size();
+  tip_.assign(present, 1);
+  // Anything on an edge (a child edge or its own organs) makes it no tip for this purpose.
+  for (NodeId k = 1; k < present; ++k) tip_[out.parent(k)] = 0;
+  for (NodeId i = 0; i < tree_.size(); ++i) {
+    const NodeId k = id_of_[i];
+    if (k == kNoNode || k >= present || !is_edge(tree_, i) || !tip_[k]) continue;
+    const NodeId last = chain_last_[chain_[i]];
+    if (last == i) continue;  // the chain's own tip: its organs come when it is complete
+    for (const NodeId organ : tree_.children(last)) {
+      if (is_edge(tree_, organ)) continue;
+      const Eigen::Quaterniond& q = turn_[i];
+      NodeData d = tree_.data(organ);
+      d.order = static_cast<std::uint16_t>(level_[i] - 1);
+      d.birth_time = start_time_[i];
+      d.start = out.end(k) + q * (tree_.start(organ) - tree_.end(last));
+      d.end = out.end(k) + q * (tree_.end(organ) - tree_.end(last));
+      d.direction = q * tree_.direction(organ);
+      out.add_node_unchecked(k, d);
+    }
+  }
 }
 
 // Forward, parents first: grown length, rotation (the bends of the chain bases above), position.

@@ -18,7 +18,8 @@
 //     edges (their own at the end); every other edge has r_p = (sum r_i^u / b_p)^(1/u) over the
 //     children present, u = 2.5, with b_p taken from the given tree (eq. 5.7), so t = 1 gives
 //     back the given radii.
-//   - Leaves and other organs appear when the edge that bears them is complete.
+//   - Leaves and other organs appear when the edge that bears them is complete; until then each
+//     tip of a stage carries the organs of its chain's tip in the given tree (5.3.7).
 // Not modelled: mesh input (5.2.1), the pipe-model distributions and the structures added below
 // the crown and in overlap regions (5.3.4-5.3.6), growth-based editing (5.4.1).
 #include <Eigen/Core>
@@ -85,6 +86,7 @@ class DevelopmentalModel {
   void compute_radius_coefficients();
   void place_nodes(double t, TreeGraph& out) const;
   void set_radii(TreeGraph& out) const;
+  void add_tip_leaves(TreeGraph& out) const;
 
   const TreeGraph tree_;
   StagesParams params_;
@@ -94,6 +96,7 @@ class DevelopmentalModel {
   std::vector<double> start_time_;  // when the edge starts growing
   std::vector<std::uint8_t> chain_base_;  // first edge of a lateral chain
   std::vector<double> chain_rate_, chain_start_;
+  std::vector<NodeId> chain_last_;  // last edge of each chain
   // Bending of lateral chain bases (eq. 5.5): axis, final angle minus initial angle, and the
   // time span over which it is made up.
   std::vector<Eigen::Vector3d> bend_axis_;
@@ -109,7 +112,7 @@ class DevelopmentalModel {
   mutable std::vector<Eigen::Quaterniond> turn_;
   mutable std::vector<std::uint8_t> turned_;
   mutable std::vector<double> grown_, sum_;
-  mutable std::vector<std::uint8_t> has_child_;
+  mutable std::vector<std::uint8_t> has_child_, tip_;
   mutable std::vector<std::uint32_t> complete_children_;
 };
 

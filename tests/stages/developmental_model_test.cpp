@@ -193,6 +193,28 @@ TEST(DevelopmentalModel, OrgansAppearWithTheirCompleteEdge) {
   EXPECT_THROW(DevelopmentalModel(TreeGraph{}), ValueError);
 }
 
+// Pirk 5.3.7: until the chain's tip is complete, the growing tip carries the tip's leaves.
+TEST(DevelopmentalModel, GrowingTipsCarryTheLeavesOfTheirChainsTip) {
+  TreeGraph t;
+  NodeId a = edge(t, kNoNode, Eigen::Vector3d::UnitZ(), 1.0, 0.1);
+  a = edge(t, a, Eigen::Vector3d::UnitZ(), 1.0, 0.1);
+  a = edge(t, a, Eigen::Vector3d::UnitZ(), 1.0, 0.1);
+  NodeData leaf;
+  leaf.kind = OrganKind::kLeaf;
+  leaf.start = t.end(a) + Eigen::Vector3d(0.0, 0.0, 0.01);
+  leaf.end = leaf.start + Eigen::Vector3d(0.1, 0.0, 0.0);
+  leaf.radius = 0.05;
+  t.add_node(a, leaf);
+  const DevelopmentalModel m(t);
+  const TreeGraph st = m.stage(0.5);  // edge 0 complete, edge 1 half grown: the tip
+  ASSERT_EQ(st.size(), 3u);
+  EXPECT_EQ(st.kind(2), OrganKind::kLeaf);
+  EXPECT_EQ(st.parent(2), 1u);
+  EXPECT_LT((st.start(2) - (st.end(1) + Eigen::Vector3d(0.0, 0.0, 0.01))).norm(), 1e-12);
+  EXPECT_LT((st.end(2) - st.start(2) - Eigen::Vector3d(0.1, 0.0, 0.0)).norm(), 1e-12);
+  EXPECT_EQ(m.stage(1.0).size(), 4u);  // at the end only the given leaf
+}
+
 // Eq. 5.11: t_new = sin((t n - s) 2 pi) / (2 pi n c) + t; with c = 1 growth stops once a season.
 TEST(DevelopmentalModel, SeasonalRemappingOfEquation511) {
   EXPECT_DOUBLE_EQ(seasonal_time(0.0, 4, 1.0, 0.0), 0.0);
