@@ -53,14 +53,30 @@ void expect_same(const AdaptationResult& a, const AdaptationResult& b) {
   EXPECT_LT(worst, 1e-6);
 }
 
-TEST(PlasticLockStep, OneTreeAloneIsAdaptTree) {
+// Physics does not depend on where the tree and its wall stand: moved together by an offset, the
+// adapted tree is the same tree moved by that offset.
+TEST(PlasticLockStep, ATreeAndItsWallMovedTogetherAdaptTheSame) {
   const GrowthResult& g = grown(10);
+  const Eigen::Vector3d offset(12.0, -7.0, 0.0);
+  const TreeGraph moved = translated(g.tree, offset);
   const TreeAnalysis a = analyze_tree(g.tree);
-  Scene scene;
-  scene.boxes.push_back(Box::wall({1.5, -20}, {1.5, 20}, 0.0, 30.0, 0.2));
-  const auto together = adapt_trees({&g.tree}, {&a}, scene);
-  ASSERT_EQ(together.size(), 1u);
-  expect_same(together[0], adapt_tree(g.tree, a, scene));
+  const TreeAnalysis a_moved = analyze_tree(moved);
+  Scene here, there;
+  here.boxes.push_back(Box::wall({1.5, -20}, {1.5, 20}, 0.0, 30.0, 0.2));
+  there.boxes.push_back(Box::wall({1.5 + offset.x(), -20 + offset.y()},
+                                  {1.5 + offset.x(), 20 + offset.y()}, 0.0, 30.0, 0.2));
+  const auto r = adapt_trees({&g.tree}, {&a}, here);
+  const auto r_moved = adapt_trees({&moved}, {&a_moved}, there);
+  ASSERT_EQ(r.size(), 1u);
+  ASSERT_EQ(r_moved.size(), 1u);
+  ASSERT_GT(r[0].bent_segments, 0u);
+  EXPECT_EQ(r[0].pruned_nodes, r_moved[0].pruned_nodes);
+  ASSERT_EQ(r[0].tree.size(), r_moved[0].tree.size());
+  double worst = 0.0;
+  for (NodeId i = 0; i < r[0].tree.size(); ++i) {
+    worst = std::max(worst, (r_moved[0].tree.end(i) - offset - r[0].tree.end(i)).norm());
+  }
+  EXPECT_LT(worst, 1e-6);
 }
 
 TEST(PlasticLockStep, FarApartTreesOfDifferentAgesAdaptAsAlone) {
