@@ -47,4 +47,11 @@ class ValueError : public Error {
   using Error::Error;
 };
 
+// A request whose estimated memory is above the memory limit (fspm/memory_budget.hpp), raised
+// before anything is allocated.
+class MemoryLimitError : public Error {
+ public:
+  using Error::Error;
+};
+
 }  // namespace fspm

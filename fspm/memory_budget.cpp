@@ -1,0 +1,102 @@
+#include "fspm/memory_budget.hpp"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+#include "fspm/error.hpp"
+
+namespace fspm {
+namespace {
+
+constexpr std::uint64_t kFallbackLimit = std::uint64_t{4} << 30;
+// Largest limit accepted: far above any machine, and exactly representable as a double.
+constexpr double kMaxLimit = 0x1.0p62;
+
+std::atomic<std::uint64_t> g_limit{0};  // 0: the default
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// Multiplier of a unit suffix, or 0 when it is not one.
+double unit_factor(const std::string& unit) {
+  if (unit.empty() || unit == "b") return 1.0;
+  static constexpr const char* kUnits[] = {"k", "m", "g", "t"};
+  for (int i = 0; i < 4; ++i) {
+    const std::string u = kUnits[i];
+    if (unit == u || unit == u + "b" || unit == u + "ib") return std::ldexp(1.0, 10 * (i + 1));
+  }
+  return 0.0;
+}
+
+}  // namespace
+
+std::uint64_t default_memory_limit_bytes() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES);
+  const long page_size = ::sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page_size <= 0) return kFallbackLimit;
+  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page_size) / 2;
+}
+
+std::uint64_t memory_limit_bytes() {
+  const std::uint64_t set = g_limit.load(std::memory_order_relaxed);
+  if (set != 0) return set;
+  static const std::uint64_t kDefault = default_memory_limit_bytes();
+  return kDefault;
+}
+
+void set_memory_limit_bytes(std::uint64_t bytes) {
+  g_limit.store(bytes, std::memory_order_relaxed);
+}
+
+std::string memory_text(double bytes) {
+  if (!(bytes < 0x1.0p80)) return "more than 1 YiB";
+  static constexpr const char* kUnits[] = {"KiB", "MiB", "GiB", "TiB", "PiB", "EiB", "ZiB"};
+  if (bytes < 1024.0) return std::to_string(static_cast<long long>(bytes)) + " bytes";
+  int unit = -1;
+  while (bytes >= 1024.0 && unit < 6) {
+    bytes /= 1024.0;
+    ++unit;
+  }
+  char text[32];
+  // Whole numbers without a decimal ("2 GiB"), others with one ("3.2 GiB").
+  if (std::abs(bytes - std::round(bytes)) < 0.05) {
+    std::snprintf(text, sizeof text, "%.0f %s", std::round(bytes), kUnits[unit]);
+  } else {
+    std::snprintf(text, sizeof text, "%.1f %s", bytes, kUnits[unit]);
+  }
+  return text;
+}
+
+void check_memory(double bytes, std::string_view what, const std::string& file) {
+  const auto limit = static_cast<double>(memory_limit_bytes());
+  if (bytes <= limit) return;  // false for NaN: an overflowed estimate fails too
+  throw MemoryLimitError(std::string(what) + " needs about " + memory_text(bytes) +
+                             ", above the memory limit of " + memory_text(limit) +
+                             " (--memory-limit)",
+                         file);
+}
+
+std::uint64_t parse_memory_size(std::string_view text, std::string_view what) {
+  const auto fail = [&]() -> std::uint64_t {
+    throw ValueError(std::string(what) + ": expected a size such as 512M or 2G, got '" +
+                     std::string(text.substr(0, 40)) + "'");
+  };
+  double number = 0.0;
+  const char* end = text.data() + text.size();
+  const auto [rest, ec] = std::from_chars(text.data(), end, number);
+  if (ec != std::errc() || rest == text.data()) return fail();
+  const double factor = unit_factor(lower(std::string_view(rest, end)));
+  const double bytes = number * factor;
+  if (factor == 0.0 || !(bytes >= 1.0) || !(bytes <= kMaxLimit)) return fail();
+  return static_cast<std::uint64_t>(bytes);
+}
+
+}  // namespace fspm
