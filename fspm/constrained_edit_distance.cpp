@@ -7,6 +7,7 @@
 #include <string>
 
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 
 namespace fspm {
 namespace {
@@ -89,6 +90,20 @@ std::vector<char> keep_mask(const TreeGraph& t, const std::vector<NodeId>* subse
   // Closed under ancestors, so the compared nodes form one tree rooted at the root.
   for (NodeId v = 1; v < t.size(); ++v) in[v] = in[v] && in[t.parent(v)];
   return in;
+}
+
+// Bytes the programme below allocates for A x B: two rows of |B| doubles for every node of A
+// whose parent is still pending (at most `live` at once, counted in post-order exactly as the
+// programme takes and frees rows), and 3 x 2 bytes per node pair for the traceback.
+double programme_bytes(const PostTree& A, std::uint32_t n2, bool with_mapping) {
+  std::size_t live = 0, peak = 0;
+  for (std::uint32_t i = 0; i < A.size(); ++i) {
+    peak = std::max(peak, ++live);
+    live -= A.degree(i);
+  }
+  const double rows = 2.0 * static_cast<double>(peak) * n2 * sizeof(double);
+  const double pairs = static_cast<double>(A.size()) * n2;
+  return rows + (with_mapping ? pairs * 3 * sizeof(std::uint16_t) : 0.0);
 }
 
 struct Traceback {
@@ -379,6 +394,9 @@ EditDistanceResult compute(const TreeGraph& a, const TreeGraph& b, const EditCos
   EditDistanceResult result;
   result.nodes_a = n1;
   result.nodes_b = n2;
+  check_memory(programme_bytes(A, n2, options.with_mapping), "the edit distance of trees of " +
+                                                                 std::to_string(n1) + " and " +
+                                                                 std::to_string(n2) + " nodes");
   Traceback tb;
   Traceback* tbp = nullptr;
   if (options.with_mapping && n1 > 0 && n2 > 0) {
