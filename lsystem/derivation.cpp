@@ -6,6 +6,7 @@
 #include <string>
 
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 #include "fspm/number_text.hpp"
 #include "lsystem/query_pass.hpp"
 #include "lsystem/turtle.hpp"
@@ -131,6 +132,25 @@ void Derivation::check_budget(std::size_t size) const {
                          " (an exploding grammar? fewer steps or a larger budget)",
                      sys_.file);
   }
+  if (size > memory_cap_) {
+    check_memory(input_bytes_ + static_cast<double>(size) * bytes_per_module_,
+                 "the L-system string at derivation step " + std::to_string(steps_done_ + 1),
+                 sys_.file);
+  }
+}
+
+void Derivation::plan_memory(const ModuleString& in) {
+  // Bytes per module of the layout in module_string.hpp: a symbol id, and for parametric
+  // strings an offset and the input's mean number of parameters (at least one).
+  bytes_per_module_ = sizeof(SymbolId);
+  if (parametric_) {
+    const double mean =
+        in.empty() ? 1.0 : static_cast<double>(in.pool().size()) / static_cast<double>(in.size());
+    bytes_per_module_ += sizeof(std::uint32_t) + sizeof(double) * std::max(1.0, mean);
+  }
+  input_bytes_ = static_cast<double>(in.memory_bytes());
+  const double room = static_cast<double>(memory_limit_bytes()) - input_bytes_;
+  memory_cap_ = room <= 0.0 ? 0 : static_cast<std::size_t>(room / bytes_per_module_);
 }
 
 void Derivation::run_block(const std::vector<Expression>& block) {
@@ -144,6 +164,7 @@ bool Derivation::rewrite_fast(const ModuleString& in, ModuleString& out) {
   const std::uint32_t* length = fast_length_.data();
   std::size_t total = 0;
   for (SymbolId s : src) total += length[s];
+  plan_memory(in);
   check_budget(total);
   std::vector<SymbolId>& dst = out.symbols();
   dst.resize(total);
@@ -287,14 +308,17 @@ void Derivation::emit(const Production& p, ModuleString& out) {
 bool Derivation::rewrite(const ProductionGroup& group, const ModuleString& in, ModuleString& out) {
   out.clear();
   if (in.parametric()) out.make_parametric();
+  plan_memory(in);
   // Reserve by the growth of the previous step so that a growing string is written once,
   // without reallocation copies (they cost a third of the time of a parametric derivation).
   const double modules = static_cast<double>(in.size()) * growth_ * 1.05 + 16;
   const double params = static_cast<double>(in.pool().size()) * param_growth_ * 1.05 + 16;
   out.reserve(
-      static_cast<std::size_t>(std::min(modules, static_cast<double>(options_.module_budget) + 16)),
+      static_cast<std::size_t>(std::min({modules, static_cast<double>(options_.module_budget) + 16,
+                                         static_cast<double>(memory_cap_) + 16})),
       static_cast<std::size_t>(
-          std::min(params, 4.0 * static_cast<double>(options_.module_budget) + 16)));
+          std::min({params, 4.0 * static_cast<double>(options_.module_budget) + 16,
+                    static_cast<double>(memory_limit_bytes()) / sizeof(double)})));
   bool changed = false;
   const std::size_t n = in.size();
   const auto& productions = group.productions;

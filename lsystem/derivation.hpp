@@ -7,6 +7,7 @@
 // Homomorphism productions are applied only to produce the string that is interpreted.
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <random>
 #include <span>
@@ -27,6 +28,8 @@ struct DeriveOptions {
   std::optional<int> steps;                          // overrides `derivation length:`
   std::optional<std::uint64_t> seed;                 // overrides `seed:` (default kDefaultSeed)
   std::size_t module_budget = kDefaultModuleBudget;  // ValueError when a string grows past it
+  // The string in bytes (with the one it is rewritten from) also stays within the process's
+  // memory limit (fspm/memory_budget.hpp): MemoryLimitError when it would not.
   // Open L-systems: query modules ?P ?H ?U ?L are filled by a turtle pass after every step and
   // communication modules ?E(...) by this environment (may be null: ?E keep their values).
   OpenEnvironment* environment = nullptr;
@@ -78,6 +81,8 @@ class Derivation {
   void bind(const ModulePattern& pattern, const ModuleString& in, std::size_t i);
   void emit(const Production& p, ModuleString& out);
   void check_budget(std::size_t size) const;
+  // Sets the largest output string the memory limit allows next to the string `in`.
+  void plan_memory(const ModuleString& in);
 
   const LSystem& sys_;
   DeriveOptions options_;
@@ -92,6 +97,11 @@ class Derivation {
   bool parametric_ = false;
   double growth_ = 1.5;        // modules out / modules in of the last rewrite
   double param_growth_ = 1.5;  // same for parameters
+  // Memory limit of the string being written (plan_memory): its modules are checked against
+  // memory_cap_ as cheaply as against the module budget; only past it are bytes estimated.
+  std::size_t memory_cap_ = std::numeric_limits<std::size_t>::max();
+  double bytes_per_module_ = 2.0;
+  double input_bytes_ = 0.0;
   bool has_cut_ = false;
   bool has_queries_ = false;
   // Fast path for context-free, deterministic, non-parametric productions: successor of every

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 #include "lsystem/derivation.hpp"
 #include "lsystem/parser.hpp"
 
@@ -282,6 +283,45 @@ TEST(LsystemDerivation, ModuleBudgetStopsExplodingGrammars) {
   }
   const LSystem p = parse_lsystem("Axiom: F(1)\nF(x) --> F(x)F(x)\n");
   EXPECT_THROW(derive(p, o), ValueError);
+}
+
+// Restores the default memory limit when a test ends.
+struct MemoryLimitGuard {
+  explicit MemoryLimitGuard(std::uint64_t bytes) { set_memory_limit_bytes(bytes); }
+  ~MemoryLimitGuard() { set_memory_limit_bytes(0); }
+};
+
+TEST(LsystemDerivation, MemoryLimitStopsTheStringInBytes) {
+  const MemoryLimitGuard guard(std::uint64_t{1} << 20);
+  const LSystem sys = parse_lsystem("Axiom: F\nF --> FF\n", "double.l");
+  DeriveOptions o;
+  o.steps = 40;
+  // Step k writes 2^k modules of 2 bytes next to the 2^(k-1) it reads: 3 x 2^k bytes, first
+  // above 2^20 at k = 19 (1.5 MiB), long before the module budget of 10^8.
+  try {
+    derive(sys, o);
+    FAIL() << "no error";
+  } catch (const MemoryLimitError& e) {
+    EXPECT_EQ(e.file(), "double.l");
+    EXPECT_EQ(e.message(),
+              "the L-system string at derivation step 19 needs about 1.5 MiB, above the memory "
+              "limit of 1 MiB (--memory-limit)");
+  }
+  o.steps = 18;
+  EXPECT_EQ(derive(sys, o).size(), std::size_t{1} << 18);
+}
+
+TEST(LsystemDerivation, MemoryLimitCountsParametersToo) {
+  const MemoryLimitGuard guard(std::uint64_t{1} << 20);
+  // 14 bytes per module (symbol, offset, one double): 2^16 modules (896 KiB) fit, 2^17 do not.
+  const LSystem sys = parse_lsystem("Axiom: F(1)\nF(x) --> F(x)F(x+1)\n");
+  DeriveOptions o;
+  o.steps = 17;
+  EXPECT_THROW(derive(sys, o), MemoryLimitError);
+  o.steps = 15;
+  const ModuleString s = derive(sys, o);
+  ASSERT_EQ(s.size(), std::size_t{1} << 15);
+  EXPECT_EQ(s.parameters(s.size() - 1)[0], 16.0);
 }
 
 TEST(LsystemDerivation, DivisionByZeroIsAValueError) {
