@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 
 int main(int argc, char** argv) {
   fspm::cli::use_checked_standard_output();
@@ -24,8 +25,18 @@ int main(int argc, char** argv) {
   bool quiet = false;
   app.add_flag("-v,--verbose", verbose, "More log output on stderr (repeat for more)");
   app.add_flag("-q,--quiet", quiet, "Only warnings and errors on stderr");
-  app.parse_complete_callback([&] { fspm::cli::set_verbosity(quiet ? 0 : (verbose > 0 ? 2 : 1)); });
-  // -q and -v are accepted after the subcommand too (subcommands created below inherit this).
+  std::string memory_limit;
+  app.add_option("--memory-limit", memory_limit,
+                 "Largest memory a command may plan to use: 512M, 2G ... (default: half of the "
+                 "physical memory)");
+  app.parse_complete_callback([&] {
+    fspm::cli::set_verbosity(quiet ? 0 : (verbose > 0 ? 2 : 1));
+    if (!memory_limit.empty()) {
+      fspm::set_memory_limit_bytes(fspm::parse_memory_size(memory_limit, "--memory-limit"));
+    }
+  });
+  // -q, -v and --memory-limit are accepted after the subcommand too (subcommands created below
+  // inherit this).
   app.fallthrough();
 
   fspm::cli::add_tree_commands(app);
