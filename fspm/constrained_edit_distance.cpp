@@ -93,17 +93,25 @@ std::vector<char> keep_mask(const TreeGraph& t, const std::vector<NodeId>* subse
 }
 
 // Bytes the programme below allocates for A x B: two rows of |B| doubles for every node of A
-// whose parent is still pending (at most `live` at once, counted in post-order exactly as the
-// programme takes and frees rows), and 3 x 2 bytes per node pair for the traceback.
-double programme_bytes(const PostTree& A, std::uint32_t n2, bool with_mapping) {
+// whose parent is still pending (at most `peak` at once, counted in post-order exactly as the
+// programme takes and frees rows); one matching problem at a time between the children of two
+// nodes (a gain matrix of doubles for the Hungarian solver; two Boost graph arcs with their
+// properties, about 256 bytes, per pair for min-cost flow); and 3 x 2 bytes per node pair for
+// the traceback.
+double programme_bytes(const PostTree& A, std::uint32_t n2, std::uint32_t max_degree_b,
+                       AssignmentSolver solver, bool with_mapping) {
   std::size_t live = 0, peak = 0;
+  std::uint32_t max_degree_a = 0;
   for (std::uint32_t i = 0; i < A.size(); ++i) {
     peak = std::max(peak, ++live);
     live -= A.degree(i);
+    max_degree_a = std::max(max_degree_a, A.degree(i));
   }
   const double rows = 2.0 * static_cast<double>(peak) * n2 * sizeof(double);
+  const double matching = static_cast<double>(max_degree_a) * max_degree_b *
+                          (solver == AssignmentSolver::kHungarian ? sizeof(double) : 256.0);
   const double pairs = static_cast<double>(A.size()) * n2;
-  return rows + (with_mapping ? pairs * 3 * sizeof(std::uint16_t) : 0.0);
+  return rows + matching + (with_mapping ? pairs * 3 * sizeof(std::uint16_t) : 0.0);
 }
 
 struct Traceback {
@@ -394,9 +402,9 @@ EditDistanceResult compute(const TreeGraph& a, const TreeGraph& b, const EditCos
   EditDistanceResult result;
   result.nodes_a = n1;
   result.nodes_b = n2;
-  check_memory(programme_bytes(A, n2, options.with_mapping), "the edit distance of trees of " +
-                                                                 std::to_string(n1) + " and " +
-                                                                 std::to_string(n2) + " nodes");
+  check_memory(programme_bytes(A, n2, max_degree(B), options.solver, options.with_mapping),
+               "the edit distance of trees of " + std::to_string(n1) + " and " +
+                   std::to_string(n2) + " nodes");
   Traceback tb;
   Traceback* tbp = nullptr;
   if (options.with_mapping && n1 > 0 && n2 > 0) {
