@@ -13,6 +13,7 @@
 #include "experiments/metrics.hpp"
 #include "fspm/error.hpp"
 #include "fspm/input_file.hpp"
+#include "fspm/memory_budget.hpp"
 
 namespace fspm::experiments {
 namespace {
@@ -97,6 +98,18 @@ class Reader {
     return a;
   }
 
+  // The values of one sweep axis are held in memory (the grid is not): checked before they are.
+  void check_values_memory(const std::string& key, const toml::node& node, double count) const {
+    try {
+      check_memory(
+          count * sizeof(ParameterValue),
+          "a sweep axis of " + std::to_string(static_cast<std::int64_t>(count)) + " values");
+    } catch (const MemoryLimitError& e) {
+      throw MemoryLimitError(key + ": " + e.message(), path_, line_of(node),
+                             static_cast<int>(node.source().begin.column));
+    }
+  }
+
   std::vector<ParameterValue> axis_values(const std::string& key, const toml::node& node) const {
     std::vector<ParameterValue> values;
     if (node.is_array()) {
@@ -138,6 +151,8 @@ class Reader {
         fail(where, spec, "empty range: stop must lie after start in the direction of step");
       }
       if (count > kMaxRuns) fail(where, spec, "range has too many values");
+      check_values_memory(where, spec, count);
+      values.reserve(static_cast<std::size_t>(count));
       for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
         if (all_integers) {
           values.emplace_back(static_cast<std::int64_t>(start) +
@@ -154,6 +169,8 @@ class Reader {
       const double last = number(where, *a.get(1));
       const std::int64_t n = integer(where + "[3]", *a.get(2), 1);
       if (static_cast<double>(n) > kMaxRuns) fail(where, spec, "too many values");
+      check_values_memory(where, spec, static_cast<double>(n));
+      values.reserve(static_cast<std::size_t>(n));
       const bool log = kind == "logspace";
       if (log && (first <= 0.0 || last <= 0.0)) {
         fail(where, spec, "logspace end points must be positive");

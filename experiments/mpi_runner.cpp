@@ -95,7 +95,9 @@ RunnerSummary root(const Experiment& experiment, const Model& model, const Runne
   summary.database = db->path();
   summary.total_runs = experiment.runs();
   const RunPlan plan(experiment);
-  if (options.longest_first) pending = longest_first(plan, model, std::move(pending));
+  if (options.longest_first) {
+    pending = longest_first(plan, model, std::move(pending), options.interrupt);
+  }
   const ExecutionSettings settings = execution_settings(
       experiment, options.out_dir, options.time_limit_s, options.interrupt, options.file_writers);
 

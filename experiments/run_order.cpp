@@ -7,11 +7,13 @@
 namespace fspm::experiments {
 
 std::vector<std::size_t> longest_first(const RunPlan& plan, const Model& model,
-                                       std::vector<std::size_t> pending) {
+                                       std::vector<std::size_t> pending,
+                                       const std::atomic<bool>* interrupt) {
   // Replicates share their point's parameters: one estimate per point.
   std::unordered_map<std::size_t, double> by_point;
   std::vector<double> cost(pending.size());
   for (std::size_t k = 0; k < pending.size(); ++k) {
+    if (interrupt != nullptr && k % 1024 == 0 && interrupt->load()) return pending;
     const std::size_t point = plan.point_of(pending[k]);
     auto it = by_point.find(point);
     if (it == by_point.end()) {

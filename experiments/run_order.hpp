@@ -4,6 +4,7 @@
 // bounds the finish time by 4/3 of the optimum instead of leaving the longest runs (often the
 // last grid points: the oldest trees, the most steps) to one worker at the end. The order never
 // changes results: a run's parameters and seed depend only on its index.
+#include <atomic>
 #include <cstddef>
 #include <vector>
 
@@ -13,8 +14,10 @@
 namespace fspm::experiments {
 
 // `pending` (run indices) sorted by descending Model::cost_estimate of their point's parameters,
-// stable; a non-finite or negative estimate counts as 0.
+// stable; a non-finite or negative estimate counts as 0. When `interrupt` becomes true while the
+// estimates are computed (a long plan), `pending` is returned unsorted at once.
 std::vector<std::size_t> longest_first(const RunPlan& plan, const Model& model,
-                                       std::vector<std::size_t> pending);
+                                       std::vector<std::size_t> pending,
+                                       const std::atomic<bool>* interrupt = nullptr);
 
 }  // namespace fspm::experiments

@@ -6,6 +6,7 @@
 
 #include "experiments/run_seed.hpp"
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 
 namespace fspm::experiments {
 namespace {
@@ -60,32 +61,47 @@ std::vector<std::vector<ParameterValue>> draw_samples(const Sampling& sampling) 
 }
 
 RunPlan::RunPlan(const Experiment& experiment)
-    : seed_(experiment.seed), replicates_(experiment.replicates) {
-  const std::size_t grid = experiment.grid_points();
-  std::vector<std::vector<ParameterValue>> samples;
-  if (experiment.sampling) samples = draw_samples(*experiment.sampling);
-  const std::size_t per_grid = experiment.sampling ? samples.size() : 1;
-  points_.reserve(grid * per_grid);
-  for (std::size_t g = 0; g < grid; ++g) {
-    ParameterSet base = experiment.fixed;
-    // Mixed-radix digits of g, last axis fastest.
-    std::size_t rest = g;
-    for (std::size_t a = experiment.sweep.size(); a-- > 0;) {
-      const SweepAxis& axis = experiment.sweep[a];
-      base[axis.name] = axis.values[rest % axis.values.size()];
-      rest /= axis.values.size();
-    }
-    for (std::size_t s = 0; s < per_grid; ++s) {
-      ParameterSet p = base;
-      if (experiment.sampling) {
-        for (std::size_t j = 0; j < experiment.sampling->parameters.size(); ++j) {
-          p[experiment.sampling->parameters[j].name] = samples[s][j];
-        }
-      }
-      points_.push_back(std::move(p));
-    }
+    : seed_(experiment.seed),
+      replicates_(experiment.replicates),
+      fixed_(experiment.fixed),
+      sweep_(experiment.sweep) {
+  if (experiment.sampling) {
+    const Sampling& sampling = *experiment.sampling;
+    // draw_samples holds the unit values, the strata and the values at once.
+    const double cells =
+        static_cast<double>(sampling.samples) * static_cast<double>(sampling.parameters.size());
+    check_memory(cells * (sizeof(double) + sizeof(ParameterValue)) +
+                     static_cast<double>(sampling.samples) * 2 * sizeof(std::size_t),
+                 "sampling " + std::to_string(sampling.samples) + " points", experiment.path);
+    samples_ = draw_samples(sampling);
+    per_grid_ = samples_.size();
+    for (const SampledParameter& p : sampling.parameters) sampled_names_.push_back(p.name);
   }
-  runs_ = points_.size() * replicates_;
+  points_ = experiment.grid_points() * per_grid_;
+  runs_ = points_ * replicates_;
+}
+
+ParameterSet RunPlan::point_parameters(std::size_t point) const {
+  ParameterSet p = fixed_;
+  // Mixed-radix digits of the grid point, last axis fastest.
+  std::size_t rest = point / per_grid_;
+  for (std::size_t a = sweep_.size(); a-- > 0;) {
+    const SweepAxis& axis = sweep_[a];
+    p[axis.name] = axis.values[rest % axis.values.size()];
+    rest /= axis.values.size();
+  }
+  if (!samples_.empty()) {
+    const std::vector<ParameterValue>& sample = samples_[point % per_grid_];
+    for (std::size_t j = 0; j < sampled_names_.size(); ++j) p[sampled_names_[j]] = sample[j];
+  }
+  return p;
+}
+
+std::size_t RunPlan::memory_bytes() const {
+  std::size_t bytes = sizeof(RunPlan);
+  for (const SweepAxis& axis : sweep_) bytes += axis.values.capacity() * sizeof(ParameterValue);
+  for (const auto& row : samples_) bytes += row.capacity() * sizeof(ParameterValue);
+  return bytes + samples_.capacity() * sizeof(samples_.front());
 }
 
 RunSpec RunPlan::run(std::size_t index) const {
@@ -98,7 +114,7 @@ RunSpec RunPlan::run(std::size_t index) const {
   spec.point = index / replicates_;
   spec.replicate = index % replicates_;
   spec.seed = run_seed(seed_, index);
-  spec.parameters = points_[spec.point];
+  spec.parameters = point_parameters(spec.point);
   return spec;
 }
 

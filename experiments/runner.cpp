@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <ctime>
 #include <deque>
@@ -16,6 +17,7 @@
 #include "experiments/run_execution.hpp"
 #include "experiments/run_order.hpp"
 #include "experiments/run_plan.hpp"
+#include "fspm/memory_budget.hpp"
 #include "fspm/tree_file.hpp"
 
 namespace fspm::experiments {
@@ -96,6 +98,14 @@ RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
   }
   check_run_file_writers(experiment, options.file_writers);
   const RunPlan plan(experiment);
+  // Per run: a done flag; per run of this shard: its index, and for the longest-first order a
+  // cost, a position and the sorted index (run_order.cpp). Checked before the database exists.
+  const double shard_runs =
+      std::ceil(static_cast<double>(plan.size()) / static_cast<double>(options.shard_count));
+  const double per_run =
+      sizeof(std::size_t) + (options.longest_first ? 2 * sizeof(std::size_t) + sizeof(double) : 0);
+  check_memory(static_cast<double>(plan.size()) + shard_runs * per_run,
+               "the list of " + std::to_string(plan.size()) + " runs", experiment.path);
   const ExperimentInfo info = experiment_info(experiment);
   ResultsDb db(options.out_dir,
                options.resume ? ResultsDb::Mode::kResume : ResultsDb::Mode::kCreate, info);
@@ -113,7 +123,9 @@ RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
       pending.push_back(i);
     }
   }
-  if (options.longest_first) pending = longest_first(plan, model, std::move(pending));
+  if (options.longest_first) {
+    pending = longest_first(plan, model, std::move(pending), options.interrupt);
+  }
   const ExecutionSettings settings = execution_settings(
       experiment, options.out_dir, options.time_limit_s, options.interrupt, options.file_writers);
   const std::size_t hardware = std::max(1u, std::thread::hardware_concurrency());

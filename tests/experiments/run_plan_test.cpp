@@ -8,6 +8,7 @@
 
 #include "experiments/run_seed.hpp"
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 
 namespace fspm::experiments {
 namespace {
@@ -43,6 +44,47 @@ TEST(RunPlan, LastAxisVariesFastestThenReplicates) {
   EXPECT_EQ(r.seed, run_seed(7, 7));
   EXPECT_EQ(std::get<std::int64_t>(plan.run(5).parameters.at("x.b")), 30);
   EXPECT_THROW(plan.run(12), ValueError);
+}
+
+TEST(RunPlan, TenMillionPointsArePlannedLazily) {
+  // 10^4 x 10^3 grid points: the plan holds the two axes (11000 values), not 10^7 points.
+  const Experiment x =
+      parse("[sweep]\n\"x.a\" = { range = [0, 10000] }\n\"x.b\" = { range = [0, 1000] }\n");
+  const RunPlan plan(x);
+  EXPECT_EQ(plan.points(), 10'000'000u);
+  EXPECT_EQ(plan.size(), 10'000'000u);
+  EXPECT_LT(plan.memory_bytes(), 11000 * sizeof(ParameterValue) + 4096);
+  // Point p = a * 1000 + b (last axis fastest).
+  for (const std::size_t p : {std::size_t{0}, std::size_t{1'234'567}, std::size_t{9'999'999}}) {
+    const RunSpec r = plan.run(p);
+    EXPECT_EQ(std::get<std::int64_t>(r.parameters.at("x.a")), static_cast<std::int64_t>(p / 1000));
+    EXPECT_EQ(std::get<std::int64_t>(r.parameters.at("x.b")), static_cast<std::int64_t>(p % 1000));
+    EXPECT_EQ(r.seed, run_seed(0, p));
+  }
+}
+
+TEST(RunPlan, SamplesAboveTheMemoryLimitFailBeforeTheyAreDrawn) {
+  set_memory_limit_bytes(std::uint64_t{1} << 20);
+  // 10^6 samples x 2 values of at least 8 bytes each: far above 1 MiB.
+  const Experiment x = parse(
+      "[sampling]\nmethod = \"random\"\nsamples = 1000000\nseed = 3\n[sampling.parameters]\n"
+      "\"x.u\" = { uniform = [10, 20] }\n\"x.v\" = { uniform = [0, 1] }\n");
+  EXPECT_THROW(RunPlan{x}, MemoryLimitError);
+  set_memory_limit_bytes(0);
+}
+
+TEST(RunPlan, SweepAxisAboveTheMemoryLimitFailsWhileParsing) {
+  set_memory_limit_bytes(std::uint64_t{1} << 20);
+  try {
+    parse("[sweep]\n\"x.a\" = { range = [0, 1000000] }\n");
+    ADD_FAILURE() << "no error";
+  } catch (const MemoryLimitError& e) {
+    EXPECT_EQ(e.file(), "t.toml");
+    EXPECT_EQ(e.line(), 7);
+    EXPECT_NE(e.message().find("a sweep axis of 1000000 values needs about"), std::string::npos)
+        << e.message();
+  }
+  set_memory_limit_bytes(0);
 }
 
 TEST(Sampling, LatinHypercubeHitsEveryStratumOnce) {
