@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 #include "fspm/tree_traversal.hpp"
 #include "graphics/parallel_transport.hpp"
 
@@ -243,6 +244,21 @@ int sides_for_radius(double radius_m, const MeshOptions& options, double distanc
                                      static_cast<double>(options.max_sides)));
 }
 
+namespace {
+
+// Bytes of the mesh mesh_tree fills: per vertex a position, a normal, a texture coordinate and
+// a float per attribute (the four node columns of AttributeFiller and the tree's own); per
+// triangle three indices and a material.
+double mesh_bytes(const MeshCounts& counts, std::size_t user_attributes) {
+  const double per_vertex = sizeof(Eigen::Vector3f) * 2 + sizeof(Eigen::Vector2f) +
+                            sizeof(float) * (4.0 + static_cast<double>(user_attributes));
+  const double per_triangle = sizeof(TriangleMesh::Triangle) + sizeof(Material);
+  return static_cast<double>(counts.vertices) * per_vertex +
+         static_cast<double>(counts.triangles) * per_triangle;
+}
+
+}  // namespace
+
 MeshCounts count_mesh(const TreeGraph& tree, const MeshOptions& options) {
   if (options.junctions == JunctionMode::kContinuous) {
     const TriangleMesh mesh = mesh_tree_continuous(tree, options);
@@ -255,6 +271,8 @@ MeshCounts count_mesh(const TreeGraph& tree, const MeshOptions& options) {
 TriangleMesh mesh_tree(const TreeGraph& tree, const MeshOptions& options) {
   if (options.junctions == JunctionMode::kContinuous) return mesh_tree_continuous(tree, options);
   const Plan plan = make_plan(tree, options);
+  check_memory(mesh_bytes(plan.counts, tree.attribute_names().size()),
+               "a mesh of " + std::to_string(plan.counts.triangles) + " triangles");
   TriangleMesh mesh;
   mesh.positions.resize(plan.counts.vertices);
   mesh.normals.resize(plan.counts.vertices);
