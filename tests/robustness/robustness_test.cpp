@@ -363,6 +363,67 @@ std::vector<Case> message_cases() {
   };
 }
 
+// The memory limit (--memory-limit) is checked before every large allocation, whether the size
+// comes from a file or from an option; the message names the estimate and the limit.
+std::vector<Case> memory_cases() {
+  const std::string doubling = "Axiom: F\nF --> FF\n";
+  // A star of 3000 leaves against itself keeps 3001 rows of 3001 doubles pending twice
+  // (144 096 016 bytes) and matches the 3000 x 3000 children of the roots (72 000 000 bytes):
+  // 206.1 MiB.
+  const std::string star = "(" + repeat("1,", 2999) + "1);";
+  const std::string limit = "above the memory limit of (1|100) MiB \\(--memory-limit\\)";
+  return {
+      {"LsystemStringOverTheMemoryLimit",
+       {{"g.l", "derivation length: 40\n" + doubling}},
+       {},
+       "--memory-limit 1M lsystem interpret {dir}/g.l -o {dir}/t.tree",
+       1,
+       "g.l: the L-system string at derivation step 19 needs about 1.5 MiB, " + limit,
+       {"t.tree"}},
+      {"LsystemStepsOptionOverTheMemoryLimit",
+       {{"g.l", doubling}},
+       {},
+       "lsystem interpret {dir}/g.l --steps 40 -o {dir}/t.tree --memory-limit 1M",
+       1,
+       "g.l: the L-system string at derivation step 19 needs about 1.5 MiB, " + limit,
+       {"t.tree"}},
+      {"DistanceOverTheMemoryLimit",
+       {{"a.nwk", star}},
+       {},
+       "--memory-limit 100M distance {dir}/a.nwk {dir}/a.nwk",
+       1,
+       "the edit distance of trees of 3001 and 3001 nodes needs about 206.1 MiB, " + limit},
+      {"SweepAxisOverTheMemoryLimit",
+       {{"e.toml", kSynthetic + "[sweep]\n\"x.a\" = { range = [0, 100000000] }\n"}},
+       {},
+       "--memory-limit 100M run {dir}/e.toml --out {dir}/out",
+       1,
+       "e.toml:6:[0-9]+: .*a sweep axis of 100000000 values needs about 3.7 GiB, " + limit,
+       {"out"}},
+      {"MeshOverTheMemoryLimit",
+       {},
+       {},
+       "--memory-limit 100K mesh " + kExamples + "/trees/open_a12.treeb -o {dir}/m.ply",
+       1,
+       "a mesh of [0-9]+ triangles needs about [0-9.]+ KiB, above the memory limit of 100 KiB",
+       {"m.ply"}},
+      {"ReconstructionOverTheMemoryLimit",
+       {},
+       {"greenlab simulate " + kPlant + " -o {dir}/p.ctree"},
+       "--memory-limit 10K greenlab reconstruct {dir}/p.ctree -o {dir}/t.tree",
+       1,
+       "the explicit tree of [0-9]+ metamers needs about [0-9.]+ KiB, above the memory limit of "
+       "10 KiB",
+       {"t.tree"}},
+      {"ZeroMemoryLimit",
+       {},
+       {},
+       "--memory-limit 0 tree info " + kTree,
+       1,
+       "--memory-limit: expected a size such as 512M or 2G, got '0'"},
+  };
+}
+
 // Test names in ctest and failure reports show the case's name, not its bytes.
 void PrintTo(const Case& c, std::ostream* out) { *out << c.name; }
 
@@ -410,6 +471,7 @@ INSTANTIATE_TEST_SUITE_P(Nesting, Robustness, ::testing::ValuesIn(nesting_cases(
 INSTANTIATE_TEST_SUITE_P(WrongInput, Robustness, ::testing::ValuesIn(wrong_input_cases()),
                          case_name);
 INSTANTIATE_TEST_SUITE_P(Messages, Robustness, ::testing::ValuesIn(message_cases()), case_name);
+INSTANTIATE_TEST_SUITE_P(Memory, Robustness, ::testing::ValuesIn(memory_cases()), case_name);
 
 }  // namespace
 }  // namespace fspm::testing
