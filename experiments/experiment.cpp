@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -22,6 +23,17 @@ namespace fs = std::filesystem;
 
 // Sweeps beyond this many runs are almost certainly a typo (a range step of 1e-9, ...).
 constexpr double kMaxRuns = 1.0e9;
+
+// The same limit for the file's runs and for a --replicates override: `prefix` names the option.
+void check_run_count(double runs, const std::string& prefix, const std::string& path) {
+  if (runs > kMaxRuns) {
+    char count[32];
+    std::snprintf(count, sizeof count, "%.0f", runs);
+    throw ValueError(prefix + "the experiment has " + count + " runs, more than the limit of " +
+                         std::to_string(static_cast<std::int64_t>(kMaxRuns)),
+                     path, prefix.empty() ? 1 : 0);
+  }
+}
 
 class Reader {
  public:
@@ -569,12 +581,7 @@ Experiment parse_experiment(std::string_view toml_text, const std::string& path)
     x.sampling = std::move(sampling);
   }
   runs *= static_cast<double>(x.replicates);
-  if (runs > kMaxRuns) {
-    throw ValueError("the experiment has " + std::to_string(runs) +
-                         " runs, more than the limit of " +
-                         std::to_string(static_cast<std::int64_t>(kMaxRuns)),
-                     path, 1);
-  }
+  check_run_count(runs, "", path);
 
   if (const toml::table* out = r.table(root, "outputs", false)) {
     r.only_keys("outputs", *out,
@@ -664,6 +671,8 @@ Experiment parse_experiment(std::string_view toml_text, const std::string& path)
 
 void override_replicates(Experiment& x, std::size_t replicates) {
   if (replicates == 0) throw ValueError("replicates must be at least 1");
+  check_run_count(static_cast<double>(x.points()) * static_cast<double>(replicates),
+                  "--replicates " + std::to_string(replicates) + ": ", x.path);
   x.replicates = replicates;
   x.text += "\n# replicates overridden: " + std::to_string(replicates) + "\n";
 }

@@ -415,6 +415,23 @@ std::vector<Case> memory_cases() {
        "the explicit tree of [0-9]+ metamers needs about [0-9.]+ KiB, above the memory limit of "
        "10 KiB",
        {"t.tree"}},
+      {"RunCountFromTheFile",
+       {{"e.toml", kSynthetic + "[sweep]\n\"x.a\" = { range = [0, 100000] }\n" +
+                       "[sampling]\nsamples = 100000\n[sampling.parameters]\n" +
+                       "\"x.u\" = { uniform = [0, 1] }\n"}},
+       {},
+       "run {dir}/e.toml --out {dir}/out",
+       1,
+       "e.toml:1: the experiment has 10000000000 runs, more than the limit of 1000000000",
+       {"out"}},
+      {"RunCountFromTheReplicatesOption",
+       {{"e.toml", kSynthetic + "[sweep]\n\"x.a\" = { range = [0, 100000] }\n"}},
+       {},
+       "run {dir}/e.toml --replicates 100000 --out {dir}/out",
+       1,
+       "e.toml: --replicates 100000: the experiment has 10000000000 runs, more than the limit of "
+       "1000000000",
+       {"out"}},
       {"ZeroMemoryLimit",
        {},
        {},
