@@ -13,6 +13,7 @@
 #include "fspm/constrained_edit_distance.hpp"
 #include "fspm/edit_cost_model.hpp"
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 #include "fspm/newick_format.hpp"
 #include "fspm/tree_file.hpp"
 #include "fspm/tree_summary.hpp"
@@ -179,6 +180,11 @@ PYBIND11_MODULE(_fspm, m) {
       "A parameter outside its valid range, an unknown name or an impossible request (also a "
       "ValueError); fspm.ParameterError",
       {error, PyExc_ValueError});
+  static PyObject* const memory_error = new_exception(
+      m, "MemoryLimitError",
+      "A computation whose estimated memory is above the limit of set_memory_limit (also a "
+      "MemoryError); the message gives the estimate and the limit",
+      {error, PyExc_MemoryError});
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
@@ -188,6 +194,8 @@ PYBIND11_MODULE(_fspm, m) {
       PyErr_SetString(io_error, e.what());
     } catch (const fspm::ValueError& e) {
       PyErr_SetString(value_error, e.what());
+    } catch (const fspm::MemoryLimitError& e) {
+      PyErr_SetString(memory_error, e.what());
     } catch (const fspm::Error& e) {
       PyErr_SetString(error, e.what());
     }
@@ -273,6 +281,26 @@ PYBIND11_MODULE(_fspm, m) {
       .def(
           "copy", [](const TreeGraph& t) { return TreeGraph(t); }, "An independent copy");
 
+  m.def(
+      "set_memory_limit",
+      [](std::optional<std::variant<std::uint64_t, std::string>> limit) {
+        if (!limit) {
+          fspm::set_memory_limit_bytes(0);
+        } else if (const auto* bytes = std::get_if<std::uint64_t>(&*limit)) {
+          if (*bytes == 0) throw fspm::ValueError("memory limit: expected a positive size, got 0");
+          fspm::set_memory_limit_bytes(*bytes);
+        } else {
+          fspm::set_memory_limit_bytes(
+              fspm::parse_memory_size(std::get<std::string>(*limit), "memory limit"));
+        }
+      },
+      py::arg("limit"),
+      "Limit the memory fspm may plan to use, in bytes or as text ('512M', '2G'); None restores "
+      "the default (half of the physical memory). Requests above it raise MemoryLimitError, a "
+      "MemoryError, before anything is allocated");
+  m.def(
+      "memory_limit", [] { return fspm::memory_limit_bytes(); },
+      "The memory limit in bytes (see set_memory_limit)");
   m.def(
       "read_tree",
       [](const std::string& path, const std::string& format) {

@@ -173,3 +173,27 @@ def test_import_without_numpy_names_the_missing_package():
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert r.returncode != 0
     assert "fspm needs numpy" in r.stderr
+
+
+def test_memory_limit_raises_memory_error_before_allocating(tmp_path):
+    grammar = tmp_path / "double.l"
+    grammar.write_text("derivation length: 40\nAxiom: F\nF --> FF\n")
+    default = fspm.memory_limit()
+    fspm.set_memory_limit("1M")
+    try:
+        assert fspm.memory_limit() == 1 << 20
+        # Step k writes 2^k modules of 2 bytes beside the 2^(k-1) it reads: 3 * 2^k bytes, first
+        # above 1 MiB at step 19.
+        with pytest.raises(MemoryError, match="derivation step 19 needs about 1.5 MiB, above the "
+                                              "memory limit of 1 MiB"):
+            fspm.lsystem_derive(str(grammar))
+        with pytest.raises(fspm.MemoryLimitError):
+            fspm.lsystem_derive(str(grammar))
+        fspm.set_memory_limit(3 << 20)
+        assert fspm.memory_limit() == 3 << 20
+        with pytest.raises(ValueError, match="expected a size"):
+            fspm.set_memory_limit("lots")
+    finally:
+        fspm.set_memory_limit(None)
+    assert fspm.memory_limit() == default
+    assert fspm.lsystem_derive(str(grammar), steps=10)["modules"] == 1024
