@@ -26,15 +26,29 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-// Finished runs handed from the workers to the writer.
+// Finished runs handed from the workers to the writer. Bounded: when runs finish faster than
+// the database takes them (a quick model), workers wait instead of queueing without limit, so
+// memory stays flat and an interrupt leaves at most kMaxQueued records to write.
 class Mailbox {
  public:
+  static constexpr std::size_t kMaxQueued = 1024;
+
   void put(RunRecord r) {
     {
-      std::lock_guard lock(mutex_);
+      std::unique_lock lock(mutex_);
+      space_.wait(lock, [&] { return queue_.size() < kMaxQueued || closed_; });
+      if (closed_) return;  // the writer is gone (an error): nobody would take it
       queue_.push_back(std::move(r));
     }
     ready_.notify_one();
+  }
+  // Releases waiting workers and drops later records; for leaving the writer loop on an error.
+  void close() {
+    {
+      std::lock_guard lock(mutex_);
+      closed_ = true;
+    }
+    space_.notify_all();
   }
   void worker_done() {
     {
@@ -51,14 +65,34 @@ class Mailbox {
       out.push_back(std::move(queue_.front()));
       queue_.pop_front();
     }
+    space_.notify_all();
     return !(finished_workers_ == workers && out.empty());
   }
 
  private:
   std::mutex mutex_;
   std::condition_variable ready_;
+  std::condition_variable space_;
   std::deque<RunRecord> queue_;
   std::size_t finished_workers_ = 0;
+  bool closed_ = false;
+};
+
+// Stops the workers and opens the mailbox when the writer loop is left by an exception, so
+// that joining the workers cannot wait for a writer that is gone.
+class StopOnExit {
+ public:
+  StopOnExit(Mailbox& mailbox, std::atomic<bool>& stop) : mailbox_(mailbox), stop_(stop) {}
+  ~StopOnExit() {
+    stop_ = true;
+    mailbox_.close();
+  }
+  StopOnExit(const StopOnExit&) = delete;
+  StopOnExit& operator=(const StopOnExit&) = delete;
+
+ private:
+  Mailbox& mailbox_;
+  std::atomic<bool>& stop_;
 };
 
 }  // namespace
@@ -99,11 +133,12 @@ RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
   check_run_file_writers(experiment, options.file_writers);
   const RunPlan plan(experiment);
   // Per run: a done flag; per run of this shard: its index, and for the longest-first order a
-  // cost, a position and the sorted index (run_order.cpp). Checked before the database exists.
+  // cost, a position, stable_sort's buffer and the sorted index (run_order.cpp). Checked before
+  // the database exists.
   const double shard_runs =
       std::ceil(static_cast<double>(plan.size()) / static_cast<double>(options.shard_count));
   const double per_run =
-      sizeof(std::size_t) + (options.longest_first ? 2 * sizeof(std::size_t) + sizeof(double) : 0);
+      sizeof(std::size_t) + (options.longest_first ? 3 * sizeof(std::size_t) + sizeof(double) : 0);
   check_memory(static_cast<double>(plan.size()) + shard_runs * per_run,
                "the list of " + std::to_string(plan.size()) + " runs", experiment.path);
   const ExperimentInfo info = experiment_info(experiment);
@@ -156,6 +191,7 @@ RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
   std::vector<std::jthread> pool;
   pool.reserve(workers);
   for (std::size_t w = 0; w < workers; ++w) pool.emplace_back(work);
+  const StopOnExit stop_on_exit(mailbox, stop_all);
 
   // This thread is the only writer: it commits whatever finished, in one transaction per batch,
   // so the database is never the bottleneck and a kill loses at most the uncommitted batch.
