@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 #include "lsystem/derivation.hpp"
 #include "lsystem/parser.hpp"
 #include "lsystem/turtle.hpp"
@@ -102,6 +103,13 @@ void run(std::string_view text) {
 }
 
 }  // namespace
+
+// The process's memory limit far below libFuzzer's -malloc_limit_mb: a string that outgrows it
+// must be refused by the derivation's check, not by the fuzzer.
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  fspm::set_memory_limit_bytes(std::size_t{64} << 20);
+  return 0;
+}
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;

@@ -19,8 +19,8 @@ for fuzzer in build-asan/bin/fspm_*_fuzz; do
   [ -d "$corpus" ] && cp -r "$corpus"/. "$work"/
   echo "fuzzing $name for $seconds s"
   if ! ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-      "$fuzzer" -max_total_time="$seconds" -rss_limit_mb=2048 -max_len=4096 \
-      -artifact_prefix="$findings/" "$work" > "$findings/log.txt" 2>&1; then
+      "$fuzzer" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_limit_mb=1024 \
+      -max_len=4096 -artifact_prefix="$findings/" "$work" > "$findings/log.txt" 2>&1; then
     tail -n 30 "$findings/log.txt"
     status=1
   fi

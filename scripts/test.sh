@@ -35,7 +35,7 @@ for fuzzer in build-asan/bin/fspm_*_fuzz; do
   work=$(mktemp -d)
   [ -d "$corpus" ] && cp -r "$corpus"/. "$work"/
   echo "fuzzing $name for 20 s"
-  "$fuzzer" -max_total_time=20 -rss_limit_mb=2048 -max_len=4096 "$work" > "$work.log" 2>&1 \
+  "$fuzzer" -max_total_time=20 -rss_limit_mb=2048 -malloc_limit_mb=1024 -max_len=4096 "$work" > "$work.log" 2>&1 \
     || { tail -n 40 "$work.log"; exit 1; }
   rm -rf "$work" "$work.log"
 done
