@@ -53,16 +53,28 @@ std::filesystem::path full_executable() {
 }  // namespace
 
 void add_full_commands(CLI::App& app) {
-  // Listed for --help only: hand_over_full_commands() has replaced the process before parsing
-  // when the command line names one of them.
-  for (const FullCommand& c : kFullCommands) app.add_subcommand(c.name, c.description);
+  // Listed for --help: hand_over_full_commands() has replaced the process before parsing when
+  // the command line names one of them. Reaching a callback means the scan missed it: an error,
+  // never a silent success.
+  for (const FullCommand& c : kFullCommands) {
+    CLI::App* sub = app.add_subcommand(c.name, c.description);
+    sub->allow_extras();
+    sub->callback([name = std::string(c.name)] {
+      throw ValueError("could not hand '" + name + "' to fspm-full: put fspm's own options (-q, -v, "
+                       "--memory-limit) after the command");
+    });
+  }
 }
 
 void hand_over_full_commands(int argc, char** argv) {
-  // The command is the first argument that is not an option: fspm's own options (-v, -q,
-  // --help, --version) take no value.
+  // The command is the first argument that is neither an option of fspm's own (-v, -q, --help,
+  // --version take no value) nor the value of --memory-limit.
   for (int k = 1; k < argc; ++k) {
     const std::string_view arg = argv[k];
+    if (arg == "--memory-limit") {
+      ++k;
+      continue;
+    }
     if (arg.starts_with('-')) continue;
     for (const FullCommand& c : kFullCommands) {
       if (arg == c.name) hand_over(argc, argv);

@@ -62,10 +62,12 @@ TEST(CommandSplit, HandedOverCommandsKeepTheirHelpOutputAndExitCode) {
   const auto help = run_fspm("render --help");
   EXPECT_EQ(help.exit_code, 0) << help.err;
   EXPECT_NE(help.out.find("--view"), std::string::npos) << help.out;
-  // Global options before the command are handed over too.
-  const auto missing = run_fspm("-q results show /nonexistent-fspm-dir");
-  EXPECT_EQ(missing.exit_code, 1);
-  EXPECT_NE(missing.err.find("/nonexistent-fspm-dir"), std::string::npos) << missing.err;
+  // Global options before the command are handed over too, with their values.
+  for (const char* options : {"-q", "--memory-limit 1G -q", "--memory-limit=1G"}) {
+    const auto missing = run_fspm(std::string(options) + " results show /nonexistent-fspm-dir");
+    EXPECT_EQ(missing.exit_code, 1) << options;
+    EXPECT_NE(missing.err.find("/nonexistent-fspm-dir"), std::string::npos) << missing.err;
+  }
 }
 
 TEST(CommandSplit, LeanExecutableLinksNoGraphicsMpiOrDatabaseLibrary) {
