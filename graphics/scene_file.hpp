@@ -1,14 +1,13 @@
 #pragma once
-// Scene files: many plants from a few files, each placed by a position, a rotation and a uniform
-// scale (Jaeger 4.2's 200-tree scene from two graphs). JSON, described in docs/formats.md:
-//   {"fspm_scene": 1,
-//    "instances": [{"file": "oak.ctree", "position": [0, 0, 0], "rotation_deg": 30,
-//                   "scale": 1.0, "age": 12}, ...]}
-// Files are resolved against the scene file's directory; each distinct (file, age) is loaded and
-// meshed once however many instances use it.
+// The plants of a scene file (docs/formats.md): many plants from a few files, each placed by a
+// position, a rotation and a uniform scale (Jaeger 4.2's 200-tree scene from two graphs). Read
+// by the one scene reader (fspm/scene_reader.hpp); files are resolved against the scene file's
+// directory, and each distinct (file, age) is loaded and meshed once however many plants use it.
 #include <Eigen/Core>
 #include <string>
 #include <vector>
+
+#include "fspm/scene_description.hpp"
 
 namespace fspm::graphics {
 
@@ -33,12 +32,15 @@ struct SceneFile {
   std::vector<SceneInstance> instances;
 };
 
+// The placed plants of a scene, sharing one source per distinct (file, age).
+SceneFile scene_plants(const std::vector<ScenePlant>& plants);
+
 // True when `path` ends in .json (case-insensitive): the CLI takes it as a scene.
 bool is_scene_path(const std::string& path);
 
-// Throws IoError when unreadable, ParseError (with the line and column of bad JSON, or the
-// instance index) for anything malformed: missing "instances" or "file", non-numeric or
-// non-finite values, a scale <= 0, an unknown key.
+// Throws IoError when unreadable, ParseError (with the line and column) for bad JSON and
+// ValueError (with the line and JSON path) for anything malformed: a plant without "file",
+// non-numeric or non-finite values, a scale <= 0, an unknown key.
 SceneFile read_scene_file(const std::string& path);
 SceneFile parse_scene(const std::string& text, const std::string& scene_path);
 

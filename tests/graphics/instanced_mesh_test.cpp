@@ -265,7 +265,7 @@ TEST_F(InstancedFiles, SceneFileParsesAndResolvesPaths) {
   auto parse_error_for = [&](const std::string& text) {
     try {
       parse_scene(text, scene_path);
-    } catch (const ParseError& e) {
+    } catch (const Error& e) {  // ParseError for bad JSON, ValueError for bad values
       return std::string(e.what());
     }
     return std::string("no error");

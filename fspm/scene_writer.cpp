@@ -1,0 +1,115 @@
+#include "fspm/scene_writer.hpp"
+
+#include <filesystem>
+#include <ostream>
+
+#include "fspm/atomic_file.hpp"
+#include "fspm/scene_reader.hpp"
+
+namespace fspm {
+namespace {
+
+using nlohmann::json;
+
+template <int N>
+json array(const Eigen::Matrix<double, N, 1>& v) {
+  json a = json::array();
+  for (int i = 0; i < N; ++i) a.push_back(v[i]);
+  return a;
+}
+
+json sky_json(const SceneSky& sky) {
+  json s = json::object();
+  if (sky.source == SkySource::kBrightest) s["brightest"] = array<3>(sky.brightest);
+  if (sky.source == SkySource::kSun) {
+    s["sun"] = {{"elevation_deg", sky.sun_elevation_deg}, {"azimuth_deg", sky.sun_azimuth_deg}};
+  }
+  if (sky.source == SkySource::kNoonSun) {
+    s["latitude_deg"] = sky.latitude_deg;
+    s["day_of_year"] = sky.day_of_year;
+  }
+  if (sky.directions) s["directions"] = *sky.directions;
+  if (sky.significance) s["significance"] = *sky.significance;
+  if (sky.analytic) s["analytic"] = *sky.analytic;
+  return s;
+}
+
+void add_surface(const ObstacleSurface& surface, json& o) {
+  if (surface.translucency) o["translucency"] = *surface.translucency;
+  if (surface.solid) o["solid"] = *surface.solid;
+}
+
+json shape_json(const SphereObstacle& s) {
+  json o = {{"type", s.cluster ? "cluster" : "sphere"},
+            {"center", array<3>(s.center)},
+            {"radius", s.radius_m}};
+  if (s.gamma0) o["gamma0"] = *s.gamma0;
+  return o;
+}
+json shape_json(const BoxObstacle& b) {
+  json o = {{"type", "box"}, {"center", array<3>(b.center)}, {"size", array<3>(b.size_m)}};
+  if (b.axis) {
+    o["axis"] = array<3>(*b.axis);
+    o["angle_deg"] = b.angle_deg;
+  }
+  return o;
+}
+json shape_json(const WallObstacle& w) {
+  return {{"type", "wall"},          {"from", array<2>(w.from)},
+          {"to", array<2>(w.to)},     {"height", w.height_m},
+          {"thickness", w.thickness_m}, {"base", w.base_m}};
+}
+json shape_json(const MeshObstacle& m) {
+  json vertices = json::array(), triangles = json::array();
+  for (const auto& v : m.vertices) vertices.push_back(array<3>(v));
+  for (const auto& t : m.triangles) triangles.push_back({t[0], t[1], t[2]});
+  return {{"type", "mesh"}, {"vertices", vertices}, {"triangles", triangles}};
+}
+
+json plant_json(const ScenePlant& p, const std::string& directory) {
+  std::filesystem::path file = p.file;
+  if (!directory.empty() || file.is_relative()) {
+    // Relative to the written file, so the scene and its plants can move together.
+    std::error_code ec;
+    const auto rel = std::filesystem::relative(file, directory.empty() ? "." : directory, ec);
+    if (!ec && !rel.empty()) file = rel;
+  }
+  json o = {{"file", file.generic_string()},
+            {"position", array<3>(p.position)},
+            {"rotation_deg", array<3>(p.rotation_deg)},
+            {"scale", p.scale}};
+  if (p.age) o["age"] = *p.age;
+  return o;
+}
+
+}  // namespace
+
+json scene_description_json(const SceneDescription& scene, const std::string& directory) {
+  json doc = {{"fspm_scene", kSceneVersion}};
+  doc["sky"] = sky_json(scene.sky);
+  if (scene.gamma0) doc["gamma0"] = *scene.gamma0;
+  if (scene.ground) {
+    json g = {{"z", scene.ground->height_m}};
+    add_surface(scene.ground->surface, g);
+    doc["ground"] = g;
+  }
+  json obstacles = json::array();
+  for (const auto& o : scene.obstacles) {
+    json j = std::visit([](const auto& shape) { return shape_json(shape); }, o.shape);
+    add_surface(o.surface, j);
+    obstacles.push_back(j);
+  }
+  doc["obstacles"] = obstacles;
+  json plants = json::array();
+  for (const auto& p : scene.plants) plants.push_back(plant_json(p, directory));
+  doc["plants"] = plants;
+  return doc;
+}
+
+void write_scene_description(const SceneDescription& scene, const std::string& path) {
+  const std::string directory = std::filesystem::path(path).parent_path().string();
+  const std::string text = scene_description_json(scene, directory).dump(2) + "\n";
+  write_file_atomically(path, [&](std::ostream& out) { out << text; });
+}
+
+}  // namespace fspm

@@ -1,0 +1,18 @@
+#pragma once
+// Writes a scene in the current layout ("fspm_scene": 2, docs/formats.md); what `fspm scene
+// upgrade` does to files in an earlier layout. Only what the scene sets is written, so defaults
+// stay defaults.
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "fspm/scene_description.hpp"
+
+namespace fspm {
+
+// The scene as JSON; plant files relative to `directory` (the written file's) when they can be.
+nlohmann::json scene_description_json(const SceneDescription& scene, const std::string& directory);
+
+// Writes atomically (no half-written file); throws IoError when it cannot.
+void write_scene_description(const SceneDescription& scene, const std::string& path);
+
+}  // namespace fspm
