@@ -15,6 +15,7 @@ void add_greenlab_commands(CLI::App& app);
 void add_evaluation_commands(CLI::App& app);
 void add_adapt_commands(CLI::App& app);
 void add_stages_commands(CLI::App& app);
+void add_scene_commands(CLI::App& app);
 
 // The commands that need the graphics and experiments libraries (run, compare, report, results,
 // mesh, render, view): registered for real in fspm-full; in fspm only listed in --help.

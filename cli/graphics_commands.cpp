@@ -18,13 +18,13 @@
 
 #include "cli/commands.hpp"
 #include "cli/full_command_list.hpp"
-#include "cli/obstacle_crop.hpp"
-#include "cli/obstacle_mesh.hpp"
 #include "cli/output.hpp"
+#include "cli/scene_obstacles.hpp"
 #include "cli/xvfb.hpp"
 #include "environment/scene_file.hpp"
 #include "fspm/compressed_tree_graph.hpp"
 #include "fspm/error.hpp"
+#include "fspm/scene_reader.hpp"
 #include "fspm/tree_file.hpp"
 #include "graphics/foliage.hpp"
 #include "graphics/image.hpp"
@@ -179,8 +179,9 @@ graphics::InstancedMesh load_part(const std::string& path, InputKind kind,
       graphics::mesh_tree(read_tree_file(path, format), options));
 }
 
-graphics::InstancedMesh load_scene(const std::string& path, const graphics::MeshOptions& options) {
-  const graphics::SceneFile scene = graphics::read_scene_file(path);
+// Each distinct plant file of a scene meshed once, placed as often as the scene says.
+graphics::InstancedMesh place_plants(const graphics::SceneFile& scene,
+                                     const graphics::MeshOptions& options) {
   std::vector<graphics::InstancedMesh> parts;
   for (const auto& source : scene.sources) {
     parts.push_back(load_part(source.path, input_kind(source.path), "", source.age, options));
@@ -192,10 +193,23 @@ graphics::InstancedMesh load_scene(const std::string& path, const graphics::Mesh
   return graphics::place_parts(parts, placements);
 }
 
+// The plants of a scene file and its obstacles: near the plants (`near_plants`, for pictures),
+// or all of them whole. A scene without plants shows its obstacles whole.
+graphics::InstancedMesh load_scene(const std::string& path, const graphics::MeshOptions& options,
+                                   bool near_plants) {
+  const SceneDescription description = read_scene_description(path);
+  graphics::InstancedMesh mesh = place_plants(graphics::scene_plants(description.plants), options);
+  if (!description.obstacles.empty()) {
+    add_scene_obstacles(mesh, environment::scene_from_description(description), path,
+                        near_plants && !description.plants.empty());
+  }
+  return mesh;
+}
+
 graphics::InstancedMesh load_instanced(const std::string& path, const std::string& format,
-                                       const graphics::MeshOptions& options) {
+                                       const graphics::MeshOptions& options, bool near_plants) {
   const InputKind kind = input_kind(path);
-  if (kind == InputKind::kScene) return load_scene(path, options);
+  if (kind == InputKind::kScene) return load_scene(path, options, near_plants);
   return load_part(path, kind, format, -1.0, options);
 }
 
@@ -206,34 +220,6 @@ nlohmann::json instancing_json(const graphics::InstancedMesh& m) {
           {"instances", m.instances.size()},
           {"stored_triangles", m.stored_triangle_count()},
           {"bounds", {{"min", {lo.x(), lo.y(), lo.z()}}, {"max", {hi.x(), hi.y(), hi.z()}}}}};
-}
-
-// Adds the walls, boxes, spheres and meshes of the growth scene file at `path` to `scene` as one
-// more mesh (material obstacle) placed once; returns its triangle count. `near_plants`: only the
-// obstacles near the plants, boxes cut to that region (renders, so a long wall does not shrink
-// the tree to a dot); otherwise all of them whole (mesh files).
-std::size_t add_obstacles(graphics::InstancedMesh& scene, const std::string& path,
-                          bool near_plants) {
-  environment::Scene obstacles = environment::read_scene_file(path);
-  if (near_plants) {
-    Eigen::Vector3f lo, hi;
-    scene.bounds(lo, hi);
-    Eigen::Vector2d region_lo, region_hi;
-    obstacle_region(lo.cast<double>(), hi.cast<double>(), region_lo, region_hi);
-    obstacles = obstacles_near(obstacles, region_lo, region_hi);
-  }
-  graphics::TriangleMesh mesh = mesh_obstacles(obstacles);
-  const std::size_t triangles = mesh.triangle_count();
-  if (triangles == 0) {
-    spdlog::warn("{}: no walls, boxes, spheres or meshes{} to draw", path,
-                 near_plants ? " near the plants" : "");
-    return 0;
-  }
-  graphics::MeshInstance instance;
-  instance.mesh = static_cast<std::uint32_t>(scene.meshes.size());
-  scene.meshes.push_back(std::move(mesh));
-  scene.instances.push_back(instance);
-  return triangles;
 }
 
 void run_mesh(const MeshCommand& c) {
@@ -276,9 +262,12 @@ void run_mesh(const MeshCommand& c) {
     if (!c.ages.empty()) {
       throw ValueError("--ages makes a growth sequence: use an output ending in .pvd", c.out);
     }
-    graphics::InstancedMesh mesh = load_instanced(c.tree, c.format, options);
+    graphics::InstancedMesh mesh = load_instanced(c.tree, c.format, options, false);
     if (c.leaves) report_missing_leaves(mesh, c.tree);
-    if (!c.obstacles.empty()) j["obstacle_triangles"] = add_obstacles(mesh, c.obstacles, false);
+    if (!c.obstacles.empty()) {
+      j["obstacle_triangles"] = add_scene_obstacles(
+          mesh, environment::read_scene_file(c.obstacles), c.obstacles, false);
+    }
     graphics::write_mesh(mesh, c.out);
     vertices = mesh.vertex_count();
     triangles = mesh.triangle_count();
@@ -311,14 +300,16 @@ void run_render(const RenderCommand& c) {
   graphics::MeshOptions mesh_options;
   set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
   mesh_options.edge_length_m = c.edge_length_m;
-  graphics::InstancedMesh mesh = load_instanced(c.tree, c.format, mesh_options);
+  graphics::InstancedMesh mesh = load_instanced(c.tree, c.format, mesh_options, true);
   if (c.leaves) report_missing_leaves(mesh, c.tree);
   if (!c.color_by.empty()) {
     for (const auto& m : mesh.meshes) (void)m.attribute(c.color_by);  // unknown: ValueError
   }
   // Obstacles take 0 for every attribute; the renderer draws them in stone all the same.
   const std::size_t obstacle_triangles =
-      c.obstacles.empty() ? 0 : add_obstacles(mesh, c.obstacles, true);
+      c.obstacles.empty()
+          ? 0
+          : add_scene_obstacles(mesh, environment::read_scene_file(c.obstacles), c.obstacles, true);
   rerun_under_xvfb_if_needed();
   const graphics::Image image = graphics::render_scene(mesh, options);
   graphics::write_image(image, c.out);
@@ -348,7 +339,7 @@ struct ViewSource {
   // infinity = everything.
   graphics::InstancedMesh at(double age, const graphics::MeshOptions& options,
                              const std::string& format) const {
-    if (kind == InputKind::kScene) return load_scene(path, options);
+    if (kind == InputKind::kScene) return load_scene(path, options, true);
     if (is_compressed(kind)) return mesh_compressed(graph, std::isinf(age) ? -1.0 : age, options);
     graphics::MeshOptions o = options;
     o.max_birth_time = age;

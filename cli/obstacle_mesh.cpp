@@ -27,6 +27,14 @@ void add_triangle(TriangleMesh& mesh, std::uint32_t a, std::uint32_t b, std::uin
   mesh.materials.push_back(Material::kObstacle);
 }
 
+// The triangles from `first` on drawn see-through when the obstacle lets light through.
+void mark_translucency(TriangleMesh& mesh, std::size_t first, double translucency) {
+  if (translucency <= 0.0) return;
+  for (std::size_t t = first; t < mesh.materials.size(); ++t) {
+    mesh.materials[t] = Material::kTranslucentObstacle;
+  }
+}
+
 }  // namespace
 
 void append_box_mesh(const environment::Box& box, TriangleMesh& mesh) {
@@ -111,11 +119,21 @@ void append_triangle_mesh(const environment::TriangleMesh& surface, TriangleMesh
 
 TriangleMesh mesh_obstacles(const environment::Scene& scene, int sphere_segments) {
   TriangleMesh mesh;
-  for (const auto& box : scene.boxes) append_box_mesh(box, mesh);
-  for (const auto& sphere : scene.spheres) {
-    append_sphere_mesh(sphere.center, sphere.radius_m, sphere_segments, mesh);
+  for (const auto& box : scene.boxes) {
+    const std::size_t first = mesh.triangle_count();
+    append_box_mesh(box, mesh);
+    mark_translucency(mesh, first, box.translucency);
   }
-  for (const auto& surface : scene.meshes) append_triangle_mesh(surface, mesh);
+  for (const auto& sphere : scene.spheres) {
+    const std::size_t first = mesh.triangle_count();
+    append_sphere_mesh(sphere.center, sphere.radius_m, sphere_segments, mesh);
+    mark_translucency(mesh, first, sphere.translucency);
+  }
+  for (const auto& surface : scene.meshes) {
+    const std::size_t first = mesh.triangle_count();
+    append_triangle_mesh(surface, mesh);
+    mark_translucency(mesh, first, surface.translucency);
+  }
   return mesh;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
-// Triangle meshes of a growth scene's occluders (environment::Scene, docs/environment.md) for
+// Triangle meshes of a scene's obstacles (environment::Scene, docs/formats.md) for
 // pictures and mesh files: walls and boxes as six flat-shaded quads, spheres as UV spheres,
-// triangle meshes as they are, all of material obstacle. The ground is left out (renders draw
+// triangle meshes as they are, of material obstacle (translucent obstacle when they let light
+// through). The ground is left out (renders draw
 // their own ground plane). Lives in the command line so graphics keeps depending on the core only.
 #include <Eigen/Core>
 
@@ -27,7 +28,8 @@ void append_sphere_mesh(const Eigen::Vector3d& center, double radius_m, int segm
 void append_triangle_mesh(const environment::TriangleMesh& surface, graphics::TriangleMesh& mesh);
 
 // Every box, sphere (solid obstacles, spherical occluders and leaf clusters alike: the scene does
-// not tell them apart) and triangle mesh of the scene, of material kObstacle, without attributes.
+// not tell them apart) and triangle mesh of the scene, without attributes: of material kObstacle,
+// or kTranslucentObstacle when its translucency is above 0.
 graphics::TriangleMesh mesh_obstacles(const environment::Scene& scene,
                                       int sphere_segments = kSphereSegments);
 

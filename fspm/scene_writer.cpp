@@ -9,7 +9,7 @@
 namespace fspm {
 namespace {
 
-using nlohmann::json;
+using json = nlohmann::ordered_json;
 
 template <int N>
 json array(const Eigen::Matrix<double, N, 1>& v) {
@@ -67,13 +67,11 @@ json shape_json(const MeshObstacle& m) {
 }
 
 json plant_json(const ScenePlant& p, const std::string& directory) {
+  // Relative to the written file, so the scene and its plants can move together.
   std::filesystem::path file = p.file;
-  if (!directory.empty() || file.is_relative()) {
-    // Relative to the written file, so the scene and its plants can move together.
-    std::error_code ec;
-    const auto rel = std::filesystem::relative(file, directory.empty() ? "." : directory, ec);
-    if (!ec && !rel.empty()) file = rel;
-  }
+  std::error_code ec;
+  const auto rel = std::filesystem::relative(file, directory.empty() ? "." : directory, ec);
+  if (!ec && !rel.empty()) file = rel;
   json o = {{"file", file.generic_string()},
             {"position", array<3>(p.position)},
             {"rotation_deg", array<3>(p.rotation_deg)},
@@ -106,9 +104,33 @@ json scene_description_json(const SceneDescription& scene, const std::string& di
   return doc;
 }
 
+namespace {
+
+// Top-level keys one a line, lists one entry a line: short enough to read, easy to diff.
+std::string scene_text(const json& doc) {
+  std::string text = "{";
+  const char* separator = "\n";
+  for (const auto& [key, value] : doc.items()) {
+    text += separator + std::string("  ") + json(key).dump() + ": ";
+    separator = ",\n";
+    if (!value.is_array() || value.empty()) {
+      text += value.dump();
+      continue;
+    }
+    text += "[";
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      text += (i ? ",\n    " : "\n    ") + value[i].dump(-1, ' ', false);
+    }
+    text += "\n  ]";
+  }
+  return text + "\n}\n";
+}
+
+}  // namespace
+
 void write_scene_description(const SceneDescription& scene, const std::string& path) {
   const std::string directory = std::filesystem::path(path).parent_path().string();
-  const std::string text = scene_description_json(scene, directory).dump(2) + "\n";
+  const std::string text = scene_text(scene_description_json(scene, directory));
   write_file_atomically(path, [&](std::ostream& out) { out << text; });
 }
 

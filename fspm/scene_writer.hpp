@@ -9,10 +9,12 @@
 
 namespace fspm {
 
-// The scene as JSON; plant files relative to `directory` (the written file's) when they can be.
-nlohmann::json scene_description_json(const SceneDescription& scene, const std::string& directory);
+// The scene as JSON, keys in the order of docs/formats.md; plant files relative to `directory`
+// (the written file's; empty: the working directory).
+nlohmann::ordered_json scene_description_json(const SceneDescription& scene, const std::string& directory);
 
-// Writes atomically (no half-written file); throws IoError when it cannot.
+// Writes atomically (no half-written file), one obstacle or plant a line; throws IoError when it
+// cannot.
 void write_scene_description(const SceneDescription& scene, const std::string& path);
 
 }  // namespace fspm

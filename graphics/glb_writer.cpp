@@ -168,8 +168,10 @@ class GlbBuilder {
     nlohmann::json out = nlohmann::json::array();
     for (Material m : kMaterials) {
       const std::array<float, 3> c = material_color(m);
-      const double roughness = m == Material::kLeaf ? 0.7 : m == Material::kObstacle ? 0.95 : 0.9;
-      const double alpha = m == Material::kCrown ? rounded(kCrownOpacity) : 1.0;
+      const double roughness = m == Material::kLeaf ? 0.7 : is_obstacle(m) ? 0.95 : 0.9;
+      const double alpha = m == Material::kCrown                  ? rounded(kCrownOpacity)
+                           : m == Material::kTranslucentObstacle ? rounded(kTranslucentObstacleOpacity)
+                                                                  : 1.0;
       nlohmann::json material = {
           {"name", material_name(m)},
           {"pbrMetallicRoughness",
@@ -177,7 +179,7 @@ class GlbBuilder {
             {"metallicFactor", 0.0},
             {"roughnessFactor", roughness}}}};
       if (m == Material::kLeaf || m == Material::kCrown) material["doubleSided"] = true;
-      if (m == Material::kCrown) material["alphaMode"] = "BLEND";  // crowns seen through
+      if (alpha < 1.0) material["alphaMode"] = "BLEND";  // crowns and hedges seen through
       out.push_back(std::move(material));
     }
     return out;
@@ -207,7 +209,9 @@ void write_glb(const InstancedMesh& scene, const std::string& path) {
   std::vector<long> index;
   for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
     const TriangleMesh& mesh = scene.meshes[i];
-    const bool obstacles = mesh.triangle_count(Material::kObstacle) == mesh.triangle_count();
+    const bool obstacles = mesh.triangle_count(Material::kObstacle) +
+                               mesh.triangle_count(Material::kTranslucentObstacle) ==
+                           mesh.triangle_count();
     index.push_back(
         glb.add_mesh(mesh, obstacles ? "obstacles" : "substructure_" + std::to_string(i)));
   }

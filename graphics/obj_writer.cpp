@@ -1,5 +1,5 @@
 // Wavefront OBJ with an MTL material library: one material per kind of surface (bark, leaf,
-// obstacle).
+// obstacle, crown, translucent obstacle).
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -17,7 +17,9 @@ void write_mtl(const std::string& path) {
            "newmtl bark\nKa 0 0 0\nKd 0.45 0.32 0.20\nKs 0.05 0.05 0.05\nNs 10\nillum 2\n\n"
            "newmtl leaf\nKa 0 0 0\nKd 0.25 0.55 0.15\nKs 0.10 0.10 0.10\nNs 20\nillum 2\n\n"
            "newmtl obstacle\nKa 0 0 0\nKd 0.62 0.61 0.58\nKs 0.02 0.02 0.02\nNs 5\nillum 2\n\n"
-           "newmtl crown\nKa 0 0 0\nKd 0.35 0.62 0.25\nKs 0.02 0.02 0.02\nNs 5\nd 0.35\nillum 2\n";
+           "newmtl crown\nKa 0 0 0\nKd 0.35 0.62 0.25\nKs 0.02 0.02 0.02\nNs 5\nd 0.35\nillum 2\n\n"
+           "newmtl translucent_obstacle\nKa 0 0 0\nKd 0.80 0.80 0.77\nKs 0.02 0.02 0.02\nNs 5\n"
+           "d 0.4\nillum 2\n";
   });
 }
 

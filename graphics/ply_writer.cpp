@@ -1,5 +1,6 @@
 // Binary little-endian PLY: x y z nx ny nz s t and every attribute as a float vertex property;
-// faces as uchar-counted uint index lists with a uchar material (0 bark, 1 leaf, 2 obstacle).
+// faces as uchar-counted uint index lists with a uchar material (0 bark, 1 leaf, 2 obstacle,
+// 3 crown, 4 translucent obstacle).
 #include <bit>
 #include <cstring>
 #include <ostream>

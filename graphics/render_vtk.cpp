@@ -278,16 +278,17 @@ Image render_with(const RenderOptions& options, Eigen::Vector3f lo, Eigen::Vecto
 }
 
 // Stone: the obstacle colour, flat faces, some ambient light so walls turned away from the key
-// light stay grey rather than black, hardly any shine. Opaque like everything else.
-void stone_look(vtkActor* actor) {
-  const auto rgb = material_rgb(Material::kObstacle);
+// light stay grey rather than black, hardly any shine. Opaque, or a lighter see-through grey for
+// obstacles that let light through.
+void stone_look(vtkActor* actor, Material material = Material::kObstacle) {
+  const auto rgb = material_rgb(material);
   vtkProperty* p = actor->GetProperty();
   p->SetColor(rgb[0] / 255.0, rgb[1] / 255.0, rgb[2] / 255.0);
   p->SetInterpolationToFlat();
   p->SetAmbient(0.35);
   p->SetDiffuse(0.75);
   p->SetSpecular(0.05);
-  p->SetOpacity(1.0);
+  p->SetOpacity(material == Material::kTranslucentObstacle ? kTranslucentObstacleOpacity : 1.0);
 }
 
 // Adds an actor for `mapper` with the shared surface look; the renderer keeps it alive.
@@ -456,15 +457,17 @@ Image render_mesh(const TriangleMesh& mesh, const RenderOptions& options) {
     // Obstacles always in stone, as an actor of their own (lit like stone, and outside the
     // colour scale, which spans the plants' values only).
     const TriangleMesh* plants = &mesh;
-    TriangleMesh without_obstacles;
-    if (mesh.triangle_count(Material::kObstacle) > 0) {
-      vtkNew<vtkPolyData> poly = to_polydata(material_part(mesh, Material::kObstacle), "");
+    TriangleMesh without_obstacles[2];
+    int parts = 0;
+    for (Material material : {Material::kObstacle, Material::kTranslucentObstacle}) {
+      if (mesh.triangle_count(material) == 0) continue;
+      vtkNew<vtkPolyData> poly = to_polydata(material_part(mesh, material), "");
       vtkNew<vtkPolyDataMapper> mapper;
       mapper->SetInputData(poly);
       mapper->ScalarVisibilityOff();
-      stone_look(add_surface_actor(renderer, mapper));
-      without_obstacles = without_material(mesh, Material::kObstacle);
-      plants = &without_obstacles;
+      stone_look(add_surface_actor(renderer, mapper), material);
+      without_obstacles[parts] = without_material(*plants, material);
+      plants = &without_obstacles[parts++];
     }
     if (plants->empty()) return;
     add_plant_actors(renderer, *plants, options);
@@ -509,11 +512,11 @@ Image render_scene(const InstancedMesh& scene, const RenderOptions& options) {
       instances->SetPoints(points);
       instances->GetPointData()->AddArray(orientation);
       instances->GetPointData()->AddArray(scale);
-      for (Material material : kMaterials) {  // obstacles opaque like the rest
+      for (Material material : kMaterials) {
         if (mesh.triangle_count(material) == 0) continue;
         vtkActor* actor = add_glyph_actor(renderer, instances, material_part(mesh, material),
                                           material_rgb(material));
-        if (material == Material::kObstacle) stone_look(actor);
+        if (is_obstacle(material)) stone_look(actor, material);
         if (material == Material::kCrown) crown_look(actor);
       }
     }

@@ -14,6 +14,8 @@ std::string_view material_name(Material material) {
       return "obstacle";
     case Material::kCrown:
       return "crown";
+    case Material::kTranslucentObstacle:
+      return "translucent_obstacle";
     case Material::kBark:
       break;
   }
@@ -28,6 +30,8 @@ std::array<float, 3> material_color(Material material) {
       return {0.62f, 0.61f, 0.58f};
     case Material::kCrown:
       return {0.35f, 0.62f, 0.25f};
+    case Material::kTranslucentObstacle:
+      return {0.80f, 0.80f, 0.77f};
     case Material::kBark:
       break;
   }
@@ -38,6 +42,9 @@ Material material_from_index(int index) {
   if (index == static_cast<int>(Material::kLeaf)) return Material::kLeaf;
   if (index == static_cast<int>(Material::kObstacle)) return Material::kObstacle;
   if (index == static_cast<int>(Material::kCrown)) return Material::kCrown;
+  if (index == static_cast<int>(Material::kTranslucentObstacle)) {
+    return Material::kTranslucentObstacle;
+  }
   return Material::kBark;
 }
 

@@ -2,8 +2,9 @@
 // TriangleMesh: the indexed triangle soup every exporter and renderer consumes. Positions,
 // normals and texture coordinates are per vertex; named float attributes (age, order, light,
 // pruned, ...) are per vertex too so colouring survives interpolation in any viewer. Each
-// triangle carries a material (bark, leaf, crown: the translucent volume of a leaf cluster, or
-// obstacle: walls and boxes of a growth scene) so OBJ/MTL and glTF can split them.
+// triangle carries a material (bark, leaf, crown: the translucent volume of a leaf cluster,
+// obstacle: walls and boxes of a scene, or translucent obstacle: those letting light through) so
+// OBJ/MTL and glTF can split them.
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
@@ -14,19 +15,34 @@
 
 namespace fspm::graphics {
 
-enum class Material : std::uint8_t { kBark = 0, kLeaf = 1, kObstacle = 2, kCrown = 3 };
+enum class Material : std::uint8_t {
+  kBark = 0,
+  kLeaf = 1,
+  kObstacle = 2,
+  kCrown = 3,
+  kTranslucentObstacle = 4
+};
 
-inline constexpr std::array<Material, 4> kMaterials = {Material::kBark, Material::kLeaf,
-                                                       Material::kObstacle, Material::kCrown};
+inline constexpr std::array<Material, 5> kMaterials = {Material::kBark, Material::kLeaf,
+                                                       Material::kObstacle, Material::kCrown,
+                                                       Material::kTranslucentObstacle};
 
-// Opacity of the crown material (leaf-cluster volumes seen through); the others are opaque.
+// Opacity of the crown material (leaf-cluster volumes seen through) and of translucent obstacles
+// (any translucency above 0: hedges, nets, leaf clusters of a scene); the others are opaque.
 inline constexpr float kCrownOpacity = 0.35f;
+inline constexpr float kTranslucentObstacleOpacity = 0.4f;
 
-// "bark", "leaf", "obstacle", "crown".
+// True for both obstacle materials.
+inline bool is_obstacle(Material m) {
+  return m == Material::kObstacle || m == Material::kTranslucentObstacle;
+}
+
+// "bark", "leaf", "obstacle", "crown", "translucent_obstacle".
 std::string_view material_name(Material material);
 
 // The material's diffuse colour, linear RGB in [0, 1], shared by every renderer and exporter:
-// brown bark, green leaves, neutral grey stone for obstacles, a lighter green for crowns.
+// brown bark, green leaves, neutral grey stone for obstacles, a lighter green for crowns, a
+// lighter grey for translucent obstacles.
 std::array<float, 3> material_color(Material material);
 
 // Material from the byte stored in PLY and VTP files; unknown values are bark.

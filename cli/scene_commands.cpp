@@ -1,0 +1,54 @@
+// fspm scene upgrade: scene files of an earlier layout rewritten in the current one.
+#include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
+#include "fspm/scene_reader.hpp"
+#include "fspm/scene_writer.hpp"
+
+namespace fspm::cli {
+namespace {
+
+struct UpgradeOptions {
+  std::string input;
+  std::string out;
+  bool json = false;
+};
+
+void run_upgrade(const UpgradeOptions& o) {
+  refuse_overwriting_input(o.out, {o.input});
+  const SceneDescription scene = read_scene_description(o.input);
+  write_scene_description(scene, o.out);
+  if (o.json) {
+    print_json({{"file", o.input},
+                {"output", o.out},
+                {"obstacles", scene.obstacles.size()},
+                {"ground", scene.ground.has_value()},
+                {"plants", scene.plants.size()}});
+    return;
+  }
+  spdlog::info("wrote {} ({} obstacles, {} plants{})", o.out, scene.obstacles.size(),
+               scene.plants.size(), scene.ground ? ", ground" : "");
+}
+
+}  // namespace
+
+void add_scene_commands(CLI::App& app) {
+  CLI::App* scene = app.add_subcommand("scene", "Scene files (docs/formats.md)");
+  scene->require_subcommand(1);
+  auto upgrade = std::make_shared<UpgradeOptions>();
+  CLI::App* u = scene->add_subcommand(
+      "upgrade",
+      "Rewrite a scene file of an earlier layout (growth scene with occluders, or plant scene "
+      "with instances) in the current one; plant files stay where they are");
+  u->add_option("SCENE", upgrade->input, "Scene file (.json)")->required();
+  u->add_option("-o,--output", upgrade->out, "The upgraded scene (.json, not SCENE itself)")
+      ->required();
+  u->add_flag("--json", upgrade->json, "Machine-readable JSON on stdout");
+  u->callback([upgrade] { run_upgrade(*upgrade); });
+}
+
+}  // namespace fspm::cli

@@ -1,0 +1,33 @@
+#include "cli/scene_obstacles.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include "cli/obstacle_crop.hpp"
+#include "cli/obstacle_mesh.hpp"
+
+namespace fspm::cli {
+
+std::size_t add_scene_obstacles(graphics::InstancedMesh& scene, environment::Scene obstacles,
+                                const std::string& file, bool near_plants) {
+  if (near_plants) {
+    Eigen::Vector3f lo, hi;
+    scene.bounds(lo, hi);
+    Eigen::Vector2d region_lo, region_hi;
+    obstacle_region(lo.cast<double>(), hi.cast<double>(), region_lo, region_hi);
+    obstacles = obstacles_near(obstacles, region_lo, region_hi);
+  }
+  graphics::TriangleMesh mesh = mesh_obstacles(obstacles);
+  const std::size_t triangles = mesh.triangle_count();
+  if (triangles == 0) {
+    spdlog::warn("{}: no walls, boxes, spheres or meshes{} to draw", file,
+                 near_plants ? " near the plants" : "");
+    return 0;
+  }
+  graphics::MeshInstance instance;
+  instance.mesh = static_cast<std::uint32_t>(scene.meshes.size());
+  scene.meshes.push_back(std::move(mesh));
+  scene.instances.push_back(instance);
+  return triangles;
+}
+
+}  // namespace fspm::cli
