@@ -107,7 +107,9 @@ TEST(ObstacleMesh, SceneBoxesSpheresAndMeshesWithoutTheGround) {
     ]})");
   const TriangleMesh mesh = mesh_obstacles(scene, 8);
   EXPECT_EQ(mesh.triangle_count(), 12u + 12u + 8u * (2u * 4u - 2u) + 1u);
-  EXPECT_EQ(mesh.triangle_count(Material::kObstacle), mesh.triangle_count());
+  // The sphere lets light through (0.5^0.5 by Pirk eq. 4.4): drawn see-through; the rest opaque.
+  EXPECT_EQ(mesh.triangle_count(Material::kTranslucentObstacle), 8u * (2u * 4u - 2u));
+  EXPECT_EQ(mesh.triangle_count(Material::kObstacle), 12u + 12u + 1u);
   EXPECT_EQ(mesh.normals.size(), mesh.vertex_count());
   // The mesh's triangle faces up (counter-clockwise from above): so does its normal.
   EXPECT_NEAR(mesh.normals.back().z(), 1.0f, 1e-6f);

@@ -1,0 +1,125 @@
+// One scene for every command: renders and meshes of a scene file draw its obstacles, light reads
+// it, and fspm scene upgrade rewrites the earlier layouts.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "graphics/image.hpp"
+#include "tests/cli/run_command.hpp"
+#include "tests/cli/small_tree.hpp"
+#include "tests/graphics/image_checks.hpp"
+
+namespace fspm {
+namespace {
+
+namespace fs = std::filesystem;
+using graphics::testing::stone_pixels;
+using testing::read_text;
+using testing::run_fspm;
+using testing::scratch_dir;
+using testing::write_small_tree;
+using testing::write_text;
+
+// The small tree (2 m tall at the origin) with, when `wall`, a wall 1.2 m high across the front
+// camera's view, 0.6 m before the trunk.
+std::string write_tree_scene(const fs::path& dir, bool wall) {
+  write_small_tree(dir);
+  const std::string path = (dir / (wall ? "walled.json" : "open.json")).string();
+  write_text(path, std::string(R"({"fspm_scene": 2, "ground": {"z": 0}, "obstacles": [)") +
+                       (wall ? R"({"type": "wall", "from": [-0.6, -0.6], "to": [0.6, -0.6],
+                                  "height": 1.2, "thickness": 0.1})"
+                             : "") +
+                       R"(], "plants": [{"file": "t.tree"}]})");
+  return path;
+}
+
+bool no_renderer(const testing::CommandResult& r) {
+  return r.exit_code != 0 && (r.err.find("without VTK") != std::string::npos ||
+                              r.err.find("no X display") != std::string::npos);
+}
+
+TEST(SceneCli, RenderOfAScenePlantBesideAWallShowsTheWall) {
+  const auto dir = scratch_dir("scene_render");
+  const std::string common = " --view front --size 200x160 --no-ground";
+  auto r = run_fspm("render " + write_tree_scene(dir, false) + " -o " +
+                    (dir / "open.png").string() + common);
+  if (no_renderer(r)) GTEST_SKIP() << r.err;
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_fspm("render " + write_tree_scene(dir, true) + " -o " + (dir / "walled.png").string() +
+               common);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // The wall covers the lower part of the framed tree: an eighth of the picture or more in stone.
+  EXPECT_LT(stone_pixels(graphics::read_image((dir / "open.png").string())), 100u);
+  EXPECT_GT(stone_pixels(graphics::read_image((dir / "walled.png").string())), 200u * 160u / 8);
+}
+
+TEST(SceneCli, RenderOfAGrowthSceneWithoutPlantsDrawsItsObstacles) {
+  const auto dir = scratch_dir("scene_render_walls");
+  const std::string scene = (dir / "wall.json").string();
+  write_text(scene, R"({"sky": {"brightest": [0, 0, 1]}, "occluders": [{"type": "ground", "z": 0},
+      {"type": "wall", "from": [2.5, -20], "to": [2.5, 20], "height": 6, "thickness": 0.2}]})");
+  auto r = run_fspm("render " + scene + " -o " + (dir / "w.png").string() +
+                    " --view iso --size 200x160");
+  if (no_renderer(r)) GTEST_SKIP() << r.err;
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(stone_pixels(graphics::read_image((dir / "w.png").string())), 200u * 160u / 10);
+}
+
+std::size_t faces_after(const std::string& obj, const std::string& material) {
+  const auto at = obj.find("usemtl " + material + "\n");
+  if (at == std::string::npos) return 0;
+  std::size_t n = 0;
+  const auto end = obj.find("usemtl", at + 1);
+  for (auto f = obj.find("\nf ", at); f < end && f != std::string::npos; f = obj.find("\nf ", f + 1)) {
+    ++n;
+  }
+  return n;
+}
+
+TEST(SceneCli, MeshOfASceneHasItsOpaqueAndTranslucentObstaclesWhole) {
+  const auto dir = scratch_dir("scene_mesh");
+  write_small_tree(dir);
+  const std::string scene = (dir / "s.json").string();
+  write_text(scene, R"({"fspm_scene": 2, "obstacles": [
+      {"type": "wall", "from": [30, -20], "to": [30, 20], "height": 6},
+      {"type": "box", "center": [0, 3, 1], "size": [1, 1, 2], "translucency": 0.5}],
+      "plants": [{"file": "t.tree"}]})");
+  auto r = run_fspm("mesh " + scene + " -o " + (dir / "s.obj").string() + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string obj = read_text(dir / "s.obj");
+  EXPECT_EQ(faces_after(obj, "obstacle"), 12u);  // the far wall too: mesh files keep everything
+  EXPECT_EQ(faces_after(obj, "translucent_obstacle"), 12u);
+}
+
+TEST(SceneCli, UpgradeRewritesEarlierLayoutsWithTheSameLight) {
+  const auto dir = scratch_dir("scene_upgrade");
+  const std::string old_scene = (dir / "old.json").string();
+  const std::string old_text = R"({"gamma0": 0.3, "occluders": [{"type": "ground"},
+      {"type": "cluster", "center": [0, 0, 3], "radius": 1},
+      {"type": "box", "min": [1, -2, 0], "max": [1.5, 2, 4]}]})";
+  write_text(old_scene, old_text);
+  write_text(dir / "points.csv", "x,y,z\n0,0,0\n2,0,1\n-1,1,0.5\n");
+  const std::string upgraded = (dir / "new.json").string();
+  auto r = run_fspm("scene upgrade " + old_scene + " -o " + upgraded + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["obstacles"], 2);
+  const auto doc = nlohmann::json::parse(read_text(upgraded));
+  EXPECT_EQ(doc["fspm_scene"], 2);
+  EXPECT_FALSE(doc.contains("occluders"));
+  EXPECT_EQ(doc["ground"]["z"], 0.0);
+  const std::string points = " --points " + (dir / "points.csv").string();
+  const auto before = run_fspm("light --scene " + old_scene + points);
+  const auto after = run_fspm("light --scene " + upgraded + points);
+  ASSERT_EQ(before.exit_code, 0) << before.err;
+  ASSERT_EQ(after.exit_code, 0) << after.err;
+  EXPECT_EQ(after.out, before.out);
+  EXPECT_NE(before.out.find("\n2,0,1,"), std::string::npos);  // the light was computed
+  // Never over the input, which stays as it was.
+  r = run_fspm("scene upgrade " + old_scene + " -o " + old_scene);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(read_text(old_scene), old_text);
+}
+
+}  // namespace
+}  // namespace fspm
