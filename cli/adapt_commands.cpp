@@ -190,7 +190,7 @@ void add_adapt_commands(CLI::App& app) {
                 "Input tree files (.tree, .treeb, .nwk, .mtg), grown without obstacles")
       ->required();
   a->add_option("--scene", opt->scenes,
-                "Scene file (JSON, see docs/environment.md); repeat it to re-adapt the same "
+                "Scene file (JSON, see docs/formats.md); repeat it to re-adapt the same "
                 "analysed trees to several scenes (-o is then a directory, one folder per scene)")
       ->required()
       ->expected(1)

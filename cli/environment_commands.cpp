@@ -170,7 +170,7 @@ void add_environment_commands(CLI::App& app) {
   auto light = std::make_shared<LightOptions>();
   CLI::App* l = app.add_subcommand(
       "light", "Sky light (Pirk eq. 4.3) and mean light direction at points of a scene");
-  l->add_option("--scene", light->scene, "Scene file (JSON, see docs/environment.md)")->required();
+  l->add_option("--scene", light->scene, "Scene file (JSON, see docs/formats.md)")->required();
   l->add_option("--points", light->points, "Points (CSV with header x,y,z)")->required();
   l->add_option("--directions", light->directions,
                 "Stratified sky directions (default: the scene's sky.directions, 256)");
@@ -189,7 +189,7 @@ void add_environment_commands(CLI::App& app) {
                 "With --preset: shadow_grid (default), sky or space_colonization");
   g->add_option("--tropisms", grow->tropisms,
                 "With --preset: Pirk's tropism pairing, text (default) or appendix");
-  g->add_option("--scene", grow->scene, "Scene with obstacles and sky (JSON)");
+  g->add_option("--scene", grow->scene, "Scene with obstacles and sky (JSON, see docs/formats.md)");
   g->add_option("--years", grow->years, "Growth cycles (default: from the parameters)")
       ->check(number_in(0, environment::kMaxYears));
   g->add_option("--seed", grow->seed, "Random seed (default: from the parameters)")

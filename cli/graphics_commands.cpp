@@ -513,8 +513,9 @@ void add_graphics_commands(CLI::App& app) {
   m->add_flag("--reynolds-width", mesh->reynolds_width,
               "Continuous mode: radius along each axis from Reynolds' expression 1");
   m->add_option("--obstacles", mesh->obstacles,
-                "Growth scene file (.json, docs/environment.md) whose walls, boxes, spheres and "
-                "meshes are added, whole, as material obstacle (not with .pvd)");
+                "Scene file (.json, docs/formats.md) whose walls, boxes, spheres and meshes are "
+                "added, whole, as material obstacle (not with .pvd; a scene given as TREE adds "
+                "its own)");
   m->add_flag("--json", mesh->json, "Machine-readable JSON on stdout");
   m->callback([mesh] { run_mesh(*mesh); });
 
@@ -541,9 +542,9 @@ void add_graphics_commands(CLI::App& app) {
                 "Parallel projection whose image height spans this many metres (a known scale)")
       ->check(positive_number(1e6));
   r->add_option("--obstacles", render->obstacles,
-                "Growth scene file (.json, docs/environment.md) whose walls, boxes, spheres and "
-                "meshes near the tree are drawn in stone (long walls cut to the tree's "
-                "surroundings)");
+                "Scene file (.json, docs/formats.md) whose walls, boxes, spheres and meshes near "
+                "the tree are drawn in stone (long walls cut to the tree's surroundings; a scene "
+                "given as TREE draws its own)");
   r->add_flag("--json", render->json, "Machine-readable JSON on stdout");
   r->callback([render] { run_render(*render); });
 
