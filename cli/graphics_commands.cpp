@@ -265,8 +265,8 @@ void run_mesh(const MeshCommand& c) {
     graphics::InstancedMesh mesh = load_instanced(c.tree, c.format, options, false);
     if (c.leaves) report_missing_leaves(mesh, c.tree);
     if (!c.obstacles.empty()) {
-      j["obstacle_triangles"] = add_scene_obstacles(
-          mesh, environment::read_scene_file(c.obstacles), c.obstacles, false);
+      j["obstacle_triangles"] =
+          add_scene_obstacles(mesh, environment::read_scene_file(c.obstacles), c.obstacles, false);
     }
     graphics::write_mesh(mesh, c.out);
     vertices = mesh.vertex_count();

@@ -37,8 +37,8 @@ struct ObstacleSurface {
 struct SphereObstacle {
   Eigen::Vector3d center = Eigen::Vector3d::Zero();
   double radius_m = 1.0;
-  bool cluster = false;           // written as type "cluster" (a leaf cluster)
-  std::optional<double> gamma0;   // base translucency of Pirk eq. 4.4
+  bool cluster = false;          // written as type "cluster" (a leaf cluster)
+  std::optional<double> gamma0;  // base translucency of Pirk eq. 4.4
 };
 
 // A box of centre and size, optionally rotated by angle_deg about axis.

@@ -23,9 +23,9 @@ SphereObstacle sphere(const JsonFields& f, const json& o, const std::string& pat
 }
 
 BoxObstacle box(const JsonFields& f, const json& o, const std::string& path) {
-  f.check_keys(o, path,
-               {"type", "min", "max", "center", "size", "axis", "angle_deg", "translucency",
-                "solid"});
+  f.check_keys(
+      o, path,
+      {"type", "min", "max", "center", "size", "axis", "angle_deg", "translucency", "solid"});
   BoxObstacle b;
   if (o.contains("min") || o.contains("max")) {
     const Eigen::Vector3d lo = f.vec<3>(o, path, "min");
@@ -84,7 +84,8 @@ MeshObstacle mesh(const JsonFields& f, const json& o, const std::string& path) {
     if (!t.is_array() || t.size() != 3) f.fail(p, what, &t);
     Eigen::Vector3i tri;
     for (int k = 0; k < 3; ++k) {
-      if (!t[k].is_number_integer() || t[k].get<long long>() < 0 || t[k].get<long long>() >= count) {
+      if (!t[k].is_number_integer() || t[k].get<long long>() < 0 ||
+          t[k].get<long long>() >= count) {
         f.fail(p, what, &t);
       }
       tri[k] = t[k].get<int>();

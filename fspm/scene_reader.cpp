@@ -20,7 +20,8 @@ SceneSky read_sky(const JsonFields& f, const json& s, const std::string& path) {
                {"model", "brightest", "sun", "latitude_deg", "day_of_year", "directions",
                 "significance", "analytic"});
   SceneSky sky;
-  if (s.contains("model") && s.at("model") != "cos2") f.fail(path + "/model", "\"cos2\"", &s.at("model"));
+  if (s.contains("model") && s.at("model") != "cos2")
+    f.fail(path + "/model", "\"cos2\"", &s.at("model"));
   if (s.contains("brightest") + s.contains("sun") + s.contains("latitude_deg") > 1) {
     f.fail(path, "only one of brightest, sun, latitude_deg");
   }
@@ -58,7 +59,8 @@ SceneSky read_sky(const JsonFields& f, const json& s, const std::string& path) {
 
 ScenePlant read_plant(const JsonFields& f, const json& p, const std::string& path,
                       const std::filesystem::path& base) {
-  if (!p.is_object()) f.fail(path, "a plant object with file, position, rotation_deg, scale, age", &p);
+  if (!p.is_object())
+    f.fail(path, "a plant object with file, position, rotation_deg, scale, age", &p);
   f.check_keys(p, path, {"file", "position", "rotation_deg", "scale", "age"});
   ScenePlant plant;
   std::filesystem::path file =

@@ -55,9 +55,8 @@ json shape_json(const BoxObstacle& b) {
   return o;
 }
 json shape_json(const WallObstacle& w) {
-  return {{"type", "wall"},          {"from", array<2>(w.from)},
-          {"to", array<2>(w.to)},     {"height", w.height_m},
-          {"thickness", w.thickness_m}, {"base", w.base_m}};
+  return {{"type", "wall"},       {"from", array<2>(w.from)},   {"to", array<2>(w.to)},
+          {"height", w.height_m}, {"thickness", w.thickness_m}, {"base", w.base_m}};
 }
 json shape_json(const MeshObstacle& m) {
   json vertices = json::array(), triangles = json::array();

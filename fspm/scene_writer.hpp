@@ -11,7 +11,8 @@ namespace fspm {
 
 // The scene as JSON, keys in the order of docs/formats.md; plant files relative to `directory`
 // (the written file's; empty: the working directory).
-nlohmann::ordered_json scene_description_json(const SceneDescription& scene, const std::string& directory);
+nlohmann::ordered_json scene_description_json(const SceneDescription& scene,
+                                              const std::string& directory);
 
 // Writes atomically (no half-written file), one obstacle or plant a line; throws IoError when it
 // cannot.

@@ -169,9 +169,10 @@ class GlbBuilder {
     for (Material m : kMaterials) {
       const std::array<float, 3> c = material_color(m);
       const double roughness = m == Material::kLeaf ? 0.7 : is_obstacle(m) ? 0.95 : 0.9;
-      const double alpha = m == Material::kCrown                  ? rounded(kCrownOpacity)
-                           : m == Material::kTranslucentObstacle ? rounded(kTranslucentObstacleOpacity)
-                                                                  : 1.0;
+      const double alpha = m == Material::kCrown ? rounded(kCrownOpacity)
+                           : m == Material::kTranslucentObstacle
+                               ? rounded(kTranslucentObstacleOpacity)
+                               : 1.0;
       nlohmann::json material = {
           {"name", material_name(m)},
           {"pbrMetallicRoughness",

@@ -71,7 +71,8 @@ std::size_t faces_after(const std::string& obj, const std::string& material) {
   if (at == std::string::npos) return 0;
   std::size_t n = 0;
   const auto end = obj.find("usemtl", at + 1);
-  for (auto f = obj.find("\nf ", at); f < end && f != std::string::npos; f = obj.find("\nf ", f + 1)) {
+  for (auto f = obj.find("\nf ", at); f < end && f != std::string::npos;
+       f = obj.find("\nf ", f + 1)) {
     ++n;
   }
   return n;

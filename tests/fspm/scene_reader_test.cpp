@@ -147,8 +147,9 @@ Error error_of(const std::string& text) {
 
 TEST(SceneReader, ErrorsNameFileLinePathAndExpectation) {
   // Line 3 holds the misspelt key.
-  Error e = error_of("{\"obstacles\": [\n  {\"type\": \"wall\", \"from\": [0, 0], \"to\": [1, 0],\n"
-                     "   \"heigth\": 2}]}");
+  Error e = error_of(
+      "{\"obstacles\": [\n  {\"type\": \"wall\", \"from\": [0, 0], \"to\": [1, 0],\n"
+      "   \"heigth\": 2}]}");
   EXPECT_EQ(e.file(), "s.json");
   EXPECT_EQ(e.line(), 3);
   EXPECT_EQ(e.column(), 4);
