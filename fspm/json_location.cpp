@@ -86,7 +86,10 @@ class Walker {
   }
   // From '[': to the start of element `index`; false when absent.
   bool enter_element(const std::string& index) {
-    if (index.empty() || index.find_first_not_of("0123456789") != std::string::npos) return false;
+    if (index.empty() || index.size() > 18 ||
+        index.find_first_not_of("0123456789") != std::string::npos) {
+      return false;
+    }
     const std::size_t wanted = std::stoul(index);
     ++pos_;
     skip_space();

@@ -131,10 +131,10 @@ void bind_mesh(py::module_& m) {
               if (*material == gr::material_name(m)) return mesh.triangle_count(m);
             }
             throw ValueError("unknown material '" + *material +
-                             "' (expected bark, leaf, obstacle or crown)");
+                             "' (expected bark, leaf, obstacle, crown or translucent_obstacle)");
           },
           py::arg("material") = py::none(),
-          "Triangles, or those of 'bark', 'leaf', 'obstacle' or 'crown'")
+          "Triangles, or those of 'bark', 'leaf', 'obstacle', 'crown' or 'translucent_obstacle'")
       .def_property_readonly(
           "positions",
           [](py::object self) {

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -98,8 +99,14 @@ TEST_F(ObstacleMaterial, GlbHasOneMaterialPerKind) {
   std::uint32_t json_len = 0;
   std::memcpy(&json_len, data.data() + 12, 4);
   const auto doc = nlohmann::json::parse(data.substr(20, json_len));
-  ASSERT_EQ(doc["materials"].size(), 4u);
+  ASSERT_EQ(doc["materials"].size(), 5u);
   EXPECT_EQ(doc["materials"][2]["name"], "obstacle");
+  EXPECT_FALSE(doc["materials"][2].contains("alphaMode"));  // stone is opaque
+  // Obstacles that let light through: blended at their opacity.
+  EXPECT_EQ(doc["materials"][4]["name"], "translucent_obstacle");
+  EXPECT_EQ(doc["materials"][4]["alphaMode"], "BLEND");
+  EXPECT_NEAR(doc["materials"][4]["pbrMetallicRoughness"]["baseColorFactor"][3].get<double>(),
+              0.4, 1e-3);
   // Leaf-cluster crowns are seen through: blended, alpha the crown opacity.
   EXPECT_EQ(doc["materials"][3]["name"], "crown");
   EXPECT_EQ(doc["materials"][3]["alphaMode"], "BLEND");
@@ -138,6 +145,39 @@ TEST_F(ObstacleMaterial, RendersDrawTheStoneInFlatInstancedAndColouredPaths) {
   o.color_by = "light";  // the flattened scene: obstacles in stone, not mapped to light = 0
   o.scalar_bar = false;
   EXPECT_GT(stone_pixels(render_scene(scene, o)), 400u);
+}
+
+// Grey pixels no brighter than 200: lit stone (about 160), not stone blended into the pale sky.
+std::size_t dark_grey_pixels(const Image& image) {
+  std::size_t n = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const auto* p = image.pixel(x, y);
+      const int lo = std::min({p[0], p[1], p[2]}), hi = std::max({p[0], p[1], p[2]});
+      if (hi - lo < 24 && hi > 60 && hi <= 200) ++n;
+    }
+  }
+  return n;
+}
+
+// A translucent obstacle is blended at opacity 0.4 with what lies behind it (the pale sky here):
+// its pixels are far lighter than the same square's opaque stone.
+TEST_F(ObstacleMaterial, TranslucentObstaclesAreSeenThrough) {
+  if (!render_available()) GTEST_SKIP() << "built without VTK";
+  if (!display_available()) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
+  RenderOptions o;
+  o.width = 200;
+  o.height = 160;
+  o.view = View::kFront;
+  o.ground = false;
+  TriangleMesh clear = tree_;
+  TriangleMesh square = stone_square(0.5f, -0.5f);
+  for (auto& m : square.materials) m = Material::kTranslucentObstacle;
+  clear.append(square);
+  const std::size_t opaque = dark_grey_pixels(render_mesh(mesh_, o));
+  const std::size_t translucent = dark_grey_pixels(render_mesh(clear, o));
+  EXPECT_GT(opaque, 400u);
+  EXPECT_LT(translucent, opaque / 2);
 }
 
 TEST_F(ObstacleMaterial, ViewerDrawsTheStone) {
