@@ -265,9 +265,9 @@ void run_mesh(const MeshCommand& c) {
     graphics::InstancedMesh mesh = load_instanced(c.tree, c.format, options, false);
     if (c.leaves) report_missing_leaves(mesh, c.tree);
     if (!c.obstacles.empty()) {
-      j["obstacle_triangles"] =
-          add_scene_obstacles(mesh, environment::read_scene_file(c.obstacles), c.obstacles, false);
+      add_scene_obstacles(mesh, environment::read_scene_file(c.obstacles), c.obstacles, false);
     }
+    j["obstacle_triangles"] = obstacle_triangle_count(mesh);
     graphics::write_mesh(mesh, c.out);
     vertices = mesh.vertex_count();
     triangles = mesh.triangle_count();
@@ -306,10 +306,10 @@ void run_render(const RenderCommand& c) {
     for (const auto& m : mesh.meshes) (void)m.attribute(c.color_by);  // unknown: ValueError
   }
   // Obstacles take 0 for every attribute; the renderer draws them in stone all the same.
-  const std::size_t obstacle_triangles =
-      c.obstacles.empty()
-          ? 0
-          : add_scene_obstacles(mesh, environment::read_scene_file(c.obstacles), c.obstacles, true);
+  if (!c.obstacles.empty()) {
+    add_scene_obstacles(mesh, environment::read_scene_file(c.obstacles), c.obstacles, true);
+  }
+  const std::size_t obstacle_triangles = obstacle_triangle_count(mesh);
   rerun_under_xvfb_if_needed();
   const graphics::Image image = graphics::render_scene(mesh, options);
   graphics::write_image(image, c.out);

@@ -30,4 +30,14 @@ std::size_t add_scene_obstacles(graphics::InstancedMesh& scene, environment::Sce
   return triangles;
 }
 
+std::size_t obstacle_triangle_count(const graphics::InstancedMesh& scene) {
+  std::size_t n = 0;
+  for (const graphics::MeshInstance& instance : scene.instances) {
+    const graphics::TriangleMesh& mesh = scene.meshes[instance.mesh];
+    n += mesh.triangle_count(graphics::Material::kObstacle) +
+         mesh.triangle_count(graphics::Material::kTranslucentObstacle);
+  }
+  return n;
+}
+
 }  // namespace fspm::cli

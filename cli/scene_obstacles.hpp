@@ -16,4 +16,8 @@ namespace fspm::cli {
 std::size_t add_scene_obstacles(graphics::InstancedMesh& scene, environment::Scene obstacles,
                                 const std::string& file, bool near_plants);
 
+// Triangles of material obstacle or translucent obstacle in the placed scene (each instance
+// counted), for the --json reports of render and mesh.
+std::size_t obstacle_triangle_count(const graphics::InstancedMesh& scene);
+
 }  // namespace fspm::cli

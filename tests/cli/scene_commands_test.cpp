@@ -88,6 +88,7 @@ TEST(SceneCli, MeshOfASceneHasItsOpaqueAndTranslucentObstaclesWhole) {
       "plants": [{"file": "t.tree"}]})");
   auto r = run_fspm("mesh " + scene + " -o " + (dir / "s.obj").string() + " --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["obstacle_triangles"], 24);
   const std::string obj = read_text(dir / "s.obj");
   EXPECT_EQ(faces_after(obj, "obstacle"), 12u);  // the far wall too: mesh files keep everything
   EXPECT_EQ(faces_after(obj, "translucent_obstacle"), 12u);
