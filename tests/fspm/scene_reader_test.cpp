@@ -171,6 +171,19 @@ TEST(SceneReader, ErrorsNameFileLinePathAndExpectation) {
   EXPECT_THROW(parse_scene_description("{\n\"sky\": {,}}", "s.json"), ParseError);
 }
 
+TEST(SceneReader, ExampleScenesReadWithTheirPlantFiles) {
+  const std::string examples = std::string(FSPM_SOURCE_DIR) + "/examples/";
+  const SceneDescription site = read_scene_description(examples + "environment/site_scene.json");
+  EXPECT_EQ(site.obstacles.size(), 2u);
+  ASSERT_EQ(site.plants.size(), 1u);
+  EXPECT_TRUE(fs::exists(site.plants[0].file)) << site.plants[0].file;
+  const SceneDescription forest = read_scene_description(examples + "graphics/forest_scene.json");
+  EXPECT_EQ(forest.plants.size(), 200u);
+  for (const char* file : {"environment/wall_scene.json", "environment/issue_scene.json"}) {
+    EXPECT_FALSE(read_scene_description(examples + file).obstacles.empty()) << file;
+  }
+}
+
 TEST(JsonLocation, FindsKeysAndElementsByHand) {
   const std::string text = "{\"a\": [1,\n  {\"b\": \"x,]\", \"c\": 2}],\n \"d\": {}}";
   EXPECT_EQ(json_pointer_position(text, "/a").line, 1);
