@@ -224,7 +224,8 @@ void bind_scene(py::module_& m) {
         py::gil_scoped_release release;
         return env::read_scene_file(path);
       },
-      py::arg("path"), "Read a scene file (JSON, docs/environment.md)");
+      py::arg("path"),
+      "Read the sky and obstacles of a scene file (JSON, docs/formats.md; plants are ignored)");
   m.def(
       "parse_scene_json",
       [](py::handle text) {
