@@ -84,6 +84,7 @@ struct ScenePlant {
 };
 
 struct SceneDescription {
+  std::string comment;  // free text, kept by fspm scene upgrade
   SceneSky sky;
   std::optional<double> gamma0;  // default base translucency of leaf clusters
   std::optional<SceneGround> ground;

@@ -114,6 +114,7 @@ SceneDescription parse_scene_description(std::string_view text, const std::strin
   if (!doc.is_object()) f.fail("", "a JSON object with sky, ground, obstacles and plants", &doc);
   check_top_keys(f, doc);
   SceneDescription scene;
+  if (doc.contains("comment")) scene.comment = f.text(doc, "", "comment", "a non-empty text");
   if (doc.contains("sky")) scene.sky = read_sky(f, doc.at("sky"), "/sky");
   scene.gamma0 =
       f.optional_number(doc, "", "gamma0", 0.0, 1.0, "a base cluster translucency in [0, 1]");

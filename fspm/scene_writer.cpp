@@ -83,6 +83,7 @@ json plant_json(const ScenePlant& p, const std::string& directory) {
 
 json scene_description_json(const SceneDescription& scene, const std::string& directory) {
   json doc = {{"fspm_scene", kSceneVersion}};
+  if (!scene.comment.empty()) doc["comment"] = scene.comment;
   doc["sky"] = sky_json(scene.sky);
   if (scene.gamma0) doc["gamma0"] = *scene.gamma0;
   if (scene.ground) {

@@ -16,6 +16,7 @@ namespace fs = std::filesystem;
 
 const char* const kCurrent = R"({
   "fspm_scene": 2,
+  "comment": "a site",
   "sky": {"sun": {"elevation_deg": 40, "azimuth_deg": 180}, "directions": 64},
   "gamma0": 0.4,
   "ground": {"z": -0.5},
@@ -33,6 +34,7 @@ const char* const kCurrent = R"({
 
 TEST(SceneReader, ReadsTheCurrentLayout) {
   const SceneDescription s = parse_scene_description(kCurrent, "/data/site/scene.json");
+  EXPECT_EQ(s.comment, "a site");
   EXPECT_EQ(s.sky.source, SkySource::kSun);
   EXPECT_EQ(s.sky.sun_elevation_deg, 40.0);
   EXPECT_EQ(s.sky.sun_azimuth_deg, 180.0);
@@ -87,6 +89,7 @@ TEST(SceneReader, ReadsBothEarlierLayouts) {
 }
 
 void expect_same(const SceneDescription& a, const SceneDescription& b) {
+  EXPECT_EQ(a.comment, b.comment);
   EXPECT_EQ(a.sky.source, b.sky.source);
   EXPECT_EQ(a.sky.sun_elevation_deg, b.sky.sun_elevation_deg);
   EXPECT_EQ(a.sky.directions, b.sky.directions);
