@@ -1,8 +1,8 @@
 // Developmental stages (Pirk chapter 5): the time to compute one stage, and the analysis, for
 // trees of about 2 500 and 11 000 branches (preset A grown 20 and 30 years) and 32 767 and
-// 65 535 branches (ABOP eq. 1.9 at n = 15 and 16). Pirk Table 5.2: 13.0 ms for 3 813 branches,
-// 49.1 ms for 10 623, 76.4 ms for 43 466 ("model" time). Goal: under 1 ms for 43 000 branches
-// on one core, so that a slider moves at display rate.
+// 65 535 branches (ABOP eq. 1.9 at n = 15 and 16, with widths and unequal branch angles). Pirk
+// Table 5.2: 13.0 ms for 3 813 branches, 49.1 ms for 10 623, 76.4 ms for 43 466 ("model" time).
+// Goal: under 1 ms for 43 000 branches on one core, so that a slider moves at display rate.
 #include <benchmark/benchmark.h>
 
 #include <map>
@@ -29,8 +29,8 @@ const TreeGraph& tree_for(int arg) {
     t = fspm::environment::grow_tree(p).tree;
   } else {
     using namespace fspm::lsystem;
-    const LSystem sys =
-        parse_lsystem("#define R 1.456\nAxiom: A(1)\nA(s) --> !(s/10)F(s)[+(30)A(s/R)][-(40)/(90)A(s/R)]\n");
+    const LSystem sys = parse_lsystem(
+        "#define R 1.456\nAxiom: A(1)\nA(s) --> !(s/10)F(s)[+(30)A(s/R)][-(40)/(90)A(s/R)]\n");
     DeriveOptions options;
     options.steps = arg - 100;
     TurtleSettings view;

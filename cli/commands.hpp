@@ -21,7 +21,8 @@ void add_scene_commands(CLI::App& app);
 // mesh, render, view): registered for real in fspm-full; in fspm only listed in --help.
 void add_full_commands(CLI::App& app);
 // In fspm: when the command line names one of those commands, replaces the process by fspm-full
-// with the same arguments (throws IoError when it cannot); otherwise returns. In fspm-full: returns.
+// with the same arguments (throws IoError when it cannot); otherwise returns. In fspm-full:
+// returns.
 void hand_over_full_commands(int argc, char** argv);
 
 }  // namespace fspm::cli

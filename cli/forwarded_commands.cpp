@@ -46,8 +46,8 @@ std::filesystem::path full_executable() {
   args.push_back(nullptr);
   args[0] = program.data();
   ::execv(program.c_str(), args.data());
-  throw IoError("this command needs " + program + " (installed beside fspm): " +
-                std::strerror(errno));
+  throw IoError("this command needs " + program +
+                " (installed beside fspm): " + std::strerror(errno));
 }
 
 }  // namespace
@@ -60,7 +60,8 @@ void add_full_commands(CLI::App& app) {
     CLI::App* sub = app.add_subcommand(c.name, c.description);
     sub->allow_extras();
     sub->callback([name = std::string(c.name)] {
-      throw ValueError("could not hand '" + name + "' to fspm-full: put fspm's own options (-q, -v, "
+      throw ValueError("could not hand '" + name +
+                       "' to fspm-full: put fspm's own options (-q, -v, "
                        "--memory-limit) after the command");
     });
   }

@@ -16,8 +16,7 @@ inline constexpr FullCommand kRunCommand{"run",
 inline constexpr FullCommand kCompareCommand{
     "compare", "Compute an experiment's [[comparison]] distances and t-tests over its results"};
 inline constexpr FullCommand kReportCommand{
-    "report",
-    "Write DIR/report.md: what was run, tables, plots and renders of a sweep's results"};
+    "report", "Write DIR/report.md: what was run, tables, plots and renders of a sweep's results"};
 inline constexpr FullCommand kResultsCommand{"results",
                                              "Export, summarize and merge sweep results"};
 inline constexpr FullCommand kMeshCommand{

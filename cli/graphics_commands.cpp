@@ -520,8 +520,7 @@ void add_graphics_commands(CLI::App& app) {
   m->callback([mesh] { run_mesh(*mesh); });
 
   auto render = std::make_shared<RenderCommand>();
-  CLI::App* r =
-      app.add_subcommand(kRenderCommand.name, kRenderCommand.description);
+  CLI::App* r = app.add_subcommand(kRenderCommand.name, kRenderCommand.description);
   r->add_option("TREE", render->tree,
                 "Tree file (.tree, .treeb, .nwk, .mtg), compressed plant (.ctree, plant .toml) or "
                 "scene (.json)")

@@ -83,18 +83,22 @@ void run_derive_compressed(const LsystemOptions& o, const lsystem::LSystem& sys)
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const std::size_t graph_bytes = g.memory_bytes();
-  const double compression =
-      static_cast<double>(c.explicit_bytes) / static_cast<double>(std::max<std::size_t>(graph_bytes, 1));
+  const double compression = static_cast<double>(c.explicit_bytes) /
+                             static_cast<double>(std::max<std::size_t>(graph_bytes, 1));
   spdlog::info("{}: {} steps, {} modules as {} substructures ({} bytes) in {:.6f} s", o.file,
                g.steps, c.modules, g.nodes.size(), graph_bytes, seconds);
   const nlohmann::json symbols = symbol_counts(c.per_symbol, sys.symbols);
   std::string text;
   if (o.string) text = lsystem::to_string(lsystem::expand(g, o.budget), sys.symbols);
   if (o.json) {
-    nlohmann::json j = {{"steps", g.steps},          {"modules", c.modules},
-                        {"symbols", symbols},        {"compressed", true},
-                        {"graph_nodes", g.nodes.size()}, {"graph_bytes", graph_bytes},
-                        {"explicit_bytes", c.explicit_bytes}, {"compression", compression},
+    nlohmann::json j = {{"steps", g.steps},
+                        {"modules", c.modules},
+                        {"symbols", symbols},
+                        {"compressed", true},
+                        {"graph_nodes", g.nodes.size()},
+                        {"graph_bytes", graph_bytes},
+                        {"explicit_bytes", c.explicit_bytes},
+                        {"compression", compression},
                         {"seconds", seconds}};
     // Counts of 2^64 - 1 or more stay at 2^64 - 1.
     if (c.saturated) j["counts_saturated"] = true;

@@ -634,8 +634,8 @@ class MtgParser {
   std::vector<std::vector<int>> column_entities_;  // entities written in each code column
   // The tree.
   int finest_ = 0;
-  int fx_ = -1, fy_ = -1, fz_ = -1, f_length_ = -1, f_radius_ = -1, f_diameter_ = -1,
-      f_birth_ = -1, f_order_ = -1;
+  int fx_ = -1, fy_ = -1, fz_ = -1, f_length_ = -1, f_radius_ = -1, f_diameter_ = -1, f_birth_ = -1,
+      f_order_ = -1;
   std::vector<std::pair<int, std::string>> attributes_;
   std::vector<std::uint8_t> numeric_;
   std::array<std::uint8_t, 128> complex_symbol_{};

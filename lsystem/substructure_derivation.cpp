@@ -150,7 +150,8 @@ class Builder {
   }
 
   static bool same_bits(std::span<const double> a, std::span<const double> b) {
-    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size_bytes()) == 0);
+    return a.size() == b.size() &&
+           (a.empty() || std::memcmp(a.data(), b.data(), a.size_bytes()) == 0);
   }
 
   Frame& push_frame() {
@@ -247,7 +248,8 @@ SubstructureCounts count_modules(const SubstructureGraph& graph, std::size_t sym
       counts.per_symbol[s.symbol] = add_saturating(counts.per_symbol[s.symbol], times);
     }
     const std::uint64_t bytes = graph.parametric ? 2 + 4 + 8 * s.parameter_count : 2;
-    counts.explicit_bytes = add_saturating(counts.explicit_bytes, multiply_saturating(times, bytes));
+    counts.explicit_bytes =
+        add_saturating(counts.explicit_bytes, multiply_saturating(times, bytes));
   }
   counts.saturated = counts.modules == kSaturated || counts.explicit_bytes == kSaturated;
   return counts;

@@ -35,7 +35,7 @@ struct Substructure {
 };
 
 struct SubstructureGraph {
-  std::vector<Substructure> nodes;   // children before their parents
+  std::vector<Substructure> nodes;  // children before their parents
   std::vector<std::uint32_t> children;
   std::vector<double> parameters;
   std::vector<std::uint32_t> axiom;  // the derived string: these substructures in order

@@ -21,9 +21,9 @@
 #include "greenlab/reconstruction.hpp"
 #include "greenlab/simulation.hpp"
 #include "lsystem/derivation.hpp"
-#include "lsystem/substructure_derivation.hpp"
 #include "lsystem/lsystem.hpp"
 #include "lsystem/parser.hpp"
+#include "lsystem/substructure_derivation.hpp"
 #include "lsystem/turtle.hpp"
 #include "python/bindings.hpp"
 

@@ -33,8 +33,7 @@ void bind_stages(py::module_& m) {
           },
           "Gravelius level per node of the given tree (1 on the main axis), a list of int")
       .def_property_readonly(
-          "start_times",
-          [](const DevelopmentalModel& model) { return model.start_time(); },
+          "start_times", [](const DevelopmentalModel& model) { return model.start_time(); },
           "Time in [0, 1] at which each node of the given tree starts growing, a list of float");
 
   m.def(
@@ -50,8 +49,8 @@ void bind_stages(py::module_& m) {
       "thickest_continues=False uses Pirk's rule (the child deviating least continues the axis); "
       "raises ValueError for an empty tree");
 
-  m.def("seasonal_time", &stages::seasonal_time, py::arg("t"), py::arg("years"),
-        py::arg("c") = 1.2, py::arg("s") = 0.0,
+  m.def("seasonal_time", &stages::seasonal_time, py::arg("t"), py::arg("years"), py::arg("c") = 1.2,
+        py::arg("s") = 0.0,
         "Pirk eq. 5.11: t in [0, 1] remapped over `years` (>= 1) seasons; c in [1, 1.4] is the "
         "dormancy strength (1: growth stops once a year), s the shift (0 growth, 0.5 angles)");
 }

@@ -126,11 +126,11 @@ void DevelopmentalModel::assign_levels_and_chains() {
     const NodeId apical = continuation(p, edges);
     bool decurrent = true;  // all children alike within the tolerance
     for (const NodeId c : edges) {
-      decurrent = decurrent &&
-                  close(angle_between(hp, heading(tree_, c)),
-                        angle_between(hp, heading(tree_, edges.front())),
-                        params_.same_level_tolerance) &&
-                  close(tree_.radius(c), tree_.radius(edges.front()), params_.same_level_tolerance);
+      decurrent =
+          decurrent &&
+          close(angle_between(hp, heading(tree_, c)),
+                angle_between(hp, heading(tree_, edges.front())), params_.same_level_tolerance) &&
+          close(tree_.radius(c), tree_.radius(edges.front()), params_.same_level_tolerance);
     }
     for (const NodeId c : edges) {
       if (c == apical) {
@@ -142,8 +142,8 @@ void DevelopmentalModel::assign_levels_and_chains() {
       chain_[c] = static_cast<std::uint32_t>(chain_rate_.size());
       chain_rate_.push_back(0.0);
       chain_base_[c] = 1;
-      level_[c] = static_cast<std::uint16_t>(
-          std::min<int>(level_[p] + (decurrent ? 0 : 1), std::numeric_limits<std::uint16_t>::max()));
+      level_[c] = static_cast<std::uint16_t>(std::min<int>(
+          level_[p] + (decurrent ? 0 : 1), std::numeric_limits<std::uint16_t>::max()));
     }
   }
 }
@@ -172,8 +172,8 @@ void DevelopmentalModel::compute_growth_times() {
       chain_start_[c] = std::min(reached, 1.0);
       chain_rate_[c] = chain_length[c] / std::max(1.0 - chain_start_[c], 1e-9);
     }
-    start_time_[i] = chain_rate_[c] > 0.0 ? chain_start_[c] + offset_[i] / chain_rate_[c]
-                                          : chain_start_[c];
+    start_time_[i] =
+        chain_rate_[c] > 0.0 ? chain_start_[c] + offset_[i] / chain_rate_[c] : chain_start_[c];
   }
 }
 

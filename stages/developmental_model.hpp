@@ -44,9 +44,9 @@ struct StagesParams {
   Continuation continuation = Continuation::kThickest;
   // Pirk 5.3.2: a branch stops bending once its subtree carries this many growing tips.
   int rigid_tip_count = 5;
-  double pipe_exponent = 2.5;           // u of eq. 5.7-5.8 (Murray's 2.49)
-  double same_level_tolerance = 0.05;   // 5.2.2: children within 5 % keep the parent's level
-  void validate() const;                // throws ValueError for values out of range
+  double pipe_exponent = 2.5;          // u of eq. 5.7-5.8 (Murray's 2.49)
+  double same_level_tolerance = 0.05;  // 5.2.2: children within 5 % keep the parent's level
+  void validate() const;               // throws ValueError for values out of range
 };
 
 // Pirk eq. 5.11: seasonal growth rhythm, t in [0, 1] remapped over `years` seasons with
@@ -92,8 +92,8 @@ class DevelopmentalModel {
   StagesParams params_;
   std::vector<std::uint16_t> level_;
   std::vector<std::uint32_t> chain_;
-  std::vector<double> offset_;      // length of the chain before the edge
-  std::vector<double> start_time_;  // when the edge starts growing
+  std::vector<double> offset_;            // length of the chain before the edge
+  std::vector<double> start_time_;        // when the edge starts growing
   std::vector<std::uint8_t> chain_base_;  // first edge of a lateral chain
   std::vector<double> chain_rate_, chain_start_;
   std::vector<NodeId> chain_last_;  // last edge of each chain
@@ -101,12 +101,12 @@ class DevelopmentalModel {
   // time span over which it is made up.
   std::vector<Eigen::Vector3d> bend_axis_;
   std::vector<double> bend_angle_, bend_end_;
-  std::vector<double> radius_coefficient_;  // b_p of eq. 5.7 (0 for final tips)
-  double tip_radius_ = 0.0;                 // r_avg
-  double tip_radius_pow_ = 0.0;             // r_avg^u
-  std::vector<double> radius_pow_;          // r^u of the given tree
+  std::vector<double> radius_coefficient_;    // b_p of eq. 5.7 (0 for final tips)
+  double tip_radius_ = 0.0;                   // r_avg
+  double tip_radius_pow_ = 0.0;               // r_avg^u
+  std::vector<double> radius_pow_;            // r^u of the given tree
   std::vector<std::uint32_t> edge_children_;  // internode children in the given tree
-  std::vector<Eigen::Vector3d> heading_;    // unit directions of the given tree
+  std::vector<Eigen::Vector3d> heading_;      // unit directions of the given tree
   // Buffers of stage(), kept between calls (a slider computes stage after stage).
   mutable std::vector<NodeId> id_of_;
   mutable std::vector<Eigen::Quaterniond> turn_;

@@ -44,8 +44,7 @@ std::set<std::string> subcommand_lines(const std::string& help) {
   return out;
 }
 
-const std::string kFullExe =
-    (std::filesystem::path(FSPM_EXE).parent_path() / "fspm-full").string();
+const std::string kFullExe = (std::filesystem::path(FSPM_EXE).parent_path() / "fspm-full").string();
 
 TEST(CommandSplit, BothExecutablesListTheSameCommands) {
   const auto lean = run_fspm("--help");

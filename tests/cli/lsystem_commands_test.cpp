@@ -57,17 +57,16 @@ TEST(LsystemCli, CompressedDeriveCountsStringsTooLargeToHold) {
 }
 
 TEST(LsystemCli, CompressedDeriveOfAContextSensitiveSystemSaysWhyAndDerivesExplicitly) {
-  const auto r = run_fspm("lsystem derive " + example("context_sensitive_plant.l") +
-                          " --compressed --json");
+  const auto r =
+      run_fspm("lsystem derive " + example("context_sensitive_plant.l") + " --compressed --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["compressed"], false);
   EXPECT_NE(j["why_not_compressed"].get<std::string>().find("context-sensitive"),
             std::string::npos);
   EXPECT_NE(r.err.find("context-sensitive"), std::string::npos) << r.err;
-  const auto plain =
-      nlohmann::json::parse(run_fspm("lsystem derive " + example("context_sensitive_plant.l") +
-                                     " --json").out);
+  const auto plain = nlohmann::json::parse(
+      run_fspm("lsystem derive " + example("context_sensitive_plant.l") + " --json").out);
   EXPECT_EQ(j["modules"], plain["modules"]);
 }
 

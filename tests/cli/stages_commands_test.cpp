@@ -51,8 +51,7 @@ TEST(StagesCli, OneOfAtAndStepsIsRequired) {
   const auto r = run_fspm("stages " + kTree + " --at 0.5 --steps 3 -o " + (dir / "x").string());
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("either --at"), std::string::npos) << r.err;
-  EXPECT_EQ(run_fspm("stages " + kTree + " --at 1.5 -o " + (dir / "y.tree").string()).exit_code,
-            1);
+  EXPECT_EQ(run_fspm("stages " + kTree + " --at 1.5 -o " + (dir / "y.tree").string()).exit_code, 1);
 }
 
 }  // namespace

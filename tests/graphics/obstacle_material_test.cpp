@@ -105,8 +105,8 @@ TEST_F(ObstacleMaterial, GlbHasOneMaterialPerKind) {
   // Obstacles that let light through: blended at their opacity.
   EXPECT_EQ(doc["materials"][4]["name"], "translucent_obstacle");
   EXPECT_EQ(doc["materials"][4]["alphaMode"], "BLEND");
-  EXPECT_NEAR(doc["materials"][4]["pbrMetallicRoughness"]["baseColorFactor"][3].get<double>(),
-              0.4, 1e-3);
+  EXPECT_NEAR(doc["materials"][4]["pbrMetallicRoughness"]["baseColorFactor"][3].get<double>(), 0.4,
+              1e-3);
   // Leaf-cluster crowns are seen through: blended, alpha the crown opacity.
   EXPECT_EQ(doc["materials"][3]["name"], "crown");
   EXPECT_EQ(doc["materials"][3]["alphaMode"], "BLEND");

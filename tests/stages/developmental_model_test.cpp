@@ -61,7 +61,7 @@ TEST(DevelopmentalModel, AChainGrowsAtTheConstantRateOfEquation54) {
   EXPECT_EQ(m.chain_count(), 1u);
   for (const double s : {0.1, 0.25, 0.5, 0.6, 0.9}) {
     const TreeGraph st = m.stage(s);
-    EXPECT_NEAR(total_length(st), 4.0 * s, 1e-12) << s;       // l(t) = v_g t, v_g = 4
+    EXPECT_NEAR(total_length(st), 4.0 * s, 1e-12) << s;  // l(t) = v_g t, v_g = 4
     EXPECT_EQ(st.size(), static_cast<std::size_t>(std::ceil(4.0 * s - 1e-12))) << s;
     EXPECT_NEAR(st.end(st.size() - 1).z(), 4.0 * s, 1e-12);
   }
@@ -165,7 +165,7 @@ TEST(DevelopmentalModel, ChildrenAlikeWithinFivePercentKeepTheLevel) {
 TEST(DevelopmentalModel, TheThickChildContinuesTheAxisUnlessPirksRuleIsAsked) {
   TreeGraph t;
   const NodeId root = edge(t, kNoNode, Eigen::Vector3d::UnitZ(), 1.0, 0.2);
-  edge(t, root, at_angle(35), 1.0, 0.15);  // the trunk, bent
+  edge(t, root, at_angle(35), 1.0, 0.15);   // the trunk, bent
   edge(t, root, at_angle(-10), 1.0, 0.03);  // a thin, straighter lateral
   const DevelopmentalModel thickest(t);
   EXPECT_EQ(thickest.chain()[1], 0u);
