@@ -8,6 +8,7 @@ namespace fspm::experiments {
 std::vector<std::size_t> longest_first(const RunPlan& plan, const Model& model,
                                        std::vector<std::size_t> pending,
                                        const std::atomic<bool>* interrupt) {
+  if (pending.size() > kLongestFirstLimit) return pending;
   // Replicates share their point's parameters and are adjacent in the run order (index = point
   // x replicates + replicate): one estimate per point, remembered until the next point.
   std::vector<double> cost(pending.size());

@@ -13,9 +13,15 @@
 
 namespace fspm::experiments {
 
+// Above this many pending runs the order is left as it is: estimating and sorting would delay the
+// start by seconds (10^7 runs), and with that many runs per worker any order finishes within a
+// fraction of one run of the optimum, which is what longest-first is for.
+inline constexpr std::size_t kLongestFirstLimit = 1'000'000;
+
 // `pending` (run indices) sorted by descending Model::cost_estimate of their point's parameters,
 // stable; a non-finite or negative estimate counts as 0. When `interrupt` becomes true while the
-// estimates are computed (a long plan), `pending` is returned unsorted at once.
+// estimates are computed (a long plan), `pending` is returned unsorted at once; more than
+// kLongestFirstLimit runs are returned as given.
 std::vector<std::size_t> longest_first(const RunPlan& plan, const Model& model,
                                        std::vector<std::size_t> pending,
                                        const std::atomic<bool>* interrupt = nullptr);

@@ -66,6 +66,19 @@ TEST(RunOrder, LongestFirstSortsByDescendingEstimateStableByIndex) {
   EXPECT_EQ(longest_first(plan, model, {9, 0, 4, 7}), (std::vector<std::size_t>{7, 4, 0, 9}));
 }
 
+// A sweep of more than kLongestFirstLimit runs starts at once in grid order (no estimates).
+TEST(RunOrder, HugeSweepsKeepGridOrder) {
+  const Experiment x =
+      synthetic("[sweep]\n\"x.cost\" = [1, 5]\n", static_cast<int>(kLongestFirstLimit / 2 + 1));
+  const RunPlan plan(x);
+  ASSERT_GT(plan.size(), kLongestFirstLimit);
+  const RecordingModel model;
+  std::vector<std::size_t> pending(plan.size());
+  for (std::size_t i = 0; i < pending.size(); ++i) pending[i] = i;
+  const std::vector<std::size_t> order = longest_first(plan, model, pending);
+  EXPECT_EQ(order, pending);
+}
+
 TEST(RunOrder, TheRunnerStartsTheCostliestRunsFirstAndResultsMatchGridOrder) {
   const auto dir = testing::scratch("order");
   const Experiment x = synthetic("[sweep]\n\"x.cost\" = [1, 4, 2, 8, 3]\nnodes = [3, 7]\n", 3);
