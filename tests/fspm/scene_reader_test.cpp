@@ -182,7 +182,8 @@ TEST(SceneReader, ExampleScenesReadWithTheirPlantFiles) {
   EXPECT_TRUE(fs::exists(site.plants[0].file)) << site.plants[0].file;
   const SceneDescription forest = read_scene_description(examples + "graphics/forest_scene.json");
   EXPECT_EQ(forest.plants.size(), 200u);
-  for (const char* file : {"environment/wall_scene.json", "environment/sphere_and_box_scene.json"}) {
+  for (const char* file :
+       {"environment/wall_scene.json", "environment/sphere_and_box_scene.json"}) {
     EXPECT_FALSE(read_scene_description(examples + file).obstacles.empty()) << file;
   }
 }
