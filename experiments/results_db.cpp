@@ -147,16 +147,8 @@ ResultsDb::ResultsDb(const std::string& dir, Mode mode, const ExperimentInfo& in
     if (ec) throw IoError("cannot create the output directory: " + ec.message(), dir);
   }
   if (mode != Mode::kRead) {
-    // One writer per directory: a second `fspm run` on the same output fails instead of
-    // interleaving its runs with the first one's.
-    const std::string lock = (fs::path(dir) / ".results.lock").string();
-    lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (lock_fd_ < 0) throw IoError("cannot create the lock file", lock);
-    if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
-      ::close(lock_fd_);
-      lock_fd_ = -1;
-      throw IoError("the result database is locked: another fspm run is writing it", path_);
-    }
+    acquire_lock(dir);
+    if (!exists) create_database_file(info);
   }
   const int flags =
       mode == Mode::kRead ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
@@ -170,8 +162,8 @@ ResultsDb::ResultsDb(const std::string& dir, Mode mode, const ExperimentInfo& in
   }
   try {
     sqlite3_busy_timeout(db_, 5000);
-    bool fresh = !exists;
-    if (exists && mode == Mode::kResume) {
+    bool fresh = false;
+    if (mode == Mode::kResume) {
       // A run killed while creating the database leaves a file without tables: nothing to keep.
       Statement tables(db_, "SELECT count(*) FROM sqlite_master", path_);
       fresh = tables.step() && tables.integer(0) == 0;
@@ -215,6 +207,45 @@ ResultsDb::~ResultsDb() {
   statements_.reset();
   sqlite3_close(db_);
   release_lock();
+}
+
+void ResultsDb::acquire_lock(const std::string& dir) {
+  // One writer per directory: a second `fspm run` on the same output fails instead of
+  // interleaving its runs with the first one's.
+  const std::string lock = (fs::path(dir) / ".results.lock").string();
+  lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (lock_fd_ < 0) throw IoError("cannot create the lock file", lock);
+  if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
+    ::close(lock_fd_);
+    lock_fd_ = -1;
+    throw IoError("the result database is locked: another fspm run is writing it", path_);
+  }
+}
+
+void ResultsDb::create_database_file(const ExperimentInfo& info) {
+  // Built under another name and renamed into place: a run killed while creating the database
+  // leaves no database or a complete one, never a file without tables.
+  const std::string partial = path_ + ".partial";
+  std::error_code ec;
+  fs::remove(partial, ec);
+  fs::remove(partial + "-journal", ec);
+  try {
+    const int rc =
+        sqlite3_open_v2(partial.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr);
+    if (rc != SQLITE_OK) fail(db_, rc, partial, "creating the database");
+    create_schema(info);
+    const int closed = sqlite3_close(db_);
+    db_ = nullptr;
+    if (closed != SQLITE_OK) throw IoError("cannot close the new database", partial);
+    fs::rename(partial, path_, ec);
+    if (ec) throw IoError("cannot move the new database into place: " + ec.message(), path_);
+  } catch (...) {
+    sqlite3_close(db_);
+    db_ = nullptr;
+    fs::remove(partial, ec);
+    release_lock();
+    throw;
+  }
 }
 
 void ResultsDb::release_lock() {

@@ -55,6 +55,8 @@ class ResultsDb {
   void insert(const std::vector<RunRecord>& records);
 
  private:
+  void acquire_lock(const std::string& dir);
+  void create_database_file(const ExperimentInfo& info);
   void create_schema(const ExperimentInfo& info);
   void load_info();
   void release_lock();
