@@ -11,6 +11,7 @@
 #include "environment/growth_model.hpp"
 #include "environment/plastic_adaptation.hpp"
 #include "environment/tree_analysis.hpp"
+#include "fspm/elapsed.hpp"
 
 namespace {
 
@@ -36,7 +37,7 @@ const Case& case_for(int years) {
   c.wall.boxes.push_back(Box::wall({3.0, -30}, {3.0, 30}, 0.0, c.open.height_m + 2.0, 0.2));
   const auto t0 = std::chrono::steady_clock::now();
   const GrowthResult regrown = grow_tree(p, c.wall);
-  c.regrow_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  c.regrow_seconds = fspm::seconds_since(t0);
   c.regrown_nodes = regrown.tree.size();
   return cases.emplace(years, std::move(c)).first->second;
 }
@@ -54,9 +55,7 @@ void BM_AdaptBesideWall(benchmark::State& state) {
     tip_shift_x = r.mean_tip_shift.x();
     benchmark::DoNotOptimize(r.tree.size());
   }
-  const double per_run =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() /
-      static_cast<double>(state.iterations());
+  const double per_run = fspm::seconds_since(t0) / static_cast<double>(state.iterations());
   state.counters["nodes"] = static_cast<double>(c.open.tree.size());
   state.counters["pruned"] = static_cast<double>(pruned);
   state.counters["clusters"] = static_cast<double>(c.analysis.clusters.size());

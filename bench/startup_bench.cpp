@@ -8,8 +8,10 @@
 #include <sys/wait.h>
 
 #include <chrono>
+
 #include <string>
 #include <vector>
+#include "fspm/elapsed.hpp"
 
 extern char** environ;
 
@@ -31,7 +33,7 @@ double run_seconds(const std::vector<std::string>& args) {
     waitpid(pid, &status, 0);
   }
   posix_spawn_file_actions_destroy(&actions);
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return fspm::seconds_since(t0);
 }
 
 void measure(benchmark::State& state, const std::vector<std::string>& args) {

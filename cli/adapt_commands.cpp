@@ -15,6 +15,7 @@
 #include "environment/plastic_adaptation.hpp"
 #include "environment/scene_file.hpp"
 #include "environment/tree_analysis.hpp"
+#include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
 #include "fspm/tree_file.hpp"
 
@@ -113,8 +114,7 @@ void run_adapt(const AdaptOptions& o) {
     // moved brightest point is a global light change (Pirk 4.4.3). It is made once: every scene
     // re-adapts from it.
     analyses.push_back(environment::analyze_tree(tree, params, grown_brightest));
-    analysis_seconds.push_back(
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    analysis_seconds.push_back(seconds_since(t0));
   }
 
   nlohmann::json results = nlohmann::json::array();
@@ -132,15 +132,13 @@ void run_adapt(const AdaptOptions& o) {
       }
       const auto t0 = std::chrono::steady_clock::now();
       adapted = environment::adapt_trees(tp, ap, scene);
-      const double total =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const double total = seconds_since(t0);
       seconds.assign(trees.size(), total / static_cast<double>(trees.size()));
     } else {
       for (std::size_t k = 0; k < trees.size(); ++k) {
         const auto t0 = std::chrono::steady_clock::now();
         adapted.push_back(environment::adapt_tree(trees[k], analyses[k], scene));
-        seconds.push_back(
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        seconds.push_back(seconds_since(t0));
       }
     }
     for (std::size_t k = 0; k < trees.size(); ++k) {

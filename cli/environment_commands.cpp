@@ -17,6 +17,7 @@
 #include "environment/points_file.hpp"
 #include "environment/scene_file.hpp"
 #include "fspm/atomic_file.hpp"
+#include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
 #include "fspm/tree_file.hpp"
 
@@ -88,8 +89,7 @@ void run_light(const LightOptions& o) {
   const environment::LightModel model(scene);
   std::vector<environment::LightSample> samples(points.size());
   model.evaluate(points, samples);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds = seconds_since(t0);
   spdlog::debug("light: {} points in {:.3f} s", points.size(), seconds);
   if (!o.out.empty()) {
     write_file_atomically(
@@ -146,8 +146,7 @@ void run_grow(const GrowOptions& o) {
   tree_format_for(o.out, o.format);  // fail on a bad output name before growing
   const auto t0 = std::chrono::steady_clock::now();
   const environment::GrowthResult r = environment::grow_tree(params, scene);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds = seconds_since(t0);
   write_tree_file(r.tree, o.out, o.format);
   if (o.json) {
     print_json({{"internodes", r.internodes},

@@ -23,6 +23,7 @@
 #include "cli/xvfb.hpp"
 #include "environment/scene_file.hpp"
 #include "fspm/compressed_tree_graph.hpp"
+#include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
 #include "fspm/scene_reader.hpp"
 #include "fspm/tree_file.hpp"
@@ -95,10 +96,6 @@ struct ViewCommand {
   bool no_shadows = false;
   bool json = false;
 };
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 // Leaves on or off, and how leaf clusters are drawn (the name becomes an enum right away).
 void set_leaves(graphics::MeshOptions& options, bool leaves, const std::string& foliage,

@@ -16,6 +16,7 @@
 #include "cli/output.hpp"
 #include "fspm/atomic_file.hpp"
 #include "fspm/compressed_tree_graph.hpp"
+#include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
 #include "fspm/input_file.hpp"
 #include "fspm/tree_file.hpp"
@@ -59,8 +60,7 @@ void run_simulate(const SimulateOptions& o) {
   if (o.seed >= 0) params.seed = static_cast<std::uint64_t>(o.seed);
   const auto t0 = std::chrono::steady_clock::now();
   const CompressedTreeGraph g = greenlab::simulate_compressed(params);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds = seconds_since(t0);
   write_ctree_file(g, o.out);
   const auto bytes = std::filesystem::file_size(o.out);
   const greenlab::OrganCounts c = greenlab::count_organs(g);
@@ -88,8 +88,7 @@ void run_reconstruct(const ReconstructOptions& o) {
   greenlab::ReconstructionStats st;
   const auto t0 = std::chrono::steady_clock::now();
   const TreeGraph tree = greenlab::reconstruct(g, ro, &st);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds = seconds_since(t0);
   write_tree_file(tree, o.out, o.format);
   const nlohmann::json j = {{"age", st.age},
                             {"metamers", st.metamers},

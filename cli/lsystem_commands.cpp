@@ -10,6 +10,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
+#include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
 #include "fspm/tree_file.hpp"
 #include "lsystem/derivation.hpp"
@@ -80,8 +81,7 @@ void run_derive_compressed(const LsystemOptions& o, const lsystem::LSystem& sys)
   const auto t0 = std::chrono::steady_clock::now();
   const lsystem::SubstructureGraph g = lsystem::derive_substructures(sys, derive_options(o));
   const lsystem::SubstructureCounts c = lsystem::count_modules(g, sys.symbols.size());
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds = seconds_since(t0);
   const std::size_t graph_bytes = g.memory_bytes();
   const double compression = static_cast<double>(c.explicit_bytes) /
                              static_cast<double>(std::max<std::size_t>(graph_bytes, 1));
@@ -133,8 +133,7 @@ void run_derive(const LsystemOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   lsystem::Derivation d(sys, derive_options(o));
   d.run();
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds = seconds_since(t0);
   const lsystem::ModuleString& s = d.string();
   spdlog::info("{}: {} steps, {} modules in {:.3f} s", o.file, d.steps_done(), s.size(), seconds);
   std::vector<std::uint64_t> per_symbol(sys.symbols.size(), 0);

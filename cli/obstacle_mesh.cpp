@@ -1,8 +1,10 @@
 #include "cli/obstacle_mesh.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "fspm/error.hpp"
 
@@ -27,11 +29,33 @@ void add_triangle(TriangleMesh& mesh, std::uint32_t a, std::uint32_t b, std::uin
   mesh.materials.push_back(Material::kObstacle);
 }
 
-// The triangles from `first` on drawn see-through when the obstacle lets light through.
-void mark_translucency(TriangleMesh& mesh, std::size_t first, double translucency) {
-  if (translucency <= 0.0) return;
-  for (std::size_t t = first; t < mesh.materials.size(); ++t) {
-    mesh.materials[t] = Material::kTranslucentObstacle;
+// An obstacle's share of the mesh: its first vertex and triangle, and how much light it lets
+// through.
+struct ObstacleRange {
+  std::size_t first_vertex = 0;
+  std::size_t first_triangle = 0;
+  double translucency = 0.0;
+};
+
+// Obstacles that let light through get the translucent material, and every obstacle vertex its
+// translucency (the renders draw each obstacle as see-through as it is).
+void mark_translucency(TriangleMesh& mesh, const std::vector<ObstacleRange>& ranges) {
+  const bool any = std::any_of(ranges.begin(), ranges.end(),
+                               [](const ObstacleRange& r) { return r.translucency > 0.0; });
+  if (!any) return;
+  std::vector<float>& gamma = mesh.add_attribute("translucency");
+  for (std::size_t i = 0; i < ranges.size(); ++i) {
+    if (ranges[i].translucency <= 0.0) continue;
+    const std::size_t vertex_end =
+        i + 1 < ranges.size() ? ranges[i + 1].first_vertex : mesh.vertex_count();
+    const std::size_t triangle_end =
+        i + 1 < ranges.size() ? ranges[i + 1].first_triangle : mesh.triangle_count();
+    std::fill(gamma.begin() + static_cast<std::ptrdiff_t>(ranges[i].first_vertex),
+              gamma.begin() + static_cast<std::ptrdiff_t>(vertex_end),
+              static_cast<float>(ranges[i].translucency));
+    for (std::size_t t = ranges[i].first_triangle; t < triangle_end; ++t) {
+      mesh.materials[t] = Material::kTranslucentObstacle;
+    }
   }
 }
 
@@ -119,21 +143,23 @@ void append_triangle_mesh(const environment::TriangleMesh& surface, TriangleMesh
 
 TriangleMesh mesh_obstacles(const environment::Scene& scene, int sphere_segments) {
   TriangleMesh mesh;
+  std::vector<ObstacleRange> ranges;
+  const auto start = [&](double translucency) {
+    ranges.push_back({mesh.vertex_count(), mesh.triangle_count(), translucency});
+  };
   for (const auto& box : scene.boxes) {
-    const std::size_t first = mesh.triangle_count();
+    start(box.translucency);
     append_box_mesh(box, mesh);
-    mark_translucency(mesh, first, box.translucency);
   }
   for (const auto& sphere : scene.spheres) {
-    const std::size_t first = mesh.triangle_count();
+    start(sphere.translucency);
     append_sphere_mesh(sphere.center, sphere.radius_m, sphere_segments, mesh);
-    mark_translucency(mesh, first, sphere.translucency);
   }
   for (const auto& surface : scene.meshes) {
-    const std::size_t first = mesh.triangle_count();
+    start(surface.translucency);
     append_triangle_mesh(surface, mesh);
-    mark_translucency(mesh, first, surface.translucency);
   }
+  mark_translucency(mesh, ranges);
   return mesh;
 }
 

@@ -10,6 +10,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
+#include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
 #include "fspm/tree_file.hpp"
 #include "stages/developmental_model.hpp"
@@ -26,10 +27,6 @@ struct StagesOptions {
   int season_years = 0;
   bool json = false;
 };
-
-double seconds_from(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 // The stage times: one (--at) or N evenly spaced in (0, 1] (--steps), remapped by the seasons.
 std::vector<double> stage_times(const StagesOptions& o) {
@@ -63,14 +60,14 @@ void run_stages(const StagesOptions& o) {
   const TreeGraph tree = read_tree_file(o.tree);
   auto t0 = std::chrono::steady_clock::now();
   const stages::DevelopmentalModel model(tree);
-  const double analysis_seconds = seconds_from(t0);
+  const double analysis_seconds = seconds_since(t0);
   if (o.steps > 0) std::filesystem::create_directories(o.output);
   TreeGraph stage;
   double stage_seconds = 0.0;
   for (std::size_t k = 0; k < times.size(); ++k) {
     t0 = std::chrono::steady_clock::now();
     model.stage(times[k], stage);
-    stage_seconds += seconds_from(t0);
+    stage_seconds += seconds_since(t0);
     write_tree_file(stage, stage_path(o, k), o.steps > 0 ? std::string_view{} : o.format);
   }
   std::size_t branches = 0;

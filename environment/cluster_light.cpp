@@ -1,6 +1,7 @@
 #include "environment/cluster_light.hpp"
 
 #include "environment/analytic_caps.hpp"
+#include "environment/cpu_features.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -85,17 +86,7 @@ __attribute__((target("avx512f"))) void apply_caps_avx512(float* vis, const floa
   for (int v = 0; v < kV; ++v) _mm512_mask_storeu_ps(vis + 16 * v, lane[v], vv[v]);
 }
 
-bool has_avx512() {
-  static const bool yes = __builtin_cpu_supports("avx512f");
-  return yes;
-}
 #endif
-
-double box_top_z(const Box& b) {
-  double h = 0.0;
-  for (int j = 0; j < 3; ++j) h += std::abs(b.rotation(2, j)) * b.half_extent[j];
-  return b.center.z() + h;
-}
 
 double box_distance(const Box& b, const Eigen::Vector3d& p) {
   const Eigen::Vector3d local = b.rotation.transpose() * (p - b.center);
@@ -202,7 +193,7 @@ void ClusterLightField::obstacle_visibility(const Eigen::Vector3d& p, std::vecto
   };
   for (const Box& b : obstacles_.boxes) {
     distance = std::min(distance, box_distance(b, p));
-    if (b.translucency >= 1.0 || box_top_z(b) <= p.z()) continue;
+    if (b.translucency >= 1.0 || b.top_z() <= p.z()) continue;
     const auto g = static_cast<float>(b.translucency);
     cast(b.center, b.bounding_radius(), [&](int i) {
       if (b.ray_entry(p, dirs_.direction(i)) >= 0.0) {

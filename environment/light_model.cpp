@@ -1,6 +1,7 @@
 #include "environment/light_model.hpp"
 
 #include "environment/analytic_caps.hpp"
+#include "environment/cpu_features.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -93,17 +94,7 @@ __attribute__((target("avx512f"))) void apply_caps_avx512(double* vis, const dou
   }
 }
 
-bool has_avx512() {
-  static const bool yes = __builtin_cpu_supports("avx512f");
-  return yes;
-}
 #endif
-
-double top_z(const Box& b) {
-  double h = 0.0;
-  for (int j = 0; j < 3; ++j) h += std::abs(b.rotation(2, j)) * b.half_extent[j];
-  return b.center.z() + h;
-}
 
 }  // namespace
 
@@ -246,7 +237,7 @@ LightModel::LightModel(const Scene& scene) : scene_(scene), dirs_(scene.sky.dire
 
 bool LightModel::box_relevant(std::size_t i, const Eigen::Vector3d& p) const {
   const Box& b = scene_.boxes[i];
-  if (box_reach2_[i] < 0 || top_z(b) <= p.z()) return false;
+  if (box_reach2_[i] < 0 || b.top_z() <= p.z()) return false;
   return (b.center - p).squaredNorm() <= box_reach2_[i];
 }
 

@@ -30,6 +30,12 @@ Box Box::wall(const Eigen::Vector2d& from, const Eigen::Vector2d& to, double bas
   return b;
 }
 
+double Box::top_z() const {
+  double h = 0.0;
+  for (int j = 0; j < 3; ++j) h += std::abs(rotation(2, j)) * half_extent[j];
+  return center.z() + h;
+}
+
 bool Box::contains(const Eigen::Vector3d& p) const {
   const Eigen::Vector3d local = rotation.transpose() * (p - center);
   return (local.cwiseAbs().array() <= half_extent.array()).all();

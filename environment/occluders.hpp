@@ -33,6 +33,8 @@ struct Box {
                   double height_m, double thickness_m);
   // Radius of the sphere around the centre that contains the box.
   double bounding_radius() const { return half_extent.norm(); }
+  // Height of the box's highest corner.
+  double top_z() const;
   bool contains(const Eigen::Vector3d& p) const;
   // Entry distance t >= 0 of the ray origin + t * dir into the box (0 if the origin is inside), or
   // a negative value when the ray misses.

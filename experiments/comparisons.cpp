@@ -1,4 +1,5 @@
 #include "experiments/comparisons.hpp"
+#include "fspm/elapsed.hpp"
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -208,7 +209,7 @@ ComparisonResults run_comparisons(const Experiment& x, const std::vector<RunReco
   for (const std::string& e : errors) {
     if (!e.empty()) throw IoError("comparison: " + e);
   }
-  results.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  results.seconds = seconds_since(t0);
   results.tests = comparison_ttests(x, results.pairs, &results.notes);
   return results;
 }

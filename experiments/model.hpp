@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "experiments/parameter_set.hpp"
+#include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
 #include "fspm/tree_graph.hpp"
 
@@ -42,11 +43,6 @@ class RunContext {
   std::optional<Clock::time_point> deadline_;
   const std::atomic<bool>* interrupted_ = nullptr;
 };
-
-// Wall-clock seconds since t0 (run times and the models' own timing metrics).
-inline double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 struct RunResult {
   std::map<std::string, double> metrics;  // by metric name (experiments/metrics.hpp)

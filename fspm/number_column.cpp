@@ -58,7 +58,12 @@ double parse_field(const Field& f, const std::string& path, int line) {
 }  // namespace
 
 std::vector<double> read_number_column(const std::string& path, std::string_view column) {
-  std::istringstream in(read_input_file(path));
+  return parse_number_column(read_input_file(path), path, column);
+}
+
+std::vector<double> parse_number_column(std::string_view content_text, const std::string& path,
+                                        std::string_view column) {
+  std::istringstream in{std::string(content_text)};
   std::vector<double> values;
   std::string text;
   int line = 0;

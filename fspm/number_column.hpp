@@ -13,5 +13,8 @@ namespace fspm {
 // is not a finite number, a row without the column, a missing or empty file, and ValueError when
 // the header has no column of that name.
 std::vector<double> read_number_column(const std::string& path, std::string_view column = {});
+// The same for text already in memory; `path` names it in messages.
+std::vector<double> parse_number_column(std::string_view text, const std::string& path,
+                                        std::string_view column = {});
 
 }  // namespace fspm

@@ -32,7 +32,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <limits>
+#include <map>
 #include <span>
 #include <sstream>
 
@@ -280,7 +282,8 @@ Image render_with(const RenderOptions& options, Eigen::Vector3f lo, Eigen::Vecto
 // Stone: the obstacle colour, flat faces, some ambient light so walls turned away from the key
 // light stay grey rather than black, hardly any shine. Opaque, or a lighter see-through grey for
 // obstacles that let light through.
-void stone_look(vtkActor* actor, Material material = Material::kObstacle) {
+void stone_look(vtkActor* actor, Material material = Material::kObstacle,
+                float opacity = kTranslucentObstacleOpacity) {
   const auto rgb = material_rgb(material);
   vtkProperty* p = actor->GetProperty();
   p->SetColor(rgb[0] / 255.0, rgb[1] / 255.0, rgb[2] / 255.0);
@@ -288,7 +291,7 @@ void stone_look(vtkActor* actor, Material material = Material::kObstacle) {
   p->SetAmbient(0.35);
   p->SetDiffuse(0.75);
   p->SetSpecular(0.05);
-  p->SetOpacity(material == Material::kTranslucentObstacle ? kTranslucentObstacleOpacity : 1.0);
+  p->SetOpacity(material == Material::kTranslucentObstacle ? opacity : 1.0);
 }
 
 // Adds an actor for `mapper` with the shared surface look; the renderer keeps it alive.
@@ -321,12 +324,14 @@ vtkActor* add_glyph_actor(vtkRenderer* renderer, vtkPolyData* instances, const T
   return actor;
 }
 
-// The triangles of one material as a mesh of their own (positions and normals only).
-TriangleMesh material_part(const TriangleMesh& mesh, Material material) {
+// The triangles of one material as a mesh of their own (positions and normals only); with
+// `keep`, only the triangles it accepts.
+TriangleMesh material_part(const TriangleMesh& mesh, Material material,
+                           const std::function<bool(std::size_t)>& keep = {}) {
   TriangleMesh part;
   std::vector<std::uint32_t> map(mesh.vertex_count(), 0xFFFFFFFFu);
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-    if (mesh.materials[t] != material) continue;
+    if (mesh.materials[t] != material || (keep && !keep(t))) continue;
     TriangleMesh::Triangle tri;
     for (int k = 0; k < 3; ++k) {
       std::uint32_t& m = map[mesh.triangles[t][k]];
@@ -341,6 +346,43 @@ TriangleMesh material_part(const TriangleMesh& mesh, Material material) {
     part.materials.push_back(material);
   }
   return part;
+}
+
+// A material's obstacles split by how see-through they are.
+struct ObstaclePart {
+  TriangleMesh mesh;
+  float opacity = 1.0f;
+};
+
+// The obstacles of one material; translucent ones one part per translucency, each as
+// see-through as its obstacle (translucent_obstacle_opacity).
+std::vector<ObstaclePart> obstacle_parts(const TriangleMesh& mesh, Material material) {
+  if (material != Material::kTranslucentObstacle || !mesh.has_attribute("translucency")) {
+    return {{material_part(mesh, material), kTranslucentObstacleOpacity}};
+  }
+  const std::span<const float> gamma = mesh.attribute("translucency");
+  std::map<float, int> seen;
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    if (mesh.materials[t] == material) seen.emplace(gamma[mesh.triangles[t][0]], 0);
+  }
+  std::vector<ObstaclePart> parts;
+  for (const auto& entry : seen) {
+    const float g = entry.first;
+    const auto same = [&](std::size_t t) { return gamma[mesh.triangles[t][0]] == g; };
+    parts.push_back({material_part(mesh, material, same), translucent_obstacle_opacity(g)});
+  }
+  return parts;
+}
+
+// The obstacles of one material in stone, one actor per part.
+void add_obstacle_actors(vtkRenderer* renderer, const TriangleMesh& mesh, Material material) {
+  for (const ObstaclePart& part : obstacle_parts(mesh, material)) {
+    vtkNew<vtkPolyData> poly = to_polydata(part.mesh, "");
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(poly);
+    mapper->ScalarVisibilityOff();
+    stone_look(add_surface_actor(renderer, mapper), material, part.opacity);
+  }
 }
 
 // `mesh` without the triangles of one material (vertices and attributes kept as they are).
@@ -461,11 +503,7 @@ Image render_mesh(const TriangleMesh& mesh, const RenderOptions& options) {
     int parts = 0;
     for (Material material : {Material::kObstacle, Material::kTranslucentObstacle}) {
       if (mesh.triangle_count(material) == 0) continue;
-      vtkNew<vtkPolyData> poly = to_polydata(material_part(mesh, material), "");
-      vtkNew<vtkPolyDataMapper> mapper;
-      mapper->SetInputData(poly);
-      mapper->ScalarVisibilityOff();
-      stone_look(add_surface_actor(renderer, mapper), material);
+      add_obstacle_actors(renderer, mesh, material);
       without_obstacles[parts] = without_material(*plants, material);
       plants = &without_obstacles[parts++];
     }
@@ -514,9 +552,15 @@ Image render_scene(const InstancedMesh& scene, const RenderOptions& options) {
       instances->GetPointData()->AddArray(scale);
       for (Material material : kMaterials) {
         if (mesh.triangle_count(material) == 0) continue;
+        if (is_obstacle(material)) {
+          for (const ObstaclePart& part : obstacle_parts(mesh, material)) {
+            stone_look(add_glyph_actor(renderer, instances, part.mesh, material_rgb(material)),
+                       material, part.opacity);
+          }
+          continue;
+        }
         vtkActor* actor = add_glyph_actor(renderer, instances, material_part(mesh, material),
                                           material_rgb(material));
-        if (is_obstacle(material)) stone_look(actor, material);
         if (material == Material::kCrown) crown_look(actor);
       }
     }

@@ -32,6 +32,15 @@ inline constexpr std::array<Material, 5> kMaterials = {Material::kBark, Material
 inline constexpr float kCrownOpacity = 0.35f;
 inline constexpr float kTranslucentObstacleOpacity = 0.4f;
 
+// Opacity of a translucent obstacle drawn from its translucency gamma (the vertex attribute
+// "translucency", Pirk eq. 4.4's gamma for obstacles): 1 - gamma, kept within [0.15, 0.9] so that
+// an obstacle letting almost all light through still shows and one letting a little through
+// still reads as see-through. Without the attribute, kTranslucentObstacleOpacity.
+inline float translucent_obstacle_opacity(float translucency) {
+  const float opacity = 1.0f - translucency;
+  return opacity < 0.15f ? 0.15f : (opacity > 0.9f ? 0.9f : opacity);
+}
+
 // True for both obstacle materials.
 inline bool is_obstacle(Material m) {
   return m == Material::kObstacle || m == Material::kTranslucentObstacle;

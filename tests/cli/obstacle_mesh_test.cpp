@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <numbers>
 
 #include "cli/obstacle_crop.hpp"
@@ -110,6 +111,14 @@ TEST(ObstacleMesh, SceneBoxesSpheresAndMeshesWithoutTheGround) {
   // The sphere lets light through (0.5^0.5 by Pirk eq. 4.4): drawn see-through; the rest opaque.
   EXPECT_EQ(mesh.triangle_count(Material::kTranslucentObstacle), 8u * (2u * 4u - 2u));
   EXPECT_EQ(mesh.triangle_count(Material::kObstacle), 12u + 12u + 1u);
+  // Every vertex carries its obstacle's translucency: the sphere's, 0 for the opaque ones.
+  const auto gamma = mesh.attribute("translucency");
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    const bool translucent = mesh.materials[t] == Material::kTranslucentObstacle;
+    for (std::uint32_t v : mesh.triangles[t]) {
+      EXPECT_NEAR(gamma[v], translucent ? std::sqrt(0.5) : 0.0, 1e-6);
+    }
+  }
   EXPECT_EQ(mesh.normals.size(), mesh.vertex_count());
   // The mesh's triangle faces up (counter-clockwise from above): so does its normal.
   EXPECT_NEAR(mesh.normals.back().z(), 1.0f, 1e-6f);

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -178,6 +179,45 @@ TEST_F(ObstacleMaterial, TranslucentObstaclesAreSeenThrough) {
   const std::size_t translucent = dark_grey_pixels(render_mesh(clear, o));
   EXPECT_GT(opaque, 400u);
   EXPECT_LT(translucent, opaque / 2);
+}
+
+// Each translucent obstacle is as see-through as its translucency says: a square letting 20 % of
+// the light through (opacity 0.8) changes the picture behind it far more than one letting 80 %
+// through (opacity 0.2). Measured as the summed colour change against the tree drawn alone.
+TEST_F(ObstacleMaterial, OpacityFollowsEachObstaclesTranslucency) {
+  if (!render_available()) GTEST_SKIP() << "built without VTK";
+  if (!display_available()) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
+  EXPECT_FLOAT_EQ(translucent_obstacle_opacity(0.2f), 0.8f);
+  EXPECT_FLOAT_EQ(translucent_obstacle_opacity(1.0f), 0.15f);
+  RenderOptions o;
+  o.width = 200;
+  o.height = 160;
+  o.view = View::kFront;
+  o.ground = false;
+  o.frame = Eigen::AlignedBox3f(mesh_.bbox_min(), mesh_.bbox_max());  // one frame for all three
+  const Image background = render_mesh(tree_, o);
+  const auto change = [&](float translucency) {
+    TriangleMesh mesh = tree_;
+    TriangleMesh square = stone_square(0.5f, -0.5f);
+    for (auto& m : square.materials) m = Material::kTranslucentObstacle;
+    std::vector<float>& gamma = square.add_attribute("translucency");
+    std::fill(gamma.begin(), gamma.end(), translucency);
+    mesh.append(square);
+    const Image image = render_mesh(mesh, o);
+    double sum = 0.0;
+    for (int y = 0; y < image.height; ++y) {
+      for (int x = 0; x < image.width; ++x) {
+        for (int c = 0; c < 3; ++c) {
+          sum += std::abs(int(image.pixel(x, y)[c]) - int(background.pixel(x, y)[c]));
+        }
+      }
+    }
+    return sum;
+  };
+  const double dense = change(0.2f);
+  const double sparse = change(0.8f);
+  EXPECT_GT(dense, 0.0);
+  EXPECT_GT(dense, 2.5 * sparse);
 }
 
 TEST_F(ObstacleMaterial, ViewerDrawsTheStone) {
