@@ -55,9 +55,13 @@ struct DescribeOptions {
   bool json = false;
 };
 
-// A tree argument: a literal Newick string when it starts with '(', else a tree file.
+// A tree argument: a literal Newick string when it starts with '(' or ends with ';' and names
+// no file (a one-node tree such as `10;`), else a tree file.
 TreeGraph load_tree(const std::string& arg, const char* which, bool& is_newick) {
-  if (!arg.empty() && arg.front() == '(') {
+  std::error_code ec;
+  const bool literal = !arg.empty() && (arg.front() == '(' ||
+                                        (arg.back() == ';' && !std::filesystem::exists(arg, ec)));
+  if (literal) {
     is_newick = true;
     return parse_newick(arg, std::string("<Newick argument ") + which + ">");
   }

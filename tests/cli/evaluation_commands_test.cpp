@@ -26,6 +26,17 @@ TEST(EvaluationCli, DistanceOfNewickStringsWithAbsoluteCost) {
   EXPECT_EQ(j["mapping"][0], nlohmann::json::array({0, 0}));  // root to root
 }
 
+// A one-node tree against a root with one child: one insertion (topological), and with the
+// absolute cost the inserted node's label.
+TEST(EvaluationCli, OneNodeNewickLiteral) {
+  auto r = run_fspm("distance '10;' '(1)10;' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["distance"], 1.0);
+  r = run_fspm("distance '10;' '(7)10;' --cost absolute --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["distance"], 7.0);
+}
+
 TEST(EvaluationCli, DistanceReadsNewickFilesAndDefaultsToTopological) {
   const auto dir = scratch_dir("distance");
   write_text(dir / "a.nwk", "((1,2)3,4)5;\n");
