@@ -501,8 +501,8 @@ Experiment parse_experiment(std::string_view toml_text, const std::string& path)
     x.model_kind = r.string("model.kind", *n);
     x.model_kind_line = Reader::line_of(*n);
   } else {
-    throw ValueError("model.kind: missing (lsystem, greenlab, grow or synthetic)", path,
-                     Reader::line_of(model));
+    throw ValueError("model.kind: missing (lsystem, greenlab, grow, adapt, stages or synthetic)",
+                     path, Reader::line_of(model));
   }
   if (const toml::node* n = model.get("file")) {
     x.model_file = r.resolve("model.file", *n);

@@ -6,6 +6,7 @@
 #include "experiments/greenlab_model.hpp"
 #include "experiments/grow_model.hpp"
 #include "experiments/lsystem_model.hpp"
+#include "experiments/stages_model.hpp"
 #include "experiments/synthetic_model.hpp"
 
 namespace fspm::experiments {
@@ -45,9 +46,13 @@ std::unique_ptr<Model> make_model(const Experiment& x) {
     require_file(x);
     return make_adapt_model(x.model_file, x.model_scene, base_dir(x));
   }
+  if (x.model_kind == "stages") {
+    require_file(x);
+    return make_stages_model(x.model_file);
+  }
   if (x.model_kind == "synthetic") return make_synthetic_model();
   throw ValueError("model.kind: unknown kind '" + x.model_kind +
-                       "' (expected lsystem, greenlab, grow, adapt or synthetic)",
+                       "' (expected lsystem, greenlab, grow, adapt, stages or synthetic)",
                    x.path, x.model_kind_line);
 }
 

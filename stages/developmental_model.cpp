@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 
+#include "fspm/closest_name.hpp"
 #include "fspm/error.hpp"
 
 namespace fspm::stages {
@@ -33,6 +34,18 @@ bool close(double a, double b, double tolerance) {
 }
 
 }  // namespace
+
+std::string_view continuation_name(Continuation continuation) {
+  return continuation == Continuation::kThickest ? "thickest" : "least_deviation";
+}
+
+Continuation continuation_from_name(std::string_view name) {
+  for (Continuation c : {Continuation::kThickest, Continuation::kLeastDeviation}) {
+    if (name == continuation_name(c)) return c;
+  }
+  throw ValueError("stages: unknown continuation '" + std::string(name) + "'" +
+                   closest_name_hint(name, {"thickest", "least_deviation"}));
+}
 
 void StagesParams::validate() const {
   if (rigid_tip_count < 1 || rigid_tip_count > 1'000'000) {

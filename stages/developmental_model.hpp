@@ -25,6 +25,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 #include "fspm/tree_graph.hpp"
@@ -36,6 +37,11 @@ enum class Continuation : std::uint8_t {
   kLeastDeviation,  // Pirk 5.2.2: the child deviating least from the parent's direction
   kThickest,        // the thickest child (the least deviating of those within the tolerance)
 };
+
+// "least_deviation", "thickest".
+std::string_view continuation_name(Continuation continuation);
+// Throws ValueError naming the known names (and the closest one) for anything else.
+Continuation continuation_from_name(std::string_view name);
 
 struct StagesParams {
   // The thickest child by default: in grown trees a thin lateral is often straighter than the
