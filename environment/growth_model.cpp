@@ -11,6 +11,7 @@
 #include "environment/shadow_grid.hpp"
 #include "environment/space_colonization.hpp"
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 
 namespace fspm::environment {
 namespace {
@@ -118,6 +119,7 @@ class Grower {
     sense_light(year);
     accumulate_light(year);
     allocate_vigour();
+    check_memory_for_growth();
     const std::size_t n = ms_.size();
     // 4. Bud fate (step 4, Palubicki's continuous option): every bud with v >= min_shoot_vigour
     // grows a shoot whose length follows v.
@@ -127,6 +129,29 @@ class Grower {
       if (ms_[k].terminal_bud && v_terminal_[k] >= vmin) grow_shoot(k, true, v_terminal_[k], year);
       if (ms_[k].lateral_bud && v_lateral_[k] >= vmin) grow_shoot(k, false, v_lateral_[k], year);
     }
+  }
+
+  // The metamers this cycle's shoots will add (the count grow_shoot gives each), checked against
+  // the memory limit with the tree already grown, before any is allocated: per metamer its own
+  // record, the per-node light arrays and its node in the output tree.
+  void check_memory_for_growth() const {
+    const double vmin = std::max(p_.min_shoot_vigour, 1e-9);
+    const auto metamers = [&](double v) {
+      return v >= vmin ? std::clamp(static_cast<double>(std::lround(v)), 1.0,
+                                    static_cast<double>(p_.max_shoot_metamers))
+                       : 0.0;
+    };
+    double added = 0.0;
+    for (std::size_t k = 0; k < ms_.size(); ++k) {
+      if (!ms_[k].alive) continue;
+      if (ms_[k].terminal_bud) added += metamers(v_terminal_[k]);
+      if (ms_[k].lateral_bud) added += metamers(v_lateral_[k]);
+    }
+    const double per_metamer =
+        sizeof(Metamer) + 8.0 * sizeof(double) + TreeGraph::bytes_per_node(4);
+    check_memory((static_cast<double>(ms_.size()) + added) * per_metamer,
+                 "growing a tree of " + std::to_string(ms_.size()) + " metamers by " +
+                     std::to_string(static_cast<std::uint64_t>(added)) + " more");
   }
 
   void expire_lateral_buds(int year) {

@@ -9,6 +9,12 @@
 
 namespace fspm {
 
+double TreeGraph::bytes_per_node(std::size_t user_attributes) {
+  return 4.0 * sizeof(NodeId) + 3.0 * sizeof(Eigen::Vector3d) + 3.0 * sizeof(double) +
+         2.0 * sizeof(std::uint16_t) + sizeof(OrganKind) +
+         sizeof(double) * static_cast<double>(user_attributes);
+}
+
 std::string_view organ_kind_name(OrganKind kind) {
   switch (kind) {
     case OrganKind::kInternode:

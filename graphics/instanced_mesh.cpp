@@ -6,6 +6,7 @@
 #include <string>
 
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 
 namespace fspm::graphics {
 
@@ -66,6 +67,10 @@ TriangleMesh InstancedMesh::flatten() const {
     throw ValueError("the explicit mesh would have " + std::to_string(nv) +
                      " vertices, more than 32-bit indices allow; use .glb (instanced)");
   }
+  std::size_t attribute_count = 0;
+  for (const auto& m : meshes) attribute_count = std::max(attribute_count, m.attributes.size());
+  check_memory(TriangleMesh::bytes_for(nv, triangle_count(), attribute_count),
+               "the explicit mesh of " + std::to_string(instances.size()) + " instances");
   TriangleMesh out;
   out.positions.reserve(nv);
   out.normals.reserve(nv);

@@ -246,15 +246,10 @@ int sides_for_radius(double radius_m, const MeshOptions& options, double distanc
 
 namespace {
 
-// Bytes of the mesh mesh_tree fills: per vertex a position, a normal, a texture coordinate and
-// a float per attribute (the four node columns of AttributeFiller and the tree's own); per
-// triangle three indices and a material.
+// Bytes of the mesh mesh_tree fills: the four node columns of AttributeFiller and the tree's own
+// attributes per vertex.
 double mesh_bytes(const MeshCounts& counts, std::size_t user_attributes) {
-  const double per_vertex = sizeof(Eigen::Vector3f) * 2 + sizeof(Eigen::Vector2f) +
-                            sizeof(float) * (4.0 + static_cast<double>(user_attributes));
-  const double per_triangle = sizeof(TriangleMesh::Triangle) + sizeof(Material);
-  return static_cast<double>(counts.vertices) * per_vertex +
-         static_cast<double>(counts.triangles) * per_triangle;
+  return TriangleMesh::bytes_for(counts.vertices, counts.triangles, 4 + user_attributes);
 }
 
 }  // namespace

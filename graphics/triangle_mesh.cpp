@@ -48,6 +48,14 @@ Material material_from_index(int index) {
   return Material::kBark;
 }
 
+double TriangleMesh::bytes_for(std::size_t vertices, std::size_t triangles,
+                               std::size_t attributes) {
+  const double per_vertex = sizeof(Eigen::Vector3f) * 2 + sizeof(Eigen::Vector2f) +
+                            sizeof(float) * static_cast<double>(attributes);
+  const double per_triangle = sizeof(Triangle) + sizeof(Material);
+  return static_cast<double>(vertices) * per_vertex + static_cast<double>(triangles) * per_triangle;
+}
+
 std::vector<float>& TriangleMesh::add_attribute(const std::string& name) {
   for (auto& a : attributes) {
     if (a.name == name) return a.values;

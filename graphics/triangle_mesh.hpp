@@ -73,6 +73,11 @@ class TriangleMesh {
   std::vector<Material> materials;  // one per triangle
   std::vector<VertexAttribute> attributes;
 
+  // Bytes of a mesh of that size: per vertex a position, a normal, a texture coordinate and a
+  // float per attribute; per triangle three indices and a material. Checked against the memory
+  // limit before a mesh is allocated.
+  static double bytes_for(std::size_t vertices, std::size_t triangles, std::size_t attributes);
+
   std::size_t vertex_count() const { return positions.size(); }
   std::size_t triangle_count() const { return triangles.size(); }
   bool empty() const { return triangles.empty(); }

@@ -449,14 +449,6 @@ std::uint64_t explicit_metamers(const CompressedTreeGraph& graph, const AxisBuil
   return metamers;
 }
 
-// Bytes of a TreeGraph node: the columns of fspm/tree_graph.hpp (117 bytes) and one double per
-// attribute.
-double tree_node_bytes(std::size_t attributes) {
-  return 4.0 * sizeof(NodeId) + 3.0 * sizeof(Eigen::Vector3d) + 3.0 * sizeof(double) +
-         2.0 * sizeof(std::uint16_t) + sizeof(OrganKind) +
-         sizeof(double) * static_cast<double>(attributes);
-}
-
 }  // namespace
 
 TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
@@ -480,8 +472,9 @@ void reconstruct_into(const CompressedTreeGraph& graph, const ReconstructionOpti
   // flower), so the columns are allocated once and impossible requests fail early.
   const std::uint64_t bound = explicit_metamers(graph, builder);
   if (builder.any_pruning_period()) tree.add_attribute("dead", 0.0);
-  check_memory(static_cast<double>(bound * 2 + 8) * tree_node_bytes(tree.attribute_names().size()),
-               "the explicit tree of " + std::to_string(bound) + " metamers");
+  check_memory(
+      static_cast<double>(bound * 2 + 8) * TreeGraph::bytes_per_node(tree.attribute_names().size()),
+      "the explicit tree of " + std::to_string(bound) + " metamers");
   tree.reserve(static_cast<std::size_t>(bound * 2 + 8));
   tree.advise_huge_pages();
   // Oldest node first, axis by axis (Jaeger 3.1.1): a FIFO of axis starts.

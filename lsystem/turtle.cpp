@@ -10,6 +10,7 @@
 
 #include "fspm/error.hpp"
 #include "fspm/input_file.hpp"
+#include "fspm/memory_budget.hpp"
 #include "lsystem/turtle_core.hpp"
 
 namespace fspm::lsystem {
@@ -247,6 +248,9 @@ Interpretation interpret(const ModuleString& s, const SymbolTable& symbols,
     const auto a = actions[sym];
     drawn += (a == detail::Action::kForward || a == detail::Action::kForwardNoVertex) ? 1 : 0;
   }
+  // Two attributes (color_index, leaf_area) and a colour per drawn module.
+  check_memory(static_cast<double>(drawn) * (TreeGraph::bytes_per_node(2) + sizeof(double)),
+               "the tree of " + std::to_string(drawn) + " drawn modules");
   out.tree.reserve(drawn);
   GraphBuilder builder(out);
   builder.colors_.reserve(drawn);

@@ -13,6 +13,7 @@
 #include <set>
 
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 #include "graphics/image.hpp"
 #include "graphics/mesh_writers.hpp"
 #include "graphics/render.hpp"
@@ -364,6 +365,31 @@ TEST(InstancedViewer, InstancedDrawsLookLikeTheFlattenedMesh) {
   EXPECT_GT(differing_fraction(c, a, 40), 0.005);  // the colours did change
   EXPECT_LT(differing_fraction(c, d, 40), 0.01);
   fs::remove_all(dir);
+}
+
+// Restores the default memory limit when a test ends.
+struct MemoryLimitGuard {
+  explicit MemoryLimitGuard(std::uint64_t bytes) { set_memory_limit_bytes(bytes); }
+  ~MemoryLimitGuard() { set_memory_limit_bytes(0); }
+};
+
+// Flattening checks the explicit mesh against the memory limit first: 100 000 instances of a
+// 4-vertex quad are 400 000 vertices of 32 bytes (12.8 MB), above a limit of 1 MiB; 1 000
+// instances (128 kB) are flattened.
+TEST(InstancedMesh, FlattenStopsAtTheMemoryLimit) {
+  const MemoryLimitGuard guard(std::uint64_t{1} << 20);
+  TriangleMesh quad;
+  quad.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  quad.normals.assign(4, Eigen::Vector3f::UnitZ());
+  quad.uvs.assign(4, Eigen::Vector2f::Zero());
+  quad.triangles = {{0, 1, 2}, {0, 2, 3}};
+  quad.materials.assign(2, Material::kBark);
+  InstancedMesh scene;
+  scene.meshes.push_back(quad);
+  scene.instances.resize(1000);
+  EXPECT_EQ(scene.flatten().vertex_count(), 4000u);
+  scene.instances.resize(100000);
+  EXPECT_THROW(scene.flatten(), MemoryLimitError);
 }
 
 }  // namespace
