@@ -1,0 +1,110 @@
+// Encoded in memory through an OpenImageIO IOProxy, then written with the core's atomic writer.
+#include "crown/image_io.hpp"
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <ostream>
+
+#include "fspm/atomic_file.hpp"
+#include "fspm/error.hpp"
+
+namespace fspm::crown {
+namespace {
+
+// All channels of the first subimage as floats in [0, 1].
+std::vector<float> read_pixels(const std::string& path, OIIO::ImageSpec& spec) {
+  if (!std::filesystem::is_regular_file(path)) {
+    throw IoError("cannot read image: no such file", path);
+  }
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) throw IoError("cannot read image: " + OIIO::geterror(), path);
+  spec = in->spec();
+  if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1) {
+    throw IoError("image has no pixels", path);
+  }
+  std::vector<float> pixels(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data())) {
+    throw IoError("cannot decode image: " + in->geterror(), path);
+  }
+  return pixels;
+}
+
+}  // namespace
+
+Raster read_rgb(const std::string& path) {
+  OIIO::ImageSpec spec;
+  const std::vector<float> pixels = read_pixels(path, spec);
+  Raster out(spec.width, spec.height, 3);
+  const int n = spec.nchannels;
+  for (std::size_t i = 0, count = out.values.size() / 3; i < count; ++i) {
+    for (int c = 0; c < 3; ++c) {
+      out.values[3 * i + c] = std::clamp(pixels[i * n + (n >= 3 ? c : 0)], 0.0f, 1.0f);
+    }
+  }
+  return out;
+}
+
+Mask read_mask(const std::string& path) {
+  OIIO::ImageSpec spec;
+  const std::vector<float> pixels = read_pixels(path, spec);
+  Mask mask(spec.width, spec.height);
+  for (std::size_t i = 0; i < mask.inside.size(); ++i) {
+    mask.inside[i] = pixels[i * spec.nchannels] > 0.5f ? 1 : 0;
+  }
+  if (mask.count() == 0) {
+    throw ValueError("the mask has no crown pixel (expected white crown on black)", path);
+  }
+  return mask;
+}
+
+void check_image_output(const std::string& path) {
+  if (!OIIO::ImageOutput::create(path)) {
+    throw ValueError("unknown image format (expected an extension such as .png, .tif or .exr)",
+                     path);
+  }
+  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  if (!dir.empty() && !std::filesystem::is_directory(dir)) {
+    throw IoError("cannot write: directory '" + dir.string() + "' does not exist", path);
+  }
+}
+
+void write_raster(const Raster& image, const std::string& path) {
+  check_image_output(path);
+  if (image.width < 1 || image.height < 1 || (image.channels != 1 && image.channels != 3)) {
+    throw ValueError("image to write has no pixels or not 1 or 3 channels", path);
+  }
+  auto out = OIIO::ImageOutput::create(path);
+  std::vector<std::uint8_t> bytes(image.values.size());
+  for (std::size_t i = 0; i < bytes.size(); ++i) {
+    bytes[i] =
+        static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(image.values[i], 0.0f, 1.0f)));
+  }
+  OIIO::ImageSpec spec(image.width, image.height, image.channels, OIIO::TypeDesc::UINT8);
+  OIIO::Filesystem::IOVecOutput memory;  // encode in memory: nothing touches disk yet
+  if (!out->supports("ioproxy") || !out->set_ioproxy(&memory) || !out->open(path, spec) ||
+      !out->write_image(OIIO::TypeDesc::UINT8, bytes.data()) || !out->close()) {
+    throw IoError("cannot encode image: " + out->geterror(), path);
+  }
+  const std::vector<unsigned char>& encoded = memory.buffer();
+  write_file_atomically(
+      path,
+      [&](std::ostream& stream) {
+        stream.write(reinterpret_cast<const char*>(encoded.data()),
+                     static_cast<std::streamsize>(encoded.size()));
+      },
+      true);
+}
+
+void write_mask(const Mask& mask, const std::string& path) {
+  Raster image(mask.width, mask.height, 1);
+  for (std::size_t i = 0; i < mask.inside.size(); ++i)
+    image.values[i] = mask.inside[i] ? 1.0f : 0.0f;
+  write_raster(image, path);
+}
+
+}  // namespace fspm::crown

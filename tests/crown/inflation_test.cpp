@@ -1,0 +1,123 @@
+// Inflation (Argudo 4.3.2) against closed forms: a disc becomes a sphere, an ellipse an
+// ellipsoid-like crown; a 4-connected silhouette does not give the sphere (Argudo Fig. 4.13).
+#include "crown/inflation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "crown/base_mesh.hpp"
+#include "fspm/error.hpp"
+
+namespace fspm::crown {
+namespace {
+
+constexpr double kCentre = 127.5;  // of a 256 x 256 raster
+
+Mask ellipse_mask(double a, double b) {
+  Mask m(256, 256);
+  for (int y = 0; y < 256; ++y) {
+    for (int x = 0; x < 256; ++x) {
+      const double u = (x - kCentre) / a, v = (y - kCentre) / b;
+      m.set(x, y, u * u + v * v <= 1.0);
+    }
+  }
+  return m;
+}
+
+// Front sheet depth scaled so its deepest point is `depth` pixels (the module's depth ratio).
+std::vector<Eigen::Vector3d> scaled(const InflatedSheet& s, double depth) {
+  double zmax = 0.0;
+  for (const auto& p : s.positions) zmax = std::max(zmax, p.z());
+  std::vector<Eigen::Vector3d> out = s.positions;
+  for (auto& p : out) p.z() *= depth / zmax;
+  return out;
+}
+
+// Mean and largest |(x/a)^2 + (y/b)^2 + (z/c)^2 - 1|-style error as a relative radius error:
+// the distance to the centre in the coordinates that make the ellipsoid a unit sphere.
+std::pair<double, double> ellipsoid_error(const std::vector<Eigen::Vector3d>& ps, double a,
+                                          double b, double c) {
+  double sum = 0.0, worst = 0.0;
+  for (const auto& p : ps) {
+    const double u = (p.x() - kCentre) / a, v = (p.y() - kCentre) / b, w = p.z() / c;
+    const double e = std::abs(std::sqrt(u * u + v * v + w * w) - 1.0);
+    sum += e;
+    worst = std::max(worst, e);
+  }
+  return {sum / static_cast<double>(ps.size()), worst};
+}
+
+TEST(Inflation, StencilIsTheSquaredFivePointLaplacian) {
+  // (L * L)(d) for L = [0 1 0; 1 -4 1; 0 1 0], brute force, divided by 16 as in eq. 4.2.
+  const int l[3][3] = {{0, 1, 0}, {1, -4, 1}, {0, 1, 0}};
+  for (int dy = -2; dy <= 2; ++dy) {
+    for (int dx = -2; dx <= 2; ++dx) {
+      int sum = 0;
+      for (int ay = -1; ay <= 1; ++ay) {
+        for (int ax = -1; ax <= 1; ++ax) {
+          const int by = dy - ay, bx = dx - ax;
+          if (std::abs(by) <= 1 && std::abs(bx) <= 1) sum += l[ay + 1][ax + 1] * l[by + 1][bx + 1];
+        }
+      }
+      EXPECT_DOUBLE_EQ(bilaplacian_weight(dx, dy), sum / 16.0) << dx << "," << dy;
+    }
+  }
+}
+
+// The disc of radius 100 has its silhouette pixel centres 199 pixels apart: the radius the
+// method sees (and the module's depth scaling uses) is 99.5.
+TEST(Inflation, DiscBecomesSphere) {
+  const double r = 99.5;
+  const InflatedSheet s = inflate(ellipse_mask(100.0, 100.0), {2.0, Connectivity::kEight});
+  const auto [mean, worst] = ellipsoid_error(scaled(s, r), r, r, r);
+  EXPECT_LT(mean, 0.01);    // radius error of the crown surface, on average
+  EXPECT_LT(worst, 0.025);  // and at the worst vertex, near the rim
+  // Unscaled, k = 2 already gives nearly the sphere's depth (Argudo Fig. 4.13, right).
+  double zmax = 0.0;
+  for (const auto& p : s.positions) zmax = std::max(zmax, p.z());
+  EXPECT_NEAR(zmax, r, 0.05 * r);
+}
+
+TEST(Inflation, EllipseBecomesEllipsoidLikeCrown) {
+  const double a = 110.0, b = 70.0;  // wide crown: depth scaled to its half width
+  const InflatedSheet s = inflate(ellipse_mask(a, b), {2.0, Connectivity::kEight});
+  const auto [mean, worst] = ellipsoid_error(scaled(s, a), a, b, a);
+  EXPECT_LT(mean, 0.03);
+  EXPECT_LT(worst, 0.08);
+}
+
+TEST(Inflation, FourConnectedSilhouetteIsNoSphere) {
+  const double r = 100.0;
+  const InflatedSheet s8 = inflate(ellipse_mask(r, r), {2.0, Connectivity::kEight});
+  const InflatedSheet s4 = inflate(ellipse_mask(r, r), {2.0, Connectivity::kFour});
+  const auto e8 = ellipsoid_error(scaled(s8, r), r, r, r);
+  const auto e4 = ellipsoid_error(scaled(s4, r), r, r, r);
+  EXPECT_GT(e4.first, 2.0 * e8.first);
+  // The thicker silhouette leaves fewer unknowns: every diagonal step of the rim is one more pixel.
+  EXPECT_LT(std::count(s4.classes.begin(), s4.classes.end(), PixelClass::kInner),
+            std::count(s8.classes.begin(), s8.classes.end(), PixelClass::kInner));
+}
+
+TEST(Inflation, MirroredMeshEnclosesTheSphereVolume) {
+  const double r = 99.5;
+  const InflatedSheet s = inflate(ellipse_mask(100.0, 100.0), {2.0, Connectivity::kEight});
+  BaseMesh base = mirrored_mesh(s);
+  double zmax = 0.0;
+  for (const auto& p : base.mesh.positions) zmax = std::max(zmax, static_cast<double>(p.z()));
+  for (auto& p : base.mesh.positions) p.z() *= static_cast<float>(r / zmax);
+  const double volume = enclosed_volume(base.mesh, 0, base.mesh.crown_triangles);
+  const double sphere = 4.0 / 3.0 * M_PI * r * r * r;
+  EXPECT_NEAR(volume, sphere, 0.04 * sphere);  // closed and outward: positive, near 4/3 pi r^3
+}
+
+TEST(Inflation, RejectsEmptyMaskAndBadDepth) {
+  EXPECT_THROW(inflate(Mask(8, 8), {}), Error);
+  EXPECT_THROW(inflate(ellipse_mask(20, 20), {0.0, Connectivity::kEight}), Error);
+}
+
+}  // namespace
+}  // namespace fspm::crown
