@@ -1,0 +1,156 @@
+#include "crown/reconstruction.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "crown/base_mesh.hpp"
+#include "crown/billboard_cloud.hpp"
+#include "crown/color_cubemap.hpp"
+#include "crown/radius_cubemap.hpp"
+#include "crown/trunk.hpp"
+#include "fspm/error.hpp"
+
+namespace fspm::crown {
+namespace {
+
+// Pixel to metre frame: x right from the crown's centroid column, z up from the ground.
+struct Frame {
+  double metres_per_px = 0.0;
+  double centre_x_px = 0.0;
+  double bottom_px = 0.0;  // the lower edge of the crown's lowest row
+  double half_width_px = 0.0;
+  double depth_scale = 0.0;   // inflated z to pixels of depth
+  double depth_max_px = 0.0;  // the deepest point of the base mesh, pixels
+  double base_z_m = 0.0;      // trunk height
+  Eigen::Vector3f centre_m = Eigen::Vector3f::Zero();
+};
+
+void check(const Raster& photo, const Mask& mask, const CrownOptions& o) {
+  if (photo.width != mask.width || photo.height != mask.height) {
+    throw ValueError("the photograph is " + std::to_string(photo.width) + "x" +
+                     std::to_string(photo.height) + " but the mask " + std::to_string(mask.width) +
+                     "x" + std::to_string(mask.height) + ": they must be the same size");
+  }
+  if (!(o.height_m > 0.0) || !std::isfinite(o.height_m)) throw ValueError("--height-m must be > 0");
+  if (!(o.depth_ratio > 0.0) || !std::isfinite(o.depth_ratio)) {
+    throw ValueError("the depth ratio must be > 0");
+  }
+  if (!(o.relief_weight >= 0.0 && o.relief_weight < 2.0)) {
+    throw ValueError("the relief weight must be in [0, 2)");
+  }
+  if (o.cubemap_size < 0 || o.cubemap_size > 2048) throw ValueError("cubemap size must be 0..2048");
+  if (o.trunk_height_m < 0.0 || o.trunk_radius_m < 0.0) {
+    throw ValueError("trunk height and radius must be >= 0");
+  }
+}
+
+Frame make_frame(const Mask& mask, const InflatedSheet& sheet, const CrownOptions& o) {
+  int x0 = mask.width, x1 = -1, y0 = mask.height, y1 = -1;
+  double sum_x = 0.0, sum_y = 0.0, n = 0.0;
+  for (int y = 0; y < mask.height; ++y) {
+    for (int x = 0; x < mask.width; ++x) {
+      if (!mask.at(x, y)) continue;
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+      sum_x += x, sum_y += y, n += 1.0;
+    }
+  }
+  Frame f;
+  f.metres_per_px = o.height_m / (y1 - y0 + 1);
+  f.centre_x_px = sum_x / n;
+  f.bottom_px = y1 + 0.5;
+  f.half_width_px = std::max(0.5, 0.5 * (x1 - x0));
+  double z_max = 0.0;
+  for (const auto& p : sheet.positions) z_max = std::max(z_max, p.z());
+  f.depth_scale = z_max > 0.0 ? o.depth_ratio * f.half_width_px / z_max : 0.0;
+  f.depth_max_px = z_max * f.depth_scale;
+  f.base_z_m = o.trunk_height_m;
+  f.centre_m = {0.0f, 0.0f,
+                static_cast<float>(f.base_z_m + (f.bottom_px - sum_y / n) * f.metres_per_px)};
+  return f;
+}
+
+// Base mesh in metres with the relief: the photograph's on the front half (0 on the silhouette),
+// the height cubemap's on the back half (faded to 0 toward the silhouette).
+void compose(BaseMesh& base, const Frame& f, const Raster& photo, const Raster& relief,
+             const Cubemap& color, const Cubemap& height, double rho) {
+  float relief_max = 1e-6f;
+  for (float v : relief.values) relief_max = std::max(relief_max, std::abs(v));
+  CrownMesh& mesh = base.mesh;
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+    Eigen::Vector3f& p = mesh.positions[v];
+    const int px = std::clamp(static_cast<int>(std::lround(p.x())), 0, photo.width - 1);
+    const int py = std::clamp(static_cast<int>(std::lround(p.y())), 0, photo.height - 1);
+    double depth_px = std::abs(p.z()) * f.depth_scale;
+    const float side = base.is_back[v] ? 1.0f : -1.0f;  // the photograph looks along +y
+    const Eigen::Vector3f world(
+        static_cast<float>((p.x() - f.centre_x_px) * f.metres_per_px),
+        side * static_cast<float>(depth_px * f.metres_per_px),
+        static_cast<float>(f.base_z_m + (f.bottom_px - p.y()) * f.metres_per_px));
+    if (!base.is_back[v]) {
+      depth_px += rho * 0.5 * f.half_width_px * relief.at(px, py) / relief_max;
+      mesh.colors[v] = {photo.at(px, py, 0), photo.at(px, py, 1), photo.at(px, py, 2)};
+    } else {
+      const Eigen::Vector3f dir = world - f.centre_m;
+      const float h = sample(height, dir);
+      depth_px += rho * f.half_width_px * (h - 0.5) *
+                  std::min(1.0, depth_px / std::max(1e-9, f.depth_max_px));
+      const CubeTexel t = direction_texel(dir, color.size);
+      const Raster& face = color.faces[static_cast<std::size_t>(t.face)];
+      mesh.colors[v] = {face.at(t.x, t.y, 0), face.at(t.x, t.y, 1), face.at(t.x, t.y, 2)};
+    }
+    p = {world.x(), side * static_cast<float>(std::max(0.0, depth_px) * f.metres_per_px),
+         world.z()};
+  }
+}
+
+double seconds_since(std::chrono::steady_clock::time_point& t0) {
+  const auto now = std::chrono::steady_clock::now();
+  const double s = std::chrono::duration<double>(now - t0).count();
+  t0 = now;
+  return s;
+}
+
+}  // namespace
+
+CrownModel reconstruct_crown(const Raster& photo, const Mask& mask, const CrownOptions& options,
+                             std::mt19937_64& rng) {
+  check(photo, mask, options);
+  CrownModel model;
+  auto t0 = std::chrono::steady_clock::now();
+  const InflatedSheet sheet = inflate(mask, options.inflation);
+  BaseMesh base = mirrored_mesh(sheet);
+  model.seconds.emplace_back("base_mesh", seconds_since(t0));
+  model.relief = relief(photo, mask, options.relief);
+  model.seconds.emplace_back("relief", seconds_since(t0));
+  const Frame frame = make_frame(mask, sheet, options);
+  const int size = options.cubemap_size > 0
+                       ? options.cubemap_size
+                       : std::clamp(static_cast<int>(1.4 * frame.half_width_px), 32, 256);
+  model.color = color_cubemap(photo, mask, size, options.quilt, rng);
+  model.seconds.emplace_back("texture_synthesis", seconds_since(t0));
+  const Cubemap height = height_cubemap(model.color, options.relief.levels);
+  compose(base, frame, photo, model.relief, model.color, height, options.relief_weight);
+  model.mesh = std::move(base.mesh);
+  model.volume_m3 = enclosed_volume(model.mesh, 0, model.mesh.crown_triangles);
+  if (model.volume_m3 < 0.0) {  // the image's rows run down: the mirror flips orientation
+    flip_triangles(model.mesh, 0, model.mesh.crown_triangles);
+    model.volume_m3 = -model.volume_m3;
+  }
+  model.centre = frame.centre_m;
+  model.radius = radius_cubemap(model.mesh, model.centre, size);
+  model.seconds.emplace_back("composition", seconds_since(t0));
+  const double trunk_radius =
+      options.trunk_radius_m > 0.0 ? options.trunk_radius_m : 0.02 * options.height_m;
+  append_trunk(model.mesh, Eigen::Vector2f::Zero(),
+               options.trunk_height_m + 0.25 * options.height_m * (options.trunk_height_m > 0.0),
+               trunk_radius);
+  if (options.billboards) model.billboards = billboard_centres(model.radius, model.centre, rng);
+  model.crown_pixels = mask.count();
+  model.silhouette_pixels = static_cast<std::size_t>(
+      std::count(sheet.classes.begin(), sheet.classes.end(), PixelClass::kSilhouette));
+  model.metres_per_pixel = frame.metres_per_px;
+  return model;
+}
+
+}  // namespace fspm::crown
