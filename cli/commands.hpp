@@ -16,9 +16,11 @@ void add_evaluation_commands(CLI::App& app);
 void add_adapt_commands(CLI::App& app);
 void add_stages_commands(CLI::App& app);
 void add_scene_commands(CLI::App& app);
+// fspm crown (fspm-full, built with OpenImageIO).
+void add_crown_commands(CLI::App& app);
 
 // The commands that need the graphics and experiments libraries (run, compare, report, results,
-// mesh, render, view): registered for real in fspm-full; in fspm only listed in --help.
+// mesh, render, view, crown): registered for real in fspm-full; in fspm only listed in --help.
 void add_full_commands(CLI::App& app);
 // In fspm: when the command line names one of those commands, replaces the process by fspm-full
 // with the same arguments (throws IoError when it cannot); otherwise returns. In fspm-full:

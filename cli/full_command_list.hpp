@@ -28,8 +28,11 @@ inline constexpr FullCommand kViewCommand{
     "Real-time viewer: drag to orbit, right-drag to pan, wheel to zoom, [ ] growth steps, "
     "S shadows, R reset, Esc quit"};
 
-inline constexpr std::array<FullCommand, 7> kFullCommands = {
+inline constexpr FullCommand kCrownCommand{
+    "crown", "A tree crown from one photograph (Argudo 2014): mesh and cubemaps"};
+
+inline constexpr std::array<FullCommand, 8> kFullCommands = {
     kRunCommand,  kCompareCommand, kReportCommand, kResultsCommand,
-    kMeshCommand, kRenderCommand,  kViewCommand};
+    kMeshCommand, kRenderCommand,  kViewCommand,   kCrownCommand};
 
 }  // namespace fspm::cli

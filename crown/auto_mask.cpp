@@ -44,9 +44,9 @@ Mask auto_mask(const Raster& rgb, const AutoMaskOptions& options) {
   }
   const int open = options.open_px > 0 ? options.open_px : std::max(1, rgb.height / 100);
   const int close = options.close_px > 0 ? options.close_px : std::max(1, rgb.height / 50);
-  Mask m = dilate(erode(raw, open), open);  // opening: trunk and thin branches go
-  m = erode(dilate(m, close), close);       // closing: gaps between leaf clumps close
-  m = largest_piece(fill_holes(m));
+  Mask m = erode(dilate(raw, close), close);  // closing: gaps between leaf clumps close
+  m = dilate(erode(m, open), open);           // opening: trunk and thin branches go
+  m = large_pieces(fill_holes(m), 0.1);
   if (m.count() == 0) {
     throw ValueError(
         "no crown found: nothing differs from the sky and ground beside it (give --mask)");

@@ -2,9 +2,10 @@
 // Automatic crown mask for a photograph without one (Argudo leaves segmentation to the user):
 // the background of every row is the colour at the row's left and right ends (sky above, ground
 // below, both seen beside the tree). A pixel is crown when its colour is far from its row's
-// background; an opening removes the thin trunk and branches, a closing joins the foliage, holes
-// are filled and the largest piece is kept. Write the mask out and check it: a tree touching the
-// image's sides or a background that changes along a row defeats it.
+// background; a closing joins the foliage, an opening then removes the thin trunk and branches,
+// holes are filled and the pieces of at least a tenth of the largest one's area are kept. Write the
+// mask out and check it: a tree touching the image's sides or a background that changes along a row
+// defeats it.
 #include "crown/raster.hpp"
 
 namespace fspm::crown {

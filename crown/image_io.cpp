@@ -79,15 +79,20 @@ void write_raster(const Raster& image, const std::string& path) {
     throw ValueError("image to write has no pixels or not 1 or 3 channels", path);
   }
   auto out = OIIO::ImageOutput::create(path);
-  std::vector<std::uint8_t> bytes(image.values.size());
+  // Formats that hold floats (OpenEXR, TIFF) get the values as they are: radii in metres.
+  const std::string format = out->format_name();
+  const bool floats = format == "openexr" || format == "tiff";
+  std::vector<std::uint8_t> bytes(floats ? 0 : image.values.size());
   for (std::size_t i = 0; i < bytes.size(); ++i) {
     bytes[i] =
         static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(image.values[i], 0.0f, 1.0f)));
   }
-  OIIO::ImageSpec spec(image.width, image.height, image.channels, OIIO::TypeDesc::UINT8);
+  const OIIO::TypeDesc type = floats ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
+  const void* data = floats ? static_cast<const void*>(image.values.data()) : bytes.data();
+  OIIO::ImageSpec spec(image.width, image.height, image.channels, type);
   OIIO::Filesystem::IOVecOutput memory;  // encode in memory: nothing touches disk yet
   if (!out->supports("ioproxy") || !out->set_ioproxy(&memory) || !out->open(path, spec) ||
-      !out->write_image(OIIO::TypeDesc::UINT8, bytes.data()) || !out->close()) {
+      !out->write_image(type, data) || !out->close()) {
     throw IoError("cannot encode image: " + out->geterror(), path);
   }
   const std::vector<unsigned char>& encoded = memory.buffer();

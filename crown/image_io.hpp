@@ -15,8 +15,8 @@ Raster read_rgb(const std::string& path);
 // Throws IoError when unreadable, ValueError when it has no crown pixel.
 Mask read_mask(const std::string& path);
 
-// 8-bit output of 1 or 3 channels in [0, 1] (clamped). Throws ValueError for an unknown format,
-// IoError when the file cannot be written.
+// 1 or 3 channels: 8-bit in [0, 1] (clamped), or floats as they are for .exr and .tif. Throws
+// ValueError for an unknown format, IoError when the file cannot be written.
 void write_raster(const Raster& image, const std::string& path);
 void write_mask(const Mask& mask, const std::string& path);
 

@@ -1,5 +1,6 @@
 #include "crown/mask_morphology.hpp"
 
+#include <algorithm>
 #include <vector>
 
 namespace fspm::crown {
@@ -78,18 +79,20 @@ Mask fill_holes(const Mask& mask) {
   return out;
 }
 
-Mask largest_piece(const Mask& mask) {
+Mask large_pieces(const Mask& mask, double fraction) {
   std::vector<int> labels(mask.inside.size(), 0);
-  int label = 0, best_label = 0;
-  std::size_t best = 0;
+  std::vector<std::size_t> sizes{0};  // by label; label 0 is the background
   for (std::size_t p = 0; p < labels.size(); ++p) {
     if (!mask.inside[p] || labels[p] != 0) continue;
-    const std::size_t size = flood(mask, true, static_cast<int>(p), true, ++label, labels);
-    if (size > best) best = size, best_label = label;
+    const int label = static_cast<int>(sizes.size());
+    sizes.push_back(flood(mask, true, static_cast<int>(p), true, label, labels));
   }
+  const std::size_t largest = *std::max_element(sizes.begin(), sizes.end());
   Mask out(mask.width, mask.height);
-  for (std::size_t p = 0; p < labels.size(); ++p)
-    out.inside[p] = labels[p] == best_label && best_label != 0;
+  for (std::size_t p = 0; p < labels.size(); ++p) {
+    const auto size = static_cast<double>(sizes[static_cast<std::size_t>(labels[p])]);
+    out.inside[p] = labels[p] != 0 && size >= fraction * static_cast<double>(largest);
+  }
   return out;
 }
 

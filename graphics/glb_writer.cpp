@@ -74,6 +74,16 @@ class GlbBuilder {
         add_accessor(add_view(mesh.normals.data(), nv * 12, kArrayBuffer), kFloat, nv, "VEC3");
     attributes["TEXCOORD_0"] =
         add_accessor(add_view(mesh.uvs.data(), nv * 8, kArrayBuffer), kFloat, nv, "VEC2");
+    // Per-vertex colours (a crown reconstructed from a photograph) as glTF's COLOR_0.
+    if (mesh.has_attribute("red") && mesh.has_attribute("green") && mesh.has_attribute("blue")) {
+      auto& rgb = color_store_.emplace_back(3 * nv);
+      const auto r = mesh.attribute("red"), g = mesh.attribute("green"), b = mesh.attribute("blue");
+      for (std::size_t i = 0; i < nv; ++i) {
+        rgb[3 * i] = r[i], rgb[3 * i + 1] = g[i], rgb[3 * i + 2] = b[i];
+      }
+      attributes["COLOR_0"] =
+          add_accessor(add_view(rgb.data(), nv * 12, kArrayBuffer), kFloat, nv, "VEC3");
+    }
     json names = json::object();
     for (const auto& a : mesh.attributes) {
       const std::string key = gltf_attribute_name(a.name);
@@ -188,6 +198,7 @@ class GlbBuilder {
 
   std::vector<View> views_;
   std::deque<std::array<std::vector<std::uint32_t>, kMaterials.size()>> index_store_;  // stable
+  std::deque<std::vector<float>> color_store_;  // stable addresses for COLOR_0 views
   nlohmann::json buffer_views_ = nlohmann::json::array();
   nlohmann::json accessors_ = nlohmann::json::array();
   nlohmann::json meshes_ = nlohmann::json::array();

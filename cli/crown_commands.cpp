@@ -1,0 +1,258 @@
+// fspm crown: a tree crown from one photograph (Argudo 2014, chapters 4-5), written as a mesh and
+// cubemaps. Needs OpenImageIO, so it lives in fspm-full.
+#include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/full_command_list.hpp"
+#include "cli/output.hpp"
+#include "crown/auto_mask.hpp"
+#include "crown/cubemap.hpp"
+#include "crown/image_io.hpp"
+#include "crown/reconstruction.hpp"
+#include "crown/side_view.hpp"
+#include "fspm/atomic_file.hpp"
+#include "fspm/error.hpp"
+#include "graphics/mesh_writers.hpp"
+
+namespace fspm::cli {
+namespace {
+
+struct CrownCommand {
+  std::string photo;
+  std::string mask;
+  std::string out;
+  double height_m = 0.0;
+  double image_height_m = 0.0;
+  double depth_ratio = 1.0;
+  double relief = 0.15;
+  double k = 2.0;
+  int connectivity = 8;
+  int cubemap_size = 0;
+  double trunk_m = 0.0;
+  double trunk_radius_m = 0.0;
+  bool billboards = false;
+  std::string side_mask;
+  std::uint64_t seed = 1;
+  bool json = false;
+};
+
+// Where each output goes: OUT is a mesh file (.glb, .obj, .ply; the cubemaps beside it, named
+// after its stem) or a directory (crown.glb and the rest inside).
+struct OutputPaths {
+  std::string mesh, color, radius, relief, mask, billboards;
+};
+
+OutputPaths output_paths(const std::string& out) {
+  namespace fs = std::filesystem;
+  const fs::path p(out);
+  const std::string ext = p.extension().string();
+  const bool directory = ext.empty() || fs::is_directory(p);
+  if (directory) fs::create_directories(p);
+  const fs::path dir = directory ? p : p.parent_path();
+  const std::string stem = directory ? "crown" : p.stem().string();
+  auto beside = [&](const std::string& suffix) { return (dir / (stem + suffix)).string(); };
+  OutputPaths o;
+  o.mesh = directory ? beside(".glb") : out;
+  graphics::mesh_format_for(o.mesh);  // .obj, .ply, .vtp or .glb, else ValueError
+  if (o.mesh.ends_with(".pvd")) throw ValueError("a crown is one mesh, not a .pvd sequence", out);
+  o.color = beside("_color_cubemap.png");
+  o.radius = beside("_radius_cubemap.exr");
+  o.relief = beside("_relief.png");
+  o.mask = beside("_mask.png");
+  o.billboards = beside("_billboards.csv");
+  return o;
+}
+
+graphics::TriangleMesh to_triangle_mesh(const crown::CrownMesh& m) {
+  graphics::TriangleMesh out;
+  out.positions = m.positions;
+  out.normals = crown::vertex_normals(m);
+  out.uvs.assign(m.positions.size(), Eigen::Vector2f::Zero());
+  out.triangles = m.triangles;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    out.materials.push_back(t < m.crown_triangles ? graphics::Material::kLeaf
+                                                  : graphics::Material::kBark);
+  }
+  auto& red = out.add_attribute("red");
+  auto& green = out.add_attribute("green");
+  auto& blue = out.add_attribute("blue");
+  for (std::size_t v = 0; v < m.colors.size(); ++v) {
+    red[v] = m.colors[v].x(), green[v] = m.colors[v].y(), blue[v] = m.colors[v].z();
+  }
+  return out;
+}
+
+// Relief in [0, 1] for viewing: 0.5 is the silhouette plane.
+crown::Raster relief_picture(const crown::Raster& relief) {
+  float largest = 1e-6f;
+  for (float v : relief.values) largest = std::max(largest, std::abs(v));
+  crown::Raster out = relief;
+  for (float& v : out.values) v = 0.5f + 0.5f * v / largest;
+  return out;
+}
+
+void write_billboards(const std::vector<Eigen::Vector3f>& points, const std::string& path) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "x_m,y_m,z_m\n";
+    for (const auto& p : points) out << p.x() << ',' << p.y() << ',' << p.z() << '\n';
+  });
+}
+
+crown::CrownOptions crown_options(const CrownCommand& c, const crown::Mask& mask) {
+  crown::CrownOptions o;
+  if (c.height_m > 0.0 && c.image_height_m > 0.0) {
+    throw ValueError("give --height-m (the crown's height) or --image-height-m, not both");
+  }
+  o.height_m = c.height_m > 0.0 ? c.height_m : 10.0;
+  if (c.image_height_m > 0.0) {  // the whole picture's height: scale the crown's rows by it
+    int top = mask.height, bottom = -1;
+    for (int y = 0; y < mask.height; ++y) {
+      for (int x = 0; x < mask.width; ++x) {
+        if (mask.at(x, y)) top = std::min(top, y), bottom = std::max(bottom, y);
+      }
+    }
+    o.height_m = c.image_height_m * (bottom - top + 1) / mask.height;
+  }
+  o.depth_ratio = c.depth_ratio;
+  o.relief_weight = c.relief;
+  o.inflation.k = c.k;
+  o.inflation.connectivity =
+      c.connectivity == 4 ? crown::Connectivity::kFour : crown::Connectivity::kEight;
+  o.cubemap_size = c.cubemap_size;
+  o.trunk_height_m = c.trunk_m;
+  o.trunk_radius_m = c.trunk_radius_m;
+  o.billboards = c.billboards;
+  return o;
+}
+
+}  // namespace
+
+namespace {
+
+int lowest_row(const crown::Mask& mask) {
+  for (int y = mask.height - 1; y >= 0; --y) {
+    for (int x = 0; x < mask.width; ++x) {
+      if (mask.at(x, y)) return y;
+    }
+  }
+  return mask.height - 1;
+}
+
+void write_outputs(const CrownCommand& c, const OutputPaths& paths, const crown::CrownModel& model,
+                   const crown::Mask& mask) {
+  graphics::write_mesh(to_triangle_mesh(model.mesh), paths.mesh);
+  crown::write_raster(crown::cubemap_strip(model.color), paths.color);
+  crown::write_raster(crown::cubemap_strip(model.radius), paths.radius);
+  crown::write_raster(relief_picture(model.relief), paths.relief);
+  if (c.billboards) write_billboards(model.billboards, paths.billboards);
+  if (!c.side_mask.empty()) {
+    const double ground_row = lowest_row(mask) + c.trunk_m / model.metres_per_pixel;
+    crown::write_mask(crown::side_silhouette(model.mesh, mask.width, mask.height,
+                                             model.metres_per_pixel, ground_row),
+                      c.side_mask);
+  }
+}
+
+void run_crown(const CrownCommand& c) {
+  refuse_overwriting_input(c.out, {c.photo, c.mask});
+  refuse_overwriting_input(c.side_mask, {c.photo, c.mask});
+  if (!c.side_mask.empty()) crown::check_image_output(c.side_mask);
+  const OutputPaths paths = output_paths(c.out);
+  auto t0 = std::chrono::steady_clock::now();
+  nlohmann::json seconds = nlohmann::json::object();
+  const crown::Raster photo = crown::read_rgb(c.photo);
+  crown::Mask mask;
+  if (c.mask.empty()) {
+    mask = crown::auto_mask(photo, {});
+    crown::write_mask(mask, paths.mask);
+  } else {
+    mask = crown::read_mask(c.mask);
+  }
+  seconds["mask"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::mt19937_64 rng(c.seed);
+  const crown::CrownModel model =
+      crown::reconstruct_crown(photo, mask, crown_options(c, mask), rng);
+  for (const auto& [stage, s] : model.seconds) seconds[stage] = s;
+  t0 = std::chrono::steady_clock::now();
+  write_outputs(c, paths, model, mask);
+  seconds["writing"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  nlohmann::json files = {{"mesh", paths.mesh},
+                          {"color_cubemap", paths.color},
+                          {"radius_cubemap", paths.radius},
+                          {"relief", paths.relief}};
+  if (c.mask.empty()) files["mask"] = paths.mask;
+  if (c.billboards) files["billboards"] = paths.billboards;
+  if (!c.side_mask.empty()) files["side_mask"] = c.side_mask;
+  if (c.json) {
+    print_json({{"photo", c.photo},
+                {"crown_pixels", model.crown_pixels},
+                {"silhouette_pixels", model.silhouette_pixels},
+                {"metres_per_pixel", model.metres_per_pixel},
+                {"vertices", model.mesh.vertex_count()},
+                {"triangles", model.mesh.triangle_count()},
+                {"volume_m3", model.volume_m3},
+                {"cubemap_size", model.color.size},
+                {"billboards", model.billboards.size()},
+                {"files", files},
+                {"seconds", seconds}});
+  } else if (verbosity() > 0) {
+    std::cerr << "wrote " << paths.mesh << " (" << model.mesh.vertex_count() << " vertices, "
+              << model.mesh.triangle_count() << " triangles, crown " << model.volume_m3
+              << " m3) and its cubemaps\n";
+  }
+}
+
+}  // namespace
+
+void add_crown_commands(CLI::App& app) {
+  auto cmd = std::make_shared<CrownCommand>();
+  CLI::App* c = app.add_subcommand(kCrownCommand.name, kCrownCommand.description);
+  c->add_option("PHOTO", cmd->photo, "Photograph of one tree (any format OpenImageIO reads)")
+      ->required();
+  c->add_option("--mask", cmd->mask,
+                "Crown mask, same size, white crown on black (default: found against the sky "
+                "and ground beside the tree, written as OUT's _mask.png to check)");
+  c->add_option("-o,--output", cmd->out, "Mesh (.glb, .obj, .ply, .vtp) or a directory")
+      ->required();
+  c->add_option("--height-m", cmd->height_m, "Height of the crown in metres (default 10)")
+      ->check(positive_number(1e4));
+  c->add_option("--image-height-m", cmd->image_height_m,
+                "Height the whole picture spans in metres (a picture at a known scale)")
+      ->check(positive_number(1e5));
+  c->add_option("--depth-ratio", cmd->depth_ratio, "Crown depth over width")
+      ->check(positive_number(10.0))
+      ->capture_default_str();
+  c->add_option("--relief", cmd->relief, "Relief weight rho (Argudo 4.6), 0 for none")
+      ->check(number_in(0.0, 1.0))
+      ->capture_default_str();
+  c->add_option("--k", cmd->k, "Depth of the outer silhouette in the inflation, pixels")
+      ->check(positive_number(100.0))
+      ->capture_default_str();
+  c->add_option("--connectivity", cmd->connectivity, "Silhouette connectivity, 8 or 4")
+      ->check(CLI::IsMember({4, 8}))
+      ->capture_default_str();
+  c->add_option("--cubemap-size", cmd->cubemap_size, "Cubemap face side (default: from the crown)")
+      ->check(CLI::Range(8, 2048));
+  c->add_option("--trunk-m", cmd->trunk_m, "Trunk height below the crown in metres (default none)")
+      ->check(number_in(0.0, 1e4));
+  c->add_option("--trunk-radius-m", cmd->trunk_radius_m,
+                "Trunk radius in metres (default 2 % of the crown height)")
+      ->check(positive_number(1e3));
+  c->add_flag("--billboards", cmd->billboards,
+              "Also write about 300 blue-noise billboard centres inside the crown (Argudo 5.2)");
+  c->add_option("--side-mask", cmd->side_mask,
+                "Also write the crown seen from the side (+x) as a mask at the photograph's scale");
+  c->add_option("--seed", cmd->seed, "Seed of the texture synthesis")->capture_default_str();
+  c->add_flag("--json", cmd->json, "Machine-readable JSON on stdout");
+  c->callback([cmd] { run_crown(*cmd); });
+}
+
+}  // namespace fspm::cli
