@@ -15,7 +15,9 @@
 #include "cli/output.hpp"
 #include "crown/auto_mask.hpp"
 #include "crown/cubemap.hpp"
+#include "crown/gap_fill.hpp"
 #include "crown/image_io.hpp"
+#include "crown/preview.hpp"
 #include "crown/reconstruction.hpp"
 #include "crown/side_view.hpp"
 #include "fspm/atomic_file.hpp"
@@ -40,6 +42,8 @@ struct CrownCommand {
   double trunk_radius_m = 0.0;
   bool billboards = false;
   std::string side_mask;
+  std::string preview;
+  bool keep_gaps = false;
   std::uint64_t seed = 1;
   bool json = false;
 };
@@ -153,18 +157,34 @@ void write_outputs(const CrownCommand& c, const OutputPaths& paths, const crown:
   crown::write_raster(crown::cubemap_strip(model.radius), paths.radius);
   crown::write_raster(relief_picture(model.relief), paths.relief);
   if (c.billboards) write_billboards(model.billboards, paths.billboards);
+  const double ground_row = lowest_row(mask) + c.trunk_m / model.metres_per_pixel;
   if (!c.side_mask.empty()) {
-    const double ground_row = lowest_row(mask) + c.trunk_m / model.metres_per_pixel;
     crown::write_mask(crown::side_silhouette(model.mesh, mask.width, mask.height,
                                              model.metres_per_pixel, ground_row),
                       c.side_mask);
+  }
+  if (!c.preview.empty()) {  // front and side side by side
+    crown::Raster both(2 * mask.width, mask.height, 3);
+    for (int v = 0; v < 2; ++v) {
+      const crown::Raster one = crown::preview(
+          model.mesh, v == 0 ? crown::PreviewView::kFront : crown::PreviewView::kSide, mask.width,
+          mask.height, model.metres_per_pixel, ground_row);
+      for (int y = 0; y < mask.height; ++y) {
+        for (int x = 0; x < mask.width; ++x) {
+          for (int k = 0; k < 3; ++k) both.at(v * mask.width + x, y, k) = one.at(x, y, k);
+        }
+      }
+    }
+    crown::write_raster(both, c.preview);
   }
 }
 
 void run_crown(const CrownCommand& c) {
   refuse_overwriting_input(c.out, {c.photo, c.mask});
   refuse_overwriting_input(c.side_mask, {c.photo, c.mask});
+  refuse_overwriting_input(c.preview, {c.photo, c.mask});
   if (!c.side_mask.empty()) crown::check_image_output(c.side_mask);
+  if (!c.preview.empty()) crown::check_image_output(c.preview);
   const OutputPaths paths = output_paths(c.out);
   auto t0 = std::chrono::steady_clock::now();
   nlohmann::json seconds = nlohmann::json::object();
@@ -176,10 +196,15 @@ void run_crown(const CrownCommand& c) {
   } else {
     mask = crown::read_mask(c.mask);
   }
+  // Sky seen through the foliage is no crown texture (crown/gap_fill.hpp).
+  const crown::Raster texture =
+      c.keep_gaps ? photo
+                  : crown::fill_gaps(photo, mask,
+                                     crown::foreground(photo, crown::AutoMaskOptions{}.threshold));
   seconds["mask"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::mt19937_64 rng(c.seed);
   const crown::CrownModel model =
-      crown::reconstruct_crown(photo, mask, crown_options(c, mask), rng);
+      crown::reconstruct_crown(texture, mask, crown_options(c, mask), rng);
   for (const auto& [stage, s] : model.seconds) seconds[stage] = s;
   t0 = std::chrono::steady_clock::now();
   write_outputs(c, paths, model, mask);
@@ -191,6 +216,7 @@ void run_crown(const CrownCommand& c) {
   if (c.mask.empty()) files["mask"] = paths.mask;
   if (c.billboards) files["billboards"] = paths.billboards;
   if (!c.side_mask.empty()) files["side_mask"] = c.side_mask;
+  if (!c.preview.empty()) files["preview"] = c.preview;
   if (c.json) {
     print_json({{"photo", c.photo},
                 {"crown_pixels", model.crown_pixels},
@@ -250,6 +276,11 @@ void add_crown_commands(CLI::App& app) {
               "Also write about 300 blue-noise billboard centres inside the crown (Argudo 5.2)");
   c->add_option("--side-mask", cmd->side_mask,
                 "Also write the crown seen from the side (+x) as a mask at the photograph's scale");
+  c->add_option("--preview", cmd->preview,
+                "Also write a picture of the crown from the front and from the side (+x)");
+  c->add_flag("--keep-gaps", cmd->keep_gaps,
+              "Keep sky seen through the foliage as crown texture (default: filled from the "
+              "foliage around it)");
   c->add_option("--seed", cmd->seed, "Seed of the texture synthesis")->capture_default_str();
   c->add_flag("--json", cmd->json, "Machine-readable JSON on stdout");
   c->callback([cmd] { run_crown(*cmd); });

@@ -28,7 +28,7 @@ std::array<float, 3> row_background(const Raster& rgb, int y, int band) {
 
 }  // namespace
 
-Mask auto_mask(const Raster& rgb, const AutoMaskOptions& options) {
+Mask foreground(const Raster& rgb, float threshold) {
   Mask raw(rgb.width, rgb.height);
   const int band = std::max(1, rgb.width / 32);
   for (int y = 0; y < rgb.height; ++y) {
@@ -39,9 +39,14 @@ Mask auto_mask(const Raster& rgb, const AutoMaskOptions& options) {
         const float d = rgb.at(x, y, c) - bg[static_cast<std::size_t>(c)];
         d2 += d * d;
       }
-      raw.set(x, y, std::sqrt(d2) > options.threshold);
+      raw.set(x, y, std::sqrt(d2) > threshold);
     }
   }
+  return raw;
+}
+
+Mask auto_mask(const Raster& rgb, const AutoMaskOptions& options) {
+  const Mask raw = foreground(rgb, options.threshold);
   const int open = options.open_px > 0 ? options.open_px : std::max(1, rgb.height / 100);
   const int close = options.close_px > 0 ? options.close_px : std::max(1, rgb.height / 50);
   Mask m = erode(dilate(raw, close), close);  // closing: gaps between leaf clumps close

@@ -19,4 +19,8 @@ struct AutoMaskOptions {
 // Throws ValueError when nothing differs from the background.
 Mask auto_mask(const Raster& rgb, const AutoMaskOptions& options);
 
+// The pixels that differ from their row's background (foliage, branches), before any clean-up:
+// inside the crown mask the others are sky seen through gaps in the foliage.
+Mask foreground(const Raster& rgb, float threshold);
+
 }  // namespace fspm::crown
