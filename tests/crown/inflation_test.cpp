@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <cstdio>
 
 #include "crown/base_mesh.hpp"
@@ -74,6 +75,7 @@ TEST(Inflation, DiscBecomesSphere) {
   const double r = 99.5;
   const InflatedSheet s = inflate(ellipse_mask(100.0, 100.0), {2.0, Connectivity::kEight});
   const auto [mean, worst] = ellipsoid_error(scaled(s, r), r, r, r);
+  std::cout << "disc: mean radius error " << mean << ", worst " << worst << "\n";
   EXPECT_LT(mean, 0.01);    // radius error of the crown surface, on average
   EXPECT_LT(worst, 0.025);  // and at the worst vertex, near the rim
   // Unscaled, k = 2 already gives nearly the sphere's depth (Argudo Fig. 4.13, right).
@@ -86,6 +88,7 @@ TEST(Inflation, EllipseBecomesEllipsoidLikeCrown) {
   const double a = 110.0, b = 70.0;  // wide crown: depth scaled to its half width
   const InflatedSheet s = inflate(ellipse_mask(a, b), {2.0, Connectivity::kEight});
   const auto [mean, worst] = ellipsoid_error(scaled(s, a), a, b, a);
+  std::cout << "ellipse: mean ellipsoid radius error " << mean << ", worst " << worst << "\n";
   EXPECT_LT(mean, 0.03);
   EXPECT_LT(worst, 0.08);
 }
@@ -96,6 +99,8 @@ TEST(Inflation, FourConnectedSilhouetteIsNoSphere) {
   const InflatedSheet s4 = inflate(ellipse_mask(r, r), {2.0, Connectivity::kFour});
   const auto e8 = ellipsoid_error(scaled(s8, r), r, r, r);
   const auto e4 = ellipsoid_error(scaled(s4, r), r, r, r);
+  std::cout << "4-connected: mean radius error " << e4.first << ", worst " << e4.second
+            << "; 8-connected: " << e8.first << ", " << e8.second << "\n";
   EXPECT_GT(e4.first, 2.0 * e8.first);
   // The thicker silhouette leaves fewer unknowns: every diagonal step of the rim is one more pixel.
   EXPECT_LT(std::count(s4.classes.begin(), s4.classes.end(), PixelClass::kInner),
@@ -111,6 +116,7 @@ TEST(Inflation, MirroredMeshEnclosesTheSphereVolume) {
   for (auto& p : base.mesh.positions) p.z() *= static_cast<float>(r / zmax);
   const double volume = enclosed_volume(base.mesh, 0, base.mesh.crown_triangles);
   const double sphere = 4.0 / 3.0 * M_PI * r * r * r;
+  std::cout << "sphere volume: " << volume / sphere << " of 4/3 pi r^3\n";
   EXPECT_NEAR(volume, sphere, 0.04 * sphere);  // closed and outward: positive, near 4/3 pi r^3
 }
 
