@@ -59,8 +59,13 @@ OutputPaths output_paths(const std::string& out) {
   const fs::path p(out);
   const std::string ext = p.extension().string();
   const bool directory = ext.empty() || fs::is_directory(p);
-  if (directory) fs::create_directories(p);
   const fs::path dir = directory ? p : p.parent_path();
+  // Before any work: a missing parent directory is a mistake (a directory OUT itself is created).
+  const fs::path must_exist = directory ? p.parent_path() : dir;
+  if (!must_exist.empty() && !fs::is_directory(must_exist)) {
+    throw IoError("cannot write: directory '" + must_exist.string() + "' does not exist", out);
+  }
+  if (directory) fs::create_directories(p);
   const std::string stem = directory ? "crown" : p.stem().string();
   auto beside = [&](const std::string& suffix) { return (dir / (stem + suffix)).string(); };
   OutputPaths o;
