@@ -32,7 +32,8 @@ void check(const Raster& photo, const Mask& mask, const CrownOptions& o) {
                      std::to_string(photo.height) + " but the mask " + std::to_string(mask.width) +
                      "x" + std::to_string(mask.height) + ": they must be the same size");
   }
-  if (!(o.height_m > 0.0) || !std::isfinite(o.height_m)) throw ValueError("--height-m must be > 0");
+  if (!(o.height_m > 0.0) || !std::isfinite(o.height_m))
+    throw ValueError("the crown height must be > 0 m");
   if (!(o.depth_ratio > 0.0) || !std::isfinite(o.depth_ratio)) {
     throw ValueError("the depth ratio must be > 0");
   }

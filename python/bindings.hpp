@@ -130,5 +130,7 @@ void bind_statistics(py::module_& m);
 void bind_graphics(py::module_& m);
 void bind_calibration(py::module_& m);
 void bind_stages(py::module_& m);
+// Adds reconstruct_crown when fspm was built with OpenImageIO (the crown module).
+void bind_crown(py::module_& m);
 
 }  // namespace fspm::python

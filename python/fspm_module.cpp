@@ -656,4 +656,5 @@ PYBIND11_MODULE(_fspm, m) {
   fspm::python::bind_environment(m);
   fspm::python::bind_graphics(m);
   fspm::python::bind_stages(m);
+  fspm::python::bind_crown(m);
 }

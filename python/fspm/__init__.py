@@ -113,6 +113,12 @@ from ._fspm import (  # noqa: F401
     ValueError_ as ParameterError,
 )
 
+# Crowns from photographs need OpenImageIO (built with the VTK option).
+try:
+    from ._fspm import CrownModel, reconstruct_crown  # noqa: F401
+except ImportError:
+    pass
+
 
 
 def read_results(directory):

@@ -1,0 +1,47 @@
+"""Crowns from one photograph from Python (docs/crown.md), against the sphere a disc inflates to."""
+import math
+
+import numpy as np
+import pytest
+
+import fspm
+
+pytestmark = pytest.mark.skipif(not hasattr(fspm, "reconstruct_crown"),
+                                reason="fspm built without OpenImageIO")
+
+
+def disc_pictures(tmp_path, radius_px=40, size=128):
+    y, x = np.mgrid[0:size, 0:size]
+    inside = np.hypot(x - (size - 1) / 2, y - (size - 1) / 2) <= radius_px
+    photo = np.zeros((size, size, 3), np.uint8)
+    photo[...] = (150, 190, 240)
+    photo[inside] = (40, 90, 30)
+    mask = np.zeros((size, size, 3), np.uint8)
+    mask[inside] = 255
+    fspm.write_image(photo, str(tmp_path / "photo.png"))
+    fspm.write_image(mask, str(tmp_path / "mask.png"))
+    return int(inside.any(axis=1).sum())
+
+
+def test_a_disc_becomes_a_sphere(tmp_path):
+    rows = disc_pictures(tmp_path)
+    crown = fspm.reconstruct_crown(str(tmp_path / "photo.png"), str(tmp_path / "mask.png"),
+                                   height_m=rows * 0.1, relief=0.0)
+    assert crown.metres_per_pixel == pytest.approx(0.1)
+    # Silhouette pixel centres lie 39.5 pixels from the centre on average: a 3.95 m sphere.
+    sphere = 4.0 / 3.0 * math.pi * 3.95 ** 3
+    assert crown.volume_m3 == pytest.approx(sphere, rel=0.05)
+    v = crown.vertices
+    assert v.shape[1] == 3 and crown.triangles.max() < len(v)
+    centre = np.array([0.0, 0.0, (v[:, 2].max() + v[:, 2].min()) / 2])
+    r = np.linalg.norm(v - centre, axis=1)
+    assert np.mean(np.abs(r - 3.95)) / 3.95 < 0.02
+    assert set(crown.seconds) >= {"base_mesh", "relief", "texture_synthesis", "composition"}
+
+
+def test_mistakes_raise_builtin_exceptions(tmp_path):
+    with pytest.raises(OSError):
+        fspm.reconstruct_crown(str(tmp_path / "none.png"))
+    disc_pictures(tmp_path)
+    with pytest.raises(ValueError):
+        fspm.reconstruct_crown(str(tmp_path / "photo.png"), height_m=-1.0)
