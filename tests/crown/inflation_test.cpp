@@ -7,8 +7,8 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <iostream>
 #include <cstdio>
+#include <iostream>
 
 #include "crown/base_mesh.hpp"
 #include "fspm/error.hpp"
