@@ -20,6 +20,7 @@
 #include "cli/full_command_list.hpp"
 #include "cli/output.hpp"
 #include "cli/scene_obstacles.hpp"
+#include "cli/wind_skin.hpp"
 #include "cli/xvfb.hpp"
 #include "environment/scene_file.hpp"
 #include "fspm/compressed_tree_graph.hpp"
@@ -56,6 +57,9 @@ struct MeshCommand {
   std::string foliage = "leaves";
   std::uint64_t seed = 1;
   std::string obstacles;
+  bool skin = false;
+  double animate_s = 0.0;
+  WindArguments wind;
   bool json = false;
 };
 
@@ -79,6 +83,8 @@ struct RenderCommand {
   double edge_length_m = 0.01;
   double ortho_height_m = 0.0;
   std::string obstacles;
+  double wind_time_s = -1.0;
+  WindArguments wind;
   bool json = false;
 };
 
@@ -219,11 +225,25 @@ nlohmann::json instancing_json(const graphics::InstancedMesh& m) {
           {"bounds", {{"min", {lo.x(), lo.y(), lo.z()}}, {"max", {hi.x(), hi.y(), hi.z()}}}}};
 }
 
+// --skin writes one tree's bark as a skinned .glb; --animate needs --skin.
+void check_skin_request(const MeshCommand& c, graphics::MeshFormat format, InputKind kind) {
+  if (format != graphics::MeshFormat::kGlb) {
+    throw ValueError("--skin writes a glTF skin: use an output ending in .glb", c.out);
+  }
+  if (kind != InputKind::kTree) {
+    throw ValueError("--skin needs one tree file (.tree, .treeb, .nwk, .mtg)", c.tree);
+  }
+  if (!c.ages.empty() || !c.obstacles.empty()) {
+    throw ValueError("--skin does not combine with --ages or --obstacles");
+  }
+}
+
 void run_mesh(const MeshCommand& c) {
   refuse_overwriting_input(c.out, {c.tree, c.obstacles});
   const auto t0 = std::chrono::steady_clock::now();
   const graphics::MeshFormat format = graphics::mesh_format_for(c.out);
   const InputKind kind = input_kind(c.tree);
+  if (c.animate_s > 0.0 && !c.skin) throw ValueError("--animate needs --skin");
   graphics::MeshOptions options;
   set_leaves(options, c.leaves, c.foliage, c.seed);
   options.edge_length_m = c.edge_length_m;
@@ -232,7 +252,15 @@ void run_mesh(const MeshCommand& c) {
   options.reynolds_width = c.reynolds_width;
   nlohmann::json j = {{"file", c.tree}, {"output", c.out}};
   std::size_t vertices = 0, triangles = 0;
-  if (format == graphics::MeshFormat::kPvd) {
+  if (c.skin) {
+    check_skin_request(c, format, kind);
+    const TreeGraph tree = read_tree_file(c.tree, c.format);
+    const SkinnedOutput out = write_wind_glb(tree, options, c.wind, c.animate_s, c.seed, c.out);
+    vertices = out.vertices;
+    triangles = out.triangles;
+    j["joints"] = out.joints;
+    j["keyframes"] = out.keyframes;
+  } else if (format == graphics::MeshFormat::kPvd) {
     if (kind == InputKind::kScene || kind == InputKind::kPvd) {
       throw ValueError("a .pvd growth sequence is made from one tree or plant", c.tree);
     }
@@ -281,6 +309,15 @@ void run_mesh(const MeshCommand& c) {
   }
 }
 
+// --wind-time: one tree's bark posed at that time of its wind animation.
+graphics::InstancedMesh wind_frame(const RenderCommand& c, const graphics::MeshOptions& options) {
+  if (input_kind(c.tree) != InputKind::kTree) {
+    throw ValueError("--wind-time needs one tree file (.tree, .treeb, .nwk, .mtg)", c.tree);
+  }
+  return graphics::InstancedMesh::single(
+      posed_in_wind(read_tree_file(c.tree, c.format), options, c.wind, c.wind_time_s, c.seed));
+}
+
 void run_render(const RenderCommand& c) {
   refuse_overwriting_input(c.out, {c.tree, c.obstacles});
   const auto t0 = std::chrono::steady_clock::now();
@@ -297,7 +334,9 @@ void run_render(const RenderCommand& c) {
   graphics::MeshOptions mesh_options;
   set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
   mesh_options.edge_length_m = c.edge_length_m;
-  graphics::InstancedMesh mesh = load_instanced(c.tree, c.format, mesh_options, true);
+  graphics::InstancedMesh mesh = c.wind_time_s >= 0.0
+                                     ? wind_frame(c, mesh_options)
+                                     : load_instanced(c.tree, c.format, mesh_options, true);
   if (c.leaves) report_missing_leaves(mesh, c.tree);
   if (!c.color_by.empty()) {
     for (const auto& m : mesh.meshes) (void)m.attribute(c.color_by);  // unknown: ValueError
@@ -513,6 +552,14 @@ void add_graphics_commands(CLI::App& app) {
                 "Scene file (.json, docs/formats.md) whose walls, boxes, spheres and meshes are "
                 "added, whole, as material obstacle (not with .pvd; a scene given as TREE adds "
                 "its own)");
+  m->add_flag("--skin", mesh->skin,
+              "Write the bark as a glTF skin (.glb): a joint per internode, Reynolds' bone "
+              "weights as JOINTS_0/WEIGHTS_0 (implies --junctions continuous, no --leaves)");
+  m->add_option("--animate", mesh->animate_s,
+                "With --skin: add a looping wind animation this many seconds long (rotation "
+                "keyframes per joint; phases from --seed)")
+      ->check(positive_number(1e5));
+  add_wind_options(m, mesh->wind, true);
   m->add_flag("--json", mesh->json, "Machine-readable JSON on stdout");
   m->callback([mesh] { run_mesh(*mesh); });
 
@@ -541,6 +588,11 @@ void add_graphics_commands(CLI::App& app) {
                 "Scene file (.json, docs/formats.md) whose walls, boxes, spheres and meshes near "
                 "the tree are drawn in stone (long walls cut to the tree's surroundings; a scene "
                 "given as TREE draws its own)");
+  r->add_option("--wind-time", render->wind_time_s,
+                "Draw the bark posed at this time (s) of the wind animation of fspm mesh --skin "
+                "--animate (same --seed and wind options); frames of a movie")
+      ->check(number_in(0.0, 1e9));
+  add_wind_options(r, render->wind, false);
   r->add_flag("--json", render->json, "Machine-readable JSON on stdout");
   r->callback([render] { run_render(*render); });
 

@@ -10,6 +10,7 @@
 
 #include "fspm/error.hpp"
 #include "fspm/tree_traversal.hpp"
+#include "graphics/bone_weights.hpp"
 #include "graphics/parallel_transport.hpp"
 #include "graphics/tree_mesher.hpp"
 
@@ -34,9 +35,7 @@ class Builder {
  public:
   Builder(const TreeGraph& tree, double reference_time)
       : tree_(tree), reference_time_(reference_time) {
-    names_ = {
-        kAttributeAge, kAttributeBirthTime, kAttributeOrder, kAttributePhysiologicalAge, "bone0",
-        "bone1",       "weight0",           "weight1"};
+    names_ = {kAttributeAge, kAttributeBirthTime, kAttributeOrder, kAttributePhysiologicalAge};
     for (const auto& n : tree.attribute_names()) {
       names_.push_back(n);
       user_.push_back(tree.attribute(n));
@@ -45,7 +44,7 @@ class Builder {
   }
 
   std::uint32_t vertex(const Eigen::Vector3d& p, const Eigen::Vector3d& n, float u, float v,
-                       NodeId node, NodeId bone0, NodeId bone1, float w0) {
+                       NodeId node, NodeId bone0, NodeId bone1) {
     mesh_.positions.push_back(p.cast<float>());
     mesh_.normals.push_back(n.normalized().cast<float>());
     mesh_.uvs.push_back({u, v});
@@ -54,17 +53,30 @@ class Builder {
     columns_[1].push_back(static_cast<float>(birth));
     columns_[2].push_back(static_cast<float>(tree_.order(node)));
     columns_[3].push_back(static_cast<float>(tree_.physiological_age(node)));
-    columns_[4].push_back(static_cast<float>(bone0));
-    columns_[5].push_back(static_cast<float>(bone1));
-    columns_[6].push_back(w0);
-    columns_[7].push_back(1.0f - w0);
     for (std::size_t i = 0; i < user_.size(); ++i) {
-      columns_[8 + i].push_back(static_cast<float>(user_[i][node]));
+      columns_[4 + i].push_back(static_cast<float>(user_[i][node]));
     }
+    weights_.push_back(joint_weights(bone0, bone1));
+    alias_.push_back(kNoAlias);
     if (mesh_.positions.size() > std::numeric_limits<std::uint32_t>::max()) {
       throw ValueError("mesh would need more than 2^32 vertices; raise the edge length");
     }
     return static_cast<std::uint32_t>(mesh_.positions.size() - 1);
+  }
+
+  // A second vertex at the position of `original` (another normal): it is the same point of the
+  // surface, so it ends with the original's bone weights.
+  std::uint32_t copy(std::uint32_t original, const Eigen::Vector3d& n, float u, float v,
+                     NodeId node) {
+    const std::uint32_t id =
+        vertex(mesh_.positions[original].cast<double>(), n, u, v, node, node, node);
+    alias_[id] = root(original);
+    return id;
+  }
+
+  // Reynolds: a vertex shared by a lateral's root ring gains the lateral's bone at 1.0.
+  void add_influence(std::uint32_t v, NodeId bone, float weight) {
+    weights_[root(v)].add(bone, weight);
   }
 
   void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
@@ -78,6 +90,11 @@ class Builder {
     for (std::size_t i = 0; i < names_.size(); ++i) {
       mesh_.attributes.push_back({names_[i], std::move(columns_[i])});
     }
+    for (BoneWeights& w : weights_) w.normalise();
+    for (std::size_t v = 0; v < weights_.size(); ++v) {
+      if (alias_[v] != kNoAlias) weights_[v] = weights_[alias_[v]];
+    }
+    write_bone_attributes(weights_, mesh_);
     return std::move(mesh_);
   }
 
@@ -87,6 +104,11 @@ class Builder {
   std::vector<std::string> names_;
   std::vector<std::span<const double>> user_;
   std::vector<std::vector<float>> columns_;
+  std::uint32_t root(std::uint32_t v) const { return alias_[v] == kNoAlias ? v : alias_[v]; }
+
+  static constexpr std::uint32_t kNoAlias = std::numeric_limits<std::uint32_t>::max();
+  std::vector<BoneWeights> weights_;
+  std::vector<std::uint32_t> alias_;
   TriangleMesh mesh_;
 };
 
@@ -98,8 +120,7 @@ struct Ring {
   Eigen::Vector3d v = Eigen::Vector3d::UnitX();
   double radius = 0.0;
   double along = 0.0;
-  NodeId node = kNoNode, bone0 = kNoNode, bone1 = kNoNode;
-  float w0 = 1.0f;
+  NodeId node = kNoNode, bone0 = kNoNode, bone1 = kNoNode;  // bone0 == bone1: a branch end
   std::vector<std::size_t> laterals;  // axes leaving through the strip above this ring
 };
 
@@ -198,7 +219,6 @@ TriangleMesh mesh_tree_continuous(const TreeGraph& tree, const MeshOptions& opti
       r.node = j < m ? above : below;
       r.bone0 = below;
       r.bone1 = above;
-      r.w0 = (j == 0 || j == m) ? 1.0f : 0.5f;
       r.radius = radius_at(r.node, along);
       width_at_node[below] = r.radius;
       rings.push_back(r);
@@ -221,7 +241,6 @@ TriangleMesh mesh_tree_continuous(const TreeGraph& tree, const MeshOptions& opti
         k.along = along + h;
         k.node = above;
         k.bone0 = k.bone1 = above;
-        k.w0 = 1.0f;
         k.radius = radius_at(above, along + h);
         rings.back().laterals = laterals_at[below];
         rings.push_back(k);
@@ -237,7 +256,6 @@ TriangleMesh mesh_tree_continuous(const TreeGraph& tree, const MeshOptions& opti
       c.tangent = t0;
       c.along = holes[a].collar_m;
       c.bone0 = c.bone1 = segs[0];
-      c.w0 = 1.0f;
       c.radius = radius_at(segs[0], c.along);
       rings.insert(rings.begin() + 1, c);
     }
@@ -262,14 +280,16 @@ TriangleMesh mesh_tree_continuous(const TreeGraph& tree, const MeshOptions& opti
     for (std::size_t i = from_hole ? 1 : 0; i < rings.size(); ++i) {
       const Ring& r = rings[i];
       const Eigen::Vector3d w = r.tangent.cross(r.v);
-      for (int k = 0; k <= s; ++k) {
-        const double ang = kTwoPi * (k == s ? 0 : k) / s;
+      for (int k = 0; k < s; ++k) {
+        const double ang = kTwoPi * k / s;
         const Eigen::Vector3d dir = std::cos(ang) * r.v + std::sin(ang) * w;
         const std::uint32_t id =
             b.vertex(r.center + r.radius * dir, dir, static_cast<float>(k) / s,
-                     static_cast<float>(r.along * v_scale), r.node, r.bone0, r.bone1, r.w0);
+                     static_cast<float>(r.along * v_scale), r.node, r.bone0, r.bone1);
         if (k == 0) first[i] = id;
       }
+      // The seam: the first vertex again with u = 1, the same point of the surface.
+      b.copy(first[i], r.v, 1.0f, static_cast<float>(r.along * v_scale), r.node);
     }
 
     // Holes for laterals, decided before the walls so their quads are left open.
@@ -345,8 +365,9 @@ TriangleMesh mesh_tree_continuous(const TreeGraph& tree, const MeshOptions& opti
         // The hole's corners again, at the same positions, with normals radial to the lateral
         // (the parent's radial normals would shade the collar as if it faced the trunk).
         const Eigen::Vector3d radial = d - d.dot(tangents[0]) * tangents[0];
-        hv[q] = {ang, b.vertex(p, radial, static_cast<float>(ang / kTwoPi), 0.0f, segs[0], segs[0],
-                               segs[0], 1.0f)};
+        b.add_influence(h.vertices[q], segs[0], 1.0f);
+        hv[q] = {ang,
+                 b.copy(h.vertices[q], radial, static_cast<float>(ang / kTwoPi), 0.0f, segs[0])};
       }
       std::sort(hv.begin(), hv.end());
       // Hole loop h0..h3 then h0 again at +2 pi; ring 1 loop 0..s (seam at 2 pi). Advance on
@@ -373,11 +394,8 @@ TriangleMesh mesh_tree_continuous(const TreeGraph& tree, const MeshOptions& opti
       const std::size_t ri = end == 0 ? 0 : rings.size() - 1;
       const Ring& r = rings[ri];
       const Eigen::Vector3d nrm = end == 0 ? -r.tangent : r.tangent;
-      const std::uint32_t hub = b.vertex(r.center, nrm, 0.5f, 0.5f, r.node, r.bone0, r.bone1, r.w0);
-      for (int k = 0; k < s; ++k) {
-        const Eigen::Vector3f p = b.position(first[ri] + k);
-        b.vertex(p.cast<double>(), nrm, 0.5f, 0.5f, r.node, r.bone0, r.bone1, r.w0);
-      }
+      const std::uint32_t hub = b.vertex(r.center, nrm, 0.5f, 0.5f, r.node, r.bone0, r.bone1);
+      for (int k = 0; k < s; ++k) b.copy(first[ri] + k, nrm, 0.5f, 0.5f, r.node);
       for (int k = 0; k < s; ++k) {
         const std::uint32_t p = hub + 1 + k, q = hub + 1 + (k + 1) % s;
         if (end == 0) {

@@ -29,6 +29,7 @@ constexpr std::uint32_t kChunkJson = 0x4E4F534A;
 constexpr std::uint32_t kChunkBin = 0x004E4942;
 constexpr int kFloat = 5126;
 constexpr int kUnsignedInt = 5125;
+constexpr int kUnsignedShort = 5123;
 constexpr int kArrayBuffer = 34962;
 constexpr int kElementArrayBuffer = 34963;
 
@@ -47,7 +48,8 @@ class GlbBuilder {
  public:
   // Adds `mesh` as a glTF mesh with a primitive per material sharing the vertex accessors;
   // returns its index, or -1 for an empty mesh (glTF forbids meshes without primitives).
-  long add_mesh(const TriangleMesh& mesh, const std::string& name) {
+  long add_mesh(const TriangleMesh& mesh, const std::string& name,
+                const nlohmann::json& extra_attributes = nlohmann::json::object()) {
     using nlohmann::json;
     const std::size_t nv = mesh.vertex_count();
     if (mesh.empty() || nv == 0) return -1;
@@ -91,6 +93,7 @@ class GlbBuilder {
           add_accessor(add_view(a.values.data(), nv * 4, kArrayBuffer), kFloat, nv, "SCALAR");
       names[key] = a.name;
     }
+    attributes.update(extra_attributes);
     json primitives = json::array();
     for (std::size_t m = 0; m < indices.size(); ++m) {
       if (indices[m].empty()) continue;
@@ -105,8 +108,25 @@ class GlbBuilder {
     return static_cast<long>(meshes_.size() - 1);
   }
 
-  // Writes the file with `nodes` (each may reference a mesh) under one root node.
-  void write(nlohmann::json nodes, const std::string& path) {
+  // An accessor over data the builder keeps until the file is written (vertex data when
+  // `vertex_data`, else skins and animations, which take no buffer view target).
+  std::size_t add_floats(std::vector<float> data, std::size_t count, const char* type,
+                         bool vertex_data = false) {
+    const std::vector<float>& kept = float_store_.emplace_back(std::move(data));
+    return add_accessor(add_view(kept.data(), kept.size() * 4, vertex_data ? kArrayBuffer : 0),
+                        kFloat, count, type);
+  }
+  std::size_t add_shorts(std::vector<std::uint16_t> data, std::size_t count, const char* type) {
+    const std::vector<std::uint16_t>& kept = short_store_.emplace_back(std::move(data));
+    return add_accessor(add_view(kept.data(), kept.size() * 2, kArrayBuffer), kUnsignedShort, count,
+                        type);
+  }
+  nlohmann::json& accessor(std::size_t i) { return accessors_[i]; }
+
+  // Writes the file with `nodes` (each may reference a mesh) under one root node; `extra` adds
+  // top-level arrays (skins, animations).
+  void write(nlohmann::json nodes, const std::string& path,
+             const nlohmann::json& extra = nlohmann::json::object()) {
     using nlohmann::json;
     json doc = {
         {"asset", {{"version", "2.0"}, {"generator", "fspm"}}},
@@ -115,6 +135,7 @@ class GlbBuilder {
         {"materials", materials_json()},
         {"nodes", std::move(nodes)},
     };
+    doc.update(extra);
     // glTF forbids empty arrays: an empty tree is a scene without a mesh.
     const bool has_bin = !meshes_.empty();
     if (has_bin) {
@@ -159,8 +180,8 @@ class GlbBuilder {
   };
 
   std::size_t add_view(const void* data, std::size_t bytes, int target) {
-    buffer_views_.push_back(
-        {{"buffer", 0}, {"byteOffset", bin_size_}, {"byteLength", bytes}, {"target", target}});
+    buffer_views_.push_back({{"buffer", 0}, {"byteOffset", bin_size_}, {"byteLength", bytes}});
+    if (target != 0) buffer_views_.back()["target"] = target;
     views_.push_back({data, bytes});
     bin_size_ += (bytes + 3) & ~std::size_t{3};
     return buffer_views_.size() - 1;
@@ -199,13 +220,113 @@ class GlbBuilder {
   std::vector<View> views_;
   std::deque<std::array<std::vector<std::uint32_t>, kMaterials.size()>> index_store_;  // stable
   std::deque<std::vector<float>> color_store_;  // stable addresses for COLOR_0 views
+  std::deque<std::vector<float>> float_store_;
+  std::deque<std::vector<std::uint16_t>> short_store_;
   nlohmann::json buffer_views_ = nlohmann::json::array();
   nlohmann::json accessors_ = nlohmann::json::array();
   nlohmann::json meshes_ = nlohmann::json::array();
   std::size_t bin_size_ = 0;
 };
 
+// JOINTS_0 and WEIGHTS_0 (glTF 2.0 section 3.7.3.3) of a skin.
+nlohmann::json skin_attributes(GlbBuilder& glb, const Skin& skin) {
+  const std::size_t nv = skin.joints.size();
+  std::vector<std::uint16_t> joints;
+  std::vector<float> weights;
+  joints.reserve(4 * nv);
+  weights.reserve(4 * nv);
+  for (std::size_t v = 0; v < nv; ++v) {
+    joints.insert(joints.end(), skin.joints[v].begin(), skin.joints[v].end());
+    weights.insert(weights.end(), skin.weights[v].begin(), skin.weights[v].end());
+  }
+  return {{"JOINTS_0", glb.add_shorts(std::move(joints), nv, "VEC4")},
+          {"WEIGHTS_0", glb.add_floats(std::move(weights), nv, "VEC4", true)}};
+}
+
+// Joint nodes from `first`: translation from the parent joint's head, children by index.
+nlohmann::json joint_nodes(const Skeleton& s, std::size_t first) {
+  nlohmann::json nodes = nlohmann::json::array();
+  std::vector<std::vector<std::size_t>> children(s.size());
+  for (std::size_t j = 0; j < s.size(); ++j) {
+    if (s.parents[j] >= 0) children[static_cast<std::size_t>(s.parents[j])].push_back(first + j);
+  }
+  for (std::size_t j = 0; j < s.size(); ++j) {
+    const int p = s.parents[j];
+    const Eigen::Vector3f t = p < 0 ? s.heads_m[j] : Eigen::Vector3f(s.heads_m[j] - s.heads_m[p]);
+    nlohmann::json node = {{"name", "joint_" + std::to_string(s.nodes[j])},
+                           {"translation", {t.x(), t.y(), t.z()}}};
+    if (!children[j].empty()) node["children"] = children[j];
+    nodes.push_back(std::move(node));
+  }
+  return nodes;
+}
+
+// One sampler and one rotation channel per joint, sharing the keyframe times.
+nlohmann::json animation_json(GlbBuilder& glb, const WindAnimation& a, std::size_t first_joint) {
+  using nlohmann::json;
+  const std::size_t frames = a.times_s.size();
+  const std::size_t input = glb.add_floats(a.times_s, frames, "SCALAR");
+  glb.accessor(input)["min"] = {a.times_s.front()};  // required for animation inputs
+  glb.accessor(input)["max"] = {a.times_s.back()};
+  json samplers = json::array(), channels = json::array();
+  const std::size_t joints = frames == 0 ? 0 : a.frames.front().size();
+  for (std::size_t j = 0; j < joints; ++j) {
+    std::vector<float> xyzw;
+    xyzw.reserve(4 * frames);
+    for (const auto& frame : a.frames) {
+      const Eigen::Vector4f q = frame[j].coeffs();  // x, y, z, w as glTF stores them
+      xyzw.insert(xyzw.end(), q.data(), q.data() + 4);
+    }
+    const std::size_t output = glb.add_floats(std::move(xyzw), frames, "VEC4");
+    samplers.push_back({{"input", input}, {"output", output}, {"interpolation", "LINEAR"}});
+    channels.push_back(
+        {{"sampler", j}, {"target", {{"node", first_joint + j}, {"path", "rotation"}}}});
+  }
+  return {{"name", "wind"}, {"samplers", samplers}, {"channels", channels}};
+}
+
 }  // namespace
+
+void write_skinned_glb(const TriangleMesh& mesh, const Skin& skin, const WindAnimation* wind,
+                       const std::string& path) {
+  using nlohmann::json;
+  if (skin.joints.size() != mesh.vertex_count() || skin.skeleton.size() == 0) {
+    throw ValueError("the skin does not belong to this mesh (or the tree has no internode)", path);
+  }
+  GlbBuilder glb;
+  const long m = glb.add_mesh(mesh, "tree", skin_attributes(glb, skin));
+  // Node 0 holds the root joints (from 2), so it is the skeleton's root; the skinned mesh node
+  // (1) stands at the scene root beside it, since parent transforms do not move skinned meshes.
+  constexpr std::size_t kFirstJoint = 2;
+  json nodes = json::array({{{"name", "tree"}}, {{"name", "bark"}}});
+  json roots = json::array();
+  for (std::size_t j = 0; j < skin.skeleton.size(); ++j) {
+    if (skin.skeleton.parents[j] < 0) roots.push_back(kFirstJoint + j);
+  }
+  if (!roots.empty()) nodes[0]["children"] = roots;
+  for (auto& node : joint_nodes(skin.skeleton, kFirstJoint)) nodes.push_back(std::move(node));
+  std::vector<float> ibm;
+  for (const Eigen::Matrix4f& b : inverse_bind_matrices(skin.skeleton)) {
+    ibm.insert(ibm.end(), b.data(), b.data() + 16);  // column-major
+  }
+  json joints = json::array();
+  for (std::size_t j = 0; j < skin.skeleton.size(); ++j) joints.push_back(kFirstJoint + j);
+  json extra = {
+      {"scenes", json::array({{{"nodes", json::array({0, 1})}}})},
+      {"skins", json::array({{{"name", "skeleton"},
+                              {"skeleton", 0},
+                              {"joints", joints},
+                              {"inverseBindMatrices",
+                               glb.add_floats(std::move(ibm), skin.skeleton.size(), "MAT4")}}})}};
+  if (m >= 0) {
+    nodes[1]["mesh"] = m;
+    nodes[1]["skin"] = 0;
+  }
+  if (wind != nullptr && !wind->times_s.empty()) {
+    extra["animations"] = json::array({animation_json(glb, *wind, kFirstJoint)});
+  }
+  glb.write(std::move(nodes), path, extra);
+}
 
 void write_glb(const TriangleMesh& mesh, const std::string& path) {
   GlbBuilder glb;

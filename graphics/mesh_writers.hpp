@@ -9,8 +9,10 @@
 
 #include "fspm/tree_graph.hpp"
 #include "graphics/instanced_mesh.hpp"
+#include "graphics/skeleton_skin.hpp"
 #include "graphics/tree_mesher.hpp"
 #include "graphics/triangle_mesh.hpp"
+#include "graphics/wind_animation.hpp"
 
 namespace fspm::graphics {
 
@@ -24,6 +26,15 @@ void write_obj(const TriangleMesh& mesh, const std::string& path);
 void write_ply(const TriangleMesh& mesh, const std::string& path);
 void write_vtp(const TriangleMesh& mesh, const std::string& path);
 void write_glb(const TriangleMesh& mesh, const std::string& path);
+
+// A skinned .glb (glTF 2.0 skins and animations): the scene holds node 0 "tree", parent of the
+// root joints, and node 1 "bark", the skinned mesh (JOINTS_0 as unsigned shorts, WEIGHTS_0);
+// one node per joint named
+// joint_<internode id> translated from its parent joint's head; the skin's inverse bind matrices
+// translate by minus the heads. With `wind`, one animation "wind" with a LINEAR rotation
+// sampler per joint over shared keyframe times, which Blender imports as an action.
+void write_skinned_glb(const TriangleMesh& mesh, const Skin& skin, const WindAnimation* wind,
+                       const std::string& path);
 
 // Any single-mesh format by extension (not .pvd).
 void write_mesh(const TriangleMesh& mesh, const std::string& path);

@@ -1,0 +1,49 @@
+#pragma once
+// Trees in the wind on the command line: `fspm mesh TREE --skin [--animate SECONDS]` writes a
+// skinned glTF with a wind animation, `fspm render TREE --wind-time T` draws the same tree posed
+// at time T of that animation (frames for a movie).
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "fspm/tree_graph.hpp"
+#include "graphics/tree_mesher.hpp"
+#include "graphics/triangle_mesh.hpp"
+#include "graphics/wind_animation.hpp"
+
+namespace fspm::cli {
+
+struct WindArguments {
+  double amplitude_deg = 7.0;
+  double frequency_hz = 0.5;
+  double fps = 24.0;
+  double duration_s = 4.0;
+  std::vector<double> direction{1.0, 0.0};
+};
+
+// --wind-amplitude, --wind-frequency, --wind-direction (and --fps when `frames`).
+void add_wind_options(CLI::App* command, WindArguments& wind, bool frames);
+
+// The wind model's options; the seed draws the phases.
+graphics::WindOptions wind_options(const WindArguments& wind, double duration_s,
+                                   std::uint64_t seed);
+
+// Bark meshed with continuous (Reynolds) junctions, which carry the bone weights a skin needs.
+// Throws ValueError when leaves are asked for (leaf vertices carry no bones yet).
+graphics::TriangleMesh skinnable_mesh(const TreeGraph& tree, graphics::MeshOptions options);
+
+struct SkinnedOutput {
+  std::size_t joints = 0, vertices = 0, triangles = 0, keyframes = 0;
+};
+
+// `fspm mesh --skin`: the skinned .glb with the wind animation when duration_s > 0.
+SkinnedOutput write_wind_glb(const TreeGraph& tree, const graphics::MeshOptions& options,
+                             const WindArguments& wind, double duration_s, std::uint64_t seed,
+                             const std::string& path);
+
+// The mesh posed at time t of the wind animation (`fspm render --wind-time`).
+graphics::TriangleMesh posed_in_wind(const TreeGraph& tree, const graphics::MeshOptions& options,
+                                     const WindArguments& wind, double t_s, std::uint64_t seed);
+
+}  // namespace fspm::cli
