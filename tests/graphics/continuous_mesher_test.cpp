@@ -14,30 +14,6 @@
 namespace fspm::graphics {
 namespace {
 
-// Trunk of four internodes up z (order 0, r 0.1); laterals (order 1, r 0.03, two internodes)
-// leave from the tops of nodes 1 and 2 at 60 degrees from the trunk, in different directions.
-TreeGraph junction_tree() {
-  TreeGraph t;
-  NodeId prev = kNoNode;
-  std::vector<NodeId> trunk;
-  for (int i = 0; i < 4; ++i) {
-    prev = testing::add(t, prev, Eigen::Vector3d(0, 0, i), Eigen::Vector3d(0, 0, i + 1), 0.1, i, 0);
-    trunk.push_back(prev);
-  }
-  for (int k = 0; k < 2; ++k) {
-    const double az = 0.4 + 2.5 * k;
-    const Eigen::Vector3d d(std::sin(M_PI / 3) * std::cos(az), std::sin(M_PI / 3) * std::sin(az),
-                            std::cos(M_PI / 3));
-    Eigen::Vector3d p(0, 0, 2 + k);
-    NodeId parent = trunk[1 + k];
-    for (int s = 0; s < 2; ++s) {
-      parent = testing::add(t, parent, p, p + 0.6 * d, 0.03, 2 + k + s, 1);
-      p += 0.6 * d;
-    }
-  }
-  return t;
-}
-
 // Connected components of the bark after welding equal positions.
 std::size_t bark_components(const TriangleMesh& mesh) {
   std::map<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>, std::uint32_t> weld;
@@ -71,7 +47,7 @@ std::size_t bark_components(const TriangleMesh& mesh) {
 }
 
 TEST(ContinuousMesher, OneClosedSurfaceThroughJunctions) {
-  const TreeGraph tree = junction_tree();
+  const TreeGraph tree = testing::junction_tree();
   MeshOptions o;
   o.junctions = JunctionMode::kContinuous;
   const TriangleMesh mesh = mesh_tree(tree, o);
@@ -80,16 +56,18 @@ TEST(ContinuousMesher, OneClosedSurfaceThroughJunctions) {
   EXPECT_EQ(bark_components(mesh), 1u);
   const auto w0 = mesh.attribute("weight0");
   const auto w1 = mesh.attribute("weight1");
+  const auto w2 = mesh.attribute("weight2");
+  const auto w3 = mesh.attribute("weight3");
   std::size_t halves = 0;
   for (std::size_t i = 0; i < mesh.vertex_count(); ++i) {
-    ASSERT_FLOAT_EQ(w0[i] + w1[i], 1.0f);
+    ASSERT_NEAR(w0[i] + w1[i] + w2[i] + w3[i], 1.0f, 1e-6f);
     halves += w0[i] == 0.5f;
   }
   EXPECT_GT(halves, 0u);  // interior joints are shared by two bones
 }
 
 TEST(ContinuousMesher, ReynoldsWidthTapersToTheTip) {
-  const TreeGraph tree = junction_tree();
+  const TreeGraph tree = testing::junction_tree();
   MeshOptions o;
   o.junctions = JunctionMode::kContinuous;
   o.reynolds_width = true;

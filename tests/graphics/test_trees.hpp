@@ -82,4 +82,28 @@ inline TreeGraph binary_tree(int depth, int segments, double radius = 0.05) {
   return t;
 }
 
+// Trunk of four internodes up z (order 0, r 0.1); laterals (order 1, r 0.03, two internodes)
+// leave from the tops of nodes 1 and 2 at 60 degrees from the trunk, in different directions.
+inline TreeGraph junction_tree() {
+  TreeGraph t;
+  NodeId prev = kNoNode;
+  std::vector<NodeId> trunk;
+  for (int i = 0; i < 4; ++i) {
+    prev = add(t, prev, Eigen::Vector3d(0, 0, i), Eigen::Vector3d(0, 0, i + 1), 0.1, i, 0);
+    trunk.push_back(prev);
+  }
+  for (int k = 0; k < 2; ++k) {
+    const double az = 0.4 + 2.5 * k;
+    const Eigen::Vector3d d(std::sin(M_PI / 3) * std::cos(az), std::sin(M_PI / 3) * std::sin(az),
+                            std::cos(M_PI / 3));
+    Eigen::Vector3d p(0, 0, 2 + k);
+    NodeId parent = trunk[1 + k];
+    for (int s = 0; s < 2; ++s) {
+      parent = add(t, parent, p, p + 0.6 * d, 0.03, 2 + k + s, 1);
+      p += 0.6 * d;
+    }
+  }
+  return t;
+}
+
 }  // namespace fspm::graphics::testing
