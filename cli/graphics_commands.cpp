@@ -309,13 +309,16 @@ void run_mesh(const MeshCommand& c) {
   }
 }
 
-// --wind-time: one tree's bark posed at that time of its wind animation.
-graphics::InstancedMesh wind_frame(const RenderCommand& c, const graphics::MeshOptions& options) {
+// --wind-time: one tree's bark posed at that time of its wind animation, framed as at rest.
+graphics::InstancedMesh wind_frame(const RenderCommand& c, const graphics::MeshOptions& options,
+                                   graphics::RenderOptions& render) {
   if (input_kind(c.tree) != InputKind::kTree) {
     throw ValueError("--wind-time needs one tree file (.tree, .treeb, .nwk, .mtg)", c.tree);
   }
-  return graphics::InstancedMesh::single(
-      posed_in_wind(read_tree_file(c.tree, c.format), options, c.wind, c.wind_time_s, c.seed));
+  WindFrame f =
+      posed_in_wind(read_tree_file(c.tree, c.format), options, c.wind, c.wind_time_s, c.seed);
+  render.frame = f.frame;
+  return graphics::InstancedMesh::single(std::move(f.mesh));
 }
 
 void run_render(const RenderCommand& c) {
@@ -335,7 +338,7 @@ void run_render(const RenderCommand& c) {
   set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
   mesh_options.edge_length_m = c.edge_length_m;
   graphics::InstancedMesh mesh = c.wind_time_s >= 0.0
-                                     ? wind_frame(c, mesh_options)
+                                     ? wind_frame(c, mesh_options, options)
                                      : load_instanced(c.tree, c.format, mesh_options, true);
   if (c.leaves) report_missing_leaves(mesh, c.tree);
   if (!c.color_by.empty()) {

@@ -78,13 +78,20 @@ SkinnedOutput write_wind_glb(const TreeGraph& tree, const graphics::MeshOptions&
   return out;
 }
 
-graphics::TriangleMesh posed_in_wind(const TreeGraph& tree, const graphics::MeshOptions& options,
-                                     const WindArguments& wind, double t_s, std::uint64_t seed) {
+WindFrame posed_in_wind(const TreeGraph& tree, const graphics::MeshOptions& options,
+                        const WindArguments& wind, double t_s, std::uint64_t seed) {
   const graphics::TriangleMesh mesh = skinnable_mesh(tree, options);
   const graphics::Skin skin = graphics::skin_mesh(tree, mesh);
   const std::vector<Eigen::Quaternionf> rotations =
       graphics::wind_pose(skin.skeleton, wind_options(wind, wind.duration_s, seed), t_s);
-  return graphics::pose_mesh(mesh, skin, graphics::joint_world_matrices(skin.skeleton, rotations));
+  WindFrame out;
+  out.mesh =
+      graphics::pose_mesh(mesh, skin, graphics::joint_world_matrices(skin.skeleton, rotations));
+  const Eigen::Vector3f lo = mesh.bbox_min(), hi = mesh.bbox_max();
+  const float margin = 0.2f * (hi.z() - lo.z());
+  out.frame = Eigen::AlignedBox3f(lo - Eigen::Vector3f(margin, margin, 0.0f),
+                                  hi + Eigen::Vector3f::Constant(margin));
+  return out;
 }
 
 }  // namespace fspm::cli

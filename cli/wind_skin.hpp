@@ -3,6 +3,7 @@
 // skinned glTF with a wind animation, `fspm render TREE --wind-time T` draws the same tree posed
 // at time T of that animation (frames for a movie).
 #include <CLI/CLI.hpp>
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -42,8 +43,15 @@ SkinnedOutput write_wind_glb(const TreeGraph& tree, const graphics::MeshOptions&
                              const WindArguments& wind, double duration_s, std::uint64_t seed,
                              const std::string& path);
 
+struct WindFrame {
+  graphics::TriangleMesh mesh;  // posed
+  // The camera's box, the same at every time: the tree at rest grown by a fifth of its height
+  // sideways and upwards (not below the ground), so the frames of a movie line up.
+  Eigen::AlignedBox3f frame;
+};
+
 // The mesh posed at time t of the wind animation (`fspm render --wind-time`).
-graphics::TriangleMesh posed_in_wind(const TreeGraph& tree, const graphics::MeshOptions& options,
-                                     const WindArguments& wind, double t_s, std::uint64_t seed);
+WindFrame posed_in_wind(const TreeGraph& tree, const graphics::MeshOptions& options,
+                        const WindArguments& wind, double t_s, std::uint64_t seed);
 
 }  // namespace fspm::cli
