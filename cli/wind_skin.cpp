@@ -88,7 +88,7 @@ WindFrame posed_in_wind(const TreeGraph& tree, const graphics::MeshOptions& opti
   out.mesh =
       graphics::pose_mesh(mesh, skin, graphics::joint_world_matrices(skin.skeleton, rotations));
   const Eigen::Vector3f lo = mesh.bbox_min(), hi = mesh.bbox_max();
-  const float margin = 0.2f * (hi.z() - lo.z());
+  const float margin = 0.1f * (hi.z() - lo.z());
   out.frame = Eigen::AlignedBox3f(lo - Eigen::Vector3f(margin, margin, 0.0f),
                                   hi + Eigen::Vector3f::Constant(margin));
   return out;

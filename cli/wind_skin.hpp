@@ -45,7 +45,7 @@ SkinnedOutput write_wind_glb(const TreeGraph& tree, const graphics::MeshOptions&
 
 struct WindFrame {
   graphics::TriangleMesh mesh;  // posed
-  // The camera's box, the same at every time: the tree at rest grown by a fifth of its height
+  // The camera's box, the same at every time: the tree at rest grown by a tenth of its height
   // sideways and upwards (not below the ground), so the frames of a movie line up.
   Eigen::AlignedBox3f frame;
 };
