@@ -22,9 +22,10 @@ namespace fspm::graphics {
 //   kContinuous: after Reynolds 3.2, one tube per axis running through its branch points; where a
 //     lateral axis starts, a knuckle ring is added on the parent at the lateral's width and the
 //     lateral grows out of the quad it leaves open, sharing its four vertices, so the bark is one
-//     closed surface. Vertices carry the two nearest bones (node ids) and their weights as the
-//     attributes bone0, bone1, weight0, weight1. Laterals whose quad is taken, that leave at a
-//     shallow angle or that hang from an axis tip fall back to separate tubes.
+//     closed surface. Vertices carry Reynolds' bone weights (graphics/bone_weights.hpp: up to
+//     four bones as node ids and their weights, attributes bone0..bone3 and weight0..weight3;
+//     the vertices a lateral shares with its parent weigh both). Laterals whose quad is taken, that
+//     leave at a shallow angle or that hang from an axis tip fall back to separate tubes.
 enum class JunctionMode { kSeparate, kContinuous };
 
 struct MeshOptions {
