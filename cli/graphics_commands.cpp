@@ -309,7 +309,7 @@ void run_mesh(const MeshCommand& c) {
   }
 }
 
-// --wind-time: one tree's bark posed at that time of its wind animation, framed as at rest.
+// --wind-time: one tree posed at that time of its wind animation, framed as at rest.
 graphics::InstancedMesh wind_frame(const RenderCommand& c, const graphics::MeshOptions& options,
                                    graphics::RenderOptions& render) {
   if (input_kind(c.tree) != InputKind::kTree) {
@@ -556,8 +556,8 @@ void add_graphics_commands(CLI::App& app) {
                 "added, whole, as material obstacle (not with .pvd; a scene given as TREE adds "
                 "its own)");
   m->add_flag("--skin", mesh->skin,
-              "Write the bark as a glTF skin (.glb): a joint per internode, Reynolds' bone "
-              "weights as JOINTS_0/WEIGHTS_0 (implies --junctions continuous, no --leaves)");
+              "Write the tree as a glTF skin (.glb): a joint per internode, Reynolds' bone "
+              "weights as JOINTS_0/WEIGHTS_0 (implies --junctions continuous)");
   m->add_option("--animate", mesh->animate_s,
                 "With --skin: add a looping wind animation this many seconds long (rotation "
                 "keyframes per joint; phases from --seed)")
@@ -592,7 +592,7 @@ void add_graphics_commands(CLI::App& app) {
                 "the tree are drawn in stone (long walls cut to the tree's surroundings; a scene "
                 "given as TREE draws its own)");
   r->add_option("--wind-time", render->wind_time_s,
-                "Draw the bark posed at this time (s) of the wind animation of fspm mesh --skin "
+                "Draw the tree posed at this time (s) of the wind animation of fspm mesh --skin "
                 "--animate (same --seed and wind options); frames of a movie")
       ->check(number_in(0.0, 1e9));
   add_wind_options(r, render->wind, false);

@@ -54,9 +54,6 @@ graphics::WindOptions wind_options(const WindArguments& wind, double duration_s,
 }
 
 graphics::TriangleMesh skinnable_mesh(const TreeGraph& tree, graphics::MeshOptions options) {
-  if (options.leaves) {
-    throw ValueError("--skin and --wind-time mesh the bark only: leave out --leaves");
-  }
   options.junctions = graphics::JunctionMode::kContinuous;
   return graphics::mesh_tree(tree, options);
 }

@@ -30,8 +30,8 @@ void add_wind_options(CLI::App* command, WindArguments& wind, bool frames);
 graphics::WindOptions wind_options(const WindArguments& wind, double duration_s,
                                    std::uint64_t seed);
 
-// Bark meshed with continuous (Reynolds) junctions, which carry the bone weights a skin needs.
-// Throws ValueError when leaves are asked for (leaf vertices carry no bones yet).
+// The tree meshed with continuous (Reynolds) junctions, which carry the bone weights a skin
+// needs; leaves and leaf clusters follow the internode they grow on.
 graphics::TriangleMesh skinnable_mesh(const TreeGraph& tree, graphics::MeshOptions options);
 
 struct SkinnedOutput {

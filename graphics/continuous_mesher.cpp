@@ -130,6 +130,7 @@ TriangleMesh mesh_tree_continuous(const TreeGraph& tree, const MeshOptions& opti
   MeshOptions leaves_only = options;
   leaves_only.junctions = JunctionMode::kSeparate;
   leaves_only.bark = false;
+  leaves_only.leaf_bones = true;
   TriangleMesh leaves = mesh_tree(tree, leaves_only);  // validates the options too
   const std::size_t n = tree.size();
   if (n == 0 || !options.bark) return leaves;

@@ -177,8 +177,8 @@ Plan make_plan(const TreeGraph& tree, const MeshOptions& options) {
 // Writes the per-vertex attribute values of one node over a run of vertices.
 class AttributeFiller {
  public:
-  AttributeFiller(const TreeGraph& tree, TriangleMesh& mesh, double reference_time)
-      : tree_(tree), reference_time_(reference_time) {
+  AttributeFiller(const TreeGraph& tree, TriangleMesh& mesh, double reference_time, bool bones)
+      : tree_(tree), reference_time_(reference_time), bones_(bones) {
     const std::size_t nv = mesh.positions.size();
     auto column = [&](const std::string& name) {
       mesh.attributes.push_back({name, std::vector<float>(nv)});
@@ -190,6 +190,10 @@ class AttributeFiller {
     for (const std::string& name : tree.attribute_names()) {
       column(name);
       user_.push_back(tree.attribute(name));
+    }
+    if (bones_) {
+      column("bone0");
+      column("weight0");
     }
     for (auto& a : mesh.attributes) columns_.push_back(a.values.data());
     values_.resize(columns_.size());
@@ -204,6 +208,16 @@ class AttributeFiller {
     for (std::size_t i = 0; i < user_.size(); ++i) {
       values_[4 + i] = static_cast<float>(user_[i][node]);
     }
+    if (bones_) {
+      // A leaf or cluster moves with the nearest internode at or above it (1.0, Reynolds' end
+      // weight); none: no bone.
+      NodeId bone = node;
+      while (bone != kNoNode && tree_.kind(bone) != OrganKind::kInternode) {
+        bone = tree_.parent(bone);
+      }
+      values_[4 + user_.size()] = bone == kNoNode ? -1.0f : static_cast<float>(bone);
+      values_[5 + user_.size()] = bone == kNoNode ? 0.0f : 1.0f;
+    }
     for (std::size_t c = 0; c < columns_.size(); ++c) {
       std::fill_n(columns_[c] + first_vertex, count, values_[c]);
     }
@@ -212,6 +226,7 @@ class AttributeFiller {
  private:
   const TreeGraph& tree_;
   double reference_time_;
+  bool bones_;
   std::vector<std::span<const double>> user_;
   std::vector<float*> columns_;
   std::vector<float> values_;
@@ -274,7 +289,7 @@ TriangleMesh mesh_tree(const TreeGraph& tree, const MeshOptions& options) {
   mesh.uvs.resize(plan.counts.vertices);
   mesh.triangles.resize(plan.counts.triangles);
   mesh.materials.resize(plan.counts.triangles, Material::kBark);
-  AttributeFiller attributes(tree, mesh, plan.reference_time);
+  AttributeFiller attributes(tree, mesh, plan.reference_time, options.leaf_bones);
 
   Eigen::Vector3f* pos = mesh.positions.data();
   Eigen::Vector3f* nor = mesh.normals.data();

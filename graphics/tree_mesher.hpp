@@ -62,6 +62,11 @@ struct MeshOptions {
   // Growth sequences: nodes born after this time (and their subtrees) are left out, and the
   // "age" attribute is measured from it. Infinity = keep all, age measured from the latest birth.
   double max_birth_time = std::numeric_limits<double>::infinity();
+
+  // Leaves and leaf clusters carry the bone they move with (attributes bone0 = the nearest
+  // internode at or above them, weight0 = 1), as the bark of continuous meshes does; set by the
+  // continuous mesher so skins move the foliage with its branch.
+  bool leaf_bones = false;
 };
 
 // Per-vertex attributes every mesh carries, followed by the tree's user attributes.

@@ -223,5 +223,34 @@ TEST(SkeletonSkin, JointWorldMatricesComposeDownTheTree) {
   }
 }
 
+TEST(SkeletonSkin, LeavesFollowTheirInternode) {
+  // small_tree: leaves on internodes 1 and the two branch tips; each leaf vertex takes the
+  // internode it grows on at 1.0.
+  const TreeGraph tree = testing::small_tree();
+  MeshOptions o;
+  o.junctions = JunctionMode::kContinuous;
+  o.leaves = true;
+  const TriangleMesh mesh = mesh_tree(tree, o);
+  std::set<NodeId> bearers;
+  for (NodeId id = 0; id < tree.size(); ++id) {
+    if (tree.kind(id) == OrganKind::kLeaf) bearers.insert(tree.parent(id));
+  }
+  const Skin skin = skin_mesh(tree, mesh);
+  std::vector<char> leaf_vertex(mesh.vertex_count(), 0);
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    if (mesh.materials[t] != Material::kLeaf) continue;
+    for (auto v : mesh.triangles[t]) leaf_vertex[v] = 1;
+  }
+  std::size_t leaves = 0;
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    if (!leaf_vertex[v]) continue;
+    ++leaves;
+    EXPECT_FLOAT_EQ(skin.weights[v][0], 1.0f);
+    EXPECT_EQ(skin.weights[v][1] + skin.weights[v][2] + skin.weights[v][3], 0.0f);
+    EXPECT_TRUE(bearers.count(skin.skeleton.nodes[skin.joints[v][0]])) << "vertex " << v;
+  }
+  EXPECT_EQ(leaves, 3u * 4u);  // three flat quads
+}
+
 }  // namespace
 }  // namespace fspm::graphics
