@@ -28,6 +28,12 @@ TEST(WindCli, SkinnedGlbWithAnimation) {
   r = run_fspm("mesh " + tree + " --skin -o " + (dir / "still.glb").string() + " --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out)["keyframes"], 0);
+  // With the leaf: two bark bones and a quad of 4 vertices more than the bark alone.
+  r = run_fspm("mesh " + tree + " --skin --leaves -o " + (dir / "leafy.glb").string() + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto leafy = nlohmann::json::parse(r.out);
+  EXPECT_EQ(leafy["joints"], 2);
+  EXPECT_EQ(leafy["vertices"].get<int>(), j["vertices"].get<int>() + 4);
 }
 
 TEST(WindCli, MisuseExitsOneWithoutOutput) {
@@ -36,7 +42,7 @@ TEST(WindCli, MisuseExitsOneWithoutOutput) {
   const std::string glb = (dir / "x.glb").string();
   for (const std::string& args :
        {"mesh " + tree + " --skin -o " + (dir / "x.obj").string(),
-        "mesh " + tree + " --animate 2 -o " + glb, "mesh " + tree + " --skin --leaves -o " + glb,
+        "mesh " + tree + " --animate 2 -o " + glb, "mesh " + tree + " --skin --ages 1 -o " + glb,
         "mesh " + tree + " --skin --animate 2 --wind-direction 0,0 -o " + glb,
         "mesh " + tree + " --skin --animate -1 -o " + glb}) {
     const auto r = run_fspm(args);
