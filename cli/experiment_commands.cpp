@@ -18,6 +18,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/full_command_list.hpp"
+#include "cli/html_report.hpp"
 #include "cli/output.hpp"
 #include "cli/report_figures.hpp"
 #include "cli/run_file_writers.hpp"
@@ -83,6 +84,7 @@ struct ReportOptions {
   std::string dir;
   std::string output;
   bool no_figures = false;
+  bool html = false;
   bool json = false;
 };
 
@@ -313,46 +315,85 @@ void compare_command(const CompareOptions& o) {
   if (o.json) print_json(comparisons_json(o.dir, c));
 }
 
+// What the report is made of: the database, the experiment read back from it (when its model
+// files are still there) and the comparisons (when computed).
+struct ReportInputs {
+  std::vector<ex::RunRecord> runs;
+  std::optional<ex::Experiment> x;
+  std::optional<ex::ComparisonResults> comparisons;
+  std::string note;  // why the experiment's extras are left out
+};
+
+ReportInputs read_report_inputs(const ex::ResultsDb& db, const std::string& dir) {
+  ReportInputs in;
+  in.runs = db.read_all();
+  try {
+    in.x = stored_experiment(db);
+  } catch (const Error& e) {
+    // The report's main tables need only the database; the extras need the model files too.
+    in.note = "\nNote: summary tables and comparisons left out: " + std::string(e.what()) + '\n';
+  }
+  ex::ComparisonResults c;
+  if (in.x && !in.x->comparisons.empty() && ex::read_comparisons(dir, c)) {
+    c.tests = ex::comparison_ttests(*in.x, c.pairs);
+    in.comparisons = std::move(c);
+  }
+  return in;
+}
+
+// The Markdown report; `figures` draws the PNG figures and renders, `html` puts the HTML page's
+// placeholders in their place instead (the page adds the trees itself).
+std::string report_markdown(const ex::ResultsDb& db, const ReportInputs& in, const std::string& dir,
+                            bool figures, bool html) {
+  const ex::Experiment* x = in.x ? &*in.x : nullptr;
+  std::string md = ex::markdown_report(db.info(), in.runs, x ? ex::report_introduction(*x) : "");
+  md += in.note;
+  if (x == nullptr) return md;
+  if (html) md += html_sweeps_markdown(db.info(), in.runs);
+  if (figures) md += sweep_figures(*x, db.info(), in.runs, dir);
+  md += ex::summary_tables_markdown(*x, in.runs);
+  if (in.comparisons) {
+    md += "\n" + ex::comparisons_markdown(*x, *in.comparisons);
+    const std::string overview = ex::ttest_overview(*x, in.comparisons->tests);
+    if (!overview.empty()) md += "\n" + overview;
+    if (html) md += html_comparisons_markdown();
+    if (figures) md += comparison_figures(*x, *in.comparisons, dir);
+  } else if (!x->comparisons.empty()) {
+    md += "\nThe comparisons have not been computed yet: run `fspm compare " + dir + "`.\n";
+  }
+  if (figures) md += tree_renders(*x, in.runs, dir);
+  return md;
+}
+
 void report_command(const ReportOptions& o) {
   // Figures and renders draw through VTK, which needs an X display.
   if (!o.no_figures && graphics::render_available()) rerun_under_xvfb_if_needed();
   const ex::ResultsDb db(o.dir, ex::ResultsDb::Mode::kRead);
-  const std::vector<ex::RunRecord> runs = db.read_all();
-  std::optional<ex::Experiment> x;
-  std::string note;
-  try {
-    x = stored_experiment(db);
-  } catch (const Error& e) {
-    // The report's main tables need only the database; the extras need the model files too.
-    note = "\nNote: summary tables and comparisons left out: " + std::string(e.what()) + '\n';
-  }
-  std::string md = ex::markdown_report(db.info(), runs, x ? ex::report_introduction(*x) : "");
-  md += note;
-  if (x) {
-    if (!o.no_figures) md += sweep_figures(*x, db.info(), runs, o.dir);
-    md += ex::summary_tables_markdown(*x, runs);
-    ex::ComparisonResults c;
-    if (!x->comparisons.empty() && ex::read_comparisons(o.dir, c)) {
-      c.tests = ex::comparison_ttests(*x, c.pairs);
-      md += "\n" + ex::comparisons_markdown(*x, c);
-      const std::string overview = ex::ttest_overview(*x, c.tests);
-      if (!overview.empty()) md += "\n" + overview;
-      if (!o.no_figures) md += comparison_figures(*x, c, o.dir);
-    } else if (!x->comparisons.empty()) {
-      md += "\nThe comparisons have not been computed yet: run `fspm compare " + o.dir + "`.\n";
-    }
-    if (!o.no_figures) md += tree_renders(*x, runs, o.dir);
-  }
+  const ReportInputs in = read_report_inputs(db, o.dir);
+  const std::string md = report_markdown(db, in, o.dir, !o.no_figures, false);
   const std::string path = o.output.empty() ? (fs::path(o.dir) / "report.md").string() : o.output;
   write_file_atomically(path, [&](std::ostream& out) { out << md; });
+  std::string html_path;
+  if (o.html || (in.x && in.x->report_html)) {
+    HtmlReportInput h;
+    h.experiment = in.x ? &*in.x : nullptr;
+    h.info = &db.info();
+    h.runs = &in.runs;
+    h.comparisons = in.comparisons ? &*in.comparisons : nullptr;
+    h.markdown = report_markdown(db, in, o.dir, false, true);
+    h.dir = o.dir;
+    html_path = write_html_report(h).string();
+  }
   if (!o.json) {
     std::cout << path << '\n';
+    if (!html_path.empty()) std::cout << html_path << '\n';
     return;
   }
   // What went in, and what was left out (a note in the report says why).
   print_json({{"report", path},
-              {"runs", runs.size()},
-              {"experiment", x.has_value()},
+              {"html", html_path.empty() ? nlohmann::json(nullptr) : nlohmann::json(html_path)},
+              {"runs", in.runs.size()},
+              {"experiment", in.x.has_value()},
               {"figures", md.find("](figures/") != std::string::npos},
               {"notes", md.find("\nNote: ") != std::string::npos}});
 }
@@ -412,6 +453,8 @@ void add_experiment_commands(CLI::App& app) {
   rep->add_option("DIR", report->dir, "Output directory of fspm run")->required();
   rep->add_option("-o,--output", report->output, "Report path (default DIR/report.md)");
   rep->add_flag("--no-figures", report->no_figures, "Tables only (figures need an X display)");
+  rep->add_flag("--html", report->html,
+                "Also an interactive HTML report, DIR/report/index.html (as [report] html = true)");
   rep->add_flag("--json", report->json,
                 "One JSON object on stdout: report path, runs, and whether the experiment's "
                 "tables, figures and notes are in it");

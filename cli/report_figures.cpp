@@ -5,9 +5,8 @@
 #include <map>
 #include <sstream>
 
-#include "cli/obstacle_crop.hpp"
-#include "cli/obstacle_mesh.hpp"
 #include "cli/run_file_writers.hpp"
+#include "cli/run_scene_mesh.hpp"
 #include "experiments/render_selection.hpp"
 #include "experiments/report.hpp"
 #include "experiments/report_notes.hpp"
@@ -185,26 +184,6 @@ std::string comparison_figures(const ex::Experiment& x, const ex::ComparisonResu
 
 namespace {
 
-// What a render shows besides the tree.
-enum class Obstacles { kNone, kFarAway, kDrawn };
-
-// The tree of a recorded run meshed with the obstacles near it.
-graphics::TriangleMesh run_scene_mesh(const ex::Experiment& x, const ex::RunRecord& record,
-                                      const std::string& dir, Obstacles& obstacles) {
-  graphics::TriangleMesh mesh = run_tree_mesh(ex::recorded_run_tree(x, record, dir));
-  obstacles = Obstacles::kNone;
-  if (const std::optional<environment::Scene> scene = ex::recorded_run_scene(x, record)) {
-    Eigen::Vector2d region_lo, region_hi;
-    obstacle_region(mesh.bbox_min().cast<double>(), mesh.bbox_max().cast<double>(), region_lo,
-                    region_hi);
-    const graphics::TriangleMesh stones =
-        mesh_obstacles(obstacles_near(*scene, region_lo, region_hi));
-    obstacles = stones.triangle_count() > 0 ? Obstacles::kDrawn : Obstacles::kFarAway;
-    mesh.append(stones);
-  }
-  return mesh;
-}
-
 // The experiment's image size and view in a parallel projection whose height fits a box of
 // `extent` with a 6 % margin (as the perspective framing has), with a scale bar.
 graphics::RenderOptions one_scale_options(const ex::Experiment& x, const Eigen::Vector3f& extent) {
@@ -264,7 +243,8 @@ std::string tree_renders(const ex::Experiment& x, const std::vector<ex::RunRecor
   for (const ex::RenderChoice& c : choices) {
     try {
       Obstacles obstacles = Obstacles::kNone;
-      const graphics::TriangleMesh mesh = run_scene_mesh(x, *by_run.at(c.run), dir, obstacles);
+      const graphics::TriangleMesh mesh =
+          run_scene_mesh(x, *by_run.at(c.run), dir, run_mesh_options(), obstacles);
       drawn.push_back({&c, mesh.bbox_min(), mesh.bbox_max(), obstacles});
       extent = extent.cwiseMax(mesh.bbox_max() - mesh.bbox_min());
     } catch (const Error& e) {
@@ -281,7 +261,8 @@ std::string tree_renders(const ex::Experiment& x, const std::vector<ex::RunRecor
     std::snprintf(name, sizeof name, "figures/run-%07zu.png", c.run);
     try {
       Obstacles obstacles = Obstacles::kNone;
-      const graphics::TriangleMesh mesh = run_scene_mesh(x, *by_run.at(c.run), dir, obstacles);
+      const graphics::TriangleMesh mesh =
+          run_scene_mesh(x, *by_run.at(c.run), dir, run_mesh_options(), obstacles);
       // The same box height from the ground in every picture, so the ground lies on one row.
       const Eigen::Vector3f centre = 0.5f * (d.lo + d.hi);
       Eigen::Vector3f lo(centre.x() - 0.5f * extent.x(), centre.y() - 0.5f * extent.y(), d.lo.z());

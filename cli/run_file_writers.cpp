@@ -13,13 +13,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
+}  // namespace
+
 graphics::MeshOptions run_mesh_options() {
   graphics::MeshOptions options;
   options.leaves = true;
   return options;
 }
-
-}  // namespace
 
 graphics::TriangleMesh run_tree_mesh(const TreeGraph& tree) {
   return graphics::mesh_tree(tree, run_mesh_options());

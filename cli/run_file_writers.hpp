@@ -7,6 +7,7 @@
 #include "experiments/experiment.hpp"
 #include "experiments/run_files.hpp"
 #include "fspm/tree_graph.hpp"
+#include "graphics/tree_mesher.hpp"
 #include "graphics/triangle_mesh.hpp"
 
 namespace fspm::cli {
@@ -15,6 +16,9 @@ namespace fspm::cli {
 // "image" (.png, outputs.image_size and image_view) when fspm was built with VTK. Images need an X
 // display when they are written.
 experiments::RunFileWriters graphics_run_file_writers(const experiments::Experiment& experiment);
+
+// How kept meshes, images and report renders mesh a tree: bark and leaves.
+graphics::MeshOptions run_mesh_options();
 
 // The tree meshed as kept meshes, images and report renders show it: bark and leaves.
 graphics::TriangleMesh run_tree_mesh(const TreeGraph& tree);

@@ -413,8 +413,13 @@ void parse_comparisons(const Reader& r, const toml::table& root, Experiment& x) 
     x.tables.push_back(std::move(s));
   }
   if (const toml::table* rep = r.table(root, "report", false)) {
-    r.only_keys("report", *rep, {"renders", "render_by", "render_where", "render_metric", "about"});
+    r.only_keys("report", *rep,
+                {"renders", "render_by", "render_where", "render_metric", "about", "html"});
     if (const toml::node* n = rep->get("about")) x.about = r.string("report.about", *n);
+    if (const toml::node* n = rep->get("html")) {
+      if (!n->is_boolean()) r.fail("report.html", *n, "expected true or false");
+      x.report_html = n->value<bool>().value();
+    }
     if (const toml::node* n = rep->get("renders")) {
       x.render.renders = static_cast<std::size_t>(r.integer("report.renders", *n, 0));
     }

@@ -59,7 +59,8 @@ struct Experiment {
   std::vector<ComparisonSpec> comparisons;
   std::vector<TTestSpec> ttests;
   std::vector<SummaryTableSpec> tables;
-  RenderSpec render;  // [report]
+  RenderSpec render;         // [report]
+  bool report_html = false;  // report.html: fspm report also writes the HTML report
   ParameterSet fixed;
   std::vector<SweepAxis> sweep;
   std::optional<Sampling> sampling;

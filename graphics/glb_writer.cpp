@@ -72,10 +72,16 @@ class GlbBuilder {
     accessors_[pos]["min"] = {lo.x(), lo.y(), lo.z()};  // required for POSITION
     accessors_[pos]["max"] = {hi.x(), hi.y(), hi.z()};
     attributes["POSITION"] = pos;
-    attributes["NORMAL"] =
-        add_accessor(add_view(mesh.normals.data(), nv * 12, kArrayBuffer), kFloat, nv, "VEC3");
-    attributes["TEXCOORD_0"] =
-        add_accessor(add_view(mesh.uvs.data(), nv * 8, kArrayBuffer), kFloat, nv, "VEC2");
+    // Normals and texture coordinates are optional in glTF (viewers then shade flat): a mesh
+    // without them (lightened for the web) leaves them out.
+    if (mesh.normals.size() == nv) {
+      attributes["NORMAL"] =
+          add_accessor(add_view(mesh.normals.data(), nv * 12, kArrayBuffer), kFloat, nv, "VEC3");
+    }
+    if (mesh.uvs.size() == nv) {
+      attributes["TEXCOORD_0"] =
+          add_accessor(add_view(mesh.uvs.data(), nv * 8, kArrayBuffer), kFloat, nv, "VEC2");
+    }
     // Per-vertex colours (a crown reconstructed from a photograph) as glTF's COLOR_0.
     if (mesh.has_attribute("red") && mesh.has_attribute("green") && mesh.has_attribute("blue")) {
       auto& rgb = color_store_.emplace_back(3 * nv);

@@ -221,17 +221,20 @@
     return renderer;
   }
   const glbWaiting = new Map();
-  // Called by the trees/*.js files: a .glb as base64.
+  // Called by the trees/*.js files: a .glb, gzipped, in base64 (the browser's own
+  // DecompressionStream inflates it).
   window.fspmGlb = (name, base64) => {
     const bytes = Uint8Array.from(atob(base64), (c) => c.charCodeAt(0));
     const w = glbWaiting.get(name);
-    if (w) w.resolve(bytes.buffer);
+    if (!w) return;
+    const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream('gzip'));
+    new Response(stream).arrayBuffer().then(w.resolve, w.reject);
   };
   function loadGlb(name) {
     if (!glbWaiting.has(name)) {
       let resolve, reject;
       const promise = new Promise((a, b) => { resolve = a; reject = b; });
-      glbWaiting.set(name, { promise, resolve });
+      glbWaiting.set(name, { promise, resolve, reject });
       const s = el('script', { src: `trees/${name}.js` });
       s.onerror = () => reject(new Error(`cannot load trees/${name}.js`));
       document.head.appendChild(s);
