@@ -71,6 +71,7 @@
     const tbody = table.tBodies[0];
     if (!tbody) return;
     const rows = Array.from(tbody.rows);
+    table._fspmRows = rows; // every row, in the order fspm wrote them (tests read them)
     const state = { col: -1, dir: 1, filter: '', page: 0 };
     const info = el('span', { class: 'fspm-table-info' });
     const filter = el('input', { type: 'search', placeholder: 'filter rows', class: 'fspm-filter' });

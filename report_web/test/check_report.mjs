@@ -1,0 +1,123 @@
+// Opens an HTML report of `fspm report --html` from file:// in headless Chromium and checks it as
+// a reader would see it: no console error, every plot and 3D view drawn (their screenshots not
+// blank), a header click sorts a table. Writes a screenshot of the page top and the page's tables
+// (every row, all pages) as JSON for check_numbers.py.
+//   node check_report.mjs REPORT/index.html SCREENSHOT.png TABLES.json
+import puppeteer from 'puppeteer-core';
+import fs from 'node:fs';
+import path from 'node:path';
+
+const [indexPath, screenshotPath, tablesPath] = process.argv.slice(2);
+if (!tablesPath) {
+  console.error('usage: node check_report.mjs REPORT/index.html SCREENSHOT.png TABLES.json');
+  process.exit(2);
+}
+const failures = [];
+const fail = (what) => { failures.push(what); console.error(`FAIL: ${what}`); };
+
+const browser = await puppeteer.launch({
+  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+  headless: true,
+  // No GPU here: WebGL through SwiftShader, Chromium's software renderer.
+  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-dev-shm-usage'],
+});
+try {
+  const page = await browser.newPage();
+  await page.setViewport({ width: 1280, height: 900 });
+  page.on('console', (m) => { if (m.type() === 'error') fail(`console error: ${m.text()}`); });
+  page.on('pageerror', (e) => fail(`page error: ${e.message}`));
+  page.on('requestfailed', (r) => fail(`request failed: ${r.url()} ${r.failure()?.errorText}`));
+  await page.goto('file://' + path.resolve(indexPath), { waitUntil: 'load', timeout: 120000 });
+  await page.waitForFunction(() => typeof window.fspmDrawAll === 'function', { timeout: 60000 });
+  await page.evaluate(() => window.fspmDrawAll());
+
+  // The share of a screenshot's pixels that are not (near) white, measured in the page itself.
+  async function inkShare(handle) {
+    const png = await handle.screenshot({ encoding: 'base64' });
+    return page.evaluate(async (data) => {
+      const img = new Image();
+      img.src = 'data:image/png;base64,' + data;
+      await img.decode();
+      const c = document.createElement('canvas');
+      c.width = img.width; c.height = img.height;
+      const g = c.getContext('2d');
+      g.drawImage(img, 0, 0);
+      const px = g.getImageData(0, 0, c.width, c.height).data;
+      let ink = 0;
+      for (let i = 0; i < px.length; i += 4) if (px[i] + px[i + 1] + px[i + 2] < 3 * 235) ink++;
+      return ink / (px.length / 4);
+    }, png);
+  }
+
+  const plots = await page.$$('.fspm-plot');
+  const views = await page.$$('canvas.fspm-canvas');
+  if (plots.length === 0) fail('no plots on the page');
+  if (views.length === 0) fail('no 3D views on the page');
+  for (const [i, p] of plots.entries()) {
+    await p.scrollIntoView();
+    const marks = await p.evaluate((e) => e.querySelectorAll('.scatterlayer .point, .boxlayer .box, .boxlayer .point').length);
+    const share = await inkShare(p);
+    if (marks === 0 || share < 0.01) fail(`plot ${i} looks empty (${marks} marks, ${(100 * share).toFixed(2)} % ink)`);
+  }
+  for (const [i, v] of views.entries()) {
+    await v.scrollIntoView();
+    // A tree covers more than a sliver of its view.
+    const share = await inkShare(v);
+    if (share < 0.02) fail(`3D view ${i} looks blank (${(100 * share).toFixed(2)} % ink)`);
+  }
+
+  // Sorting: a click on a numeric column's header puts its rows in order, and changes the order.
+  const sorted = await page.evaluate(() => {
+    for (const table of document.querySelectorAll('#report table')) {
+      const rows = () => Array.from(table.tBodies[0].rows);
+      if (rows().length < 3) continue;
+      const ths = Array.from(table.tHead.rows[0].cells);
+      for (let c = 0; c < ths.length; c++) {
+        const num = (r) => parseFloat(r.cells[c].textContent);
+        const before = rows().map(num);
+        if (before.some(isNaN) || new Set(before).size < 3) continue;
+        ths[c].click(); // ascending
+        ths[c].click(); // descending
+        const after = rows().map(num);
+        const ordered = after.every((v, i) => i === 0 || after[i - 1] >= v);
+        return { header: ths[c].textContent, changed: before.join() !== after.join(), ordered };
+      }
+    }
+    return null;
+  });
+  if (!sorted) fail('no table with a numeric column to sort');
+  else if (!sorted.changed || !sorted.ordered) fail(`sorting by "${sorted.header}" did not order the rows: ${JSON.stringify(sorted)}`);
+
+  // Every table, every row (the page keeps the rows of all pages), with the heading above it.
+  const tables = await page.evaluate(() => Array.from(document.querySelectorAll('#report table')).map((t) => {
+    let h = t.closest('.fspm-table-wrap') || t;
+    while (h && !/^H[1-4]$/.test(h.tagName)) h = h.previousElementSibling;
+    return {
+      heading: h ? h.textContent : '',
+      headers: Array.from(t.tHead.rows[0].cells).map((c) => c.textContent.replace(/ [▲▼]$/, '')),
+      rows: t._fspmRows.map((r) => Array.from(r.cells).map((c) => c.textContent)),
+    };
+  }));
+  fs.writeFileSync(tablesPath, JSON.stringify(tables, null, 1));
+
+  // The page's top, and the page at the first box plots and at the first trees (SHOT-plots.png,
+  // SHOT-trees.png), as a reader sees them.
+  await page.evaluate(() => window.scrollTo(0, 0));
+  await page.screenshot({ path: screenshotPath });
+  for (const [what, selector] of [['plots', '.fspm-boxplots, .fspm-sweeps'], ['trees', '.fspm-trees, .fspm-pairs']]) {
+    const found = await page.evaluate((sel) => {
+      const e = document.querySelector(sel);
+      if (!e) return false;
+      window.scrollTo(0, e.getBoundingClientRect().top + window.scrollY - 120);
+      return true;
+    }, selector);
+    if (found) await page.screenshot({ path: screenshotPath.replace(/\.png$/, `-${what}.png`) });
+  }
+  console.log(`checked ${plots.length} plots, ${views.length} 3D views, ${tables.length} tables; sorted by "${sorted?.header}"`);
+} finally {
+  await browser.close();
+}
+if (failures.length) {
+  console.error(`${failures.length} failures`);
+  process.exit(1);
+}
