@@ -12,6 +12,9 @@ packages=(
   libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev
   # graphics (optional parts: VTK renders, the viewer, image output)
   libvtk9-dev libopenimageio-dev openimageio-tools python3-imath libglfw3-dev libgl-dev libglx-mesa0 libgl1-mesa-dri xvfb xauth
+  # HTML report (fspm report --html): zlib gzips its trees; node and npm install its browser
+  # libraries from the npm registry at build time (report_web/); chromium checks it in tests
+  zlib1g-dev nodejs npm chromium
   # distributed runs
   libopenmpi-dev openmpi-bin
   # Python module, tests and notebooks (Debian's python3 only)

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds everything and runs every test: formatting, the main build
 # (warnings as errors) with CTest, a clang AddressSanitizer + UndefinedBehaviorSanitizer build of
-# the core libraries with their tests and brief fuzzing, and the Python tests when present.
+# the core libraries with their tests and brief fuzzing, the Python tests when present, and the HTML
+# report checked in headless Chromium.
 # Exits non-zero on any failure; the output ends with the CTest summary of the main build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -59,6 +60,9 @@ if [ -f build/python/fspm/__init__.py ]; then
     echo "executed $nb"
   done
 fi
+
+echo "== HTML report in headless Chromium (fspm report --html)"
+scripts/html_report_check.sh
 
 echo "== CTest (main build, under Xvfb so renders and the viewer are tested)"
 xvfb-run -a -s "-screen 0 1280x1024x24" ctest --test-dir build --output-on-failure -j "$jobs"

@@ -141,7 +141,8 @@
   // Draws every plot and 3D view now (printing, tests).
   window.fspmDrawAll = () => Promise.all(pending.map(draw));
 
-  const kPlotConfig = { responsive: true, displaylogo: false };
+  // No tool bar (drag to zoom, double-click to zoom out): it would cover the titles.
+  const kPlotConfig = { responsive: true, displayModeBar: false };
   function plot(div, traces, layout) {
     return Plotly.newPlot(div, traces, Object.assign({
       margin: { l: 60, r: 10, t: 36, b: 50 }, hovermode: 'closest', showlegend: false,
@@ -278,7 +279,7 @@
   }
 
   function treeView(host, run, caption) {
-    const canvas = el('canvas', { class: 'fspm-canvas', width: 420, height: 380 });
+    const canvas = el('canvas', { class: 'fspm-canvas', width: 380, height: 380 });
     const select = el('select', { class: 'fspm-colour' }, [el('option', { value: '', text: 'colours: bark, leaves, obstacles' })]);
     const legend = el('div', { class: 'fspm-legend' });
     const save = el('a', { text: 'download .glb', download: `run-${run}.glb`, href: '#' });
@@ -307,7 +308,7 @@
       const size = bounds.getSize(new THREE.Vector3()).length() || 1;
       const camera = new THREE.PerspectiveCamera(35, canvas.width / canvas.height, size / 1000, size * 100);
       camera.up.set(0, 0, 1); // fspm's trees grow along +z
-      camera.position.copy(centre).add(new THREE.Vector3(0, -1.6 * size, 0.35 * size));
+      camera.position.copy(centre).add(new THREE.Vector3(0, -1.25 * size, 0.3 * size));
       const controls = new THREE.OrbitControls(camera, canvas);
       controls.target.copy(centre);
       controls.update();
