@@ -42,8 +42,8 @@ std::string trees_markdown(const ex::Experiment& x, const HtmlTrees& trees) {
       "per-vertex attribute (age, order, ...), grey shapes are the obstacles near the tree.";
   if (!trees.trees.empty()) {
     md += "\n## Selected trees\n\nThe typical tree of each group (the run with the median " +
-          std::string(x.render.metric.empty() ? "node count" : x.render.metric) + "), in " +
-          ex::length_unit(x.model_kind) + ". " + how + "\n\n<div class=\"fspm-trees\"></div>\n";
+          std::string(x.render.metric.empty() ? "node count" : x.render.metric) +
+          "), each view framed to its tree. " + how + "\n\n<div class=\"fspm-trees\"></div>\n";
   }
   if (!trees.pair_views.empty()) {
     md +=

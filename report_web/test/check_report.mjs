@@ -66,6 +66,21 @@ try {
     if (share < 0.02) fail(`3D view ${i} looks blank (${(100 * share).toFixed(2)} % ink)`);
   }
 
+  // Colouring by an attribute repaints the first view.
+  if (views.length > 0) {
+    const before = await views[0].screenshot({ encoding: 'base64' });
+    const attribute = await page.evaluate(() => {
+      const select = document.querySelector('.fspm-tree select');
+      const option = Array.from(select.options).find((o) => o.value);
+      if (!option) return null;
+      select.value = option.value;
+      select.dispatchEvent(new Event('change'));
+      return option.value;
+    });
+    if (!attribute) fail('no attribute to colour the first tree by');
+    else if ((await views[0].screenshot({ encoding: 'base64' })) === before) fail(`colouring by ${attribute} changed nothing`);
+  }
+
   // Sorting: a click on a numeric column's header puts its rows in order, and changes the order.
   const sorted = await page.evaluate(() => {
     for (const table of document.querySelectorAll('#report table')) {
@@ -100,11 +115,11 @@ try {
   }));
   fs.writeFileSync(tablesPath, JSON.stringify(tables, null, 1));
 
-  // The page's top, and the page at the first box plots and at the first trees (SHOT-plots.png,
-  // SHOT-trees.png), as a reader sees them.
+  // The page's top, and the page at the box plots, the sweeps, the trees and the pairs
+  // (SHOT-plots.png, SHOT-sweeps.png, SHOT-trees.png, SHOT-pairs.png), as a reader sees them.
   await page.evaluate(() => window.scrollTo(0, 0));
   await page.screenshot({ path: screenshotPath });
-  for (const [what, selector] of [['plots', '.fspm-boxplots, .fspm-sweeps'], ['trees', '.fspm-trees, .fspm-pairs']]) {
+  for (const [what, selector] of [['plots', '.fspm-boxplots'], ['sweeps', '.fspm-sweeps'], ['trees', '.fspm-trees'], ['pairs', '.fspm-pairs']]) {
     const found = await page.evaluate((sel) => {
       const e = document.querySelector(sel);
       if (!e) return false;
