@@ -1,6 +1,9 @@
 #include "cli/html_report_trees.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -35,9 +38,20 @@ graphics::MeshOptions web_mesh_options() {
   return options;
 }
 
+// `v` rounded to `bits` bits of mantissa (of a float's 23): trailing zero bits let gzip shrink
+// the mesh by a third; 12 bits keep positions to 0.025 % of their size (2.5 mm at 10 m).
+float round_mantissa(float v, int bits) {
+  const int drop = 23 - bits;
+  std::uint32_t u = std::bit_cast<std::uint32_t>(v);
+  u = (u + (std::uint32_t{1} << (drop - 1))) & ~((std::uint32_t{1} << drop) - 1);
+  const float rounded = std::bit_cast<float>(u);
+  return std::isfinite(rounded) ? rounded : v;
+}
+
 // Keeps what the page shows: positions, the attributes a reader may colour by (age, order and the
 // tree's own, such as light) and the materials. Normals (the page shades flat) and texture
-// coordinates go, as do birth_time and physiological_age (age and order say the same).
+// coordinates go, as do birth_time and physiological_age (age and order say the same); numbers
+// are rounded (round_mantissa).
 void lighten_for_web(graphics::TriangleMesh& mesh) {
   mesh.normals.clear();
   mesh.uvs.clear();
@@ -45,6 +59,13 @@ void lighten_for_web(graphics::TriangleMesh& mesh) {
     return a.name == graphics::kAttributeBirthTime ||
            a.name == graphics::kAttributePhysiologicalAge;
   });
+  for (Eigen::Vector3f& p : mesh.positions) {
+    for (int i = 0; i < 3; ++i) p[i] = round_mantissa(p[i], 12);
+  }
+  // Colours need even less: 10 bits are 0.1 % of the value.
+  for (graphics::VertexAttribute& a : mesh.attributes) {
+    for (float& v : a.values) v = round_mantissa(v, 10);
+  }
 }
 
 // Writes trees/<stem>.js for the run (once) and records it in `out.files`; false with a note when

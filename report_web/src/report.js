@@ -201,12 +201,12 @@
         const traces = D.comparisons.map((c) => {
           const idx = P.comparison.map((x, i) => (x === c && P.group[i] === g ? i : -1)).filter((i) => i >= 0);
           return { type: 'box', name: `${c} (n = ${idx.length})`, y: idx.map((i) => P.distance[i]),
-            boxpoints: 'all', jitter: 0.5, pointpos: 0, marker: { size: 4, opacity: 0.6 },
+            boxpoints: 'all', jitter: 0.5, pointpos: 0, fillcolor: 'rgba(255,255,255,0)', marker: { size: 6, opacity: 0.75 },
             hovertext: idx.map((i) => `pair of ${c}: distance ${fmt(P.distance[i])}<br>` +
               `<b>A</b> ${runText(P.run_a[i])}<br><b>B</b> ${runText(P.run_b[i])}`),
             hoverinfo: 'text+name' };
         }).filter((t) => t.y.length > 0);
-        return plot(div, traces, { title: { text: g }, yaxis: { title: { text: 'edit distance' } }, height: 420 });
+        return plot(div, traces, { title: { text: g }, yaxis: { title: { text: 'edit distance' } } });
       });
     }
   }
