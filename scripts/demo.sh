@@ -3,7 +3,7 @@
 # a small version of Pirk's adapted-versus-grown experiment through the experiment runner (grow,
 # adapt, compare, t-test, report), a parameter sweep of an L-system tree (results in SQLite and
 # CSV), a GreenLab plant simulated and reconstructed at three ages, and a mesh of one tree.
-# It ends by saying where the report is.
+# It ends by saying where the reports are (Markdown and HTML).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # ccache keys on paths relative to the checkout, so a fresh clone elsewhere (CI) reuses the cache.
@@ -20,20 +20,21 @@ fspm=build/bin/fspm
 
 echo "== adapted versus grown (Pirk 4.5.4), small version: 8 trees per type, age and set"
 $fspm run experiments/adapted_vs_grown.toml --replicates 8 --out "$out/adapted_vs_grown" --jobs "$(nproc)"
-# Figures need an X display (VTK); without one, xvfb-run provides it.
+# Figures need an X display (VTK); without one, xvfb-run provides it. --html: the interactive
+# report beside report.md (report/index.html).
 if [ -n "${DISPLAY:-}" ]; then
-  $fspm report "$out/adapted_vs_grown"
+  $fspm report "$out/adapted_vs_grown" --html
 elif command -v xvfb-run > /dev/null; then
-  xvfb-run -a $fspm report "$out/adapted_vs_grown"
+  xvfb-run -a $fspm report "$out/adapted_vs_grown" --html
 else
-  $fspm report "$out/adapted_vs_grown" --no-figures
+  $fspm report "$out/adapted_vs_grown" --no-figures --html
 fi
 
 echo "== parameter sweep: Honda's monopodial tree (ABOP fig. 2.6), 36 runs"
 $fspm run examples/experiments/branching.toml --out "$out/branching" --jobs "$(nproc)"
 $fspm results show "$out/branching"
 $fspm results export "$out/branching" --csv -o "$out/branching/results.csv"
-$fspm report "$out/branching"
+$fspm report "$out/branching" --html
 
 echo "== an L-system tree"
 $fspm lsystem interpret examples/lsystems/monopodial_tree.l -o "$out/monopodial.tree"
@@ -52,3 +53,4 @@ $fspm mesh "$out/monopodial.tree" -o "$out/monopodial.glb" --json
 echo
 echo "demo output is in $(pwd)/$out"
 echo "report: $(pwd)/$out/adapted_vs_grown/report.md (sweep: $out/branching/report.md)"
+echo "HTML report: $(pwd)/$out/adapted_vs_grown/report/index.html (sweep: $out/branching/report/index.html)"

@@ -93,6 +93,13 @@ TEST(RenderSelection, BadReportKeysNameTheirLine) {
   EXPECT_THROW(experiment("[report]\nrender = 2\n"), ValueError);
 }
 
+TEST(RenderSelection, ReportHtmlIsTrueOrFalse) {
+  EXPECT_FALSE(experiment("").report_html);
+  EXPECT_TRUE(experiment("[report]\nhtml = true\n").report_html);
+  EXPECT_FALSE(experiment("[report]\nhtml = false\n").report_html);
+  EXPECT_THROW(experiment("[report]\nhtml = 1\n"), ValueError);
+}
+
 TEST(RenderSelection, TheTreeComesFromTheKeptFileElseFromTheModel) {
   const auto dir = testing::scratch("render_tree");
   const Experiment x = experiment("");
