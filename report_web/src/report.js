@@ -271,7 +271,8 @@
       const colours = new Float32Array(3 * a.count);
       for (let i = 0; i < a.count; i++) colours.set(viridis(hi > lo ? (a.getX(i) - lo) / (hi - lo) : 0.5), 3 * i);
       m.geometry.setAttribute('color', new THREE.BufferAttribute(colours, 3));
-      m.material = new THREE.MeshStandardMaterial({ vertexColors: true, side: THREE.DoubleSide, roughness: 0.8 });
+      // Flat shading: the trees come without normals (docs/experiments.md).
+      m.material = new THREE.MeshStandardMaterial({ vertexColors: true, side: THREE.DoubleSide, roughness: 0.8, flatShading: true });
     });
     view.legend.textContent = attribute && lo <= hi
       ? `${attribute.replace(/^_/, '')}: ${fmt(lo)} (dark violet) to ${fmt(hi)} (yellow)` : '';

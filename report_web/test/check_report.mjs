@@ -31,10 +31,11 @@ try {
   await page.waitForFunction(() => typeof window.fspmDrawAll === 'function', { timeout: 60000 });
   await page.evaluate(() => window.fspmDrawAll());
 
-  // The share of a screenshot's pixels that are not (near) white, measured in the page itself.
-  async function inkShare(handle) {
+  // The share of a screenshot's pixels that are not (near) white, or with `colourful` the share
+  // of clearly coloured ones (max - min channel > 60), measured in the page itself.
+  async function inkShare(handle, colourful = false) {
     const png = await handle.screenshot({ encoding: 'base64' });
-    return page.evaluate(async (data) => {
+    return page.evaluate(async (data, colourful) => {
       const img = new Image();
       img.src = 'data:image/png;base64,' + data;
       await img.decode();
@@ -44,9 +45,12 @@ try {
       g.drawImage(img, 0, 0);
       const px = g.getImageData(0, 0, c.width, c.height).data;
       let ink = 0;
-      for (let i = 0; i < px.length; i += 4) if (px[i] + px[i + 1] + px[i + 2] < 3 * 235) ink++;
+      for (let i = 0; i < px.length; i += 4) {
+        const [r, g, b] = [px[i], px[i + 1], px[i + 2]];
+        if (colourful ? Math.max(r, g, b) - Math.min(r, g, b) > 60 : r + g + b < 3 * 235) ink++;
+      }
       return ink / (px.length / 4);
-    }, png);
+    }, png, colourful);
   }
 
   const plots = await page.$$('.fspm-plot');
@@ -79,6 +83,7 @@ try {
     });
     if (!attribute) fail('no attribute to colour the first tree by');
     else if ((await views[0].screenshot({ encoding: 'base64' })) === before) fail(`colouring by ${attribute} changed nothing`);
+    else if ((await inkShare(views[0], true)) < 0.02) fail(`colouring by ${attribute} left the tree without colours`);
   }
 
   // Sorting: a click on a numeric column's header puts its rows in order, and changes the order.
