@@ -48,7 +48,7 @@ std::string trees_markdown(const ex::Experiment& x, const HtmlTrees& trees) {
   if (!trees.pair_views.empty()) {
     md +=
         "\n## Pairs side by side\n\nFor each comparison, the pair of runs at the median "
-        "distance over all its groups, with that distance. " +
+        "distance over all its groups, with that distance, the two views at one scale. " +
         how + "\n\n<div class=\"fspm-pairs\"></div>\n";
   }
   return md + ex::notes_markdown(trees.notes);

@@ -274,12 +274,16 @@
       // Flat shading: the trees come without normals (docs/experiments.md).
       m.material = new THREE.MeshStandardMaterial({ vertexColors: true, side: THREE.DoubleSide, roughness: 0.8, flatShading: true });
     });
-    view.legend.textContent = attribute && lo <= hi
-      ? `${attribute.replace(/^_/, '')}: ${fmt(lo)} (dark violet) to ${fmt(hi)} (yellow)` : '';
+    const name = attribute.replace(/^_/, '');
+    view.legend.textContent = !attribute || lo > hi ? ''
+      : lo === hi ? `${name}: ${fmt(lo)} everywhere`
+        : `${name}: ${fmt(lo)} (dark violet) to ${fmt(hi)} (yellow)`;
     view.render();
   }
 
-  function treeView(host, run, caption) {
+  // `shared` (optional): views framed alike, at the size of the largest of them, so that the two
+  // trees of a pair compare in size.
+  function treeView(host, run, caption, shared) {
     const canvas = el('canvas', { class: 'fspm-canvas', width: 380, height: 380 });
     const select = el('select', { class: 'fspm-colour' }, [el('option', { value: '', text: 'colours: bark, leaves, obstacles' })]);
     const legend = el('div', { class: 'fspm-legend' });
@@ -304,15 +308,28 @@
       const names = new Set();
       meshes.forEach((m) => Object.keys(m.geometry.attributes).filter((a) => a.startsWith('_')).forEach((a) => names.add(a)));
       names.forEach((a) => select.appendChild(el('option', { value: a, text: `colour by ${a.replace(/^_/, '')}` })));
-      const bounds = new THREE.Box3().setFromObject(gltf.scene);
+      // Framed on the tree: the obstacles near it may reach far beyond.
+      const bounds = new THREE.Box3();
+      meshes.filter((m) => !isObstacle(m)).forEach((m) => bounds.expandByObject(m));
+      if (bounds.isEmpty()) bounds.setFromObject(gltf.scene);
       const centre = bounds.getCenter(new THREE.Vector3());
-      const size = bounds.getSize(new THREE.Vector3()).length() || 1;
+      const extent = bounds.getSize(new THREE.Vector3());
+      const size = extent.length() || 1;
+      // The distance at which the box fills the view (height and width) with a margin.
+      const tan = Math.tan(THREE.MathUtils.degToRad(35 / 2));
+      const fit = 1.1 * Math.max(extent.z / 2 / tan, extent.x / 2 / (tan * canvas.width / canvas.height)) +
+        extent.y / 2 || 1;
       const camera = new THREE.PerspectiveCamera(35, canvas.width / canvas.height, size / 1000, size * 100);
       camera.up.set(0, 0, 1); // fspm's trees grow along +z
-      camera.position.copy(centre).add(new THREE.Vector3(0, -1.25 * size, 0.3 * size));
       const controls = new THREE.OrbitControls(camera, canvas);
-      controls.target.copy(centre);
-      controls.update();
+      const frame = (d) => {
+        camera.position.copy(centre).add(new THREE.Vector3(0, -d, 0.2 * d));
+        camera.far = d * 100;
+        camera.updateProjectionMatrix();
+        controls.target.copy(centre);
+        controls.update();
+      };
+      frame(fit);
       const context = canvas.getContext('2d');
       const view = { meshes, legend, render() {
         const r = sharedRenderer();
@@ -323,6 +340,11 @@
       controls.addEventListener('change', () => view.render());
       select.addEventListener('change', () => colourBy(view, select.value));
       view.render();
+      if (shared) {
+        shared.size = Math.max(shared.size || 0, fit);
+        shared.frames.push(frame);
+        shared.frames.forEach((f) => f(shared.size)); // each change renders its view
+      }
     });
   }
 
@@ -337,8 +359,9 @@
       host.appendChild(el('h4', { text: `${p.comparison}, ${p.group}: distance ${fmt(p.distance)}` }));
       const grid = el('div', { class: 'fspm-grid fspm-pair' });
       host.appendChild(grid);
-      treeView(grid, p.run_a, `A: ${runText(p.run_a).replace(/<br>/g, ', ')}`);
-      treeView(grid, p.run_b, `B: ${runText(p.run_b).replace(/<br>/g, ', ')}`);
+      const shared = { frames: [] };
+      treeView(grid, p.run_a, `A: ${runText(p.run_a).replace(/<br>/g, ', ')}`, shared);
+      treeView(grid, p.run_b, `B: ${runText(p.run_b).replace(/<br>/g, ', ')}`, shared);
     }
   }
 

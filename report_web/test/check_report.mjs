@@ -32,7 +32,7 @@ try {
   await page.evaluate(() => window.fspmDrawAll());
 
   // The share of a screenshot's pixels that are not (near) white, or with `colourful` the share
-  // of clearly coloured ones (max - min channel > 60), measured in the page itself.
+  // of clearly coloured ones (max - min channel > 40), measured in the page itself.
   async function inkShare(handle, colourful = false) {
     const png = await handle.screenshot({ encoding: 'base64' });
     return page.evaluate(async (data, colourful) => {
@@ -47,7 +47,7 @@ try {
       let ink = 0;
       for (let i = 0; i < px.length; i += 4) {
         const [r, g, b] = [px[i], px[i + 1], px[i + 2]];
-        if (colourful ? Math.max(r, g, b) - Math.min(r, g, b) > 60 : r + g + b < 3 * 235) ink++;
+        if (colourful ? Math.max(r, g, b) - Math.min(r, g, b) > 40 : r + g + b < 3 * 235) ink++;
       }
       return ink / (px.length / 4);
     }, png, colourful);
@@ -65,17 +65,19 @@ try {
   }
   for (const [i, v] of views.entries()) {
     await v.scrollIntoView();
-    // A tree covers more than a sliver of its view.
+    // Even a leafless L-system tree covers more than a sliver of its view; a blank one is white.
     const share = await inkShare(v);
-    if (share < 0.02) fail(`3D view ${i} looks blank (${(100 * share).toFixed(2)} % ink)`);
+    if (share < 0.005) fail(`3D view ${i} looks blank (${(100 * share).toFixed(2)} % ink)`);
   }
 
-  // Colouring by an attribute repaints the first view.
+  // Colouring by an attribute (order: it varies in every branched tree) repaints the first view.
   if (views.length > 0) {
     const before = await views[0].screenshot({ encoding: 'base64' });
+    const ink = await inkShare(views[0]);
     const attribute = await page.evaluate(() => {
       const select = document.querySelector('.fspm-tree select');
-      const option = Array.from(select.options).find((o) => o.value);
+      const options = Array.from(select.options);
+      const option = options.find((o) => o.value === '_order') || options.find((o) => o.value);
       if (!option) return null;
       select.value = option.value;
       select.dispatchEvent(new Event('change'));
@@ -83,7 +85,7 @@ try {
     });
     if (!attribute) fail('no attribute to colour the first tree by');
     else if ((await views[0].screenshot({ encoding: 'base64' })) === before) fail(`colouring by ${attribute} changed nothing`);
-    else if ((await inkShare(views[0], true)) < 0.02) fail(`colouring by ${attribute} left the tree without colours`);
+    else if ((await inkShare(views[0], true)) < 0.2 * ink) fail(`colouring by ${attribute} left the tree without colours`);
   }
 
   // Sorting: a click on a numeric column's header puts its rows in order, and changes the order.
