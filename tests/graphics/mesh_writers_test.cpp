@@ -265,6 +265,28 @@ TEST_F(MeshWriters, ByExtensionAndBadPaths) {
   EXPECT_TRUE(fs::exists(path("t.ply")));
 }
 
+// glTF 2.0 (section 3.7.2.1) makes NORMAL and TEXCOORD_0 optional: a mesh without them (as the
+// HTML report writes its trees) leaves them out, and the file still adds up: the binary chunk
+// holds exactly the accessors' bytes.
+TEST_F(MeshWriters, GlbWithoutNormalsAndUvsLeavesThemOut) {
+  TriangleMesh bare = mesh_;
+  bare.normals.clear();
+  bare.uvs.clear();
+  write_glb(bare, path("bare.glb"));
+  const std::string data = slurp(path("bare.glb"));
+  EXPECT_EQ(u32_at(data, 8), data.size());
+  const std::uint32_t json_len = u32_at(data, 12);
+  const auto doc = nlohmann::json::parse(data.substr(20, json_len));
+  const auto& attributes = doc["meshes"][0]["primitives"][0]["attributes"];
+  EXPECT_TRUE(attributes.contains("POSITION"));
+  EXPECT_FALSE(attributes.contains("NORMAL"));
+  EXPECT_FALSE(attributes.contains("TEXCOORD_0"));
+  // Positions (12 bytes) and each attribute (4 bytes) per vertex, 4 bytes per index.
+  const std::size_t nv = bare.vertex_count();
+  const std::size_t expected = nv * (12 + 4 * bare.attributes.size()) + 12 * bare.triangle_count();
+  EXPECT_EQ(doc["buffers"][0]["byteLength"].get<std::size_t>(), expected);
+}
+
 TEST_F(MeshWriters, EmptyMeshGlbIsValid) {
   write_glb(TriangleMesh{}, path("empty.glb"));
   const std::string data = slurp(path("empty.glb"));
