@@ -12,9 +12,9 @@ packages=(
   libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev
   # graphics (optional parts: VTK renders, the viewer, image output)
   libvtk9-dev libopenimageio-dev openimageio-tools python3-imath libglfw3-dev libgl-dev libglx-mesa0 libgl1-mesa-dri xvfb xauth
-  # HTML report (fspm report --html): zlib gzips its trees; node and npm install its browser
-  # libraries from the npm registry at build time (report_web/); chromium checks it in tests
-  zlib1g-dev nodejs npm chromium
+  # HTML report (fspm report --html): zlib gzips its trees; chromium checks it in tests (node and
+  # npm, which install its browser libraries from the npm registry at build time, see below)
+  zlib1g-dev chromium
   # distributed runs
   libopenmpi-dev openmpi-bin
   # Python module, tests and notebooks (Debian's python3 only)
@@ -29,6 +29,12 @@ for p in "${packages[@]}"; do
     missing+=("$p")
   fi
 done
+
+# node and npm by command, not by package: a machine may have Node.js from another source (whose
+# nodejs package conflicts with Debian's npm); Debian's are installed only when either is missing.
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+  missing+=(nodejs npm)
+fi
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "deps: all ${#packages[@]} packages present"
