@@ -1,0 +1,23 @@
+#pragma once
+// The .clusters file: a compact little-endian binary form of a ClusterModel (layout in
+// docs/formats.md). Skeleton positions and radii are 32-bit floats; hull vertices are 16-bit
+// integers inside the hull's bounding box (error below 1/65535 of the box side). Writing is atomic.
+#include <string>
+#include <string_view>
+
+#include "scans/cluster_model.hpp"
+
+namespace fspm::scans {
+
+inline constexpr std::string_view kClustersMagic = "FSPMCLU1";
+
+// Throws ValueError for a model the format cannot hold (more than 65535 vertices or triangles in
+// one hull, a species name over 255 bytes, an empty skeleton), IoError when writing fails.
+void write_clusters_file(const ClusterModel& model, const std::string& path);
+std::string clusters_bytes(const ClusterModel& model);
+
+// Throws ParseError naming the file and the byte offset of what is wrong.
+ClusterModel read_clusters_file(const std::string& path);
+ClusterModel parse_clusters_bytes(std::string_view data, const std::string& path);
+
+}  // namespace fspm::scans

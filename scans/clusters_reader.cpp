@@ -1,0 +1,92 @@
+// Reading the .clusters file (the declarations are in clusters_file.hpp).
+#include <cmath>
+
+#include "fspm/error.hpp"
+#include "scans/byte_io.hpp"
+#include "scans/clusters_file.hpp"
+
+namespace fspm::scans {
+namespace {
+
+Eigen::Vector3d get_vector(ByteReader& r, const char* what) {
+  const std::size_t at = r.offset();
+  Eigen::Vector3d v;
+  for (int c = 0; c < 3; ++c) v[c] = r.get<float>(what);
+  if (!v.allFinite()) r.fail(std::string("a nan or infinite ") + what, at);
+  return v;
+}
+
+void read_skeleton(ByteReader& r, ClusterModel& m) {
+  const std::size_t count_at = r.offset();
+  const std::uint32_t n = r.get<std::uint32_t>("the skeleton node count");
+  if (n == 0) r.fail("the skeleton has no node, expected at least the root", count_at);
+  const Eigen::Vector3d root_start = get_vector(r, "the root start");
+  m.skeleton.reserve(n);
+  for (std::uint32_t u = 0; u < n; ++u) {
+    const std::size_t at = r.offset();
+    const std::uint32_t parent = r.get<std::uint32_t>("a skeleton node's parent");
+    if ((u == 0) != (parent == 0xFFFFFFFFu) || (u > 0 && parent >= u)) {
+      r.fail("node " + std::to_string(u) + " has parent " + std::to_string(parent) +
+                 ", expected an earlier node (none for node 0)",
+             at);
+    }
+    NodeData d;
+    d.start = u == 0 ? root_start : m.skeleton.end(parent);
+    d.end = get_vector(r, "a skeleton node's position");
+    const float radius = r.get<float>("a skeleton node's radius");
+    if (!(radius >= 0.0f) || !std::isfinite(radius)) r.fail("a negative or nan radius", at + 16);
+    d.radius = radius;
+    m.skeleton.add_node(u == 0 ? kNoNode : parent, d);
+  }
+}
+
+ClusterHull read_hull(ByteReader& r, std::size_t nodes) {
+  ClusterHull h;
+  const std::size_t at = r.offset();
+  h.seed_node = r.get<std::uint32_t>("a cluster's seed node");
+  if (h.seed_node >= nodes) r.fail("the seed node is not a skeleton node", at);
+  h.point_count = r.get<std::uint32_t>("a cluster's point count");
+  const Eigen::Vector3d lo = get_vector(r, "a cluster's box");
+  const Eigen::Vector3d side = get_vector(r, "a cluster's box") - lo;
+  const std::uint16_t vertices = r.get<std::uint16_t>("a cluster's vertex count");
+  const std::uint16_t triangles = r.get<std::uint16_t>("a cluster's triangle count");
+  for (std::uint16_t k = 0; k < vertices; ++k) {
+    Eigen::Vector3d v;
+    for (int c = 0; c < 3; ++c) v[c] = lo[c] + side[c] * r.get<std::uint16_t>("a vertex") / 65535.0;
+    h.vertices.push_back(v);
+  }
+  for (std::uint16_t k = 0; k < triangles; ++k) {
+    const std::size_t tri_at = r.offset();
+    std::array<std::uint32_t, 3> t{};
+    for (std::uint32_t& i : t) i = r.get<std::uint16_t>("a triangle");
+    if (t[0] >= vertices || t[1] >= vertices || t[2] >= vertices) {
+      r.fail("a triangle refers to a vertex beyond the " + std::to_string(vertices), tri_at);
+    }
+    h.triangles.push_back(t);
+  }
+  return h;
+}
+
+}  // namespace
+
+ClusterModel parse_clusters_bytes(std::string_view data, const std::string& path) {
+  ByteReader r(data, path);
+  if (r.get_bytes(std::min(data.size(), kClustersMagic.size()), "the magic") != kClustersMagic) {
+    r.fail("not a .clusters file, expected it to start with FSPMCLU1", 0);
+  }
+  ClusterModel m;
+  const std::uint8_t name_length = r.get<std::uint8_t>("the species name length");
+  m.species = std::string(r.get_bytes(name_length, "the species name"));
+  m.beta = r.get<float>("beta");
+  m.gamma = r.get<float>("gamma");
+  m.f_s = r.get<float>("f_s");
+  m.root_diameter_m = r.get<float>("the root diameter");
+  read_skeleton(r, m);
+  const std::uint32_t clusters = r.get<std::uint32_t>("the cluster count");
+  for (std::uint32_t k = 0; k < clusters; ++k)
+    m.clusters.push_back(read_hull(r, m.skeleton.size()));
+  if (!r.at_end()) r.fail("unexpected data after the last cluster", r.offset());
+  return m;
+}
+
+}  // namespace fspm::scans

@@ -1,0 +1,34 @@
+#pragma once
+// Encoding a point set into the cluster-based representation (Pirk sec. 3.3): neighbour graph
+// with weights |u - v|^beta, shortest-path tree from the lowest point, skeleton nodes by path
+// length, radii of eq. 3.1, main skeleton and clusters by eq. 3.2, alpha-shape hulls.
+#include <optional>
+
+#include "scans/alpha_hull.hpp"
+#include "scans/cluster_model.hpp"
+#include "scans/point_set.hpp"
+#include "scans/species.hpp"
+
+namespace fspm::scans {
+
+struct EncodeOptions {
+  SpeciesParameters species = default_species();
+  int neighbours = 8;                     // k of the neighbour graph
+  double bin_length_m = 0.0;              // 0: default_bin_length_m
+  std::optional<double> root_diameter_m;  // d_root of eq. 3.1; estimated from the trunk if unset
+  double trunk_height_m = 1.3;            // trunk points for the estimate: up to this height
+  AlphaHullOptions hull;
+};
+
+struct EncodeResult {
+  ClusterModel model;
+  TreeGraph full_skeleton;  // every skeleton node, radii of eq. 3.1, before the cluster split
+  std::size_t points = 0;
+  std::size_t bridges = 0;  // edges added to join pieces the neighbour graph left apart
+};
+
+// Throws ValueError for an empty point set, bad parameters, or when no root diameter is given
+// and none can be estimated from the trunk.
+EncodeResult encode_point_set(const PointSet& points, const EncodeOptions& options = {});
+
+}  // namespace fspm::scans

@@ -1,0 +1,115 @@
+#include "scans/neighbour_graph.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "fspm/error.hpp"
+#include "scans/point_kd_tree.hpp"
+
+namespace fspm::scans {
+namespace {
+
+struct DisjointSets {
+  std::vector<std::uint32_t> parent;
+  explicit DisjointSets(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+  std::uint32_t find(std::uint32_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  }
+  void join(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
+};
+
+// k nearest neighbours of every point (itself excluded), row-major n x k.
+std::vector<std::uint32_t> nearest_neighbours(const PointSet& ps, int k) {
+  const std::size_t n = ps.points.size();
+  const std::size_t kk = static_cast<std::size_t>(k);
+  PointCloudAdaptor adaptor{&ps.points};
+  PointKdTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  tree.buildIndex();
+  std::vector<std::uint32_t> knn(n * kk);
+  std::vector<std::uint32_t> idx(kk + 1);
+  std::vector<double> dist(kk + 1);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t found = tree.knnSearch(ps.points[i].data(), kk + 1, idx.data(), dist.data());
+    std::size_t out = 0;
+    for (std::size_t j = 0; j < found && out < kk; ++j) {
+      if (idx[j] != i) knn[i * kk + out++] = idx[j];
+    }
+    for (; out < kk; ++out) knn[i * kk + out] = static_cast<std::uint32_t>(i);  // self: no edge
+  }
+  return knn;
+}
+
+// Shortest edges joining every other piece to the piece of `root`.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> bridges(const PointSet& ps, DisjointSets& sets,
+                                                             std::uint32_t root) {
+  const std::uint32_t root_set = sets.find(root);
+  std::vector<std::uint32_t> main;
+  std::vector<std::uint32_t> other;
+  for (std::uint32_t i = 0; i < ps.points.size(); ++i) {
+    (sets.find(i) == root_set ? main : other).push_back(i);
+  }
+  if (other.empty()) return {};
+  PointCloudAdaptor adaptor{&ps.points, &main};
+  PointKdTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  tree.buildIndex();
+  // Per piece: the point nearest to the main piece and its partner there.
+  std::vector<std::pair<double, std::pair<std::uint32_t, std::uint32_t>>> best(
+      ps.points.size(), {std::numeric_limits<double>::infinity(), {0, 0}});
+  for (std::uint32_t i : other) {
+    std::uint32_t j = 0;
+    double d2 = 0.0;
+    tree.knnSearch(ps.points[i].data(), 1, &j, &d2);
+    auto& b = best[sets.find(i)];
+    if (d2 < b.first) b = {d2, {i, main[j]}};
+  }
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
+  for (const auto& b : best) {
+    if (std::isfinite(b.first)) out.push_back(b.second);
+  }
+  return out;
+}
+
+}  // namespace
+
+NeighbourGraph build_neighbour_graph(const PointSet& ps, int k, double beta, std::uint32_t root) {
+  const std::size_t n = ps.points.size();
+  if (n == 0) throw ValueError("the point set is empty");
+  if (k < 1) throw ValueError("the neighbour count k must be at least 1");
+  const std::size_t kk = static_cast<std::size_t>(k);
+  const std::vector<std::uint32_t> knn = nearest_neighbours(ps, k);
+  DisjointSets sets(n);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;  // one direction each
+  edges.reserve(n * kk);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    for (std::size_t a = 0; a < kk; ++a) {
+      const std::uint32_t j = knn[i * kk + a];
+      if (j == i) continue;
+      // Mutual neighbours: keep the pair once, from the smaller index.
+      const auto row = knn.begin() + static_cast<std::ptrdiff_t>(j * kk);
+      if (j < i && std::find(row, row + static_cast<std::ptrdiff_t>(kk), i) != row + kk) continue;
+      edges.emplace_back(i, j);
+      sets.join(i, j);
+    }
+  }
+  NeighbourGraph g;
+  const auto joins = bridges(ps, sets, root);
+  g.bridges = joins.size();
+  edges.insert(edges.end(), joins.begin(), joins.end());
+  g.offset.assign(n + 1, 0);
+  for (const auto& [a, b] : edges) ++g.offset[a + 1], ++g.offset[b + 1];
+  std::partial_sum(g.offset.begin(), g.offset.end(), g.offset.begin());
+  g.target.resize(g.offset[n]);
+  g.weight.resize(g.offset[n]);
+  std::vector<std::uint32_t> fill(g.offset.begin(), g.offset.end() - 1);
+  for (const auto& [a, b] : edges) {
+    const float w = static_cast<float>(std::pow((ps.points[a] - ps.points[b]).norm(), beta));
+    g.target[fill[a]] = b, g.weight[fill[a]++] = w;
+    g.target[fill[b]] = a, g.weight[fill[b]++] = w;
+  }
+  return g;
+}
+
+}  // namespace fspm::scans

@@ -1,0 +1,28 @@
+#include "scans/point_set_file.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+#include "fspm/error.hpp"
+#include "scans/obj_reader.hpp"
+#include "scans/pcd_reader.hpp"
+#include "scans/ply_reader.hpp"
+#include "scans/xyz_reader.hpp"
+
+namespace fspm::scans {
+
+PointSet read_point_set(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == ".ply") return read_ply_points(path);
+  if (ext == ".xyz" || ext == ".txt" || ext == ".csv") return read_xyz_points(path);
+  if (ext == ".pcd") return read_pcd_points(path);
+  if (ext == ".obj") return PointSet{read_obj_mesh(path).vertices};
+  throw ValueError(
+      "unknown point-set extension '" + ext + "', expected .ply, .xyz, .txt, .csv, .pcd or .obj",
+      path);
+}
+
+}  // namespace fspm::scans

@@ -1,0 +1,12 @@
+#pragma once
+// Reading a point set by file extension: .ply, .xyz/.txt/.csv, .pcd, and .obj (the mesh's
+// vertices). Throws ValueError for another extension.
+#include <string>
+
+#include "scans/point_set.hpp"
+
+namespace fspm::scans {
+
+PointSet read_point_set(const std::string& path);
+
+}  // namespace fspm::scans
