@@ -5,6 +5,7 @@
 #include <CGAL/Alpha_shape_vertex_base_3.h>
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,7 @@
 #include "scans/cluster_split.hpp"
 
+#include <Eigen/Geometry>
+
 #include "fspm/error.hpp"
 
 namespace fspm::scans {

@@ -1,0 +1,159 @@
+// Point-set and mesh readers: values from hand-written files, errors naming line or byte.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "fspm/error.hpp"
+#include "scans/obj_reader.hpp"
+#include "scans/pcd_reader.hpp"
+#include "scans/ply_reader.hpp"
+#include "scans/point_set_file.hpp"
+#include "scans/xyz_reader.hpp"
+
+namespace fspm::scans {
+namespace {
+
+std::string temp_file(const std::string& name, const std::string& content) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("fspm_scans_" + std::to_string(::getpid()) + "_" + name);
+  std::ofstream(path, std::ios::binary) << content;
+  return path.string();
+}
+
+template <class T>
+void append(std::string& s, T v, bool big_endian = false) {
+  char b[sizeof(T)];
+  std::memcpy(b, &v, sizeof(T));
+  if (big_endian) std::reverse(b, b + sizeof(T));
+  s.append(b, sizeof(T));
+}
+
+TEST(PlyReader, AsciiWithFacesAndExtraProperties) {
+  const std::string text =
+      "ply\nformat ascii 1.0\ncomment test\nelement vertex 3\nproperty float nx\n"
+      "property float x\nproperty float y\nproperty float z\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n"
+      "9 1 2 3\n9 4 5 6\n9 -1 0.5 1e2\n3 0 1 2\n";
+  const PointSet ps = parse_ply_points(text, "a.ply");
+  ASSERT_EQ(ps.points.size(), 3u);
+  EXPECT_EQ(ps.points[0], Eigen::Vector3d(1, 2, 3));
+  EXPECT_EQ(ps.points[2], Eigen::Vector3d(-1, 0.5, 100));
+}
+
+TEST(PlyReader, BinaryLittleAndBigEndianGiveTheSamePoints) {
+  for (bool big : {false, true}) {
+    std::string data = std::string("ply\nformat ") +
+                       (big ? "binary_big_endian" : "binary_little_endian") +
+                       " 1.0\nelement vertex 2\nproperty double x\nproperty double y\n"
+                       "property double z\nproperty uchar red\nend_header\n";
+    for (double v : {1.5, -2.0, 3.25}) append(data, v, big);
+    append<std::uint8_t>(data, 7);
+    for (double v : {4.0, 5.0, 6.0}) append(data, v, big);
+    append<std::uint8_t>(data, 8);
+    const PointSet ps = parse_ply_points(data, "b.ply");
+    ASSERT_EQ(ps.points.size(), 2u);
+    EXPECT_EQ(ps.points[0], Eigen::Vector3d(1.5, -2.0, 3.25));
+    EXPECT_EQ(ps.points[1], Eigen::Vector3d(4, 5, 6));
+  }
+}
+
+TEST(PlyReader, TruncatedBinaryNamesTheByteOffset) {
+  std::string data =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty float x\n"
+      "property float y\nproperty float z\nend_header\n";
+  const std::size_t header = data.size();
+  for (float v : {1.0f, 2.0f, 3.0f, 4.0f}) append(data, v);
+  try {
+    parse_ply_points(data, "c.ply");
+    FAIL() << "expected a ParseError";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.file(), "c.ply");
+    EXPECT_NE(e.message().find("byte " + std::to_string(header + 16)), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(PlyReader, BadAsciiValueNamesTheLine) {
+  const std::string text =
+      "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
+      "property float z\nend_header\n1 2 3\n1 two 3\n";
+  try {
+    parse_ply_points(text, "d.ply");
+    FAIL() << "expected a ParseError";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 9);
+  }
+  EXPECT_THROW(parse_ply_points("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                                "end_header\n1\n",
+                                "e.ply"),
+               ParseError);
+}
+
+TEST(XyzReader, SpacesCommasCommentsAndHeader) {
+  const PointSet a = parse_xyz_points("# scan\n1 2 3 0.5\n\n4\t5\t6\n", "a.xyz");
+  ASSERT_EQ(a.points.size(), 2u);
+  EXPECT_EQ(a.points[1], Eigen::Vector3d(4, 5, 6));
+  const PointSet b = parse_xyz_points("intensity,X,Y,Z\n9,1,2,3\n9,4,5,6\n", "b.csv");
+  ASSERT_EQ(b.points.size(), 2u);
+  EXPECT_EQ(b.points[0], Eigen::Vector3d(1, 2, 3));
+  try {
+    parse_xyz_points("1 2 3\n4 5\n", "c.xyz");
+    FAIL() << "expected a ParseError";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 2);
+  }
+}
+
+TEST(PcdReader, AsciiAndBinary) {
+  const std::string head =
+      "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z rgb\nSIZE 4 4 4 4\nTYPE F F F U\nCOUNT 1 1 1 1\n"
+      "WIDTH 2\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 2\n";
+  const PointSet a = parse_pcd_points(head + "DATA ascii\n1 2 3 0\n4 5 6 0\n", "a.pcd");
+  ASSERT_EQ(a.points.size(), 2u);
+  EXPECT_EQ(a.points[1], Eigen::Vector3d(4, 5, 6));
+  std::string bin = head + "DATA binary\n";
+  for (float v : {1.f, 2.f, 3.f}) append(bin, v);
+  append<std::uint32_t>(bin, 0);
+  for (float v : {-1.f, -2.f, -3.f}) append(bin, v);
+  append<std::uint32_t>(bin, 0);
+  const PointSet b = parse_pcd_points(bin, "b.pcd");
+  ASSERT_EQ(b.points.size(), 2u);
+  EXPECT_EQ(b.points[1], Eigen::Vector3d(-1, -2, -3));
+  EXPECT_THROW(parse_pcd_points(head + "DATA binary_compressed\n", "c.pcd"), ParseError);
+  EXPECT_THROW(parse_pcd_points(head + "DATA ascii\n1 2 3 0\n", "d.pcd"), ParseError);
+}
+
+TEST(ObjReader, GroupsFacesAndNegativeIndices) {
+  const GroupedMesh m = parse_obj_mesh(
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\ng trunk_level0\nf 1//1 2//1 3//1\n"
+      "g branch_level1\nv 0 0 1\nf -4/1 -3/1 -1/1\n",
+      "t.obj");
+  ASSERT_EQ(m.vertices.size(), 4u);
+  ASSERT_EQ(m.faces.size(), 2u);
+  EXPECT_EQ(m.group_names[m.face_group[0]], "trunk_level0");
+  EXPECT_EQ(m.group_names[m.face_group[1]], "branch_level1");
+  EXPECT_EQ(m.faces[1], (std::vector<std::uint32_t>{0, 1, 3}));
+  try {
+    parse_obj_mesh("v 0 0 0\nv 1 0 0\nf 1 2 3\n", "u.obj");
+    FAIL() << "expected a ParseError";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 3);
+  }
+}
+
+TEST(PointSetFile, ChoosesTheReaderByExtension) {
+  const std::string xyz = temp_file("p.xyz", "1 2 3\n");
+  EXPECT_EQ(read_point_set(xyz).points.at(0), Eigen::Vector3d(1, 2, 3));
+  const std::string obj = temp_file("p.obj", "v 4 5 6\n");
+  EXPECT_EQ(read_point_set(obj).points.at(0), Eigen::Vector3d(4, 5, 6));
+  EXPECT_THROW(read_point_set(temp_file("p.las", "")), ValueError);
+  EXPECT_THROW(read_point_set("/nonexistent/fspm_scan.ply"), IoError);
+  std::filesystem::remove(xyz);
+  std::filesystem::remove(obj);
+}
+
+}  // namespace
+}  // namespace fspm::scans
