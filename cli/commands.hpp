@@ -15,6 +15,7 @@ void add_greenlab_commands(CLI::App& app);
 void add_evaluation_commands(CLI::App& app);
 void add_adapt_commands(CLI::App& app);
 void add_stages_commands(CLI::App& app);
+void add_scan_commands(CLI::App& app);
 void add_scene_commands(CLI::App& app);
 // fspm crown (fspm-full, built with OpenImageIO).
 void add_crown_commands(CLI::App& app);

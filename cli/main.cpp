@@ -46,6 +46,7 @@ int main(int argc, char** argv) {
   fspm::cli::add_evaluation_commands(app);
   fspm::cli::add_adapt_commands(app);
   fspm::cli::add_stages_commands(app);
+  fspm::cli::add_scan_commands(app);
   fspm::cli::add_scene_commands(app);
   fspm::cli::add_full_commands(app);
 

@@ -58,8 +58,12 @@ std::vector<Eigen::Vector3d> thin_to_grid(const std::vector<Eigen::Vector3d>& po
   std::map<std::array<std::int64_t, 3>, std::pair<Eigen::Vector3d, int>> cells;
   for (const Eigen::Vector3d& p : points) {
     const Eigen::Vector3d q = (p - lo) / cell;
-    auto& c = cells[{static_cast<std::int64_t>(q.x()), static_cast<std::int64_t>(q.y()),
-                     static_cast<std::int64_t>(q.z())}];
+    // try_emplace with a zero sum: a default Eigen vector would be uninitialized.
+    auto& c = cells
+                  .try_emplace({static_cast<std::int64_t>(q.x()), static_cast<std::int64_t>(q.y()),
+                                static_cast<std::int64_t>(q.z())},
+                               Eigen::Vector3d::Zero(), 0)
+                  .first->second;
     c.first += p;
     ++c.second;
   }

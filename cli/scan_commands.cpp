@@ -1,0 +1,166 @@
+// fspm encode | scan: trees from scans and meshes (Pirk sec. 3.3): a point set or tree model
+// encoded into the cluster-based representation, and simulated scans of known trees.
+#include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <random>
+
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
+#include "fspm/error.hpp"
+#include "fspm/tree_file.hpp"
+#include "scans/clusters_file.hpp"
+#include "scans/encoder.hpp"
+#include "scans/point_set_file.hpp"
+#include "scans/point_set_writer.hpp"
+#include "scans/scan_simulator.hpp"
+
+namespace fspm::cli {
+namespace {
+
+struct EncodeCommand {
+  std::string input;
+  std::string output;
+  std::string species = "default";
+  std::optional<double> beta, gamma, f_s, root_diameter_m, bin_length_m;
+  std::string skeleton;
+  int neighbours = 8;
+  std::uint64_t seed = 1;
+  bool json = false;
+};
+
+bool is_tree_file(const std::string& path) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  return ext == ".tree" || ext == ".treeb" || ext == ".nwk";
+}
+
+// A point set, or a tree model scanned as a laser scanner at four positions would see it.
+scans::PointSet load_input(const EncodeCommand& o) {
+  if (!is_tree_file(o.input)) return scans::read_point_set(o.input);
+  std::mt19937_64 rng(o.seed);
+  return scans::simulate_scan(read_tree_file(o.input), scans::ScanOptions{}, rng);
+}
+
+void run_encode(const EncodeCommand& o) {
+  refuse_overwriting_input(o.output, {o.input});
+  refuse_overwriting_input(o.skeleton, {o.input});
+  scans::EncodeOptions options;
+  options.species = scans::species_by_name(o.species);
+  if (o.beta) options.species.beta = *o.beta;
+  if (o.gamma) options.species.gamma = *o.gamma;
+  if (o.f_s) options.species.f_s = *o.f_s;
+  options.root_diameter_m = o.root_diameter_m;
+  options.bin_length_m = o.bin_length_m.value_or(0.0);
+  options.neighbours = o.neighbours;
+  const scans::PointSet points = load_input(o);
+  const auto t0 = std::chrono::steady_clock::now();
+  const scans::EncodeResult r = scans::encode_point_set(points, options);
+  const std::string bytes = scans::clusters_bytes(r.model);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  scans::write_clusters_file(r.model, o.output);
+  if (!o.skeleton.empty()) write_tree_file(r.model.skeleton, o.skeleton);
+  spdlog::info("{}: {} points -> {} skeleton nodes, {} clusters, {} bytes -> {}", o.input, r.points,
+               r.model.skeleton.size(), r.model.clusters.size(), bytes.size(), o.output);
+  if (o.json) {
+    print_json({{"points", r.points},
+                {"skeleton_nodes", r.model.skeleton.size()},
+                {"clusters", r.model.clusters.size()},
+                {"bytes", bytes.size()},
+                {"seconds", seconds},
+                {"root_diameter_m", r.model.root_diameter_m},
+                {"species", r.model.species},
+                {"beta", r.model.beta},
+                {"gamma", r.model.gamma},
+                {"f_s", r.model.f_s},
+                {"bridges", r.bridges},
+                {"output", o.output}});
+  }
+}
+
+void add_encode_command(CLI::App& app) {
+  auto o = std::make_shared<EncodeCommand>();
+  CLI::App* e = app.add_subcommand(
+      "encode",
+      "Cluster-based representation of a scanned tree (Pirk sec. 3.3): skeleton, radii, "
+      "leaf clusters");
+  e->add_option("INPUT", o->input,
+                "Point set (.ply, .xyz, .txt, .csv, .pcd), mesh (.obj: its vertices) or tree "
+                "model (.tree, .treeb, .nwk: scanned from four positions first)")
+      ->required();
+  e->add_option("-o,--output", o->output, "The .clusters file to write")->required();
+  e->add_option("--species", o->species, "Parameters of Pirk Table 3.1 (pine, willow, ...)");
+  e->add_option("--beta", o->beta, "Edge weight exponent |u-v|^beta")->check(positive_number(10));
+  e->add_option("--gamma", o->gamma, "Allometric exponent of eq. 3.1")->check(number_in(0, 10));
+  e->add_option("--fs", o->f_s, "Cluster factor f_s of eq. 3.2")->check(positive_number(10));
+  e->add_option("--root-diameter", o->root_diameter_m,
+                "Trunk diameter d_root in m (default: fitted to the trunk points)")
+      ->check(positive_number(100));
+  e->add_option("--bin-length", o->bin_length_m,
+                "Skeleton node spacing in m (default: 1/40 "
+                "of the longest path)")
+      ->check(positive_number(1000));
+  e->add_option("--neighbours", o->neighbours, "k of the neighbour graph")->check(number_in(1, 64));
+  e->add_option("--skeleton", o->skeleton, "Also write the main skeleton as a tree file");
+  e->add_option("--seed", o->seed, "Seed of the simulated scan of a tree model");
+  e->add_flag("--json", o->json,
+              "One JSON object on stdout: points, skeleton_nodes, clusters, bytes, seconds");
+  e->callback([o] { run_encode(*o); });
+}
+
+struct ScanCommand {
+  std::string tree;
+  std::string output;
+  scans::ScanOptions options;
+  double noise_mm = 3.0;
+  std::uint64_t seed = 1;
+  bool json = false;
+};
+
+void run_scan(const ScanCommand& o) {
+  refuse_overwriting_input(o.output, {o.tree});
+  scans::ScanOptions options = o.options;
+  options.range_noise_m = o.noise_mm / 1000.0;
+  std::mt19937_64 rng(o.seed);
+  const scans::PointSet points = scans::simulate_scan(read_tree_file(o.tree), options, rng);
+  scans::write_point_set(points, o.output);
+  spdlog::info("{}: {} points from {} scanner positions -> {}", o.tree, points.points.size(),
+               options.scanners, o.output);
+  if (o.json) print_json({{"points", points.points.size()}, {"output", o.output}});
+}
+
+void add_scan_command(CLI::App& app) {
+  auto o = std::make_shared<ScanCommand>();
+  CLI::App* s = app.add_subcommand(
+      "scan", "Simulated laser scan of a tree model: visible branch surfaces, range noise");
+  s->add_option("TREE", o->tree, "The tree (.tree, .treeb, .nwk)")->required();
+  s->add_option("-o,--output", o->output, "Point set to write (.ply or .xyz)")->required();
+  s->add_option("--scanners", o->options.scanners, "Scanner positions around the tree")
+      ->check(number_in(1, 64));
+  s->add_option("--density", o->options.density_per_m2,
+                "Points per m^2 at the scanner distance and normal incidence")
+      ->check(positive_number(1e8));
+  s->add_option("--noise-mm", o->noise_mm, "Standard deviation of the range error in mm")
+      ->check(number_in(0, 1000));
+  s->add_option("--min-radius", o->options.min_radius_m,
+                "Internodes thinner than this (m) are "
+                "not scanned")
+      ->check(number_in(0, 100));
+  s->add_option("--seed", o->seed, "Seed of the random generator");
+  s->add_flag("--json", o->json, "One JSON object on stdout: points, output");
+  s->callback([o] { run_scan(*o); });
+}
+
+}  // namespace
+
+void add_scan_commands(CLI::App& app) {
+  add_encode_command(app);
+  add_scan_command(app);
+}
+
+}  // namespace fspm::cli

@@ -1,0 +1,45 @@
+#include "scans/point_set_writer.hpp"
+
+#include <filesystem>
+#include <ostream>
+
+#include "fspm/atomic_file.hpp"
+#include "fspm/error.hpp"
+#include "fspm/number_text.hpp"
+
+namespace fspm::scans {
+
+void write_point_set(const PointSet& ps, const std::string& path) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext == ".ply") {
+    write_file_atomically(
+        path,
+        [&](std::ostream& out) {
+          out << "ply\nformat binary_little_endian 1.0\ncomment fspm point set\nelement vertex "
+              << ps.points.size()
+              << "\nproperty float x\nproperty float y\nproperty float z\nend_header\n";
+          for (const Eigen::Vector3d& p : ps.points) {
+            const float xyz[3] = {static_cast<float>(p.x()), static_cast<float>(p.y()),
+                                  static_cast<float>(p.z())};
+            out.write(reinterpret_cast<const char*>(xyz), sizeof xyz);
+          }
+        },
+        true);
+  } else if (ext == ".xyz") {
+    write_file_atomically(path, [&](std::ostream& out) {
+      std::string line;
+      for (const Eigen::Vector3d& p : ps.points) {
+        line.clear();
+        for (int c = 0; c < 3; ++c) {
+          append_number(line, p[c]);
+          line += c < 2 ? ' ' : '\n';
+        }
+        out << line;
+      }
+    });
+  } else {
+    throw ValueError("unknown point-set extension '" + ext + "', expected .ply or .xyz", path);
+  }
+}
+
+}  // namespace fspm::scans
