@@ -6,6 +6,9 @@
 #include "scans/neighbour_graph.hpp"
 #include "scans/point_skeleton.hpp"
 #include "scans/shortest_path_tree.hpp"
+#include "scans/voxel_thinning.hpp"
+
+#include <algorithm>
 
 namespace fspm::scans {
 namespace {
@@ -21,25 +24,39 @@ void check_options(const EncodeOptions& o) {
   if (!(o.bin_length_m >= 0.0)) throw ValueError("the bin length must not be negative");
 }
 
-std::vector<ClusterHull> hulls(const PointSet& ps, const std::vector<PointCluster>& clusters,
+std::vector<ClusterHull> hulls(const ThinnedPoints& thin, const std::vector<PointCluster>& clusters,
                                const AlphaHullOptions& options) {
+  const PointSet& ps = thin.points;
   std::vector<ClusterHull> out;
   std::vector<Eigen::Vector3d> pts;
   for (const PointCluster& c : clusters) {
     pts.clear();
-    for (std::uint32_t i : c.points) pts.push_back(ps.points[i]);
+    std::uint32_t count = 0;
+    for (std::uint32_t i : c.points) pts.push_back(ps.points[i]), count += thin.counts[i];
     AlphaHull h = alpha_hull(pts, options);
-    out.push_back({c.seed_node, static_cast<std::uint32_t>(c.points.size()), std::move(h.vertices),
-                   std::move(h.triangles)});
+    out.push_back({c.seed_node, count, std::move(h.vertices), std::move(h.triangles)});
   }
   return out;
 }
 
+// The voxel-thinned points, or every point with count 1 when thinning is off.
+ThinnedPoints thinned(const PointSet& input, double voxel_m) {
+  if (voxel_m < 0.0) return {input, std::vector<std::uint32_t>(input.points.size(), 1)};
+  if (voxel_m == 0.0) {
+    Eigen::Vector3d lo = input.points[0], hi = input.points[0];
+    for (const Eigen::Vector3d& p : input.points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    voxel_m = std::max((hi - lo).maxCoeff() / 1000.0, 1e-6);
+  }
+  return thin_to_voxels(input, voxel_m);
+}
+
 }  // namespace
 
-EncodeResult encode_point_set(const PointSet& ps, const EncodeOptions& o) {
+EncodeResult encode_point_set(const PointSet& input, const EncodeOptions& o) {
   check_options(o);
-  if (ps.points.empty()) throw ValueError("the point set is empty");
+  if (input.points.empty()) throw ValueError("the point set is empty");
+  const ThinnedPoints thin = thinned(input, o.voxel_m);
+  const PointSet& ps = thin.points;
   const std::uint32_t root = lowest_point(ps);
   const NeighbourGraph graph = build_neighbour_graph(ps, o.neighbours, o.species.beta, root);
   const ShortestPathTree paths = shortest_path_tree(ps, graph, root);
@@ -56,14 +73,15 @@ EncodeResult encode_point_set(const PointSet& ps, const EncodeOptions& o) {
   set_allometric_radii(skeleton.tree, d_root, o.species.gamma);
   ClusterSplit split = split_clusters(ps, skeleton, o.species.f_s);
   EncodeResult r;
-  r.points = ps.points.size();
+  r.points = input.points.size();
+  r.thinned_points = ps.points.size();
   r.bridges = graph.bridges;
   r.model.species = o.species.name;
   r.model.beta = o.species.beta;
   r.model.gamma = o.species.gamma;
   r.model.f_s = o.species.f_s;
   r.model.root_diameter_m = d_root;
-  r.model.clusters = hulls(ps, split.clusters, o.hull);
+  r.model.clusters = hulls(thin, split.clusters, o.hull);
   r.model.skeleton = std::move(split.main_skeleton);
   r.full_skeleton = std::move(skeleton.tree);
   return r;

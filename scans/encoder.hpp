@@ -13,8 +13,11 @@ namespace fspm::scans {
 
 struct EncodeOptions {
   SpeciesParameters species = default_species();
-  int neighbours = 8;                     // k of the neighbour graph
-  double bin_length_m = 0.0;              // 0: default_bin_length_m
+  int neighbours = 8;         // k of the neighbour graph
+  double bin_length_m = 0.0;  // 0: default_bin_length_m
+  // Points are thinned to one per voxel of this size first; 0: 1/1000 of the largest extent of
+  // the point set, negative: no thinning.
+  double voxel_m = 0.0;
   std::optional<double> root_diameter_m;  // d_root of eq. 3.1; estimated from the trunk if unset
   double trunk_height_m = 1.3;            // trunk points for the estimate: up to this height
   AlphaHullOptions hull;
@@ -24,7 +27,8 @@ struct EncodeResult {
   ClusterModel model;
   TreeGraph full_skeleton;  // every skeleton node, radii of eq. 3.1, before the cluster split
   std::size_t points = 0;
-  std::size_t bridges = 0;  // edges added to join pieces the neighbour graph left apart
+  std::size_t thinned_points = 0;  // after voxel thinning
+  std::size_t bridges = 0;         // edges added to join pieces the neighbour graph left apart
 };
 
 // Throws ValueError for an empty point set, bad parameters, or when no root diameter is given

@@ -22,12 +22,9 @@ struct DisjointSets {
 };
 
 // k nearest neighbours of every point (itself excluded), row-major n x k.
-std::vector<std::uint32_t> nearest_neighbours(const PointSet& ps, int k) {
+std::vector<std::uint32_t> nearest_neighbours(const PointSet& ps, const PointKdTree& tree, int k) {
   const std::size_t n = ps.points.size();
   const std::size_t kk = static_cast<std::size_t>(k);
-  PointCloudAdaptor adaptor{&ps.points};
-  PointKdTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-  tree.buildIndex();
   std::vector<std::uint32_t> knn(n * kk);
   std::vector<std::uint32_t> idx(kk + 1);
   std::vector<double> dist(kk + 1);
@@ -42,8 +39,12 @@ std::vector<std::uint32_t> nearest_neighbours(const PointSet& ps, int k) {
   return knn;
 }
 
-// Shortest edges joining every other piece to the piece of `root`.
-std::vector<std::pair<std::uint32_t, std::uint32_t>> bridges(const PointSet& ps, DisjointSets& sets,
+// Shortest edges joining every other piece to the piece of `root`: for each piece, the point
+// whose nearest root-piece point is nearest. A piece's points are first searched among their
+// 16 nearest neighbours in `all`; only pieces with no hit there search a tree of the root piece.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> bridges(const PointSet& ps,
+                                                             const PointKdTree& all,
+                                                             DisjointSets& sets,
                                                              std::uint32_t root) {
   const std::uint32_t root_set = sets.find(root);
   std::vector<std::uint32_t> main;
@@ -52,21 +53,41 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> bridges(const PointSet& ps,
     (sets.find(i) == root_set ? main : other).push_back(i);
   }
   if (other.empty()) return {};
-  PointCloudAdaptor adaptor{&ps.points, &main};
-  PointKdTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-  tree.buildIndex();
-  // Per piece: the point nearest to the main piece and its partner there.
-  std::vector<std::pair<double, std::pair<std::uint32_t, std::uint32_t>>> best(
-      ps.points.size(), {std::numeric_limits<double>::infinity(), {0, 0}});
+  using Best = std::pair<double, std::pair<std::uint32_t, std::uint32_t>>;
+  std::vector<Best> best(ps.points.size(), {std::numeric_limits<double>::infinity(), {0, 0}});
+  constexpr std::size_t kProbe = 16;
+  std::uint32_t idx[kProbe];
+  double d2[kProbe];
   for (std::uint32_t i : other) {
-    std::uint32_t j = 0;
-    double d2 = 0.0;
-    tree.knnSearch(ps.points[i].data(), 1, &j, &d2);
-    auto& b = best[sets.find(i)];
-    if (d2 < b.first) b = {d2, {i, main[j]}};
+    const std::size_t found = all.knnSearch(ps.points[i].data(), kProbe, idx, d2);
+    for (std::size_t k = 0; k < found; ++k) {
+      if (sets.find(idx[k]) != root_set) continue;
+      Best& b = best[sets.find(i)];
+      if (d2[k] < b.first) b = {d2[k], {i, idx[k]}};
+      break;
+    }
+  }
+  std::vector<std::uint32_t> unresolved;
+  for (std::uint32_t i : other) {
+    if (!std::isfinite(best[sets.find(i)].first)) unresolved.push_back(i);
+  }
+  if (!unresolved.empty()) {
+    PointCloudAdaptor adaptor{&ps.points, &main};
+    PointKdTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+    tree.buildIndex();
+    std::vector<Best> far(ps.points.size(), {std::numeric_limits<double>::infinity(), {0, 0}});
+    for (std::uint32_t i : unresolved) {
+      std::uint32_t j = 0;
+      double dist = 0.0;
+      tree.knnSearch(ps.points[i].data(), 1, &j, &dist);
+      Best& b = far[sets.find(i)];
+      if (dist < b.first) b = {dist, {i, main[j]}};
+    }
+    for (std::size_t s = 0; s < far.size(); ++s)
+      best[s] = std::isfinite(far[s].first) ? far[s] : best[s];
   }
   std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
-  for (const auto& b : best) {
+  for (const Best& b : best) {
     if (std::isfinite(b.first)) out.push_back(b.second);
   }
   return out;
@@ -79,7 +100,10 @@ NeighbourGraph build_neighbour_graph(const PointSet& ps, int k, double beta, std
   if (n == 0) throw ValueError("the point set is empty");
   if (k < 1) throw ValueError("the neighbour count k must be at least 1");
   const std::size_t kk = static_cast<std::size_t>(k);
-  const std::vector<std::uint32_t> knn = nearest_neighbours(ps, k);
+  PointCloudAdaptor adaptor{&ps.points};
+  PointKdTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  tree.buildIndex();
+  const std::vector<std::uint32_t> knn = nearest_neighbours(ps, tree, k);
   DisjointSets sets(n);
   std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;  // one direction each
   edges.reserve(n * kk);
@@ -95,7 +119,7 @@ NeighbourGraph build_neighbour_graph(const PointSet& ps, int k, double beta, std
     }
   }
   NeighbourGraph g;
-  const auto joins = bridges(ps, sets, root);
+  const auto joins = bridges(ps, tree, sets, root);
   g.bridges = joins.size();
   edges.insert(edges.end(), joins.begin(), joins.end());
   g.offset.assign(n + 1, 0);
