@@ -2,6 +2,7 @@
 #include <spdlog/fmt/fmt.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -10,6 +11,7 @@
 #include "cli/output.hpp"
 #include "fspm/tree_file.hpp"
 #include "fspm/tree_summary.hpp"
+#include "scans/grouped_mesh_skeleton.hpp"
 
 namespace fspm::cli {
 namespace {
@@ -79,7 +81,11 @@ void run_info(const InfoOptions& o) {
 
 void run_convert(const ConvertOptions& o) {
   refuse_overwriting_input(o.out, {o.in});
-  const TreeGraph tree = read_tree_file(o.in, o.from);
+  // A grouped OBJ mesh (one group per branch) gives its skeleton (Reynolds et al. 2011, 3.1).
+  const bool obj =
+      o.from == "obj" || (o.from.empty() && std::filesystem::path(o.in).extension() == ".obj");
+  const TreeGraph tree = obj ? scans::grouped_mesh_skeleton(scans::read_obj_mesh(o.in), o.in)
+                             : read_tree_file(o.in, o.from);
   write_tree_file(tree, o.out, o.to);
   if (verbosity() > 0) {
     std::cerr << "wrote " << o.out << " (" << tree.size() << " nodes)\n";
@@ -102,9 +108,12 @@ void add_tree_commands(CLI::App& app) {
 
   auto conv = std::make_shared<ConvertOptions>();
   CLI::App* c = tree->add_subcommand("convert", "Convert a tree file to another format");
-  c->add_option("IN", conv->in, "Input tree file (.tree, .treeb, .nwk, .mtg)")->required();
+  c->add_option("IN", conv->in,
+                "Input tree file (.tree, .treeb, .nwk, .mtg), or an .obj mesh with one group "
+                "per branch (its skeleton)")
+      ->required();
   c->add_option("OUT", conv->out, "Output tree file (.tree, .treeb, .nwk, .mtg)")->required();
-  c->add_option("--from", conv->from, "Input format: " + formats);
+  c->add_option("--from", conv->from, "Input format: " + formats + ", or obj");
   c->add_option("--format,--to", conv->to, "Output format: " + formats);
   c->callback([conv] { run_convert(*conv); });
 }

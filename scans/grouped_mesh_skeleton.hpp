@@ -1,0 +1,21 @@
+#pragma once
+// The skeleton of a tree model exported with one mesh group per branch (Reynolds et al. 2011,
+// sec. 3.1, Xfrog's square cross-section primitive): every face of a group is one cross-section
+// of the branch; the bones join the midpoints of consecutive cross-sections in file order. A
+// group's level is its name without the trailing sequence number ("Branch2_17" and "Branch2_3"
+// share the level "Branch2_"); levels are ranked by their first appearance in the file, the
+// trunk's first. A branch of level L > 0 hangs at the point of level L - 1 nearest to its first
+// midpoint. Radii are the inscribed radius of each cross-section polygon.
+#include "fspm/tree_graph.hpp"
+#include "scans/obj_reader.hpp"
+
+namespace fspm::scans {
+
+// The level name of a group: its name without trailing digits.
+std::string group_level_name(const std::string& group_name);
+
+// Throws ValueError (naming `path`) when the first level has no group or more than one, or a
+// group has no face.
+TreeGraph grouped_mesh_skeleton(const GroupedMesh& mesh, const std::string& path);
+
+}  // namespace fspm::scans
