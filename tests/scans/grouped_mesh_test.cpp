@@ -26,7 +26,7 @@ TEST(GroupedMeshSkeleton, TrunkAndTwoBranchesByLevelName) {
   obj << "g Trunk1\n";
   for (int k = 0; k <= 4; ++k) square(obj, v, {0, 0, k * 1.0}, 0.4);
   obj << "g Branch1\n";  // starts near the trunk's point at z = 2
-  for (int k = 1; k <= 3; ++k) square(obj, v, {0.5 * k, 0, 2.1 + 0.5 * k}, 0.1);
+  for (int k = 1; k <= 3; ++k) square(obj, v, {0.5 * k, 0, 2.0 + 0.3 * k}, 0.1);
   obj << "g Branch2\n";  // near z = 3
   for (int k = 1; k <= 2; ++k) square(obj, v, {0, -0.5 * k, 2.9 + 0.5 * k}, 0.1);
   const TreeGraph t = grouped_mesh_skeleton(parse_obj_mesh(obj.str(), "m.obj"), "m.obj");
