@@ -63,7 +63,7 @@ TEST(ScanCli, TreeConvertReadsAGroupedObj) {
   out << "g trunk1\n";
   for (int k = 0; k < 4; ++k) square(0, 0, k, 0.3);
   out << "g branch1\n";
-  for (int k = 1; k <= 2; ++k) square(0.4 * k, 0, 1.2 + 0.3 * k, 0.1);
+  for (int k = 1; k <= 2; ++k) square(0.4 * k, 0, 1.1 + 0.3 * k, 0.1);
   out.close();
   const std::string tree = (dir / "tree.tree").string();
   const auto r = run_fspm("tree convert " + obj + " " + tree);
