@@ -63,12 +63,17 @@ EncodeResult encode_point_set(const PointSet& input, const EncodeOptions& o) {
   const double bin = o.bin_length_m > 0.0 ? o.bin_length_m : default_bin_length_m(paths);
   PointSkeleton skeleton = build_point_skeleton(ps, graph, paths, bin);
   set_branch_orders(skeleton.tree);
-  const double d_root = o.root_diameter_m
-                            ? *o.root_diameter_m
-                            : estimate_root_diameter_m(ps, skeleton, o.trunk_height_m);
+  double trunk_m = o.trunk_height_m;
+  if (trunk_m <= 0.0) {
+    double z0 = ps.points[root].z(), z1 = z0;
+    for (const Eigen::Vector3d& p : ps.points) z1 = std::max(z1, p.z());
+    trunk_m = std::min(1.3, 0.1 * (z1 - z0));
+  }
+  const double d_root =
+      o.root_diameter_m ? *o.root_diameter_m : estimate_root_diameter_m(ps, skeleton, trunk_m);
   if (!(d_root > 0.0)) {
     throw ValueError("no trunk diameter could be fitted to the points below " +
-                     std::to_string(o.trunk_height_m) + " m; give the root diameter");
+                     std::to_string(trunk_m) + " m; give the root diameter");
   }
   set_allometric_radii(skeleton.tree, d_root, o.species.gamma);
   ClusterSplit split = split_clusters(ps, skeleton, o.species.f_s);

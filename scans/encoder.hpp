@@ -19,7 +19,9 @@ struct EncodeOptions {
   // the point set, negative: no thinning.
   double voxel_m = 0.0;
   std::optional<double> root_diameter_m;  // d_root of eq. 3.1; estimated from the trunk if unset
-  double trunk_height_m = 1.3;            // trunk points for the estimate: up to this height
+  // Trunk points for the estimate lie up to this height above the lowest point; 0: breast height
+  // (1.3 m) or a tenth of the point set's height, whichever is lower.
+  double trunk_height_m = 0.0;
   AlphaHullOptions hull;
 };
 
