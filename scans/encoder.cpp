@@ -72,8 +72,9 @@ EncodeResult encode_point_set(const PointSet& input, const EncodeOptions& o) {
   const double d_root =
       o.root_diameter_m ? *o.root_diameter_m : estimate_root_diameter_m(ps, skeleton, trunk_m);
   if (!(d_root > 0.0)) {
-    throw ValueError("no trunk diameter could be fitted to the points below " +
-                     std::to_string(trunk_m) + " m; give the root diameter");
+    throw ValueError(
+        "no trunk diameter could be fitted (fewer than 5 trunk points, or no circle "
+        "through them); give the root diameter (--root-diameter)");
   }
   set_allometric_radii(skeleton.tree, d_root, o.species.gamma);
   ClusterSplit split = split_clusters(ps, skeleton, o.species.f_s);
