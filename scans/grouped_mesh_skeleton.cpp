@@ -72,9 +72,8 @@ TreeGraph grouped_mesh_skeleton(const GroupedMesh& m, const std::string& path) {
     for (std::uint32_t g : groups_of[level_names[level]]) {
       const std::vector<Section> s = sections(m, g);
       if (level == 0 && s.size() < 2) {
-        throw ValueError("the trunk group '" + m.group_names[g] +
-                             "' needs at least two cross-sections",
-                         path);
+        throw ValueError(
+            "the trunk group '" + m.group_names[g] + "' needs at least two cross-sections", path);
       }
       NodeId parent = level == 0 ? kNoNode : nearest_node(t, below, s[0].mid);
       for (std::size_t k = level == 0 ? 1 : 0; k < s.size(); ++k) {
