@@ -9,8 +9,8 @@
 
 #include "environment/light_model.hpp"
 #include "fspm/error.hpp"
-#include "fspm/memory_budget.hpp"
 #include "fspm/tree_summary.hpp"
+#include "tests/scoped_memory_limit.hpp"
 
 namespace fspm::environment {
 namespace {
@@ -323,17 +323,11 @@ TEST(GrowthModel, LessLightNeverGivesLargerTrees) {
   EXPECT_EQ(grow_tree(p).internodes, 1u);
 }
 
-// Restores the default memory limit when a test ends.
-struct MemoryLimitGuard {
-  explicit MemoryLimitGuard(std::uint64_t bytes) { set_memory_limit_bytes(bytes); }
-  ~MemoryLimitGuard() { set_memory_limit_bytes(0); }
-};
-
 // Each cycle checks the tree it is about to have against the memory limit: at 1 MiB a 10-year
 // tree of type A (about 380 metamers, some 150 kB) grows, a 30-year one (about 11 000 metamers,
 // several MB) stops with MemoryLimitError before it allocates them.
 TEST(GrowthModel, MemoryLimitStopsAGrowingTreeInBytes) {
-  const MemoryLimitGuard guard(std::uint64_t{1} << 20);
+  const test_support::ScopedMemoryLimit limit(std::uint64_t{1} << 20);
   GrowthParams p = growth_preset("A");
   p.years = 10;
   EXPECT_NO_THROW(grow_tree(p));

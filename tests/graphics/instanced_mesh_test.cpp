@@ -13,7 +13,6 @@
 #include <set>
 
 #include "fspm/error.hpp"
-#include "fspm/memory_budget.hpp"
 #include "graphics/image.hpp"
 #include "graphics/mesh_writers.hpp"
 #include "graphics/render.hpp"
@@ -21,6 +20,7 @@
 #include "graphics/viewer.hpp"
 #include "tests/graphics/mesh_checks.hpp"
 #include "tests/graphics/test_trees.hpp"
+#include "tests/scoped_memory_limit.hpp"
 
 namespace fspm::graphics {
 namespace {
@@ -367,17 +367,11 @@ TEST(InstancedViewer, InstancedDrawsLookLikeTheFlattenedMesh) {
   fs::remove_all(dir);
 }
 
-// Restores the default memory limit when a test ends.
-struct MemoryLimitGuard {
-  explicit MemoryLimitGuard(std::uint64_t bytes) { set_memory_limit_bytes(bytes); }
-  ~MemoryLimitGuard() { set_memory_limit_bytes(0); }
-};
-
 // Flattening checks the explicit mesh against the memory limit first: 100 000 instances of a
 // 4-vertex quad are 400 000 vertices of 32 bytes (12.8 MB), above a limit of 1 MiB; 1 000
 // instances (128 kB) are flattened.
 TEST(InstancedMesh, FlattenStopsAtTheMemoryLimit) {
-  const MemoryLimitGuard guard(std::uint64_t{1} << 20);
+  const test_support::ScopedMemoryLimit limit(std::uint64_t{1} << 20);
   TriangleMesh quad;
   quad.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
   quad.normals.assign(4, Eigen::Vector3f::UnitZ());

@@ -5,9 +5,9 @@
 #include <map>
 
 #include "fspm/error.hpp"
-#include "fspm/memory_budget.hpp"
 #include "lsystem/derivation.hpp"
 #include "lsystem/parser.hpp"
+#include "tests/scoped_memory_limit.hpp"
 
 namespace fspm::lsystem {
 namespace {
@@ -285,14 +285,8 @@ TEST(LsystemDerivation, ModuleBudgetStopsExplodingGrammars) {
   EXPECT_THROW(derive(p, o), ValueError);
 }
 
-// Restores the default memory limit when a test ends.
-struct MemoryLimitGuard {
-  explicit MemoryLimitGuard(std::uint64_t bytes) { set_memory_limit_bytes(bytes); }
-  ~MemoryLimitGuard() { set_memory_limit_bytes(0); }
-};
-
 TEST(LsystemDerivation, MemoryLimitStopsTheStringInBytes) {
-  const MemoryLimitGuard guard(std::uint64_t{1} << 20);
+  const test_support::ScopedMemoryLimit limit(std::uint64_t{1} << 20);
   const LSystem sys = parse_lsystem("Axiom: F\nF --> FF\n", "double.l");
   DeriveOptions o;
   o.steps = 40;
@@ -312,7 +306,7 @@ TEST(LsystemDerivation, MemoryLimitStopsTheStringInBytes) {
 }
 
 TEST(LsystemDerivation, MemoryLimitCountsParametersToo) {
-  const MemoryLimitGuard guard(std::uint64_t{1} << 20);
+  const test_support::ScopedMemoryLimit limit(std::uint64_t{1} << 20);
   // 14 bytes per module (symbol, offset, one double): 2^16 modules (896 KiB) fit, 2^17 do not.
   const LSystem sys = parse_lsystem("Axiom: F(1)\nF(x) --> F(x)F(x+1)\n");
   DeriveOptions o;

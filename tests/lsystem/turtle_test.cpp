@@ -4,11 +4,11 @@
 #include <numbers>
 
 #include "fspm/error.hpp"
-#include "fspm/memory_budget.hpp"
 #include "lsystem/derivation.hpp"
 #include "lsystem/open_environment.hpp"
 #include "lsystem/parser.hpp"
 #include "lsystem/turtle.hpp"
+#include "tests/scoped_memory_limit.hpp"
 
 namespace fspm::lsystem {
 namespace {
@@ -268,17 +268,11 @@ TEST(LsystemTurtle, ExamplesDrawTrees) {
   }
 }
 
-// Restores the default memory limit when a test ends.
-struct MemoryLimitGuard {
-  explicit MemoryLimitGuard(std::uint64_t bytes) { set_memory_limit_bytes(bytes); }
-  ~MemoryLimitGuard() { set_memory_limit_bytes(0); }
-};
-
 // The tree of an interpretation is checked before it is allocated: 141 bytes per drawn module
 // (a node with two attributes and its colour), so at 1 MiB 4 096 F modules (577 kB) are drawn
 // and 8 192 (1.15 MB) stop with MemoryLimitError, although their string is only 16 kB.
 TEST(Turtle, MemoryLimitStopsTheTreeInBytes) {
-  const MemoryLimitGuard guard(std::uint64_t{1} << 20);
+  const test_support::ScopedMemoryLimit limit(std::uint64_t{1} << 20);
   const LSystem sys = parse_lsystem("Axiom: F\nF --> FF\n", "double.l");
   DeriveOptions o;
   o.steps = 12;
