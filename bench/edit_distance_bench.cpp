@@ -1,5 +1,5 @@
 // Constrained edit distance between two plant-like random trees of 2 000 and 4 000 nodes
-// (issue 7 goals: < 0.3 s and < 1.5 s on one core). Peak memory is the process's maximum
+// (goals: < 0.3 s and < 1.5 s on one core). Peak memory is the process's maximum
 // resident set size (run one benchmark per process, --benchmark_filter, for a per-case figure).
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>

@@ -1,5 +1,5 @@
 // Mesh generation throughput (goal: >= 20 million triangles per second on one core) and binary
-// glTF export of a 1-million-triangle tree (goal: < 0.5 s), issue 8 item 7.
+// glTF export of a 1-million-triangle tree (goal: < 0.5 s).
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 

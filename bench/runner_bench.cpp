@@ -1,4 +1,4 @@
-// Experiment runner: overhead per run with a model that does nothing (goal < 1 ms, issue 9),
+// Experiment runner: overhead per run with a model that does nothing (goal < 1 ms),
 // results per second the SQLite writer sustains, and parallel efficiency of busy runs on 1 vs 2
 // threads.
 #include <benchmark/benchmark.h>

@@ -113,7 +113,7 @@ fs::path write_html_report(const HtmlReportInput& in) {
       {"runs", html_runs_json(*in.info, *in.runs)},
       {"comparisons", json::array()},
       {"pairs", html_pairs_json(in.comparisons ? *in.comparisons : ex::ComparisonResults{})}};
-  std::string kind;
+  std::optional<ex::ModelKind> kind;
   if (in.experiment != nullptr) {
     kind = in.experiment->model_kind;
     for (const ex::ComparisonSpec& c : in.experiment->comparisons)

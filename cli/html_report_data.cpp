@@ -48,7 +48,7 @@ json html_runs_json(const ex::ExperimentInfo& info, const std::vector<ex::RunRec
   return out;
 }
 
-json html_metrics_json(const ex::ExperimentInfo& info, std::string_view model_kind) {
+json html_metrics_json(const ex::ExperimentInfo& info, std::optional<ex::ModelKind> model_kind) {
   json out = json::array();
   for (const std::string& name : info.metrics) {
     out.push_back({{"name", name},

@@ -4,10 +4,12 @@
 // few thousand runs stay small. Non-finite numbers become null; seeds are text, since JavaScript
 // numbers hold integers only up to 2^53.
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string_view>
 #include <vector>
 
 #include "experiments/comparisons.hpp"
+#include "experiments/model_kind.hpp"
 #include "experiments/results_db.hpp"
 
 namespace fspm::cli {
@@ -19,7 +21,7 @@ nlohmann::json html_runs_json(const experiments::ExperimentInfo& info,
 
 // [{"name", "unit", "timing"}] in the database's order (experiments/report.hpp metric_unit).
 nlohmann::json html_metrics_json(const experiments::ExperimentInfo& info,
-                                 std::string_view model_kind);
+                                 std::optional<experiments::ModelKind> model_kind);
 
 // {"comparison": [..], "group": [..], "run_a": [..], "run_b": [..], "distance": [..]}.
 nlohmann::json html_pairs_json(const experiments::ComparisonResults& results);

@@ -35,7 +35,7 @@ std::string number_text(double v) {
 }
 
 // "metric (unit)" for a chart's axis.
-std::string metric_label(const std::string& metric, const std::string& model_kind) {
+std::string metric_label(const std::string& metric, ex::ModelKind model_kind) {
   const std::string unit = ex::metric_unit(metric, model_kind);
   return unit.empty() ? metric : metric + " (" + unit + ")";
 }
@@ -43,7 +43,7 @@ std::string metric_label(const std::string& metric, const std::string& model_kin
 // The chart of one metric against one swept parameter; false when fewer than two values have
 // the metric.
 bool sweep_chart(const ex::SweptParameter& parameter, const std::string& metric,
-                 const std::string& model_kind, const std::string& x_label,
+                 ex::ModelKind model_kind, const std::string& x_label,
                  const std::string& png_path) {
   // No legend (it would hide the top right corner): the report's text says which line is which.
   graphics::ChartSeries mean{"mean", {}, {}, 0, false, true, false};
@@ -208,7 +208,7 @@ std::string one_scale_text(const ex::Experiment& x, const graphics::RenderOption
                    ex::length_unit(x.model_kind) + ", the black bar is " +
                    number_text(graphics::scale_bar_length(options.ortho_height_m)) + " " +
                    options.scale_bar_unit + ".";
-  if (x.model_kind == "grow" || x.model_kind == "adapt") {
+  if (x.model_kind == ex::ModelKind::kGrow || x.model_kind == ex::ModelKind::kAdapt) {
     md +=
         " Grey: the obstacles of the scene the tree grew beside or was adapted to, cut to the "
         "region around it (trees grown in the open are drawn alone).";
@@ -269,11 +269,12 @@ std::string tree_renders(const ex::Experiment& x, const std::vector<ex::RunRecor
       options.frame = Eigen::AlignedBox3f(lo, lo + extent);
       const graphics::Image image = graphics::render_mesh(mesh, options);
       graphics::write_image(image, (fs::path(dir) / name).string());
-      const char* besides = d.obstacles == Obstacles::kFarAway
-                                ? "; the scene's obstacles are too far from the tree to be drawn"
-                            : d.obstacles == Obstacles::kNone && x.model_kind == "grow"
-                                ? "; grown without obstacles"
-                                : "";
+      const char* besides =
+          d.obstacles == Obstacles::kFarAway
+              ? "; the scene's obstacles are too far from the tree to be drawn"
+          : d.obstacles == Obstacles::kNone && x.model_kind == ex::ModelKind::kGrow
+              ? "; grown without obstacles"
+              : "";
       md += "![" + c.group + "](" + std::string(name) + ")\n\n*" + c.caption + besides + "*\n\n";
     } catch (const Error& e) {
       notes.push_back("not rendered (run " + std::to_string(c.run) + "): " + e.what());

@@ -1,6 +1,7 @@
 #include "experiments/experiment.hpp"
 
 #include <toml++/toml.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -10,6 +11,7 @@
 #include <limits>
 #include <set>
 #include <sstream>
+#include "fspm/closest_name.hpp"
 
 #include "experiments/metrics.hpp"
 #include "fspm/error.hpp"
@@ -503,11 +505,19 @@ Experiment parse_experiment(std::string_view toml_text, const std::string& path)
   const toml::table& model = *r.table(root, "model", true);
   r.only_keys("model", model, {"kind", "file", "view", "scene"});
   if (const toml::node* n = model.get("kind")) {
-    x.model_kind = r.string("model.kind", *n);
+    const std::string kind = r.string("model.kind", *n);
     x.model_kind_line = Reader::line_of(*n);
+    const std::optional<ModelKind> known = find_model_kind(kind);
+    if (!known) {
+      std::vector<std::string> names;
+      for (ModelKind k : kModelKinds) names.emplace_back(model_kind_name(k));
+      throw ValueError("model.kind: unknown kind '" + kind + "'" + closest_name_hint(kind, names),
+                       path, x.model_kind_line);
+    }
+    x.model_kind = *known;
   } else {
-    throw ValueError("model.kind: missing (lsystem, greenlab, grow, adapt, stages or synthetic)",
-                     path, Reader::line_of(model));
+    throw ValueError("model.kind: missing (" + model_kind_names() + ")", path,
+                     Reader::line_of(model));
   }
   if (const toml::node* n = model.get("file")) {
     x.model_file = r.resolve("model.file", *n);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "experiments/comparison_spec.hpp"
+#include "experiments/model_kind.hpp"
 #include "experiments/parameter_set.hpp"
 
 namespace fspm::experiments {
@@ -50,7 +51,7 @@ struct Experiment {
   std::string about;        // report.about: what the experiment asks and what is known (report)
   std::uint64_t seed = 0;
   std::size_t replicates = 1;
-  std::string model_kind;
+  ModelKind model_kind = ModelKind::kSynthetic;
   std::string model_file;      // resolved against the experiment file's directory; may be empty
   std::string model_view;      // lsystem: optional view file, resolved likewise
   std::string model_scene;     // grow: optional scene file (JSON), resolved likewise

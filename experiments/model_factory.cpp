@@ -14,8 +14,9 @@ namespace {
 
 void require_file(const Experiment& x) {
   if (x.model_file.empty()) {
-    throw ValueError("model.file: missing (model kind " + x.model_kind + " needs a file)", x.path,
-                     x.model_kind_line);
+    throw ValueError("model.file: missing (model kind " +
+                         std::string(model_kind_name(x.model_kind)) + " needs a file)",
+                     x.path, x.model_kind_line);
   }
 }
 
@@ -30,30 +31,29 @@ std::string base_dir(const Experiment& x) {
 }  // namespace
 
 std::unique_ptr<Model> make_model(const Experiment& x) {
-  if (x.model_kind == "lsystem") {
-    require_file(x);
-    bool defines = false;
-    for (const auto& [name, line] : x.parameter_lines)
-      defines = defines || name.starts_with("define.");
-    return make_lsystem_model(x.model_file, x.model_view, defines);
+  switch (x.model_kind) {
+    case ModelKind::kLSystem: {
+      require_file(x);
+      bool defines = false;
+      for (const auto& [name, line] : x.parameter_lines)
+        defines = defines || name.starts_with("define.");
+      return make_lsystem_model(x.model_file, x.model_view, defines);
+    }
+    case ModelKind::kGreenLab:
+      require_file(x);
+      return make_greenlab_model(x.model_file);
+    case ModelKind::kGrow:
+      return make_grow_model(x.model_file, x.model_scene, base_dir(x));
+    case ModelKind::kAdapt:
+      require_file(x);
+      return make_adapt_model(x.model_file, x.model_scene, base_dir(x));
+    case ModelKind::kStages:
+      require_file(x);
+      return make_stages_model(x.model_file);
+    case ModelKind::kSynthetic:
+      return make_synthetic_model();
   }
-  if (x.model_kind == "greenlab") {
-    require_file(x);
-    return make_greenlab_model(x.model_file);
-  }
-  if (x.model_kind == "grow") return make_grow_model(x.model_file, x.model_scene, base_dir(x));
-  if (x.model_kind == "adapt") {
-    require_file(x);
-    return make_adapt_model(x.model_file, x.model_scene, base_dir(x));
-  }
-  if (x.model_kind == "stages") {
-    require_file(x);
-    return make_stages_model(x.model_file);
-  }
-  if (x.model_kind == "synthetic") return make_synthetic_model();
-  throw ValueError("model.kind: unknown kind '" + x.model_kind +
-                       "' (expected lsystem, greenlab, grow, adapt, stages or synthetic)",
-                   x.path, x.model_kind_line);
+  throw ValueError("model.kind: unknown kind", x.path, x.model_kind_line);
 }
 
 void check_experiment(const Experiment& x, const Model& model, const RunPlan& plan) {

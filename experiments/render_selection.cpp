@@ -120,20 +120,20 @@ TreeGraph recorded_run_tree(const Experiment& x, const RunRecord& record, const 
   const std::unique_ptr<Model> model = make_model(x);
   RunResult result = model->run(record.parameters, record.seed, RunContext());
   if (!result.tree) {
-    throw ValueError("run " + std::to_string(record.run) + ": the " + x.model_kind +
-                     " model gives no tree to render");
+    throw ValueError("run " + std::to_string(record.run) + ": the " +
+                     std::string(model_kind_name(x.model_kind)) + " model gives no tree to render");
   }
   return std::move(*result.tree);
 }
 
 std::optional<environment::Scene> recorded_run_scene(const Experiment& x, const RunRecord& record) {
-  if (x.model_kind != "grow" && x.model_kind != "adapt") return std::nullopt;
+  if (x.model_kind != ModelKind::kGrow && x.model_kind != ModelKind::kAdapt) return std::nullopt;
   const auto text = [&](const char* name) -> std::optional<std::string> {
     const auto it = record.parameters.find(name);
     if (it == record.parameters.end()) return std::nullopt;
     return parameter_text(it->second);
   };
-  if (x.model_kind == "grow" && text("set").value_or("G") == "O") return std::nullopt;
+  if (x.model_kind == ModelKind::kGrow && text("set").value_or("G") == "O") return std::nullopt;
   std::string path = x.model_scene;
   if (const auto scene = text("scene")) {
     if (*scene == "open") return std::nullopt;
@@ -145,7 +145,7 @@ std::optional<environment::Scene> recorded_run_scene(const Experiment& x, const 
   }
   if (path.empty()) return std::nullopt;
   environment::Scene scene = environment::read_scene_file(path);
-  if (x.model_kind == "adapt") {
+  if (x.model_kind == ModelKind::kAdapt) {
     // The adapt model keeps the tree where it is and moves the scene the other way.
     Eigen::Vector3d at = Eigen::Vector3d::Zero();
     if (const auto it = record.parameters.find("tree_x_m"); it != record.parameters.end())

@@ -27,18 +27,18 @@ std::string cell(const Moments& m) {
   return m.n > 1 ? number(m.mean) + " ± " + number(m.sd()) : number(m.mean);
 }
 
-// The model kind of a stored experiment text, "" when it cannot be read.
-std::string model_kind_of(const std::string& experiment_text) {
+// The model kind of a stored experiment text, nothing when it cannot be read.
+std::optional<ModelKind> model_kind_of(const std::string& experiment_text) {
   try {
     const toml::table t = toml::parse(std::string_view(experiment_text));
-    return t["model"]["kind"].value_or(std::string());
+    return find_model_kind(t["model"]["kind"].value_or(std::string()));
   } catch (const toml::parse_error&) {
-    return {};
+    return std::nullopt;
   }
 }
 
 // " (unit)" of a metric, nothing for an unknown one.
-std::string unit_of(const std::string& metric, std::string_view model_kind) {
+std::string unit_of(const std::string& metric, std::optional<ModelKind> model_kind) {
   const std::string unit = metric_unit(metric, model_kind);
   return unit.empty() ? unit : " (" + unit + ")";
 }
@@ -67,7 +67,7 @@ std::vector<std::string> metrics_of_kind(const std::vector<std::string>& metrics
 
 // "| a | b |" header and separator for `leading` columns followed by the metrics with units.
 void table_header(std::ostream& md, const std::vector<std::string>& leading,
-                  const std::vector<std::string>& metrics, std::string_view kind) {
+                  const std::vector<std::string>& metrics, std::optional<ModelKind> kind) {
   md << '|';
   for (const std::string& c : leading) md << ' ' << escape(c) << " |";
   for (const std::string& m : metrics) md << ' ' << m << unit_of(m, kind) << " |";
@@ -85,7 +85,7 @@ struct Point {
 
 void point_table(std::ostream& md, const ExperimentInfo& info,
                  const std::map<std::size_t, Point>& points,
-                 const std::vector<std::string>& metrics, std::string_view kind) {
+                 const std::vector<std::string>& metrics, std::optional<ModelKind> kind) {
   std::vector<std::string> leading = {"point", "runs"};
   leading.insert(leading.end(), info.swept.begin(), info.swept.end());
   table_header(md, leading, metrics, kind);
@@ -101,7 +101,7 @@ void point_table(std::ostream& md, const ExperimentInfo& info,
 }
 
 void marginal_table(std::ostream& md, const SweptParameter& parameter,
-                    const std::vector<std::string>& metrics, std::string_view kind) {
+                    const std::vector<std::string>& metrics, std::optional<ModelKind> kind) {
   table_header(md, {parameter.name}, metrics, kind);
   for (const SweptValue& v : parameter.values) {
     md << "| " << escape(v.text) << " |";
@@ -115,11 +115,11 @@ void marginal_table(std::ostream& md, const SweptParameter& parameter,
 
 }  // namespace
 
-std::string length_unit(std::string_view model_kind) {
-  return model_kind == "lsystem" ? "model units" : "m";
+std::string length_unit(std::optional<ModelKind> model_kind) {
+  return model_kind == ModelKind::kLSystem ? "model units" : "m";
 }
 
-std::string metric_unit(const std::string& metric, std::string_view model_kind) {
+std::string metric_unit(const std::string& metric, std::optional<ModelKind> model_kind) {
   const MetricInfo* info = find_metric(metric);
   if (info == nullptr) return {};
   std::string unit(info->unit);
@@ -164,7 +164,7 @@ std::string markdown_report(const ExperimentInfo& info, const std::vector<RunRec
 
   // What the plants did and how long the software took, in separate tables: a botanist reads
   // the first, whoever plans the next sweep the second.
-  const std::string kind = model_kind_of(info.experiment_text);
+  const std::optional<ModelKind> kind = model_kind_of(info.experiment_text);
   const std::vector<std::string> biological = metrics_of_kind(info.metrics, false);
   const std::vector<std::string> timings = metrics_of_kind(info.metrics, true);
   if (!biological.empty()) {

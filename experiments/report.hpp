@@ -3,22 +3,24 @@
 // run counts, tables of mean and standard deviation of every metric per parameter point (over its
 // successful replicates), what the plants did and the timings in separate tables, marginal means
 // per swept parameter (sweep_summary.hpp), and the failed runs.
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "experiments/experiment.hpp"
+#include "experiments/model_kind.hpp"
 #include "experiments/results_db.hpp"
 
 namespace fspm::experiments {
 
 // The unit of lengths of a model kind: "model units" for L-system plants (the L-system's own
 // units), "m" for every other model.
-std::string length_unit(std::string_view model_kind);
+std::string length_unit(std::optional<ModelKind> model_kind);
 
 // The unit of a metric as the report prints it ("m", "m^2", "count", "s", ...), the catalogue's
 // "length" written as the model's length unit; empty for an unknown metric.
-std::string metric_unit(const std::string& metric, std::string_view model_kind);
+std::string metric_unit(const std::string& metric, std::optional<ModelKind> model_kind);
 
 std::string markdown_report(const ExperimentInfo& info, const std::vector<RunRecord>& runs,
                             const std::string& introduction = "");

@@ -20,21 +20,25 @@ std::string shown_path(const Experiment& x, const std::string& file) {
 
 // The model kinds in words, with the literature they follow (docs/references.md).
 std::string model_words(const Experiment& x) {
-  if (x.model_kind == "lsystem") {
+  if (x.model_kind == ModelKind::kLSystem) {
     return "the L-system `" + shown_path(x, x.model_file) +
            "` (Prusinkiewicz and Lindenmayer 1990), lengths in "
            "the L-system's own units";
   }
-  if (x.model_kind == "greenlab") return "the GreenLab model (de Reffye et al. 2003)";
-  if (x.model_kind == "grow") {
+  if (x.model_kind == ModelKind::kGreenLab) return "the GreenLab model (de Reffye et al. 2003)";
+  if (x.model_kind == ModelKind::kGrow) {
     return "the self-organizing growth model (Palubicki et al. 2009), trees grown from a seed "
            "under the sky's light";
   }
-  if (x.model_kind == "adapt") {
+  if (x.model_kind == ModelKind::kAdapt) {
     return "plastic adaptation (Pirk 2013, chapter 4) of the tree `" + shown_path(x, x.model_file) +
            "`";
   }
-  return "the " + x.model_kind + " model";
+  if (x.model_kind == ModelKind::kStages) {
+    return "the developmental stages (Pirk 2013, chapter 5) of the tree `" +
+           shown_path(x, x.model_file) + "`";
+  }
+  return "the " + std::string(model_kind_name(x.model_kind)) + " model";
 }
 
 std::string values_text(const std::vector<ParameterValue>& values) {
@@ -88,8 +92,8 @@ void what_was_run(std::ostream& md, const Experiment& x) {
     md << ")";
   }
   md << ", " << x.replicates << (x.replicates == 1 ? " run" : " runs") << " per point";
-  if (x.model_kind == "adapt") {
-    md << " (the adaptation is deterministic: it uses no random numbers).";
+  if (x.model_kind == ModelKind::kAdapt || x.model_kind == ModelKind::kStages) {
+    md << " (the model is deterministic: it uses no random numbers).";
   } else {
     md << ", each with its own random seed derived from the experiment seed " << x.seed << ".";
   }
@@ -107,7 +111,7 @@ void what_was_run(std::ostream& md, const Experiment& x) {
 
 // The tree types and the values of `set` (grow model) that the experiment uses, in words.
 void set_meanings(std::ostream& md, const Experiment& x) {
-  if (x.model_kind != "grow") return;
+  if (x.model_kind != ModelKind::kGrow) return;
   std::vector<ParameterValue> sets;
   for (const SweepAxis& a : x.sweep) {
     if (a.name == "set") sets = a.values;

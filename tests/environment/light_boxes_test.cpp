@@ -39,7 +39,7 @@ double angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
          std::numbers::pi;
 }
 
-// The point at the foot of a 50 m high wall, 1 m from its face (the case): the sampled
+// The point at the foot of a 50 m high wall, 1 m from its face: the sampled
 // integral converged slowly (0.4976 at 1 024 directions); the polygon closed form is exact at
 // every direction count, including the default 256 and the growth model's 64.
 TEST(LightBoxes, FiftyMetreWallAtDefaultSettings) {
@@ -47,7 +47,7 @@ TEST(LightBoxes, FiftyMetreWallAtDefaultSettings) {
   s.boxes.push_back(Box::wall({1.1, -50}, {1.1, 50}, 0, 50, 0.2));
   const Eigen::Vector3d p = Eigen::Vector3d::Zero();
   const SkyIntegral q = oracle(s, p, 2000);
-  EXPECT_NEAR(q.light(), 0.5136, 1e-3);  // the fine integral
+  EXPECT_NEAR(q.light(), 0.5136, 1e-3);  // a fine numerical integral
   for (const int dirs : {256, 64, 1024}) {
     s.sky.directions = dirs;
     const LightSample a = LightModel(s).evaluate(p);

@@ -17,7 +17,7 @@ std::string error_of(const std::string& text) {
   return "no error";
 }
 
-TEST(SceneFile, ParsesIssueExample) {
+TEST(SceneFile, ParsesASphereAndABox) {
   const Scene s =
       parse_scene_json(R"({ "sky": { "model": "cos2", "brightest": [0, 0, 1], "directions": 256 },
     "occluders": [

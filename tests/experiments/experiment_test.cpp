@@ -17,14 +17,14 @@ std::vector<double> numbers(const SweepAxis& axis) {
   return out;
 }
 
-// The example of the issue, verbatim.
-constexpr const char* kIssueExample = R"(
+// An experiment file like the branching example of docs/experiments.md.
+constexpr const char* kBranchingExample = R"(
 [experiment]
 name = "branching"
 seed = 42
 replicates = 2
 [model]
-kind = "lsystem"                  # lsystem | greenlab | grow (and adapt once it exists)
+kind = "lsystem"                  # lsystem | greenlab | grow | adapt | stages
 file = "plant.l"                  # relative to the experiment file
 [sweep]                           # the grid is the product of all entries
 steps = [6, 7, 8]                 # derivation steps
@@ -33,15 +33,15 @@ steps = [6, 7, 8]                 # derivation steps
 metrics = ["internodes", "leaves", "height", "total_length"]
 )";
 
-TEST(Experiment, IssueExampleGivesTheProductGrid) {
-  const auto dir = scratch("issue");
+TEST(Experiment, BranchingExampleGivesTheProductGrid) {
+  const auto dir = scratch("branching");
   write(dir / "plant.l", testing::kLineLSystem);
-  const std::string path = write(dir / "exp.toml", kIssueExample);
+  const std::string path = write(dir / "exp.toml", kBranchingExample);
   const Experiment x = read_experiment(path);
   EXPECT_EQ(x.name, "branching");
   EXPECT_EQ(x.seed, 42u);
   EXPECT_EQ(x.replicates, 2u);
-  EXPECT_EQ(x.model_kind, "lsystem");
+  EXPECT_EQ(x.model_kind, ModelKind::kLSystem);
   EXPECT_EQ(x.model_file, (dir / "plant.l").string());
   ASSERT_EQ(x.sweep.size(), 2u);
   EXPECT_EQ(x.sweep[0].name, "steps");  // file order, not key order
@@ -98,6 +98,19 @@ void expect_error(const std::string& body, int line, const std::string& key) {
     EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
     EXPECT_EQ(e.file(), "t.toml");
   }
+}
+
+// A misspelt model kind is refused where the file names it, with the closest kind.
+TEST(Experiment, UnknownModelKindNamesTheClosestKind) {
+  try {
+    parse_experiment("[experiment]\nname = \"x\"\n[model]\nkind = \"grwo\"\n", "t.toml");
+    FAIL() << "a misspelt model kind was accepted";
+  } catch (const ValueError& e) {
+    EXPECT_EQ(e.line(), 4);
+    EXPECT_NE(std::string(e.what()).find("did you mean 'grow'"), std::string::npos) << e.what();
+  }
+  for (ModelKind kind : kModelKinds) EXPECT_EQ(find_model_kind(model_kind_name(kind)), kind);
+  EXPECT_EQ(model_kind_names(), "lsystem, greenlab, grow, adapt, stages or synthetic");
 }
 
 TEST(Experiment, BadInputNamesKeyAndLine) {

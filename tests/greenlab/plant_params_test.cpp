@@ -57,7 +57,7 @@ std::pair<std::string, int> error_of(const std::string& text) {
   return {"", 0};
 }
 
-TEST(PlantParams, ParsesTheIssueExample) {
+TEST(PlantParams, ParsesAValidDescription) {
   const PlantParams p = parse_plant_params(kValid, "plant.toml");
   EXPECT_EQ(p.cycles, 10);
   ASSERT_EQ(p.ages.size(), 2u);
