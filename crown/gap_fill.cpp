@@ -20,17 +20,17 @@ Raster weighted_channel(const Raster& rgb, const Mask& source, int c) {
 
 Raster fill_gaps(const Raster& rgb, const Mask& crown, const Mask& foliage) {
   Raster out = rgb;
-  Mask source(rgb.width, rgb.height), todo(rgb.width, rgb.height), all(rgb.width, rgb.height);
+  Mask source(rgb.width, rgb.height), unfilled(rgb.width, rgb.height), all(rgb.width, rgb.height);
   all.inside.assign(all.inside.size(), 1);
   for (int y = 0; y < rgb.height; ++y) {
     for (int x = 0; x < rgb.width; ++x) {
       source.set(x, y, crown.at(x, y) && foliage.at(x, y));
-      todo.set(x, y, crown.at(x, y) && !foliage.at(x, y));
+      unfilled.set(x, y, crown.at(x, y) && !foliage.at(x, y));
     }
   }
   if (source.count() == 0) return out;
   // Normalized convolution: blur(colour x foliage) / blur(foliage), wider until all gaps are met.
-  for (double sigma = 2.0; todo.count() > 0 && sigma < 2.0 * (rgb.width + rgb.height);
+  for (double sigma = 2.0; unfilled.count() > 0 && sigma < 2.0 * (rgb.width + rgb.height);
        sigma *= 2.0) {
     const Raster weight = masked_gaussian_blur(weighted_channel(rgb, source, -1), all, sigma);
     Raster channels[3];
@@ -39,9 +39,9 @@ Raster fill_gaps(const Raster& rgb, const Mask& crown, const Mask& foliage) {
     }
     for (int y = 0; y < rgb.height; ++y) {
       for (int x = 0; x < rgb.width; ++x) {
-        if (!todo.at(x, y) || weight.at(x, y) < 1e-3f) continue;
+        if (!unfilled.at(x, y) || weight.at(x, y) < 1e-3f) continue;
         for (int c = 0; c < 3; ++c) out.at(x, y, c) = channels[c].at(x, y) / weight.at(x, y);
-        todo.set(x, y, false);
+        unfilled.set(x, y, false);
       }
     }
   }

@@ -3,7 +3,7 @@
 // blank), a header click sorts a table. Writes a screenshot of the page top and the page's tables
 // (every row, all pages) as JSON for check_numbers.py.
 //   node check_report.mjs REPORT/index.html SCREENSHOT.png TABLES.json
-import puppeteer from 'puppeteer-core';
+import { launchBrowser } from './browser.mjs';
 import fs from 'node:fs';
 import path from 'node:path';
 
@@ -15,12 +15,7 @@ if (!tablesPath) {
 const failures = [];
 const fail = (what) => { failures.push(what); console.error(`FAIL: ${what}`); };
 
-const browser = await puppeteer.launch({
-  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
-  headless: true,
-  // No GPU here: WebGL through SwiftShader, Chromium's software renderer.
-  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-dev-shm-usage'],
-});
+const browser = await launchBrowser();
 try {
   const page = await browser.newPage();
   await page.setViewport({ width: 1280, height: 900 });

@@ -2,7 +2,7 @@
 // Chromium: navigation to the load event, and to the first screen drawn (the plots and 3D views
 // in view, which the page draws lazily). Prints JSON; run several times and take the median.
 //   node time_open.mjs REPORT/index.html
-import puppeteer from 'puppeteer-core';
+import { launchBrowser } from './browser.mjs';
 import path from 'node:path';
 
 const [indexPath] = process.argv.slice(2);
@@ -10,11 +10,7 @@ if (!indexPath) {
   console.error('usage: node time_open.mjs REPORT/index.html');
   process.exit(2);
 }
-const browser = await puppeteer.launch({
-  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
-  headless: true,
-  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-dev-shm-usage'],
-});
+const browser = await launchBrowser();
 try {
   const page = await browser.newPage();
   await page.setViewport({ width: 1280, height: 900 });

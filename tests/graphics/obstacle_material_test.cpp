@@ -129,14 +129,20 @@ TEST_F(ObstacleMaterial, VtpRoundTripKeepsTheMaterial) {
 
 using testing::stone_pixels;
 
-TEST_F(ObstacleMaterial, RendersDrawTheStoneInFlatInstancedAndColouredPaths) {
-  if (!render_available()) GTEST_SKIP() << "built without VTK";
-  if (!display_available()) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
+// A 200 x 160 front view without the ground plane, for counting the obstacles' pixels.
+RenderOptions small_front_view() {
   RenderOptions o;
   o.width = 200;
   o.height = 160;
   o.view = View::kFront;
   o.ground = false;
+  return o;
+}
+
+TEST_F(ObstacleMaterial, RendersDrawTheStoneInFlatInstancedAndColouredPaths) {
+  if (!render_available()) GTEST_SKIP() << "built without VTK";
+  if (!display_available()) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
+  RenderOptions o = small_front_view();
   const std::size_t without = stone_pixels(render_mesh(tree_, o));
   EXPECT_GT(stone_pixels(render_mesh(mesh_, o)), without + 400);
   InstancedMesh scene = InstancedMesh::single(tree_);
@@ -166,11 +172,7 @@ std::size_t dark_grey_pixels(const Image& image) {
 TEST_F(ObstacleMaterial, TranslucentObstaclesAreSeenThrough) {
   if (!render_available()) GTEST_SKIP() << "built without VTK";
   if (!display_available()) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
-  RenderOptions o;
-  o.width = 200;
-  o.height = 160;
-  o.view = View::kFront;
-  o.ground = false;
+  RenderOptions o = small_front_view();
   TriangleMesh clear = tree_;
   TriangleMesh square = stone_square(0.5f, -0.5f);
   for (auto& m : square.materials) m = Material::kTranslucentObstacle;
@@ -189,11 +191,7 @@ TEST_F(ObstacleMaterial, OpacityFollowsEachObstaclesTranslucency) {
   if (!display_available()) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
   EXPECT_FLOAT_EQ(translucent_obstacle_opacity(0.2f), 0.8f);
   EXPECT_FLOAT_EQ(translucent_obstacle_opacity(1.0f), 0.15f);
-  RenderOptions o;
-  o.width = 200;
-  o.height = 160;
-  o.view = View::kFront;
-  o.ground = false;
+  RenderOptions o = small_front_view();
   o.frame = Eigen::AlignedBox3f(mesh_.bbox_min(), mesh_.bbox_max());  // one frame for all three
   const Image background = render_mesh(tree_, o);
   const auto change = [&](float translucency) {
