@@ -2,14 +2,17 @@
 // an instanced scene stores each shared mesh once and references it from one node per instance.
 // Attributes are application-specific vertex attributes (glTF 2.0 section 3.7.2.1: names start
 // with an underscore), e.g. "age" -> "_AGE"; mesh.extras.fspm_attributes maps them back.
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <deque>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
@@ -53,16 +56,13 @@ class GlbBuilder {
     using nlohmann::json;
     const std::size_t nv = mesh.vertex_count();
     if (mesh.empty() || nv == 0) return -1;
-    // Indices split by material in the order of kMaterials (bark, leaf, obstacle, crown), which is
-    // also the order of the glTF materials.
+    // Indices split by glTF material: the kMaterials order (bark, leaf, obstacle, crown,
+    // translucent obstacle), then one material per translucency of translucent obstacles.
     auto& indices = index_store_.emplace_back();
-    for (Material m : kMaterials) {
-      indices[static_cast<std::size_t>(m)].reserve(3 * mesh.triangle_count(m));
-    }
+    const std::vector<std::size_t> material_of = triangle_materials(mesh);
     for (std::size_t i = 0; i < mesh.triangle_count(); ++i) {
-      const auto m =
-          static_cast<std::size_t>(i < mesh.materials.size() ? mesh.materials[i] : Material::kBark);
-      indices[m].insert(indices[m].end(), mesh.triangles[i].begin(), mesh.triangles[i].end());
+      auto& list = indices[material_of[i]];
+      list.insert(list.end(), mesh.triangles[i].begin(), mesh.triangles[i].end());
     }
     json attributes = json::object();
     const Eigen::Vector3f lo = mesh.bbox_min();
@@ -101,11 +101,11 @@ class GlbBuilder {
     }
     attributes.update(extra_attributes);
     json primitives = json::array();
-    for (std::size_t m = 0; m < indices.size(); ++m) {
-      if (indices[m].empty()) continue;
+    for (const auto& [m, list] : indices) {
+      if (list.empty()) continue;
       const std::size_t acc =
-          add_accessor(add_view(indices[m].data(), indices[m].size() * 4, kElementArrayBuffer),
-                       kUnsignedInt, indices[m].size(), "SCALAR");
+          add_accessor(add_view(list.data(), list.size() * 4, kElementArrayBuffer), kUnsignedInt,
+                       list.size(), "SCALAR");
       primitives.push_back(
           {{"attributes", attributes}, {"indices", acc}, {"material", m}, {"mode", 4}});
     }
@@ -200,8 +200,45 @@ class GlbBuilder {
 
   static double rounded(float x) { return std::round(1000.0 * x) / 1000.0; }  // 0.45, not 0.449999
 
-  // One glTF material per fspm Material, in the order of kMaterials (the primitives' index).
-  static nlohmann::json materials_json() {
+  // The glTF material of each triangle: its fspm Material's index, or for a translucent obstacle
+  // carrying the vertex attribute "translucency" the material of that translucency gamma (one
+  // per distinct gamma in the file, after the kMaterials ones).
+  std::vector<std::size_t> triangle_materials(const TriangleMesh& mesh) {
+    std::vector<std::size_t> out(mesh.triangle_count());
+    const bool gammas = mesh.has_attribute("translucency");
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      const Material m = i < mesh.materials.size() ? mesh.materials[i] : Material::kBark;
+      out[i] = static_cast<std::size_t>(m);
+      if (m != Material::kTranslucentObstacle || !gammas) continue;
+      const float gamma = mesh.attribute("translucency")[mesh.triangles[i][0]];
+      auto [it, added] = translucencies_.emplace(gamma, kMaterials.size() + translucencies_.size());
+      out[i] = it->second;
+    }
+    return out;
+  }
+
+  // One glTF material per fspm Material, in the order of kMaterials (the primitives' index),
+  // then one per translucency gamma of translucent obstacles: alpha 1 - gamma
+  // (translucent_obstacle_opacity, as the renders draw them), blended.
+  nlohmann::json materials_json() const {
+    nlohmann::json out = base_materials_json();
+    std::vector<std::pair<std::size_t, float>> extra;
+    for (const auto& [gamma, index] : translucencies_) extra.emplace_back(index, gamma);
+    std::sort(extra.begin(), extra.end());
+    for (const auto& [index, gamma] : extra) {
+      nlohmann::json material = out[static_cast<std::size_t>(Material::kTranslucentObstacle)];
+      char name[64];
+      std::snprintf(name, sizeof(name), "translucent_obstacle_%g", rounded(gamma));
+      material["name"] = name;
+      material["pbrMetallicRoughness"]["baseColorFactor"][3] =
+          rounded(translucent_obstacle_opacity(gamma));
+      material["extras"] = {{"translucency", rounded(gamma)}};
+      out.push_back(std::move(material));
+    }
+    return out;
+  }
+
+  static nlohmann::json base_materials_json() {
     nlohmann::json out = nlohmann::json::array();
     for (Material m : kMaterials) {
       const std::array<float, 3> c = material_color(m);
@@ -224,8 +261,9 @@ class GlbBuilder {
   }
 
   std::vector<View> views_;
-  std::deque<std::array<std::vector<std::uint32_t>, kMaterials.size()>> index_store_;  // stable
-  std::deque<std::vector<float>> color_store_;  // stable addresses for COLOR_0 views
+  std::deque<std::map<std::size_t, std::vector<std::uint32_t>>> index_store_;  // stable
+  std::map<float, std::size_t> translucencies_;  // gamma -> glTF material
+  std::deque<std::vector<float>> color_store_;   // stable addresses for COLOR_0 views
   std::deque<std::vector<float>> float_store_;
   std::deque<std::vector<std::uint16_t>> short_store_;
   nlohmann::json buffer_views_ = nlohmann::json::array();

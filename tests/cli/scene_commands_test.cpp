@@ -2,7 +2,10 @@
 // it, and fspm scene upgrade rewrites the earlier layouts.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "graphics/image.hpp"
@@ -92,6 +95,47 @@ TEST(SceneCli, MeshOfASceneHasItsOpaqueAndTranslucentObstaclesWhole) {
   const std::string obj = read_text(dir / "s.obj");
   EXPECT_EQ(faces_after(obj, "obstacle"), 12u);  // the far wall too: mesh files keep everything
   EXPECT_EQ(faces_after(obj, "translucent_obstacle"), 12u);
+}
+
+// Each translucent obstacle gets a glTF material of alpha 1 - gamma: two walls letting 30 % and
+// 60 % of the light through are blended at 0.7 and 0.4, an opaque one stays in stone.
+TEST(SceneCli, GlbGivesEachTranslucentObstacleItsOwnAlpha) {
+  const auto dir = scratch_dir("scene_glb_alpha");
+  write_small_tree(dir);
+  const std::string scene = (dir / "s.json").string();
+  const double gamma_a = 0.3, gamma_b = 0.6;
+  write_text(scene, R"({"fspm_scene": 2, "obstacles": [
+      {"type": "wall", "from": [3, -2], "to": [3, 2], "height": 2, "translucency": 0.3},
+      {"type": "wall", "from": [-3, -2], "to": [-3, 2], "height": 2, "translucency": 0.6},
+      {"type": "wall", "from": [-2, 3], "to": [2, 3], "height": 2}],
+      "plants": [{"file": "t.tree"}]})");
+  const auto r = run_fspm("mesh " + scene + " -o " + (dir / "s.glb").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string glb = read_text(dir / "s.glb");
+  ASSERT_GT(glb.size(), 20u);
+  std::uint32_t json_bytes = 0;
+  std::memcpy(&json_bytes, glb.data() + 12, 4);
+  const auto doc = nlohmann::json::parse(glb.substr(20, json_bytes));
+  // The alphas of the materials the obstacle primitives use, with their index counts.
+  std::map<double, std::size_t> alpha_indices;
+  for (const auto& mesh : doc["meshes"]) {
+    if (mesh["name"] != "obstacles") continue;
+    for (const auto& prim : mesh["primitives"]) {
+      ASSERT_TRUE(prim.contains("material"));
+      const auto& material = doc["materials"][prim["material"].get<std::size_t>()];
+      const double alpha = material["pbrMetallicRoughness"]["baseColorFactor"][3].get<double>();
+      if (alpha < 1.0) {
+        EXPECT_EQ(material["alphaMode"], "BLEND");
+      }
+      alpha_indices[std::round(alpha * 1000.0) / 1000.0] +=
+          doc["accessors"][prim["indices"].get<std::size_t>()]["count"].get<std::size_t>();
+    }
+  }
+  const std::map<double, std::size_t> expected = {
+      {std::round((1.0 - gamma_b) * 1000.0) / 1000.0, 36},  // 12 triangles a wall
+      {std::round((1.0 - gamma_a) * 1000.0) / 1000.0, 36},
+      {1.0, 36}};
+  EXPECT_EQ(alpha_indices, expected);
 }
 
 TEST(SceneCli, UpgradeRewritesEarlierLayoutsWithTheSameLight) {
