@@ -3,11 +3,14 @@
 // orbit (left drag), pan (right drag or shift + left drag), zoom (wheel), growth steps on [ and ]
 // (or left/right arrows), shadows from a sun with a 3x3 percentage-closer filtered shadow map
 // (Pirk 6.2.3) toggled with S, R resets the view, Esc or Q quits; the frame time is shown in the
-// title. With a screenshot path it renders `frames` frames into an offscreen framebuffer, writes
-// the image and returns (tests run it under Xvfb with Mesa's software OpenGL).
+// title. Translucent obstacles are blended at the opacity of their translucency after the opaque
+// geometry, without writing depth. With a screenshot path it renders `frames` frames into an
+// offscreen framebuffer, writes the image and returns (tests run it under Xvfb with Mesa's software
+// OpenGL).
 #include <string>
 #include <vector>
 
+#include "graphics/instance_lod.hpp"
 #include "graphics/instanced_mesh.hpp"
 #include "graphics/triangle_mesh.hpp"
 
@@ -28,7 +31,7 @@ struct ViewerOptions {
 struct ViewerStats {
   int frames = 0;
   double mean_frame_ms = 0.0;  // CPU wall time per frame, glFinish included
-  std::size_t triangles = 0;   // of the step shown last
+  std::size_t triangles = 0;   // of the step shown last (with per-instance LOD: drawn last)
 };
 
 // True when fspm was built with the viewer (FSPM_WITH_VIEWER).
@@ -49,5 +52,12 @@ ViewerStats run_viewer(const std::vector<TriangleMesh>& steps, const std::vector
 ViewerStats run_instanced_viewer(const std::vector<InstancedMesh>& steps,
                                  const std::vector<double>& labels, const ViewerOptions& options,
                                  const std::vector<InstancedMesh>& coarse_steps = {});
+
+// A scene of many plants with level of detail per instance (instance_lod.hpp): every frame, the
+// plants outside the view are skipped and the others drawn at the resolution and leaf share
+// chosen for the camera. One step (no growth). Same errors as above, and ValueError for bad
+// level-of-detail options.
+ViewerStats run_lod_viewer(const LodScene& scene, const LodOptions& lod_options,
+                           const ViewerOptions& options);
 
 }  // namespace fspm::graphics

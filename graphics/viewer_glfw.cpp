@@ -39,12 +39,12 @@ void main() {}
 const char* kSceneVs = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
-layout(location = 2) in vec3 color;
+layout(location = 2) in vec4 color;  // alpha below 1: translucent obstacles
 layout(location = 3) in mat4 model;  // per instance: rotation times uniform scale, translation
 uniform mat4 mvp;
 uniform mat4 light_mvp;
 out vec3 v_normal;
-out vec3 v_color;
+out vec4 v_color;
 out vec3 v_world;
 out vec4 v_light;
 void main() {
@@ -58,7 +58,7 @@ void main() {
 )";
 const char* kSceneFs = R"(#version 330 core
 in vec3 v_normal;
-in vec3 v_color;
+in vec4 v_color;
 in vec3 v_world;
 in vec4 v_light;
 uniform vec3 sun;
@@ -85,8 +85,8 @@ void main() {
   float diffuse = max(dot(n, sun), 0.0);
   float specular = pow(max(dot(n, normalize(sun + v)), 0.0), 32.0) * 0.15;
   float s = lit();
-  vec3 c = v_color * (0.35 + 0.65 * diffuse * s) + vec3(specular * s);
-  frag = vec4(pow(c, vec3(1.0 / 1.2)), 1.0);
+  vec3 c = v_color.rgb * (0.35 + 0.65 * diffuse * s) + vec3(specular * s);
+  frag = vec4(pow(c, vec3(1.0 / 1.2)), v_color.a);
 }
 )";
 
@@ -128,14 +128,18 @@ glm::vec3 colormap(float t) {  // blue -> cyan -> green -> yellow -> red, as the
   return {0, x, 1};
 }
 
-// One shared mesh on the GPU: interleaved position, normal, colour, indices, and a buffer of
-// per-instance model matrices (attribute locations 3-6, advanced once per instance).
+// One shared mesh on the GPU: interleaved position, normal, colour (RGBA), indices with the
+// opaque triangles first and the translucent ones after them, and a buffer of per-instance model
+// matrices (attribute locations 3-6, advanced once per instance).
 struct GpuMesh {
   GLuint vao = 0, vbo = 0, ibo = 0, instance_vbo = 0;
   GLsizei indices = 0;
+  GLsizei opaque_indices = 0;  // the first ones; the rest are blended
   GLsizei instances = 0;
 };
 
+// One GpuMesh per mesh of the step (a default one for an empty mesh), so a level-of-detail
+// frame can set the instances of mesh k.
 struct GpuStep {
   std::vector<GpuMesh> meshes;
   std::size_t triangles = 0;  // of the explicit scene
@@ -143,6 +147,7 @@ struct GpuStep {
 
 struct Scene {
   glm::vec3 lo{0.0f}, hi{0.0f};
+  float value_lo = 1e30f, value_hi = -1e30f;  // of the colour attribute
 };
 
 // A step as the viewer needs it: each mesh with the model matrices of its instances, and the
@@ -154,7 +159,18 @@ struct StepRef {
   std::vector<float> value_offsets;            // one per mesh
 };
 
+// Per-instance level of detail: the scene whose instances are chosen anew every frame.
+struct LodView {
+  const LodScene* scene = nullptr;
+  LodOptions options;
+};
+
 StepRef step_ref(const TriangleMesh& mesh) { return {{&mesh}, {{glm::mat4(1.0f)}}, {0.0f}}; }
+
+glm::mat4 model_matrix(const MeshInstance& inst) {
+  const Eigen::Matrix4f m = inst.matrix();  // column-major, as glm
+  return glm::make_mat4(m.data());
+}
 
 StepRef step_ref(const InstancedMesh& scene, const std::string& color_by) {
   StepRef r;
@@ -168,8 +184,22 @@ StepRef step_ref(const InstancedMesh& scene, const std::string& color_by) {
       r.models.emplace_back();
       r.value_offsets.push_back(offset);
     }
-    const Eigen::Matrix4f m = inst.matrix();  // column-major, as glm
-    r.models[it->second].push_back(glm::make_mat4(m.data()));
+    r.models[it->second].push_back(model_matrix(inst));
+  }
+  return r;
+}
+
+// Every mesh of a level-of-detail scene, each plant placed at its finest variant (the bounds
+// and the first frame before any choice).
+StepRef step_ref(const LodScene& scene) {
+  StepRef r;
+  r.meshes = scene.meshes();
+  r.models.resize(r.meshes.size());
+  r.value_offsets.assign(r.meshes.size(), 0.0f);
+  std::vector<InstanceLod> finest(scene.placements.size());
+  for (auto& c : finest) c.visible = true;
+  for (const MeshInstance& inst : lod_instances(scene, finest)) {
+    r.models[inst.mesh].push_back(model_matrix(inst));
   }
   return r;
 }
@@ -186,8 +216,16 @@ void bounds(const StepRef& step, glm::vec3& lo, glm::vec3& hi) {
   }
 }
 
+void set_instances(GpuMesh& g, const std::vector<glm::mat4>& models) {
+  glBindBuffer(GL_ARRAY_BUFFER, g.instance_vbo);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(models.size() * sizeof(glm::mat4)),
+               models.data(), GL_DYNAMIC_DRAW);
+  g.instances = static_cast<GLsizei>(models.size());
+}
+
 GpuMesh upload_raw(const std::vector<float>& v, const std::vector<std::uint32_t>& idx,
-                   const std::vector<glm::mat4>& models) {
+                   std::size_t opaque_indices, const std::vector<glm::mat4>& models) {
+  constexpr GLsizei kStride = 10 * sizeof(float);
   GpuMesh g;
   glGenVertexArrays(1, &g.vao);
   glBindVertexArray(g.vao);
@@ -199,15 +237,13 @@ GpuMesh upload_raw(const std::vector<float>& v, const std::vector<std::uint32_t>
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.ibo);
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(idx.size() * 4), idx.data(),
                GL_STATIC_DRAW);
-  for (GLuint a = 0; a < 3; ++a) {
+  for (GLuint a = 0; a < 3; ++a) {  // position, normal (3 floats), colour (4)
     glEnableVertexAttribArray(a);
-    glVertexAttribPointer(a, 3, GL_FLOAT, GL_FALSE, 9 * sizeof(float),
+    glVertexAttribPointer(a, a == 2 ? 4 : 3, GL_FLOAT, GL_FALSE, kStride,
                           reinterpret_cast<const void*>(static_cast<std::uintptr_t>(a * 12)));
   }
   glGenBuffers(1, &g.instance_vbo);
-  glBindBuffer(GL_ARRAY_BUFFER, g.instance_vbo);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(models.size() * sizeof(glm::mat4)),
-               models.data(), GL_STATIC_DRAW);
+  set_instances(g, models);
   for (GLuint c = 0; c < 4; ++c) {  // a mat4 attribute takes four vec4 locations
     glEnableVertexAttribArray(3 + c);
     glVertexAttribPointer(3 + c, 4, GL_FLOAT, GL_FALSE, sizeof(glm::mat4),
@@ -216,51 +252,77 @@ GpuMesh upload_raw(const std::vector<float>& v, const std::vector<std::uint32_t>
   }
   glBindVertexArray(0);
   g.indices = static_cast<GLsizei>(idx.size());
-  g.instances = static_cast<GLsizei>(models.size());
+  g.opaque_indices = static_cast<GLsizei>(opaque_indices);
   return g;
 }
 
-// Interleaved position, normal, colour of one shared mesh.
-GpuMesh upload(const TriangleMesh& mesh, const std::vector<glm::mat4>& models,
-               const ViewerOptions& o, float value_lo, float value_hi, float value_offset) {
-  std::vector<float> v;
-  v.reserve(mesh.vertex_count() * 9);
-  auto rgb = [](Material m) {
+// Per-vertex RGBA of one mesh: bark colour or the attribute's colour map; leaves and crowns in
+// their colour unless coloured by an attribute; obstacles always in stone, translucent ones at
+// the opacity of their translucency (translucent_obstacle_opacity, as the renders).
+std::vector<glm::vec4> vertex_colors(const TriangleMesh& mesh, const ViewerOptions& o,
+                                     const Scene& scene, float value_offset) {
+  auto rgba = [](Material m, float alpha) {
     const std::array<float, 3> c = material_color(m);
-    return glm::vec3(c[0], c[1], c[2]);
+    return glm::vec4(c[0], c[1], c[2], alpha);
   };
-  std::vector<glm::vec3> colors(mesh.vertex_count(), rgb(Material::kBark));
+  std::vector<glm::vec4> colors(mesh.vertex_count(), rgba(Material::kBark, 1.0f));
   if (!o.color_by.empty()) {
     const auto a = mesh.attribute(o.color_by);
-    const float span = value_hi > value_lo ? value_hi - value_lo : 1.0f;
-    for (std::size_t i = 0; i < colors.size(); ++i)
-      colors[i] = colormap((a[i] + value_offset - value_lo) / span);
+    const float lo = scene.value_lo, hi = scene.value_hi;
+    const float span = hi > lo ? hi - lo : 1.0f;
+    for (std::size_t i = 0; i < colors.size(); ++i) {
+      colors[i] = glm::vec4(colormap((a[i] + value_offset - lo) / span), 1.0f);
+    }
   }
-  // Leaves and crowns in their colour unless coloured by an attribute; obstacles always in stone.
+  const bool gammas = mesh.has_attribute("translucency");
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
     const Material m = mesh.materials[t];
     const bool foliage = m == Material::kLeaf || m == Material::kCrown;
     if (m == Material::kBark || (foliage && !o.color_by.empty())) continue;
-    for (auto i : mesh.triangles[t]) colors[i] = rgb(m);
+    for (auto i : mesh.triangles[t]) {
+      float alpha = 1.0f;
+      if (m == Material::kTranslucentObstacle) {
+        alpha = gammas ? translucent_obstacle_opacity(mesh.attribute("translucency")[i])
+                       : kTranslucentObstacleOpacity;
+      }
+      colors[i] = rgba(m, alpha);
+    }
   }
+  return colors;
+}
+
+// Interleaved position, normal, colour of one shared mesh; translucent obstacles' triangles
+// after the others, so they are drawn last.
+GpuMesh upload(const TriangleMesh& mesh, const std::vector<glm::mat4>& models,
+               const ViewerOptions& o, const Scene& scene, float value_offset) {
+  const std::vector<glm::vec4> colors = vertex_colors(mesh, o, scene, value_offset);
+  std::vector<float> v;
+  v.reserve(mesh.vertex_count() * 10);
   for (std::size_t i = 0; i < mesh.vertex_count(); ++i) {
     const auto& p = mesh.positions[i];
     const auto& n = mesh.normals[i];
-    v.insert(v.end(),
-             {p.x(), p.y(), p.z(), n.x(), n.y(), n.z(), colors[i].r, colors[i].g, colors[i].b});
+    const glm::vec4& c = colors[i];
+    v.insert(v.end(), {p.x(), p.y(), p.z(), n.x(), n.y(), n.z(), c.r, c.g, c.b, c.a});
   }
-  std::vector<std::uint32_t> idx;
+  std::vector<std::uint32_t> idx, translucent;
   idx.reserve(mesh.triangle_count() * 3);
-  for (const auto& t : mesh.triangles) idx.insert(idx.end(), t.begin(), t.end());
-  return upload_raw(v, idx, models);
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    auto& to = mesh.materials[t] == Material::kTranslucentObstacle ? translucent : idx;
+    to.insert(to.end(), mesh.triangles[t].begin(), mesh.triangles[t].end());
+  }
+  const std::size_t opaque = idx.size();
+  idx.insert(idx.end(), translucent.begin(), translucent.end());
+  return upload_raw(v, idx, opaque, models);
 }
 
-GpuStep upload(const StepRef& step, const ViewerOptions& o, float value_lo, float value_hi) {
+GpuStep upload(const StepRef& step, const ViewerOptions& o, const Scene& scene) {
   GpuStep g;
   for (std::size_t k = 0; k < step.meshes.size(); ++k) {
-    if (step.meshes[k]->empty() || step.models[k].empty()) continue;
-    g.meshes.push_back(
-        upload(*step.meshes[k], step.models[k], o, value_lo, value_hi, step.value_offsets[k]));
+    if (step.meshes[k]->empty()) {
+      g.meshes.emplace_back();  // nothing to draw, kept so indices match the step's meshes
+      continue;
+    }
+    g.meshes.push_back(upload(*step.meshes[k], step.models[k], o, scene, step.value_offsets[k]));
     g.triangles += step.meshes[k]->triangle_count() * step.models[k].size();
   }
   return g;
@@ -275,17 +337,26 @@ GpuMesh upload_ground(const Scene& scene) {
   for (int k = 0; k < 4; ++k) {
     const float x = (k == 1 || k == 2) ? half : -half;
     const float y = (k >= 2) ? half : -half;
-    v.insert(v.end(), {c.x + x, c.y + y, scene.lo.z, 0, 0, 1, 0.55f, 0.62f, 0.45f});
+    v.insert(v.end(), {c.x + x, c.y + y, scene.lo.z, 0, 0, 1, 0.55f, 0.62f, 0.45f, 1.0f});
   }
-  return upload_raw(v, {0, 1, 2, 0, 2, 3}, {glm::mat4(1.0f)});
+  return upload_raw(v, {0, 1, 2, 0, 2, 3}, 6, {glm::mat4(1.0f)});
 }
 
-void draw(const GpuMesh& g) {
+enum class Part { kAll, kOpaque, kTranslucent };
+
+void draw(const GpuMesh& g, Part part = Part::kAll) {
+  if (g.vao == 0 || g.instances == 0) return;
+  const GLsizei first = part == Part::kTranslucent ? g.opaque_indices : 0;
+  const GLsizei end = part == Part::kOpaque ? g.opaque_indices : g.indices;
+  if (end <= first) return;
   glBindVertexArray(g.vao);
-  glDrawElementsInstanced(GL_TRIANGLES, g.indices, GL_UNSIGNED_INT, nullptr, g.instances);
+  glDrawElementsInstanced(GL_TRIANGLES, end - first, GL_UNSIGNED_INT,
+                          reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * 4),
+                          g.instances);
 }
 
 void release(GpuMesh& g) {
+  if (g.vao == 0) return;
   glDeleteBuffers(1, &g.vbo);
   glDeleteBuffers(1, &g.ibo);
   glDeleteBuffers(1, &g.instance_vbo);
@@ -379,8 +450,10 @@ bool viewer_available() { return true; }
 
 namespace {
 
-ViewerStats view(const std::vector<StepRef>& steps, const std::vector<double>& labels,
-                 const ViewerOptions& o, const std::vector<StepRef>& coarse_steps) {
+// Step 1: the arguments checked before any window opens; the bounds of every step and the range
+// of the colour attribute.
+Scene check_and_measure(const std::vector<StepRef>& steps, const ViewerOptions& o,
+                        const std::vector<StepRef>& coarse_steps) {
   if (steps.empty()) throw ValueError("nothing to view");
   if (!coarse_steps.empty() && coarse_steps.size() != steps.size()) {
     throw ValueError("coarse meshes must match the growth steps one to one");
@@ -392,24 +465,26 @@ ViewerStats view(const std::vector<StepRef>& steps, const std::vector<double>& l
   }
   if (!o.screenshot.empty()) check_image_path(o.screenshot);
   if (o.width < 1 || o.height < 1 || o.frames < 1) throw ValueError("bad viewer size or frames");
-
   Scene scene;
   scene.lo = glm::vec3(1e30f);
   scene.hi = glm::vec3(-1e30f);
-  float value_lo = 1e30f, value_hi = -1e30f;
   for (const auto& step : steps) {
     bounds(step, scene.lo, scene.hi);
     if (o.color_by.empty()) continue;
     for (std::size_t k = 0; k < step.meshes.size(); ++k) {
       for (float x : step.meshes[k]->attribute(o.color_by)) {
-        value_lo = std::min(value_lo, x + step.value_offsets[k]);
-        value_hi = std::max(value_hi, x + step.value_offsets[k]);
+        scene.value_lo = std::min(scene.value_lo, x + step.value_offsets[k]);
+        scene.value_hi = std::max(scene.value_hi, x + step.value_offsets[k]);
       }
     }
   }
   if (scene.lo.x > scene.hi.x) scene.lo = scene.hi = glm::vec3(0.0f);
+  return scene;
+}
 
-  GlfwSession session;
+// Step 2: an OpenGL 3.3 core window (hidden for screenshots) with the camera framing the scene
+// and the input callbacks on `state`.
+GLFWwindow* open_window(const ViewerOptions& o, const Scene& scene, int steps, State& state) {
   const bool offscreen = !o.screenshot.empty();
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
@@ -420,14 +495,11 @@ ViewerStats view(const std::vector<StepRef>& steps, const std::vector<double>& l
   if (window == nullptr) throw IoError("cannot open an OpenGL 3.3 core window");
   glfwMakeContextCurrent(window);
   glfwSwapInterval(offscreen ? 0 : 1);
-
-  State state;
-  const glm::vec3 center = 0.5f * (scene.lo + scene.hi);
   const float radius = std::max(0.5f * glm::length(scene.hi - scene.lo), 0.1f);
-  state.camera.target = center;
+  state.camera.target = 0.5f * (scene.lo + scene.hi);
   state.camera.distance = 2.6f * radius;
   state.home = state.camera;
-  state.steps = static_cast<int>(steps.size());
+  state.steps = steps;
   state.step = state.steps - 1;
   state.shadows = o.shadows;
   glfwSetWindowUserPointer(window, &state);
@@ -435,103 +507,192 @@ ViewerStats view(const std::vector<StepRef>& steps, const std::vector<double>& l
   glfwSetMouseButtonCallback(window, on_button);
   glfwSetCursorPosCallback(window, on_cursor);
   glfwSetScrollCallback(window, on_scroll);
+  return window;
+}
 
-  const GLuint shadow_program = program(kShadowVs, kShadowFs);
-  const GLuint scene_program = program(kSceneVs, kSceneFs);
-  std::vector<GpuStep> gpu;
-  for (const auto& step : steps) gpu.push_back(upload(step, o, value_lo, value_hi));
-  std::vector<GpuStep> gpu_coarse;
-  for (const auto& step : coarse_steps) gpu_coarse.push_back(upload(step, o, value_lo, value_hi));
-  GpuMesh ground = upload_ground(scene);
+// Step 3: shaders, every step's meshes and the ground on the GPU.
+struct GpuScene {
+  GLuint shadow_program = 0, scene_program = 0;
+  std::vector<GpuStep> steps, coarse;
+  GpuMesh ground;
+};
 
+GpuScene upload_scene(const std::vector<StepRef>& steps, const std::vector<StepRef>& coarse,
+                      const ViewerOptions& o, const Scene& scene) {
+  GpuScene g;
+  g.shadow_program = program(kShadowVs, kShadowFs);
+  g.scene_program = program(kSceneVs, kSceneFs);
+  for (const auto& step : steps) g.steps.push_back(upload(step, o, scene));
+  for (const auto& step : coarse) g.coarse.push_back(upload(step, o, scene));
+  g.ground = upload_ground(scene);
+  return g;
+}
+
+void release(GpuScene& g) {
+  for (auto* list : {&g.steps, &g.coarse}) {
+    for (auto& step : *list) {
+      for (auto& m : step.meshes) release(m);
+    }
+  }
+  release(g.ground);
+  glDeleteProgram(g.shadow_program);
+  glDeleteProgram(g.scene_program);
+}
+
+// The shadow map and, for screenshots, the offscreen target (a hidden window's default
+// framebuffer is undefined).
+struct Targets {
   GLuint shadow_tex = 0, shadow_fbo = 0;
-  glGenTextures(1, &shadow_tex);
-  glBindTexture(GL_TEXTURE_2D, shadow_tex);
+  GLuint target_fbo = 0, color_rb = 0, depth_rb = 0;  // 0: the window
+};
+
+Targets make_targets(const ViewerOptions& o) {
+  Targets t;
+  glGenTextures(1, &t.shadow_tex);
+  glBindTexture(GL_TEXTURE_2D, t.shadow_tex);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, kShadowSize, kShadowSize, 0,
                GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glGenFramebuffers(1, &shadow_fbo);
-  glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, shadow_tex, 0);
+  glGenFramebuffers(1, &t.shadow_fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, t.shadow_fbo);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, t.shadow_tex, 0);
   glDrawBuffer(GL_NONE);
   glReadBuffer(GL_NONE);
-
-  // Offscreen target for screenshots: a hidden window's default framebuffer is undefined.
-  GLuint target_fbo = 0, color_rb = 0, depth_rb = 0;
-  if (offscreen) {
-    glGenFramebuffers(1, &target_fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, target_fbo);
-    glGenRenderbuffers(1, &color_rb);
-    glBindRenderbuffer(GL_RENDERBUFFER, color_rb);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, o.width, o.height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_rb);
-    glGenRenderbuffers(1, &depth_rb);
-    glBindRenderbuffer(GL_RENDERBUFFER, depth_rb);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, o.width, o.height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_rb);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      throw IoError("cannot create the offscreen framebuffer");
-    }
+  if (o.screenshot.empty()) return t;
+  glGenFramebuffers(1, &t.target_fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, t.target_fbo);
+  glGenRenderbuffers(1, &t.color_rb);
+  glBindRenderbuffer(GL_RENDERBUFFER, t.color_rb);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, o.width, o.height);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, t.color_rb);
+  glGenRenderbuffers(1, &t.depth_rb);
+  glBindRenderbuffer(GL_RENDERBUFFER, t.depth_rb);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, o.width, o.height);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t.depth_rb);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    throw IoError("cannot create the offscreen framebuffer");
   }
+  return t;
+}
 
-  const glm::vec3 sun = glm::normalize(glm::vec3(0.5f, -0.4f, 1.0f));
+void release(Targets& t) {
+  glDeleteFramebuffers(1, &t.shadow_fbo);
+  glDeleteTextures(1, &t.shadow_tex);
+  if (t.target_fbo == 0) return;
+  glDeleteFramebuffers(1, &t.target_fbo);
+  glDeleteRenderbuffers(1, &t.color_rb);
+  glDeleteRenderbuffers(1, &t.depth_rb);
+}
+
+// Step 4: the matrices of one frame: the sun's orthographic view of the whole scene for the
+// shadow map, the camera's perspective.
+struct FrameMatrices {
+  glm::vec3 sun{0.0f}, eye{0.0f};
+  glm::mat4 light_mvp{1.0f}, mvp{1.0f};
+  int width = 0, height = 0;
+};
+
+FrameMatrices frame_matrices(const State& state, const Scene& scene, int width, int height) {
+  FrameMatrices f;
+  f.width = width;
+  f.height = height;
+  const glm::vec3 center = 0.5f * (scene.lo + scene.hi);
+  const float radius = std::max(0.5f * glm::length(scene.hi - scene.lo), 0.1f);
+  f.sun = glm::normalize(glm::vec3(0.5f, -0.4f, 1.0f));
   const float scene_radius = radius * 2.2f;  // ground included
   const glm::mat4 light_view =
-      glm::lookAt(center + sun * (2.0f * scene_radius), center, glm::vec3(0, 1, 0));
+      glm::lookAt(center + f.sun * (2.0f * scene_radius), center, glm::vec3(0, 1, 0));
   const glm::mat4 light_proj = glm::ortho(-scene_radius, scene_radius, -scene_radius, scene_radius,
                                           0.01f * scene_radius, 4.0f * scene_radius);
-  const glm::mat4 light_mvp = light_proj * light_view;
+  f.light_mvp = light_proj * light_view;
+  const Camera& c = state.camera;
+  f.eye = c.eye();
+  const glm::mat4 view = glm::lookAt(f.eye, c.target, glm::vec3(0, 0, 1));
+  const glm::mat4 proj =
+      glm::perspective(glm::radians(40.0f), static_cast<float>(width) / std::max(height, 1),
+                       0.01f * c.distance, 10.0f * c.distance + radius * 4);
+  f.mvp = proj * view;
+  return f;
+}
 
+// Per-instance level of detail: the instances of every mesh of `g` chosen for this camera.
+void choose_instances(GpuStep& g, const LodView& lod, const FrameMatrices& f) {
+  const Eigen::Matrix4d vp =
+      Eigen::Map<const Eigen::Matrix4f>(glm::value_ptr(f.mvp)).cast<double>();
+  const Eigen::Vector3d eye(f.eye.x, f.eye.y, f.eye.z);
+  const std::vector<MeshInstance> instances =
+      lod_instances(*lod.scene, select_lod(*lod.scene, eye, vp, lod.options));
+  std::vector<std::vector<glm::mat4>> models(g.meshes.size());
+  for (const MeshInstance& inst : instances) models[inst.mesh].push_back(model_matrix(inst));
+  for (std::size_t k = 0; k < g.meshes.size(); ++k) {
+    if (g.meshes[k].vao != 0) set_instances(g.meshes[k], models[k]);
+  }
+  g.triangles = lod_triangle_count(*lod.scene, instances);
+}
+
+// Step 5: the shadow pass, then the scene: opaque geometry and the ground, then the translucent
+// obstacles blended over it without writing depth (so they never hide one another).
+void draw_frame(const GpuScene& gpu, const GpuStep& g, const Targets& t, const FrameMatrices& f,
+                bool shadows) {
+  glEnable(GL_DEPTH_TEST);
+  if (shadows) {
+    glBindFramebuffer(GL_FRAMEBUFFER, t.shadow_fbo);
+    glViewport(0, 0, kShadowSize, kShadowSize);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(2.0f, 4.0f);
+    glUseProgram(gpu.shadow_program);
+    glUniformMatrix4fv(glGetUniformLocation(gpu.shadow_program, "light_mvp"), 1, GL_FALSE,
+                       glm::value_ptr(f.light_mvp));
+    for (const GpuMesh& m : g.meshes) draw(m);
+    draw(gpu.ground);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, t.target_fbo);
+  glViewport(0, 0, f.width, f.height);
+  glClearColor(0.80f, 0.87f, 0.96f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  const GLuint p = gpu.scene_program;
+  glUseProgram(p);
+  glUniformMatrix4fv(glGetUniformLocation(p, "mvp"), 1, GL_FALSE, glm::value_ptr(f.mvp));
+  glUniformMatrix4fv(glGetUniformLocation(p, "light_mvp"), 1, GL_FALSE,
+                     glm::value_ptr(f.light_mvp));
+  glUniform3fv(glGetUniformLocation(p, "sun"), 1, glm::value_ptr(f.sun));
+  glUniform3fv(glGetUniformLocation(p, "eye"), 1, glm::value_ptr(f.eye));
+  glUniform1i(glGetUniformLocation(p, "shadows"), shadows ? 1 : 0);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, t.shadow_tex);
+  glUniform1i(glGetUniformLocation(p, "shadow_map"), 0);
+  for (const GpuMesh& m : g.meshes) draw(m, Part::kOpaque);
+  draw(gpu.ground);
+  glEnable(GL_BLEND);
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);  // keep alpha 1
+  glDepthMask(GL_FALSE);
+  for (const GpuMesh& m : g.meshes) draw(m, Part::kTranslucent);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+}
+
+// Step 6: frames until the window closes (or `frames` frames for a screenshot), timed.
+ViewerStats run_frames(GLFWwindow* window, State& state, GpuScene& gpu, const Targets& t,
+                       const Scene& scene, const ViewerOptions& o,
+                       const std::vector<double>& labels, const LodView& lod) {
+  const bool offscreen = !o.screenshot.empty();
   ViewerStats stats;
   double total_ms = 0.0, smooth_ms = 0.0;
   while (!glfwWindowShouldClose(window)) {
     const auto t0 = std::chrono::steady_clock::now();
     const bool far =
-        !gpu_coarse.empty() && state.camera.distance > o.lod_distance_factor * state.home.distance;
-    const GpuStep& g = far ? gpu_coarse[state.step] : gpu[state.step];
-    glEnable(GL_DEPTH_TEST);
-    if (state.shadows) {
-      glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo);
-      glViewport(0, 0, kShadowSize, kShadowSize);
-      glClear(GL_DEPTH_BUFFER_BIT);
-      glEnable(GL_POLYGON_OFFSET_FILL);
-      glPolygonOffset(2.0f, 4.0f);
-      glUseProgram(shadow_program);
-      glUniformMatrix4fv(glGetUniformLocation(shadow_program, "light_mvp"), 1, GL_FALSE,
-                         glm::value_ptr(light_mvp));
-      for (const GpuMesh& m : g.meshes) draw(m);
-      draw(ground);
-      glDisable(GL_POLYGON_OFFSET_FILL);
-    }
+        !gpu.coarse.empty() && state.camera.distance > o.lod_distance_factor * state.home.distance;
+    GpuStep& g = far ? gpu.coarse[state.step] : gpu.steps[state.step];
     int fw = o.width, fh = o.height;
     if (!offscreen) glfwGetFramebufferSize(window, &fw, &fh);
-    glBindFramebuffer(GL_FRAMEBUFFER, offscreen ? target_fbo : 0);
-    glViewport(0, 0, fw, fh);
-    glClearColor(0.80f, 0.87f, 0.96f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    const Camera& c = state.camera;
-    const glm::vec3 eye = c.eye();
-    const glm::mat4 view = glm::lookAt(eye, c.target, glm::vec3(0, 0, 1));
-    const glm::mat4 proj =
-        glm::perspective(glm::radians(40.0f), static_cast<float>(fw) / std::max(fh, 1),
-                         0.01f * c.distance, 10.0f * c.distance + radius * 4);
-    const glm::mat4 mvp = proj * view;
-    glUseProgram(scene_program);
-    glUniformMatrix4fv(glGetUniformLocation(scene_program, "mvp"), 1, GL_FALSE,
-                       glm::value_ptr(mvp));
-    glUniformMatrix4fv(glGetUniformLocation(scene_program, "light_mvp"), 1, GL_FALSE,
-                       glm::value_ptr(light_mvp));
-    glUniform3fv(glGetUniformLocation(scene_program, "sun"), 1, glm::value_ptr(sun));
-    glUniform3fv(glGetUniformLocation(scene_program, "eye"), 1, glm::value_ptr(eye));
-    glUniform1i(glGetUniformLocation(scene_program, "shadows"), state.shadows ? 1 : 0);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, shadow_tex);
-    glUniform1i(glGetUniformLocation(scene_program, "shadow_map"), 0);
-    for (const GpuMesh& m : g.meshes) draw(m);
-    draw(ground);
+    const FrameMatrices f = frame_matrices(state, scene, fw, fh);
+    if (lod.scene != nullptr) choose_instances(g, lod, f);
+    draw_frame(gpu, g, t, f, state.shadows);
     glFinish();
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -555,37 +716,40 @@ ViewerStats view(const std::vector<StepRef>& steps, const std::vector<double>& l
     glfwPollEvents();
   }
   stats.mean_frame_ms = stats.frames > 0 ? total_ms / stats.frames : 0.0;
+  return stats;
+}
 
-  if (offscreen) {
-    Image image;
-    image.width = o.width;
-    image.height = o.height;
-    image.rgba.resize(static_cast<std::size_t>(o.width) * o.height * 4);
-    std::vector<std::uint8_t> raw(image.rgba.size());
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, target_fbo);
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, o.width, o.height, GL_RGBA, GL_UNSIGNED_BYTE, raw.data());
-    const std::size_t row = static_cast<std::size_t>(o.width) * 4;
-    for (int y = 0; y < o.height; ++y) {  // OpenGL rows start at the bottom
-      std::copy_n(raw.data() + row * (o.height - 1 - y), row, image.rgba.data() + row * y);
-    }
-    write_image(image, o.screenshot);
+// Step 7: the offscreen image read back (OpenGL rows start at the bottom) and written.
+void write_screenshot(const ViewerOptions& o, const Targets& t) {
+  Image image;
+  image.width = o.width;
+  image.height = o.height;
+  image.rgba.resize(static_cast<std::size_t>(o.width) * o.height * 4);
+  std::vector<std::uint8_t> raw(image.rgba.size());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, t.target_fbo);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, o.width, o.height, GL_RGBA, GL_UNSIGNED_BYTE, raw.data());
+  const std::size_t row = static_cast<std::size_t>(o.width) * 4;
+  for (int y = 0; y < o.height; ++y) {
+    std::copy_n(raw.data() + row * (o.height - 1 - y), row, image.rgba.data() + row * y);
   }
-  for (auto& g : gpu_coarse) gpu.push_back(g);
-  for (auto& g : gpu) {
-    for (auto& m : g.meshes) release(m);
-  }
-  release(ground);
-  glDeleteFramebuffers(1, &shadow_fbo);
-  glDeleteTextures(1, &shadow_tex);
-  if (offscreen) {
-    glDeleteFramebuffers(1, &target_fbo);
-    glDeleteRenderbuffers(1, &color_rb);
-    glDeleteRenderbuffers(1, &depth_rb);
-  }
-  glDeleteProgram(shadow_program);
-  glDeleteProgram(scene_program);
+  write_image(image, o.screenshot);
+}
+
+ViewerStats view(const std::vector<StepRef>& steps, const std::vector<double>& labels,
+                 const ViewerOptions& o, const std::vector<StepRef>& coarse_steps,
+                 const LodView& lod = {}) {
+  const Scene scene = check_and_measure(steps, o, coarse_steps);
+  GlfwSession session;
+  State state;
+  GLFWwindow* window = open_window(o, scene, static_cast<int>(steps.size()), state);
+  GpuScene gpu = upload_scene(steps, coarse_steps, o, scene);
+  Targets targets = make_targets(o);
+  const ViewerStats stats = run_frames(window, state, gpu, targets, scene, o, labels, lod);
+  if (!o.screenshot.empty()) write_screenshot(o, targets);
+  release(gpu);
+  release(targets);
   glfwDestroyWindow(window);
   return stats;
 }
@@ -607,6 +771,12 @@ ViewerStats run_instanced_viewer(const std::vector<InstancedMesh>& steps,
   for (const auto& m : steps) refs.push_back(step_ref(m, o.color_by));
   for (const auto& m : coarse_steps) coarse.push_back(step_ref(m, o.color_by));
   return view(refs, labels, o, coarse);
+}
+
+ViewerStats run_lod_viewer(const LodScene& scene, const LodOptions& lod_options,
+                           const ViewerOptions& o) {
+  validate(lod_options);
+  return view({step_ref(scene)}, {}, o, {}, LodView{&scene, lod_options});
 }
 
 }  // namespace fspm::graphics

@@ -15,4 +15,8 @@ ViewerStats run_instanced_viewer(const std::vector<InstancedMesh>&, const std::v
   throw ValueError("fspm was built without the viewer (FSPM_WITH_VIEWER=OFF)");
 }
 
+ViewerStats run_lod_viewer(const LodScene&, const LodOptions&, const ViewerOptions&) {
+  throw ValueError("fspm was built without the viewer (FSPM_WITH_VIEWER=OFF)");
+}
+
 }  // namespace fspm::graphics

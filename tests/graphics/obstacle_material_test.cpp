@@ -236,5 +236,48 @@ TEST_F(ObstacleMaterial, ViewerDrawsTheStone) {
   EXPECT_GT(stone_pixels(read_image(o.screenshot)), without + 300);
 }
 
+// The viewer blends each translucent obstacle at its own opacity, after the opaque geometry: a
+// square letting 20 % of the light through (opacity 0.8) changes the picture far more than one
+// letting 80 % through (0.2), both measured against the same square letting all light through
+// (opacity 0.15, the floor), drawn in the same frame.
+TEST_F(ObstacleMaterial, ViewerBlendsEachObstacleAtItsOpacity) {
+  if (!viewer_available() || !render_available()) GTEST_SKIP() << "built without viewer/VTK";
+  if (!display_available()) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
+  ViewerOptions o;
+  o.width = 240;
+  o.height = 180;
+  o.shadows = false;
+  o.screenshot = (dir_ / "shot.png").string();
+  const auto shot = [&](float translucency) {
+    TriangleMesh mesh = tree_;
+    TriangleMesh square = stone_square(-0.5f, -0.5f);
+    for (auto& m : square.materials) m = Material::kTranslucentObstacle;
+    std::vector<float>& gamma = square.add_attribute("translucency");
+    std::fill(gamma.begin(), gamma.end(), translucency);
+    mesh.append(square);
+    (void)run_viewer({mesh}, {0.0}, o);
+    return read_image(o.screenshot);
+  };
+  const Image clear = shot(1.0f);
+  const auto change = [&](const Image& image) {
+    double sum = 0.0;
+    for (int y = 0; y < image.height; ++y) {
+      for (int x = 0; x < image.width; ++x) {
+        for (int c = 0; c < 3; ++c) {
+          sum += std::abs(int(image.pixel(x, y)[c]) - int(clear.pixel(x, y)[c]));
+        }
+      }
+    }
+    return sum;
+  };
+  const double dense = change(shot(0.2f));
+  const double sparse = change(shot(0.8f));
+  EXPECT_GT(sparse, 0.0);  // the opacity does follow the translucency
+  EXPECT_GT(dense, 2.5 * sparse);
+  // Alpha stays 1 in the image: blending does not make the screenshot itself see-through.
+  const Image image = read_image(o.screenshot);
+  EXPECT_EQ(image.pixel(image.width / 2, image.height / 2)[3], 255);
+}
+
 }  // namespace
 }  // namespace fspm::graphics
