@@ -15,6 +15,7 @@
 #include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "cli/commands.hpp"
 #include "cli/full_command_list.hpp"
@@ -30,6 +31,7 @@
 #include "fspm/tree_file.hpp"
 #include "graphics/foliage.hpp"
 #include "graphics/image.hpp"
+#include "graphics/instance_lod.hpp"
 #include "graphics/instanced_mesh.hpp"
 #include "graphics/mesh_writers.hpp"
 #include "graphics/render.hpp"
@@ -85,6 +87,8 @@ struct RenderCommand {
   std::string obstacles;
   double wind_time_s = -1.0;
   WindArguments wind;
+  bool lod = false;
+  double lod_distance_m = 0.0;
   bool json = false;
 };
 
@@ -100,6 +104,8 @@ struct ViewCommand {
   std::string foliage = "leaves";
   std::uint64_t seed = 1;
   bool no_shadows = false;
+  bool lod = false;
+  double lod_distance_m = 0.0;
   bool json = false;
 };
 
@@ -216,6 +222,92 @@ graphics::InstancedMesh load_instanced(const std::string& path, const std::strin
   return load_part(path, kind, format, -1.0, options);
 }
 
+// --lod: the mesher options of the prebuilt resolutions, finest first: as given, rings four
+// times coarser with at most six sides, sixteen times coarser with three sides.
+std::vector<graphics::MeshOptions> lod_resolutions(const graphics::MeshOptions& finest) {
+  graphics::MeshOptions middle = finest, coarse = finest;
+  middle.edge_length_m *= 4.0;
+  middle.max_sides = std::min(middle.max_sides, 6);
+  middle.min_sides = 3;
+  coarse.edge_length_m *= 16.0;
+  coarse.max_sides = 3;
+  coarse.min_sides = 3;
+  return {finest, middle, coarse};
+}
+
+// --lod: each distinct plant of FILE (a scene, or one tree or plant at the origin) meshed at
+// every resolution and flattened, the leaves ordered by --seed; the scene's obstacles (near the
+// plants when `near_plants`) and those of `obstacles_file` drawn as they are.
+graphics::LodScene load_lod_scene(const std::string& path, const std::string& format,
+                                  const graphics::MeshOptions& options,
+                                  const graphics::LodOptions& lod, bool near_plants,
+                                  const std::string& obstacles_file) {
+  const InputKind kind = input_kind(path);
+  if (kind == InputKind::kPvd) throw ValueError("--lod needs a scene, tree or plant file", path);
+  graphics::SceneFile plants;
+  std::optional<SceneDescription> description;
+  if (kind == InputKind::kScene) {
+    description = read_scene_description(path);
+    plants = graphics::scene_plants(description->plants);
+  } else {
+    plants.sources.push_back({path, -1.0});
+    plants.instances.emplace_back();
+  }
+  graphics::LodScene scene;
+  std::vector<graphics::InstancedMesh> finest;
+  for (const auto& source : plants.sources) {
+    std::vector<graphics::TriangleMesh> resolutions;
+    for (const auto& o : lod_resolutions(options)) {
+      // A scene's plant files are read by their extension, as place_plants does.
+      const std::string f = kind == InputKind::kScene ? std::string() : format;
+      resolutions.push_back(
+          load_part(source.path, input_kind(source.path), f, source.age, o).flatten());
+    }
+    finest.push_back(graphics::InstancedMesh::single(resolutions.front()));
+    scene.plants.push_back(graphics::make_lod_plant(resolutions, lod, options.foliage_seed));
+  }
+  for (const auto& inst : plants.instances) {
+    scene.placements.push_back(
+        {inst.source, inst.linear().cast<float>(), inst.position.cast<float>()});
+  }
+  // Obstacles cropped against the plants at their finest, then kept as the fixed mesh.
+  graphics::InstancedMesh placed = graphics::place_parts(finest, scene.placements);
+  const std::size_t plant_meshes = placed.meshes.size();
+  if (description && !description->obstacles.empty()) {
+    add_scene_obstacles(placed, environment::scene_from_description(*description), path,
+                        near_plants && !description->plants.empty());
+  }
+  if (!obstacles_file.empty()) {
+    add_scene_obstacles(placed, environment::read_scene_file(obstacles_file), obstacles_file,
+                        near_plants);
+  }
+  for (const auto& inst : placed.instances) {
+    if (inst.mesh < plant_meshes) continue;
+    graphics::MeshInstance fixed = inst;
+    fixed.mesh = static_cast<std::uint32_t>(scene.fixed.meshes.size());
+    scene.fixed.meshes.push_back(placed.meshes[inst.mesh]);
+    scene.fixed.instances.push_back(fixed);
+  }
+  return scene;
+}
+
+// --lod-distance, or 40 times the largest placed plant's bounding radius: the distance beyond
+// which plants take the coarsest mesh; every leaf is drawn up to an eighth of it.
+graphics::LodOptions lod_options(const graphics::LodScene& scene, double distance_m) {
+  graphics::LodOptions o;
+  if (distance_m <= 0.0) {
+    double radius = 0.0;
+    for (const auto& p : scene.placements) {
+      radius = std::max(radius, scene.plants[p.part].sphere.radius *
+                                    static_cast<double>(p.linear.colwise().norm().maxCoeff()));
+    }
+    distance_m = 40.0 * std::max(radius, 0.05);
+  }
+  o.max_distance_m = distance_m;
+  o.prune_distance_m = distance_m / 8.0;
+  return o;
+}
+
 nlohmann::json instancing_json(const graphics::InstancedMesh& m) {
   Eigen::Vector3f lo, hi;
   m.bounds(lo, hi);
@@ -321,6 +413,34 @@ graphics::InstancedMesh wind_frame(const RenderCommand& c, const graphics::MeshO
   return graphics::InstancedMesh::single(std::move(f.mesh));
 }
 
+// fspm render --lod: the plants chosen per instance for the render's camera.
+void run_lod_render(const RenderCommand& c, const graphics::MeshOptions& mesh_options,
+                    const graphics::RenderOptions& options,
+                    std::chrono::steady_clock::time_point t0) {
+  if (c.wind_time_s >= 0.0 || !c.color_by.empty()) {
+    throw ValueError("--lod does not combine with --wind-time or --color-by");
+  }
+  const graphics::LodScene scene =
+      load_lod_scene(c.tree, c.format, mesh_options, graphics::LodOptions{}, true, c.obstacles);
+  const graphics::LodOptions lod = lod_options(scene, c.lod_distance_m);
+  rerun_under_xvfb_if_needed();
+  std::size_t triangles = 0;
+  const graphics::Image image = graphics::render_lod_scene(scene, lod, options, &triangles);
+  graphics::write_image(image, c.out);
+  if (c.json) {
+    print_json({{"file", c.tree},
+                {"output", c.out},
+                {"width", image.width},
+                {"height", image.height},
+                {"triangles", triangles},
+                {"plants", scene.placements.size()},
+                {"lod_distance_m", lod.max_distance_m},
+                {"seconds", seconds_since(t0)}});
+  } else if (verbosity() > 0) {
+    std::cerr << "wrote " << c.out << " (" << image.width << "x" << image.height << ")\n";
+  }
+}
+
 void run_render(const RenderCommand& c) {
   refuse_overwriting_input(c.out, {c.tree, c.obstacles});
   const auto t0 = std::chrono::steady_clock::now();
@@ -337,6 +457,10 @@ void run_render(const RenderCommand& c) {
   graphics::MeshOptions mesh_options;
   set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
   mesh_options.edge_length_m = c.edge_length_m;
+  if (c.lod) {
+    run_lod_render(c, mesh_options, options, t0);
+    return;
+  }
   graphics::InstancedMesh mesh = c.wind_time_s >= 0.0
                                      ? wind_frame(c, mesh_options, options)
                                      : load_instanced(c.tree, c.format, mesh_options, true);
@@ -427,6 +551,30 @@ std::vector<graphics::InstancedMesh> view_steps(const std::vector<ViewSource>& s
   return steps;
 }
 
+// fspm view --lod: one scene (or tree, or plant) with its plants chosen per instance each frame.
+void run_lod_view(const ViewCommand& c, const graphics::ViewerOptions& options,
+                  std::chrono::steady_clock::time_point t0) {
+  if (c.trees.size() != 1 || !c.ages.empty()) {
+    throw ValueError("--lod shows one scene, tree or plant file, without --ages");
+  }
+  graphics::MeshOptions mesh_options;
+  set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
+  const graphics::LodScene scene =
+      load_lod_scene(c.trees[0], c.format, mesh_options, graphics::LodOptions{}, true, "");
+  const graphics::LodOptions lod = lod_options(scene, c.lod_distance_m);
+  if (!c.screenshot.empty()) rerun_under_xvfb_if_needed();
+  const graphics::ViewerStats stats = graphics::run_lod_viewer(scene, lod, options);
+  if (c.json) {
+    print_json({{"frames", stats.frames},
+                {"mean_frame_ms", stats.mean_frame_ms},
+                {"triangles", stats.triangles},
+                {"plants", scene.placements.size()},
+                {"lod_distance_m", lod.max_distance_m},
+                {"screenshot", c.screenshot},
+                {"seconds", seconds_since(t0)}});
+  }
+}
+
 void run_view(const ViewCommand& c) {
   const auto t0 = std::chrono::steady_clock::now();
   if (!graphics::viewer_available()) {
@@ -439,6 +587,10 @@ void run_view(const ViewCommand& c) {
   options.frames = c.frames;
   options.shadows = !c.no_shadows;
   if (!c.screenshot.empty()) graphics::check_image_path(c.screenshot);
+  if (c.lod) {
+    run_lod_view(c, options, t0);
+    return;
+  }
   std::vector<double> ages = c.ages;
   std::vector<graphics::InstancedMesh> steps, far;
   const bool pvd = std::any_of(c.trees.begin(), c.trees.end(), [](const std::string& p) {
@@ -519,6 +671,18 @@ void add_foliage_options(CLI::App* command, std::string& foliage, std::uint64_t&
       ->capture_default_str();
 }
 
+// --lod and --lod-distance of render and view.
+void add_lod_options(CLI::App* command, bool& lod, double& distance_m) {
+  command->add_flag("--lod", lod,
+                    "Level of detail per plant: skip plants outside the view, three mesh "
+                    "resolutions by distance and size, fewer (larger) leaves far away");
+  command
+      ->add_option("--lod-distance", distance_m,
+                   "With --lod: distance in m from which plants take the coarsest mesh (default "
+                   "40 times the largest plant's bounding radius)")
+      ->check(positive_number(1e9));
+}
+
 }  // namespace
 
 void add_graphics_commands(CLI::App& app) {
@@ -596,6 +760,7 @@ void add_graphics_commands(CLI::App& app) {
                 "--animate (same --seed and wind options); frames of a movie")
       ->check(number_in(0.0, 1e9));
   add_wind_options(r, render->wind, false);
+  add_lod_options(r, render->lod, render->lod_distance_m);
   r->add_flag("--json", render->json, "Machine-readable JSON on stdout");
   r->callback([render] { run_render(*render); });
 
@@ -622,6 +787,7 @@ void add_graphics_commands(CLI::App& app) {
   v->add_option("--frames", view->frames, "Frames before the screenshot")
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
+  add_lod_options(v, view->lod, view->lod_distance_m);
   v->add_flag("--json", view->json, "Machine-readable JSON on stdout (frame time)");
   v->callback([view] { run_view(*view); });
 }

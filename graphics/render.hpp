@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "graphics/image.hpp"
+#include "graphics/instance_lod.hpp"
 #include "graphics/instanced_mesh.hpp"
 #include "graphics/triangle_mesh.hpp"
 
@@ -66,5 +67,12 @@ Image render_mesh(const TriangleMesh& mesh, const RenderOptions& options);
 // mapper, one glyph per instance). Colouring by an attribute renders the flattened mesh instead.
 // Same errors as render_mesh.
 Image render_scene(const InstancedMesh& scene, const RenderOptions& options);
+
+// A scene of many plants with level of detail per instance (instance_lod.hpp) for the camera of
+// `options`: plants outside its view are left out, the others drawn at the resolution and leaf
+// share chosen for their distance. `triangles_drawn` (optional) receives the triangles drawn.
+// Same errors as render_scene, and ValueError with color_by or bad level-of-detail options.
+Image render_lod_scene(const LodScene& scene, const LodOptions& lod, const RenderOptions& options,
+                       std::size_t* triangles_drawn = nullptr);
 
 }  // namespace fspm::graphics

@@ -19,6 +19,10 @@ Image render_scene(const InstancedMesh& scene, const RenderOptions& options) {
   throw ValueError("fspm was built without VTK (FSPM_WITH_VTK=OFF): rendering is not available");
 }
 
+Image render_lod_scene(const LodScene&, const LodOptions&, const RenderOptions&, std::size_t*) {
+  throw ValueError("fspm was built without VTK (FSPM_WITH_VTK=OFF): rendering is not available");
+}
+
 void write_image(const Image&, const std::string& path) {
   throw ValueError("fspm was built without OpenImageIO (FSPM_WITH_VTK=OFF)", path);
 }

@@ -11,6 +11,7 @@
 #include <vtkImageData.h>
 #include <vtkLightKit.h>
 #include <vtkLookupTable.h>
+#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -39,6 +40,7 @@
 #include <sstream>
 
 #include "fspm/error.hpp"
+#include "graphics/instance_lod.hpp"
 #include "graphics/render.hpp"
 #include "graphics/vtk_window_image.hpp"
 #include "graphics/x_display.hpp"
@@ -198,6 +200,32 @@ void add_scale_bar(vtkRenderer* renderer, const RenderOptions& options) {
   renderer->AddActor2D(text);
 }
 
+// A ground plane under [lo, hi], wider than the box so the plants stand well inside it.
+void add_ground(vtkRenderer* renderer, const Eigen::Vector3f& lo, const Eigen::Vector3f& hi) {
+  const Eigen::Vector3f size = (hi - lo).cwiseMax(Eigen::Vector3f::Constant(0.1f));
+  const float half = 0.9f * std::max(size.x(), size.y()) + 0.4f * size.z();
+  const Eigen::Vector3f c = 0.5f * (lo + hi);
+  vtkNew<vtkPoints> corners;
+  corners->InsertNextPoint(c.x() - half, c.y() - half, lo.z());
+  corners->InsertNextPoint(c.x() + half, c.y() - half, lo.z());
+  corners->InsertNextPoint(c.x() + half, c.y() + half, lo.z());
+  corners->InsertNextPoint(c.x() - half, c.y() + half, lo.z());
+  vtkNew<vtkCellArray> quad;
+  const vtkIdType ids[4] = {0, 1, 2, 3};
+  quad->InsertNextCell(4, ids);
+  vtkNew<vtkPolyData> plane;
+  plane->SetPoints(corners);
+  plane->SetPolys(quad);
+  vtkNew<vtkPolyDataMapper> plane_mapper;
+  plane_mapper->SetInputData(plane);
+  plane_mapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> ground;
+  ground->SetMapper(plane_mapper);
+  ground->GetProperty()->SetColor(0.55, 0.62, 0.45);
+  ground->GetProperty()->SetAmbient(0.2);
+  renderer->AddActor(ground);
+}
+
 // Sets up the renderer, lets `add_actors` fill it, adds the ground, lights and camera framing
 // [lo, hi], renders off screen and reads the image back.
 template <typename AddActors>
@@ -221,32 +249,6 @@ Image render_with(const RenderOptions& options, Eigen::Vector3f lo, Eigen::Vecto
   renderer->SetBackground2(0.78, 0.86, 0.96);
   renderer->GradientBackgroundOn();
 
-  add_actors(renderer.Get());
-  if (options.ground) {
-    const Eigen::Vector3f size = (hi - lo).cwiseMax(Eigen::Vector3f::Constant(0.1f));
-    const float half = 0.9f * std::max(size.x(), size.y()) + 0.4f * size.z();
-    const Eigen::Vector3f c = 0.5f * (lo + hi);
-    vtkNew<vtkPoints> corners;
-    corners->InsertNextPoint(c.x() - half, c.y() - half, lo.z());
-    corners->InsertNextPoint(c.x() + half, c.y() - half, lo.z());
-    corners->InsertNextPoint(c.x() + half, c.y() + half, lo.z());
-    corners->InsertNextPoint(c.x() - half, c.y() + half, lo.z());
-    vtkNew<vtkCellArray> quad;
-    const vtkIdType ids[4] = {0, 1, 2, 3};
-    quad->InsertNextCell(4, ids);
-    vtkNew<vtkPolyData> plane;
-    plane->SetPoints(corners);
-    plane->SetPolys(quad);
-    vtkNew<vtkPolyDataMapper> plane_mapper;
-    plane_mapper->SetInputData(plane);
-    plane_mapper->ScalarVisibilityOff();
-    vtkNew<vtkActor> ground;
-    ground->SetMapper(plane_mapper);
-    ground->GetProperty()->SetColor(0.55, 0.62, 0.45);
-    ground->GetProperty()->SetAmbient(0.2);
-    renderer->AddActor(ground);
-  }
-
   // Key, fill and back lights following the camera (Kitware's three-point light kit).
   renderer->RemoveAllLights();
   vtkNew<vtkLightKit> lights;
@@ -266,6 +268,12 @@ Image render_with(const RenderOptions& options, Eigen::Vector3f lo, Eigen::Vecto
     renderer->GetActiveCamera()->SetParallelScale(0.5 * options.ortho_height_m);
     if (!options.scale_bar_unit.empty()) add_scale_bar(renderer, options);
   }
+  // Actors after the camera: a level-of-detail scene chooses its instances for this view (near
+  // and far planes around the framed box until the actors are known).
+  renderer->ResetCameraClippingRange(bounds);
+  add_actors(renderer.Get());
+  if (options.ground) add_ground(renderer, lo, hi);
+
   renderer->ResetCameraClippingRange();
 
   vtkNew<vtkRenderWindow> window;
@@ -486,6 +494,55 @@ void add_plant_actors(vtkRenderer* renderer, const TriangleMesh& plants,
   }
 }
 
+// One glyph actor per material of `mesh` (obstacles in stone, one per translucency).
+void add_material_glyphs(vtkRenderer* renderer, vtkPolyData* placed, const TriangleMesh& mesh) {
+  for (Material material : kMaterials) {
+    if (mesh.triangle_count(material) == 0) continue;
+    if (is_obstacle(material)) {
+      for (const ObstaclePart& part : obstacle_parts(mesh, material)) {
+        stone_look(add_glyph_actor(renderer, placed, part.mesh, material_rgb(material)), material,
+                   part.opacity);
+      }
+      continue;
+    }
+    vtkActor* actor =
+        add_glyph_actor(renderer, placed, material_part(mesh, material), material_rgb(material));
+    if (material == Material::kCrown) crown_look(actor);
+  }
+}
+
+// GPU instancing through VTK's glyph mapper: one source per shared mesh and material, one glyph
+// (position, quaternion, scale) per instance.
+void add_instanced_actors(vtkRenderer* renderer, const std::vector<const TriangleMesh*>& meshes,
+                          const std::vector<MeshInstance>& instances) {
+  for (std::uint32_t m = 0; m < meshes.size(); ++m) {
+    const TriangleMesh& mesh = *meshes[m];
+    if (mesh.empty()) continue;
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkFloatArray> orientation, scale;
+    orientation->SetName("orientation");
+    orientation->SetNumberOfComponents(4);
+    scale->SetName("scale");
+    scale->SetNumberOfComponents(3);
+    for (const MeshInstance& inst : instances) {
+      if (inst.mesh != m) continue;
+      const float s = std::cbrt(inst.linear.determinant());
+      const Eigen::Quaternionf q(inst.linear / s);
+      points->InsertNextPoint(inst.translation.x(), inst.translation.y(), inst.translation.z());
+      const float wxyz[4] = {q.w(), q.x(), q.y(), q.z()};  // VTK's quaternion order
+      orientation->InsertNextTypedTuple(wxyz);
+      const float sss[3] = {s, s, s};
+      scale->InsertNextTypedTuple(sss);
+    }
+    if (points->GetNumberOfPoints() == 0) continue;
+    vtkNew<vtkPolyData> placed;
+    placed->SetPoints(points);
+    placed->GetPointData()->AddArray(orientation);
+    placed->GetPointData()->AddArray(scale);
+    add_material_glyphs(renderer, placed, mesh);
+  }
+}
+
 }  // namespace
 
 bool render_available() { return true; }
@@ -523,47 +580,50 @@ Image render_scene(const InstancedMesh& scene, const RenderOptions& options) {
     lo = options.frame->min();
     hi = options.frame->max();
   }
+  std::vector<const TriangleMesh*> meshes;
+  for (const TriangleMesh& m : scene.meshes) meshes.push_back(&m);
   return render_with(options, lo, hi, [&](vtkRenderer* renderer) {
-    // GPU instancing through VTK's glyph mapper: one source per shared mesh and material, one
-    // glyph (position, quaternion, scale) per instance.
-    for (std::uint32_t m = 0; m < scene.meshes.size(); ++m) {
-      const TriangleMesh& mesh = scene.meshes[m];
-      if (mesh.empty()) continue;
-      vtkNew<vtkPoints> points;
-      vtkNew<vtkFloatArray> orientation, scale;
-      orientation->SetName("orientation");
-      orientation->SetNumberOfComponents(4);
-      scale->SetName("scale");
-      scale->SetNumberOfComponents(3);
-      for (const MeshInstance& inst : scene.instances) {
-        if (inst.mesh != m) continue;
-        const float s = std::cbrt(inst.linear.determinant());
-        const Eigen::Quaternionf q(inst.linear / s);
-        points->InsertNextPoint(inst.translation.x(), inst.translation.y(), inst.translation.z());
-        const float wxyz[4] = {q.w(), q.x(), q.y(), q.z()};  // VTK's quaternion order
-        orientation->InsertNextTypedTuple(wxyz);
-        const float sss[3] = {s, s, s};
-        scale->InsertNextTypedTuple(sss);
-      }
-      if (points->GetNumberOfPoints() == 0) continue;
-      vtkNew<vtkPolyData> instances;
-      instances->SetPoints(points);
-      instances->GetPointData()->AddArray(orientation);
-      instances->GetPointData()->AddArray(scale);
-      for (Material material : kMaterials) {
-        if (mesh.triangle_count(material) == 0) continue;
-        if (is_obstacle(material)) {
-          for (const ObstaclePart& part : obstacle_parts(mesh, material)) {
-            stone_look(add_glyph_actor(renderer, instances, part.mesh, material_rgb(material)),
-                       material, part.opacity);
-          }
-          continue;
-        }
-        vtkActor* actor = add_glyph_actor(renderer, instances, material_part(mesh, material),
-                                          material_rgb(material));
-        if (material == Material::kCrown) crown_look(actor);
-      }
+    add_instanced_actors(renderer, meshes, scene.instances);
+  });
+}
+
+Image render_lod_scene(const LodScene& scene, const LodOptions& lod, const RenderOptions& options,
+                       std::size_t* triangles_drawn) {
+  validate(lod);
+  if (!options.color_by.empty()) {
+    throw ValueError(
+        "per-instance level of detail does not combine with colouring by an attribute");
+  }
+  // The camera frames every plant at its finest and the fixed meshes.
+  std::vector<InstanceLod> finest(scene.placements.size());
+  for (auto& c : finest) c.visible = true;
+  const std::vector<const TriangleMesh*> meshes = scene.meshes();
+  Eigen::Vector3f lo = Eigen::Vector3f::Constant(std::numeric_limits<float>::infinity()), hi = -lo;
+  for (const MeshInstance& inst : lod_instances(scene, finest)) {
+    for (const auto& p : meshes[inst.mesh]->positions) {
+      lo = lo.cwiseMin(inst.linear * p + inst.translation);
+      hi = hi.cwiseMax(inst.linear * p + inst.translation);
     }
+  }
+  if (!(lo.x() <= hi.x())) lo = hi = Eigen::Vector3f::Zero();
+  if (options.frame) {
+    lo = options.frame->min();
+    hi = options.frame->max();
+  }
+  return render_with(options, lo, hi, [&](vtkRenderer* renderer) {
+    vtkCamera* camera = renderer->GetActiveCamera();
+    Eigen::Vector3d eye;
+    camera->GetPosition(eye.data());
+    const double aspect = static_cast<double>(options.width) / options.height;
+    vtkMatrix4x4* m = camera->GetCompositeProjectionTransformMatrix(aspect, -1.0, 1.0);
+    Eigen::Matrix4d view_projection;
+    for (int r = 0; r < 4; ++r) {
+      for (int c = 0; c < 4; ++c) view_projection(r, c) = m->GetElement(r, c);
+    }
+    const std::vector<MeshInstance> instances =
+        lod_instances(scene, select_lod(scene, eye, view_projection, lod));
+    if (triangles_drawn != nullptr) *triangles_drawn = lod_triangle_count(scene, instances);
+    add_instanced_actors(renderer, meshes, instances);
   });
 }
 

@@ -10,6 +10,7 @@
 
 #include "fspm/tree_file.hpp"
 #include "tests/cli/run_command.hpp"
+#include "tests/cli/small_tree.hpp"
 
 namespace fspm {
 namespace {
@@ -18,6 +19,7 @@ namespace fs = std::filesystem;
 using testing::read_text;
 using testing::run_fspm;
 using testing::scratch_dir;
+using testing::write_small_tree;
 using testing::write_text;
 
 // Leeuwenberg's model (examples/greenlab) without straightening: no effect depends on the
@@ -133,6 +135,45 @@ TEST(GraphicsInstancingCli, SceneOfTwoHundredTreesFromTwoFiles) {
     EXPECT_NE(r.exit_code, 0);
     EXPECT_FALSE(fs::exists(dir / "bad.png"));
   }
+}
+
+// --lod draws fewer triangles than the full scene for a row of plants seen from afar, in renders
+// and in the viewer, and refuses what it does not combine with.
+TEST(GraphicsInstancingCli, LevelOfDetailDrawsFewerTriangles) {
+  const auto dir = scratch_dir("inst_lod");
+  write_small_tree(dir);
+  nlohmann::json plants = nlohmann::json::array();
+  for (int i = 0; i < 20; ++i)
+    plants.push_back({{"file", "t.tree"}, {"position", {5.0 * i, 0, 0}}});
+  const fs::path scene = dir / "row.json";
+  write_text(scene, nlohmann::json({{"fspm_scene", 2}, {"plants", plants}}).dump());
+  const auto full = mesh_json(scene.string() + " --leaves -o " + (dir / "row.glb").string());
+  const auto all = full["triangles"].get<std::size_t>();
+  auto r = run_fspm("render " + scene.string() + " --leaves --lod -o " +
+                    (dir / "row.png").string() + " --size 160x120 --json");
+  if (r.err.find("without VTK") == std::string::npos &&
+      r.err.find("no X display") == std::string::npos) {
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["plants"], 20);
+    EXPECT_GT(j["triangles"].get<std::size_t>(), 0u);
+    EXPECT_LT(j["triangles"].get<std::size_t>(), all);
+    EXPECT_TRUE(fs::exists(dir / "row.png"));
+  }
+  r = run_fspm("view " + scene.string() + " --leaves --lod --screenshot " +
+               (dir / "v.png").string() + " --frames 2 --size 160x120 --json");
+  if (r.err.find("without") == std::string::npos) {
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_GT(j["triangles"].get<std::size_t>(), 0u);
+    EXPECT_LT(j["triangles"].get<std::size_t>(), all);
+  }
+  r = run_fspm("view " + scene.string() + " --lod --ages 1 --screenshot " +
+               (dir / "w.png").string());
+  EXPECT_EQ(r.exit_code, 1);
+  r = run_fspm("render " + scene.string() + " --lod --color-by age -o " + (dir / "c.png").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_FALSE(fs::exists(dir / "c.png"));
 }
 
 TEST(GraphicsInstancingCli, BadScenesFailCleanly) {
