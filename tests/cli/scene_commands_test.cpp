@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "graphics/image.hpp"
 #include "tests/cli/run_command.hpp"
@@ -94,7 +95,7 @@ TEST(SceneCli, MeshOfASceneHasItsOpaqueAndTranslucentObstaclesWhole) {
   EXPECT_EQ(nlohmann::json::parse(r.out)["obstacle_triangles"], 24);
   const std::string obj = read_text(dir / "s.obj");
   EXPECT_EQ(faces_after(obj, "obstacle"), 12u);  // the far wall too: mesh files keep everything
-  EXPECT_EQ(faces_after(obj, "translucent_obstacle"), 12u);
+  EXPECT_EQ(faces_after(obj, "translucent_obstacle_0.5"), 12u);  // named by its translucency
 }
 
 // Each translucent obstacle gets a glTF material of alpha 1 - gamma: two walls letting 30 % and
@@ -136,6 +137,18 @@ TEST(SceneCli, GlbGivesEachTranslucentObstacleItsOwnAlpha) {
       {std::round((1.0 - gamma_a) * 1000.0) / 1000.0, 36},
       {1.0, 36}};
   EXPECT_EQ(alpha_indices, expected);
+  // The .obj's material library: one material per translucency, dissolve d = 1 - gamma.
+  ASSERT_EQ(run_fspm("mesh " + scene + " -o " + (dir / "s.obj").string()).exit_code, 0);
+  const std::string mtl = read_text(dir / "s.mtl");
+  for (const double gamma : {gamma_a, gamma_b}) {
+    std::ostringstream name;
+    name << "newmtl translucent_obstacle_" << gamma << "\n";
+    const auto at = mtl.find(name.str());
+    ASSERT_NE(at, std::string::npos) << name.str();
+    const auto d = mtl.find("\nd ", at);
+    ASSERT_NE(d, std::string::npos);
+    EXPECT_NEAR(std::stod(mtl.substr(d + 3, 8)), 1.0 - gamma, 1e-6);
+  }
 }
 
 TEST(SceneCli, UpgradeRewritesEarlierLayoutsWithTheSameLight) {
