@@ -124,6 +124,14 @@ void Derivation::rewrite_module(SymbolId symbol, std::span<const double> paramet
   apply_group_repeatedly(sys_.decomposition, out);
 }
 
+void Derivation::interpret_module(SymbolId symbol, std::span<const double> parameters,
+                                  ModuleString& out) {
+  out.clear();
+  if (parametric_) out.make_parametric();
+  out.push_back(symbol, parameters);
+  apply_group_repeatedly(sys_.homomorphism, out);
+}
+
 void Derivation::check_budget(std::size_t size) const {
   if (size > options_.module_budget) {
     throw ValueError("the string grows past the module budget of " +

@@ -65,6 +65,10 @@ class Derivation {
   // For a context-free L-system without cut, queries or per-step blocks this is exactly the
   // module's part of step() in any string (lsystem/substructure_derivation.hpp relies on it).
   void rewrite_module(SymbolId symbol, std::span<const double> parameters, ModuleString& out);
+  // The homomorphism of a single module into `out` (the module itself without homomorphism
+  // productions): its part of interpretation_string() when the homomorphism productions are
+  // context-free and pure (homomorphism_obstacle() in lsystem/substructure_derivation.hpp).
+  void interpret_module(SymbolId symbol, std::span<const double> parameters, ModuleString& out);
 
  private:
   // Rewrites `in` into `out` with `group`; returns true when some production applied.

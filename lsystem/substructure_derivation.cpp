@@ -1,5 +1,6 @@
 #include "lsystem/substructure_derivation.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <deque>
 #include <limits>
@@ -34,10 +35,13 @@ bool pure(const std::vector<Expression>& block) {
 
 // Why productions of `group` ("production" or "decomposition production") depend on where or
 // when their module stands.
-std::optional<std::string> group_obstacle(const ProductionGroup& group, const char* what) {
+std::optional<std::string> group_obstacle(const ProductionGroup& group, const char* what,
+                                          bool stochastic_allowed = false) {
   for (const Production& p : group.productions) {
     if (!p.context_free()) return std::string("a context-sensitive ") + what + at_line(p);
-    if (!p.probability.empty()) return std::string("a stochastic ") + what + at_line(p);
+    if (!p.probability.empty() && !stochastic_allowed) {
+      return std::string("a stochastic ") + what + at_line(p);
+    }
     bool is_pure = p.condition.is_pure() && pure(p.pre_block) && pure(p.post_block);
     for (const ModuleTemplate& t : p.successor) {
       is_pure = is_pure && pure(t.arguments);
@@ -55,8 +59,10 @@ std::optional<std::string> group_obstacle(const ProductionGroup& group, const ch
 // explicit stack (derivation lengths may exceed any call stack).
 class Builder {
  public:
-  Builder(const LSystem& system, const DeriveOptions& options)
-      : derivation_(system, options), budget_(options.module_budget) {}
+  Builder(const LSystem& system, const DeriveOptions& options, int variants)
+      : derivation_(system, options),
+        budget_(options.module_budget),
+        variants_(static_cast<std::uint32_t>(std::max(variants, 0))) {}
 
   SubstructureGraph run() {
     graph_.steps = derivation_.target_steps();
@@ -78,8 +84,12 @@ class Builder {
     std::size_t pending_mark = 0;
   };
 
-  static std::string key_of(SymbolId symbol, std::span<const double> parameters, int remaining) {
-    std::string key(sizeof symbol + sizeof remaining + parameters.size_bytes(), '\0');
+  // (symbol, remaining, parameters), and with variants the variant's number.
+  std::string key_of(SymbolId symbol, std::span<const double> parameters, int remaining,
+                     std::uint32_t variant = 0) const {
+    const std::size_t variant_bytes = variants_ > 0 ? sizeof variant : 0;
+    std::string key(sizeof symbol + sizeof remaining + parameters.size_bytes() + variant_bytes,
+                    '\0');
     char* out = key.data();
     std::memcpy(out, &symbol, sizeof symbol);
     std::memcpy(out + sizeof symbol, &remaining, sizeof remaining);
@@ -87,7 +97,17 @@ class Builder {
       std::memcpy(out + sizeof symbol + sizeof remaining, parameters.data(),
                   parameters.size_bytes());
     }
+    if (variant_bytes > 0) {
+      std::memcpy(out + sizeof symbol + sizeof remaining + parameters.size_bytes(), &variant,
+                  sizeof variant);
+    }
     return key;
+  }
+
+  // Which variant an occurrence takes (0 without variants).
+  std::uint32_t draw_variant() {
+    if (variants_ <= 1) return 0;
+    return static_cast<std::uint32_t>(derivation_.random()() % variants_);
   }
 
   std::uint32_t add_node(SymbolId symbol, std::span<const double> parameters, int remaining,
@@ -116,7 +136,7 @@ class Builder {
   // pushes a frame that will build it and returns nothing.
   std::optional<std::uint32_t> resolve(SymbolId symbol, std::span<const double> parameters,
                                        int remaining) {
-    std::string key = key_of(symbol, parameters, remaining);
+    std::string key = key_of(symbol, parameters, remaining, remaining > 0 ? draw_variant() : 0);
     if (const auto it = memo_.find(key); it != memo_.end()) return it->second;
     if (remaining > 0) {
       Frame& f = push_frame();
@@ -186,6 +206,7 @@ class Builder {
 
   Derivation derivation_;
   std::size_t budget_;
+  std::uint32_t variants_;  // 0: deterministic
   SubstructureGraph graph_;
   std::unordered_map<std::string, std::uint32_t> memo_;
   // frames_[0, depth_) are live; the rest keep their buffers. A deque: growing it keeps the
@@ -202,9 +223,11 @@ std::size_t SubstructureGraph::memory_bytes() const {
          parameters.capacity() * sizeof(double) + axiom.capacity() * sizeof(std::uint32_t);
 }
 
-std::optional<std::string> factorization_obstacle(const LSystem& system) {
-  if (auto why = group_obstacle(system.productions, "production")) return why;
-  if (auto why = group_obstacle(system.decomposition, "decomposition production")) return why;
+std::optional<std::string> factorization_obstacle(const LSystem& system, bool variants) {
+  if (auto why = group_obstacle(system.productions, "production", variants)) return why;
+  if (auto why = group_obstacle(system.decomposition, "decomposition production", variants)) {
+    return why;
+  }
   if (!system.start_each_block.empty() || !system.end_each_block.empty()) {
     return std::string("startEach: or endEach: blocks, which run between steps");
   }
@@ -219,12 +242,17 @@ std::optional<std::string> factorization_obstacle(const LSystem& system) {
   return std::nullopt;
 }
 
-SubstructureGraph derive_substructures(const LSystem& system, const DeriveOptions& options) {
-  if (const auto why = factorization_obstacle(system)) {
+std::optional<std::string> homomorphism_obstacle(const LSystem& system) {
+  return group_obstacle(system.homomorphism, "homomorphism production");
+}
+
+SubstructureGraph derive_substructures(const LSystem& system, const DeriveOptions& options,
+                                       int variants) {
+  if (const auto why = factorization_obstacle(system, variants > 0)) {
     throw ValueError("this L-system cannot be derived into substructures: it has " + *why,
                      system.file);
   }
-  return Builder(system, options).run();
+  return Builder(system, options, variants).run();
 }
 
 SubstructureCounts count_modules(const SubstructureGraph& graph, std::size_t symbol_count) {

@@ -57,13 +57,25 @@ struct SubstructureCounts {
   std::uint64_t explicit_bytes = 0;
 };
 
-// Why `system` cannot be derived into substructures, or nothing when it can.
-std::optional<std::string> factorization_obstacle(const LSystem& system);
+// Why `system` cannot be derived into substructures, or nothing when it can. With `variants`,
+// stochastic productions are no obstacle (see derive_substructures).
+std::optional<std::string> factorization_obstacle(const LSystem& system, bool variants = false);
+
+// Why the homomorphism productions of `system` cannot be applied module by module (the same
+// reasons as for productions), or nothing when they can.
+std::optional<std::string> homomorphism_obstacle(const LSystem& system);
 
 // Derives `system` into substructures for options.steps (or its derivation length) steps.
 // options.module_budget bounds the number of graph nodes. Throws ValueError naming the obstacle
 // when factorization_obstacle() finds one.
-SubstructureGraph derive_substructures(const LSystem& system, const DeriveOptions& options = {});
+// `variants` > 0, for stochastic L-systems (Jaeger et al. 2010, 2.1.3, stochastic case): each
+// substructure (module, parameters, remaining steps) is derived in at most `variants` versions,
+// each with its own draws from the generator seeded by options.seed, and every occurrence of a
+// module in a successor takes one of them, drawn from the same generator. The derived plant is a
+// sample of the L-system restricted to that many variants per substructure; the same seed gives
+// the same graph.
+SubstructureGraph derive_substructures(const LSystem& system, const DeriveOptions& options = {},
+                                       int variants = 0);
 
 SubstructureCounts count_modules(const SubstructureGraph& graph, std::size_t symbol_count);
 

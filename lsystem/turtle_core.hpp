@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <vector>
 
 #include "fspm/error.hpp"
@@ -131,47 +132,49 @@ inline void rotate_pair(Eigen::Vector3d& a, Eigen::Vector3d& b, double angle_rad
   a = a2;
 }
 
-// Visitor interface (static): forward(start, frame, length) after the move, polygon events,
+// The turtle's state and its response to one module, for walks over a string (walk below) or over
+// a graph of substructures (lsystem/instanced_interpretation.cpp). Visitor interface (static):
+// forward(start, heading, length, frame) after the move, polygon_begin(frame), vertex(point),
+// polygon_end(frame), surface(scale, frame), sphere(diameter, line_width, frame),
 // query(i, action, frame).
 template <class Visitor>
-void walk(const ModuleString& s, const std::vector<Action>& actions, const TurtleSettings& settings,
-          Visitor& visitor) {
-  constexpr double kRad = std::numbers::pi / 180.0;
-  const double default_angle = settings.angle_deg * kRad;
-  Frame f;
-  f.width = settings.initial_line_width;
-  std::vector<Frame> stack;
-  Eigen::Vector3d t = settings.tropism_direction;
-  const bool tropism = t.squaredNorm() > 0.0 &&
-                       (settings.initial_elasticity != 0.0 || settings.elasticity_increment != 0.0);
-  if (tropism) t.normalize();
-  int polygon_depth = 0;
-  const std::size_t n = s.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const Action a = actions[s.symbol(i)];
-    if (a == Action::kNone) continue;
-    const auto p = s.parameters(i);
+class Turtle {
+ public:
+  Turtle(const TurtleSettings& settings, Visitor& visitor)
+      : settings_(settings),
+        visitor_(visitor),
+        default_angle_(settings.angle_deg * kRad),
+        t_(settings.tropism_direction) {
+    f.width = settings.initial_line_width;
+    tropism_ = t_.squaredNorm() > 0.0 &&
+               (settings.initial_elasticity != 0.0 || settings.elasticity_increment != 0.0);
+    if (tropism_) t_.normalize();
+  }
+
+  // Module `i` (for error messages and queries) with action `a` and parameters `p`.
+  void apply(Action a, std::span<const double> p, std::size_t i) {
     const bool has = !p.empty();
     switch (a) {
       case Action::kForward:
       case Action::kForwardNoVertex:
       case Action::kMove:
       case Action::kMoveNoVertex: {
-        const double length = has ? p[0] : settings.step;
+        const double length = has ? p[0] : settings_.step;
         const Eigen::Vector3d start = f.position;
         const Eigen::Vector3d heading = f.heading;
         f.position += f.heading * length;
         if (polygon_depth > 0) {
-          if (a == Action::kForward || a == Action::kMove) visitor.vertex(f.position);
+          if (a == Action::kForward || a == Action::kMove) visitor_.vertex(f.position);
           break;
         }
         if (a == Action::kForward || a == Action::kForwardNoVertex) {
-          visitor.forward(start, heading, length, f);
-          if (tropism) {
+          visitor_.forward(start, heading, length, f);
+          if (tropism_) {
             // ABOP section 2.2: rotate by e |H x T| about H x T.
-            const Eigen::Vector3d axis = f.heading.cross(t);
+            const Eigen::Vector3d axis = f.heading.cross(t_);
             const double norm = axis.norm();
-            const double e = settings.initial_elasticity + settings.elasticity_increment * f.depth;
+            const double e =
+                settings_.initial_elasticity + settings_.elasticity_increment * f.depth;
             if (norm > 1e-12 && e != 0.0) {
               const Eigen::AngleAxisd r(e * norm, axis / norm);
               f.heading = (r * f.heading).normalized();
@@ -183,22 +186,22 @@ void walk(const ModuleString& s, const std::vector<Action>& actions, const Turtl
         break;
       }
       case Action::kLeft:
-        rotate_pair(f.heading, f.left, has ? p[0] * kRad : default_angle);
+        rotate_pair(f.heading, f.left, has ? p[0] * kRad : default_angle_);
         break;
       case Action::kRight:
-        rotate_pair(f.heading, f.left, -(has ? p[0] * kRad : default_angle));
+        rotate_pair(f.heading, f.left, -(has ? p[0] * kRad : default_angle_));
         break;
       case Action::kPitchDown:
-        rotate_pair(f.heading, f.up, -(has ? p[0] * kRad : default_angle));
+        rotate_pair(f.heading, f.up, -(has ? p[0] * kRad : default_angle_));
         break;
       case Action::kPitchUp:
-        rotate_pair(f.heading, f.up, has ? p[0] * kRad : default_angle);
+        rotate_pair(f.heading, f.up, has ? p[0] * kRad : default_angle_);
         break;
       case Action::kRollLeft:
-        rotate_pair(f.left, f.up, has ? p[0] * kRad : default_angle);
+        rotate_pair(f.left, f.up, has ? p[0] * kRad : default_angle_);
         break;
       case Action::kRollRight:
-        rotate_pair(f.left, f.up, -(has ? p[0] * kRad : default_angle));
+        rotate_pair(f.left, f.up, -(has ? p[0] * kRad : default_angle_));
         break;
       case Action::kTurnAround:
         f.heading = -f.heading;
@@ -226,10 +229,10 @@ void walk(const ModuleString& s, const std::vector<Action>& actions, const Turtl
         stack.pop_back();
         break;
       case Action::kWidthDown:
-        f.width = has ? p[0] : f.width - settings.line_width_increment;
+        f.width = has ? p[0] : f.width - settings_.line_width_increment;
         break;
       case Action::kWidthUp:
-        f.width = has ? p[0] : f.width + settings.line_width_increment;
+        f.width = has ? p[0] : f.width + settings_.line_width_increment;
         break;
       case Action::kColorUp:
         f.color = has ? static_cast<int>(clamp_to_integer(p[0], -65535, 65535)) : f.color + 1;
@@ -239,34 +242,57 @@ void walk(const ModuleString& s, const std::vector<Action>& actions, const Turtl
         break;
       case Action::kPolygonBegin:
         ++polygon_depth;
-        visitor.polygon_begin(f);
+        visitor_.polygon_begin(f);
         break;
       case Action::kPolygonVertex:
-        if (polygon_depth > 0) visitor.vertex(f.position);
+        if (polygon_depth > 0) visitor_.vertex(f.position);
         break;
       case Action::kPolygonEnd:
         if (polygon_depth == 0) {
           throw ValueError("'}' without a matching '{' at module " + std::to_string(i));
         }
         --polygon_depth;
-        visitor.polygon_end(f);
+        visitor_.polygon_end(f);
         break;
       case Action::kSurface:
-        visitor.surface(has ? p[0] : 1.0, f);
+        visitor_.surface(has ? p[0] : 1.0, f);
         break;
       case Action::kSphere:
-        visitor.sphere(has ? p[0] : f.width, !has, f);
+        visitor_.sphere(has ? p[0] : f.width, !has, f);
         break;
       case Action::kQueryP:
       case Action::kQueryH:
       case Action::kQueryU:
       case Action::kQueryL:
       case Action::kCommunicate:
-        visitor.query(i, a, f);
+        visitor_.query(i, a, f);
         break;
       case Action::kNone:
         break;
     }
+  }
+
+  Frame f;
+  std::vector<Frame> stack;
+  int polygon_depth = 0;
+
+ private:
+  static constexpr double kRad = std::numbers::pi / 180.0;
+  const TurtleSettings& settings_;
+  Visitor& visitor_;
+  double default_angle_;
+  Eigen::Vector3d t_;
+  bool tropism_ = false;
+};
+
+template <class Visitor>
+void walk(const ModuleString& s, const std::vector<Action>& actions, const TurtleSettings& settings,
+          Visitor& visitor) {
+  Turtle<Visitor> turtle(settings, visitor);
+  const std::size_t n = s.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Action a = actions[s.symbol(i)];
+    if (a != Action::kNone) turtle.apply(a, s.parameters(i), i);
   }
 }
 

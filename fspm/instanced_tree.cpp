@@ -1,0 +1,100 @@
+#include "fspm/instanced_tree.hpp"
+
+#include <string>
+
+#include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
+
+namespace fspm {
+namespace {
+
+// One occurrence of a prototype: where it stands and what its base hangs from.
+struct Occurrence {
+  std::uint32_t prototype = 0;
+  NodeId parent = kNoNode;
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
+  double order = 0.0;
+};
+
+void check_children(const InstancedTree& tree) {
+  const std::size_t np = tree.prototypes.size();
+  for (const auto& p : tree.prototypes) {
+    for (const auto& c : p.children) {
+      if (c.prototype >= np) {
+        throw ValueError("instanced tree: child refers to prototype " +
+                         std::to_string(c.prototype) + " of " + std::to_string(np));
+      }
+      if (c.attach != kNoNode && c.attach >= p.geometry.size()) {
+        throw ValueError("instanced tree: child attached to node " + std::to_string(c.attach) +
+                         " of a prototype with " + std::to_string(p.geometry.size()) + " nodes");
+      }
+    }
+  }
+}
+
+// Nodes of the explicit tree, counted occurrence by occurrence; throws past `max_nodes` (or
+// past as many occurrences, which only a cycle of empty prototypes reaches).
+std::size_t explicit_size(const InstancedTree& tree, std::size_t max_nodes) {
+  std::size_t nodes = 0, occurrences = 0;
+  std::vector<std::uint32_t> stack{0};
+  while (!stack.empty()) {
+    const auto& p = tree.prototypes[stack.back()];
+    stack.pop_back();
+    nodes += p.geometry.size();
+    if (nodes > max_nodes || ++occurrences > max_nodes + tree.prototypes.size()) {
+      throw ValueError("the explicit tree would exceed " + std::to_string(max_nodes) + " nodes");
+    }
+    for (const auto& c : p.children) stack.push_back(c.prototype);
+  }
+  return nodes;
+}
+
+}  // namespace
+
+TreeGraph expand_instanced_tree(const InstancedTree& tree, std::size_t max_nodes) {
+  TreeGraph out;
+  if (tree.prototypes.empty()) return out;
+  check_children(tree);
+  const std::size_t nodes = explicit_size(tree, max_nodes);
+  for (const auto& p : tree.prototypes) {
+    for (const auto& name : p.geometry.attribute_names()) out.add_attribute(name);
+  }
+  check_memory(static_cast<double>(nodes) * TreeGraph::bytes_per_node(out.attribute_names().size()),
+               "the explicit tree of " + std::to_string(nodes) + " nodes");
+  out.reserve(nodes);
+  // Depth first, children pushed in reverse so they come out in order.
+  std::vector<Occurrence> stack{Occurrence{}};
+  std::vector<NodeId> map;
+  while (!stack.empty()) {
+    const Occurrence o = stack.back();
+    stack.pop_back();
+    const auto& p = tree.prototypes[o.prototype];
+    const TreeGraph& g = p.geometry;
+    map.assign(g.size(), kNoNode);
+    for (NodeId n = 0; n < g.size(); ++n) {
+      NodeData d = g.data(n);
+      d.start = o.rotation * d.start + o.translation;
+      d.end = o.rotation * d.end + o.translation;
+      d.direction = o.rotation * d.direction;
+      d.order = static_cast<std::uint16_t>(d.order + o.order);
+      NodeId parent = n == 0 ? o.parent : map[g.parent(n)];
+      if (parent == kNoNode && !out.empty()) parent = 0;  // one root
+      map[n] = out.add_node(parent, d);
+    }
+    for (const auto& name : g.attribute_names()) {
+      const auto from = g.attribute(name);
+      const auto to = out.attribute(name);
+      for (NodeId n = 0; n < g.size(); ++n) to[map[n]] = from[n];
+    }
+    for (std::size_t k = p.children.size(); k-- > 0;) {
+      const auto& c = p.children[k];
+      stack.push_back({c.prototype, c.attach == kNoNode ? o.parent : map[c.attach],
+                       o.rotation * c.rotation, o.rotation * c.translation + o.translation,
+                       o.order + c.order});
+    }
+  }
+  return out;
+}
+
+}  // namespace fspm
