@@ -17,6 +17,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/full_command_list.hpp"
+#include "cli/lsystem_source.hpp"
 #include "cli/output.hpp"
 #include "fspm/error.hpp"
 
@@ -50,7 +51,30 @@ std::filesystem::path full_executable() {
                 " (installed beside fspm): " + std::strerror(errno));
 }
 
+// `lsystem interpret ... -o MESH`: the mesh writers live in fspm-full.
+bool writes_lsystem_mesh(int first, int argc, char** argv) {
+  bool interpret = false;
+  for (int k = first; k < argc; ++k) {
+    const std::string_view arg = argv[k];
+    interpret = interpret || arg == "interpret";
+    std::string output;
+    if ((arg == "-o" || arg == "--output") && k + 1 < argc) {
+      output = argv[k + 1];
+    } else if (arg.starts_with("--output=")) {
+      output = std::string(arg.substr(9));
+    } else if (arg.starts_with("-o") && arg.size() > 2) {
+      output = std::string(arg.substr(2));
+    }
+    if (interpret && !output.empty() && is_mesh_path(output)) return true;
+  }
+  return false;
+}
+
 }  // namespace
+
+void write_lsystem_mesh(const LsystemDrawing&, const std::string& path, nlohmann::json&) {
+  throw ValueError("meshes of L-systems are written by fspm-full (installed beside fspm)", path);
+}
 
 void add_full_commands(CLI::App& app) {
   // Listed for --help: hand_over_full_commands() has replaced the process before parsing when
@@ -80,6 +104,7 @@ void hand_over_full_commands(int argc, char** argv) {
     for (const FullCommand& c : kFullCommands) {
       if (arg == c.name) hand_over(argc, argv);
     }
+    if (arg == "lsystem" && writes_lsystem_mesh(k + 1, argc, argv)) hand_over(argc, argv);
     return;
   }
 }

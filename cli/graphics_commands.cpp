@@ -19,6 +19,8 @@
 
 #include "cli/commands.hpp"
 #include "cli/full_command_list.hpp"
+#include "cli/lsystem_mesh.hpp"
+#include "cli/lsystem_source.hpp"
 #include "cli/output.hpp"
 #include "cli/scene_obstacles.hpp"
 #include "cli/wind_skin.hpp"
@@ -42,6 +44,7 @@
 #include "greenlab/plant_params.hpp"
 #include "greenlab/reconstruction.hpp"
 #include "greenlab/simulation.hpp"
+#include "lsystem/parser.hpp"
 
 namespace fspm::cli {
 namespace {
@@ -89,6 +92,8 @@ struct RenderCommand {
   WindArguments wind;
   bool lod = false;
   double lod_distance_m = 0.0;
+  int steps = -1;
+  bool compressed = false;
   bool json = false;
 };
 
@@ -130,9 +135,9 @@ void report_missing_leaves(const graphics::InstancedMesh& mesh, const std::strin
 }
 
 // What a graphics command was given: a tree file, a compressed graph (.ctree) or a GreenLab plant
-// description (.toml, simulated on the fly), a scene of many plants (.json) or a ParaView growth
-// sequence (.pvd, viewer only).
-enum class InputKind { kTree, kCompressed, kPlant, kScene, kPvd };
+// description (.toml, simulated on the fly), a scene of many plants (.json), a ParaView growth
+// sequence (.pvd, viewer only) or an L-system (.l, render only).
+enum class InputKind { kTree, kCompressed, kPlant, kScene, kPvd, kLsystem };
 
 InputKind input_kind(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -142,6 +147,7 @@ InputKind input_kind(const std::string& path) {
   if (ext == ".toml") return InputKind::kPlant;
   if (ext == ".json") return InputKind::kScene;
   if (ext == ".pvd") return InputKind::kPvd;
+  if (ext == ".l") return InputKind::kLsystem;
   return InputKind::kTree;
 }
 
@@ -182,6 +188,9 @@ graphics::InstancedMesh load_part(const std::string& path, InputKind kind,
   if (kind == InputKind::kScene) throw ValueError("a scene cannot include another scene", path);
   if (kind == InputKind::kPvd) {
     throw ValueError("a .pvd is a growth sequence of meshes: open it with fspm view", path);
+  }
+  if (kind == InputKind::kLsystem) {
+    throw ValueError("an L-system is drawn by fspm render or fspm lsystem interpret", path);
   }
   if (age >= 0.0) options.max_birth_time = age;
   return graphics::InstancedMesh::single(
@@ -441,6 +450,20 @@ void run_lod_render(const RenderCommand& c, const graphics::MeshOptions& mesh_op
   }
 }
 
+// An L-system (.l) for a picture: explicitly, or by instancing with --compressed, substructures
+// smaller than a pixel of the picture drawn as their chord.
+graphics::InstancedMesh lsystem_mesh(const RenderCommand& c, const graphics::MeshOptions& options,
+                                     const graphics::RenderOptions& render,
+                                     nlohmann::json& summary) {
+  LsystemSource source;
+  source.file = c.tree;
+  source.steps = c.steps;
+  const LsystemDrawing drawing =
+      draw_lsystem(source, c.compressed, -1.0, std::max(render.width, render.height));
+  summary = drawing.summary;
+  return mesh_lsystem(drawing, options);
+}
+
 void run_render(const RenderCommand& c) {
   refuse_overwriting_input(c.out, {c.tree, c.obstacles});
   const auto t0 = std::chrono::steady_clock::now();
@@ -457,13 +480,19 @@ void run_render(const RenderCommand& c) {
   graphics::MeshOptions mesh_options;
   set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
   mesh_options.edge_length_m = c.edge_length_m;
+  const bool lsystem = input_kind(c.tree) == InputKind::kLsystem;
+  if ((c.compressed || c.steps >= 0) && !lsystem) {
+    throw ValueError("--compressed and --steps apply to L-system files (.l)", c.tree);
+  }
   if (c.lod) {
+    if (lsystem) throw ValueError("--lod does not apply to L-system files (.l)", c.tree);
     run_lod_render(c, mesh_options, options, t0);
     return;
   }
-  graphics::InstancedMesh mesh = c.wind_time_s >= 0.0
-                                     ? wind_frame(c, mesh_options, options)
-                                     : load_instanced(c.tree, c.format, mesh_options, true);
+  nlohmann::json lsystem_summary;
+  graphics::InstancedMesh mesh = c.wind_time_s >= 0.0 ? wind_frame(c, mesh_options, options)
+                                 : lsystem ? lsystem_mesh(c, mesh_options, options, lsystem_summary)
+                                           : load_instanced(c.tree, c.format, mesh_options, true);
   if (c.leaves) report_missing_leaves(mesh, c.tree);
   if (!c.color_by.empty()) {
     for (const auto& m : mesh.meshes) (void)m.attribute(c.color_by);  // unknown: ValueError
@@ -477,15 +506,17 @@ void run_render(const RenderCommand& c) {
   const graphics::Image image = graphics::render_scene(mesh, options);
   graphics::write_image(image, c.out);
   if (c.json) {
-    print_json({{"file", c.tree},
-                {"output", c.out},
-                {"width", image.width},
-                {"height", image.height},
-                {"triangles", mesh.triangle_count()},
-                {"obstacle_triangles", obstacle_triangles},
-                {"meshes", mesh.meshes.size()},
-                {"instances", mesh.instances.size()},
-                {"seconds", seconds_since(t0)}});
+    nlohmann::json j = {{"file", c.tree},
+                        {"output", c.out},
+                        {"width", image.width},
+                        {"height", image.height},
+                        {"triangles", mesh.triangle_count()},
+                        {"obstacle_triangles", obstacle_triangles},
+                        {"meshes", mesh.meshes.size()},
+                        {"instances", mesh.instances.size()},
+                        {"seconds", seconds_since(t0)}};
+    if (lsystem) j["lsystem"] = lsystem_summary;
+    print_json(j);
   } else if (verbosity() > 0) {
     std::cerr << "wrote " << c.out << " (" << image.width << "x" << image.height << ")\n";
   }
@@ -733,9 +764,15 @@ void add_graphics_commands(CLI::App& app) {
   auto render = std::make_shared<RenderCommand>();
   CLI::App* r = app.add_subcommand(kRenderCommand.name, kRenderCommand.description);
   r->add_option("TREE", render->tree,
-                "Tree file (.tree, .treeb, .nwk, .mtg), compressed plant (.ctree, plant .toml) or "
-                "scene (.json)")
+                "Tree file (.tree, .treeb, .nwk, .mtg), compressed plant (.ctree, plant .toml), "
+                "scene (.json) or L-system (.l, with the .v beside it)")
       ->required();
+  r->add_flag("--compressed", render->compressed,
+              "L-system: derive into shared substructures and draw each once, placed by rigid "
+              "transforms (Jaeger 3.1.2); substructures smaller than a pixel drawn as one "
+              "internode. Plants far too large to derive explicitly");
+  r->add_option("--steps", render->steps, "L-system: derivation steps (default: the file's)")
+      ->check(number_in(0, lsystem::kMaxDerivationLength));
   r->add_option("-o,--output", render->out, "Image: .png, .tif or .exr")->required();
   r->add_option("--format", render->format, "Input format: " + formats);
   r->add_option("--color-by", render->color_by,

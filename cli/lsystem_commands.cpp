@@ -9,9 +9,11 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/lsystem_source.hpp"
 #include "cli/output.hpp"
 #include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
+#include "fspm/instanced_tree.hpp"
 #include "fspm/tree_file.hpp"
 #include "lsystem/derivation.hpp"
 #include "lsystem/parser.hpp"
@@ -21,39 +23,14 @@
 namespace fspm::cli {
 namespace {
 
-struct LsystemOptions {
-  std::string file;
-  int steps = -1;
-  std::int64_t seed = -1;
-  std::vector<std::string> defines;
-  std::size_t budget = lsystem::kDefaultModuleBudget;
+struct LsystemOptions : LsystemSource {
   bool string = false;
   bool json = false;
   bool compressed = false;
-  std::string view;
+  double detail = 0.0;
   std::string output;
   std::string format;
 };
-
-lsystem::MacroOverrides parse_defines(const std::vector<std::string>& defines) {
-  lsystem::MacroOverrides out;
-  for (const std::string& d : defines) {
-    const auto eq = d.find('=');
-    if (eq == std::string::npos || eq == 0) {
-      throw ValueError("--define expects NAME=VALUE, got '" + d + "'");
-    }
-    out[d.substr(0, eq)] = d.substr(eq + 1);
-  }
-  return out;
-}
-
-lsystem::DeriveOptions derive_options(const LsystemOptions& o) {
-  lsystem::DeriveOptions d;
-  if (o.steps >= 0) d.steps = o.steps;
-  if (o.seed >= 0) d.seed = static_cast<std::uint64_t>(o.seed);
-  d.module_budget = o.budget;
-  return d;
-}
 
 void add_common(CLI::App* cmd, LsystemOptions& o) {
   cmd->add_option("file", o.file, "L-system file (.l, cpfg syntax)")->required();
@@ -64,6 +41,10 @@ void add_common(CLI::App* cmd, LsystemOptions& o) {
   cmd->add_option("--define", o.defines, "Override a #define: NAME=VALUE (repeatable)");
   cmd->add_option("--budget", o.budget, "Largest string allowed, in modules")
       ->check(number_in(1, 1e15));
+  cmd->add_option("--variants", o.variants,
+                  "With --compressed: derive stochastic L-systems into substructures, each in at "
+                  "most K variants drawn from the seeded generator (Jaeger 2.1.3)")
+      ->check(number_in(1, 1e6));
 }
 
 nlohmann::json symbol_counts(const std::vector<std::uint64_t>& per_symbol,
@@ -79,7 +60,8 @@ nlohmann::json symbol_counts(const std::vector<std::uint64_t>& per_symbol,
 // computed on the graph.
 void run_derive_compressed(const LsystemOptions& o, const lsystem::LSystem& sys) {
   const auto t0 = std::chrono::steady_clock::now();
-  const lsystem::SubstructureGraph g = lsystem::derive_substructures(sys, derive_options(o));
+  const lsystem::SubstructureGraph g =
+      lsystem::derive_substructures(sys, derive_options(o), o.variants);
   const lsystem::SubstructureCounts c = lsystem::count_modules(g, sys.symbols.size());
   const double seconds = seconds_since(t0);
   const std::size_t graph_bytes = g.memory_bytes();
@@ -122,7 +104,7 @@ void run_derive(const LsystemOptions& o) {
   const lsystem::LSystem sys = lsystem::parse_lsystem_file(o.file, parse_defines(o.defines));
   std::string why_not;
   if (o.compressed) {
-    if (const auto obstacle = lsystem::factorization_obstacle(sys)) {
+    if (const auto obstacle = lsystem::factorization_obstacle(sys, o.variants > 0)) {
       why_not = "it has " + *obstacle;
       spdlog::warn("{}: derived explicitly, not into substructures: {}", o.file, why_not);
     } else {
@@ -157,8 +139,34 @@ void run_derive(const LsystemOptions& o) {
   std::cout << "symbols: " << symbols.dump() << '\n';
 }
 
+// --compressed, or a mesh output: the drawing as prototypes and placements (one prototype when
+// drawn explicitly), written as a mesh or expanded into a tree file.
+void run_interpret_drawing(const LsystemOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const LsystemDrawing drawing = draw_lsystem(o, o.compressed, o.detail, 0);
+  nlohmann::json summary = drawing.summary;
+  if (is_mesh_path(o.output)) {
+    write_lsystem_mesh(drawing, o.output, summary);
+  } else {
+    const TreeGraph tree = expand_instanced_tree(drawing.tree, o.budget);
+    if (tree.empty()) {
+      throw ValueError("the derived string draws nothing (no F module): no tree to write", o.file);
+    }
+    write_tree_file(tree, o.output, o.format);
+    summary["nodes"] = tree.size();
+  }
+  summary["output"] = o.output;
+  summary["seconds"] = seconds_since(t0);
+  spdlog::info("{}: {}", o.file, summary.dump());
+  if (o.json) print_json(summary);
+}
+
 void run_interpret(const LsystemOptions& o) {
   refuse_overwriting_input(o.output, {o.file, o.view});
+  if (o.compressed || is_mesh_path(o.output)) {
+    run_interpret_drawing(o);
+    return;
+  }
   const lsystem::LSystem sys = lsystem::parse_lsystem_file(o.file, parse_defines(o.defines));
   const lsystem::TurtleSettings view =
       o.view.empty() ? lsystem::view_for_lsystem(o.file) : lsystem::read_view_file(o.view);
@@ -210,8 +218,21 @@ void add_lsystem_commands(CLI::App& app) {
   auto* interp = group->add_subcommand("interpret", "Derive and draw into a tree graph file");
   add_common(interp, *interp_opts);
   interp->add_option("--view", interp_opts->view, "View file (default: the .v beside FILE)");
-  interp->add_option("-o,--output", interp_opts->output, "Tree file to write")->required();
+  interp
+      ->add_option("-o,--output", interp_opts->output,
+                   "Tree file (.tree, .treeb, .nwk, .mtg) or mesh (.glb keeps the instances; "
+                   ".obj, .ply, .vtp flattened) to write")
+      ->required();
   interp->add_option("--format", interp_opts->format, "tree, treeb, nwk or mtg (default: ext)");
+  interp->add_flag("--compressed", interp_opts->compressed,
+                   "Derive into shared substructures and draw each once, placing its occurrences "
+                   "by rigid transforms (Jaeger 3.1.2); --json adds prototypes, instances and "
+                   "represented_segments");
+  interp
+      ->add_option("--detail", interp_opts->detail,
+                   "With --compressed: draw substructures smaller than this length (model "
+                   "units, box diagonal) as one internode (0: exact)")
+      ->check(number_in(0.0, 1e300));
   interp->add_flag("--json", interp_opts->json, "Print a JSON summary");
   interp->callback([interp_opts] { run_interpret(*interp_opts); });
 }

@@ -127,7 +127,7 @@ TreeGraph with_attach_stubs(const InstancedTree& tree, const InstancedTree::Prot
   std::vector<double> birth(g.size(), std::numeric_limits<double>::infinity());
   for (const auto& c : p.children) {
     const TreeGraph& child = tree.prototypes[c.prototype].geometry;
-    if (child.empty() || child.kind(0) != OrganKind::kInternode) continue;
+    if (c.attach == kNoNode || child.empty() || child.kind(0) != OrganKind::kInternode) continue;
     birth[c.attach] = std::min(birth[c.attach], child.birth_time(0));
   }
   const auto n = static_cast<NodeId>(g.size());
@@ -159,7 +159,7 @@ InstancedMesh mesh_instanced(const InstancedTree& tree, const MeshOptions& optio
         throw ValueError("instanced tree: child refers to prototype " +
                          std::to_string(c.prototype) + " of " + std::to_string(np));
       }
-      if (c.attach >= p.geometry.size()) {
+      if (c.attach != kNoNode && c.attach >= p.geometry.size()) {
         throw ValueError("instanced tree: child attached to node " + std::to_string(c.attach) +
                          " of a prototype with " + std::to_string(p.geometry.size()) + " nodes");
       }
@@ -208,9 +208,10 @@ InstancedMesh mesh_instanced(const InstancedTree& tree, const MeshOptions& optio
                        " substructure occurrences");
     }
     for (const auto& c : p.children) {
-      if (p.geometry.birth_time(c.attach) > o.max_birth_time) continue;
+      if (c.attach != kNoNode && p.geometry.birth_time(c.attach) > o.max_birth_time) continue;
       queue.push_back({c.prototype, item.rotation * c.rotation,
-                       item.rotation * c.translation + item.translation, item.order + 1.0f});
+                       item.rotation * c.translation + item.translation,
+                       item.order + static_cast<float>(c.order)});
     }
   }
   return out;

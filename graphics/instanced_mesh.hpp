@@ -9,27 +9,16 @@
 #include <cstdint>
 #include <vector>
 
+#include "fspm/instanced_tree.hpp"
 #include "fspm/tree_graph.hpp"
 #include "graphics/tree_mesher.hpp"
 #include "graphics/triangle_mesh.hpp"
 
 namespace fspm::graphics {
 
-// A plant as prototypes and transforms, the shape greenlab::reconstruct_instanced produces (kept
-// here in core types so graphics does not depend on greenlab).
-struct InstancedTree {
-  struct Child {
-    std::uint32_t prototype = 0;
-    NodeId attach = kNoNode;  // node of the parent prototype the child grows from
-    Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // child frame -> parent frame
-    Eigen::Vector3d translation = Eigen::Vector3d::Zero();
-  };
-  struct Prototype {
-    TreeGraph geometry;  // node 0 is the base of the substructure
-    std::vector<Child> children;
-  };
-  std::vector<Prototype> prototypes;  // prototypes[0] is the root (the trunk)
-};
+// A plant as prototypes and transforms (fspm/instanced_tree.hpp): what
+// greenlab::reconstruct_instanced and lsystem::interpret_instanced produce.
+using InstancedTree = fspm::InstancedTree;
 
 // One placement of a shared mesh: x_world = linear * x_mesh + translation, linear a rotation
 // times a uniform scale.
@@ -73,8 +62,10 @@ struct InstancedMesh {
 // explicit tree's chains are, so flatten() has the triangle count of mesh_tree on the expanded
 // tree; ring orientations and leaf blades (oriented against the world's up) may differ slightly.
 // Exception: a child hanging from the tip of its parent's axis continues the parent's tube in the
-// explicit tree but starts its own here. Throws ValueError for bad options or a child referring
-// to a missing prototype or node, or more than kMaxInstances instances.
+// explicit tree but starts its own here, as does a child attached to no node (kNoNode). Each
+// child adds its `order` to the "order" attribute of everything it places. Throws ValueError for
+// bad options or a child referring to a missing prototype or node, or more than kMaxInstances
+// instances.
 InstancedMesh mesh_instanced(const InstancedTree& tree, const MeshOptions& options = {});
 
 inline constexpr std::size_t kMaxInstances = std::size_t{1} << 26;
