@@ -229,6 +229,7 @@ class Interpreter {
       result.flowers += k == OrganKind::kFlower ? 1 : 0;
     }
     result.instances = drawn.tree.empty() ? 0 : 1;
+    result.occurrences = 1;
     for (const auto& p : drawn_points(drawn)) result.bounds.extend(p);
     result.tree.prototypes.push_back({std::move(drawn.tree), {}});
     return result;
@@ -377,6 +378,7 @@ class Interpreter {
       result.leaves = add_saturating(result.leaves, multiply_saturating(times, leaves));
       result.flowers = add_saturating(result.flowers, multiply_saturating(times, flowers));
       if (!g.empty()) result.instances = add_saturating(result.instances, times);
+      result.occurrences = add_saturating(result.occurrences, times);
     }
   }
 

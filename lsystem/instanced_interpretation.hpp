@@ -54,6 +54,8 @@ struct InstancedInterpretation {
   std::uint64_t flowers = 0;  // spheres @o
   // Occurrences of prototypes that draw something: the instances of the instanced mesh.
   std::uint64_t instances = 0;
+  // Occurrences of all prototypes, those that only place others included.
+  std::uint64_t occurrences = 0;
   // Box around everything drawn (an upper bound, see above).
   Eigen::AlignedBox3d bounds;
   // Non-empty: interpreted explicitly, because of this (see above).
