@@ -7,10 +7,18 @@
 //   derive_compressed/abop_1_24a/20 and derive_compressed/parametric_tree/40: the same grammars
 //     derived into shared substructures (Jaeger et al. 2010, 2.1.3) at n where no explicit
 //     string fits (2.4 * 10^14 and 8.8 * 10^12 modules). Goal: under 1 ms and 1 MB each.
+//   derive_instanced/abop_1_24a/N: the same grammar derived into substructures and drawn by
+//     instancing (Jaeger 3.1.2; lsystem/instanced_interpretation.hpp), exactly, at n = 12
+//     (6 * 10^8 modules) and n = 20 (2.4 * 10^14). Goal: under 1 ms and 1 MB.
+//   instanced_mesh/abop_1_24a/12: that drawing with the level of detail of a 1024-pixel picture
+//     (substructures under a pixel drawn as one internode), meshed as the renderer takes it.
+//     Goal: a picture of the plant in a few seconds (the render itself: docs/BENCHMARKS.md).
 // "modules/s" counts the modules of the final string per second of the whole run.
 #include <benchmark/benchmark.h>
 
+#include "graphics/instanced_mesh.hpp"
 #include "lsystem/derivation.hpp"
+#include "lsystem/instanced_interpretation.hpp"
 #include "lsystem/parser.hpp"
 #include "lsystem/substructure_derivation.hpp"
 #include "lsystem/turtle.hpp"
@@ -107,6 +115,60 @@ BENCHMARK(BM_InterpretAbop124a)
     ->Name("interpret/abop_1_24a")
     ->Arg(8)
     ->Arg(10)
+    ->Unit(benchmark::kMillisecond);
+
+const char* kAbop124aView = "angle increment: 25.7\ninitial line width: 2 pixels\n";
+
+void BM_DeriveInstancedAbop124a(benchmark::State& state) {
+  const LSystem sys = parse_lsystem(kAbop124a);
+  const TurtleSettings view = parse_view(kAbop124aView);
+  DeriveOptions options;
+  options.steps = static_cast<int>(state.range(0));
+  InstancedInterpretation drawn;
+  std::size_t bytes = 0;
+  for (auto _ : state) {
+    const SubstructureGraph g = derive_substructures(sys, options);
+    drawn = interpret_instanced(g, sys, view);
+    bytes = g.memory_bytes();
+    benchmark::DoNotOptimize(drawn.internodes);
+  }
+  for (const auto& p : drawn.tree.prototypes) {
+    bytes += sizeof(p) + p.children.capacity() * sizeof(fspm::InstancedTree::Child) +
+             static_cast<std::size_t>(static_cast<double>(p.geometry.size()) *
+                                      fspm::TreeGraph::bytes_per_node(1));
+  }
+  state.counters["segments"] = static_cast<double>(drawn.internodes);
+  state.counters["prototypes"] = static_cast<double>(drawn.tree.prototypes.size());
+  state.counters["bytes"] = static_cast<double>(bytes);
+}
+BENCHMARK(BM_DeriveInstancedAbop124a)
+    ->Name("derive_instanced/abop_1_24a")
+    ->Arg(12)
+    ->Arg(20)
+    ->Unit(benchmark::kMicrosecond);
+
+void BM_InstancedMeshAbop124a(benchmark::State& state) {
+  const LSystem sys = parse_lsystem(kAbop124a);
+  const TurtleSettings view = parse_view(kAbop124aView);
+  DeriveOptions options;
+  options.steps = static_cast<int>(state.range(0));
+  std::size_t instances = 0, triangles = 0;
+  for (auto _ : state) {
+    const SubstructureGraph g = derive_substructures(sys, options);
+    InstancedInterpretationOptions lod;
+    const InstancedInterpretation exact = interpret_instanced(g, sys, view, lod);
+    lod.min_detail = exact.bounds.sizes().maxCoeff() / 1024.0;
+    const InstancedInterpretation drawn = interpret_instanced(g, sys, view, lod);
+    const fspm::graphics::InstancedMesh mesh = fspm::graphics::mesh_instanced(drawn.tree);
+    instances = mesh.instances.size();
+    triangles = mesh.triangle_count();
+  }
+  state.counters["instances"] = static_cast<double>(instances);
+  state.counters["triangles"] = static_cast<double>(triangles);
+}
+BENCHMARK(BM_InstancedMeshAbop124a)
+    ->Name("instanced_mesh/abop_1_24a")
+    ->Arg(12)
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace
