@@ -94,6 +94,7 @@ struct RenderCommand {
   double lod_distance_m = 0.0;
   int steps = -1;
   bool compressed = false;
+  int variants = 0;
   bool json = false;
 };
 
@@ -458,6 +459,7 @@ graphics::InstancedMesh lsystem_mesh(const RenderCommand& c, const graphics::Mes
   LsystemSource source;
   source.file = c.tree;
   source.steps = c.steps;
+  source.variants = c.variants;
   const LsystemDrawing drawing =
       draw_lsystem(source, c.compressed, -1.0, std::max(render.width, render.height));
   summary = drawing.summary;
@@ -481,8 +483,8 @@ void run_render(const RenderCommand& c) {
   set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
   mesh_options.edge_length_m = c.edge_length_m;
   const bool lsystem = input_kind(c.tree) == InputKind::kLsystem;
-  if ((c.compressed || c.steps >= 0) && !lsystem) {
-    throw ValueError("--compressed and --steps apply to L-system files (.l)", c.tree);
+  if ((c.compressed || c.steps >= 0 || c.variants > 0) && !lsystem) {
+    throw ValueError("--compressed, --steps and --variants apply to L-system files (.l)", c.tree);
   }
   if (c.lod) {
     if (lsystem) throw ValueError("--lod does not apply to L-system files (.l)", c.tree);
@@ -771,6 +773,10 @@ void add_graphics_commands(CLI::App& app) {
               "L-system: derive into shared substructures and draw each once, placed by rigid "
               "transforms (Jaeger 3.1.2); substructures smaller than a pixel drawn as one "
               "internode. Plants far too large to derive explicitly");
+  r->add_option("--variants", render->variants,
+                "L-system with --compressed: stochastic productions derived with K variants per "
+                "substructure (Jaeger 2.1.3)")
+      ->check(number_in(1, 1e6));
   r->add_option("--steps", render->steps, "L-system: derivation steps (default: the file's)")
       ->check(number_in(0, lsystem::kMaxDerivationLength));
   r->add_option("-o,--output", render->out, "Image: .png, .tif or .exr")->required();

@@ -106,6 +106,9 @@ void run_derive(const LsystemOptions& o) {
   if (o.compressed) {
     if (const auto obstacle = lsystem::factorization_obstacle(sys, o.variants > 0)) {
       why_not = "it has " + *obstacle;
+      if (o.variants == 0 && !lsystem::factorization_obstacle(sys, true)) {
+        why_not += " (--variants K derives it with K variants per substructure)";
+      }
       spdlog::warn("{}: derived explicitly, not into substructures: {}", o.file, why_not);
     } else {
       run_derive_compressed(o, sys);
@@ -157,7 +160,9 @@ void run_interpret_drawing(const LsystemOptions& o) {
   }
   summary["output"] = o.output;
   summary["seconds"] = seconds_since(t0);
-  spdlog::info("{}: {}", o.file, summary.dump());
+  spdlog::info("{}: {} steps, {} prototypes placed {} times -> {}", o.file, summary["steps"].dump(),
+               summary["prototypes"].dump(), summary.value("instances", std::uint64_t{1}),
+               o.output);
   if (o.json) print_json(summary);
 }
 

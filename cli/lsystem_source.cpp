@@ -120,8 +120,11 @@ LsystemDrawing draw_lsystem(const LsystemSource& source, bool compressed, double
   const auto obstacle =
       compressed ? lsystem::factorization_obstacle(sys, source.variants > 0) : std::nullopt;
   if (obstacle) {
-    spdlog::warn("{}: derived explicitly, not into substructures: it has {}", source.file,
-                 *obstacle);
+    const bool variants_would_do =
+        source.variants == 0 && !lsystem::factorization_obstacle(sys, true);
+    spdlog::warn(
+        "{}: derived explicitly, not into substructures: it has {}{}", source.file, *obstacle,
+        variants_would_do ? " (--variants K derives it with K variants per substructure)" : "");
   }
   if (compressed && !obstacle) {
     out = draw_compressed(source, sys, view, min_detail, pixels);
