@@ -1,6 +1,7 @@
 // fspm lsystem derive | interpret, run as a user would.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -97,6 +98,41 @@ TEST(LsystemCli, InterpretWritesATreeFile) {
   // extent, its height: the trunk of lengths 0.9^k, k < 10, sum (1 - 0.9^10) / 0.1.
   const double height = (1.0 - std::pow(0.9, 10)) / 0.1;
   EXPECT_NEAR(tree.radius(0), 0.5 * 10.0 * height / 500.0, 1e-9);
+}
+
+// Fig. 1.24a at n = 5 drawn by instancing: F after 1..5 remaining steps and the axiom are the six
+// prototypes, F(1) (five internodes) is placed 5^4 times, and the expanded tree has the explicit
+// drawing's 5^5 internodes in the same box. At n = 20 (9.5 * 10^13 internodes) the mesh is
+// refused before anything is built, naming --detail.
+TEST(LsystemCli, CompressedInterpretDrawsByInstancing) {
+  const auto dir = scratch_dir("lsystem_interpret_compressed");
+  const std::string tree = (dir / "a.tree").string(), plain = (dir / "b.tree").string();
+  auto r = run_fspm("lsystem interpret " + example("abop_1_24a.l") + " --compressed -o " + tree +
+                    " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["prototypes"], 6);
+  EXPECT_EQ(j["instances"], 625);
+  EXPECT_EQ(j["represented_segments"], 3125);
+  ASSERT_EQ(run_fspm("lsystem interpret " + example("abop_1_24a.l") + " -o " + plain).exit_code, 0);
+  const TreeGraph a = read_tree_file(tree), b = read_tree_file(plain);
+  ASSERT_EQ(a.size(), 3125u);
+  ASSERT_EQ(b.size(), 3125u);
+  Eigen::AlignedBox3d box_a, box_b;
+  for (NodeId n = 0; n < a.size(); ++n) {
+    box_a.extend(a.end(n));
+    box_b.extend(b.end(n));
+  }
+  EXPECT_LT((box_a.min() - box_b.min()).norm() + (box_a.max() - box_b.max()).norm(), 1e-9);
+  const std::string glb = (dir / "a.glb").string();
+  r = run_fspm("lsystem interpret " + example("abop_1_24a.l") + " --compressed -o " + glb +
+               " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["mesh_instances"], 625);
+  r = run_fspm("lsystem interpret " + example("abop_1_24a.l") + " --compressed --steps 20 -o " +
+               glb);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("--detail"), std::string::npos) << r.err;
 }
 
 TEST(LsystemCli, BadInputExitsOneWithPosition) {

@@ -105,5 +105,32 @@ TEST(LsystemRender, EveryExampleLooksLikeAPlant) {
   EXPECT_GE(drawn, 10u);
 }
 
+// Fig. 1.24a at n = 6 drawn explicitly and by instancing, substructures under a pixel as their
+// chord: the same picture up to the pixels along the outline.
+TEST(LsystemRender, CompressedRenderHasTheExplicitSilhouette) {
+  const auto dir = scratch_dir("lsystem_render_compressed");
+  const std::string l = std::string(FSPM_SOURCE_DIR) + "/examples/lsystems/abop_1_24a.l";
+  std::vector<std::vector<char>> masks;
+  for (const std::string mode : {"", " --compressed"}) {
+    const std::string png = (dir / ("a" + std::to_string(masks.size()) + ".png")).string();
+    const auto r = run_fspm("render " + l + mode +
+                            " --steps 6 --view front --no-ground --size 240x320 -o " + png);
+    if (r.exit_code != 0 && (r.err.find("without VTK") != std::string::npos ||
+                             r.err.find("no X display") != std::string::npos)) {
+      GTEST_SKIP() << r.err;
+    }
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    masks.push_back(foreground_mask(graphics::read_image(png)));
+  }
+  std::size_t both = 0, either = 0;
+  for (std::size_t i = 0; i < masks[0].size(); ++i) {
+    both += masks[0][i] && masks[1][i] ? 1 : 0;
+    either += masks[0][i] || masks[1][i] ? 1 : 0;
+  }
+  ASSERT_GT(either, 1000u);
+  EXPECT_GT(static_cast<double>(both), 0.85 * static_cast<double>(either))
+      << both << " of " << either << " foreground pixels shared";
+}
+
 }  // namespace
 }  // namespace fspm
