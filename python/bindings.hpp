@@ -125,11 +125,18 @@ void Fields<C>::finish(C (*base)(py::dict& values)) {
           "__deepcopy__", [](const C& self, py::dict) { return C(self); }, py::arg("memo"));
 }
 
+void bind_errors(py::module_& m);
+void bind_tree(py::module_& m);
+void bind_distance(py::module_& m);
+void bind_greenlab(py::module_& m);
+void bind_experiments(py::module_& m);
+void bind_lsystem(py::module_& m);
 void bind_environment(py::module_& m);
 void bind_statistics(py::module_& m);
 void bind_graphics(py::module_& m);
 void bind_calibration(py::module_& m);
 void bind_stages(py::module_& m);
+void bind_scans(py::module_& m);
 // Adds reconstruct_crown when fspm was built with OpenImageIO (the crown module).
 void bind_crown(py::module_& m);
 

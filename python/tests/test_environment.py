@@ -96,7 +96,7 @@ def test_growth_parameters_presets_dicts_and_toml(tmp_path):
         fspm.growth_preset("Z")
     with pytest.raises(TypeError, match="unknown parameter 'yeras'"):
         fspm.GrowthParams(yeras=3)
-    with pytest.raises(fspm.ParseError, match="<params>:1"):
+    with pytest.raises(ValueError, match="<params>:1.*unknown key 'no_such_key'"):
         fspm.parse_growth_params("no_such_key = 1\n")
     bad = fspm.GrowthParams(years=-1)
     with pytest.raises(fspm.ParameterError, match="years"):

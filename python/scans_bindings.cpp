@@ -1,0 +1,174 @@
+// Python bindings: trees from laser scans (Pirk 2012, 3.3; docs/scans.md): point-set files, the
+// cluster-based representation (skeleton with allometric radii, leaf-cluster hulls), .clusters
+// files and the scan simulator used to validate it.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "python/bindings.hpp"
+#include "scans/clusters_file.hpp"
+#include "scans/encoder.hpp"
+#include "scans/point_set_file.hpp"
+#include "scans/scan_simulator.hpp"
+#include "scans/species.hpp"
+
+namespace fspm::python {
+namespace {
+
+// (N, 3) float64 copy of a list of points.
+py::array_t<double> point_rows(const std::vector<Eigen::Vector3d>& points) {
+  py::array_t<double> out({static_cast<py::ssize_t>(points.size()), py::ssize_t{3}});
+  auto a = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (int k = 0; k < 3; ++k) a(static_cast<py::ssize_t>(i), k) = points[i][k];
+  }
+  return out;
+}
+
+py::array_t<std::uint32_t> triangle_rows(const std::vector<std::array<std::uint32_t, 3>>& tris) {
+  py::array_t<std::uint32_t> out({static_cast<py::ssize_t>(tris.size()), py::ssize_t{3}});
+  auto a = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < tris.size(); ++i) {
+    for (int k = 0; k < 3; ++k)
+      a(static_cast<py::ssize_t>(i), k) = tris[i][static_cast<std::size_t>(k)];
+  }
+  return out;
+}
+
+scans::EncodeResult encode(const PointArray& points, const std::string& species,
+                           std::optional<double> beta, std::optional<double> gamma,
+                           std::optional<double> f_s, std::optional<double> root_diameter,
+                           int neighbours, double voxel) {
+  scans::EncodeOptions o;
+  o.species = scans::species_by_name(species);
+  if (beta) o.species.beta = *beta;
+  if (gamma) o.species.gamma = *gamma;
+  if (f_s) o.species.f_s = *f_s;
+  o.root_diameter_m = root_diameter;
+  o.neighbours = neighbours;
+  o.voxel_m = voxel;
+  scans::PointSet set;
+  const auto span = as_points(points, "points");
+  set.points.assign(span.begin(), span.end());
+  py::gil_scoped_release release;
+  return scans::encode_point_set(set, o);
+}
+
+void bind_cluster_model(py::module_& m) {
+  using scans::ClusterModel;
+  py::class_<ClusterModel>(m, "ClusterModel",
+                           "The cluster-based representation of a scanned tree (Pirk 3.3): the "
+                           "main skeleton with radii of eq. 3.1 and the leaf clusters' hulls")
+      .def_readonly("species", &ClusterModel::species, "Species preset whose parameters were used")
+      .def_readonly("beta", &ClusterModel::beta, "Edge-weight exponent of the neighbour graph")
+      .def_readonly("gamma", &ClusterModel::gamma, "Allometric exponent of eq. 3.1")
+      .def_readonly("f_s", &ClusterModel::f_s, "Diameter factor of eq. 3.2")
+      .def_readonly("root_diameter", &ClusterModel::root_diameter_m, "d_root of eq. 3.1, m")
+      .def_readonly("skeleton", &ClusterModel::skeleton, "The main skeleton as a Tree (m)")
+      .def_property_readonly(
+          "clusters",
+          [](const ClusterModel& c) {
+            py::list out;
+            for (const scans::ClusterHull& h : c.clusters) {
+              py::dict d;
+              d["seed_node"] = h.seed_node;
+              d["point_count"] = h.point_count;
+              d["vertices"] = point_rows(h.vertices);
+              d["triangles"] = triangle_rows(h.triangles);
+              out.append(d);
+            }
+            return out;
+          },
+          "One dict per leaf cluster: seed_node (skeleton node id it hangs at), point_count, "
+          "vertices (N, 3) in m and triangles (M, 3) of its alpha-shape hull");
+}
+
+}  // namespace
+
+void bind_scans(py::module_& m) {
+  bind_cluster_model(m);
+  m.def(
+      "read_points",
+      [](const std::string& path) {
+        scans::PointSet set;
+        {
+          py::gil_scoped_release release;
+          set = scans::read_point_set(path);
+        }
+        return point_rows(set.points);
+      },
+      py::arg("path"),
+      "The points of a point-set file (.ply ASCII or binary, .xyz/.txt/.csv, .pcd) as an (N, 3) "
+      "float64 array in the file's units (metres expected)");
+  m.def(
+      "species_presets",
+      [] {
+        py::list out;
+        for (const scans::SpeciesParameters& s : scans::species_presets()) {
+          py::dict d;
+          d["name"] = s.name;
+          d["beta"] = s.beta;
+          d["gamma"] = s.gamma;
+          d["f_s"] = s.f_s;
+          out.append(d);
+        }
+        return out;
+      },
+      "The species parameters of Pirk Table 3.1 (name, beta, gamma, f_s), in its order");
+  m.def(
+      "encode_points",
+      [](const PointArray& points, const std::string& species, std::optional<double> beta,
+         std::optional<double> gamma, std::optional<double> f_s,
+         std::optional<double> root_diameter, int neighbours, double voxel) {
+        return encode(points, species, beta, gamma, f_s, root_diameter, neighbours, voxel).model;
+      },
+      py::arg("points"), py::arg("species") = "default", py::arg("beta") = py::none(),
+      py::arg("gamma") = py::none(), py::arg("f_s") = py::none(),
+      py::arg("root_diameter") = py::none(), py::arg("neighbours") = 8, py::arg("voxel") = 0.0,
+      "Encode a scanned tree ((N, 3) points in m, z up) into a ClusterModel (Pirk 3.3): "
+      "species names a preset of Table 3.1 ('default', 'pine', ...) whose beta, gamma, f_s any "
+      "keyword overrides; root_diameter (m) is estimated from the trunk points when None; "
+      "voxel: thinning size in m (0: 1/1000 of the extent, negative: none)");
+  m.def(
+      "write_clusters",
+      [](const scans::ClusterModel& model, const std::string& path) {
+        py::gil_scoped_release release;
+        scans::write_clusters_file(model, path);
+      },
+      py::arg("model"), py::arg("path"), "Write a ClusterModel as a .clusters file, atomically");
+  m.def(
+      "read_clusters",
+      [](const std::string& path) {
+        py::gil_scoped_release release;
+        return scans::read_clusters_file(path);
+      },
+      py::arg("path"), "Read a .clusters file (docs/formats.md)");
+  m.def(
+      "simulate_scan",
+      [](const TreeGraph& tree, std::uint64_t seed, int scanners, double density_per_m2,
+         double range_noise) {
+        scans::ScanOptions o;
+        o.scanners = scanners;
+        o.density_per_m2 = density_per_m2;
+        o.range_noise_m = range_noise;
+        std::mt19937_64 rng(seed);
+        scans::PointSet set;
+        {
+          py::gil_scoped_release release;
+          set = scans::simulate_scan(tree, o, rng);
+        }
+        return point_rows(set.points);
+      },
+      py::arg("tree"), py::arg("seed") = 1, py::arg("scanners") = 4,
+      py::arg("density_per_m2") = 20000.0, py::arg("range_noise") = 0.003,
+      "A simulated terrestrial laser scan of the tree's internodes (cylinders) from `scanners` "
+      "positions around it: (N, 3) points in m; density per m^2 at normal incidence, Gaussian "
+      "range noise in m; the same seed gives the same points");
+}
+
+}  // namespace fspm::python

@@ -1,0 +1,83 @@
+"""Trees from laser scans from Python (docs/scans.md), against shapes whose answers are known."""
+import numpy as np
+import pytest
+
+import fspm
+
+
+def cylinder_points(radius=0.15, height=3.0, rings=300, per_ring=48, seed=4):
+    """Points on the side of a vertical cylinder standing on z = 0: a bare trunk."""
+    rng = np.random.default_rng(seed)
+    z = np.repeat(np.linspace(0.0, height, rings), per_ring)
+    phi = rng.uniform(0.0, 2.0 * np.pi, z.size)
+    return np.column_stack([radius * np.cos(phi), radius * np.sin(phi), z])
+
+
+def test_species_presets_are_pirks_table_3_1():
+    presets = {p["name"]: p for p in fspm.species_presets()}
+    assert len(presets) == 10
+    # Pirk (2012) Table 3.1: pine beta 1.3, gamma 1.2, f_s 0.98; palm 1.8, 1.3, 0.80.
+    assert (presets["pine"]["beta"], presets["pine"]["gamma"], presets["pine"]["f_s"]) == (
+        1.3, 1.2, 0.98)
+    assert (presets["palm"]["beta"], presets["palm"]["gamma"], presets["palm"]["f_s"]) == (
+        1.8, 1.3, 0.8)
+
+
+def test_a_cylinder_encodes_to_a_trunk_of_its_diameter_and_height():
+    model = fspm.encode_points(cylinder_points(), species="pine")
+    assert (model.species, model.beta, model.gamma) == ("pine", 1.3, 1.2)
+    # d_root from a circle fitted to the trunk points: the cylinder's diameter.
+    assert model.root_diameter == pytest.approx(0.30, rel=0.03)
+    skeleton = model.skeleton
+    # The skeleton starts at the lowest point and follows the axis (bin centroids of rings).
+    assert skeleton.starts[:, 2].min() == pytest.approx(0.0, abs=1e-9)
+    assert np.median(np.hypot(skeleton.ends[:, 0], skeleton.ends[:, 1])) < 0.05
+    # Eq. 3.1 tapers the diameter towards the top while the cylinder does not, so by eq. 3.2 its
+    # upper part becomes a cluster: skeleton and clusters together reach the top, 3 m.
+    top = max([skeleton.ends[:, 2].max()] + [c["vertices"][:, 2].max() for c in model.clusters])
+    assert top == pytest.approx(3.0, abs=0.05)
+    assert sum(c["point_count"] for c in model.clusters) > 0
+
+
+def test_keywords_override_the_species():
+    model = fspm.encode_points(cylinder_points(), species="pine", gamma=1.7, root_diameter=0.5)
+    assert model.gamma == 1.7 and model.beta == 1.3
+    assert model.root_diameter == 0.5
+    with pytest.raises(ValueError, match="pinee"):
+        fspm.encode_points(cylinder_points(), species="pinee")
+
+
+def test_clusters_files_round_trip(tmp_path):
+    model = fspm.encode_points(cylinder_points())
+    path = str(tmp_path / "trunk.clusters")
+    fspm.write_clusters(model, path)
+    back = fspm.read_clusters(path)
+    assert len(back.skeleton) == len(model.skeleton)
+    assert back.root_diameter == pytest.approx(model.root_diameter)
+    np.testing.assert_allclose(back.skeleton.ends, model.skeleton.ends, atol=1e-6)
+
+
+def test_point_files_read_as_written(tmp_path):
+    points = cylinder_points(rings=5, per_ring=4)
+    path = tmp_path / "trunk.xyz"
+    np.savetxt(path, points)
+    np.testing.assert_allclose(fspm.read_points(str(path)), points, rtol=1e-12)
+    with pytest.raises(OSError):
+        fspm.read_points(str(tmp_path / "missing.xyz"))
+
+
+def test_simulated_scans_depend_only_on_the_seed():
+    tree = fspm.Tree.from_arrays(
+        parents=[-1, 0], starts=[[0, 0, 0], [0, 0, 1]], ends=[[0, 0, 1], [0.5, 0, 1.5]],
+        radii=[0.1, 0.05])
+    a = fspm.simulate_scan(tree, seed=3, density_per_m2=5000)
+    b = fspm.simulate_scan(tree, seed=3, density_per_m2=5000)
+    c = fspm.simulate_scan(tree, seed=4, density_per_m2=5000)
+    assert a.shape[1] == 3 and a.shape[0] > 100
+    np.testing.assert_array_equal(a, b)
+    assert a.shape != c.shape or not np.array_equal(a, c)
+    # Points lie on the cylinders' surfaces, up to the range noise (3 mm, 6 sigma).
+    radial = np.hypot(a[:, 0], a[:, 1])
+    trunk = a[a[:, 2] < 0.9]
+    assert np.abs(np.hypot(trunk[:, 0], trunk[:, 1]) - 0.1).max() < 0.02
+    assert radial.max() < 0.7
