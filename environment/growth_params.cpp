@@ -9,8 +9,10 @@
 #include <set>
 #include <sstream>
 
+#include "fspm/closest_name.hpp"
 #include "fspm/error.hpp"
 #include "fspm/input_file.hpp"
+#include "fspm/toml_text.hpp"
 
 namespace fspm::environment {
 
@@ -219,14 +221,7 @@ void validate(const GrowthParams& p) {
 
 GrowthParams parse_growth_params(std::string_view text, const std::string& file_name,
                                  const std::vector<std::string>& overrides) {
-  toml::table table;
-  try {
-    table = toml::parse(text, file_name);
-  } catch (const toml::parse_error& e) {
-    throw ParseError("expected valid TOML (" + std::string(e.description()) + ")", file_name,
-                     static_cast<int>(e.source().begin.line),
-                     static_cast<int>(e.source().begin.column));
-  }
+  toml::table table = parse_toml_text(text, file_name);
   std::set<std::string> from_command_line;
   for (const std::string& setting : overrides) {
     for (auto&& [key, node] : override_table(setting)) {
@@ -343,10 +338,12 @@ GrowthParams parse_growth_params(std::string_view text, const std::string& file_
     const auto it = keys.find(name);
     const bool set = from_command_line.count(name) > 0;
     if (it == keys.end()) {
-      const std::string what = "unknown parameter \"" + name.substr(0, 60) +
-                               "\"; expected one of the keys in docs/environment.md";
+      std::vector<std::string> known{"preset", "preset_tropisms"};
+      for (const auto& [k, setter] : keys) known.push_back(k);
+      const std::string what = unknown_key_message(name.substr(0, 60), name, known) +
+                               " (the keys are listed in docs/environment.md)";
       if (set) throw ValueError("--set " + what);
-      throw ParseError(what, file_name, line, column);
+      throw ValueError(what, file_name, line, column);
     }
     if (!it->second.first(node)) {
       if (set) throw ValueError("--set " + name + ": expected " + it->second.second);

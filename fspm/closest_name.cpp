@@ -56,4 +56,9 @@ std::string closest_name_hint(std::string_view name, const std::vector<std::stri
   return " (known: " + list + ")";
 }
 
+std::string unknown_key_message(std::string_view qualified_key, std::string_view key,
+                                const std::vector<std::string>& known) {
+  return "unknown key '" + std::string(qualified_key) + "'" + closest_name_hint(key, known);
+}
+
 }  // namespace fspm

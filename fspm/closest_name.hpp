@@ -14,4 +14,10 @@ std::string closest_name(std::string_view name, const std::vector<std::string>& 
 // or "" when `known` is empty: a suffix for error messages.
 std::string closest_name_hint(std::string_view name, const std::vector<std::string>& known);
 
+// "unknown key 'age[0].phylotaxy' (did you mean 'phyllotaxy'?)": the one message every
+// configuration reader (TOML and JSON) gives for a key it does not know. `qualified_key` names the
+// key with its table, `key` alone is compared with the `known` keys of that table.
+std::string unknown_key_message(std::string_view qualified_key, std::string_view key,
+                                const std::vector<std::string>& known);
+
 }  // namespace fspm

@@ -1,8 +1,11 @@
 #include "fspm/json_fields.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
+#include <vector>
 
+#include "fspm/closest_name.hpp"
 #include "fspm/error.hpp"
 #include "fspm/json_location.hpp"
 #include "fspm/nesting_depth.hpp"
@@ -46,12 +49,12 @@ void JsonFields::fail(const std::string& path, const std::string& expected, cons
 
 void JsonFields::check_keys(const json& obj, const std::string& path,
                             std::initializer_list<const char*> allowed) const {
-  const std::set<std::string> ok(allowed.begin(), allowed.end());
+  const std::vector<std::string> known(allowed.begin(), allowed.end());
   for (auto it = obj.begin(); it != obj.end(); ++it) {
-    if (ok.count(it.key())) continue;
-    std::string list;
-    for (const char* k : allowed) list += (list.empty() ? "" : ", ") + std::string(k);
-    fail(path + "/" + it.key(), "one of the keys " + list + " (unknown key)");
+    if (std::find(known.begin(), known.end(), it.key()) != known.end()) continue;
+    const std::string key_path = path + "/" + it.key();
+    const TextPosition at = json_pointer_position(text_, key_path);
+    throw ValueError(unknown_key_message(key_path, it.key(), known), file_, at.line, at.column);
   }
 }
 

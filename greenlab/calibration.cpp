@@ -10,6 +10,7 @@
 
 #include "fspm/error.hpp"
 #include "fspm/input_file.hpp"
+#include "fspm/toml_text.hpp"
 #include "greenlab/functional.hpp"
 #include "greenlab/simulation.hpp"
 
@@ -247,13 +248,7 @@ FitResult fit_gl1(const PlantParams& params, const std::vector<Target>& targets,
 
 std::string fitted_toml(const std::string& original_text, const FitResult& fit,
                         const std::string& source) {
-  toml::table root;
-  try {
-    root = toml::parse(original_text, source);
-  } catch (const toml::parse_error& e) {
-    throw ParseError(std::string(e.description()), source, static_cast<int>(e.source().begin.line),
-                     static_cast<int>(e.source().begin.column));
-  }
+  toml::table root = parse_toml_text(original_text, source);
   for (std::size_t i = 0; i < fit.names.size(); ++i) {
     const std::string& name = fit.names[i];
     const double v = fit.estimates[i];

@@ -7,8 +7,10 @@
 #include <sstream>
 #include <string_view>
 
+#include "fspm/closest_name.hpp"
 #include "fspm/error.hpp"
 #include "fspm/input_file.hpp"
+#include "fspm/toml_text.hpp"
 
 namespace fspm::greenlab {
 namespace {
@@ -98,11 +100,13 @@ class TableReader {
                       std::numeric_limits<double>::max(), "a finite number");
   }
 
+  // Every key the reader asked for is a known one.
   void reject_unknown() const {
     for (const auto& [k, node] : table_) {
       if (!used_.contains(std::string(k.str()))) {
-        throw ParseError("unknown key '" + key_name(k.str()) + "'", file_, line_of(node),
-                         column_of(node));
+        const std::vector<std::string> known(used_.begin(), used_.end());
+        throw ValueError(unknown_key_message(key_name(k.str()), k.str(), known), file_,
+                         line_of(node), column_of(node));
       }
     }
   }
@@ -280,14 +284,7 @@ void PlantParams::validate() const {
 }
 
 PlantParams parse_plant_params(std::string_view toml_text, const std::string& source_name) {
-  toml::table root;
-  try {
-    root = toml::parse(toml_text, source_name);
-  } catch (const toml::parse_error& e) {
-    throw ParseError(std::string(e.description()), source_name,
-                     static_cast<int>(e.source().begin.line),
-                     static_cast<int>(e.source().begin.column));
-  }
+  const toml::table root = parse_toml_text(toml_text, source_name);
   const std::string& file = source_name;
   TableReader top(root, "", file);
   PlantParams params;

@@ -163,9 +163,11 @@ TEST(GrowthParams, TomlOverridesPresetAndRejectsBadInput) {
   try {
     parse_growth_params("years = 5\nalpah = 2\n", "p.toml");
     FAIL();
-  } catch (const ParseError& e) {
+  } catch (const ValueError& e) {
     EXPECT_EQ(e.line(), 2);
     EXPECT_EQ(e.file(), "p.toml");
+    EXPECT_NE(e.message().find("unknown key 'alpah' (did you mean 'alpha'?)"), std::string::npos)
+        << e.what();
   }
   try {
     parse_growth_params("apical_control = 1.5\n", "p.toml");
