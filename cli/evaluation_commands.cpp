@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/enum_option.hpp"
 #include "cli/output.hpp"
 #include "fspm/constrained_edit_distance.hpp"
 #include "fspm/error.hpp"
@@ -22,10 +23,10 @@ namespace {
 
 struct DistanceOptions {
   std::string a, b;
-  std::string cost = "topological";
+  EditCostKind cost = EditCostKind::kTopological;
   std::vector<std::string> attributes;
   std::optional<double> main_skeleton;
-  std::string solver = "hungarian";
+  AssignmentSolver solver = AssignmentSolver::kHungarian;
   bool mapping = false;
   bool json = false;
 };
@@ -35,7 +36,7 @@ struct TTestOptions {
   bool welch = false;
   bool paired = false;
   std::string column;
-  std::string alternative = "two-sided";
+  Alternative alternative = Alternative::kTwoSided;
   double level = 0.95;
   bool json = false;
 };
@@ -43,7 +44,7 @@ struct TTestOptions {
 struct MannWhitneyOptions {
   std::string a, b;
   std::string column;
-  std::string alternative = "two-sided";
+  Alternative alternative = Alternative::kTwoSided;
   bool no_correction = false;
   bool json = false;
 };
@@ -74,7 +75,7 @@ void run_distance(const DistanceOptions& o) {
   const TreeGraph a = load_tree(o.a, "A", newick_a);
   const TreeGraph b = load_tree(o.b, "B", newick_b);
   EditDistanceOptions opt;
-  opt.cost = edit_cost_kind_from_name(o.cost);
+  opt.cost = o.cost;
   opt.attributes = o.attributes;
   if (opt.cost == EditCostKind::kTopological && !o.attributes.empty()) {
     spdlog::warn(
@@ -88,14 +89,14 @@ void run_distance(const DistanceOptions& o) {
   }
   if (opt.attributes.empty()) opt.attributes = default_edit_attributes(opt.cost);
   opt.main_skeleton_radius_m = o.main_skeleton;
-  opt.solver = assignment_solver_from_name(o.solver);
+  opt.solver = o.solver;
   opt.with_mapping = o.mapping;
   const EditDistanceResult r = constrained_edit_distance(a, b, opt);
   if (o.json) {
     nlohmann::json j{{"distance", r.distance},
                      {"nodes_a", r.nodes_a},
                      {"nodes_b", r.nodes_b},
-                     {"cost", o.cost},
+                     {"cost", std::string(edit_cost_kind_name(o.cost))},
                      {"attributes", opt.attributes}};
     if (o.main_skeleton) j["main_skeleton"] = *o.main_skeleton;
     if (o.mapping) {
@@ -134,7 +135,7 @@ nlohmann::json number_or_null(double x) {
 void run_ttest(const TTestOptions& o) {
   const auto a = read_sample(o.a, o.column, 2);
   const auto b = read_sample(o.b, o.column, 2);
-  const Alternative alt = alternative_from_name(o.alternative);
+  const Alternative alt = o.alternative;
   if (o.paired && a.size() != b.size()) {
     throw ValueError("paired t-test: " + o.a + " has " + std::to_string(a.size()) + " values but " +
                      o.b + " has " + std::to_string(b.size()));
@@ -145,7 +146,7 @@ void run_ttest(const TTestOptions& o) {
   const char* test = o.paired ? "paired" : (o.welch ? "welch" : "student");
   const nlohmann::json j{
       {"test", test},
-      {"alternative", o.alternative},
+      {"alternative", std::string(alternative_name(o.alternative))},
       {"t", r.t},
       {"df", r.df},
       {"p", r.p},
@@ -164,7 +165,7 @@ void run_ttest(const TTestOptions& o) {
     print_json(j);
     return;
   }
-  std::cout << test << " t-test (" << o.alternative << ")\n";
+  std::cout << test << " t-test (" << alternative_name(o.alternative) << ")\n";
   for (const char* key : {"t", "df", "p", "mean_a", "mean_b", "sd_a", "sd_b", "n_a", "n_b",
                           "estimate", "confidence_interval", "cohens_d"}) {
     if (j[key].is_null()) continue;
@@ -175,9 +176,9 @@ void run_ttest(const TTestOptions& o) {
 void run_mann_whitney(const MannWhitneyOptions& o) {
   const auto a = read_sample(o.a, o.column, 1);
   const auto b = read_sample(o.b, o.column, 1);
-  const auto r = mann_whitney_u_test(a, b, alternative_from_name(o.alternative), !o.no_correction);
+  const auto r = mann_whitney_u_test(a, b, o.alternative, !o.no_correction);
   const nlohmann::json j{{"test", "mann-whitney"},
-                         {"alternative", o.alternative},
+                         {"alternative", std::string(alternative_name(o.alternative))},
                          {"u", r.u},
                          {"p", r.p},
                          {"exact", r.exact},
@@ -218,16 +219,15 @@ void add_evaluation_commands(CLI::App& app) {
   dist->add_option("A", d->a, "Tree file (.tree, .treeb, .nwk, .mtg) or a Newick string '(...);'")
       ->required();
   dist->add_option("B", d->b, "Tree file (.tree, .treeb, .nwk, .mtg) or Newick string")->required();
-  dist->add_option("--cost", d->cost, "Cost model: topological, absolute or standardized")
-      ->capture_default_str();
+  add_enum_option(dist, "--cost", d->cost, kEditCostKinds, edit_cost_kind_name, "Cost model");
   dist->add_option("--attr", d->attributes,
                    "Attributes compared, comma-separated (default: label for Newick, else "
                    "length,radius)")
       ->delimiter(',');
   dist->add_option("--main-skeleton", d->main_skeleton,
                    "Compare only nodes with radius above this thickness (m) and their ancestors");
-  dist->add_option("--solver", d->solver, "Forest matching: hungarian or min-cost-flow")
-      ->capture_default_str();
+  add_enum_option(dist, "--solver", d->solver, kAssignmentSolvers, assignment_solver_name,
+                  "Forest matching");
   dist->add_flag("--mapping", d->mapping, "Also print the matched node pairs");
   dist->add_flag("--json", d->json, "Machine-readable JSON on stdout");
   dist->callback([d] { run_distance(*d); });
@@ -245,8 +245,8 @@ void add_evaluation_commands(CLI::App& app) {
   auto* paired = tt->add_flag("--paired", t->paired, "Paired test on a_i - b_i");
   welch->excludes(paired);
   tt->add_option("--column", t->column, "CSV column name (the first row is the header)");
-  tt->add_option("--alternative", t->alternative, "two-sided, less or greater")
-      ->capture_default_str();
+  add_enum_option(tt, "--alternative", t->alternative, kAlternatives, alternative_name,
+                  "The alternative hypothesis about mean(A) - mean(B)");
   tt->add_option("--level", t->level, "Confidence level of the interval")->capture_default_str();
   tt->add_flag("--json", t->json, "Machine-readable JSON on stdout");
   tt->callback([t] { run_ttest(*t); });
@@ -256,8 +256,8 @@ void add_evaluation_commands(CLI::App& app) {
   mw->add_option("A", m->a, file_help)->required();
   mw->add_option("B", m->b, file_help)->required();
   mw->add_option("--column", m->column, "CSV column name (the first row is the header)");
-  mw->add_option("--alternative", m->alternative, "two-sided, less or greater")
-      ->capture_default_str();
+  add_enum_option(mw, "--alternative", m->alternative, kAlternatives, alternative_name,
+                  "The alternative hypothesis about A's location against B's");
   mw->add_flag("--no-correction", m->no_correction,
                "No continuity correction in the normal approximation");
   mw->add_flag("--json", m->json, "Machine-readable JSON on stdout");

@@ -173,7 +173,7 @@ nlohmann::json comparisons_json(const std::string& dir, const ex::ComparisonResu
                      {"b", t.b},
                      {"group", t.group},
                      {"test", t.welch ? "welch" : "student"},
-                     {"alternative", t.alternative},
+                     {"alternative", std::string(alternative_name(t.alternative))},
                      {"t", t.t},
                      {"df", t.df},
                      {"p", t.p},
@@ -225,7 +225,7 @@ void run_command(const RunOptions& o) {
   }
   r.file_writers = graphics_run_file_writers(x);
   ex::check_run_file_writers(x, r.file_writers);
-  if (std::find(x.keep.begin(), x.keep.end(), "image") != x.keep.end()) {
+  if (std::find(x.keep.begin(), x.keep.end(), ex::KeptFile::kImage) != x.keep.end()) {
     // Under mpirun every rank would start its own virtual server: the ranks need a display.
     if (!o.mpi) rerun_under_xvfb_if_needed();
     if (!graphics::display_available()) {

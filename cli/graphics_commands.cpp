@@ -18,6 +18,7 @@
 #include <optional>
 
 #include "cli/commands.hpp"
+#include "cli/enum_option.hpp"
 #include "cli/full_command_list.hpp"
 #include "cli/lsystem_mesh.hpp"
 #include "cli/lsystem_source.hpp"
@@ -79,7 +80,7 @@ struct RenderCommand {
   std::string format;
   std::string out;
   std::string color_by;
-  std::string view = "iso";
+  View view = View::kIso;
   std::string size = "1024x768";
   bool leaves = false;
   std::string foliage = "leaves";
@@ -470,7 +471,7 @@ void run_render(const RenderCommand& c) {
   refuse_overwriting_input(c.out, {c.tree, c.obstacles});
   const auto t0 = std::chrono::steady_clock::now();
   graphics::RenderOptions options;
-  options.view = graphics::view_from_name(c.view);
+  options.view = c.view;
   graphics::parse_size(c.size, options.width, options.height);
   options.color_by = c.color_by;
   options.ground = !c.no_ground;
@@ -784,7 +785,7 @@ void add_graphics_commands(CLI::App& app) {
   r->add_option("--color-by", render->color_by,
                 "Colour by a vertex attribute (age, birth_time, order, physiological_age or a "
                 "tree attribute) with a scalar bar");
-  r->add_option("--view", render->view, "front, side, top or iso")->capture_default_str();
+  add_enum_option(r, "--view", render->view, kViews, view_name, "Camera direction");
   r->add_option("--size", render->size, "WIDTHxHEIGHT in pixels")->capture_default_str();
   r->add_flag("--leaves", render->leaves, "Show leaves and leaf clusters");
   add_foliage_options(r, render->foliage, render->seed);

@@ -190,7 +190,7 @@ graphics::RenderOptions one_scale_options(const ex::Experiment& x, const Eigen::
   graphics::RenderOptions options;
   options.width = x.image_width;
   options.height = x.image_height;
-  options.view = graphics::view_from_name(x.image_view);
+  options.view = x.image_view;
   const double aspect = static_cast<double>(options.width) / options.height;
   options.ortho_height_m =
       1.06 * graphics::ortho_height_to_fit(options.view, Eigen::Vector3f::Zero(), extent, aspect);
@@ -203,9 +203,10 @@ graphics::RenderOptions one_scale_options(const ex::Experiment& x, const Eigen::
 
 // The paragraph above the renders: their scale, and what the grey shapes are.
 std::string one_scale_text(const ex::Experiment& x, const graphics::RenderOptions& options) {
-  std::string md = "All pictures at one scale, in a parallel projection (" + x.image_view +
-                   " view): the image height spans " + number_text(options.ortho_height_m) + " " +
-                   ex::length_unit(x.model_kind) + ", the black bar is " +
+  std::string md = "All pictures at one scale, in a parallel projection (" +
+                   std::string(view_name(x.image_view)) + " view): the image height spans " +
+                   number_text(options.ortho_height_m) + " " + ex::length_unit(x.model_kind) +
+                   ", the black bar is " +
                    number_text(graphics::scale_bar_length(options.ortho_height_m)) + " " +
                    options.scale_bar_unit + ".";
   if (x.model_kind == ex::ModelKind::kGrow || x.model_kind == ex::ModelKind::kAdapt) {

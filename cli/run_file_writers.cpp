@@ -31,7 +31,7 @@ void render_tree_png(const TreeGraph& tree, const experiments::Experiment& exper
   graphics::RenderOptions options;
   options.width = experiment.image_width;
   options.height = experiment.image_height;
-  options.view = graphics::view_from_name(experiment.image_view);
+  options.view = experiment.image_view;
   // VTK's render windows and X connections are not meant to be driven from several threads at
   // once; meshing and writing run in parallel, the rendering itself one at a time.
   static std::mutex render_mutex;
@@ -45,9 +45,9 @@ void render_tree_png(const TreeGraph& tree, const experiments::Experiment& exper
 
 experiments::RunFileWriters graphics_run_file_writers(const experiments::Experiment& experiment) {
   experiments::RunFileWriters writers;
-  const std::string extension = experiment.mesh_format;
-  writers["mesh"] = [extension](const TreeGraph& tree, std::size_t run,
-                                const std::string& out_dir) {
+  const std::string extension(mesh_format_name(experiment.mesh_format));
+  writers[experiments::KeptFile::kMesh] = [extension](const TreeGraph& tree, std::size_t run,
+                                                      const std::string& out_dir) {
     const std::string rel = experiments::run_file_path(run, extension);
     // By extension: .glb, .ply or .vtp, each written atomically.
     graphics::write_mesh(graphics::mesh_tree(tree, run_mesh_options()),
@@ -56,8 +56,8 @@ experiments::RunFileWriters graphics_run_file_writers(const experiments::Experim
   };
   if (graphics::render_available()) {
     // The runner keeps the experiment alive for the whole sweep.
-    writers["image"] = [&experiment](const TreeGraph& tree, std::size_t run,
-                                     const std::string& out_dir) {
+    writers[experiments::KeptFile::kImage] = [&experiment](const TreeGraph& tree, std::size_t run,
+                                                           const std::string& out_dir) {
       const std::string rel = experiments::run_file_path(run, "png");
       render_tree_png(tree, experiment, (fs::path(out_dir) / rel).string());
       return rel;

@@ -9,6 +9,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
+#include "fspm/attribute_names.hpp"
 #include "fspm/tree_file.hpp"
 #include "fspm/tree_summary.hpp"
 #include "scans/grouped_mesh_skeleton.hpp"
@@ -31,7 +32,7 @@ struct ConvertOptions {
 
 // Nodes flagged by plastic adaptation's "pruned" attribute (kept with fspm adapt --keep-pruned).
 std::size_t pruned_count(const TreeGraph& tree) {
-  const auto pruned = tree.attribute("pruned");
+  const auto pruned = tree.attribute(kPrunedAttribute);
   return static_cast<std::size_t>(
       std::count_if(pruned.begin(), pruned.end(), [](double v) { return v != 0.0; }));
 }
@@ -55,7 +56,7 @@ nlohmann::json summary_json(const std::string& file, const TreeGraph& tree) {
                       {"bbox_min", {s.bbox_min.x(), s.bbox_min.y(), s.bbox_min.z()}},
                       {"bbox_max", {s.bbox_max.x(), s.bbox_max.y(), s.bbox_max.z()}},
                       {"attributes", tree.attribute_names()}};
-  if (tree.has_attribute("pruned")) j["pruned"] = pruned_count(tree);
+  if (tree.has_attribute(kPrunedAttribute)) j["pruned"] = pruned_count(tree);
   return j;
 }
 

@@ -7,6 +7,7 @@
 #include <optional>
 #include <random>
 
+#include "fspm/attribute_names.hpp"
 #include "environment/light_model.hpp"
 #include "environment/shadow_grid.hpp"
 #include "environment/space_colonization.hpp"
@@ -396,7 +397,7 @@ class Grower {
     }
     std::vector<NodeId> new_id(n, kNoNode);
     out.tree.reserve(n);
-    out.tree.add_attribute("light", 0.0);
+    out.tree.add_attribute(kLightAttribute, 0.0);
     std::vector<std::int32_t> stack{0};
     double top = base_.z();
     // Light of the last cycle, at nodes that had a bud then.
@@ -414,7 +415,7 @@ class Grower {
       const NodeId id = out.tree.add_node(m.parent < 0 ? kNoNode : new_id[m.parent], d);
       new_id[k] = id;
       if (static_cast<std::size_t>(k) < q_terminal_.size()) {
-        out.tree.attribute("light")[id] = m.terminal_bud ? q_terminal_[k] : q_lateral_[k];
+        out.tree.attribute(kLightAttribute)[id] = m.terminal_bud ? q_terminal_[k] : q_lateral_[k];
       }
       top = std::max(top, m.end.z());
       if (m.lateral >= 0 && ms_[m.lateral].alive) stack.push_back(m.lateral);
@@ -442,7 +443,7 @@ class Grower {
       out.tree.attribute("translucency")[id] = c.translucency;
       // Light at the cluster's centre (Pirk eq. 4.3 over the final clusters, its own left out),
       // as plastic adaptation evaluates clusters: the shoots of the last cycle had no bud light.
-      out.tree.attribute("light")[id] =
+      out.tree.attribute(kLightAttribute)[id] =
           cluster_light.evaluate(c.center, static_cast<std::uint32_t>(sh.sphere)).light;
     }
     out.clusters = out.cluster_spheres.size();

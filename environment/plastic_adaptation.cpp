@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "fspm/attribute_names.hpp"
 #include "environment/cluster_grid_light.hpp"
 #include "environment/cluster_light.hpp"
 #include "environment/solid_push.hpp"
@@ -707,10 +708,10 @@ void Engine::finish(TreeRun& r) {
   res.pushed_clusters = push_clusters_out_of_solids(scene_, t, res.clusters);
 
   t.add_attribute("displacement", 0.0);
-  t.add_attribute("pruned", 0.0);
+  t.add_attribute(kPrunedAttribute, 0.0);
   t.add_attribute("leaf_density", 1.0);
   auto disp = t.attribute("displacement");
-  auto pr = t.attribute("pruned");
+  auto pr = t.attribute(kPrunedAttribute);
   auto dens = t.attribute("leaf_density");
   for (const LeafCluster& lc : res.clusters) {
     for (const NodeId m : lc.nodes) dens[m] = lc.density;
@@ -776,10 +777,10 @@ std::vector<AdaptationResult> adapt_trees(const std::vector<const TreeGraph*>& t
 
 TreeGraph remove_pruned(const TreeGraph& adapted) {
   TreeGraph out = adapted;
-  if (!out.has_attribute("pruned")) return out;
+  if (!out.has_attribute(kPrunedAttribute)) return out;
   // Remove the highest pruned subtree roots first so earlier ids stay valid.
   for (NodeId i = static_cast<NodeId>(out.size()); i-- > 0;) {
-    const auto pr = out.attribute("pruned");
+    const auto pr = out.attribute(kPrunedAttribute);
     if (i >= out.size() || pr[i] == 0.0) continue;
     const NodeId p = out.parent(i);
     if (p != kNoNode && pr[p] != 0.0) continue;

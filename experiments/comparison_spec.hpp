@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "experiments/parameter_set.hpp"
+#include "fspm/edit_cost_model.hpp"
+#include "fspm/statistics.hpp"
 
 namespace fspm::experiments {
 
@@ -17,7 +19,7 @@ using RunFilter = ParameterSet;
 
 // How two kept trees are compared (fspm distance's options).
 struct DistanceSpec {
-  std::string cost = "standardized";    // topological | absolute | standardized
+  EditCostKind cost = EditCostKind::kStandardized;
   std::vector<std::string> attributes;  // empty: the cost model's defaults
   std::optional<double> main_skeleton_radius_m;
 };
@@ -40,7 +42,7 @@ struct TTestSpec {
   std::string a;
   std::string b;
   bool welch = false;
-  std::string alternative = "two-sided";  // two-sided | less | greater
+  Alternative alternative = Alternative::kTwoSided;
   double alpha = 0.05;
   int line = 0;
 };

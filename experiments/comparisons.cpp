@@ -136,7 +136,7 @@ std::string p_text(double p) {
 
 EditDistanceOptions distance_options(const DistanceSpec& spec) {
   EditDistanceOptions o;
-  o.cost = edit_cost_kind_from_name(spec.cost);
+  o.cost = spec.cost;
   o.attributes = spec.attributes;
   o.main_skeleton_radius_m = spec.main_skeleton_radius_m;
   return o;
@@ -225,7 +225,7 @@ std::vector<TTestRow> comparison_ttests(const Experiment& x, const std::vector<P
       const auto it = distances[spec.b].find(group);
       if (it == distances[spec.b].end() || a.size() < 2 || it->second.size() < 2) continue;
       const std::vector<double>& b = it->second;
-      const Alternative alt = alternative_from_name(spec.alternative);
+      const Alternative alt = spec.alternative;
       TTestResult t;
       try {
         t = spec.welch ? welch_t_test(a, b, alt) : student_t_test(a, b, alt);
@@ -281,10 +281,10 @@ void write_comparisons(const ComparisonResults& results, const std::string& out_
     out << "a,b,group,test,alternative,t,df,p,alpha,significant,mean_a,sd_a,n_a,mean_b,sd_b,n_b\n";
     for (const TTestRow& t : results.tests) {
       out << csv_text(t.a) << ',' << csv_text(t.b) << ',' << csv_text(t.group) << ','
-          << (t.welch ? "welch" : "student") << ',' << t.alternative << ',' << t.t << ',' << t.df
-          << ',' << t.p << ',' << t.alpha << ',' << (t.significant() ? 1 : 0) << ',' << t.mean_a
-          << ',' << t.sd_a << ',' << t.n_a << ',' << t.mean_b << ',' << t.sd_b << ',' << t.n_b
-          << '\n';
+          << (t.welch ? "welch" : "student") << ',' << alternative_name(t.alternative) << ',' << t.t
+          << ',' << t.df << ',' << t.p << ',' << t.alpha << ',' << (t.significant() ? 1 : 0) << ','
+          << t.mean_a << ',' << t.sd_a << ',' << t.n_a << ',' << t.mean_b << ',' << t.sd_b << ','
+          << t.n_b << '\n';
     }
   });
   json j;
@@ -355,7 +355,8 @@ std::string comparisons_markdown(const Experiment& x, const ComparisonResults& r
   std::map<std::string, std::map<std::string, std::vector<double>>> distances;
   for (const PairDistance& p : results.pairs)
     distances[p.group][p.comparison].push_back(p.distance);
-  md << "## Comparisons\n\nConstrained edit distance (" << x.distance.cost << " costs";
+  md << "## Comparisons\n\nConstrained edit distance (" << edit_cost_kind_name(x.distance.cost)
+     << " costs";
   if (!x.distance.attributes.empty()) {
     md << " on";
     for (const std::string& a : x.distance.attributes) md << ' ' << a;
@@ -402,8 +403,8 @@ std::string comparisons_markdown(const Experiment& x, const ComparisonResults& r
           "|---|---|---|---|---|---|---|---|\n";
     for (const TTestRow& t : results.tests) {
       md << "| " << t.group << " | " << t.a << " | " << t.b << " | "
-         << (t.welch ? "Welch" : "Student") << ", " << t.alternative << " | " << number(t.t, 4)
-         << " | " << number(t.df, 4) << " | " << p_text(t.p) << " | "
+         << (t.welch ? "Welch" : "Student") << ", " << alternative_name(t.alternative) << " | "
+         << number(t.t, 4) << " | " << number(t.df, 4) << " | " << p_text(t.p) << " | "
          << (t.significant() ? "yes" : "no") << " (" << number(t.alpha) << ") |\n";
     }
   }

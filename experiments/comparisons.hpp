@@ -32,7 +32,7 @@ struct TTestRow {
   std::string a, b;  // comparison names
   std::string group;
   bool welch = false;
-  std::string alternative;
+  Alternative alternative = Alternative::kTwoSided;
   double alpha = 0.05;
   double t = 0.0, df = 0.0, p = 1.0;
   double mean_a = 0.0, sd_a = 0.0, mean_b = 0.0, sd_b = 0.0;

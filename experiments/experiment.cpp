@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 #include "fspm/closest_name.hpp"
+#include "fspm/toml_text.hpp"
 
 #include "experiments/metrics.hpp"
 #include "fspm/error.hpp"
@@ -55,9 +56,9 @@ class Reader {
       bool known = false;
       for (std::string_view a : allowed) known = known || key.str() == a;
       if (!known) {
-        std::string list;
-        for (std::string_view a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
-        fail(qualified(table_name, key.str()), node, "unknown key (expected one of: " + list + ")");
+        const std::vector<std::string> names(allowed.begin(), allowed.end());
+        throw ValueError(unknown_key_message(qualified(table_name, key.str()), key.str(), names),
+                         path_, line_of(node), static_cast<int>(node.source().begin.column));
       }
     }
   }
@@ -301,37 +302,39 @@ const toml::array& table_array(const Reader& r, const toml::table& root, const s
   return *node->as_array();
 }
 
-// "WxH" with 1 <= W, H <= 16384 (the sizes fspm render accepts).
-bool parse_image_size(std::string_view text, int& width, int& height) {
-  const auto x = text.find_first_of("xX");
-  if (x == std::string_view::npos) return false;
-  auto number = [](std::string_view s, int& out) {
-    const auto r = std::from_chars(s.data(), s.data() + s.size(), out);
-    return r.ec == std::errc() && r.ptr == s.data() + s.size() && out > 0 && out <= 16384;
-  };
-  return number(text.substr(0, x), width) && number(text.substr(x + 1), height);
+// A name of `names` (in order `kinds`), or a failure at `node` listing them.
+template <typename Kind, std::size_t N>
+Kind one_of(const Reader& r, const std::string& key, const toml::node& node, const Kind (&kinds)[N],
+            std::string_view (*name_of)(Kind)) {
+  const std::string given = r.string(key, node);
+  std::string list;
+  for (Kind k : kinds) {
+    if (name_of(k) == given) return k;
+    list += (list.empty() ? "" : ", ") + std::string(name_of(k));
+  }
+  r.fail(key, node, "unknown value '" + given + "' (expected one of: " + list + ")");
 }
 
-// [distance], [[comparison]], [[ttest]], [[table]] (docs/experiments.md).
-void parse_comparisons(const Reader& r, const toml::table& root, Experiment& x) {
-  if (const toml::table* d = r.table(root, "distance", false)) {
-    r.only_keys("distance", *d, {"cost", "attributes", "main_skeleton_radius_m"});
-    if (const toml::node* n = d->get("cost")) {
-      x.distance.cost = r.string("distance.cost", *n);
-      if (x.distance.cost != "topological" && x.distance.cost != "absolute" &&
-          x.distance.cost != "standardized") {
-        r.fail("distance.cost", *n, "expected topological, absolute or standardized");
-      }
-    }
-    if (const toml::node* n = d->get("attributes")) {
-      x.distance.attributes = string_list(r, "distance.attributes", *n);
-    }
-    if (const toml::node* n = d->get("main_skeleton_radius_m")) {
-      const double v = r.number("distance.main_skeleton_radius_m", *n);
-      if (v < 0.0) r.fail("distance.main_skeleton_radius_m", *n, "must not be negative");
-      x.distance.main_skeleton_radius_m = v;
-    }
+// [distance]: how kept trees are compared.
+void parse_distance(const Reader& r, const toml::table& root, Experiment& x) {
+  const toml::table* d = r.table(root, "distance", false);
+  if (d == nullptr) return;
+  r.only_keys("distance", *d, {"cost", "attributes", "main_skeleton_radius_m"});
+  if (const toml::node* n = d->get("cost")) {
+    x.distance.cost = one_of(r, "distance.cost", *n, kEditCostKinds, edit_cost_kind_name);
   }
+  if (const toml::node* n = d->get("attributes")) {
+    x.distance.attributes = string_list(r, "distance.attributes", *n);
+  }
+  if (const toml::node* n = d->get("main_skeleton_radius_m")) {
+    const double v = r.number("distance.main_skeleton_radius_m", *n);
+    if (v < 0.0) r.fail("distance.main_skeleton_radius_m", *n, "must not be negative");
+    x.distance.main_skeleton_radius_m = v;
+  }
+}
+
+// [[comparison]]: named pairs of run filters.
+void parse_comparison_tables(const Reader& r, const toml::table& root, Experiment& x) {
   for (const toml::node& node : table_array(r, root, "comparison")) {
     const toml::table& t = *node.as_table();
     r.only_keys("comparison", t, {"name", "a", "b", "where", "within", "pairs"});
@@ -361,6 +364,10 @@ void parse_comparisons(const Reader& r, const toml::table& root, Experiment& x) 
     }
     x.comparisons.push_back(std::move(c));
   }
+}
+
+// [[ttest]]: two comparisons' distances against each other.
+void parse_ttest_tables(const Reader& r, const toml::table& root, Experiment& x) {
   for (const toml::node& node : table_array(r, root, "ttest")) {
     const toml::table& t = *node.as_table();
     r.only_keys("ttest", t, {"a", "b", "welch", "alternative", "alpha"});
@@ -384,11 +391,7 @@ void parse_comparisons(const Reader& r, const toml::table& root, Experiment& x) 
       test.welch = n->value<bool>().value();
     }
     if (const toml::node* n = t.get("alternative")) {
-      test.alternative = r.string("ttest.alternative", *n);
-      if (test.alternative != "two-sided" && test.alternative != "less" &&
-          test.alternative != "greater") {
-        r.fail("ttest.alternative", *n, "expected two-sided, less or greater");
-      }
+      test.alternative = one_of(r, "ttest.alternative", *n, kAlternatives, alternative_name);
     }
     if (const toml::node* n = t.get("alpha")) {
       test.alpha = r.number("ttest.alpha", *n);
@@ -396,6 +399,18 @@ void parse_comparisons(const Reader& r, const toml::table& root, Experiment& x) 
     }
     x.ttests.push_back(std::move(test));
   }
+}
+
+// `metric` named at `node` must be among the recorded metrics.
+void require_recorded(const Reader& r, const std::string& key, const toml::node& node,
+                      const Experiment& x, const std::string& metric) {
+  if (std::find(x.metrics.begin(), x.metrics.end(), metric) == x.metrics.end()) {
+    r.fail(key, node, "'" + metric + "' is not recorded (add it to outputs.metrics)");
+  }
+}
+
+// [[table]]: summary tables of metrics.
+void parse_summary_tables(const Reader& r, const toml::table& root, Experiment& x) {
   for (const toml::node& node : table_array(r, root, "table")) {
     const toml::table& t = *node.as_table();
     r.only_keys("table", t, {"title", "where", "by", "metrics"});
@@ -407,42 +422,264 @@ void parse_comparisons(const Reader& r, const toml::table& root, Experiment& x) 
     const toml::node* m = t.get("metrics");
     if (m == nullptr) throw ValueError("table.metrics: missing", x.path, s.line);
     s.metrics = string_list(r, "table.metrics", *m);
-    for (const std::string& metric : s.metrics) {
-      if (std::find(x.metrics.begin(), x.metrics.end(), metric) == x.metrics.end()) {
-        r.fail("table.metrics", *m, "'" + metric + "' is not recorded (add it to outputs.metrics)");
-      }
-    }
+    for (const std::string& metric : s.metrics) require_recorded(r, "table.metrics", *m, x, metric);
     x.tables.push_back(std::move(s));
   }
-  if (const toml::table* rep = r.table(root, "report", false)) {
-    r.only_keys("report", *rep,
-                {"renders", "render_by", "render_where", "render_metric", "about", "html"});
-    if (const toml::node* n = rep->get("about")) x.about = r.string("report.about", *n);
-    if (const toml::node* n = rep->get("html")) {
-      if (!n->is_boolean()) r.fail("report.html", *n, "expected true or false");
-      x.report_html = n->value<bool>().value();
-    }
-    if (const toml::node* n = rep->get("renders")) {
-      x.render.renders = static_cast<std::size_t>(r.integer("report.renders", *n, 0));
-    }
-    if (const toml::node* n = rep->get("render_by")) {
-      x.render.by = parameter_names(r, "report.render_by", *n, x);
-      x.render.by_given = true;
-    }
-    if (const toml::node* n = rep->get("render_where")) {
-      x.render.where = run_filter(r, "report.render_where", *n, x);
-    }
-    if (const toml::node* n = rep->get("render_metric")) {
-      x.render.metric = r.string("report.render_metric", *n);
-      if (std::find(x.metrics.begin(), x.metrics.end(), x.render.metric) == x.metrics.end()) {
-        r.fail("report.render_metric", *n,
-               "'" + x.render.metric + "' is not recorded (add it to outputs.metrics)");
-      }
+}
+
+// [report]: the text and renders of fspm report.
+void parse_report_table(const Reader& r, const toml::table& root, Experiment& x) {
+  const toml::table* rep = r.table(root, "report", false);
+  if (rep == nullptr) return;
+  r.only_keys("report", *rep,
+              {"renders", "render_by", "render_where", "render_metric", "about", "html"});
+  if (const toml::node* n = rep->get("about")) x.about = r.string("report.about", *n);
+  if (const toml::node* n = rep->get("html")) {
+    if (!n->is_boolean()) r.fail("report.html", *n, "expected true or false");
+    x.report_html = n->value<bool>().value();
+  }
+  if (const toml::node* n = rep->get("renders")) {
+    x.render.renders = static_cast<std::size_t>(r.integer("report.renders", *n, 0));
+  }
+  if (const toml::node* n = rep->get("render_by")) {
+    x.render.by = parameter_names(r, "report.render_by", *n, x);
+    x.render.by_given = true;
+  }
+  if (const toml::node* n = rep->get("render_where")) {
+    x.render.where = run_filter(r, "report.render_where", *n, x);
+  }
+  if (const toml::node* n = rep->get("render_metric")) {
+    x.render.metric = r.string("report.render_metric", *n);
+    require_recorded(r, "report.render_metric", *n, x, x.render.metric);
+  }
+}
+
+// [distance], [[comparison]], [[ttest]], [[table]], [report] (docs/experiments.md).
+void parse_comparisons(const Reader& r, const toml::table& root, Experiment& x) {
+  parse_distance(r, root, x);
+  parse_comparison_tables(r, root, x);
+  parse_ttest_tables(r, root, x);
+  parse_summary_tables(r, root, x);
+  parse_report_table(r, root, x);
+  // Comparisons read the runs' trees back, so they are kept.
+  if (!x.comparisons.empty() &&
+      std::find(x.keep.begin(), x.keep.end(), KeptFile::kTree) == x.keep.end()) {
+    x.keep.push_back(KeptFile::kTree);
+  }
+}
+
+// [experiment]: name, seed, replicates, description.
+void parse_experiment_table(const Reader& r, const toml::table& root, Experiment& x) {
+  const toml::table& exp = *r.table(root, "experiment", true);
+  r.only_keys("experiment", exp, {"name", "seed", "replicates", "description"});
+  if (const toml::node* n = exp.get("name")) {
+    x.name = r.string("experiment.name", *n);
+  } else {
+    throw ValueError("experiment.name: missing (every experiment needs a name)", r.path(),
+                     Reader::line_of(exp));
+  }
+  if (const toml::node* n = exp.get("seed")) {
+    x.seed = static_cast<std::uint64_t>(r.integer("experiment.seed", *n, 0));
+  }
+  if (const toml::node* n = exp.get("replicates")) {
+    x.replicates = static_cast<std::size_t>(r.integer("experiment.replicates", *n, 1));
+  }
+  if (const toml::node* n = exp.get("description")) {
+    x.description = r.string("experiment.description", *n);
+  }
+}
+
+// [model]: kind and the files it reads.
+void parse_model_table(const Reader& r, const toml::table& root, Experiment& x) {
+  const toml::table& model = *r.table(root, "model", true);
+  r.only_keys("model", model, {"kind", "file", "view", "scene"});
+  const toml::node* kind_node = model.get("kind");
+  if (kind_node == nullptr) {
+    throw ValueError("model.kind: missing (" + model_kind_names() + ")", r.path(),
+                     Reader::line_of(model));
+  }
+  const std::string kind = r.string("model.kind", *kind_node);
+  x.model_kind_line = Reader::line_of(*kind_node);
+  const std::optional<ModelKind> known = find_model_kind(kind);
+  if (!known) {
+    std::vector<std::string> names;
+    for (ModelKind k : kModelKinds) names.emplace_back(model_kind_name(k));
+    throw ValueError("model.kind: unknown kind '" + kind + "'" + closest_name_hint(kind, names),
+                     r.path(), x.model_kind_line);
+  }
+  x.model_kind = *known;
+  if (const toml::node* n = model.get("file")) {
+    x.model_file = r.resolve("model.file", *n);
+    x.model_file_line = Reader::line_of(*n);
+  }
+  if (const toml::node* n = model.get("view")) x.model_view = r.resolve("model.view", *n);
+  if (const toml::node* n = model.get("scene")) x.model_scene = r.resolve("model.scene", *n);
+}
+
+// Records that the parameter `name` is given at `node`: a parameter is fixed, swept or sampled,
+// once.
+void claim_parameter(const Reader& r, Experiment& x, const std::string& name,
+                     const toml::node& node) {
+  if (name.empty()) r.fail("parameter", node, "empty parameter name");
+  if (!x.parameter_lines.emplace(name, Reader::line_of(node)).second) {
+    r.fail(name, node,
+           "given twice (line " + std::to_string(x.parameter_lines[name]) +
+               "): a parameter is either fixed, swept or sampled");
+  }
+}
+
+// [parameters]: fixed values.
+void parse_fixed_parameters(const Reader& r, const toml::table& root, Experiment& x) {
+  const toml::table* fixed = r.table(root, "parameters", false);
+  if (fixed == nullptr) return;
+  for (auto&& [key, node] : *fixed) {
+    const std::string name(key.str());
+    claim_parameter(r, x, name, node);
+    x.fixed[name] = r.scalar("parameters." + name, node);
+  }
+}
+
+// [sweep]: the grid's axes in file order.
+void parse_sweep_table(const Reader& r, const toml::table& root, Experiment& x) {
+  const toml::table* sweep = r.table(root, "sweep", false);
+  if (sweep == nullptr) return;
+  for (auto&& [key, node] : *sweep) {
+    const std::string name(key.str());
+    claim_parameter(r, x, name, node);
+    x.sweep.push_back({name, r.axis_values("sweep." + name, node), Reader::line_of(node)});
+  }
+  // toml++ iterates tables in key order; the file order is what users expect for the grid.
+  std::stable_sort(x.sweep.begin(), x.sweep.end(),
+                   [](const SweepAxis& a, const SweepAxis& b) { return a.line < b.line; });
+}
+
+// [sampling]: method, samples, seed and the sampled parameters in file order.
+void parse_sampling_table(const Reader& r, const toml::table& root, Experiment& x) {
+  const toml::table* s = r.table(root, "sampling", false);
+  if (s == nullptr) return;
+  r.only_keys("sampling", *s, {"method", "samples", "seed", "parameters"});
+  Sampling sampling;
+  sampling.seed = x.seed;
+  if (const toml::node* n = s->get("method")) {
+    const std::string m = r.string("sampling.method", *n);
+    if (m == "random") {
+      sampling.method = SamplingMethod::kRandom;
+    } else if (m == "lhs" || m == "latin_hypercube") {
+      sampling.method = SamplingMethod::kLatinHypercube;
+    } else {
+      r.fail("sampling.method", *n, "expected \"random\" or \"lhs\"");
     }
   }
-  // Comparisons read the runs' trees back, so they are kept.
-  if (!x.comparisons.empty() && std::find(x.keep.begin(), x.keep.end(), "tree") == x.keep.end()) {
-    x.keep.emplace_back("tree");
+  const toml::node* samples = s->get("samples");
+  if (samples == nullptr)
+    throw ValueError("sampling.samples: missing", r.path(), Reader::line_of(*s));
+  sampling.samples = static_cast<std::size_t>(r.integer("sampling.samples", *samples, 1));
+  if (const toml::node* n = s->get("seed")) {
+    sampling.seed = static_cast<std::uint64_t>(r.integer("sampling.seed", *n, 0));
+  }
+  const toml::table* params = r.table(*s, "parameters", false);
+  if (params == nullptr || params->empty()) {
+    throw ValueError("sampling.parameters: missing (name = { uniform = [low, high] }, ...)",
+                     r.path(), Reader::line_of(*s));
+  }
+  for (auto&& [key, node] : *params) {
+    const std::string name(key.str());
+    claim_parameter(r, x, name, node);
+    sampling.parameters.push_back(r.sampled("sampling.parameters." + name, name, node));
+  }
+  std::stable_sort(
+      sampling.parameters.begin(), sampling.parameters.end(),
+      [](const SampledParameter& a, const SampledParameter& b) { return a.line < b.line; });
+  x.sampling = std::move(sampling);
+}
+
+// outputs.metrics: names from the metric catalogue.
+void parse_metrics(const Reader& r, const toml::node& node, Experiment& x) {
+  for (const toml::node& m : r.array("outputs.metrics", node, 0)) {
+    const std::string name = r.string("outputs.metrics", m);
+    if (find_metric(name) == nullptr) {
+      std::string list;
+      for (const MetricInfo& info : metric_catalog()) {
+        list += (list.empty() ? "" : ", ") + std::string(info.name);
+      }
+      r.fail("outputs.metrics", m, "unknown metric '" + name + "' (known: " + list + ")");
+    }
+    x.metrics.push_back(name);
+  }
+}
+
+// outputs.keep: the kinds of per-run files, each once.
+void parse_keep(const Reader& r, const toml::node& node, Experiment& x) {
+  x.keep_line = Reader::line_of(node);
+  for (const toml::node& k : r.array("outputs.keep", node, 0)) {
+    const KeptFile kind = one_of(r, "outputs.keep", k, kKeptFiles, kept_file_name);
+    if (std::find(x.keep.begin(), x.keep.end(), kind) != x.keep.end()) {
+      r.fail("outputs.keep", k, "'" + std::string(kept_file_name(kind)) + "' given twice");
+    }
+    x.keep.push_back(kind);
+  }
+}
+
+// [outputs]: metrics, kept files and how meshes and images are written.
+void parse_outputs_table(const Reader& r, const toml::table& root, Experiment& x) {
+  if (const toml::table* out = r.table(root, "outputs", false)) {
+    r.only_keys("outputs", *out,
+                {"metrics", "keep", "reference", "mesh_format", "image_size", "image_view"});
+    if (const toml::node* n = out->get("mesh_format")) {
+      x.mesh_format = one_of(r, "outputs.mesh_format", *n, kKeptMeshFormats, mesh_format_name);
+    }
+    if (const toml::node* n = out->get("image_view")) {
+      x.image_view = one_of(r, "outputs.image_view", *n, kViews, view_name);
+    }
+    if (const toml::node* n = out->get("image_size")) {
+      const std::optional<ImageSize> size = find_image_size(r.string("outputs.image_size", *n));
+      if (!size) {
+        r.fail("outputs.image_size", *n,
+               "expected \"WIDTHxHEIGHT\", each 1.." + std::to_string(kMaxImageSide) +
+                   ", e.g. \"640x480\"");
+      }
+      x.image_width = size->width;
+      x.image_height = size->height;
+    }
+    if (const toml::node* n = out->get("reference")) {
+      x.reference_file = r.resolve("outputs.reference", *n);
+    }
+    if (const toml::node* n = out->get("metrics")) parse_metrics(r, *n, x);
+    if (const toml::node* n = out->get("keep")) parse_keep(r, *n, x);
+  }
+  if (x.metrics.empty()) {
+    for (const MetricInfo& info : metric_catalog()) {
+      if (info.by_default) x.metrics.emplace_back(info.name);
+    }
+  }
+}
+
+// [runner]: limits of one run.
+void parse_runner_table(const Reader& r, const toml::table& root, Experiment& x) {
+  const toml::table* runner = r.table(root, "runner", false);
+  if (runner == nullptr) return;
+  r.only_keys("runner", *runner, {"time_limit_s"});
+  if (const toml::node* n = runner->get("time_limit_s")) {
+    const double limit = r.number("runner.time_limit_s", *n);
+    if (limit <= 0.0) r.fail("runner.time_limit_s", *n, "must be positive");
+    x.time_limit_s = limit;
+  }
+}
+
+constexpr std::string_view kReplicatesMarker = "\n# replicates overridden: ";
+
+// The text a result database stores after override_replicates ends in its marker; reading it
+// back gives the replicates the runs had.
+void apply_replicates_marker(std::string_view toml_text, Experiment& x) {
+  const auto at = toml_text.rfind(kReplicatesMarker);
+  if (at == std::string_view::npos) return;
+  std::size_t replicates = 0;
+  const std::string_view digits = toml_text.substr(at + kReplicatesMarker.size());
+  const auto [end, error] =
+      std::from_chars(digits.data(), digits.data() + digits.size(), replicates);
+  if (error == std::errc() && replicates > 0 &&
+      std::string_view(end, digits.data() + digits.size()) == "\n") {
+    x.replicates = replicates;
   }
 }
 }  // namespace
@@ -469,13 +706,7 @@ std::size_t Experiment::points() const {
 std::size_t Experiment::runs() const { return points() * replicates; }
 
 Experiment parse_experiment(std::string_view toml_text, const std::string& path) {
-  toml::table root;
-  try {
-    root = toml::parse(toml_text, path);
-  } catch (const toml::parse_error& e) {
-    throw ParseError(std::string(e.description()), path, static_cast<int>(e.source().begin.line),
-                     static_cast<int>(e.source().begin.column));
-  }
+  const toml::table root = parse_toml_text(toml_text, path);
   const Reader r(path);
   Experiment x;
   x.path = path;
@@ -483,204 +714,20 @@ Experiment parse_experiment(std::string_view toml_text, const std::string& path)
   r.only_keys("", root,
               {"experiment", "model", "parameters", "sweep", "sampling", "outputs", "runner",
                "distance", "comparison", "ttest", "table", "report"});
-
-  const toml::table& exp = *r.table(root, "experiment", true);
-  r.only_keys("experiment", exp, {"name", "seed", "replicates", "description"});
-  if (const toml::node* n = exp.get("name")) {
-    x.name = r.string("experiment.name", *n);
-  } else {
-    throw ValueError("experiment.name: missing (every experiment needs a name)", path,
-                     Reader::line_of(exp));
-  }
-  if (const toml::node* n = exp.get("seed")) {
-    x.seed = static_cast<std::uint64_t>(r.integer("experiment.seed", *n, 0));
-  }
-  if (const toml::node* n = exp.get("replicates")) {
-    x.replicates = static_cast<std::size_t>(r.integer("experiment.replicates", *n, 1));
-  }
-  if (const toml::node* n = exp.get("description")) {
-    x.description = r.string("experiment.description", *n);
-  }
-
-  const toml::table& model = *r.table(root, "model", true);
-  r.only_keys("model", model, {"kind", "file", "view", "scene"});
-  if (const toml::node* n = model.get("kind")) {
-    const std::string kind = r.string("model.kind", *n);
-    x.model_kind_line = Reader::line_of(*n);
-    const std::optional<ModelKind> known = find_model_kind(kind);
-    if (!known) {
-      std::vector<std::string> names;
-      for (ModelKind k : kModelKinds) names.emplace_back(model_kind_name(k));
-      throw ValueError("model.kind: unknown kind '" + kind + "'" + closest_name_hint(kind, names),
-                       path, x.model_kind_line);
-    }
-    x.model_kind = *known;
-  } else {
-    throw ValueError("model.kind: missing (" + model_kind_names() + ")", path,
-                     Reader::line_of(model));
-  }
-  if (const toml::node* n = model.get("file")) {
-    x.model_file = r.resolve("model.file", *n);
-    x.model_file_line = Reader::line_of(*n);
-  }
-  if (const toml::node* n = model.get("view")) x.model_view = r.resolve("model.view", *n);
-  if (const toml::node* n = model.get("scene")) x.model_scene = r.resolve("model.scene", *n);
-
-  auto claim = [&](const std::string& name, const toml::node& node) {
-    if (name.empty()) r.fail("parameter", node, "empty parameter name");
-    if (!x.parameter_lines.emplace(name, Reader::line_of(node)).second) {
-      r.fail(name, node,
-             "given twice (line " + std::to_string(x.parameter_lines[name]) +
-                 "): a parameter is either fixed, swept or sampled");
-    }
-  };
-
-  if (const toml::table* fixed = r.table(root, "parameters", false)) {
-    for (auto&& [key, node] : *fixed) {
-      const std::string name(key.str());
-      claim(name, node);
-      x.fixed[name] = r.scalar("parameters." + name, node);
-    }
-  }
-
-  double runs = 1.0;
-  if (const toml::table* sweep = r.table(root, "sweep", false)) {
-    for (auto&& [key, node] : *sweep) {
-      const std::string name(key.str());
-      claim(name, node);
-      SweepAxis axis{name, r.axis_values("sweep." + name, node), Reader::line_of(node)};
-      runs *= static_cast<double>(axis.values.size());
-      x.sweep.push_back(std::move(axis));
-    }
-  }
-  // toml++ iterates tables in key order; the file order is what users expect for the grid.
-  std::stable_sort(x.sweep.begin(), x.sweep.end(),
-                   [](const SweepAxis& a, const SweepAxis& b) { return a.line < b.line; });
-
-  if (const toml::table* s = r.table(root, "sampling", false)) {
-    r.only_keys("sampling", *s, {"method", "samples", "seed", "parameters"});
-    Sampling sampling;
-    sampling.seed = x.seed;
-    if (const toml::node* n = s->get("method")) {
-      const std::string m = r.string("sampling.method", *n);
-      if (m == "random") {
-        sampling.method = SamplingMethod::kRandom;
-      } else if (m == "lhs" || m == "latin_hypercube") {
-        sampling.method = SamplingMethod::kLatinHypercube;
-      } else {
-        r.fail("sampling.method", *n, "expected \"random\" or \"lhs\"");
-      }
-    }
-    if (const toml::node* n = s->get("samples")) {
-      sampling.samples = static_cast<std::size_t>(r.integer("sampling.samples", *n, 1));
-    } else {
-      throw ValueError("sampling.samples: missing", path, Reader::line_of(*s));
-    }
-    if (const toml::node* n = s->get("seed")) {
-      sampling.seed = static_cast<std::uint64_t>(r.integer("sampling.seed", *n, 0));
-    }
-    const toml::table* params = r.table(*s, "parameters", false);
-    if (params == nullptr || params->empty()) {
-      throw ValueError("sampling.parameters: missing (name = { uniform = [low, high] }, ...)", path,
-                       Reader::line_of(*s));
-    }
-    for (auto&& [key, node] : *params) {
-      const std::string name(key.str());
-      claim(name, node);
-      sampling.parameters.push_back(r.sampled("sampling.parameters." + name, name, node));
-    }
-    std::stable_sort(
-        sampling.parameters.begin(), sampling.parameters.end(),
-        [](const SampledParameter& a, const SampledParameter& b) { return a.line < b.line; });
-    runs *= static_cast<double>(sampling.samples);
-    x.sampling = std::move(sampling);
-  }
-  runs *= static_cast<double>(x.replicates);
+  parse_experiment_table(r, root, x);
+  parse_model_table(r, root, x);
+  parse_fixed_parameters(r, root, x);
+  parse_sweep_table(r, root, x);
+  parse_sampling_table(r, root, x);
+  // Counted in doubles: a product of axis sizes can overflow std::size_t.
+  double runs = static_cast<double>(x.replicates);
+  for (const SweepAxis& a : x.sweep) runs *= static_cast<double>(a.values.size());
+  if (x.sampling) runs *= static_cast<double>(x.sampling->samples);
   check_run_count(runs, "", path);
-
-  if (const toml::table* out = r.table(root, "outputs", false)) {
-    r.only_keys("outputs", *out,
-                {"metrics", "keep", "reference", "mesh_format", "image_size", "image_view"});
-    if (const toml::node* n = out->get("mesh_format")) {
-      x.mesh_format = r.string("outputs.mesh_format", *n);
-      if (x.mesh_format != "glb" && x.mesh_format != "ply" && x.mesh_format != "vtp") {
-        r.fail("outputs.mesh_format", *n, "expected \"glb\", \"ply\" or \"vtp\"");
-      }
-    }
-    if (const toml::node* n = out->get("image_view")) {
-      x.image_view = r.string("outputs.image_view", *n);
-      if (x.image_view != "front" && x.image_view != "side" && x.image_view != "top" &&
-          x.image_view != "iso") {
-        r.fail("outputs.image_view", *n, "expected front, side, top or iso");
-      }
-    }
-    if (const toml::node* n = out->get("image_size")) {
-      const std::string size = r.string("outputs.image_size", *n);
-      if (!parse_image_size(size, x.image_width, x.image_height)) {
-        r.fail("outputs.image_size", *n,
-               "expected \"WIDTHxHEIGHT\", each 1..16384, e.g. \"640x480\"");
-      }
-    }
-    if (const toml::node* n = out->get("reference")) {
-      x.reference_file = r.resolve("outputs.reference", *n);
-    }
-    if (const toml::node* n = out->get("metrics")) {
-      for (const toml::node& m : r.array("outputs.metrics", *n, 0)) {
-        const std::string name = r.string("outputs.metrics", m);
-        if (find_metric(name) == nullptr) {
-          std::string list;
-          for (const MetricInfo& info : metric_catalog()) {
-            list += (list.empty() ? "" : ", ") + std::string(info.name);
-          }
-          r.fail("outputs.metrics", m, "unknown metric '" + name + "' (known: " + list + ")");
-        }
-        x.metrics.push_back(name);
-      }
-    }
-    if (const toml::node* n = out->get("keep")) {
-      x.keep_line = Reader::line_of(*n);
-      for (const toml::node& k : r.array("outputs.keep", *n, 0)) {
-        const std::string what = r.string("outputs.keep", k);
-        if (what != "tree" && what != "mesh" && what != "image") {
-          r.fail("outputs.keep", k,
-                 "unknown file kind '" + what + "' (expected tree, mesh, image)");
-        }
-        if (std::find(x.keep.begin(), x.keep.end(), what) != x.keep.end()) {
-          r.fail("outputs.keep", k, "'" + what + "' given twice");
-        }
-        x.keep.push_back(what);
-      }
-    }
-  }
-  if (x.metrics.empty()) {
-    for (const MetricInfo& info : metric_catalog()) {
-      if (info.by_default) x.metrics.emplace_back(info.name);
-    }
-  }
-
+  parse_outputs_table(r, root, x);
   parse_comparisons(r, root, x);
-
-  if (const toml::table* runner = r.table(root, "runner", false)) {
-    r.only_keys("runner", *runner, {"time_limit_s"});
-    if (const toml::node* n = runner->get("time_limit_s")) {
-      const double limit = r.number("runner.time_limit_s", *n);
-      if (limit <= 0.0) r.fail("runner.time_limit_s", *n, "must be positive");
-      x.time_limit_s = limit;
-    }
-  }
-  // The text a result database stores after override_replicates ends in its marker; reading it
-  // back gives the replicates the runs had.
-  const std::string_view marker = "\n# replicates overridden: ";
-  if (const auto at = toml_text.rfind(marker); at != std::string_view::npos) {
-    std::size_t replicates = 0;
-    const std::string_view digits = toml_text.substr(at + marker.size());
-    const auto [end, error] =
-        std::from_chars(digits.data(), digits.data() + digits.size(), replicates);
-    if (error == std::errc() && replicates > 0 &&
-        std::string_view(end, digits.data() + digits.size()) == "\n") {
-      x.replicates = replicates;
-    }
-  }
+  parse_runner_table(r, root, x);
+  apply_replicates_marker(toml_text, x);
   return x;
 }
 
@@ -689,7 +736,7 @@ void override_replicates(Experiment& x, std::size_t replicates) {
   check_run_count(static_cast<double>(x.points()) * static_cast<double>(replicates),
                   "--replicates " + std::to_string(replicates) + ": ", x.path);
   x.replicates = replicates;
-  x.text += "\n# replicates overridden: " + std::to_string(replicates) + "\n";
+  x.text += std::string(kReplicatesMarker) + std::to_string(replicates) + "\n";
 }
 
 Experiment read_experiment(const std::string& path) {

@@ -11,8 +11,11 @@
 #include <vector>
 
 #include "experiments/comparison_spec.hpp"
+#include "experiments/kept_file.hpp"
 #include "experiments/model_kind.hpp"
 #include "experiments/parameter_set.hpp"
+#include "fspm/image_request.hpp"
+#include "fspm/mesh_format.hpp"
 
 namespace fspm::experiments {
 
@@ -22,6 +25,10 @@ struct SweepAxis {
   std::vector<ParameterValue> values;
   int line = 0;
 };
+
+// The single-mesh formats outputs.mesh_format accepts.
+inline constexpr MeshFormat kKeptMeshFormats[] = {MeshFormat::kGlb, MeshFormat::kPly,
+                                                  MeshFormat::kVtp};
 
 enum class SamplingMethod { kRandom, kLatinHypercube };
 
@@ -66,12 +73,12 @@ struct Experiment {
   std::vector<SweepAxis> sweep;
   std::optional<Sampling> sampling;
   std::vector<std::string> metrics;
-  std::vector<std::string> keep;  // per-run files to keep: "tree", "mesh", "image"
+  std::vector<KeptFile> keep;  // outputs.keep: per-run files to keep, in file order
   int keep_line = 0;
-  std::string mesh_format = "glb";  // outputs.mesh_format: glb | ply | vtp
-  int image_width = 640;            // outputs.image_size "WxH": kept images and report renders
+  MeshFormat mesh_format = MeshFormat::kGlb;  // outputs.mesh_format: one of kKeptMeshFormats
+  int image_width = 640;  // outputs.image_size "WxH": kept images and report renders
   int image_height = 480;
-  std::string image_view = "front";  // outputs.image_view: front | side | top | iso
+  View image_view = View::kFront;  // outputs.image_view
   std::optional<double> time_limit_s;
   std::map<std::string, int> parameter_lines;  // line of every fixed, swept or sampled key
   int model_kind_line = 0;

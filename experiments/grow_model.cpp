@@ -10,10 +10,12 @@
 #include "environment/growth_params.hpp"
 #include "environment/plastic_adaptation.hpp"
 #include "environment/tree_analysis.hpp"
+#include "experiments/grow_set.hpp"
 #include "experiments/light_interception.hpp"
 #include "experiments/metrics.hpp"
 #include "experiments/scene_cache.hpp"
 #include "fspm/input_file.hpp"
+#include "fspm/toml_text.hpp"
 
 namespace fspm::experiments {
 namespace {
@@ -30,6 +32,12 @@ env::Scene open_version(const env::Scene& scene) {
   return open;
 }
 
+// The `set` parameter's value as a set; throws ValueError for another value.
+GrowSet grow_set(const ParameterValue& value) {
+  if (const std::optional<GrowSet> set = find_grow_set(parameter_string(value, "set"))) return *set;
+  throw ValueError("set must be \"O\", \"G\" or \"T\"");
+}
+
 class GrowModel final : public Model {
  public:
   GrowModel(const std::string& params_file, const std::string& scene_file, std::string base_dir)
@@ -43,8 +51,7 @@ class GrowModel final : public Model {
 
   void check_parameter(const std::string& name, const ParameterValue& value) const override {
     if (name == "set") {
-      const std::string s = parameter_string(value, name);
-      if (s != "O" && s != "G" && s != "T") throw ValueError("set must be \"O\", \"G\" or \"T\"");
+      grow_set(value);
       return;
     }
     if (name == "scene") {
@@ -74,8 +81,7 @@ class GrowModel final : public Model {
       const double years = growth_params(parameters, 1).years;
       double factor = 1.0;
       if (const auto it = parameters.find("set"); it != parameters.end()) {
-        const std::string s = parameter_string(it->second, "set");
-        factor = s == "G" ? 0.6 : 1.0;
+        factor = grow_set(it->second) == GrowSet::kBesideObstacles ? 0.6 : 1.0;
       }
       return factor * std::exp(0.25 * std::min(years, 2000.0));
     } catch (const std::exception&) {
@@ -86,11 +92,10 @@ class GrowModel final : public Model {
   RunResult run(const ParameterSet& parameters, std::uint64_t seed,
                 const RunContext& context) const override {
     const env::GrowthParams params = growth_params(parameters, seed);
-    std::string set = "G";
+    GrowSet set = GrowSet::kBesideObstacles;
     std::string scene_path = default_scene_;
     bool measure_regrowth = false;
-    if (const auto it = parameters.find("set"); it != parameters.end())
-      set = parameter_string(it->second, "set");
+    if (const auto it = parameters.find("set"); it != parameters.end()) set = grow_set(it->second);
     if (const auto it = parameters.find("scene"); it != parameters.end()) {
       const std::string s = parameter_string(it->second, "scene");
       scene_path = s == "open" ? std::string() : resolve(s);
@@ -104,10 +109,11 @@ class GrowModel final : public Model {
 
     RunResult result;
     Clock::time_point t0 = Clock::now();
-    env::GrowthResult grown = env::grow_tree(params, set == "G" ? full : open);
+    env::GrowthResult grown =
+        env::grow_tree(params, set == GrowSet::kBesideObstacles ? full : open);
     result.metrics["grow_seconds"] = seconds_since(t0);
     context.check();
-    if (set != "T") {
+    if (set != GrowSet::kAdapted) {
       result.tree = std::move(grown.tree);
     } else {
       env::AnalysisParams ap;
@@ -136,7 +142,7 @@ class GrowModel final : public Model {
     // The growth model's leaf clusters (leaf nodes), in set T as the adaptation moved them, so
     // that the metric means the same for sets O, G and T.
     result.metrics["light_interception"] =
-        light_interception(set == "O" ? open : full, leaf_cluster_spheres(*result.tree));
+        light_interception(set == GrowSet::kOpen ? open : full, leaf_cluster_spheres(*result.tree));
     for (auto& [name, value] : tree_metrics(*result.tree)) result.metrics[name] = value;
     return result;
   }
@@ -148,7 +154,7 @@ class GrowModel final : public Model {
   // The parameter file's table with the run's growth parameters put over it, read by the growth
   // parameter parser so that names, ranges and messages are those of `fspm grow`.
   env::GrowthParams growth_params(const ParameterSet& parameters, std::uint64_t seed) const {
-    toml::table table = toml::parse(base_text_, base_name_);
+    toml::table table = parse_toml_text(base_text_, base_name_);
     for (const auto& [name, value] : parameters) {
       if (name == "set" || name == "scene" || name == "measure_regrowth") continue;
       if (name == "seed") throw ValueError("seed: the growth seed is the run's seed");

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "fspm/attribute_names.hpp"
 #include "fspm/tree_summary.hpp"
 
 namespace fspm::experiments {
@@ -52,8 +53,8 @@ const MetricInfo* find_metric(std::string_view name) {
 std::map<std::string, double> tree_metrics(const TreeGraph& tree) {
   const TreeSummary s = summarize(tree);
   double leaf_area = 0.0;
-  if (tree.has_attribute("leaf_area")) {
-    for (double a : tree.attribute("leaf_area")) leaf_area += a;
+  if (tree.has_attribute(kLeafAreaAttribute)) {
+    for (double a : tree.attribute(kLeafAreaAttribute)) leaf_area += a;
   }
   return {
       {"nodes", static_cast<double>(s.nodes)},

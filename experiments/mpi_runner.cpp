@@ -76,6 +76,7 @@ RunnerSummary root(const Experiment& experiment, const Model& model, const Runne
       throw ValueError("--shard: expected I/N with 0 <= I < N");
     }
     check_run_file_writers(experiment, options.file_writers);
+    check_run_list_memory(experiment, experiment.runs(), options);
     db = std::make_unique<ResultsDb>(
         options.out_dir, options.resume ? ResultsDb::Mode::kResume : ResultsDb::Mode::kCreate,
         experiment_info(experiment));

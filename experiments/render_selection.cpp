@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "environment/scene_file.hpp"
+#include "experiments/grow_set.hpp"
 #include "experiments/metrics.hpp"
 #include "experiments/model_factory.hpp"
 #include "fspm/tree_file.hpp"
@@ -133,7 +134,10 @@ std::optional<environment::Scene> recorded_run_scene(const Experiment& x, const 
     if (it == record.parameters.end()) return std::nullopt;
     return parameter_text(it->second);
   };
-  if (x.model_kind == ModelKind::kGrow && text("set").value_or("G") == "O") return std::nullopt;
+  if (x.model_kind == ModelKind::kGrow &&
+      find_grow_set(text("set").value_or("G")) == GrowSet::kOpen) {
+    return std::nullopt;
+  }
   std::string path = x.model_scene;
   if (const auto scene = text("scene")) {
     if (*scene == "open") return std::nullopt;

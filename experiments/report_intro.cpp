@@ -128,8 +128,9 @@ void set_meanings(std::ostream& md, const Experiment& x) {
   md << "**The sets.**";
   for (const ParameterValue& v : sets) {
     const std::string name = parameter_text(v);
-    const std::string_view meaning = grow_set_meaning(name);
-    if (!meaning.empty()) md << " **" << name << "**: " << meaning << ".";
+    if (const std::optional<GrowSet> set = find_grow_set(name)) {
+      md << " **" << name << "**: " << grow_set_meaning(*set) << ".";
+    }
   }
   md << "\n\n";
 }
@@ -157,9 +158,9 @@ void comparison_meanings(std::ostream& md, const Experiment& x) {
   md << "**The tests.**";
   for (const TTestSpec& t : x.ttests) {
     md << " Are the " << t.a << " distances "
-       << (t.alternative == "less"      ? "smaller than"
-           : t.alternative == "greater" ? "larger than"
-                                        : "different from")
+       << (t.alternative == Alternative::kLess      ? "smaller than"
+           : t.alternative == Alternative::kGreater ? "larger than"
+                                                    : "different from")
        << " the " << t.b << " distances? (" << (t.welch ? "Welch's" : "Student's")
        << " t-test, significant when p < " << t.alpha << ".)";
   }
@@ -167,17 +168,6 @@ void comparison_meanings(std::ostream& md, const Experiment& x) {
 }
 
 }  // namespace
-
-std::string_view grow_set_meaning(std::string_view set) {
-  if (set == "O")
-    return "grown in the open, without the scene's obstacles (its sky and ground only)";
-  if (set == "G") return "grown in the scene, beside its obstacles, from the start";
-  if (set == "T") {
-    return "grown like O, then adapted to the scene's obstacles by plastic adaptation "
-           "(Pirk 2013, 4.3-4.4): branches pruned and bent instead of regrown";
-  }
-  return {};
-}
 
 std::string report_introduction(const Experiment& x) {
   std::ostringstream md;

@@ -10,12 +10,9 @@
 
 #include "experiments/comparisons.hpp"
 #include "experiments/experiment.hpp"
+#include "experiments/grow_set.hpp"
 
 namespace fspm::experiments {
-
-// What a value of the grow model's `set` parameter means ("O": grown without the scene's
-// obstacles, ...); empty for an unknown value.
-std::string_view grow_set_meaning(std::string_view set);
 
 // Markdown paragraphs, each ending in a blank line.
 std::string report_introduction(const Experiment& experiment);

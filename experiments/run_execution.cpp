@@ -39,11 +39,11 @@ ExecutionSettings execution_settings(const Experiment& experiment, const std::st
   s.experiment = &experiment;
   s.out_dir = out_dir;
   s.time_limit_s = time_limit_override ? time_limit_override : experiment.time_limit_s;
-  s.keep_tree =
-      std::find(experiment.keep.begin(), experiment.keep.end(), "tree") != experiment.keep.end();
+  s.keep_tree = std::find(experiment.keep.begin(), experiment.keep.end(), KeptFile::kTree) !=
+                experiment.keep.end();
   s.interrupt = interrupt;
-  for (const std::string& kind : experiment.keep) {
-    if (kind != "tree") s.file_writers.emplace_back(kind, writers.find(kind)->second);
+  for (const KeptFile kind : experiment.keep) {
+    if (kind != KeptFile::kTree) s.file_writers.emplace_back(kind, writers.find(kind)->second);
   }
   if (!experiment.keep.empty()) fs::create_directories(fs::path(out_dir) / "runs");
   const bool wants_distance = std::find(experiment.metrics.begin(), experiment.metrics.end(),
@@ -101,7 +101,7 @@ std::optional<RunRecord> execute_run(const Model& model, const RunSpec& spec,
         try {
           record.files.push_back(writer(*result.tree, spec.index, settings.out_dir));
         } catch (const std::exception& e) {
-          throw IoError("keeping the run's " + kind + ": " + e.what());
+          throw IoError("keeping the run's " + std::string(kept_file_name(kind)) + ": " + e.what());
         }
       }
     }

@@ -23,7 +23,7 @@ struct ExecutionSettings {
   std::string out_dir;  // kept files go to out_dir/runs/
   bool keep_tree = false;
   // The other kept kinds, in outputs.keep order, with their writers.
-  std::vector<std::pair<std::string, RunFileWriter>> file_writers;
+  std::vector<std::pair<KeptFile, RunFileWriter>> file_writers;
   const std::atomic<bool>* interrupt = nullptr;
   // outputs.reference, read once, when distance_to_reference is recorded.
   std::shared_ptr<const TreeGraph> reference;

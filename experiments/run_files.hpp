@@ -19,15 +19,15 @@ namespace fspm::experiments {
 // failure; the run is then recorded with status error and the message.
 using RunFileWriter =
     std::function<std::string(const TreeGraph& tree, std::size_t run, const std::string& out_dir)>;
-// By kind: "mesh", "image".
-using RunFileWriters = std::map<std::string, RunFileWriter, std::less<>>;
+// By kind: KeptFile::kMesh, KeptFile::kImage.
+using RunFileWriters = std::map<KeptFile, RunFileWriter>;
 
 // "runs/run-0000042.glb": the path of run 42's file with that extension, relative to the output
 // directory.
 std::string run_file_path(std::size_t run, std::string_view extension);
 
 // Throws ValueError naming outputs.keep and its line when the experiment keeps a kind other than
-// "tree" that has no writer, before any run starts.
+// a tree that has no writer, before any run starts.
 void check_run_file_writers(const Experiment& experiment, const RunFileWriters& writers);
 
 }  // namespace fspm::experiments

@@ -122,6 +122,17 @@ void count_recorded(const std::vector<RunRecord>& batch, RunnerSummary& summary)
   }
 }
 
+void check_run_list_memory(const Experiment& experiment, std::size_t runs,
+                           const RunnerOptions& options) {
+  const double shard_runs =
+      std::ceil(static_cast<double>(runs) /
+                static_cast<double>(std::max<std::size_t>(options.shard_count, 1)));
+  const double per_run =
+      sizeof(std::size_t) + (options.longest_first ? 3 * sizeof(std::size_t) + sizeof(double) : 0);
+  check_memory(static_cast<double>(runs) + shard_runs * per_run,
+               "the list of " + std::to_string(runs) + " runs", experiment.path);
+}
+
 RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
                              const RunnerOptions& options) {
   const Clock::time_point start = Clock::now();
@@ -132,15 +143,7 @@ RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
   }
   check_run_file_writers(experiment, options.file_writers);
   const RunPlan plan(experiment);
-  // Per run: a done flag; per run of this shard: its index, and for the longest-first order a
-  // cost, a position, stable_sort's buffer and the sorted index (run_order.cpp). Checked before
-  // the database exists.
-  const double shard_runs =
-      std::ceil(static_cast<double>(plan.size()) / static_cast<double>(options.shard_count));
-  const double per_run =
-      sizeof(std::size_t) + (options.longest_first ? 3 * sizeof(std::size_t) + sizeof(double) : 0);
-  check_memory(static_cast<double>(plan.size()) + shard_runs * per_run,
-               "the list of " + std::to_string(plan.size()) + " runs", experiment.path);
+  check_run_list_memory(experiment, plan.size(), options);
   const ExperimentInfo info = experiment_info(experiment);
   ResultsDb db(options.out_dir,
                options.resume ? ResultsDb::Mode::kResume : ResultsDb::Mode::kCreate, info);

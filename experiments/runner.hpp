@@ -55,6 +55,14 @@ struct RunnerSummary {
 // What the result database records about `experiment`.
 ExperimentInfo experiment_info(const Experiment& experiment);
 
+// Checks that the run list of one shard fits the memory budget before anything is allocated or
+// the database exists: per run a done flag; per run of the shard its index, and for the
+// longest-first order a cost, a position, stable_sort's buffer and the sorted index
+// (run_order.cpp). Throws MemoryLimitError naming the experiment file. Shared by the thread and
+// MPI runners.
+void check_run_list_memory(const Experiment& experiment, std::size_t runs,
+                           const RunnerOptions& options);
+
 // Throws IoError for database problems (locked, corrupted, another experiment's) before any run.
 // Counts a batch of recorded runs into the summary (ran, ok, failed, timed out); shared by the
 // thread and MPI runners.

@@ -13,6 +13,9 @@ namespace fspm {
 
 enum class AssignmentSolver { kHungarian, kMinCostFlow };
 
+inline constexpr AssignmentSolver kAssignmentSolvers[] = {AssignmentSolver::kHungarian,
+                                                          AssignmentSolver::kMinCostFlow};
+
 // "hungarian", "min-cost-flow".
 std::string_view assignment_solver_name(AssignmentSolver solver);
 // Inverse of assignment_solver_name; throws ValueError on an unknown name.

@@ -17,6 +17,9 @@ namespace fspm {
 
 enum class EditCostKind { kTopological, kAbsolute, kStandardized };
 
+inline constexpr EditCostKind kEditCostKinds[] = {
+    EditCostKind::kTopological, EditCostKind::kAbsolute, EditCostKind::kStandardized};
+
 // "topological", "absolute", "standardized".
 std::string_view edit_cost_kind_name(EditCostKind kind);
 // Inverse of edit_cost_kind_name; throws ValueError on an unknown name.

@@ -1,5 +1,6 @@
 #include "fspm/line_tree.hpp"
 
+#include "fspm/attribute_names.hpp"
 #include "fspm/huge_pages.hpp"
 
 namespace fspm {
@@ -92,7 +93,7 @@ NodeId LineTree::add(NodeId parent, const NodeData& data, bool dead) {
 TreeGraph LineTree::to_tree_graph() const {
   TreeGraph tree;
   tree.reserve(size());
-  if (has_dead_) tree.add_attribute("dead", 0.0);
+  if (has_dead_) tree.add_attribute(kDeadAttribute, 0.0);
   NodeData d;
   for (NodeId n = 0; n < size(); ++n) {
     d.start = start_[n].cast<double>();
@@ -107,18 +108,18 @@ TreeGraph LineTree::to_tree_graph() const {
     // add_node checks the parent (a hand-made LineTree may be wrong); length and direction are
     // kept as given because the length is not negative.
     tree.add_node(parent_[n], d);
-    if (has_dead_ && dead_[n]) tree.attribute("dead")[n] = 1.0;
+    if (has_dead_ && dead_[n]) tree.attribute(kDeadAttribute)[n] = 1.0;
   }
   return tree;
 }
 
 LineTree LineTree::from_tree_graph(const TreeGraph& tree) {
   LineTree lines;
-  const bool dead = tree.has_attribute("dead");
+  const bool dead = tree.has_attribute(kDeadAttribute);
   lines.set_has_dead(dead);
   lines.reserve(tree.size());
   for (NodeId n = 0; n < tree.size(); ++n) {
-    lines.add(tree.parent(n), tree.data(n), dead && tree.attribute("dead")[n] != 0.0);
+    lines.add(tree.parent(n), tree.data(n), dead && tree.attribute(kDeadAttribute)[n] != 0.0);
   }
   return lines;
 }

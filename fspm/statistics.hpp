@@ -11,6 +11,9 @@ namespace fspm {
 
 // The alternative hypothesis about mean_a - mean_b (or the location shift of a against b).
 enum class Alternative { kTwoSided, kLess, kGreater };
+
+inline constexpr Alternative kAlternatives[] = {Alternative::kTwoSided, Alternative::kLess,
+                                                Alternative::kGreater};
 // "two-sided", "less", "greater".
 std::string_view alternative_name(Alternative alternative);
 // Inverse of alternative_name; throws ValueError on an unknown name.

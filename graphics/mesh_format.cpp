@@ -1,24 +1,7 @@
-#include <algorithm>
-#include <cctype>
-#include <filesystem>
-
 #include "fspm/error.hpp"
 #include "graphics/mesh_writers.hpp"
 
 namespace fspm::graphics {
-
-MeshFormat mesh_format_for(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (ext == ".obj") return MeshFormat::kObj;
-  if (ext == ".ply") return MeshFormat::kPly;
-  if (ext == ".vtp") return MeshFormat::kVtp;
-  if (ext == ".pvd") return MeshFormat::kPvd;
-  if (ext == ".glb") return MeshFormat::kGlb;
-  throw ValueError(
-      "unknown mesh file extension '" + ext + "' (expected .obj, .ply, .vtp, .pvd or .glb)", path);
-}
 
 void write_mesh(const TriangleMesh& mesh, const std::string& path) {
   switch (mesh_format_for(path)) {

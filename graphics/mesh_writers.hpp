@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "fspm/mesh_format.hpp"
 #include "fspm/tree_graph.hpp"
 #include "graphics/instanced_mesh.hpp"
 #include "graphics/skeleton_skin.hpp"
@@ -16,10 +17,9 @@
 
 namespace fspm::graphics {
 
-enum class MeshFormat { kObj, kPly, kVtp, kPvd, kGlb };
-
-// From the extension of `path` (.obj, .ply, .vtp, .pvd, .glb); throws ValueError otherwise.
-MeshFormat mesh_format_for(const std::string& path);
+// The formats and their extensions live in the core (fspm/mesh_format.hpp).
+using fspm::MeshFormat;
+using fspm::mesh_format_for;
 
 // Writes `path` and, beside it, the material library with the same stem and extension .mtl.
 void write_obj(const TriangleMesh& mesh, const std::string& path);

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "fspm/image_request.hpp"
 #include "graphics/image.hpp"
 #include "graphics/instance_lod.hpp"
 #include "graphics/instanced_mesh.hpp"
@@ -15,10 +16,9 @@
 
 namespace fspm::graphics {
 
-enum class View { kFront, kSide, kTop, kIso };
-
-// "front" (looking along +y), "side" (along -x), "top" (down -z), "iso"; throws ValueError.
-View view_from_name(std::string_view name);
+// The camera directions and their names live in the core (fspm/image_request.hpp).
+using fspm::View;
+using fspm::view_from_name;
 
 struct RenderOptions {
   int width = 1024;

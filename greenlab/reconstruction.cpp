@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "fspm/attribute_names.hpp"
 #include "fspm/error.hpp"
 #include "fspm/memory_budget.hpp"
 
@@ -281,7 +282,7 @@ class AxisBuilder {
       node.kind = OrganKind::kInternode;
       const NodeId internode = add_to(tree, parent, node);
       ++st.metamers;
-      if (axis_dead && any_pruning_period_) tree.attribute("dead")[internode] = 1.0;
+      if (axis_dead && any_pruning_period_) tree.attribute(kDeadAttribute)[internode] = 1.0;
 
       // The leaf and the laterals sit at the top of the metamer, their azimuth set by phyllotaxy.
       if (options_.leaves) {
@@ -300,7 +301,8 @@ class AxisBuilder {
           node.order = static_cast<std::uint16_t>(axis.order + 1);
           const NodeId leaf = add_to(tree, internode, node);
           ++st.leaves;
-          if (any_pruning_period_ && s <= g.pruning_period) tree.attribute("dead")[leaf] = 1.0;
+          if (any_pruning_period_ && s <= g.pruning_period)
+            tree.attribute(kDeadAttribute)[leaf] = 1.0;
         }
       }
       const auto ax = graph_.axillaries(id);
@@ -471,7 +473,7 @@ void reconstruct_into(const CompressedTreeGraph& graph, const ReconstructionOpti
   // Metamers born by the requested age bound the output (each adds at most a leaf and a
   // flower), so the columns are allocated once and impossible requests fail early.
   const std::uint64_t bound = explicit_metamers(graph, builder);
-  if (builder.any_pruning_period()) tree.add_attribute("dead", 0.0);
+  if (builder.any_pruning_period()) tree.add_attribute(kDeadAttribute, 0.0);
   check_memory(
       static_cast<double>(bound * 2 + 8) * TreeGraph::bytes_per_node(tree.attribute_names().size()),
       "the explicit tree of " + std::to_string(bound) + " metamers");
@@ -505,7 +507,7 @@ InstancedPlant reconstruct_instanced(const CompressedTreeGraph& graph,
     laterals.clear();
     const RecordId record = plant.prototypes[i].record;
     TreeGraph geometry;
-    if (builder.any_pruning_period()) geometry.add_attribute("dead", 0.0);
+    if (builder.any_pruning_period()) geometry.add_attribute(kDeadAttribute, 0.0);
     builder.walk({record, kNoNode, canonical, 0}, geometry, laterals, st);
     std::vector<InstancedPlant::Child> children;
     children.reserve(laterals.size());
@@ -633,7 +635,7 @@ class LinePrototypes {
     p.child_first = static_cast<std::uint32_t>(children.size());
     p.child_count = static_cast<std::uint32_t>(laterals.size());
     p.stats = st;
-    const bool has_dead = axis.has_attribute("dead");
+    const bool has_dead = axis.has_attribute(kDeadAttribute);
     for (NodeId k = 0; k < axis.size(); ++k) {
       parent.push_back(axis.parent(k));
       start.push_back(axis.start(k).cast<float>());
@@ -644,7 +646,7 @@ class LinePrototypes {
       age.push_back(axis.physiological_age(k));
       order.push_back(axis.order(k));
       kind.push_back(axis.kind(k));
-      dead.push_back(has_dead && axis.attribute("dead")[k] != 0.0 ? 1 : 0);
+      dead.push_back(has_dead && axis.attribute(kDeadAttribute)[k] != 0.0 ? 1 : 0);
     }
     for (const AxisStart& l : laterals) {
       children.push_back({l.record, l.parent, (l.frame.axes * canonical_inverse).cast<float>(),
@@ -766,7 +768,7 @@ void reconstruct_lines_into(const CompressedTreeGraph& graph, const Reconstructi
   std::vector<AxisStart> laterals;
   const auto walk_axis = [&](RecordId record, const Frame& frame, std::uint16_t axis_order) {
     scratch.clear_keep_capacity();
-    if (builder.any_pruning_period()) scratch.add_attribute("dead", 0.0);
+    if (builder.any_pruning_period()) scratch.add_attribute(kDeadAttribute, 0.0);
     laterals.clear();
     ReconstructionStats axis_stats;
     builder.walk({record, kNoNode, frame, axis_order}, scratch, laterals, axis_stats);
@@ -778,7 +780,7 @@ void reconstruct_lines_into(const CompressedTreeGraph& graph, const Reconstructi
     if (item.walk_frame != kNoWalk) {
       add_stats(st, walk_axis(item.record, walk_frames[item.walk_frame], item.order));
       make_room(scratch.size());
-      const bool has_dead = scratch.has_attribute("dead");
+      const bool has_dead = scratch.has_attribute(kDeadAttribute);
       for (NodeId k = 0; k < scratch.size(); ++k) {
         const NodeId i = base + k;
         parent[i] = k == 0 ? item.parent : base + scratch.parent(k);
@@ -790,7 +792,7 @@ void reconstruct_lines_into(const CompressedTreeGraph& graph, const Reconstructi
         age[i] = scratch.physiological_age(k);
         order[i] = scratch.order(k);
         kind[i] = scratch.kind(k);
-        if (dead) dead[i] = has_dead && scratch.attribute("dead")[k] != 0.0;
+        if (dead) dead[i] = has_dead && scratch.attribute(kDeadAttribute)[k] != 0.0;
       }
       cursor += static_cast<NodeId>(scratch.size());
       for (const AxisStart& l : laterals) {

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "fspm/attribute_names.hpp"
 #include "lsystem/turtle.hpp"
 #include "lsystem/turtle_core.hpp"
 
@@ -95,8 +96,8 @@ class GraphBuilder {
     auto colors = out_.tree.attribute("color_index");
     std::copy(colors_.begin(), colors_.end(), colors.begin());
     if (!out_.leaves.empty()) {
-      out_.tree.add_attribute("leaf_area");
-      auto area = out_.tree.attribute("leaf_area");
+      out_.tree.add_attribute(kLeafAreaAttribute);
+      auto area = out_.tree.attribute(kLeafAreaAttribute);
       for (const LeafPolygon& leaf : out_.leaves) area[leaf.node] = leaf.area;
     }
   }

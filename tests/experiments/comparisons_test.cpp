@@ -45,7 +45,7 @@ std::vector<RunRecord> run_all(const Experiment& x, const fs::path& out) {
 TEST(Comparisons, PairsWithoutReuseWithinGroupsAndExactDistances) {
   const auto dir = testing::scratch("cmp_pairs");
   const Experiment x = parse_experiment(kChains, "chains.toml");
-  ASSERT_EQ(x.keep, std::vector<std::string>{"tree"});  // comparisons keep the trees
+  ASSERT_EQ(x.keep, std::vector<KeptFile>{KeptFile::kTree});  // comparisons keep the trees
   const std::vector<RunRecord> runs = run_all(x, dir / "out");
   ASSERT_EQ(runs.size(), 24u);
   const ComparisonResults c = run_comparisons(x, runs, (dir / "out").string(), 2);

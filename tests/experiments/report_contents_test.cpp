@@ -156,7 +156,8 @@ TEST(ReportIntroduction, SaysWhatWasRunAndWhatTheSetsAndGroupsMean) {
   EXPECT_NE(md.find("24 runs"), std::string::npos) << md;  // 2 x 3 points x 4
   EXPECT_NE(md.find("years 10, 20 × set O, G, T"), std::string::npos) << md;
   for (const char* set : {"O", "G", "T"}) {
-    EXPECT_NE(md.find(std::string("**") + set + "**: " + std::string(grow_set_meaning(set))),
+    EXPECT_NE(md.find(std::string("**") + set +
+                      "**: " + std::string(grow_set_meaning(find_grow_set(set).value()))),
               std::string::npos)
         << set << "\n"
         << md;

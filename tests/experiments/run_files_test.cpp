@@ -64,7 +64,7 @@ TEST(RunFiles, KeptMeshesAndImagesAreWrittenByTheWritersAndRecorded) {
       "keep = [\"tree\", \"mesh\", \"image\"]\n");
   const FakeWriter mesh{"mesh.txt"};
   const FakeWriter image{"image.txt"};
-  const RunnerSummary s = run(x, dir / "out", {{"mesh", mesh}, {"image", image}});
+  const RunnerSummary s = run(x, dir / "out", {{KeptFile::kMesh, mesh}, {KeptFile::kImage, image}});
   EXPECT_EQ(s.ok, 6u);
   EXPECT_EQ(mesh.runs->size(), 6u);
   EXPECT_EQ(image.runs->size(), 6u);
@@ -92,7 +92,7 @@ TEST(RunFiles, AKeptKindWithoutAWriterStopsBeforeAnyRun) {
   const Experiment x =
       synthetic("[sweep]\nnodes = [2, 5]\n[outputs]\nkeep = [\"tree\", \"image\"]\n");
   try {
-    run(x, dir / "out", {{"mesh", FakeWriter{"glb"}}});
+    run(x, dir / "out", {{KeptFile::kMesh, FakeWriter{"glb"}}});
     FAIL() << "no error";
   } catch (const ValueError& e) {
     EXPECT_EQ(e.line(), 10);  // the keep line
@@ -109,7 +109,7 @@ TEST(RunFiles, AFailingWriterMakesTheRunAnErrorAndTheSweepGoesOn) {
     if (tree.size() == 5) throw IoError("disk full");
     return run_file_path(run, "glb");
   };
-  const RunnerSummary s = run(x, dir / "out", {{"mesh", failing}});
+  const RunnerSummary s = run(x, dir / "out", {{KeptFile::kMesh, failing}});
   EXPECT_EQ(s.ok, 2u);
   EXPECT_EQ(s.failed, 2u);
   const auto rows = ResultsDb((dir / "out").string(), ResultsDb::Mode::kRead).read_all();
@@ -128,16 +128,16 @@ TEST(RunFiles, KeepAcceptsTreeMeshImageOnce) {
 
 TEST(RunFiles, MeshFormatImageSizeAndView) {
   const Experiment defaults = synthetic("");
-  EXPECT_EQ(defaults.mesh_format, "glb");
+  EXPECT_EQ(defaults.mesh_format, MeshFormat::kGlb);
   EXPECT_EQ(defaults.image_width, 640);
   EXPECT_EQ(defaults.image_height, 480);
-  EXPECT_EQ(defaults.image_view, "front");
+  EXPECT_EQ(defaults.image_view, View::kFront);
   const Experiment x = synthetic(
       "[outputs]\nmesh_format = \"ply\"\nimage_size = \"160x90\"\nimage_view = \"iso\"\n");
-  EXPECT_EQ(x.mesh_format, "ply");
+  EXPECT_EQ(x.mesh_format, MeshFormat::kPly);
   EXPECT_EQ(x.image_width, 160);
   EXPECT_EQ(x.image_height, 90);
-  EXPECT_EQ(x.image_view, "iso");
+  EXPECT_EQ(x.image_view, View::kIso);
   for (const char* bad :
        {"mesh_format = \"obj\"", "image_size = \"160\"", "image_size = \"0x90\"",
         "image_size = \"160x90x2\"", "image_size = \"20000x10\"", "image_view = \"below\""}) {
