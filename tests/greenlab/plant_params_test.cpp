@@ -49,7 +49,7 @@ std::string with(const std::string& from, const std::string& to) {
 std::pair<std::string, int> error_of(const std::string& text) {
   try {
     parse_plant_params(text, "plant.toml");
-  } catch (const ParseError& e) {
+  } catch (const Error& e) {
     EXPECT_EQ(e.file(), "plant.toml");
     return {e.message(), e.line()};
   }
@@ -82,7 +82,9 @@ TEST(PlantParams, MissingKeyNamesKeyAndLine) {
 
 TEST(PlantParams, UnknownKeyNamesKeyAndLine) {
   const auto [msg, line] = error_of(with("phyllotaxy = 147.5", "phylotaxy = 147.5"));
-  EXPECT_NE(msg.find("unknown key 'age[0].phylotaxy'"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("unknown key 'age[0].phylotaxy' (did you mean 'phyllotaxy'?)"),
+            std::string::npos)
+      << msg;
   EXPECT_EQ(line, 20);
   const auto [msg2, line2] = error_of(with("{ count = 2 },", "{ count = 2, colour = 1 },"));
   EXPECT_NE(msg2.find("age[0].units[0].colour"), std::string::npos) << msg2;
