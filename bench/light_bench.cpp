@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "environment/light_model.hpp"
+#include "environment/sky_occlusion_kernel.hpp"
 
 namespace {
 
@@ -13,11 +14,11 @@ using fspm::environment::LightModel;
 using fspm::environment::LightSample;
 using fspm::environment::Scene;
 
-Scene crown_scene(int clusters, double significance) {
+Scene crown_scene(int clusters, double significance, int directions = 256) {
   std::mt19937_64 rng(1);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   Scene s;
-  s.sky.directions = 256;
+  s.sky.directions = directions;
   s.sky.significance = significance;
   for (int i = 0; i < clusters; ++i) {
     const double r = 0.3 + 0.7 * u(rng);
@@ -47,6 +48,7 @@ void light_at_crown_points(benchmark::State& state, const Scene& scene) {
     benchmark::DoNotOptimize(out.data());
   }
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(points.size()));
+  state.SetLabel("simd " + fspm::environment::sky_occlusion_target());  // FSPM_SIMD_TARGET
 }
 
 void BM_Light10kPoints1kClusters(benchmark::State& state) {
@@ -55,6 +57,12 @@ void BM_Light10kPoints1kClusters(benchmark::State& state) {
 }
 // Arg 1: default shadow-volume cutoff (significance 1e-3); arg 0: no cutoff (exact).
 BENCHMARK(BM_Light10kPoints1kClusters)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
+
+// The same with 64 directions (the growth model's sky): every cap of a point in one vector sweep.
+void BM_Light10kPoints1kClusters64Directions(benchmark::State& state) {
+  light_at_crown_points(state, crown_scene(1000, 1e-3, 64));
+}
+BENCHMARK(BM_Light10kPoints1kClusters64Directions)->Unit(benchmark::kMillisecond);
 
 // The same crown beside a 15 m wall (boxes in closed form, overlaps with clusters sampled finer).
 void BM_Light10kPointsBesideWall(benchmark::State& state) {

@@ -30,6 +30,9 @@ fspm_require(SQLite3 libsqlite3-dev)
 fspm_require(Threads libc6-dev)
 fspm_require(TBB libtbb-dev)
 fspm_require(Ceres libceres-dev)
+# Google Highway: the light kernels' SIMD code, one source for every x86-64 target, picked at run
+# time (environment/sky_occlusion_kernel.cpp).
+fspm_require(hwy libhwy-dev)
 if(FSPM_BUILD_TESTS)
   fspm_require(GTest libgtest-dev)
 endif()

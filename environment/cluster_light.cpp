@@ -1,19 +1,12 @@
 #include "environment/cluster_light.hpp"
 
 #include "environment/analytic_caps.hpp"
-#include "environment/cpu_features.hpp"
+#include "environment/sky_occlusion_kernel.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
-#ifdef __SSE2__
-#include <emmintrin.h>
-#endif
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#include <immintrin.h>
-#define FSPM_CLUSTER_AVX512 1
-#endif
 
 namespace fspm::environment {
 namespace {
@@ -23,70 +16,6 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // nearest obstacle (about 3 degrees of parallax), at least kMinObstacleMove_m.
 constexpr double kObstacleParallax = 0.05;
 constexpr double kMinObstacleMove_m = 0.05;
-
-// vis[i] *= g for every direction with d_i . axis >= c: one branch-free pass over all cells in
-// single precision (four lanes); the cap tests of LightModel in double precision agree except for
-// directions within ~1e-7 of a cap's rim.
-void apply_cap_all(float* __restrict vis, const float* __restrict x, const float* __restrict y,
-                   const float* __restrict z, int n, const Eigen::Vector3d& axis, double c,
-                   double g) {
-  const auto fx = static_cast<float>(axis.x()), fy = static_cast<float>(axis.y()),
-             fz = static_cast<float>(axis.z()), fc = static_cast<float>(c),
-             fg = static_cast<float>(g);
-  int i = 0;
-#ifdef __SSE2__
-  const __m128 ax = _mm_set1_ps(fx), ay = _mm_set1_ps(fy), az = _mm_set1_ps(fz);
-  const __m128 vc = _mm_set1_ps(fc), vg = _mm_set1_ps(fg), one = _mm_set1_ps(1.0f);
-  for (; i + 4 <= n; i += 4) {
-    const __m128 d = _mm_add_ps(
-        _mm_add_ps(_mm_mul_ps(_mm_loadu_ps(x + i), ax), _mm_mul_ps(_mm_loadu_ps(y + i), ay)),
-        _mm_mul_ps(_mm_loadu_ps(z + i), az));
-    const __m128 m = _mm_cmpge_ps(d, vc);
-    const __m128 f = _mm_or_ps(_mm_and_ps(m, vg), _mm_andnot_ps(m, one));
-    _mm_storeu_ps(vis + i, _mm_mul_ps(_mm_loadu_ps(vis + i), f));
-  }
-#endif
-  for (; i < n; ++i) {
-    if (x[i] * fx + y[i] * fy + z[i] * fz >= fc) vis[i] *= fg;
-  }
-}
-
-#ifdef FSPM_CLUSTER_AVX512
-// All caps over up to 64 directions kept in four AVX-512 registers (single precision; the same
-// per-direction arithmetic and cap order as apply_cap_all, so the results are identical).
-__attribute__((target("avx512f"))) void apply_caps_avx512(float* vis, const float* x,
-                                                          const float* y, const float* z, int n,
-                                                          const float* caps, std::size_t count) {
-  constexpr int kV = 4;
-  __mmask16 lane[kV];
-  __m512 vx[kV], vy[kV], vz[kV], vv[kV];
-  for (int v = 0; v < kV; ++v) {
-    const int left = n - 16 * v;
-    lane[v] = left >= 16  ? __mmask16(0xFFFF)
-              : left <= 0 ? __mmask16(0)
-                          : __mmask16((1u << left) - 1u);
-    vx[v] = _mm512_maskz_loadu_ps(lane[v], x + 16 * v);
-    vy[v] = _mm512_maskz_loadu_ps(lane[v], y + 16 * v);
-    vz[v] = _mm512_maskz_loadu_ps(lane[v], z + 16 * v);
-    vv[v] = _mm512_maskz_loadu_ps(lane[v], vis + 16 * v);
-  }
-  for (std::size_t c = 0; c < count; ++c) {
-    const float* cap = caps + 5 * c;  // axis x, y, z, cos, gamma
-    const __m512 ax = _mm512_set1_ps(cap[0]), ay = _mm512_set1_ps(cap[1]);
-    const __m512 az = _mm512_set1_ps(cap[2]), vc = _mm512_set1_ps(cap[3]);
-    const __m512 vg = _mm512_set1_ps(cap[4]);
-    for (int v = 0; v < kV; ++v) {
-      const __m512 d =
-          _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(vx[v], ax), _mm512_mul_ps(vy[v], ay)),
-                        _mm512_mul_ps(vz[v], az));
-      const __mmask16 m = _mm512_cmp_ps_mask(d, vc, _CMP_GE_OQ) & lane[v];
-      vv[v] = _mm512_mask_mul_ps(vv[v], m, vv[v], vg);
-    }
-  }
-  for (int v = 0; v < kV; ++v) _mm512_mask_storeu_ps(vis + 16 * v, lane[v], vv[v]);
-}
-
-#endif
 
 double box_distance(const Box& b, const Eigen::Vector3d& p) {
   const Eigen::Vector3d local = b.rotation.transpose() * (p - b.center);
@@ -421,20 +350,28 @@ void ClusterLightField::evaluate(std::uint32_t c, bool rebuild) {
   } else {
     for (int i = 0; i < n; ++i) vis_[i] = static_cast<float>(all) * obstacle[i];
   }
-#ifdef FSPM_CLUSTER_AVX512
-  if (n <= 64 && !caps_.empty() && has_avx512()) {
-    packed_caps_.clear();
-    for (const Cap& cap : caps_) {
-      packed_caps_.insert(packed_caps_.end(),
-                          {static_cast<float>(cap.axis.x()), static_cast<float>(cap.axis.y()),
-                           static_cast<float>(cap.axis.z()), static_cast<float>(cap.cos_a),
-                           static_cast<float>(cap.gamma)});
-    }
-    apply_caps_avx512(vis_.data(), xs_.data(), ys_.data(), zs_.data(), n, packed_caps_.data(),
-                      caps_.size());
-    caps_.clear();
+  // Single precision: the cap tests of LightModel in double precision agree except for directions
+  // within ~1e-7 of a cap's rim.
+  const DirectionColumns<float> columns{xs_.data(), ys_.data(), zs_.data()};
+  if (n <= 64) {
+    // Few directions: all caps in one sweep while the directions stay in registers.
+    occlude_by_caps(std::span<float>(vis_), columns,
+                    occluding_caps(std::span<const Cap>(caps_), packed_caps_));
+  } else {
+    occlude_cap_rings(columns);
   }
-#endif
+  double sum = 0.0;
+  Eigen::Vector3d m = Eigen::Vector3d::Zero();
+  for (int i = 0; i < n; ++i) {
+    const double w = vis_[i] * weight_[i];
+    sum += w;
+    m += w * dirs_.direction(i);
+  }
+  light_[c] = weight_sum_ > 0 ? std::clamp(sum / weight_sum_, 0.0, 1.0) : 0.0;
+  direction_[c] = m.norm() > 1e-300 ? Eigen::Vector3d(m.normalized()) : open_direction_;
+}
+
+void ClusterLightField::occlude_cap_rings(DirectionColumns<float> columns) {
   const int rings = dirs_.ring_count();
   for (const Cap& cap : caps_) {
     // Only the rings whose (common) z lies within the cap's z range can hold covered cells;
@@ -450,18 +387,10 @@ void ClusterLightField::evaluate(std::uint32_t c, bool rebuild) {
     if (r1 == r0) continue;
     const int first = dirs_.ring_first(r0);
     const int last = dirs_.ring_first(r1 - 1) + dirs_.ring_size(r1 - 1);
-    apply_cap_all(vis_.data() + first, xs_.data() + first, ys_.data() + first, zs_.data() + first,
-                  last - first, cap.axis, cap.cos_a, cap.gamma);
+    const OccludingCap<float> one = occluding_cap<float>(cap);
+    occlude_by_caps(std::span<float>(vis_).subspan(first, last - first),
+                    {columns.x + first, columns.y + first, columns.z + first}, {&one, 1});
   }
-  double sum = 0.0;
-  Eigen::Vector3d m = Eigen::Vector3d::Zero();
-  for (int i = 0; i < n; ++i) {
-    const double w = vis_[i] * weight_[i];
-    sum += w;
-    m += w * dirs_.direction(i);
-  }
-  light_[c] = weight_sum_ > 0 ? std::clamp(sum / weight_sum_, 0.0, 1.0) : 0.0;
-  direction_[c] = m.norm() > 1e-300 ? Eigen::Vector3d(m.normalized()) : open_direction_;
 }
 
 }  // namespace fspm::environment

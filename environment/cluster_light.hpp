@@ -18,6 +18,7 @@
 #include "environment/hemisphere.hpp"
 #include "environment/light_model.hpp"
 #include "environment/scene.hpp"
+#include "environment/sky_occlusion_kernel.hpp"
 
 namespace fspm::environment {
 
@@ -145,12 +146,14 @@ class ClusterLightField {
 
   void gather_from_grid(std::uint32_t c, double& all);
   void add_occluder(std::uint32_t c, std::uint32_t j, const Eigen::Vector3d& d, double& all);
+  // Applies caps_ to vis_, each cap only over the rings of directions it can reach.
+  void occlude_cap_rings(DirectionColumns<float> columns);
 
   // Scratch (no allocation per evaluation once warm).
   std::vector<Cap> caps_;
   std::vector<float> vis_;
   std::vector<float> scratch_vis_;
-  std::vector<float> packed_caps_;
+  std::vector<OccludingCap<float>> packed_caps_;
   std::vector<std::uint32_t> scratch_fill_;
 };
 

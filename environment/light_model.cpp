@@ -1,18 +1,11 @@
 #include "environment/light_model.hpp"
 
 #include "environment/analytic_caps.hpp"
-#include "environment/cpu_features.hpp"
+#include "environment/sky_occlusion_kernel.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#ifdef __SSE2__
-#include <emmintrin.h>
-#endif
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#include <immintrin.h>
-#define FSPM_LIGHT_AVX512 1
-#endif
 
 namespace fspm::environment {
 namespace {
@@ -30,71 +23,6 @@ double shadow_reach2(double r, double g, double significance) {
   const double sin2_min = 1.0 - cos_min * cos_min;
   return r * r / sin2_min;
 }
-
-// vis[i] *= g for every direction with d_i . axis >= c: one branch-free pass over all cells.
-// Same arithmetic (x*ax + y*ay + z*az, no fused multiply-add) as Eigen's dot in the ray tests.
-void apply_cap_all(double* __restrict vis, const double* __restrict x, const double* __restrict y,
-                   const double* __restrict z, int n, const Eigen::Vector3d& axis, double c,
-                   double g) {
-  int i = 0;
-#ifdef __SSE2__
-  const __m128d ax = _mm_set1_pd(axis.x()), ay = _mm_set1_pd(axis.y()), az = _mm_set1_pd(axis.z());
-  const __m128d vc = _mm_set1_pd(c), vg = _mm_set1_pd(g), one = _mm_set1_pd(1.0);
-  for (; i + 2 <= n; i += 2) {
-    const __m128d d = _mm_add_pd(
-        _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(x + i), ax), _mm_mul_pd(_mm_loadu_pd(y + i), ay)),
-        _mm_mul_pd(_mm_loadu_pd(z + i), az));
-    const __m128d m = _mm_cmpge_pd(d, vc);
-    const __m128d f = _mm_or_pd(_mm_and_pd(m, vg), _mm_andnot_pd(m, one));
-    _mm_storeu_pd(vis + i, _mm_mul_pd(_mm_loadu_pd(vis + i), f));
-  }
-#endif
-  for (; i < n; ++i) {
-    if (x[i] * axis.x() + y[i] * axis.y() + z[i] * axis.z() >= c) vis[i] *= g;
-  }
-}
-
-#ifdef FSPM_LIGHT_AVX512
-// All caps over all directions, 64 directions at a time kept in AVX-512 registers while every cap
-// is applied (the growth model's 64-direction sky is one block). Per direction the caps multiply
-// in the same order and with the same arithmetic as apply_cap_all (x*ax + y*ay + z*az, compare
-// >=, multiply by g; no fused multiply-add: the target does not enable FMA), so the result is
-// bit-identical to calling apply_cap_all once per cap.
-__attribute__((target("avx512f"))) void apply_caps_avx512(double* vis, const double* x,
-                                                          const double* y, const double* z, int n,
-                                                          const double* caps, std::size_t count,
-                                                          std::size_t stride) {
-  constexpr int kV = 8;  // vectors of 8 doubles per block
-  for (int base = 0; base < n; base += 8 * kV) {
-    __mmask8 lane[kV];
-    __m512d vx[kV], vy[kV], vz[kV], vv[kV];
-    for (int v = 0; v < kV; ++v) {
-      const int left = n - base - 8 * v;
-      lane[v] = left >= 8 ? __mmask8(0xFF) : left <= 0 ? __mmask8(0) : __mmask8((1u << left) - 1u);
-      const int o = base + 8 * v;
-      vx[v] = _mm512_maskz_loadu_pd(lane[v], x + o);
-      vy[v] = _mm512_maskz_loadu_pd(lane[v], y + o);
-      vz[v] = _mm512_maskz_loadu_pd(lane[v], z + o);
-      vv[v] = _mm512_maskz_loadu_pd(lane[v], vis + o);
-    }
-    for (std::size_t c = 0; c < count; ++c) {
-      const double* cap = caps + c * stride;  // axis x, y, z, cos, gamma
-      const __m512d ax = _mm512_set1_pd(cap[0]), ay = _mm512_set1_pd(cap[1]);
-      const __m512d az = _mm512_set1_pd(cap[2]), vc = _mm512_set1_pd(cap[3]);
-      const __m512d vg = _mm512_set1_pd(cap[4]);
-      for (int v = 0; v < kV; ++v) {
-        const __m512d d =
-            _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(vx[v], ax), _mm512_mul_pd(vy[v], ay)),
-                          _mm512_mul_pd(vz[v], az));
-        const __mmask8 m = _mm512_cmp_pd_mask(d, vc, _CMP_GE_OQ) & lane[v];
-        vv[v] = _mm512_mask_mul_pd(vv[v], m, vv[v], vg);
-      }
-    }
-    for (int v = 0; v < kV; ++v) _mm512_mask_storeu_pd(vis + base + 8 * v, lane[v], vv[v]);
-  }
-}
-
-#endif
 
 }  // namespace
 
@@ -310,33 +238,22 @@ LightSample LightModel::sampled(const Eigen::Vector3d& p, std::span<const Cap> c
   thread_local std::vector<double> vis;
   vis.assign(dirs_.size(), all_factor);
   const int n = dirs_.size();
-#ifdef FSPM_LIGHT_AVX512
-  if (n <= 128 && !caps.empty() && has_avx512()) {
-    // Every cap takes the full pass below when n <= 128: the same products in one sweep.
-    thread_local std::vector<double> packed;
-    packed.resize(caps.size() * 5);
-    for (std::size_t k = 0; k < caps.size(); ++k) {
-      const Cap& c = caps[k];
-      double* o = packed.data() + 5 * k;
-      o[0] = c.axis.x();
-      o[1] = c.axis.y();
-      o[2] = c.axis.z();
-      o[3] = c.cos_a;
-      o[4] = c.gamma;
-    }
-    apply_caps_avx512(vis.data(), dirs_.xs().data(), dirs_.ys().data(), dirs_.zs().data(), n,
-                      packed.data(), caps.size(), 5);
+  const DirectionColumns<double> columns{dirs_.xs().data(), dirs_.ys().data(), dirs_.zs().data()};
+  if (n <= 128) {
+    // Few directions: every cap takes one branch-free pass over all of them, all caps in one
+    // sweep while the directions stay in registers.
+    thread_local std::vector<OccludingCap<double>> packed;
+    occlude_by_caps(vis, columns, occluding_caps(caps, packed));
     return finish(p, vis, boxes);
   }
-#endif
   for (const Cap& c : caps) {
-    const double g = c.gamma;
-    // Few directions or a wide cap: one branch-free vectorized pass over all cells is cheaper
-    // than rasterizing ring by ring. Both use the same exact test d . axis >= cos(alpha).
-    if (n <= 128 || c.cos_a < 0.97) {
-      apply_cap_all(vis.data(), dirs_.xs().data(), dirs_.ys().data(), dirs_.zs().data(), n, c.axis,
-                    c.cos_a, g);
+    // A wide cap: one branch-free vectorized pass over all cells is cheaper than rasterizing ring
+    // by ring. Both use the same exact test d . axis >= cos(alpha).
+    if (c.cos_a < 0.97) {
+      const OccludingCap<double> one = occluding_cap<double>(c);
+      occlude_by_caps(vis, columns, {&one, 1});
     } else {
+      const double g = c.gamma;
       dirs_.for_each_in_cap(c.axis, c.cos_a, [&](int i) { vis[i] *= g; });
     }
   }

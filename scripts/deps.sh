@@ -10,6 +10,8 @@ packages=(
   libeigen3-dev libceres-dev libboost-dev libboost-graph-dev libboost-math-dev libglm-dev
   libsqlite3-dev libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libspdlog-dev libfmt-dev
   libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev
+  # SIMD light kernels with run-time target dispatch (Google Highway)
+  libhwy-dev
   # scans: nanoflann for the neighbour graph of point sets, CGAL for the alpha-shape cluster hulls
   libnanoflann-dev libcgal-dev
   # graphics (optional parts: VTK renders, the viewer, image output)
