@@ -66,7 +66,7 @@ std::int64_t target_bit(std::string_view name, std::string_view source) {
     choices += (choices.empty() ? "" : ", ") + n;
   }
   throw ValueError(std::string(source) + ": unknown or unsupported SIMD target '" +
-                   std::string(name) + "', expected best, scalar or one of: " + choices);
+                   std::string(name) + "', expected best or one of: " + choices);
 }
 
 bool is_best(std::string_view name) { return name.empty() || lower(name) == "best"; }

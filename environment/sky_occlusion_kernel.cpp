@@ -39,56 +39,50 @@ HWY_INLINE V occlude(const CapVectors<D>& c, V x, V y, V z, V vis) {
   return hn::IfThenElse(dot >= c.cos_a, hn::Mul(vis, c.gamma), vis);
 }
 
-// Four vectors of directions stay in registers while every cap is applied: the visibilities are
-// loaded and stored once per block, not once per cap.
-template <class D, typename T>
-HWY_INLINE void occlude_four(D d, T* HWY_RESTRICT vis, const T* HWY_RESTRICT x,
-                             const T* HWY_RESTRICT y, const T* HWY_RESTRICT z,
-                             const OccludingCap<T>* caps, std::size_t count) {
+// kVectors vectors of directions stay in registers while every cap is applied: the visibilities
+// are loaded and stored once per block, not once per cap, and each cap is broadcast once per block.
+// (Arrays of vectors need a target of fixed vector size, as every x86 target is.)
+template <std::size_t kVectors, class D, typename T>
+HWY_INLINE void occlude_block(D d, T* HWY_RESTRICT vis, const T* HWY_RESTRICT x,
+                              const T* HWY_RESTRICT y, const T* HWY_RESTRICT z,
+                              const OccludingCap<T>* caps, std::size_t count) {
+  static_assert(!HWY_HAVE_SCALABLE, "arrays of vectors need a fixed vector size");
   const std::size_t n = hn::Lanes(d);
-  const auto x0 = hn::LoadU(d, x), x1 = hn::LoadU(d, x + n), x2 = hn::LoadU(d, x + 2 * n),
-             x3 = hn::LoadU(d, x + 3 * n);
-  const auto y0 = hn::LoadU(d, y), y1 = hn::LoadU(d, y + n), y2 = hn::LoadU(d, y + 2 * n),
-             y3 = hn::LoadU(d, y + 3 * n);
-  const auto z0 = hn::LoadU(d, z), z1 = hn::LoadU(d, z + n), z2 = hn::LoadU(d, z + 2 * n),
-             z3 = hn::LoadU(d, z + 3 * n);
-  auto v0 = hn::LoadU(d, vis), v1 = hn::LoadU(d, vis + n), v2 = hn::LoadU(d, vis + 2 * n),
-       v3 = hn::LoadU(d, vis + 3 * n);
+  hn::Vec<D> vx[kVectors], vy[kVectors], vz[kVectors], vv[kVectors];
+  for (std::size_t v = 0; v < kVectors; ++v) {
+    vx[v] = hn::LoadU(d, x + v * n);
+    vy[v] = hn::LoadU(d, y + v * n);
+    vz[v] = hn::LoadU(d, z + v * n);
+    vv[v] = hn::LoadU(d, vis + v * n);
+  }
   for (std::size_t k = 0; k < count; ++k) {
     const CapVectors<D> c = broadcast(d, caps[k]);
-    v0 = occlude(c, x0, y0, z0, v0);
-    v1 = occlude(c, x1, y1, z1, v1);
-    v2 = occlude(c, x2, y2, z2, v2);
-    v3 = occlude(c, x3, y3, z3, v3);
+    for (std::size_t v = 0; v < kVectors; ++v) vv[v] = occlude(c, vx[v], vy[v], vz[v], vv[v]);
   }
-  hn::StoreU(v0, d, vis);
-  hn::StoreU(v1, d, vis + n);
-  hn::StoreU(v2, d, vis + 2 * n);
-  hn::StoreU(v3, d, vis + 3 * n);
+  for (std::size_t v = 0; v < kVectors; ++v) hn::StoreU(vv[v], d, vis + v * n);
 }
 
-// One vector of directions through every cap.
-template <class D, typename T>
-HWY_INLINE void occlude_one(D d, T* HWY_RESTRICT vis, const T* HWY_RESTRICT x,
-                            const T* HWY_RESTRICT y, const T* HWY_RESTRICT z,
-                            const OccludingCap<T>* caps, std::size_t count) {
-  const auto vx = hn::LoadU(d, x), vy = hn::LoadU(d, y), vz = hn::LoadU(d, z);
-  auto v = hn::LoadU(d, vis);
-  for (std::size_t k = 0; k < count; ++k) v = occlude(broadcast(d, caps[k]), vx, vy, vz, v);
-  hn::StoreU(v, d, vis);
-}
-
-// Blocks of four vectors, then single vectors, then the last partial vector through a padded copy
-// (a full load past the end would read memory that is not ours).
+// Blocks as large as the registers hold (AVX-512 has 32 vector registers: eight vectors of each of
+// x, y, z and visibility; the other targets 16: four), then blocks of four, then single vectors,
+// then the last partial vector through a padded copy (a full load past the end would read memory
+// that is not ours). The growth model's 64-direction sky is one block on AVX-512.
 template <typename T>
 void occlude_by_caps_t(T* HWY_RESTRICT vis, const T* HWY_RESTRICT x, const T* HWY_RESTRICT y,
                        const T* HWY_RESTRICT z, std::size_t size, const OccludingCap<T>* caps,
                        std::size_t count) {
   const hn::ScalableTag<T> d;
   const std::size_t n = hn::Lanes(d);
+  constexpr bool kWide = HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL;
   std::size_t i = 0;
-  for (; i + 4 * n <= size; i += 4 * n) occlude_four(d, vis + i, x + i, y + i, z + i, caps, count);
-  for (; i + n <= size; i += n) occlude_one(d, vis + i, x + i, y + i, z + i, caps, count);
+  if constexpr (kWide) {
+    for (; i + 8 * n <= size; i += 8 * n) {
+      occlude_block<8>(d, vis + i, x + i, y + i, z + i, caps, count);
+    }
+  }
+  for (; i + 4 * n <= size; i += 4 * n) {
+    occlude_block<4>(d, vis + i, x + i, y + i, z + i, caps, count);
+  }
+  for (; i + n <= size; i += n) occlude_block<1>(d, vis + i, x + i, y + i, z + i, caps, count);
   if (i == size) return;
   HWY_ALIGN T pv[hn::MaxLanes(d)] = {}, px[hn::MaxLanes(d)] = {}, py[hn::MaxLanes(d)] = {},
               pz[hn::MaxLanes(d)] = {};
@@ -97,7 +91,7 @@ void occlude_by_caps_t(T* HWY_RESTRICT vis, const T* HWY_RESTRICT x, const T* HW
   std::memcpy(px, x + i, left * sizeof(T));
   std::memcpy(py, y + i, left * sizeof(T));
   std::memcpy(pz, z + i, left * sizeof(T));
-  occlude_one(d, pv, px, py, pz, caps, count);
+  occlude_block<1>(d, pv, px, py, pz, caps, count);
   std::memcpy(vis + i, pv, left * sizeof(T));
 }
 

@@ -32,8 +32,8 @@ OccludingCap<T> occluding_cap(const Cap& c) {
 template <typename T, class Cap>
 std::span<const OccludingCap<T>> occluding_caps(std::span<const Cap> caps,
                                                 std::vector<OccludingCap<T>>& out) {
-  out.clear();
-  for (const Cap& c : caps) out.push_back(occluding_cap<T>(c));
+  out.resize(caps.size());
+  for (std::size_t k = 0; k < caps.size(); ++k) out[k] = occluding_cap<T>(caps[k]);
   return out;
 }
 
