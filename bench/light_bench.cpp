@@ -2,6 +2,8 @@
 // brute force would be about 2.6 billion ray-sphere tests).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -71,6 +73,39 @@ void BM_Light10kPointsBesideWall(benchmark::State& state) {
   light_at_crown_points(state, s);
 }
 BENCHMARK(BM_Light10kPointsBesideWall)->Unit(benchmark::kMillisecond);
+
+// The sky-occlusion kernel alone: range(0) directions against range(1) caps of 18-26 degrees
+// (narrow, as most cluster caps are), all in one call, in double precision.
+void BM_SkyOcclusionKernel(benchmark::State& state) {
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  auto unit = [&] {
+    const Eigen::Vector3d v(normal(rng), normal(rng), std::abs(normal(rng)) + 1e-9);
+    return Eigen::Vector3d(v.normalized());
+  };
+  const auto n = static_cast<std::size_t>(state.range(0));
+  std::vector<double> x(n), y(n), z(n), vis(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d d = unit();
+    x[i] = d.x();
+    y[i] = d.y();
+    z[i] = d.z();
+  }
+  std::vector<fspm::environment::OccludingCap<double>> caps;
+  for (int k = 0; k < state.range(1); ++k) {
+    const Eigen::Vector3d a = unit();
+    caps.push_back({a.x(), a.y(), a.z(), 0.9 + 0.05 * u(rng), u(rng)});
+  }
+  for (auto _ : state) {
+    std::fill(vis.begin(), vis.end(), 1.0);
+    fspm::environment::occlude_by_caps(vis, {x.data(), y.data(), z.data()}, caps);
+    benchmark::DoNotOptimize(vis.data());
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0) * state.range(1));
+  state.SetLabel("simd " + fspm::environment::sky_occlusion_target());
+}
+BENCHMARK(BM_SkyOcclusionKernel)->Args({64, 40})->Args({100, 40})->Args({256, 1});
 
 void BM_LightBuildIndex(benchmark::State& state) {
   const Scene s = crown_scene(1000, 1e-3);
