@@ -2,6 +2,7 @@
 
 #include "environment/analytic_caps.hpp"
 #include "environment/sky_occlusion_kernel.hpp"
+#include "fspm/dcheck.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -345,6 +346,8 @@ void ClusterLightField::evaluate(std::uint32_t c, bool rebuild) {
     return;
   }
   const int n = dirs_.size();
+  FSPM_DCHECK(obstacle.empty() || obstacle.size() == vis_.size(),
+              "obstacle visibility holds one value per sky direction");
   if (obstacle.empty()) {
     std::fill(vis_.begin(), vis_.end(), static_cast<float>(all));
   } else {
@@ -387,6 +390,8 @@ void ClusterLightField::occlude_cap_rings(DirectionColumns<float> columns) {
     if (r1 == r0) continue;
     const int first = dirs_.ring_first(r0);
     const int last = dirs_.ring_first(r1 - 1) + dirs_.ring_size(r1 - 1);
+    FSPM_DCHECK(0 <= first && first < last && last <= dirs_.size(),
+                "a cap's rings are a range of the sky's directions");
     const OccludingCap<float> one = occluding_cap<float>(cap);
     occlude_by_caps(std::span<float>(vis_).subspan(first, last - first),
                     {columns.x + first, columns.y + first, columns.z + first}, {&one, 1});

@@ -1,7 +1,9 @@
 #include "environment/sky_occlusion_kernel.hpp"
 
 #include "environment/simd_target.hpp"
+#include "fspm/dcheck.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdint>
 #include <cstring>
@@ -114,6 +116,14 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace fspm::environment {
 
+// Caps as the light models make them: a transmission in [0, 1] and the cosine of a half-angle.
+template <typename T>
+bool caps_are_caps(std::span<const OccludingCap<T>> caps) {
+  return std::all_of(caps.begin(), caps.end(), [](const OccludingCap<T>& c) {
+    return c.gamma >= 0 && c.gamma <= 1 && c.cos_a >= -1 && c.cos_a <= 1;
+  });
+}
+
 HWY_EXPORT(OccludeByCapsF64);
 HWY_EXPORT(OccludeByCapsF32);
 HWY_EXPORT(OccludeByCapsTarget);
@@ -121,6 +131,9 @@ HWY_EXPORT(OccludeByCapsTarget);
 void occlude_by_caps(std::span<double> vis, DirectionColumns<double> dirs,
                      std::span<const OccludingCap<double>> caps) {
   if (vis.empty() || caps.empty()) return;
+  FSPM_DCHECK(dirs.x != nullptr && dirs.y != nullptr && dirs.z != nullptr,
+              "a direction column for every visibility");
+  FSPM_DCHECK(caps_are_caps(caps), "cap transmissions in [0, 1], cosines in [-1, 1]");
   settle_simd_target();
   HWY_DYNAMIC_DISPATCH(OccludeByCapsF64)
   (vis.data(), dirs.x, dirs.y, dirs.z, vis.size(), caps.data(), caps.size());
@@ -129,6 +142,9 @@ void occlude_by_caps(std::span<double> vis, DirectionColumns<double> dirs,
 void occlude_by_caps(std::span<float> vis, DirectionColumns<float> dirs,
                      std::span<const OccludingCap<float>> caps) {
   if (vis.empty() || caps.empty()) return;
+  FSPM_DCHECK(dirs.x != nullptr && dirs.y != nullptr && dirs.z != nullptr,
+              "a direction column for every visibility");
+  FSPM_DCHECK(caps_are_caps(caps), "cap transmissions in [0, 1], cosines in [-1, 1]");
   settle_simd_target();
   HWY_DYNAMIC_DISPATCH(OccludeByCapsF32)
   (vis.data(), dirs.x, dirs.y, dirs.z, vis.size(), caps.data(), caps.size());
