@@ -57,6 +57,7 @@ void StagesParams::validate() const {
   if (!(same_level_tolerance >= 0.0 && same_level_tolerance <= 1.0)) {
     throw ValueError("stages: same_level_tolerance must be in [0, 1]");
   }
+  added.validate();
 }
 
 double seasonal_time(double t, int years, double c, double s) {
@@ -74,10 +75,22 @@ DevelopmentalModel::DevelopmentalModel(const TreeGraph& tree, const StagesParams
   if (tree_.empty() || !is_edge(tree_, 0)) {
     throw ValueError("developmental stages: the tree needs an internode at its root");
   }
+  if (params_.added.enabled) add_missing_structures();
   assign_levels_and_chains();
   compute_growth_times();
   compute_bending();
   compute_radius_coefficients();
+}
+
+// Pirk 5.3.5: the given tree's main chain decides where the copies go; the model then analyses
+// the given tree with the copies as one branching graph.
+void DevelopmentalModel::add_missing_structures() {
+  StagesParams plain = params_;
+  plain.added.enabled = false;
+  const DevelopmentalModel given(tree_, plain);
+  added_ = add_structures(tree_, given.chain(), params_.added);
+  tree_ = std::move(added_.tree);
+  added_.tree = TreeGraph{};
 }
 
 std::size_t DevelopmentalModel::lateral_chain_count() const {
@@ -276,11 +289,42 @@ TreeGraph DevelopmentalModel::stage(double t) const {
 
 void DevelopmentalModel::stage(double t, TreeGraph& out) const {
   t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0);
+  TreeGraph& grown = added_.copies > 0 ? grown_tree_ : out;
+  grown.clear_keep_capacity();
+  grown.reserve(tree_.size());
+  place_nodes(t, grown);
+  if (t < 1.0) add_tip_leaves(grown);
+  // Pirk 5.3.6: the branches shed later still count in the radii (eq. 5.8), so removing them
+  // leaves the radii below unchanged.
+  set_radii(grown);
+  if (added_.copies > 0) remove_shed(t, grown, out);
+}
+
+// Pirk eq. 5.10: an added branch is present while its base is at or above the crown base
+// h (1 - CR(h)) of the stage's height h. With gamma = 1 the last stage has the given crown base,
+// above every added branch; it is the given tree by definition, whatever the rounding.
+void DevelopmentalModel::remove_shed(double t, const TreeGraph& grown, TreeGraph& out) const {
+  const double base_m = t >= 1.0 && params_.added.gamma == 1.0
+                            ? std::numeric_limits<double>::infinity()
+                            : added_.curve.crown_base_m(tree_height(grown));
+  kept_id_.assign(grown.size(), 0);  // 0: shed, 1: kept; then the new id
+  for (NodeId k = 0; k < grown.size(); ++k) kept_id_[k] = 1;
+  for (NodeId i = added_.first_added; i < tree_.size(); ++i) {
+    const bool copy_root = tree_.parent(i) < added_.first_added;
+    if (copy_root && id_of_[i] != kNoNode && added_.attach_height_m[i] < base_m) {
+      kept_id_[id_of_[i]] = 0;
+    }
+  }
   out.clear_keep_capacity();
-  out.reserve(tree_.size());
-  place_nodes(t, out);
-  if (t < 1.0) add_tip_leaves(out);
-  set_radii(out);
+  out.reserve(grown.size());
+  for (NodeId k = 0; k < grown.size(); ++k) {
+    const NodeId p = grown.parent(k);
+    if (!kept_id_[k] || (p != kNoNode && kept_id_[p] == kNoNode)) {
+      kept_id_[k] = kNoNode;
+      continue;
+    }
+    kept_id_[k] = out.add_node_unchecked(p == kNoNode ? kNoNode : kept_id_[p], grown.data(k));
+  }
 }
 
 // Pirk 5.3.7: a tip of this stage that is not a tip of the given tree carries, for now, the

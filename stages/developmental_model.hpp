@@ -20,8 +20,10 @@
 //     back the given radii.
 //   - Leaves and other organs appear when the edge that bears them is complete; until then each
 //     tip of a stage carries the organs of its chain's tip in the given tree (5.3.7).
-// Not modelled: mesh input (5.2.1), the pipe-model distributions and the structures added below
-// the crown and in overlap regions (5.3.4-5.3.6), growth-based editing (5.4.1).
+//   - Added structures (5.3.5-5.3.6, optional): copies of the crown's laterals on the bare trunk
+//     below the crown, removed as the crown ratio of eq. 5.10 falls (stages/added_structures.hpp).
+// Not modelled: mesh input (5.2.1), the pipe-model distributions and the overlap regions
+// (5.3.4-5.3.5), growth-based editing (5.4.1).
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cstdint>
@@ -29,6 +31,7 @@
 #include <vector>
 
 #include "fspm/tree_graph.hpp"
+#include "stages/added_structures.hpp"
 
 namespace fspm::stages {
 
@@ -52,6 +55,7 @@ struct StagesParams {
   int rigid_tip_count = 5;
   double pipe_exponent = 2.5;          // u of eq. 5.7-5.8 (Murray's 2.49)
   double same_level_tolerance = 0.05;  // 5.2.2: children within 5 % keep the parent's level
+  AddedStructuresParams added;         // 5.3.5-5.3.6: branches the young tree had (off)
   void validate() const;               // throws ValueError for values out of range
 };
 
@@ -73,7 +77,14 @@ class DevelopmentalModel {
   void stage(double t, TreeGraph& out) const;
   TreeGraph stage(double t) const;
 
+  // With added structures on, the analysis (chains, levels, the per-node vectors below) is of
+  // the given tree with the copies appended (node ids from the given tree's size on).
   std::size_t chain_count() const { return chain_rate_.size(); }
+  // Branches added below the crown (0 unless StagesParams::added is enabled), the given tree's
+  // crown and the crown ratio curve of eq. 5.10 fitted to it.
+  std::size_t added_branch_count() const { return added_.copies; }
+  const CrownShape& crown() const { return added_.crown; }
+  const CrownRatioCurve& crown_ratio_curve() const { return added_.curve; }
   std::size_t lateral_chain_count() const;
   // Per node of the given tree: Gravelius level (1 on the main axis; organs take their edge's),
   // its chain, and the time it starts growing.
@@ -85,6 +96,8 @@ class DevelopmentalModel {
   const std::vector<double>& chain_start() const { return chain_start_; }
 
  private:
+  void add_missing_structures();
+  void remove_shed(double t, const TreeGraph& grown, TreeGraph& out) const;
   void assign_levels_and_chains();
   NodeId continuation(NodeId p, const std::vector<NodeId>& edges) const;
   void compute_growth_times();
@@ -94,8 +107,9 @@ class DevelopmentalModel {
   void set_radii(TreeGraph& out) const;
   void add_tip_leaves(TreeGraph& out) const;
 
-  const TreeGraph tree_;
+  TreeGraph tree_;  // the given tree, with the added structures appended when they are on
   StagesParams params_;
+  AddedStructures added_;  // its tree is moved into tree_
   std::vector<std::uint16_t> level_;
   std::vector<std::uint32_t> chain_;
   std::vector<double> offset_;            // length of the chain before the edge
@@ -120,6 +134,8 @@ class DevelopmentalModel {
   mutable std::vector<double> grown_, sum_;
   mutable std::vector<std::uint8_t> has_child_, tip_;
   mutable std::vector<std::uint32_t> complete_children_;
+  mutable TreeGraph grown_tree_;  // the stage with every added branch, before shedding
+  mutable std::vector<NodeId> kept_id_;
 };
 
 }  // namespace fspm::stages

@@ -1,0 +1,174 @@
+#include "stages/added_structures.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "fspm/error.hpp"
+
+namespace fspm::stages {
+namespace {
+
+bool is_edge(const TreeGraph& t, NodeId n) { return t.kind(n) == OrganKind::kInternode; }
+
+double logit(double p) { return std::log(p / (1.0 - p)); }
+
+// A lateral branch of the main chain: the main-chain edge it sits on (index into the chain),
+// its first edge, and the arc length of the main chain at its base.
+struct Lateral {
+  std::size_t on = 0;
+  NodeId base = kNoNode;
+  double arc_m = 0.0;
+};
+
+// The main chain's edges in order from the root, and the arc length at the end of each.
+void main_chain(const TreeGraph& tree, const std::vector<std::uint32_t>& chain,
+                std::vector<NodeId>& edges, std::vector<double>& arc_end_m) {
+  double arc = 0.0;
+  for (NodeId i = 0; i < tree.size(); ++i) {
+    if (!is_edge(tree, i) || chain[i] != 0) continue;
+    arc += tree.length(i);
+    edges.push_back(i);
+    arc_end_m.push_back(arc);
+  }
+}
+
+std::vector<Lateral> laterals(const TreeGraph& tree, const std::vector<std::uint32_t>& chain,
+                              const std::vector<NodeId>& edges, const std::vector<double>& arc) {
+  std::vector<Lateral> out;
+  for (std::size_t j = 0; j < edges.size(); ++j) {
+    for (const NodeId c : tree.children(edges[j])) {
+      if (is_edge(tree, c) && chain[c] != 0) out.push_back({j, c, arc[j]});
+    }
+  }
+  return out;
+}
+
+// Appends to `out` under `parent` a copy of the subtree at `source`, turned about the vertical
+// by `turn_rad` and scaled by `scale` about its base, its base moved to the end of `parent`.
+NodeId append_copy(TreeGraph& out, NodeId parent, NodeId source, double turn_rad, double scale) {
+  TreeGraph copy = out.copy_subtree(source);
+  const Eigen::Vector3d from = copy.start(0);
+  const Eigen::Vector3d to = out.end(parent);
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(turn_rad, Eigen::Vector3d::UnitZ()).matrix();
+  for (NodeId i = 0; i < copy.size(); ++i) {
+    const Eigen::Vector3d direction = turn * copy.direction(i);
+    const double length = copy.length(i) * scale;
+    copy.set_segment(i, to + scale * (turn * (copy.start(i) - from)),
+                     to + scale * (turn * (copy.end(i) - from)));
+    copy.set_direction(i, direction);
+    copy.set_length(i, length);
+    copy.set_radius(i, copy.radius(i) * scale);
+  }
+  return out.append_subtree(parent, copy);
+}
+
+}  // namespace
+
+void AddedStructuresParams::validate() const {
+  if (!(crown_ratio_at_zero_height > 0.0 && crown_ratio_at_zero_height < 1.0)) {
+    throw ValueError("stages: the crown ratio at zero height must be in (0, 1)");
+  }
+  if (!(gamma > 0.0 && gamma <= 100.0)) throw ValueError("stages: gamma must be in (0, 100]");
+  if (!(scale > 0.0 && scale <= 10.0)) throw ValueError("stages: copy scale must be in (0, 10]");
+}
+
+double tree_height(const TreeGraph& tree) {
+  if (tree.empty()) return 0.0;
+  double top = -std::numeric_limits<double>::infinity();
+  for (NodeId i = 0; i < tree.size(); ++i) {
+    if (is_edge(tree, i)) top = std::max({top, tree.start(i).z(), tree.end(i).z()});
+  }
+  return top - tree.start(0).z();
+}
+
+CrownShape crown_shape(const TreeGraph& tree, const std::vector<std::uint32_t>& chain) {
+  CrownShape shape;
+  shape.height_m = tree_height(tree);
+  shape.crown_base_m = shape.height_m;  // no lateral: no crown
+  std::vector<NodeId> edges;
+  std::vector<double> arc;
+  main_chain(tree, chain, edges, arc);
+  const std::vector<Lateral> side = laterals(tree, chain, edges, arc);
+  if (side.empty()) return shape;
+  shape.crown_base_node = edges[side.front().on];
+  shape.crown_base_m = tree.end(shape.crown_base_node).z() - tree.start(0).z();
+  return shape;
+}
+
+CrownRatioCurve::CrownRatioCurve(double cr_0, double height_p_m, double cr_p, double gamma)
+    : gamma_(gamma) {
+  // Pirk eq. 5.10 with gamma = 1 through (0, CR_0) and (h_p, CR_p); a crown ratio above CR_0
+  // (a crown down to the ground) keeps CR at CR_0.
+  c0_ = logit(cr_0);
+  const double target = std::clamp(cr_p, 1e-9, cr_0);
+  c1_ = height_p_m > 0.0 ? (logit(target) - c0_) / height_p_m : 0.0;
+}
+
+double CrownRatioCurve::crown_ratio(double height_m) const {
+  return std::pow(1.0 / (1.0 + std::exp(-(c0_ + c1_ * height_m))), gamma_);
+}
+
+double CrownRatioCurve::crown_base_m(double height_m) const {
+  return height_m * (1.0 - crown_ratio(height_m));
+}
+
+AddedStructures add_structures(const TreeGraph& tree, const std::vector<std::uint32_t>& chain,
+                               const AddedStructuresParams& params) {
+  params.validate();
+  AddedStructures out;
+  out.tree = tree;
+  out.first_added = static_cast<NodeId>(tree.size());
+  out.crown = crown_shape(tree, chain);
+  out.curve = CrownRatioCurve(params.crown_ratio_at_zero_height, out.crown.height_m,
+                              out.crown.crown_ratio(), params.gamma);
+  std::vector<NodeId> edges;
+  std::vector<double> arc;
+  main_chain(tree, chain, edges, arc);
+  const std::vector<Lateral> side = laterals(tree, chain, edges, arc);
+  if (side.empty() || side.front().on == 0 ||
+      out.crown.crown_ratio() >= params.crown_ratio_at_zero_height) {
+    out.attach_height_m.assign(tree.size(), std::numeric_limits<double>::quiet_NaN());
+    return out;
+  }
+  // Pirk 5.3.5: copy the largest continuous block of crown laterals with the fewest copies. The
+  // block is as long as the bare trunk, or the whole crown (plus one mean gap between laterals,
+  // to keep the spacing) when that is shorter.
+  const std::size_t bare = side.front().on;  // main-chain edges 0..bare-1 are bare
+  const double s_b = arc[bare], s_0 = arc.front();
+  const double span = side.back().arc_m - s_b;
+  const double gap = side.size() > 1 ? span / static_cast<double>(side.size() - 1) : s_b - s_0;
+  const double block = span + gap > 0.0 ? span + gap : s_b - s_0;
+  const double period = std::min(s_b - s_0, block);
+  if (!(period > 0.0)) {
+    out.attach_height_m.assign(tree.size(), std::numeric_limits<double>::quiet_NaN());
+    return out;
+  }
+  const double golden_rad = std::numbers::pi * (3.0 - std::sqrt(5.0));
+  std::vector<double> attach_height;
+  for (int k = 1; s_b - k * period + period > s_0; ++k) {
+    for (const Lateral& l : side) {
+      const double target = l.arc_m - k * period;
+      if (l.arc_m >= s_b + period || target < s_0 - 1e-12) continue;
+      // the bare main-chain edge whose end is nearest the target arc length
+      const auto it = std::lower_bound(arc.begin(), arc.begin() + bare, target);
+      std::size_t j = static_cast<std::size_t>(it - arc.begin());
+      if (j == bare || (j > 0 && target - arc[j - 1] < arc[j] - target)) j = j == 0 ? 0 : j - 1;
+      const NodeId at = edges[j];
+      const NodeId root = append_copy(out.tree, at, l.base, k * golden_rad, params.scale);
+      attach_height.resize(out.tree.size(), std::numeric_limits<double>::quiet_NaN());
+      std::fill(attach_height.begin() + root, attach_height.end(),
+                tree.end(at).z() - tree.start(0).z());
+      ++out.copies;
+    }
+  }
+  attach_height.resize(out.tree.size(), std::numeric_limits<double>::quiet_NaN());
+  std::fill(attach_height.begin(), attach_height.begin() + tree.size(),
+            std::numeric_limits<double>::quiet_NaN());
+  out.attach_height_m = std::move(attach_height);
+  return out;
+}
+
+}  // namespace fspm::stages
