@@ -25,6 +25,8 @@ struct StagesOptions {
   double at = -1.0;
   int steps = 0;
   int season_years = 0;
+  bool added = false;
+  double added_gamma = 1.0;
   bool json = false;
 };
 
@@ -59,7 +61,10 @@ void run_stages(const StagesOptions& o) {
   const std::vector<double> times = stage_times(o);
   const TreeGraph tree = read_tree_file(o.tree);
   auto t0 = std::chrono::steady_clock::now();
-  const stages::DevelopmentalModel model(tree);
+  stages::StagesParams params;
+  params.added.enabled = o.added;
+  params.added.gamma = o.added_gamma;
+  const stages::DevelopmentalModel model(tree, params);
   const double analysis_seconds = seconds_since(t0);
   if (o.steps > 0) std::filesystem::create_directories(o.output);
   TreeGraph stage;
@@ -72,11 +77,13 @@ void run_stages(const StagesOptions& o) {
   }
   std::size_t branches = 0;
   for (NodeId i = 0; i < tree.size(); ++i) branches += tree.kind(i) == OrganKind::kInternode;
-  spdlog::info("{}: {} internodes in {} chains; {} stage(s) -> {}", o.tree, branches,
-               model.chain_count(), times.size(), o.output);
+  spdlog::info("{}: {} internodes in {} chains; {} added branch(es); {} stage(s) -> {}", o.tree,
+               branches, model.chain_count(), model.added_branch_count(), times.size(), o.output);
   if (o.json) {
     print_json({{"branches", branches},
                 {"chains", model.chain_count()},
+                {"added_branches", model.added_branch_count()},
+                {"crown_ratio", model.crown().crown_ratio()},
                 {"stages", times.size()},
                 {"times", times},
                 {"last_stage_nodes", stage.size()},
@@ -103,6 +110,13 @@ void add_stages_commands(CLI::App& app) {
   s->add_option("--season-years", o->season_years,
                 "Seasonal growth over N years (Pirk eq. 5.11, c = 1.2)")
       ->check(number_in(1, 10000));
+  s->add_flag("--added", o->added,
+              "Add the branches a young tree had below the crown and shed them as the crown "
+              "ratio falls (Pirk 5.3.5-5.3.6, eq. 5.10)");
+  s->add_option("--added-gamma", o->added_gamma,
+                "gamma of eq. 5.10 for --added (1: the last stage is the given tree; < 1 keeps "
+                "some added branches, > 1 sheds them earlier)")
+      ->check(number_in(1e-6, 100.0));
   s->add_option("--format", o->format, "tree, treeb, nwk, mtg (default: from the extension)");
   s->add_flag("--json", o->json,
               "One JSON object on stdout: branches, chains, stages, analysis_seconds, "

@@ -77,6 +77,7 @@ DevelopmentalModel::DevelopmentalModel(const TreeGraph& tree, const StagesParams
   }
   if (params_.added.enabled) add_missing_structures();
   assign_levels_and_chains();
+  if (!params_.added.enabled) added_.crown = crown_shape(tree_, chain_);
   compute_growth_times();
   compute_bending();
   compute_radius_coefficients();

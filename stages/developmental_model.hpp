@@ -81,7 +81,7 @@ class DevelopmentalModel {
   // the given tree with the copies appended (node ids from the given tree's size on).
   std::size_t chain_count() const { return chain_rate_.size(); }
   // Branches added below the crown (0 unless StagesParams::added is enabled), the given tree's
-  // crown and the crown ratio curve of eq. 5.10 fitted to it.
+  // crown (always) and the crown ratio curve of eq. 5.10 fitted to it (with added structures).
   std::size_t added_branch_count() const { return added_.copies; }
   const CrownShape& crown() const { return added_.crown; }
   const CrownRatioCurve& crown_ratio_curve() const { return added_.curve; }

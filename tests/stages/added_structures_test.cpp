@@ -142,6 +142,7 @@ TEST(AddedStructures, SameTreeSameStages) {
 TEST(AddedStructures, OffByDefaultAndNothingToAddWithoutABareTrunk) {
   const TreeGraph t = bare_trunk();
   EXPECT_EQ(DevelopmentalModel(t).added_branch_count(), 0u);
+  EXPECT_NEAR(DevelopmentalModel(t).crown().crown_ratio(), 0.5, 1e-12);
   TreeGraph full;  // laterals from the end of the root edge on: nothing bare above it
   NodeId a = edge(full, kNoNode, Eigen::Vector3d::UnitZ(), 1.0, 0.1);
   edge(full, a, Eigen::Vector3d::UnitX(), 1.0, 0.05);
