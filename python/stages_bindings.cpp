@@ -25,6 +25,12 @@ void bind_stages(py::module_& m) {
           "time in [0, 1] at which the edge starts growing")
       .def_property_readonly("chain_count", &DevelopmentalModel::chain_count,
                              "Number of chains (runs of edges of one Gravelius level), >= 1")
+      .def_property_readonly("added_branch_count", &DevelopmentalModel::added_branch_count,
+                             "Branches added below the crown (Pirk 5.3.5), 0 unless added=True")
+      .def_property_readonly(
+          "crown_ratio",
+          [](const DevelopmentalModel& model) { return model.crown().crown_ratio(); },
+          "Crown ratio of the given tree: crown length / height (Pirk Table 5.1)")
       .def_property_readonly(
           "levels",
           [](const DevelopmentalModel& model) {
@@ -38,16 +44,21 @@ void bind_stages(py::module_& m) {
 
   m.def(
       "developmental_model",
-      [](const TreeGraph& tree, bool thickest_continues) {
+      [](const TreeGraph& tree, bool thickest_continues, bool added, double added_gamma) {
         stages::StagesParams p;
         p.continuation = thickest_continues ? stages::Continuation::kThickest
                                             : stages::Continuation::kLeastDeviation;
+        p.added.enabled = added;
+        p.added.gamma = added_gamma;
         return DevelopmentalModel(tree, p);
       },
-      py::arg("tree"), py::arg("thickest_continues") = true,
+      py::arg("tree"), py::arg("thickest_continues") = true, py::arg("added") = false,
+      py::arg("added_gamma") = 1.0,
       "Analyse a Tree into a DevelopmentalModel (chains, growth rates, angles, radii). "
       "thickest_continues=False uses Pirk's rule (the child deviating least continues the axis); "
-      "raises ValueError for an empty tree");
+      "added=True adds the branches a young tree had below the crown and sheds them as the crown "
+      "ratio of Pirk eq. 5.10 (exponent added_gamma) falls; raises ValueError for an empty tree "
+      "or bad parameters");
 
   m.def("seasonal_time", &stages::seasonal_time, py::arg("t"), py::arg("years"), py::arg("c") = 1.2,
         py::arg("s") = 0.0,

@@ -35,12 +35,28 @@ void main_chain(const TreeGraph& tree, const std::vector<std::uint32_t>& chain,
   }
 }
 
+// Per node: whether its subtree carries a leaf (a live branch). All live in a tree without
+// leaves (a bare skeleton), whose crown then starts at its lowest lateral.
+std::vector<std::uint8_t> live(const TreeGraph& tree) {
+  std::vector<std::uint8_t> has(tree.size(), 0);
+  bool any = false;
+  for (NodeId i = static_cast<NodeId>(tree.size()); i-- > 0;) {
+    if (tree.kind(i) == OrganKind::kLeaf) has[i] = 1, any = true;
+    if (i > 0 && has[i]) has[tree.parent(i)] = 1;
+  }
+  if (!any) has.assign(tree.size(), 1);
+  return has;
+}
+
+// The live laterals of the main chain, from the root up. Leafless stubs are dead branches: the
+// crown starts at the lowest live branch, as in forestry.
 std::vector<Lateral> laterals(const TreeGraph& tree, const std::vector<std::uint32_t>& chain,
                               const std::vector<NodeId>& edges, const std::vector<double>& arc) {
+  const std::vector<std::uint8_t> alive = live(tree);
   std::vector<Lateral> out;
   for (std::size_t j = 0; j < edges.size(); ++j) {
     for (const NodeId c : tree.children(edges[j])) {
-      if (is_edge(tree, c) && chain[c] != 0) out.push_back({j, c, arc[j]});
+      if (is_edge(tree, c) && chain[c] != 0 && alive[c]) out.push_back({j, c, arc[j]});
     }
   }
   return out;

@@ -26,8 +26,8 @@ struct AddedStructuresParams {
 };
 
 // Crown shape of a tree (Pirk Table 5.1): height h = top of the internodes above the root's
-// base, crown base = height of the lowest main-chain node that carries a lateral internode,
-// crown ratio = crown length / height = (h - base) / h.
+// base, crown base = height of the lowest main-chain node that carries a live lateral (a leaf in
+// its subtree; any lateral in a tree without leaves), crown ratio = (h - base) / h.
 struct CrownShape {
   double height_m = 0.0;
   double crown_base_m = 0.0;
@@ -68,7 +68,7 @@ struct AddedStructures {
   std::size_t copies = 0;  // added branches
 };
 
-// Pirk 5.3.5: the laterals of the main chain from the crown base up are copied, as one
+// Pirk 5.3.5: the live laterals of the main chain from the crown base up are copied, as one
 // continuous block per copy and with as few copies as cover it, downward along the main chain
 // onto the bare trunk below the crown base; copy k is turned about the vertical by k times the
 // golden angle so that copies do not hide each other.

@@ -111,6 +111,24 @@ def test_developmental_stages_grow_into_the_given_tree():
         fspm.developmental_model(fspm.Tree())
 
 
+def test_developmental_stages_with_added_branches():
+    # A vertical trunk of eight unit edges with horizontal laterals at z = 4..7: crown ratio 0.5,
+    # the bare trunk from z = 1 to 4 takes the three lowest laterals' copies (docs/stages.md).
+    parents = [-1] + list(range(7)) + [3, 4, 5, 6]
+    starts = [(0, 0, k) for k in range(8)] + [(0, 0, z) for z in (4, 5, 6, 7)]
+    ends = [(0, 0, k + 1) for k in range(8)] + [(1 if k % 2 else -1, 0, k + 1) for k in range(3, 7)]
+    tree = fspm.Tree.from_arrays(np.array(parents), np.array(starts, float), np.array(ends, float),
+                                 radii=np.array([0.1] * 8 + [0.05] * 4))
+    assert fspm.developmental_model(tree).added_branch_count == 0
+    model = fspm.developmental_model(tree, added=True)
+    assert model.added_branch_count == 3
+    assert abs(model.crown_ratio - 0.5) < 1e-12
+    last = model.stage(1.0)
+    assert len(last) == len(tree) and np.allclose(last.ends, tree.ends)
+    with pytest.raises(ValueError):
+        fspm.developmental_model(tree, added=True, added_gamma=0.0)
+
+
 def test_read_results_of_a_sweep(tmp_path):
     out = tmp_path / "sweep"
     summary = fspm.run_experiment(str(ROOT / "examples/experiments/branching.toml"), str(out),

@@ -139,6 +139,26 @@ TEST(AddedStructures, SameTreeSameStages) {
   for (const double time : {0.3, 0.6, 0.85}) EXPECT_TRUE(a.stage(time).identical(b.stage(time)));
 }
 
+// Forestry's crown base is the lowest live branch: in a tree with leaves, a leafless stub below
+// the crown does not lower it.
+TEST(AddedStructures, TheCrownStartsAtTheLowestLiveBranch) {
+  TreeGraph t = bare_trunk();
+  const std::size_t given = t.size();
+  for (NodeId i = 0; i < given; ++i) {
+    if (t.parent(i) == kNoNode || std::abs(t.direction(i).z()) > 0.5) continue;
+    NodeData leaf = t.data(i);
+    leaf.kind = OrganKind::kLeaf;
+    leaf.start = leaf.end = t.end(i);
+    leaf.length = 0.1;
+    t.add_node(i, leaf);
+  }
+  edge(t, 1, Eigen::Vector3d::UnitY(), 0.3, 0.01);  // a dead stub at z = 2
+  const DevelopmentalModel m(t, with_added());
+  EXPECT_NEAR(m.crown().crown_base_m, 4.0, 1e-12);
+  EXPECT_NEAR(m.crown().crown_ratio(), 0.5, 1e-12);
+  EXPECT_EQ(m.added_branch_count(), 3u);
+}
+
 TEST(AddedStructures, OffByDefaultAndNothingToAddWithoutABareTrunk) {
   const TreeGraph t = bare_trunk();
   EXPECT_EQ(DevelopmentalModel(t).added_branch_count(), 0u);
