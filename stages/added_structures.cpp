@@ -62,6 +62,15 @@ std::vector<Lateral> laterals(const TreeGraph& tree, const std::vector<std::uint
   return out;
 }
 
+// The first `count` main-chain edges: the one whose end is nearest the arc length `target_m`.
+std::size_t nearest_edge(const std::vector<double>& arc_end_m, std::size_t count, double target_m) {
+  const auto it = std::lower_bound(arc_end_m.begin(), arc_end_m.begin() + count, target_m);
+  const std::size_t j = static_cast<std::size_t>(it - arc_end_m.begin());
+  if (j == 0) return 0;
+  if (j == count || target_m - arc_end_m[j - 1] < arc_end_m[j] - target_m) return j - 1;
+  return j;
+}
+
 // Appends to `out` under `parent` a copy of the subtree at `source`, turned about the vertical
 // by `turn_rad` and scaled by `scale` about its base, its base moved to the end of `parent`.
 NodeId append_copy(TreeGraph& out, NodeId parent, NodeId source, double turn_rad, double scale) {
@@ -168,10 +177,10 @@ AddedStructures add_structures(const TreeGraph& tree, const std::vector<std::uin
     for (const Lateral& l : side) {
       const double target = l.arc_m - k * period;
       if (l.arc_m >= s_b + period || target < s_0 - 1e-12) continue;
-      // the bare main-chain edge whose end is nearest the target arc length
-      const auto it = std::lower_bound(arc.begin(), arc.begin() + bare, target);
-      std::size_t j = static_cast<std::size_t>(it - arc.begin());
-      if (j == bare || (j > 0 && target - arc[j - 1] < arc[j] - target)) j = j == 0 ? 0 : j - 1;
+      const std::size_t j = nearest_edge(arc, bare, target);
+      // A copy nearly as thick as the trunk above it would continue the main chain (5.2.2)
+      // and turn the trunk into a lateral; it is left out.
+      if (tree.radius(l.base) * params.scale >= 0.9 * tree.radius(edges[j + 1])) continue;
       const NodeId at = edges[j];
       const NodeId root = append_copy(out.tree, at, l.base, k * golden_rad, params.scale);
       attach_height.resize(out.tree.size(), std::numeric_limits<double>::quiet_NaN());

@@ -170,6 +170,17 @@ TEST(AddedStructures, OffByDefaultAndNothingToAddWithoutABareTrunk) {
   EXPECT_EQ(DevelopmentalModel(full, with_added()).added_branch_count(), 0u);
 }
 
+// Copies twice the size of the laterals (radius 0.1) are as thick as the trunk (0.1) and would
+// continue the main chain; none is added.
+TEST(AddedStructures, NoCopyAsThickAsTheTrunk) {
+  StagesParams p = with_added();
+  p.added.scale = 2.0;
+  const DevelopmentalModel m(bare_trunk(), p);
+  EXPECT_EQ(m.added_branch_count(), 0u);
+  p.added.scale = 1.7;  // radius 0.085 < 0.9 x 0.1
+  EXPECT_EQ(DevelopmentalModel(bare_trunk(), p).added_branch_count(), 3u);
+}
+
 TEST(AddedStructures, BadParametersAreRejected) {
   StagesParams p = with_added();
   p.added.crown_ratio_at_zero_height = 1.0;
