@@ -14,6 +14,7 @@
 #include "fspm/error.hpp"
 #include "fspm/tree_file.hpp"
 #include "stages/developmental_model.hpp"
+#include "stages/profile_diagram.hpp"
 
 namespace fspm::cli {
 namespace {
@@ -27,6 +28,7 @@ struct StagesOptions {
   int season_years = 0;
   bool added = false;
   double added_gamma = 1.0;
+  double profile_m = 0.0;
   bool json = false;
 };
 
@@ -56,6 +58,20 @@ std::string stage_path(const StagesOptions& o, std::size_t k) {
   return (std::filesystem::path(o.output) / name).string();
 }
 
+// Pirk 5.3.4: the given tree's profile diagrams by both clipping methods, layers from the ground.
+nlohmann::json profile_json(const TreeGraph& tree, double layer_m) {
+  const stages::DevelopmentalModel plain(tree);
+  nlohmann::json out = {{"layer_m", layer_m}};
+  for (const stages::Clipping c : {stages::Clipping::kStratified, stages::Clipping::kMainAxis}) {
+    const stages::ProfileDiagram p = stages::profile_diagram(tree, plain.chain(), layer_m, c);
+    out[std::string(stages::clipping_name(c))] = {{"leaves", p.leaves},
+                                                  {"wood_m3", p.wood_m3},
+                                                  {"leaves_above", p.leaves_above},
+                                                  {"tissue_above", p.tissue_above}};
+  }
+  return out;
+}
+
 void run_stages(const StagesOptions& o) {
   refuse_overwriting_input(o.output, {o.tree});
   const std::vector<double> times = stage_times(o);
@@ -80,7 +96,10 @@ void run_stages(const StagesOptions& o) {
   spdlog::info("{}: {} internodes in {} chains; {} added branch(es); {} stage(s) -> {}", o.tree,
                branches, model.chain_count(), model.added_branch_count(), times.size(), o.output);
   if (o.json) {
+    nlohmann::json profile;
+    if (o.profile_m > 0.0) profile = profile_json(tree, o.profile_m);
     print_json({{"branches", branches},
+                {"profile", profile},
                 {"chains", model.chain_count()},
                 {"added_branches", model.added_branch_count()},
                 {"crown_ratio", model.crown().crown_ratio()},
@@ -117,6 +136,10 @@ void add_stages_commands(CLI::App& app) {
                 "gamma of eq. 5.10 for --added (1: the last stage is the given tree; < 1 keeps "
                 "some added branches, > 1 sheds them earlier)")
       ->check(number_in(1e-6, 100.0));
+  s->add_option("--profile", o->profile_m,
+                "With --json: the given tree's profile diagrams (Pirk 5.3.4) in layers of this "
+                "many metres, by stratified clipping and main-axis cutting")
+      ->check(number_in(1e-3, 1000.0));
   s->add_option("--format", o->format, "tree, treeb, nwk, mtg (default: from the extension)");
   s->add_flag("--json", o->json,
               "One JSON object on stdout: branches, chains, stages, analysis_seconds, "

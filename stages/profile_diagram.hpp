@@ -1,5 +1,5 @@
 #pragma once
-// The profile diagram of the pipe model theory (Shinozaki et al. 1964; Pirk 2013, 5.3.4): per
+// The profile diagram of the pipe model theory (Shinozaki et al. 1964, Chiba 1990; Pirk 5.3.4): per
 // horizontal layer of the tree, the leaves Γ(z) and the non-photosynthetic tissue C(z), and their
 // sums from the top down, F(z) and T(z). Two ways of gathering them (Pirk 5.3.4):
 //   - stratified clipping (STC): what lies in the layer [z, z + Δz];
