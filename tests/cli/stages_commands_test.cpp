@@ -46,6 +46,39 @@ TEST(StagesCli, TheLastStageIsTheGivenTreeAndStagesGrow) {
   EXPECT_EQ(previous, internodes(given));
 }
 
+// --added keeps the last stage the given tree; --profile sums, over its layers, every leaf and
+// all the wood (pi r^2 l) of the given tree, by either clipping method.
+TEST(StagesCli, AddedBranchesAndProfileDiagrams) {
+  const auto dir = scratch_dir("stages_added");
+  const auto r = run_fspm("stages " + kTree + " --at 1 --added -o " +
+                          (dir / "last.treeb").string() + " --json --profile 0.25");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const TreeGraph given = read_tree_file(kTree);
+  const TreeGraph last = read_tree_file((dir / "last.treeb").string());
+  ASSERT_EQ(last.size(), given.size());
+  for (NodeId i = 0; i < given.size(); ++i) ASSERT_LT((last.end(i) - given.end(i)).norm(), 1e-9);
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_GE(j["added_branches"].get<int>(), 0);
+  EXPECT_GT(j["crown_ratio"].get<double>(), 0.0);
+  EXPECT_LE(j["crown_ratio"].get<double>(), 1.0);
+  double leaves = 0.0, wood = 0.0;
+  for (NodeId i = 0; i < given.size(); ++i) {
+    leaves += given.kind(i) == OrganKind::kLeaf ? 1.0 : 0.0;
+    if (given.kind(i) == OrganKind::kInternode) {
+      wood += 3.141592653589793 * given.radius(i) * given.radius(i) * given.length(i);
+    }
+  }
+  for (const char* method : {"stratified", "main_axis"}) {
+    const auto& p = j["profile"][method];
+    double l = 0.0, w = 0.0;
+    for (const double v : p["leaves"]) l += v;
+    for (const double v : p["wood_m3"]) w += v;
+    EXPECT_NEAR(l, leaves, 1e-9) << method;
+    EXPECT_NEAR(w, wood, 1e-9 * wood) << method;
+    EXPECT_NEAR(p["tissue_above"][0].get<double>(), 1.0, 1e-12) << method;
+  }
+}
+
 TEST(StagesCli, OneOfAtAndStepsIsRequired) {
   const auto dir = scratch_dir("stages_bad");
   const auto r = run_fspm("stages " + kTree + " --at 0.5 --steps 3 -o " + (dir / "x").string());
