@@ -36,6 +36,12 @@ stages::StagesParams stages_params(const ParameterSet& parameters) {
     }
     if (name == "pipe_exponent") p.pipe_exponent = parameter_number(value, name);
     if (name == "same_level_tolerance") p.same_level_tolerance = parameter_number(value, name);
+    if (name == "added") {
+      const std::int64_t v = parameter_integer(value, name);
+      if (v != 0 && v != 1) throw ValueError("added must be 0 or 1");
+      p.added.enabled = v == 1;
+    }
+    if (name == "added_gamma") p.added.gamma = parameter_number(value, name);
   }
   p.validate();
   return p;
@@ -55,10 +61,11 @@ StageRequest stage_request(const ParameterSet& parameters) {
   return r;
 }
 
-using AnalysisKey = std::tuple<stages::Continuation, int, double, double>;
+using AnalysisKey = std::tuple<stages::Continuation, int, double, double, bool, double>;
 
 AnalysisKey key_of(const stages::StagesParams& p) {
-  return {p.continuation, p.rigid_tip_count, p.pipe_exponent, p.same_level_tolerance};
+  return {p.continuation,         p.rigid_tip_count, p.pipe_exponent,
+          p.same_level_tolerance, p.added.enabled,   p.added.gamma};
 }
 
 // One analysed tree; stage() reuses the model's buffers, so runs sharing it take turns (a
@@ -82,10 +89,10 @@ class StagesModel final : public Model {
       return;
     }
     if (name != "continuation" && name != "rigid_tip_count" && name != "pipe_exponent" &&
-        name != "same_level_tolerance") {
+        name != "same_level_tolerance" && name != "added" && name != "added_gamma") {
       throw ValueError(
           "unknown parameter of model kind stages (expected t, season_years, continuation, "
-          "rigid_tip_count, pipe_exponent or same_level_tolerance)");
+          "rigid_tip_count, pipe_exponent, same_level_tolerance, added or added_gamma)");
     }
     stages_params({{name, value}});
   }
