@@ -7,10 +7,10 @@
 #include <optional>
 #include <random>
 
-#include "fspm/attribute_names.hpp"
 #include "environment/light_model.hpp"
 #include "environment/shadow_grid.hpp"
 #include "environment/space_colonization.hpp"
+#include "fspm/attribute_names.hpp"
 #include "fspm/error.hpp"
 #include "fspm/memory_budget.hpp"
 

@@ -6,10 +6,10 @@
 #include <cstdint>
 #include <memory>
 
-#include "fspm/attribute_names.hpp"
 #include "environment/cluster_grid_light.hpp"
 #include "environment/cluster_light.hpp"
 #include "environment/solid_push.hpp"
+#include "fspm/attribute_names.hpp"
 #include "fspm/error.hpp"
 
 namespace fspm::environment {

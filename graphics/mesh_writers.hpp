@@ -18,8 +18,8 @@
 namespace fspm::graphics {
 
 // The formats and their extensions live in the core (fspm/mesh_format.hpp).
-using fspm::MeshFormat;
 using fspm::mesh_format_for;
+using fspm::MeshFormat;
 
 // Writes `path` and, beside it, the material library with the same stem and extension .mtl.
 void write_obj(const TriangleMesh& mesh, const std::string& path);
