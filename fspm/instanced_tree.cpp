@@ -17,22 +17,6 @@ struct Occurrence {
   double order = 0.0;
 };
 
-void check_children(const InstancedTree& tree) {
-  const std::size_t np = tree.prototypes.size();
-  for (const auto& p : tree.prototypes) {
-    for (const auto& c : p.children) {
-      if (c.prototype >= np) {
-        throw ValueError("instanced tree: child refers to prototype " +
-                         std::to_string(c.prototype) + " of " + std::to_string(np));
-      }
-      if (c.attach != kNoNode && c.attach >= p.geometry.size()) {
-        throw ValueError("instanced tree: child attached to node " + std::to_string(c.attach) +
-                         " of a prototype with " + std::to_string(p.geometry.size()) + " nodes");
-      }
-    }
-  }
-}
-
 // Nodes of the explicit tree, counted occurrence by occurrence; throws past `max_nodes` (or
 // past as many occurrences, which only a cycle of empty prototypes reaches).
 std::size_t explicit_size(const InstancedTree& tree, std::size_t max_nodes) {
@@ -55,7 +39,7 @@ std::size_t explicit_size(const InstancedTree& tree, std::size_t max_nodes) {
 TreeGraph expand_instanced_tree(const InstancedTree& tree, std::size_t max_nodes) {
   TreeGraph out;
   if (tree.prototypes.empty()) return out;
-  check_children(tree);
+  check_instanced_tree(tree);
   const std::size_t nodes = explicit_size(tree, max_nodes);
   for (const auto& p : tree.prototypes) {
     for (const auto& name : p.geometry.attribute_names()) out.add_attribute(name);
@@ -95,6 +79,22 @@ TreeGraph expand_instanced_tree(const InstancedTree& tree, std::size_t max_nodes
     }
   }
   return out;
+}
+
+void check_instanced_tree(const InstancedTree& tree) {
+  const std::size_t np = tree.prototypes.size();
+  for (const auto& p : tree.prototypes) {
+    for (const auto& c : p.children) {
+      if (c.prototype >= np) {
+        throw ValueError("instanced tree: child refers to prototype " +
+                         std::to_string(c.prototype) + " of " + std::to_string(np));
+      }
+      if (c.attach != kNoNode && c.attach >= p.geometry.size()) {
+        throw ValueError("instanced tree: child attached to node " + std::to_string(c.attach) +
+                         " of a prototype with " + std::to_string(p.geometry.size()) + " nodes");
+      }
+    }
+  }
 }
 
 }  // namespace fspm

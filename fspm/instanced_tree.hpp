@@ -40,4 +40,7 @@ struct InstancedTree {
 // check_memory) or ValueError when the explicit tree would exceed `max_nodes` nodes.
 TreeGraph expand_instanced_tree(const InstancedTree& tree, std::size_t max_nodes);
 
+// Throws ValueError when a child refers to a prototype or attachment node that does not exist.
+void check_instanced_tree(const InstancedTree& tree);
+
 }  // namespace fspm

@@ -153,18 +153,7 @@ InstancedMesh mesh_instanced(const InstancedTree& tree, const MeshOptions& optio
   InstancedMesh out;
   const std::size_t np = tree.prototypes.size();
   if (np == 0) return out;
-  for (const auto& p : tree.prototypes) {
-    for (const auto& c : p.children) {
-      if (c.prototype >= np) {
-        throw ValueError("instanced tree: child refers to prototype " +
-                         std::to_string(c.prototype) + " of " + std::to_string(np));
-      }
-      if (c.attach != kNoNode && c.attach >= p.geometry.size()) {
-        throw ValueError("instanced tree: child attached to node " + std::to_string(c.attach) +
-                         " of a prototype with " + std::to_string(p.geometry.size()) + " nodes");
-      }
-    }
-  }
+  check_instanced_tree(tree);
   MeshOptions o = options;
   o.camera_m.reset();
   if (std::isinf(o.max_birth_time)) {

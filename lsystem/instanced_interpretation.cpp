@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "fspm/error.hpp"
+#include "fspm/saturating.hpp"
 #include "lsystem/turtle_core.hpp"
 #include "lsystem/turtle_graph_builder.hpp"
 
@@ -17,16 +18,6 @@ namespace fspm::lsystem {
 namespace {
 
 constexpr std::uint32_t kNoPrototype = std::numeric_limits<std::uint32_t>::max();
-constexpr std::uint64_t kSaturated = std::numeric_limits<std::uint64_t>::max();
-
-std::uint64_t add_saturating(std::uint64_t a, std::uint64_t b) {
-  return a > kSaturated - b ? kSaturated : a + b;
-}
-
-std::uint64_t multiply_saturating(std::uint64_t a, std::uint64_t b) {
-  if (a == 0 || b == 0) return 0;
-  return a > kSaturated / b ? kSaturated : a * b;
-}
 
 using Turtle = detail::Turtle<detail::GraphBuilder>;
 

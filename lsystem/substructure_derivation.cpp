@@ -7,20 +7,10 @@
 #include <unordered_map>
 
 #include "fspm/error.hpp"
+#include "fspm/saturating.hpp"
 
 namespace fspm::lsystem {
 namespace {
-
-constexpr std::uint64_t kSaturated = std::numeric_limits<std::uint64_t>::max();
-
-std::uint64_t add_saturating(std::uint64_t a, std::uint64_t b) {
-  return a > kSaturated - b ? kSaturated : a + b;
-}
-
-std::uint64_t multiply_saturating(std::uint64_t a, std::uint64_t b) {
-  if (a == 0 || b == 0) return 0;
-  return a > kSaturated / b ? kSaturated : a * b;
-}
 
 std::string at_line(const Production& p) {
   return " (line " + std::to_string(p.position.line) + ")";

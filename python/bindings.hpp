@@ -65,6 +65,17 @@ py::array_t<T> adopt(std::vector<T>&& values) {
                         free_when_done);
 }
 
+// An (N, 3) copy of a list of 3-vectors (float or double), e.g. mesh vertices or scan points.
+template <typename S>
+py::array_t<S> vector_rows(const std::vector<Eigen::Matrix<S, 3, 1>>& v) {
+  py::array_t<S> out({static_cast<py::ssize_t>(v.size()), py::ssize_t{3}});
+  auto a = out.template mutable_unchecked<2>();
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    for (int k = 0; k < 3; ++k) a(static_cast<py::ssize_t>(i), k) = v[i][k];
+  }
+  return out;
+}
+
 // A C-contiguous float64 array of shape (N, 3) (or one point of shape (3,)) seen as N Eigen
 // vectors; the array must outlive the span. Throws ValueError naming `what` for another shape.
 using PointArray = py::array_t<double, py::array::c_style | py::array::forcecast>;

@@ -17,16 +17,6 @@
 namespace fspm::python {
 namespace {
 
-// (N, 3) float32 copy of a list of Eigen vectors.
-py::array_t<float> rows(const std::vector<Eigen::Vector3f>& v) {
-  py::array_t<float> out({static_cast<py::ssize_t>(v.size()), py::ssize_t{3}});
-  auto a = out.mutable_unchecked<2>();
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    for (int k = 0; k < 3; ++k) a(static_cast<py::ssize_t>(i), k) = v[i][k];
-  }
-  return out;
-}
-
 crown::CrownModel reconstruct(const std::string& photo_path,
                               const std::optional<std::string>& mask_path, double height_m,
                               double depth_ratio, double relief, std::uint64_t seed) {
@@ -50,10 +40,10 @@ void bind_crown(py::module_& m) {
                          "A crown reconstructed from one photograph (docs/crown.md): closed mesh "
                          "in metres, z up, the photograph looking along +y")
       .def_property_readonly(
-          "vertices", [](const CrownModel& c) { return rows(c.mesh.positions); },
+          "vertices", [](const CrownModel& c) { return vector_rows(c.mesh.positions); },
           "Vertex positions in m, an (N, 3) float32 array (crown, then the trunk if any)")
       .def_property_readonly(
-          "colors", [](const CrownModel& c) { return rows(c.mesh.colors); },
+          "colors", [](const CrownModel& c) { return vector_rows(c.mesh.colors); },
           "Vertex colours, linear RGB in [0, 1], an (N, 3) float32 array")
       .def_property_readonly(
           "triangles",

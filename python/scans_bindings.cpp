@@ -20,16 +20,6 @@
 namespace fspm::python {
 namespace {
 
-// (N, 3) float64 copy of a list of points.
-py::array_t<double> point_rows(const std::vector<Eigen::Vector3d>& points) {
-  py::array_t<double> out({static_cast<py::ssize_t>(points.size()), py::ssize_t{3}});
-  auto a = out.mutable_unchecked<2>();
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    for (int k = 0; k < 3; ++k) a(static_cast<py::ssize_t>(i), k) = points[i][k];
-  }
-  return out;
-}
-
 py::array_t<std::uint32_t> triangle_rows(const std::vector<std::array<std::uint32_t, 3>>& tris) {
   py::array_t<std::uint32_t> out({static_cast<py::ssize_t>(tris.size()), py::ssize_t{3}});
   auto a = out.mutable_unchecked<2>();
@@ -78,7 +68,7 @@ void bind_cluster_model(py::module_& m) {
               py::dict d;
               d["seed_node"] = h.seed_node;
               d["point_count"] = h.point_count;
-              d["vertices"] = point_rows(h.vertices);
+              d["vertices"] = vector_rows(h.vertices);
               d["triangles"] = triangle_rows(h.triangles);
               out.append(d);
             }
@@ -100,7 +90,7 @@ void bind_scans(py::module_& m) {
           py::gil_scoped_release release;
           set = scans::read_point_set(path);
         }
-        return point_rows(set.points);
+        return vector_rows(set.points);
       },
       py::arg("path"),
       "The points of a point-set file (.ply ASCII or binary, .xyz/.txt/.csv, .pcd) as an (N, 3) "
@@ -162,7 +152,7 @@ void bind_scans(py::module_& m) {
           py::gil_scoped_release release;
           set = scans::simulate_scan(tree, o, rng);
         }
-        return point_rows(set.points);
+        return vector_rows(set.points);
       },
       py::arg("tree"), py::arg("seed") = 1, py::arg("scanners") = 4,
       py::arg("density_per_m2") = 20000.0, py::arg("range_noise") = 0.003,

@@ -1,0 +1,20 @@
+#pragma once
+// Counts that stop at 2^64 - 1 instead of wrapping: module counts of derivations far too large
+// to carry out (ABOP Fig. 1.24a at n = 40 has about 10^28 modules).
+#include <cstdint>
+#include <limits>
+
+namespace fspm {
+
+inline constexpr std::uint64_t kSaturated = std::numeric_limits<std::uint64_t>::max();
+
+constexpr std::uint64_t add_saturating(std::uint64_t a, std::uint64_t b) {
+  return a > kSaturated - b ? kSaturated : a + b;
+}
+
+constexpr std::uint64_t multiply_saturating(std::uint64_t a, std::uint64_t b) {
+  if (a == 0 || b == 0) return 0;
+  return a > kSaturated / b ? kSaturated : a * b;
+}
+
+}  // namespace fspm
