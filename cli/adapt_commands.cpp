@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/enum_option.hpp"
 #include "cli/output.hpp"
 #include "environment/plastic_adaptation.hpp"
 #include "environment/scene_file.hpp"
@@ -21,6 +22,9 @@
 
 namespace fspm::cli {
 namespace {
+
+constexpr environment::ClusterLightModel kClusterLightModels[] = {
+    environment::ClusterLightModel::kSky, environment::ClusterLightModel::kShadowGrid};
 
 struct AdaptOptions {
   std::vector<std::string> trees;
@@ -37,7 +41,7 @@ struct AdaptOptions {
   bool together = false;
   bool temporal = false;
   bool absolute_pruning = false;
-  std::string light_model = "sky";
+  environment::ClusterLightModel light_model = environment::ClusterLightModel::kSky;
   bool json = false;
 };
 
@@ -74,9 +78,7 @@ std::vector<std::string> output_paths(const AdaptOptions& o, const std::filesyst
   return outputs;
 }
 
-void run_adapt(const AdaptOptions& o) {
-  std::vector<environment::Scene> scenes;
-  for (const std::string& path : o.scenes) scenes.push_back(environment::read_scene_file(path));
+environment::AnalysisParams analysis_params(const AdaptOptions& o) {
   environment::AnalysisParams params;
   params.skeleton_radius_m = o.skeleton_radius_m;
   params.pruning_strength = o.pruning_strength;
@@ -84,15 +86,71 @@ void run_adapt(const AdaptOptions& o) {
   params.gravitropism = o.gravitropism;
   params.temporal_pruning = o.temporal;
   params.relative_pruning = !o.absolute_pruning;
-  params.light_model = environment::cluster_light_model_from_name(o.light_model);
-  Eigen::Vector3d grown_brightest = scenes.front().sky.brightest;
-  if (!o.grown_brightest.empty()) {
-    grown_brightest = {o.grown_brightest[0], o.grown_brightest[1], o.grown_brightest[2]};
-    if (grown_brightest.z() <= 0.0) {
-      throw ValueError("--grown-brightest: expected a direction above the horizon (z > 0)");
-    }
-    grown_brightest.normalize();
+  params.light_model = o.light_model;
+  return params;
+}
+
+// The sky the trees grew under: --grown-brightest, else the first scene's.
+Eigen::Vector3d grown_brightest(const AdaptOptions& o, const environment::Scene& first_scene) {
+  if (o.grown_brightest.empty()) return first_scene.sky.brightest;
+  Eigen::Vector3d b(o.grown_brightest[0], o.grown_brightest[1], o.grown_brightest[2]);
+  if (b.z() <= 0.0) {
+    throw ValueError("--grown-brightest: expected a direction above the horizon (z > 0)");
   }
+  return b.normalized();
+}
+
+// The trees adapted to one scene, each alone or all together, with the seconds each took.
+std::vector<environment::AdaptationResult> adapt_to_scene(
+    const AdaptOptions& o, const std::vector<TreeGraph>& trees,
+    const std::vector<environment::TreeAnalysis>& analyses, const environment::Scene& scene,
+    std::vector<double>& seconds) {
+  std::vector<environment::AdaptationResult> adapted;
+  seconds.clear();
+  if (o.together) {
+    // Tree-tree interaction: lock-step adaptation in one light field (Pirk 4.4.3).
+    std::vector<const TreeGraph*> tp;
+    std::vector<const environment::TreeAnalysis*> ap;
+    for (std::size_t k = 0; k < trees.size(); ++k) {
+      tp.push_back(&trees[k]);
+      ap.push_back(&analyses[k]);
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    adapted = environment::adapt_trees(tp, ap, scene);
+    const double total = seconds_since(t0);
+    seconds.assign(trees.size(), total / static_cast<double>(trees.size()));
+    return adapted;
+  }
+  for (std::size_t k = 0; k < trees.size(); ++k) {
+    const auto t0 = std::chrono::steady_clock::now();
+    adapted.push_back(environment::adapt_tree(trees[k], analyses[k], scene));
+    seconds.push_back(seconds_since(t0));
+  }
+  return adapted;
+}
+
+nlohmann::json json_vector(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+nlohmann::json adapted_json(const environment::AdaptationResult& r, const std::string& input,
+                            const std::string& output, std::size_t nodes, double seconds,
+                            double analysis_seconds) {
+  return {{"input", input},
+          {"output", output},
+          {"nodes", nodes},
+          {"pruned_nodes", r.pruned_nodes},
+          {"mean_tip_displacement", r.mean_tip_displacement_m},
+          {"mean_tip_shift", json_vector(r.mean_tip_shift)},
+          {"pruned_centroid", json_vector(r.pruned_centroid)},
+          {"internode_centroid", json_vector(r.internode_centroid)},
+          {"seconds", seconds},
+          {"analysis_seconds", analysis_seconds}};
+}
+
+void run_adapt(const AdaptOptions& o) {
+  std::vector<environment::Scene> scenes;
+  for (const std::string& path : o.scenes) scenes.push_back(environment::read_scene_file(path));
+  const environment::AnalysisParams params = analysis_params(o);
+  const Eigen::Vector3d brightest = grown_brightest(o, scenes.front());
   const bool many = o.trees.size() > 1;
   const bool several_scenes = scenes.size() > 1;
   std::vector<std::vector<std::string>> outputs;  // per scene, per tree
@@ -113,56 +171,23 @@ void run_adapt(const AdaptOptions& o) {
     // The open-sky analysis uses the sky the tree grew under (default: the first scene's), so a
     // moved brightest point is a global light change (Pirk 4.4.3). It is made once: every scene
     // re-adapts from it.
-    analyses.push_back(environment::analyze_tree(tree, params, grown_brightest));
+    analyses.push_back(environment::analyze_tree(tree, params, brightest));
     analysis_seconds.push_back(seconds_since(t0));
   }
 
   nlohmann::json results = nlohmann::json::array();
   for (std::size_t s = 0; s < scenes.size(); ++s) {
-    const environment::Scene& scene = scenes[s];
-    std::vector<environment::AdaptationResult> adapted;
     std::vector<double> seconds;
-    if (o.together) {
-      // Tree-tree interaction: lock-step adaptation in one light field (Pirk 4.4.3).
-      std::vector<const TreeGraph*> tp;
-      std::vector<const environment::TreeAnalysis*> ap;
-      for (std::size_t k = 0; k < trees.size(); ++k) {
-        tp.push_back(&trees[k]);
-        ap.push_back(&analyses[k]);
-      }
-      const auto t0 = std::chrono::steady_clock::now();
-      adapted = environment::adapt_trees(tp, ap, scene);
-      const double total = seconds_since(t0);
-      seconds.assign(trees.size(), total / static_cast<double>(trees.size()));
-    } else {
-      for (std::size_t k = 0; k < trees.size(); ++k) {
-        const auto t0 = std::chrono::steady_clock::now();
-        adapted.push_back(environment::adapt_tree(trees[k], analyses[k], scene));
-        seconds.push_back(seconds_since(t0));
-      }
-    }
+    const std::vector<environment::AdaptationResult> adapted =
+        adapt_to_scene(o, trees, analyses, scenes[s], seconds);
     for (std::size_t k = 0; k < trees.size(); ++k) {
       const environment::AdaptationResult& r = adapted[k];
       const std::string& output = outputs[s][k];
       // The adapted tree as it stands: pruned branches gone unless asked to keep them flagged.
-      if (o.keep_pruned) {
-        write_tree_file(r.tree, output, o.format);
-      } else {
-        write_tree_file(environment::remove_pruned(r.tree), output, o.format);
-      }
-      nlohmann::json item = {
-          {"input", o.trees[k]},
-          {"output", output},
-          {"nodes", trees[k].size()},
-          {"pruned_nodes", r.pruned_nodes},
-          {"mean_tip_displacement", r.mean_tip_displacement_m},
-          {"mean_tip_shift", {r.mean_tip_shift.x(), r.mean_tip_shift.y(), r.mean_tip_shift.z()}},
-          {"pruned_centroid",
-           {r.pruned_centroid.x(), r.pruned_centroid.y(), r.pruned_centroid.z()}},
-          {"internode_centroid",
-           {r.internode_centroid.x(), r.internode_centroid.y(), r.internode_centroid.z()}},
-          {"seconds", seconds[k]},
-          {"analysis_seconds", analysis_seconds[k]}};
+      write_tree_file(o.keep_pruned ? r.tree : environment::remove_pruned(r.tree), output,
+                      o.format);
+      nlohmann::json item =
+          adapted_json(r, o.trees[k], output, trees[k].size(), seconds[k], analysis_seconds[k]);
       if (several_scenes) {
         item["scene"] = o.scenes[s];
         item["light_evaluations"] = r.light_evaluations;
@@ -212,9 +237,13 @@ void add_adapt_commands(CLI::App& app) {
               "Pruning thresholds over all earlier growth stages (eq. 4.5), not the final one");
   a->add_flag("--absolute-pruning", opt->absolute_pruning,
               "Pirk's eq. 4.12 thresholds as analysed, not scaled with the crown's resources");
-  a->add_option("--light-model", opt->light_model,
-                "Cluster light: sky (hemisphere with the clusters as caps, default) or "
-                "shadow_grid (Palubicki's voxel shade, faster)");
+  add_enum_option(
+      a, "--light-model", opt->light_model, kClusterLightModels,
+      +[](environment::ClusterLightModel m) -> std::string_view {
+        return environment::cluster_light_model_name(m);
+      },
+      "Cluster light: sky (hemisphere with the clusters as caps) or shadow_grid "
+      "(Palubicki's voxel shade, faster)");
   a->add_flag("--together", opt->together,
               "Trees shade each other, adapted in lock-step (world coordinates, Pirk 4.4.3)");
   a->add_flag("--keep-pruned", opt->keep_pruned,

@@ -27,6 +27,14 @@ double shadow_reach2(double r, double g, double significance) {
 }  // namespace
 
 LightModel::LightModel(const Scene& scene) : scene_(scene), dirs_(scene.sky.directions) {
+  set_sky_weights();
+  for (auto& mesh : scene_.meshes) mesh.update_bounds();
+  if (!scene_.boxes.empty()) build_fine_directions();
+  set_shadow_reaches();
+  if (!all_spheres_.empty()) build_sphere_index();
+}
+
+void LightModel::set_sky_weights() {
   Eigen::Vector3d b = scene_.sky.brightest;
   b = b.norm() > 0 ? Eigen::Vector3d(b.normalized()) : Eigen::Vector3d::UnitZ();
   scene_.sky.brightest = b;
@@ -39,29 +47,15 @@ LightModel::LightModel(const Scene& scene) : scene_(scene), dirs_(scene.sky.dire
     m += weight_[i] * dirs_.direction(i);
   }
   open_direction_ = m.norm() > 0 ? Eigen::Vector3d(m.normalized()) : Eigen::Vector3d::UnitZ();
-  for (auto& mesh : scene_.meshes) mesh.update_bounds();
-  if (!scene_.boxes.empty()) build_fine_directions();
+}
 
+void LightModel::set_shadow_reaches() {
   const double eps = scene_.sky.significance;
-  const std::size_t n = scene_.spheres.size();
-  reach2_.resize(n);
-  double max_finite = 0.0;
-  bool any_infinite = false;
-  std::vector<double> finite;
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(kInf), hi = -lo;
-  for (std::size_t i = 0; i < n; ++i) {
+  reach2_.resize(scene_.spheres.size());
+  for (std::size_t i = 0; i < scene_.spheres.size(); ++i) {
     const auto& s = scene_.spheres[i];
     reach2_[i] = shadow_reach2(s.radius_m, s.translucency, eps);
-    if (reach2_[i] < 0) continue;
-    all_spheres_.push_back(static_cast<std::uint32_t>(i));
-    lo = lo.cwiseMin(s.center - Eigen::Vector3d::Constant(s.radius_m));
-    hi = hi.cwiseMax(s.center + Eigen::Vector3d::Constant(s.radius_m));
-    if (std::isinf(reach2_[i])) {
-      any_infinite = true;
-    } else {
-      finite.push_back(std::sqrt(reach2_[i]));
-      max_finite = std::max(max_finite, finite.back());
-    }
+    if (reach2_[i] >= 0) all_spheres_.push_back(static_cast<std::uint32_t>(i));
   }
   for (const auto& box : scene_.boxes) {
     box_reach2_.push_back(shadow_reach2(box.bounding_radius(), box.translucency, eps));
@@ -69,25 +63,47 @@ LightModel::LightModel(const Scene& scene) : scene_(scene), dirs_(scene.sky.dire
   for (const auto& mesh : scene_.meshes) {
     mesh_reach2_.push_back(shadow_reach2(mesh.bounding_radius_m, mesh.translucency, eps));
   }
-  if (all_spheres_.empty()) return;
+}
 
+void LightModel::sphere_volume_box(std::uint32_t i, double clamp, Eigen::Vector3d& lo,
+                                   Eigen::Vector3d& hi) const {
+  const auto& s = scene_.spheres[i];
+  const double r = std::min(std::sqrt(reach2_[i]), clamp);
+  lo = s.center - Eigen::Vector3d(r, r, r);
+  hi = s.center + Eigen::Vector3d(r, r, s.radius_m);
+}
+
+void LightModel::build_sphere_index() {
   // The grid covers every shadow volume, unbounded ones clamped to a margin around the spheres;
   // points outside the grid fall back to visiting every sphere, which is always correct.
-  const double clamp = any_infinite ? std::max(max_finite, (hi - lo).norm()) : max_finite;
-  auto volume_box = [&](std::size_t i, Eigen::Vector3d& a, Eigen::Vector3d& z) {
+  std::vector<double> finite;
+  bool any_infinite = false;
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(kInf), hi = -lo;
+  for (const std::uint32_t i : all_spheres_) {
     const auto& s = scene_.spheres[i];
-    const double r = std::min(std::sqrt(reach2_[i]), clamp);
-    a = s.center - Eigen::Vector3d(r, r, r);
-    z = s.center + Eigen::Vector3d(r, r, s.radius_m);
-  };
+    lo = lo.cwiseMin(s.center - Eigen::Vector3d::Constant(s.radius_m));
+    hi = hi.cwiseMax(s.center + Eigen::Vector3d::Constant(s.radius_m));
+    if (std::isinf(reach2_[i])) {
+      any_infinite = true;
+    } else {
+      finite.push_back(std::sqrt(reach2_[i]));
+    }
+  }
+  const double max_finite = finite.empty() ? 0.0 : *std::max_element(finite.begin(), finite.end());
+  const double clamp = any_infinite ? std::max(max_finite, (hi - lo).norm()) : max_finite;
   grid_lo_ = Eigen::Vector3d::Constant(kInf);
   grid_hi_ = -grid_lo_;
-  for (auto i : all_spheres_) {
+  for (const std::uint32_t i : all_spheres_) {
     Eigen::Vector3d a, z;
-    volume_box(i, a, z);
+    sphere_volume_box(i, clamp, a, z);
     grid_lo_ = grid_lo_.cwiseMin(a);
     grid_hi_ = grid_hi_.cwiseMax(z);
   }
+  if (!choose_index_cell(finite, clamp)) return;
+  fill_sphere_index(clamp);
+}
+
+bool LightModel::choose_index_cell(std::vector<double>& finite, double clamp) {
   const Eigen::Vector3d extent = (grid_hi_ - grid_lo_).cwiseMax(1e-9);
   if (!finite.empty()) {
     std::nth_element(finite.begin(), finite.begin() + finite.size() / 2, finite.end());
@@ -97,7 +113,7 @@ LightModel::LightModel(const Scene& scene) : scene_(scene), dirs_(scene.sky.dire
   }
   cell_ = std::max(cell_, extent.maxCoeff() / 128.0);
   if (!extent.allFinite() || !std::isfinite(cell_) || cell_ <= 0.0) {
-    return;  // degenerate coordinates: no grid, every query visits every sphere
+    return false;  // degenerate coordinates: no grid, every query visits every sphere
   }
   auto cells_of = [&](double h) {
     return (extent / h).array().ceil().min(1 << 20).max(1.0).cast<int>().matrix().eval();
@@ -106,22 +122,26 @@ LightModel::LightModel(const Scene& scene) : scene_(scene), dirs_(scene.sky.dire
   for (;;) {
     const Eigen::Vector3i g = cells_of(cell_);
     double entries = 0.0;
-    for (auto i : all_spheres_) {
+    for (const std::uint32_t i : all_spheres_) {
       Eigen::Vector3d a, z;
-      volume_box(i, a, z);
+      sphere_volume_box(i, clamp, a, z);
       entries += ((z - a) / cell_ + Eigen::Vector3d::Constant(2.0)).prod();
     }
     if (g.cast<double>().prod() <= (1 << 21) && entries <= 8e6) break;
     cell_ *= 1.5;
     if (!std::isfinite(cell_)) {
       grid_n_.setZero();
-      return;
+      return false;
     }
   }
   grid_n_ = cells_of(cell_);
-  auto cell_range = [&](std::size_t i, Eigen::Vector3i& c0, Eigen::Vector3i& c1) {
+  return true;
+}
+
+void LightModel::fill_sphere_index(double clamp) {
+  auto cell_range = [&](std::uint32_t i, Eigen::Vector3i& c0, Eigen::Vector3i& c1) {
     Eigen::Vector3d a, z;
-    volume_box(i, a, z);
+    sphere_volume_box(i, clamp, a, z);
     // Clamped as doubles before the cast: a far-away bound would overflow int.
     auto cell_of = [&](double x, int k) {
       const double c = std::floor((x - grid_lo_[k]) / cell_);
@@ -137,6 +157,7 @@ LightModel::LightModel(const Scene& scene) : scene_(scene), dirs_(scene.sky.dire
   auto cell_id = [&](int x, int y, int z) {
     return (static_cast<std::size_t>(z) * grid_n_.y() + y) * grid_n_.x() + x;
   };
+  // Two passes over the volumes (CSR): count per cell, then place.
   for (int pass = 0; pass < 2; ++pass) {
     std::vector<std::uint32_t> fill;
     if (pass == 1) {
@@ -144,7 +165,7 @@ LightModel::LightModel(const Scene& scene) : scene_(scene), dirs_(scene.sky.dire
       cell_items_.resize(cell_start_[cells]);
       fill.assign(cell_start_.begin(), cell_start_.end() - 1);
     }
-    for (auto i : all_spheres_) {
+    for (const std::uint32_t i : all_spheres_) {
       Eigen::Vector3i c0, c1;
       cell_range(i, c0, c1);
       for (int z = c0.z(); z <= c1.z(); ++z) {

@@ -90,6 +90,14 @@ class LightModel {
                    std::span<const BoxSky> boxes, bool all_caps, std::span<const Region> regions,
                    double& integral, Eigen::Vector3d& moment) const;
   void build_fine_directions();
+  // Construction steps: sky weights I(d), shadow-volume radii, the index of sphere volumes.
+  void set_sky_weights();
+  void set_shadow_reaches();
+  void build_sphere_index();
+  bool choose_index_cell(std::vector<double>& finite, double clamp);
+  void fill_sphere_index(double clamp);
+  void sphere_volume_box(std::uint32_t i, double clamp, Eigen::Vector3d& lo,
+                         Eigen::Vector3d& hi) const;
 
   Scene scene_;
   HemisphereDirections dirs_;

@@ -66,15 +66,13 @@ bool leaf_axis(const TreeGraph& tree, NodeId n, Eigen::Vector3d& dir, double& le
 
 int leaf_segments(const MeshOptions& o) { return o.leaf_bend > 0.0 ? o.leaf_bend_segments : 1; }
 
-Plan make_plan(const TreeGraph& tree, const MeshOptions& options) {
-  validate(options);
-  Plan plan;
+// Nodes born after max_birth_time drop out with their subtrees; sets the plan's reference time
+// (the latest kept birth) and says whether every node is a kept internode.
+std::vector<char> kept_nodes(const TreeGraph& tree, const MeshOptions& options, Plan& plan,
+                             bool& all_internodes) {
   const std::size_t n = tree.size();
-  if (n == 0) return plan;
-
-  // Nodes born after max_birth_time drop out with their subtrees.
   std::vector<char> kept(n);
-  bool all_internodes = true;
+  all_internodes = true;
   double latest_birth = -std::numeric_limits<double>::infinity();
   for (NodeId id = 0; id < n; ++id) {
     const NodeId p = tree.parent(id);
@@ -85,45 +83,55 @@ Plan make_plan(const TreeGraph& tree, const MeshOptions& options) {
   plan.reference_time = std::isinf(options.max_birth_time)
                             ? (std::isinf(latest_birth) ? 0.0 : latest_birth)
                             : options.max_birth_time;
+  return kept;
+}
 
-  // Chains run over internodes only: organs hanging on a metamer must not cut its axis into
-  // pieces, so with organs present the chains come from the internode-only forest.
-  std::vector<std::vector<NodeId>> node_chains;
-  std::vector<NodeId> nearest(n, kNoNode);  // nearest kept internode at or above each node
+// Chains run over internodes only: organs hanging on a metamer must not cut its axis into
+// pieces, so with organs present the chains come from the internode-only forest. `nearest` gets
+// the nearest kept internode at or above each node.
+std::vector<std::vector<NodeId>> internode_chains(const TreeGraph& tree,
+                                                  const std::vector<char>& kept,
+                                                  bool all_internodes,
+                                                  std::vector<NodeId>& nearest) {
+  const std::size_t n = tree.size();
+  nearest.assign(n, kNoNode);
   if (all_internodes) {
-    node_chains = chains(tree);
     for (NodeId id = 0; id < n; ++id) nearest[id] = id;
-  } else {
-    TreeGraph forest;
-    std::vector<NodeId> to_tree;
-    std::vector<NodeId> to_forest(n, kNoNode);
-    for (NodeId id = 0; id < n; ++id) {
-      const NodeId p = tree.parent(id);
-      const NodeId above = p == kNoNode ? kNoNode : nearest[p];
-      if (!kept[id] || tree.kind(id) != OrganKind::kInternode) {
-        nearest[id] = above;
-        continue;
-      }
-      if (above == kNoNode && !forest.empty()) {
-        nearest[id] = kNoNode;  // a second internode root under an organ: not meshable as a tube
-        continue;
-      }
-      nearest[id] = id;
-      to_forest[id] = forest.add_node(above == kNoNode ? kNoNode : to_forest[above], NodeData{});
-      to_tree.push_back(id);
-    }
-    node_chains = chains(forest);
-    for (auto& c : node_chains) {
-      for (NodeId& id : c) id = to_tree[id];
-    }
+    return chains(tree);
   }
+  TreeGraph forest;
+  std::vector<NodeId> to_tree;
+  std::vector<NodeId> to_forest(n, kNoNode);
+  for (NodeId id = 0; id < n; ++id) {
+    const NodeId p = tree.parent(id);
+    const NodeId above = p == kNoNode ? kNoNode : nearest[p];
+    if (!kept[id] || tree.kind(id) != OrganKind::kInternode) {
+      nearest[id] = above;
+      continue;
+    }
+    if (above == kNoNode && !forest.empty()) {
+      nearest[id] = kNoNode;  // a second internode root under an organ: not meshable as a tube
+      continue;
+    }
+    nearest[id] = id;
+    to_forest[id] = forest.add_node(above == kNoNode ? kNoNode : to_forest[above], NodeData{});
+    to_tree.push_back(id);
+  }
+  std::vector<std::vector<NodeId>> result = chains(forest);
+  for (auto& c : result) {
+    for (NodeId& id : c) id = to_tree[id];
+  }
+  return result;
+}
 
+// One tube per chain: its segments of non-zero length, its ring sides and its counts.
+void plan_tubes(const TreeGraph& tree, const MeshOptions& options,
+                const std::vector<std::vector<NodeId>>& node_chains,
+                const std::vector<NodeId>& nearest, Plan& plan) {
   std::size_t total = 0;
   for (const auto& c : node_chains) total += c.size();
   plan.segments.reserve(total);
   plan.chains.reserve(node_chains.size());
-  const int leaf_segs = leaf_segments(options);
-  if (!options.bark) node_chains.clear();
   for (const auto& c : node_chains) {
     ChainPlan cp;
     cp.first = plan.segments.size();
@@ -146,27 +154,43 @@ Plan make_plan(const TreeGraph& tree, const MeshOptions& options) {
     }
     plan.chains.push_back(cp);
   }
+}
 
-  if (options.leaves) {
-    Eigen::Vector3d dir;
-    double length = 0.0;
-    for (NodeId id = 0; id < n; ++id) {
-      if (!kept[id] || tree.kind(id) != OrganKind::kLeaf) continue;
-      if (leaf_axis(tree, id, dir, length)) {
-        plan.leaves.push_back(id);
-      } else if (tree.radius(id) > 0.0) {
-        plan.clusters.push_back(id);
-      }
+// Leaf blades (leaves with an axis) and clusters (leaves of length 0 with a radius).
+void plan_foliage(const TreeGraph& tree, const MeshOptions& options, const std::vector<char>& kept,
+                  Plan& plan) {
+  Eigen::Vector3d dir;
+  double length = 0.0;
+  for (NodeId id = 0; id < tree.size(); ++id) {
+    if (!kept[id] || tree.kind(id) != OrganKind::kLeaf) continue;
+    if (leaf_axis(tree, id, dir, length)) {
+      plan.leaves.push_back(id);
+    } else if (tree.radius(id) > 0.0) {
+      plan.clusters.push_back(id);
     }
-    const auto segs = static_cast<std::size_t>(leaf_segs);
-    const FoliageCounts per_cluster = cluster_counts(options.foliage);
-    plan.counts.leaves = plan.leaves.size();
-    plan.counts.clusters = plan.clusters.size();
-    plan.counts.vertices +=
-        plan.leaves.size() * 2 * (segs + 1) + plan.clusters.size() * per_cluster.vertices;
-    plan.counts.triangles +=
-        plan.leaves.size() * 2 * segs + plan.clusters.size() * per_cluster.triangles;
   }
+  const auto segs = static_cast<std::size_t>(leaf_segments(options));
+  const FoliageCounts per_cluster = cluster_counts(options.foliage);
+  plan.counts.leaves = plan.leaves.size();
+  plan.counts.clusters = plan.clusters.size();
+  plan.counts.vertices +=
+      plan.leaves.size() * 2 * (segs + 1) + plan.clusters.size() * per_cluster.vertices;
+  plan.counts.triangles +=
+      plan.leaves.size() * 2 * segs + plan.clusters.size() * per_cluster.triangles;
+}
+
+Plan make_plan(const TreeGraph& tree, const MeshOptions& options) {
+  validate(options);
+  Plan plan;
+  if (tree.size() == 0) return plan;
+  bool all_internodes = true;
+  const std::vector<char> kept = kept_nodes(tree, options, plan, all_internodes);
+  std::vector<NodeId> nearest;
+  std::vector<std::vector<NodeId>> node_chains =
+      internode_chains(tree, kept, all_internodes, nearest);
+  if (!options.bark) node_chains.clear();
+  plan_tubes(tree, options, node_chains, nearest, plan);
+  if (options.leaves) plan_foliage(tree, options, kept, plan);
   if (plan.counts.vertices > std::numeric_limits<std::uint32_t>::max()) {
     throw ValueError("mesh would have " + std::to_string(plan.counts.vertices) +
                      " vertices, more than 32-bit indices allow; raise the edge length");
@@ -267,6 +291,189 @@ double mesh_bytes(const MeshCounts& counts, std::size_t user_attributes) {
   return TriangleMesh::bytes_for(counts.vertices, counts.triangles, 4 + user_attributes);
 }
 
+// Writes the parts of a tree's mesh into the buffers the plan sized: chains of rings, blades and
+// clusters, in the plan's order, so vertex and triangle indices follow from the counts.
+class BranchMeshWriter {
+ public:
+  BranchMeshWriter(const TreeGraph& tree, const MeshOptions& options, const Plan& plan,
+                   TriangleMesh& mesh)
+      : tree_(tree),
+        options_(options),
+        mesh_(mesh),
+        attributes_(tree, mesh, plan.reference_time, options.leaf_bones),
+        tip_v_(tree.size()),
+        tip_t_(tree.size()),
+        has_tip_(tree.size(), 0) {}
+
+  void write_chain(const NodeId* seg, const ChainPlan& cp);
+  void write_leaf(NodeId id);
+  void write_cluster_of(NodeId id, std::mt19937_64& rng) {
+    const std::uint32_t first = v_;
+    write_cluster(tree_.start(id), tree_.radius(id), options_.foliage, rng, mesh_, v_, t_);
+    attributes_.fill(id, first, v_ - first);
+  }
+
+ private:
+  void chain_frames(const NodeId* seg, std::size_t m, const ChainPlan& cp);
+  void write_rings(const NodeId* seg, std::size_t m, int s, const RingTable& table);
+  void write_walls(std::uint32_t first_ring, std::size_t m, int s);
+  void write_cap(const NodeId* seg, std::size_t m, int s, const RingTable& table,
+                 std::uint32_t first_ring, int end);
+
+  const TreeGraph& tree_;
+  const MeshOptions& options_;
+  TriangleMesh& mesh_;
+  AttributeFiller attributes_;
+  std::uint32_t v_ = 0;  // next vertex
+  std::size_t t_ = 0;    // next triangle
+  // Frame (V, T) at the tip ring of each chain, so child chains start from their parent's
+  // frame transported onto their own tangent: frames stay continuous through the whole tree.
+  std::vector<Eigen::Vector3d> tip_v_, tip_t_;
+  std::vector<char> has_tip_;
+  std::vector<RingTable> tables_;
+  std::vector<Eigen::Vector3d> tangents_, normals_v_;
+};
+
+void BranchMeshWriter::write_chain(const NodeId* seg, const ChainPlan& cp) {
+  const std::size_t m = cp.count;
+  const int s = cp.sides;
+  const RingTable& table = ring_table(tables_, s);
+  chain_frames(seg, m, cp);
+  const std::uint32_t first_ring = v_;
+  write_rings(seg, m, s, table);
+  write_walls(first_ring, m, s);
+  if (options_.caps) {
+    for (int end = 0; end < 2; ++end) write_cap(seg, m, s, table, first_ring, end);
+  }
+}
+
+void BranchMeshWriter::chain_frames(const NodeId* seg, std::size_t m, const ChainPlan& cp) {
+  // Ring tangents: segment directions at the ends, bisectors at the joints.
+  tangents_.resize(m + 1);
+  tangents_[0] = segment_vector(tree_, seg[0]).normalized();
+  for (std::size_t j = 1; j < m; ++j) {
+    const Eigen::Vector3d a = segment_vector(tree_, seg[j - 1]).normalized();
+    const Eigen::Vector3d b = segment_vector(tree_, seg[j]).normalized();
+    const Eigen::Vector3d bis = a + b;
+    tangents_[j] = bis.norm() > 1e-9 ? bis.normalized() : b;
+  }
+  tangents_[m] = segment_vector(tree_, seg[m - 1]).normalized();
+  Eigen::Vector3d v0;
+  if (cp.attach != kNoNode && has_tip_[cp.attach]) {
+    v0 = transport(tip_v_[cp.attach], tip_t_[cp.attach], tangents_[0]);
+  } else {
+    v0 = any_perpendicular(tangents_[0]);
+  }
+  normals_v_ = parallel_transport_normals(tangents_, v0);  // Pirk Algorithm 1
+  tip_v_[cp.last] = normals_v_[m];
+  tip_t_[cp.last] = tangents_[m];
+  has_tip_[cp.last] = 1;
+}
+
+void BranchMeshWriter::write_rings(const NodeId* seg, std::size_t m, int s,
+                                   const RingTable& table) {
+  const double base_radius = std::max(tree_.radius(seg[0]), options_.min_radius_m);
+  const double v_scale = 1.0 / (kTwoPi * base_radius);  // square texels on the bark
+  double along = 0.0;
+  for (std::size_t j = 0; j <= m; ++j) {
+    const NodeId node = seg[std::min(j, m - 1)];
+    const Eigen::Vector3d center = j < m ? tree_.start(node) : tree_.end(node);
+    if (j > 0) along += segment_vector(tree_, seg[j - 1]).norm();
+    const double r = std::max(tree_.radius(node), options_.min_radius_m);
+    const Eigen::Vector3f c = center.cast<float>();
+    const Eigen::Vector3f vv = normals_v_[j].cast<float>();
+    const Eigen::Vector3f ww = tangents_[j].cross(normals_v_[j]).cast<float>();
+    const auto rf = static_cast<float>(r);
+    const auto vcoord = static_cast<float>(along * v_scale);
+    for (int k = 0; k <= s; ++k) {
+      const Eigen::Vector3f dir = table.cos[k] * vv + table.sin[k] * ww;
+      mesh_.positions[v_ + k] = c + rf * dir;
+      mesh_.normals[v_ + k] = dir;
+      mesh_.uvs[v_ + k] = {static_cast<float>(k) / static_cast<float>(s), vcoord};
+    }
+    attributes_.fill(node, v_, s + 1);
+    v_ += s + 1;
+  }
+}
+
+void BranchMeshWriter::write_walls(std::uint32_t first_ring, std::size_t m, int s) {
+  // Side walls: (a, b, d) and (a, d, c) face outwards for W = T x V.
+  for (std::size_t j = 0; j < m; ++j) {
+    const std::uint32_t r0 = first_ring + static_cast<std::uint32_t>(j * (s + 1));
+    const std::uint32_t r1 = r0 + s + 1;
+    for (int k = 0; k < s; ++k) {
+      const std::uint32_t a = r0 + k, b = r0 + k + 1, c = r1 + k, d = r1 + k + 1;
+      mesh_.triangles[t_++] = {a, b, d};
+      mesh_.triangles[t_++] = {a, d, c};
+    }
+  }
+}
+
+void BranchMeshWriter::write_cap(const NodeId* seg, std::size_t m, int s, const RingTable& table,
+                                 std::uint32_t first_ring, int end) {
+  const std::uint32_t ring =
+      end == 0 ? first_ring : first_ring + static_cast<std::uint32_t>(m * (s + 1));
+  const NodeId node = end == 0 ? seg[0] : seg[m - 1];
+  const Eigen::Vector3d center = end == 0 ? tree_.start(node) : tree_.end(node);
+  const Eigen::Vector3f n = (end == 0 ? -tangents_[0] : tangents_[m]).cast<float>().normalized();
+  const std::uint32_t hub = v_;
+  mesh_.positions[hub] = center.cast<float>();
+  mesh_.normals[hub] = n;
+  mesh_.uvs[hub] = {0.5f, 0.5f};
+  for (int k = 0; k < s; ++k) {
+    mesh_.positions[hub + 1 + k] = mesh_.positions[ring + k];
+    mesh_.normals[hub + 1 + k] = n;
+    mesh_.uvs[hub + 1 + k] = {0.5f + 0.5f * table.cos[k], 0.5f + 0.5f * table.sin[k]};
+  }
+  attributes_.fill(node, hub, s + 1);
+  for (int k = 0; k < s; ++k) {
+    const std::uint32_t a = hub + 1 + k;
+    const std::uint32_t b = hub + 1 + (k + 1) % s;
+    mesh_.triangles[t_++] =
+        end == 0 ? TriangleMesh::Triangle{hub, b, a} : TriangleMesh::Triangle{hub, a, b};
+  }
+  v_ += s + 1;
+}
+
+void BranchMeshWriter::write_leaf(NodeId id) {
+  const int segs = leaf_segments(options_);
+  const Eigen::Vector3d down(0.0, 0.0, -1.0);
+  Eigen::Vector3d d;
+  double length = 0.0;
+  leaf_axis(tree_, id, d, length);
+  Eigen::Vector3d side = d.cross(Eigen::Vector3d::UnitZ());
+  if (side.norm() < 1e-9) side = d.cross(Eigen::Vector3d::UnitX());
+  side.normalize();
+  const Eigen::Vector3d face = side.cross(d);  // blade normal for counter-clockwise quads
+  // Droop towards the ground, perpendicular to the blade axis (Jaeger 3.1.3 bent leaves).
+  Eigen::Vector3d droop = down - down.dot(d) * d;
+  droop = droop.norm() > 1e-9 ? droop.normalized() : Eigen::Vector3d(-face);
+  const double half_width = 0.5 * options_.leaf_width_ratio * length;
+  const std::uint32_t first = v_;
+  for (int i = 0; i <= segs; ++i) {
+    const double u = static_cast<double>(i) / segs;
+    const Eigen::Vector3d center =
+        tree_.start(id) + u * length * d + options_.leaf_bend * length * u * u * droop;
+    const Eigen::Vector3d axis_tangent = d + 2.0 * options_.leaf_bend * u * droop;
+    const Eigen::Vector3f n = side.cross(axis_tangent).normalized().cast<float>();
+    mesh_.positions[v_] = (center - half_width * side).cast<float>();
+    mesh_.positions[v_ + 1] = (center + half_width * side).cast<float>();
+    mesh_.normals[v_] = n;
+    mesh_.normals[v_ + 1] = n;
+    mesh_.uvs[v_] = {0.0f, static_cast<float>(u)};
+    mesh_.uvs[v_ + 1] = {1.0f, static_cast<float>(u)};
+    v_ += 2;
+  }
+  attributes_.fill(id, first, v_ - first);
+  for (int i = 0; i < segs; ++i) {
+    const std::uint32_t a = first + 2 * i, b = a + 1, c = a + 3, d2 = a + 2;
+    mesh_.materials[t_] = Material::kLeaf;
+    mesh_.triangles[t_++] = {a, b, c};
+    mesh_.materials[t_] = Material::kLeaf;
+    mesh_.triangles[t_++] = {a, c, d2};
+  }
+}
+
 }  // namespace
 
 MeshCounts count_mesh(const TreeGraph& tree, const MeshOptions& options) {
@@ -289,158 +496,13 @@ TriangleMesh mesh_tree(const TreeGraph& tree, const MeshOptions& options) {
   mesh.uvs.resize(plan.counts.vertices);
   mesh.triangles.resize(plan.counts.triangles);
   mesh.materials.resize(plan.counts.triangles, Material::kBark);
-  AttributeFiller attributes(tree, mesh, plan.reference_time, options.leaf_bones);
-
-  Eigen::Vector3f* pos = mesh.positions.data();
-  Eigen::Vector3f* nor = mesh.normals.data();
-  Eigen::Vector2f* uv = mesh.uvs.data();
-  TriangleMesh::Triangle* tri = mesh.triangles.data();
-  std::uint32_t v = 0;  // next vertex
-  std::size_t t = 0;    // next triangle
-
-  // Frame (V, T) at the tip ring of each chain, so child chains start from their parent's
-  // frame transported onto their own tangent: frames stay continuous through the whole tree.
-  std::vector<Eigen::Vector3d> tip_v(tree.size()), tip_t(tree.size());
-  std::vector<char> has_tip(tree.size(), 0);
-  std::vector<RingTable> tables;
-  std::vector<Eigen::Vector3d> tangents, normals_v;
-
+  BranchMeshWriter writer(tree, options, plan, mesh);
   for (const ChainPlan& cp : plan.chains) {
-    if (cp.count == 0) continue;
-    const NodeId* seg = plan.segments.data() + cp.first;
-    const std::size_t m = cp.count;
-    const int s = cp.sides;
-    const RingTable& table = ring_table(tables, s);
-
-    // Ring tangents: segment directions at the ends, bisectors at the joints.
-    tangents.resize(m + 1);
-    tangents[0] = segment_vector(tree, seg[0]).normalized();
-    for (std::size_t j = 1; j < m; ++j) {
-      const Eigen::Vector3d a = segment_vector(tree, seg[j - 1]).normalized();
-      const Eigen::Vector3d b = segment_vector(tree, seg[j]).normalized();
-      const Eigen::Vector3d bis = a + b;
-      tangents[j] = bis.norm() > 1e-9 ? bis.normalized() : b;
-    }
-    tangents[m] = segment_vector(tree, seg[m - 1]).normalized();
-    Eigen::Vector3d v0;
-    if (cp.attach != kNoNode && has_tip[cp.attach]) {
-      v0 = transport(tip_v[cp.attach], tip_t[cp.attach], tangents[0]);
-    } else {
-      v0 = any_perpendicular(tangents[0]);
-    }
-    normals_v = parallel_transport_normals(tangents, v0);  // Pirk Algorithm 1
-    tip_v[cp.last] = normals_v[m];
-    tip_t[cp.last] = tangents[m];
-    has_tip[cp.last] = 1;
-
-    const double base_radius = std::max(tree.radius(seg[0]), options.min_radius_m);
-    const double v_scale = 1.0 / (kTwoPi * base_radius);  // square texels on the bark
-    double along = 0.0;
-    const std::uint32_t first_ring = v;
-    for (std::size_t j = 0; j <= m; ++j) {
-      const NodeId node = seg[std::min(j, m - 1)];
-      const Eigen::Vector3d center = j < m ? tree.start(node) : tree.end(node);
-      if (j > 0) along += segment_vector(tree, seg[j - 1]).norm();
-      const double r = std::max(tree.radius(node), options.min_radius_m);
-      const Eigen::Vector3f c = center.cast<float>();
-      const Eigen::Vector3f vv = normals_v[j].cast<float>();
-      const Eigen::Vector3f ww = tangents[j].cross(normals_v[j]).cast<float>();
-      const auto rf = static_cast<float>(r);
-      const auto vcoord = static_cast<float>(along * v_scale);
-      for (int k = 0; k <= s; ++k) {
-        const Eigen::Vector3f dir = table.cos[k] * vv + table.sin[k] * ww;
-        pos[v + k] = c + rf * dir;
-        nor[v + k] = dir;
-        uv[v + k] = {static_cast<float>(k) / static_cast<float>(s), vcoord};
-      }
-      attributes.fill(node, v, s + 1);
-      v += s + 1;
-    }
-    // Side walls: (a, b, d) and (a, d, c) face outwards for W = T x V.
-    for (std::size_t j = 0; j < m; ++j) {
-      const std::uint32_t r0 = first_ring + static_cast<std::uint32_t>(j * (s + 1));
-      const std::uint32_t r1 = r0 + s + 1;
-      for (int k = 0; k < s; ++k) {
-        const std::uint32_t a = r0 + k, b = r0 + k + 1, c = r1 + k, d = r1 + k + 1;
-        tri[t++] = {a, b, d};
-        tri[t++] = {a, d, c};
-      }
-    }
-    if (options.caps) {
-      for (int end = 0; end < 2; ++end) {
-        const std::uint32_t ring =
-            end == 0 ? first_ring : first_ring + static_cast<std::uint32_t>(m * (s + 1));
-        const NodeId node = end == 0 ? seg[0] : seg[m - 1];
-        const Eigen::Vector3d center = end == 0 ? tree.start(node) : tree.end(node);
-        const Eigen::Vector3f n =
-            (end == 0 ? -tangents[0] : tangents[m]).cast<float>().normalized();
-        const std::uint32_t hub = v;
-        pos[hub] = center.cast<float>();
-        nor[hub] = n;
-        uv[hub] = {0.5f, 0.5f};
-        for (int k = 0; k < s; ++k) {
-          pos[hub + 1 + k] = pos[ring + k];
-          nor[hub + 1 + k] = n;
-          uv[hub + 1 + k] = {0.5f + 0.5f * table.cos[k], 0.5f + 0.5f * table.sin[k]};
-        }
-        attributes.fill(node, hub, s + 1);
-        for (int k = 0; k < s; ++k) {
-          const std::uint32_t a = hub + 1 + k;
-          const std::uint32_t b = hub + 1 + (k + 1) % s;
-          tri[t++] =
-              end == 0 ? TriangleMesh::Triangle{hub, b, a} : TriangleMesh::Triangle{hub, a, b};
-        }
-        v += s + 1;
-      }
-    }
+    if (cp.count > 0) writer.write_chain(plan.segments.data() + cp.first, cp);
   }
-
-  if (!plan.leaves.empty()) {
-    const int segs = leaf_segments(options);
-    const Eigen::Vector3d down(0.0, 0.0, -1.0);
-    for (NodeId id : plan.leaves) {
-      Eigen::Vector3d d;
-      double length = 0.0;
-      leaf_axis(tree, id, d, length);
-      Eigen::Vector3d side = d.cross(Eigen::Vector3d::UnitZ());
-      if (side.norm() < 1e-9) side = d.cross(Eigen::Vector3d::UnitX());
-      side.normalize();
-      const Eigen::Vector3d face = side.cross(d);  // blade normal for counter-clockwise quads
-      // Droop towards the ground, perpendicular to the blade axis (Jaeger 3.1.3 bent leaves).
-      Eigen::Vector3d droop = down - down.dot(d) * d;
-      droop = droop.norm() > 1e-9 ? droop.normalized() : Eigen::Vector3d(-face);
-      const double half_width = 0.5 * options.leaf_width_ratio * length;
-      const std::uint32_t first = v;
-      for (int i = 0; i <= segs; ++i) {
-        const double u = static_cast<double>(i) / segs;
-        const Eigen::Vector3d center =
-            tree.start(id) + u * length * d + options.leaf_bend * length * u * u * droop;
-        const Eigen::Vector3d axis_tangent = d + 2.0 * options.leaf_bend * u * droop;
-        const Eigen::Vector3f n = side.cross(axis_tangent).normalized().cast<float>();
-        pos[v] = (center - half_width * side).cast<float>();
-        pos[v + 1] = (center + half_width * side).cast<float>();
-        nor[v] = n;
-        nor[v + 1] = n;
-        uv[v] = {0.0f, static_cast<float>(u)};
-        uv[v + 1] = {1.0f, static_cast<float>(u)};
-        v += 2;
-      }
-      attributes.fill(id, first, v - first);
-      for (int i = 0; i < segs; ++i) {
-        const std::uint32_t a = first + 2 * i, b = a + 1, c = a + 3, d2 = a + 2;
-        mesh.materials[t] = Material::kLeaf;
-        tri[t++] = {a, b, c};
-        mesh.materials[t] = Material::kLeaf;
-        tri[t++] = {a, c, d2};
-      }
-    }
-  }
+  for (const NodeId id : plan.leaves) writer.write_leaf(id);
   std::mt19937_64 rng(options.foliage_seed);
-  for (NodeId id : plan.clusters) {
-    const std::uint32_t first = v;
-    write_cluster(tree.start(id), tree.radius(id), options.foliage, rng, mesh, v, t);
-    attributes.fill(id, first, v - first);
-  }
+  for (const NodeId id : plan.clusters) writer.write_cluster_of(id, rng);
   return mesh;
 }
 
