@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 
 namespace fspm::environment {
 namespace {
@@ -37,6 +38,12 @@ void ShadowGrid::reset(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
         "shadow grid: the tree spans more than 6 x 10^7 voxels; use a larger "
         "voxel_size_m");
   }
+  // Per voxel: source, shade, stamp, obstacle flag, the kept obstacle sources and the summed-area
+  // table entry.
+  constexpr double kBytesPerVoxel =
+      4 * sizeof(double) + sizeof(std::uint32_t) + sizeof(std::uint8_t);
+  check_memory(1.5 * voxels * kBytesPerVoxel,  // buffers grow by half again
+               "a shadow grid of " + std::to_string(std::llround(voxels)) + " voxels");
   origin_ = first * h;
   n_ = (last - first).cast<int>() + Eigen::Vector3i::Ones();
   const std::size_t total = static_cast<std::size_t>(n_.x()) * n_.y() * n_.z();

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 
 namespace fspm::environment {
 namespace {
@@ -52,6 +53,13 @@ MarkerField::MarkerField(const SpaceColonizationParams& params, const Scene& sce
         "space colonization: the marker region holds more than 10^7 markers; "
         "lower marker_density_per_m3 or the region");
   }
+  // Per marker: its position, the alive flag, the bucket order and key while sorting, the best
+  // distance and the owner.
+  constexpr double kBytesPerMarker = sizeof(Eigen::Vector3d) + 1 + sizeof(std::uint32_t) +
+                                     sizeof(std::pair<std::int64_t, std::uint32_t>) +
+                                     sizeof(double) + sizeof(int);
+  check_memory(1.1 * expected * kBytesPerMarker,
+               "the space-colonization markers (" + std::to_string(std::llround(expected)) + ")");
   const auto count = std::poisson_distribution<std::int64_t>(expected)(rng);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   markers_.reserve(static_cast<std::size_t>(count));

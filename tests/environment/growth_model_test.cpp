@@ -327,10 +327,11 @@ TEST(GrowthModel, LessLightNeverGivesLargerTrees) {
 
 // Each cycle checks the tree it is about to have against the memory limit: at 1 MiB a 10-year
 // tree of type A (about 380 metamers, some 150 kB) grows, a 30-year one (about 11 000 metamers,
-// several MB) stops with MemoryLimitError before it allocates them.
+// several MB) stops with MemoryLimitError before it allocates them. The sky light model keeps no
+// grid, so the metamers are all that is counted.
 TEST(GrowthModel, MemoryLimitStopsAGrowingTreeInBytes) {
   const test_support::ScopedMemoryLimit limit(std::uint64_t{1} << 20);
-  GrowthParams p = growth_preset("A");
+  GrowthParams p = growth_preset("A", BudLightModel::kSky);
   p.years = 10;
   EXPECT_NO_THROW(grow_tree(p));
   p.years = 30;
@@ -339,6 +340,20 @@ TEST(GrowthModel, MemoryLimitStopsAGrowingTreeInBytes) {
     FAIL() << "no error";
   } catch (const MemoryLimitError& e) {
     EXPECT_NE(std::string(e.what()).find("metamers"), std::string::npos) << e.what();
+  }
+}
+
+// The shadow grid of the default light model is counted too: the 10-year tree's grid (about
+// 21 000 voxels of 37 bytes, with half again of room) does not fit in 1 MiB.
+TEST(GrowthModel, MemoryLimitCountsTheShadowGrid) {
+  const test_support::ScopedMemoryLimit limit(std::uint64_t{1} << 20);
+  GrowthParams p = growth_preset("A");
+  p.years = 10;
+  try {
+    grow_tree(p);
+    FAIL() << "no error";
+  } catch (const MemoryLimitError& e) {
+    EXPECT_NE(std::string(e.what()).find("shadow grid"), std::string::npos) << e.what();
   }
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fspm/error.hpp"
+#include "tests/scoped_memory_limit.hpp"
 
 namespace fspm::environment {
 namespace {
@@ -127,6 +128,23 @@ TEST(ShadowGrid, OpaqueRoofDarkensWhatLiesBelow) {
   EXPECT_NEAR(grid.bud_light({0.01, 0.01, 1.85}), 1.0 - 0.075 * 10.75, 1e-9);
   EXPECT_TRUE(grid.obstacle({0.0, 0.0, 2.1}));
   EXPECT_THROW(ShadowGrid(ShadowGridParams{0.0}), ValueError);
+}
+
+// The grid checks its buffers against the memory limit before it allocates them. With the
+// default grid (0.15 m voxels, q_max = 8) a 1 m cube of buds spans (6 + 9 + 9 + 1)^2 x
+// (6 + 9 + 1 + 1) = 10 625 voxels, about 0.6 MB with 37 bytes per voxel and half again of room:
+// inside 1 MiB. A 10 m cube spans 85^2 x 77 = 556 325 voxels, about 31 MB: refused.
+TEST(ShadowGrid, MemoryLimitRefusesAGridTooLargeForIt) {
+  const test_support::ScopedMemoryLimit limit(std::uint64_t{1} << 20);
+  ShadowGrid grid{ShadowGridParams{}};
+  EXPECT_NO_THROW(grid.reset(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()));
+  EXPECT_EQ(grid.dimensions(), Eigen::Vector3i(25, 25, 17));
+  try {
+    grid.reset(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(10.0));
+    FAIL() << "no error";
+  } catch (const MemoryLimitError& e) {
+    EXPECT_NE(std::string(e.what()).find("556325 voxels"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

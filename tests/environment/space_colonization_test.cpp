@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fspm/error.hpp"
+#include "tests/scoped_memory_limit.hpp"
 
 namespace fspm::environment {
 namespace {
@@ -105,6 +106,18 @@ TEST(SpaceColonization, RejectsBadParameters) {
   p = small_region();
   p.marker_density_per_m3 = 1e9;  // more than 10^7 markers
   EXPECT_THROW(MarkerField(p, Scene{}, Eigen::Vector3d::Zero(), rng), ValueError);
+}
+
+// The marker field checks its markers against the memory limit before it draws them: the
+// default region (r = 8 m, h = 14 m) at 30 markers per m^3 holds about 84 000 markers (about
+// 5 MB at 57 bytes each), refused under a 1 MiB limit; the small region (200 per m^3 in
+// r = 1.5 m, h = 3 m: about 4 200 markers, 0.3 MB) is drawn.
+TEST(SpaceColonization, MemoryLimitRefusesTooManyMarkers) {
+  const test_support::ScopedMemoryLimit limit(std::uint64_t{1} << 20);
+  std::mt19937_64 rng(5);
+  EXPECT_NO_THROW(MarkerField(small_region(), Scene{}, Eigen::Vector3d::Zero(), rng));
+  EXPECT_THROW(MarkerField(SpaceColonizationParams{}, Scene{}, Eigen::Vector3d::Zero(), rng),
+               MemoryLimitError);
 }
 
 }  // namespace
