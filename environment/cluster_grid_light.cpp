@@ -62,11 +62,11 @@ void ClusterGridLight::fit(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi)
   sized_ = true;
 }
 
-void ClusterGridLight::evaluate(const std::vector<Eigen::Vector3d>& buds,
-                                const std::vector<std::uint32_t>& bud_start,
-                                const std::vector<Eigen::Vector3d>& centers,
-                                const std::vector<std::uint8_t>& alive, std::vector<double>& light,
-                                std::vector<Eigen::Vector3d>& direction) {
+void ClusterGridLight::evaluate(std::span<const Eigen::Vector3d> buds,
+                                std::span<const std::uint32_t> bud_start,
+                                std::span<const Eigen::Vector3d> centers,
+                                std::span<const std::uint8_t> alive, std::span<double> light,
+                                std::span<Eigen::Vector3d> direction) {
   const std::size_t nc = centers.size();
   Eigen::AlignedBox3d box;
   for (std::size_t c = 0; c < nc; ++c) {

@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "environment/scene.hpp"
@@ -45,10 +46,9 @@ class ClusterGridLight {
 
   // Buds of cluster c: buds[bud_start[c] .. bud_start[c + 1]). Clusters with alive[c] == 0 cast
   // no shade and keep their light. Writes light[c] in [0, 1] and the unit direction[c].
-  void evaluate(const std::vector<Eigen::Vector3d>& buds,
-                const std::vector<std::uint32_t>& bud_start,
-                const std::vector<Eigen::Vector3d>& centers, const std::vector<std::uint8_t>& alive,
-                std::vector<double>& light, std::vector<Eigen::Vector3d>& direction);
+  void evaluate(std::span<const Eigen::Vector3d> buds, std::span<const std::uint32_t> bud_start,
+                std::span<const Eigen::Vector3d> centers, std::span<const std::uint8_t> alive,
+                std::span<double> light, std::span<Eigen::Vector3d> direction);
 
  private:
   void fit(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi);

@@ -95,14 +95,34 @@ class ClusterLightField {
   // (0 outside its shadow volume or below the point's horizon).
   double loss_bound(std::uint32_t j, const Eigen::Vector3d& d) const;
 
-  // State, public for the adaptation's incremental bookkeeping.
-  std::vector<Eigen::Vector3d> center_;
-  std::vector<double> radius_, gamma_, reach2_, reach_;
-  std::vector<std::uint8_t> alive_;
-  std::vector<double> light_;
-  std::vector<Eigen::Vector3d> direction_;
-  std::vector<std::vector<ClusterNeighbor>> neighbors_;
-  std::size_t evaluations_ = 0;  // diagnostics
+  // Per-cluster state, read by the adaptation's incremental bookkeeping.
+  const Eigen::Vector3d& center(std::uint32_t c) const { return center_[c]; }
+  bool alive(std::uint32_t c) const { return alive_[c] != 0; }
+  double light(std::uint32_t c) const { return light_[c]; }
+  const Eigen::Vector3d& direction(std::uint32_t c) const { return direction_[c]; }
+  double radius(std::uint32_t c) const { return radius_[c]; }
+  // Squared shadow reach of c (negative: it shades nothing).
+  double reach2(std::uint32_t c) const { return reach2_[c]; }
+  std::span<const Eigen::Vector3d> centers() const { return center_; }
+  std::span<const std::uint8_t> alive_flags() const { return alive_; }
+  std::span<const double> lights() const { return light_; }
+  std::span<const Eigen::Vector3d> directions() const { return direction_; }
+
+  // Moves c's centre; call mark_moved() once a step's moves are done.
+  void move(std::uint32_t c, const Eigen::Vector3d& to) { center_[c] = to; }
+  // Removes c (pruned): it no longer shades and is no longer evaluated.
+  void remove(std::uint32_t c) { alive_[c] = 0; }
+  // Light and direction of c given from outside (the analysis' cache, the shadow grid); counted as
+  // an evaluation when `evaluated`.
+  void set_light(std::uint32_t c, double light, const Eigen::Vector3d& direction,
+                 bool evaluated = false) {
+    light_[c] = light;
+    direction_[c] = direction;
+    if (evaluated) ++evaluations_;
+  }
+  // The neighbour lists built by evaluate(), moved out (the field keeps empty lists).
+  std::vector<std::vector<ClusterNeighbor>> take_neighbor_lists() { return std::move(neighbors_); }
+  std::size_t evaluations() const { return evaluations_; }  // diagnostics
 
   const Eigen::Vector3d& open_direction() const { return open_direction_; }
 
@@ -116,6 +136,13 @@ class ClusterLightField {
   void obstacle_visibility(const Eigen::Vector3d& p, std::vector<float>& vis,
                            double& distance) const;
 
+  std::vector<Eigen::Vector3d> center_;
+  std::vector<double> radius_, gamma_, reach2_, reach_;
+  std::vector<std::uint8_t> alive_;
+  std::vector<double> light_;
+  std::vector<Eigen::Vector3d> direction_;
+  std::vector<std::vector<ClusterNeighbor>> neighbors_;
+  std::size_t evaluations_ = 0;
   HemisphereDirections dirs_;
   std::vector<double> weight_;
   double weight_sum_ = 0.0;

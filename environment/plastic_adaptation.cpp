@@ -128,6 +128,8 @@ class Engine {
   // Shadow-grid light (ClusterLightModel::kShadowGrid): every cluster's buds, as analysed and as
   // moved, refilled into the grid after every step that moved or pruned something.
   std::unique_ptr<ClusterGridLight> grid_;
+  std::vector<double> grid_light_;  // the grid's light and direction before the sky's share
+  std::vector<Eigen::Vector3d> grid_direction_;
   bool has_solids_ = false;  // the scene has a solid box, sphere or mesh
   std::vector<Eigen::Vector3d> buds0_, buds_;
   std::vector<std::uint32_t> bud_start_, bud_cluster_;
@@ -207,8 +209,7 @@ Engine::Engine(const std::vector<const TreeGraph*>& trees,
                   a.params.light_significance != runs_.front().a->params.light_significance;
     for (std::size_t c = 0; c < a.clusters.size(); ++c) {
       const std::uint32_t g = r.first_cluster + static_cast<std::uint32_t>(c);
-      field_.light_[g] = a.cluster_light[c];
-      field_.direction_[g] = a.cluster_direction[c];
+      field_.set_light(g, a.cluster_light[c], a.cluster_direction[c]);
       field_.share_list(g, &a.cluster_neighbors[c], r.first_cluster);
     }
   }
@@ -228,7 +229,7 @@ Engine::Engine(const std::vector<const TreeGraph*>& trees,
     const double reach = [&] {
       double m = 0.0;
       for (std::uint32_t c = 0; c < nc; ++c) {
-        if (field_.reach2_[c] >= 0.0) m = std::max(m, std::sqrt(field_.reach2_[c]));
+        if (field_.reach2(c) >= 0.0) m = std::max(m, std::sqrt(field_.reach2(c)));
       }
       return m + ClusterLightField::kListMargin_m;
     }();
@@ -251,7 +252,6 @@ Engine::Engine(const std::vector<const TreeGraph*>& trees,
 
 void Engine::setup_grid() {
   const std::size_t nc = field_.size();
-  field_.light_.assign(nc, 1.0);
   bud_start_.assign(1, 0);
   for (TreeRun& r : runs_) {
     setup_tree(r);
@@ -274,8 +274,10 @@ void Engine::setup_grid() {
   if (!field_.has_obstacles() && runs_.size() == 1 &&
       (runs_.front().a->brightest - brightest).norm() <= 1e-12) {
     // The analysis' own light: nothing differs from the open scene until something moves.
-    field_.light_ = runs_.front().a->cluster_light;
-    field_.direction_ = runs_.front().a->cluster_direction;
+    const TreeAnalysis& a = *runs_.front().a;
+    for (std::uint32_t c = 0; c < nc; ++c) {
+      field_.set_light(c, a.cluster_light[c], a.cluster_direction[c]);
+    }
     grid_epoch_ = epoch_;
     return;
   }
@@ -295,15 +297,17 @@ void Engine::regrid() {
     const NodeId anchor = r.a->clusters[g - r.first_cluster].anchor;
     if (r.stamp[anchor] >= 0) buds_[b] = r.F[anchor](buds0_[b]);
   }
-  grid_->evaluate(buds_, bud_start_, field_.center_, field_.alive_, field_.light_,
-                  field_.direction_);
+  grid_light_.assign(field_.lights().begin(), field_.lights().end());
+  grid_direction_.assign(field_.directions().begin(), field_.directions().end());
+  grid_->evaluate(buds_, bud_start_, field_.centers(), field_.alive_flags(), grid_light_,
+                  grid_direction_);
   for (std::uint32_t c = 0; c < field_.size(); ++c) {
-    if (!field_.alive_[c]) continue;
+    if (!field_.alive(c)) continue;
     if (field_.obstacles_stale(c)) field_.update_obstacles(c);
     Eigen::Vector3d sky_direction;
     const double sky = field_.sky_light(c, sky_direction);
-    combine_sky_and_grid(sky, sky_direction, field_.light_[c], field_.direction_[c]);
-    ++field_.evaluations_;
+    combine_sky_and_grid(sky, sky_direction, grid_light_[c], grid_direction_[c]);
+    field_.set_light(c, grid_light_[c], grid_direction_[c], true);
   }
   ++epoch_;
   grid_epoch_ = epoch_;
@@ -376,10 +380,10 @@ void Engine::aggregate(TreeRun& r) {
   }
   for (std::uint32_t c = 0; c < a.clusters.size(); ++c) {
     const std::uint32_t g = r.first_cluster + c;
-    if (!field_.alive_[g]) continue;
-    const double z = cluster_resources(a.clusters[c].radius_m, field_.light_[g]);
+    if (!field_.alive(g)) continue;
+    const double z = cluster_resources(a.clusters[c].radius_m, field_.light(g));
     r.zeta[a.clusters[c].anchor] += z;
-    r.light_sum[a.clusters[c].anchor] += z * field_.direction_[g];
+    r.light_sum[a.clusters[c].anchor] += z * field_.direction(g);
   }
   for (auto it = r.skeleton.rbegin(); it != r.skeleton.rend(); ++it) {
     const NodeId i = *it;
@@ -447,12 +451,12 @@ void Engine::bend(TreeRun& r, int level, int step) {
   for (std::uint32_t c = 0; c < a.clusters.size(); ++c) {
     const NodeId anchor = a.clusters[c].anchor;
     const std::uint32_t gc = r.first_cluster + c;
-    if (r.stamp[anchor] != step || !field_.alive_[gc]) continue;
+    if (r.stamp[anchor] != step || !field_.alive(gc)) continue;
     const Eigen::Vector3d moved_to = r.F[anchor](center0_[gc]);
-    const double step = (moved_to - field_.center_[gc]).norm();
+    const double step = (moved_to - field_.center(gc)).norm();
     path_[gc] += step;
     step_max_ = std::max(step_max_, step);
-    field_.center_[gc] = moved_to;
+    field_.move(gc, moved_to);
     cgroup_[gc] = r.group[anchor];
     moved_.push_back(gc);
   }
@@ -486,8 +490,8 @@ void Engine::prune_subtree(TreeRun& r, NodeId s) {
     ++epoch_;
     for (std::uint32_t j = r.cluster_start[m]; j < r.cluster_start[m + 1]; ++j) {
       const std::uint32_t gc = r.first_cluster + r.cluster_items[j];
-      if (!field_.alive_[gc]) continue;
-      field_.alive_[gc] = 0;
+      if (!field_.alive(gc)) continue;
+      field_.remove(gc);
       vanished_.push_back(gc);
     }
   }
@@ -506,7 +510,7 @@ void Engine::prune_blocked(TreeRun& r, int step) {
 }
 
 void Engine::mark_dirty(std::uint32_t c) {
-  if (dirty_[c] || !field_.alive_[c]) return;
+  if (dirty_[c] || !field_.alive(c)) return;
   dirty_[c] = 1;
   dirty_list_.push_back(c);
 }
@@ -519,10 +523,10 @@ void Engine::check_moved() {
   // distance) may have changed c's light by up to the share it can take (loss_bound); c is
   // re-evaluated once these possible changes reach kLightChange.
   const auto drift = [&](std::uint32_t c, std::uint32_t j, const ClusterNeighbor& e) {
-    const Eigen::Vector3d now = field_.center_[j] - field_.center_[c];
+    const Eigen::Vector3d now = field_.center(j) - field_.center(c);
     const Eigen::Vector3d then = e.relative.cast<double>();
     // Cheap test first: j shades c neither now nor then (out of reach or below the horizon).
-    const double r_j = field_.radius_[j], reach2 = field_.reach2_[j];
+    const double r_j = field_.radius(j), reach2 = field_.reach2(j);
     if ((now.z() + r_j <= 0.0 || now.squaredNorm() > reach2) &&
         (then.z() + r_j <= 0.0 || then.squaredNorm() > reach2)) {
       return;
@@ -552,11 +556,11 @@ void Engine::check_moved() {
   double own_max = 0.0, oldest = all_path_;
   for (const std::uint32_t c : moved_) own_max = std::max(own_max, path_[c] - eval_path_[c]);
   for (std::uint32_t c = 0; c < field_.size(); ++c) {
-    if (field_.alive_[c]) oldest = std::min(oldest, eval_all_path_[c]);
+    if (field_.alive(c)) oldest = std::min(oldest, eval_all_path_[c]);
   }
   const bool any_drift = own_max + (all_path_ - oldest) > kDriftTolerance_m;
   for (const std::uint32_t c : moved_) {
-    if (!field_.alive_[c]) continue;
+    if (!field_.alive(c)) continue;
     if (std::abs(anchor_rotation(c).dot(eval_q_[c])) < cos_half_turn) mark_dirty(c);
     if (field_.obstacles_stale(c) && field_.update_obstacles(c)) mark_dirty(c);
     if (!any_drift) continue;
@@ -564,7 +568,7 @@ void Engine::check_moved() {
     const ClusterLightField::ListView view = field_.neighbors(c);
     for (const ClusterNeighbor& e : view) {
       const std::uint32_t j = e.index + view.offset;
-      if (!field_.alive_[j] || cgroup_[j] == cgroup_[c]) continue;
+      if (!field_.alive(j) || cgroup_[j] == cgroup_[c]) continue;
       if (cgroup_[j] == kStill && !check_[j] && may_drift(j)) {
         check_[j] = 1;
         check_list_.push_back(j);
@@ -578,7 +582,7 @@ void Engine::check_moved() {
     const ClusterLightField::ListView view = field_.neighbors(c);
     for (const ClusterNeighbor& e : view) {
       const std::uint32_t j = e.index + view.offset;
-      if (!field_.alive_[j] || cgroup_[j] == kStill) continue;
+      if (!field_.alive(j) || cgroup_[j] == kStill) continue;
       drift(c, j, e);
       if (dirty_[c]) break;
     }
@@ -592,8 +596,8 @@ void Engine::check_moved() {
     const ClusterLightField::ListView view = field_.neighbors(c);
     for (const ClusterNeighbor& e : view) {
       const std::uint32_t j = e.index + view.offset;
-      if (!field_.alive_[j] || dirty_[j]) continue;
-      lost_[j] += field_.loss_bound(c, field_.center_[j] - field_.center_[c]);
+      if (!field_.alive(j) || dirty_[j]) continue;
+      lost_[j] += field_.loss_bound(c, field_.center(j) - field_.center(c));
       if (lost_[j] >= kLightChange) mark_dirty(j);
     }
   }
@@ -622,7 +626,7 @@ void Engine::refresh() {
   field_.rebuild_grid();
   for (const std::uint32_t c : dirty_list_) {
     dirty_[c] = 0;
-    if (!field_.alive_[c]) continue;
+    if (!field_.alive(c)) continue;
     field_.evaluate(c, relist_[c] != 0);
     relist_[c] = 0;
     eval_q_[c] = anchor_rotation(c);
@@ -691,17 +695,17 @@ void Engine::finish(TreeRun& r) {
   std::vector<std::uint8_t> alive(a.clusters.size(), 0);
   for (std::uint32_t c = 0; c < a.clusters.size(); ++c) {
     const std::uint32_t g = r.first_cluster + c;
-    if (!field_.alive_[g]) continue;
+    if (!field_.alive(g)) continue;
     alive[c] = 1;
     LeafCluster lc = a.clusters[c];
-    lc.center = field_.center_[g];
+    lc.center = field_.center(g);
     std::size_t count = 0;
     for (const NodeId m : lc.nodes) count += pruned[m] == 0;
     lc.translucency = std::pow(a.clusters[c].translucency,
                                static_cast<double>(count) / static_cast<double>(lc.nodes.size()));
     // Pirk eq. 4.13 with rho(i) = i: the density scales with the light against the analysis.
     const double i0 = a.cluster_light[c];
-    lc.density = i0 > 1e-9 ? std::clamp(field_.light_[g] / i0, 0.0, 2.0) : 1.0;
+    lc.density = i0 > 1e-9 ? std::clamp(field_.light(g) / i0, 0.0, 2.0) : 1.0;
     res.clusters.push_back(std::move(lc));
   }
   // Clusters that ended up in a solid obstacle are pushed out (Pirk Fig. 4.6).
@@ -741,7 +745,7 @@ void Engine::finish(TreeRun& r) {
     res.mean_tip_displacement_m /= static_cast<double>(res.tips);
     res.mean_tip_shift /= static_cast<double>(res.tips);
   }
-  res.light_evaluations = field_.evaluations_;
+  res.light_evaluations = field_.evaluations();
 }
 
 }  // namespace

@@ -160,9 +160,9 @@ void sky_light(TreeAnalysis& a, ClusterLightField& field) {
   field.set_clusters(centers, radii, gammas);
   field.rebuild_grid();
   for (std::uint32_t c = 0; c < a.clusters.size(); ++c) field.evaluate(c);
-  a.cluster_light = field.light_;
-  a.cluster_direction = field.direction_;
-  a.cluster_neighbors = std::move(field.neighbors_);
+  a.cluster_light.assign(field.lights().begin(), field.lights().end());
+  a.cluster_direction.assign(field.directions().begin(), field.directions().end());
+  a.cluster_neighbors = field.take_neighbor_lists();
 }
 
 // The clusters' buds alone in the shadow grid of an open scene.

@@ -256,14 +256,14 @@ TEST(ClusterLight, ObstacleVisibilityIsCachedUntilTheClusterMoves) {
   field.set_obstacles(scene);
   EXPECT_TRUE(field.update_obstacles(0));
   field.evaluate(0);
-  EXPECT_LT(field.light_[0], 0.05);
+  EXPECT_LT(field.light(0), 0.05);
   EXPECT_FALSE(field.obstacles_stale(0));
-  field.center_[0] = {0, 0, 7};  // above the roof
+  field.move(0, {0, 0, 7});  // above the roof
   EXPECT_TRUE(field.obstacles_stale(0));
   EXPECT_TRUE(field.update_obstacles(0));
   field.mark_moved();
   field.evaluate(0);
-  EXPECT_DOUBLE_EQ(field.light_[0], 1.0);
+  EXPECT_DOUBLE_EQ(field.light(0), 1.0);
 }
 
 }  // namespace
