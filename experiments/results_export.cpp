@@ -32,28 +32,6 @@ std::string number_cell(double v) {
   return out;
 }
 
-json value_json(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-
-json run_json(const RunRecord& r) {
-  json params = json::object();
-  for (const auto& [name, value] : r.parameters) {
-    std::visit([&](const auto& v) { params[name] = v; }, value);
-  }
-  json metrics = json::object();
-  for (const auto& [name, v] : r.metrics) metrics[name] = value_json(v);
-  return {{"run", r.run},
-          {"point", r.point},
-          {"replicate", r.replicate},
-          {"seed", r.seed},
-          {"status", run_status_name(r.status)},
-          {"seconds", r.seconds},
-          {"parameters", params},
-          {"metrics", metrics},
-          {"error", r.error.empty() ? json(nullptr) : json(r.error)},
-          {"files", r.files},
-          {"finished_at", r.finished_at}};
-}
-
 struct Stats {
   std::size_t count = 0;
   double sum = 0.0;
@@ -134,7 +112,7 @@ std::string results_json(const ExperimentInfo& info, const std::vector<RunRecord
               {"swept", info.swept},
               {"metrics", info.metrics}};
   json rows = json::array();
-  for (const RunRecord& r : runs) rows.push_back(run_json(r));
+  for (const RunRecord& r : runs) rows.push_back(run_record_json(r));
   doc["runs"] = std::move(rows);
   return doc.dump(2) + "\n";
 }

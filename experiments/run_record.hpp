@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
@@ -30,5 +31,11 @@ struct RunRecord {
   std::vector<std::string> files;         // kept files, relative to the output directory
   std::string finished_at;                // UTC, ISO 8601
 };
+
+// The record as one JSON object, the one form of a row outside the database (the export's rows
+// and the rows the MPI ranks send): NaN metrics and an empty error are null. And back; throws
+// nlohmann::json's errors for a malformed object.
+nlohmann::json run_record_json(const RunRecord& record);
+RunRecord run_record_from_json(const nlohmann::json& j);
 
 }  // namespace fspm::experiments
