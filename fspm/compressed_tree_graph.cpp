@@ -16,6 +16,9 @@ namespace {
 
 constexpr char kMagic[8] = {'F', 'S', 'P', 'M', 'C', 'T', 'R', 'E'};
 constexpr std::uint32_t kVersion = 1;
+// Version 2: version 1 followed by the turtle geometry (CtreeGeometry).
+constexpr std::uint32_t kGeometryVersion = 2;
+constexpr std::uint8_t kGroupKind = 255;
 
 // Topological order of the records (referrers before referred), or ValueError on a cycle.
 std::vector<RecordId> topological_order(std::span<const CompressedRecord> records,
@@ -155,6 +158,44 @@ void CompressedTreeGraph::validate() const {
     }
   }
   (void)topological_order(records_, axillary_refs_);
+  if (has_geometry()) validate_geometry();
+}
+
+void CompressedTreeGraph::validate_geometry() const {
+  const CtreeGeometry& g = geometry;
+  const std::size_t n = records_.size();
+  auto fail = [](const std::string& what) {
+    throw ValueError("compressed tree graph geometry: " + what);
+  };
+  if (g.records.size() != n) fail("one record geometry per record expected");
+  if (g.axillary_placements.size() != axillary_refs_.size()) {
+    fail("one placement index per axillary reference expected");
+  }
+  for (const auto& [name, column] : g.attributes) {
+    if (column.size() != n) fail("attribute '" + name + "' needs one value per record");
+  }
+  if (root_ != kNoRecord && !g.records[root_].group) fail("the root must be a group record");
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& r = records_[i];
+    std::size_t organs = 0;
+    if (r.successor != kNoRecord && !g.records[r.successor].group) ++organs;
+    for (std::uint32_t k = 0; k < r.axillary_count; ++k) {
+      const std::uint32_t p = g.axillary_placements[r.axillary_begin + k];
+      const RecordId a = axillary_refs_[r.axillary_begin + k];
+      if (p != kNoPlacement && p >= g.placements.size()) {
+        fail("record " + std::to_string(i) + " refers to a missing placement");
+      }
+      if (!g.records[a].group) {
+        ++organs;
+        if (p != kNoPlacement) {
+          fail("record " + std::to_string(i) + " places a record that is not a group");
+        }
+      }
+    }
+    if (g.records[i].group && organs > 1) {
+      fail("group record " + std::to_string(i) + " has more than one member that is not a group");
+    }
+  }
 }
 
 std::uint64_t CompressedTreeGraph::compute_multiplicities() {
@@ -216,7 +257,32 @@ TreeGraph CompressedTreeGraph::expand(double max_birth) const {
   return tree;
 }
 
+bool CtreeGeometry::operator==(const CtreeGeometry& other) const {
+  if (records.size() != other.records.size() || placements.size() != other.placements.size() ||
+      axillary_placements != other.axillary_placements || attributes != other.attributes) {
+    return false;
+  }
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const auto& a = records[i];
+    const auto& b = other.records[i];
+    if (a.group != b.group || a.kind != b.kind || a.order != b.order || a.start != b.start ||
+        a.end != b.end || a.direction != b.direction || a.length != b.length ||
+        a.radius != b.radius) {
+      return false;
+    }
+  }
+  for (std::size_t i = 0; i < placements.size(); ++i) {
+    const auto& a = placements[i];
+    const auto& b = other.placements[i];
+    if (a.rotation != b.rotation || a.translation != b.translation || a.order != b.order) {
+      return false;
+    }
+  }
+  return true;
+}
+
 bool CompressedTreeGraph::operator==(const CompressedTreeGraph& other) const {
+  if (geometry != other.geometry) return false;
   if (records_.size() != other.records_.size() || axillary_refs_ != other.axillary_refs_ ||
       root_ != other.root_ || metadata != other.metadata ||
       std::bit_cast<std::uint64_t>(final_age) != std::bit_cast<std::uint64_t>(other.final_age) ||
@@ -237,11 +303,50 @@ bool CompressedTreeGraph::operator==(const CompressedTreeGraph& other) const {
   return true;
 }
 
+namespace {
+
+constexpr std::size_t kPlacementBytes = 13 * 8;
+constexpr std::size_t kRecordGeometryBytes = 4 + 11 * 8;
+
+void put_vector(std::string& out, const Eigen::Vector3d& v) {
+  for (int i = 0; i < 3; ++i) put<double>(out, v[i]);
+}
+
+void encode_geometry(std::string& out, const CtreeGeometry& g) {
+  put<std::uint32_t>(out, static_cast<std::uint32_t>(g.placements.size()));
+  put<std::uint32_t>(out, static_cast<std::uint32_t>(g.attributes.size()));
+  for (const Placement& p : g.placements) {
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) put<double>(out, p.rotation(r, c));
+    }
+    put_vector(out, p.translation);
+    put<double>(out, p.order);
+  }
+  for (const RecordGeometry& r : g.records) {
+    put<std::uint8_t>(out, r.group ? kGroupKind : static_cast<std::uint8_t>(r.kind));
+    put<std::uint8_t>(out, 0);
+    put<std::uint16_t>(out, r.order);
+    put_vector(out, r.start);
+    put_vector(out, r.end);
+    put_vector(out, r.direction);
+    put<double>(out, r.length);
+    put<double>(out, r.radius);
+  }
+  for (std::uint32_t p : g.axillary_placements) put<std::uint32_t>(out, p);
+  for (const auto& [name, column] : g.attributes) {
+    put<std::uint16_t>(out, static_cast<std::uint16_t>(name.size()));
+    put_bytes(out, name.data(), name.size());
+    for (double v : column) put<double>(out, v);
+  }
+}
+
+}  // namespace
+
 std::string encode_ctree(const CompressedTreeGraph& graph) {
   std::string out;
   out.reserve(48 + graph.size() * 52 + graph.axillary_refs().size() * 4);
   put_bytes(out, kMagic, sizeof(kMagic));
-  put<std::uint32_t>(out, kVersion);
+  put<std::uint32_t>(out, graph.has_geometry() ? kGeometryVersion : kVersion);
   put<std::uint32_t>(out, static_cast<std::uint32_t>(graph.size()));
   put<std::uint32_t>(out, static_cast<std::uint32_t>(graph.axillary_refs().size()));
   put<std::uint32_t>(out, graph.root());
@@ -266,6 +371,7 @@ std::string encode_ctree(const CompressedTreeGraph& graph) {
     put<std::uint64_t>(out, r.multiplicity);
   }
   for (RecordId a : graph.axillary_refs()) put<std::uint32_t>(out, a);
+  if (graph.has_geometry()) encode_geometry(out, graph.geometry);
   return out;
 }
 
@@ -280,6 +386,77 @@ std::string number_text(double value) {
   return out;
 }
 
+Eigen::Vector3d get_vector(Reader& in, const char* what) {
+  Eigen::Vector3d v;
+  for (int i = 0; i < 3; ++i) v[i] = in.get<double>(what);
+  if (!v.allFinite()) in.fail(std::string(what) + " is nan or infinite, expected finite numbers");
+  return v;
+}
+
+double get_finite(Reader& in, const char* what) {
+  const double v = in.get<double>(what);
+  if (!std::isfinite(v))
+    in.fail(std::string(what) + " is nan or infinite, expected a finite number");
+  return v;
+}
+
+// The geometry section of a version 2 file, after the axillary references.
+CtreeGeometry decode_geometry(Reader& in, std::uint32_t n, std::uint32_t n_refs) {
+  CtreeGeometry g;
+  const auto n_placements = in.get<std::uint32_t>("the placement count");
+  const auto n_attributes = in.get<std::uint32_t>("the attribute count");
+  const std::uint64_t fixed = static_cast<std::uint64_t>(n_placements) * kPlacementBytes +
+                              static_cast<std::uint64_t>(n) * kRecordGeometryBytes +
+                              static_cast<std::uint64_t>(n_refs) * 4;
+  if (in.remaining() < fixed) {
+    in.fail("truncated .ctree geometry: expected " + std::to_string(n_placements) +
+            " placements and the geometry of " + std::to_string(n) + " records");
+  }
+  g.placements.resize(n_placements);
+  for (Placement& p : g.placements) {
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) p.rotation(r, c) = get_finite(in, "a placement rotation");
+    }
+    p.translation = get_vector(in, "a placement translation");
+    p.order = get_finite(in, "a placement order");
+    // Rigid transforms only: anything else would shear the substructures it places.
+    if (!(p.rotation.transpose() * p.rotation).isApprox(Eigen::Matrix3d::Identity(), 1e-6)) {
+      in.fail("a placement rotation is not orthonormal");
+    }
+  }
+  g.records.resize(n);
+  for (RecordGeometry& r : g.records) {
+    const auto kind = in.get<std::uint8_t>("an organ kind");
+    if (kind != kGroupKind && kind > static_cast<std::uint8_t>(OrganKind::kBud)) {
+      in.fail("invalid organ kind " + std::to_string(kind) +
+              " (expected 0..3, or 255 for a group)");
+    }
+    r.group = kind == kGroupKind;
+    r.kind = r.group ? OrganKind::kInternode : static_cast<OrganKind>(kind);
+    (void)in.get<std::uint8_t>("a reserved byte");
+    r.order = in.get<std::uint16_t>("an order");
+    r.start = get_vector(in, "a start point");
+    r.end = get_vector(in, "an end point");
+    r.direction = get_vector(in, "a direction");
+    r.length = get_finite(in, "a length");
+    r.radius = get_finite(in, "a radius");
+  }
+  g.axillary_placements.resize(n_refs);
+  for (auto& p : g.axillary_placements) p = in.get<std::uint32_t>("a placement index");
+  for (std::uint32_t i = 0; i < n_attributes; ++i) {
+    const auto len = in.get<std::uint16_t>("an attribute name length");
+    std::string name(in.take(len, "an attribute name"));
+    if (in.remaining() < static_cast<std::uint64_t>(n) * 8) {
+      in.fail("truncated .ctree geometry: expected the values of attribute '" + name + "'");
+    }
+    auto& column = g.attributes[name];
+    column.resize(n);
+    for (double& v : column) v = get_finite(in, "an attribute value");
+  }
+  if (in.remaining() != 0) in.fail("unexpected bytes after the geometry");
+  return g;
+}
+
 }  // namespace
 
 CompressedTreeGraph decode_ctree(std::string_view bytes, const std::string& source_name) {
@@ -288,9 +465,9 @@ CompressedTreeGraph decode_ctree(std::string_view bytes, const std::string& sour
     throw ParseError("not a .ctree file (magic FSPMCTRE expected)", source_name);
   }
   const auto version = in.get<std::uint32_t>("the version");
-  if (version != kVersion) {
+  if (version != kVersion && version != kGeometryVersion) {
     throw ParseError("unsupported .ctree version " + std::to_string(version) + " (expected " +
-                         std::to_string(kVersion) + ")",
+                         std::to_string(kVersion) + " or " + std::to_string(kGeometryVersion) + ")",
                      source_name);
   }
   const auto n = in.get<std::uint32_t>("the record count");
@@ -313,8 +490,9 @@ CompressedTreeGraph decode_ctree(std::string_view bytes, const std::string& sour
     std::string key(in.take(len, "a metadata key"));
     g.metadata[key] = in.get<double>("a metadata value");
   }
-  if (in.remaining() !=
-      static_cast<std::uint64_t>(n) * 52 + static_cast<std::uint64_t>(n_refs) * 4) {
+  const std::uint64_t table_bytes =
+      static_cast<std::uint64_t>(n) * 52 + static_cast<std::uint64_t>(n_refs) * 4;
+  if (version == kVersion ? in.remaining() != table_bytes : in.remaining() < table_bytes + 8) {
     in.fail("size does not match " + std::to_string(n) + " records and " + std::to_string(n_refs) +
             " axillary references");
   }
@@ -343,6 +521,7 @@ CompressedTreeGraph decode_ctree(std::string_view bytes, const std::string& sour
   if (begin != n_refs) in.fail("axillary counts do not add up to the reference count");
   std::vector<RecordId> refs(n_refs);
   for (auto& a : refs) a = in.get<std::uint32_t>("an axillary reference");
+  if (version == kGeometryVersion) g.geometry = decode_geometry(in, n, n_refs);
   for (const auto& r : records) {
     const auto ax = std::span<const RecordId>(refs).subspan(r.axillary_begin, r.axillary_count);
     g.add_record(r, ax);

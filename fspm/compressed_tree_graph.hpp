@@ -40,6 +40,45 @@ struct CompressedRecord {
   std::uint64_t multiplicity = 0;  // filled by compute_multiplicities()
 };
 
+inline constexpr std::uint32_t kNoPlacement = std::numeric_limits<std::uint32_t>::max();
+
+// What a record draws when the graph carries turtle geometry (.ctree version 2): an organ in the
+// frame of the group it hangs from, or nothing (a group record: a substructure whose members,
+// its successor and axillaries, hang from what the group hangs from).
+struct RecordGeometry {
+  bool group = false;
+  OrganKind kind = OrganKind::kInternode;
+  std::uint16_t order = 0;  // branching order within its group; placements add theirs
+  Eigen::Vector3d start = Eigen::Vector3d::Zero();
+  Eigen::Vector3d end = Eigen::Vector3d::Zero();
+  Eigen::Vector3d direction = Eigen::Vector3d::Zero();
+  double length = 0.0;
+  double radius = 0.0;
+};
+
+// A rigid transform placing a group in the frame of its referrer (Jaeger 3.1.2), and the
+// branching order it adds.
+struct Placement {
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // group frame -> referrer frame
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
+  double order = 0.0;
+};
+
+// Turtle geometry of a drawn plant (L-systems), absent from GreenLab graphs, whose geometry comes
+// from per-physiological-age numbers. Empty `records`: no geometry.
+struct CtreeGeometry {
+  std::vector<RecordGeometry> records;  // one per record
+  std::vector<Placement> placements;
+  // One per axillary reference (CompressedTreeGraph::axillary_refs()): index into placements,
+  // or kNoPlacement for the referrer's own frame. Successors are always in the referrer's frame.
+  std::vector<std::uint32_t> axillary_placements;
+  // Per-record values of named node attributes (color_index, leaf_area, ...).
+  std::map<std::string, std::vector<double>> attributes;
+
+  bool empty() const { return records.empty(); }
+  bool operator==(const CtreeGeometry& other) const;
+};
+
 class CompressedTreeGraph {
  public:
   // Adds a record; `axillaries` are the records starting the lateral axes it bears (a record may
@@ -69,8 +108,14 @@ class CompressedTreeGraph {
   // Named numbers carried with the graph (e.g. per-physiological-age geometry for the
   // reconstruction), stored in the file.
   std::map<std::string, double> metadata;
+  // Turtle geometry (docs/formats.md, .ctree version 2); empty for GreenLab graphs. Its rules
+  // (checked by validate()): the root is a group, a placed reference leads to a group, a group
+  // has at most one member that is not a group.
+  CtreeGeometry geometry;
+  bool has_geometry() const { return !geometry.empty(); }
 
-  // Checks ids are in range and the graph is acyclic; throws ValueError otherwise.
+  // Checks ids are in range and the graph is acyclic (and the geometry's rules, when it has
+  // geometry); throws ValueError otherwise.
   void validate() const;
   // Instance counts: the root counts once, every reference (successor or axillary) adds its
   // referrer's multiplicity. Fills CompressedRecord::multiplicity and returns the total, which is
@@ -87,6 +132,8 @@ class CompressedTreeGraph {
   bool operator==(const CompressedTreeGraph& other) const;
 
  private:
+  void validate_geometry() const;
+
   std::vector<CompressedRecord> records_;
   std::vector<RecordId> axillary_refs_;
   RecordId root_ = kNoRecord;
