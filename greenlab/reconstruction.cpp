@@ -7,7 +7,9 @@
 
 #include "fspm/attribute_names.hpp"
 #include "fspm/error.hpp"
+#include "fspm/instanced_ctree.hpp"
 #include "fspm/memory_budget.hpp"
+#include "fspm/saturating.hpp"
 
 namespace fspm::greenlab {
 namespace {
@@ -451,6 +453,42 @@ std::uint64_t explicit_metamers(const CompressedTreeGraph& graph, const AxisBuil
   return metamers;
 }
 
+// Graphs with turtle geometry (.ctree version 2, drawn L-systems) carry their own geometry:
+// they are expanded as drawn, filtered by birth date, leaves and flowers; GreenLab's per-age
+// numbers, death and pruning do not apply.
+CtreeInstancingOptions geometry_options(const CompressedTreeGraph& graph,
+                                        const ReconstructionOptions& options, double& age) {
+  age = options.age < 0.0 ? graph.final_age : options.age;
+  if (age > graph.final_age + 1e-9) {
+    throw ValueError("cannot reconstruct at age " + std::to_string(age) +
+                     ": the graph was simulated to age " + std::to_string(graph.final_age));
+  }
+  CtreeInstancingOptions o;
+  o.max_birth = graph.birth_date + age;
+  o.leaves = options.leaves;
+  o.flowers = options.flowers;
+  return o;
+}
+
+TreeGraph reconstruct_geometry(const CompressedTreeGraph& graph,
+                               const ReconstructionOptions& options, ReconstructionStats& st) {
+  const CtreeInstancingOptions o = geometry_options(graph, options, st.age);
+  const std::uint64_t organs = geometry_organ_count(graph);
+  if (organs > kMaxExplicitMetamers) {
+    throw ValueError("the plant has " + std::to_string(organs) +
+                     " organs, too many for an explicit tree (at most " +
+                     std::to_string(kMaxExplicitMetamers) + "); use the instanced reconstruction");
+  }
+  TreeGraph tree = expand_instanced_tree(instanced_tree_of(graph, o),
+                                         static_cast<std::size_t>(kMaxExplicitMetamers));
+  for (const OrganKind k : tree.kinds()) {
+    st.metamers += k == OrganKind::kInternode ? 1 : 0;
+    st.leaves += k == OrganKind::kLeaf ? 1 : 0;
+    st.flowers += k == OrganKind::kFlower ? 1 : 0;
+  }
+  return tree;
+}
+
 }  // namespace
 
 TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
@@ -462,6 +500,12 @@ TreeGraph reconstruct(const CompressedTreeGraph& graph, const ReconstructionOpti
 
 void reconstruct_into(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
                       TreeGraph& tree, ReconstructionStats* stats) {
+  if (graph.has_geometry()) {
+    ReconstructionStats st;
+    tree = reconstruct_geometry(graph, options, st);
+    if (stats) *stats = st;
+    return;
+  }
   const AxisBuilder builder(graph, options, true);
   ReconstructionStats st;
   st.age = builder.age();
@@ -488,8 +532,41 @@ void reconstruct_into(const CompressedTreeGraph& graph, const ReconstructionOpti
   if (stats) *stats = st;
 }
 
+namespace {
+
+// The instanced form of a graph with turtle geometry: its groups are the prototypes.
+InstancedPlant instanced_geometry(const CompressedTreeGraph& graph,
+                                  const ReconstructionOptions& options) {
+  InstancedPlant plant;
+  InstancedTree tree = instanced_tree_of(graph, geometry_options(graph, options, plant.age));
+  const std::size_t n = tree.prototypes.size();
+  plant.prototypes.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    auto& p = tree.prototypes[i];
+    auto& q = plant.prototypes[i];
+    q.own_components = p.geometry.size();
+    q.geometry = std::move(p.geometry);
+    for (const auto& c : p.children) {
+      q.children.push_back({c.prototype, c.attach, c.rotation, c.translation, c.order});
+    }
+  }
+  // Prototypes are numbered as they are met, so children come after their parents.
+  std::vector<std::uint64_t> total(n, 0);
+  for (std::size_t i = n; i-- > 0;) {
+    total[i] = plant.prototypes[i].own_components;
+    for (const auto& c : plant.prototypes[i].children) {
+      total[i] = add_saturating(total[i], total[c.prototype]);
+    }
+  }
+  plant.represented_components = total.empty() ? 0 : total[0];
+  return plant;
+}
+
+}  // namespace
+
 InstancedPlant reconstruct_instanced(const CompressedTreeGraph& graph,
                                      const ReconstructionOptions& options) {
+  if (graph.has_geometry()) return instanced_geometry(graph, options);
   const AxisBuilder builder(graph, options, false);
   InstancedPlant plant;
   plant.age = builder.age();
@@ -559,12 +636,14 @@ TreeGraph expand_instanced(const InstancedPlant& plant) {
       d.end = item.rotation * d.end + item.translation;
       d.direction = item.rotation * d.direction;
       d.order = static_cast<std::uint16_t>(d.order + item.order);
-      map[n] = tree.add_node(n == 0 ? item.parent : map[g.parent(n)], d);
+      NodeId parent = n == 0 ? item.parent : map[g.parent(n)];
+      if (parent == kNoNode && !tree.empty()) parent = 0;  // one root (turtle geometry)
+      map[n] = tree.add_node(parent, d);
     }
     for (const auto& c : p.children) {
-      queue.push_back({c.prototype, map[c.attach], item.rotation * c.rotation,
-                       item.rotation * c.translation + item.translation,
-                       static_cast<std::uint16_t>(item.order + 1)});
+      queue.push_back({c.prototype, c.attach == kNoNode ? item.parent : map[c.attach],
+                       item.rotation * c.rotation, item.rotation * c.translation + item.translation,
+                       static_cast<std::uint16_t>(item.order + c.order)});
     }
   }
   return tree;
@@ -699,6 +778,12 @@ LineTree reconstruct_lines(const CompressedTreeGraph& graph, const Reconstructio
 
 void reconstruct_lines_into(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
                             LineTree& lines, ReconstructionStats* stats) {
+  if (graph.has_geometry()) {
+    ReconstructionStats st;
+    lines = LineTree::from_tree_graph(reconstruct_geometry(graph, options, st));
+    if (stats) *stats = st;
+    return;
+  }
   const AxisBuilder builder(graph, options, true);
   ReconstructionStats st;
   st.age = builder.age();

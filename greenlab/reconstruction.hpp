@@ -102,6 +102,10 @@ LineTree reconstruct_lines(const CompressedTreeGraph& graph, const Reconstructio
 void reconstruct_lines_into(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
                             LineTree& lines, ReconstructionStats* stats = nullptr);
 
+// Graphs with turtle geometry (.ctree version 2, drawn L-systems) are expanded as drawn by all of
+// these: the groups of the graph are the prototypes, birth dates filter, leaves and flowers
+// options apply, GreenLab's per-age numbers, death and pruning do not.
+//
 // The instanced form for renderers (Jaeger 3.1.2): one prototype geometry per substructure that
 // starts an axis, in its own frame (base at the origin, heading +z), and its lateral axes as
 // references to other prototypes with the rigid transform that places them. Effects that depend
@@ -112,9 +116,12 @@ inline constexpr std::uint32_t kNoPrototype = 0xFFFFFFFFu;
 struct InstancedPlant {
   struct Child {
     std::uint32_t prototype;
-    NodeId attach;             // node of the parent prototype the lateral grows from
+    // Node of the parent prototype the lateral grows from; kNoNode (turtle geometry only) for a
+    // substructure that hangs from what its parent hangs from.
+    NodeId attach;
     Eigen::Matrix3d rotation;  // child frame -> parent frame
     Eigen::Vector3d translation;
+    double order = 1.0;  // branching order added to the parent's
   };
   struct Prototype {
     RecordId record = kNoRecord;  // first metamer of the axis in the compressed graph

@@ -12,7 +12,9 @@
 #include <map>
 #include <tuple>
 
+#include "fspm/compressed_tree_graph.hpp"
 #include "fspm/error.hpp"
+#include "fspm/instanced_ctree.hpp"
 #include "lsystem/parser.hpp"
 
 namespace fspm::lsystem {
@@ -60,6 +62,27 @@ double extent(const TreeGraph& t) {
     box.extend(t.end(n));
   }
   return box.isEmpty() ? 1.0 : std::max(box.sizes().maxCoeff(), 1e-300);
+}
+
+// `flat` and `reference` hold the same nodes up to numbering: kinds, segments within 1e-9 of the
+// plant's extent, lengths, radii, colours, orders and leaf areas.
+void expect_same_nodes(const TreeGraph& flat, const TreeGraph& reference, const std::string& what) {
+  ASSERT_EQ(flat.size(), reference.size()) << what;
+  if (flat.empty()) return;
+  const double tol = 1e-9 * extent(reference);
+  std::vector<Drawn> a = drawn_nodes(flat), b = drawn_nodes(reference);
+  sort_nodes(a, 1e-6 * extent(reference));
+  sort_nodes(b, 1e-6 * extent(reference));
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a[i].kind, b[i].kind) << what << " node " << i;
+    ASSERT_LE((a[i].start - b[i].start).norm(), tol) << what << " node " << i;
+    ASSERT_LE((a[i].end - b[i].end).norm(), tol) << what << " node " << i;
+    ASSERT_NEAR(a[i].length, b[i].length, tol) << what;
+    ASSERT_NEAR(a[i].radius, b[i].radius, 1e-9 * std::max(1.0, std::abs(b[i].radius))) << what;
+    ASSERT_EQ(a[i].color, b[i].color) << what;
+    ASSERT_EQ(a[i].order, b[i].order) << what;
+    ASSERT_NEAR(a[i].leaf_area, b[i].leaf_area, 1e-9 * std::max(1.0, b[i].leaf_area)) << what;
+  }
 }
 
 // The instanced interpretation of `sys` after `n` steps, flattened, equals the explicit one node
@@ -129,6 +152,66 @@ TEST(InstancedInterpretation, EveryFactorizableExampleDrawsAsItsExplicitString) 
   EXPECT_GE(compared, 50);
 }
 
+// The .ctree written from the instanced interpretation (fspm/instanced_ctree.hpp), encoded and
+// decoded, expands to the explicit turtle's tree: the explicit interpretation of the expanded
+// string is an independent implementation of the drawing.
+void expect_same_ctree(const LSystem& sys, int n, const TurtleSettings& view,
+                       const std::string& what) {
+  DeriveOptions options;
+  options.steps = n;
+  const InstancedInterpretation inst =
+      interpret_instanced(derive_substructures(sys, options), sys, view);
+  const CompressedTreeGraph written = compress_instanced_tree(inst.tree);
+  const CompressedTreeGraph read = decode_ctree(encode_ctree(written), what);
+  EXPECT_TRUE(read == written) << what;
+  Derivation d(sys, options);
+  d.run();
+  const Interpretation reference = interpret(d.interpretation_string(), sys.symbols, view);
+  EXPECT_EQ(geometry_organ_count(read), reference.tree.size()) << what;
+  expect_same_nodes(expand_instanced_tree(instanced_tree_of(read), 10'000'000), reference.tree,
+                    what);
+}
+
+TEST(InstancedInterpretation, CtreeOfEveryFactorizableExampleExpandsToTheExplicitTree) {
+  int compared = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(example(""))) {
+    if (entry.path().extension() != ".l") continue;
+    const LSystem sys = parse_lsystem_file(entry.path().string());
+    if (factorization_obstacle(sys)) continue;
+    const TurtleSettings view = view_for_lsystem(entry.path().string());
+    for (int n = 0; n <= 30; ++n) {
+      DeriveOptions options;
+      options.steps = n;
+      options.module_budget = 50'000;
+      try {
+        (void)derive(sys, options);
+      } catch (const ValueError&) {
+        break;
+      }
+      expect_same_ctree(sys, n, view, entry.path().filename().string() + " n=" + std::to_string(n));
+      ++compared;
+    }
+  }
+  EXPECT_GE(compared, 40);
+}
+
+// Fig. 1.24a at n = 20 as a .ctree: a group per prototype (the axiom and F(k), k = 1..20) and the
+// five internodes F(1) draws: 26 records for 5^20 internodes, counted by the multiplicities
+// without expanding (the five records of F(1) stand for 5^19 internodes each).
+TEST(InstancedInterpretation, CtreeOfFigure124aAtTwentyStepsCountsWithoutExpanding) {
+  const LSystem sys = parse_lsystem_file(example("abop_1_24a.l"));
+  DeriveOptions options;
+  options.steps = 20;
+  const InstancedInterpretation inst = interpret_instanced(
+      derive_substructures(sys, options), sys, view_for_lsystem(example("abop_1_24a.l")));
+  const CompressedTreeGraph g = decode_ctree(encode_ctree(compress_instanced_tree(inst.tree)));
+  EXPECT_EQ(g.size(), 21u + 5u);
+  std::uint64_t five_n = 1;
+  for (int k = 0; k < 20; ++k) five_n *= 5;
+  EXPECT_EQ(geometry_organ_count(g), five_n);
+  EXPECT_LT(encode_ctree(g).size(), 20'000u);
+}
+
 TEST(InstancedInterpretation, WidthsColoursPolygonsAndOpenBracketsDrawAsExplicitly) {
   TurtleSettings view;
   view.angle_deg = 30.0;
@@ -146,6 +229,9 @@ TEST(InstancedInterpretation, WidthsColoursPolygonsAndOpenBracketsDrawAsExplicit
     expect_same_drawing(widths, n, view, "widths n=" + std::to_string(n));
     expect_same_drawing(polygons, n, view, "polygons n=" + std::to_string(n));
     expect_same_drawing(open, n, view, "open n=" + std::to_string(n));
+    expect_same_ctree(widths, n, view, "widths ctree n=" + std::to_string(n));
+    expect_same_ctree(polygons, n, view, "polygons ctree n=" + std::to_string(n));
+    expect_same_ctree(open, n, view, "open ctree n=" + std::to_string(n));
   }
 }
 
