@@ -66,6 +66,7 @@ struct MeshCommand {
   bool skin = false;
   double animate_s = 0.0;
   WindArguments wind;
+  LsystemDrawArguments lsystem;
   bool json = false;
 };
 
@@ -93,9 +94,7 @@ struct RenderCommand {
   WindArguments wind;
   bool lod = false;
   double lod_distance_m = 0.0;
-  int steps = -1;
-  bool compressed = false;
-  int variants = 0;
+  LsystemDrawArguments lsystem;
   bool json = false;
 };
 
@@ -113,6 +112,7 @@ struct ViewCommand {
   bool no_shadows = false;
   bool lod = false;
   double lod_distance_m = 0.0;
+  LsystemDrawArguments lsystem;
   bool json = false;
 };
 
@@ -138,7 +138,7 @@ void report_missing_leaves(const graphics::InstancedMesh& mesh, const std::strin
 
 // What a graphics command was given: a tree file, a compressed graph (.ctree) or a GreenLab plant
 // description (.toml, simulated on the fly), a scene of many plants (.json), a ParaView growth
-// sequence (.pvd, viewer only) or an L-system (.l, render only).
+// sequence (.pvd, viewer only) or an L-system (.l, drawn by the turtle; not inside a scene).
 enum class InputKind { kTree, kCompressed, kPlant, kScene, kPvd, kLsystem };
 
 InputKind input_kind(const std::string& path) {
@@ -174,7 +174,7 @@ graphics::InstancedMesh mesh_compressed(const CompressedTreeGraph& graph, double
     graphics::InstancedTree::Prototype q;
     q.geometry = std::move(p.geometry);
     for (const auto& c : p.children) {
-      q.children.push_back({c.prototype, c.attach, c.rotation, c.translation});
+      q.children.push_back({c.prototype, c.attach, c.rotation, c.translation, c.order});
     }
     tree.prototypes.push_back(std::move(q));
   }
@@ -192,7 +192,10 @@ graphics::InstancedMesh load_part(const std::string& path, InputKind kind,
     throw ValueError("a .pvd is a growth sequence of meshes: open it with fspm view", path);
   }
   if (kind == InputKind::kLsystem) {
-    throw ValueError("an L-system is drawn by fspm render or fspm lsystem interpret", path);
+    throw ValueError(
+        "an L-system (.l) is drawn by fspm render, mesh and view, not inside a scene or with "
+        "--lod: write it as a plant first (fspm lsystem derive FILE --compressed -o PLANT.ctree)",
+        path);
   }
   if (age >= 0.0) options.max_birth_time = age;
   return graphics::InstancedMesh::single(
@@ -328,6 +331,15 @@ nlohmann::json instancing_json(const graphics::InstancedMesh& m) {
           {"bounds", {{"min", {lo.x(), lo.y(), lo.z()}}, {"max", {hi.x(), hi.y(), hi.z()}}}}};
 }
 
+// An L-system (.l) drawn for render, mesh and view: explicitly, or by instancing with
+// --compressed. `pixels` > 0 (pictures): substructures smaller than a pixel of a picture that many
+// pixels across drawn as their chord; 0: every substructure exact.
+LsystemDrawing draw_lsystem_file(const std::string& file, const LsystemDrawArguments& arguments,
+                                 int pixels) {
+  return draw_lsystem(lsystem_draw_source(file, arguments), arguments.compressed,
+                      pixels > 0 ? -1.0 : 0.0, pixels);
+}
+
 // --skin writes one tree's bark as a skinned .glb; --animate needs --skin.
 void check_skin_request(const MeshCommand& c, graphics::MeshFormat format, InputKind kind) {
   if (format != graphics::MeshFormat::kGlb) {
@@ -355,6 +367,12 @@ void run_mesh(const MeshCommand& c) {
   options.reynolds_width = c.reynolds_width;
   nlohmann::json j = {{"file", c.tree}, {"output", c.out}};
   std::size_t vertices = 0, triangles = 0;
+  const bool lsystem = kind == InputKind::kLsystem;
+  check_lsystem_draw_arguments(c.lsystem, {c.tree});
+  if (lsystem && (format == graphics::MeshFormat::kPvd || !c.ages.empty())) {
+    throw ValueError("an L-system is meshed as derived: no .pvd growth sequence, no --ages",
+                     c.tree);
+  }
   if (c.skin) {
     check_skin_request(c, format, kind);
     const TreeGraph tree = read_tree_file(c.tree, c.format);
@@ -390,7 +408,14 @@ void run_mesh(const MeshCommand& c) {
     if (!c.ages.empty()) {
       throw ValueError("--ages makes a growth sequence: use an output ending in .pvd", c.out);
     }
-    graphics::InstancedMesh mesh = load_instanced(c.tree, c.format, options, false);
+    graphics::InstancedMesh mesh;
+    if (lsystem) {
+      const LsystemDrawing drawing = draw_lsystem_file(c.tree, c.lsystem, 0);
+      j["lsystem"] = drawing.summary;
+      mesh = mesh_lsystem(drawing, options);
+    } else {
+      mesh = load_instanced(c.tree, c.format, options, false);
+    }
     if (c.leaves) report_missing_leaves(mesh, c.tree);
     if (!c.obstacles.empty()) {
       add_scene_obstacles(mesh, environment::read_scene_file(c.obstacles), c.obstacles, false);
@@ -452,21 +477,6 @@ void run_lod_render(const RenderCommand& c, const graphics::MeshOptions& mesh_op
   }
 }
 
-// An L-system (.l) for a picture: explicitly, or by instancing with --compressed, substructures
-// smaller than a pixel of the picture drawn as their chord.
-graphics::InstancedMesh lsystem_mesh(const RenderCommand& c, const graphics::MeshOptions& options,
-                                     const graphics::RenderOptions& render,
-                                     nlohmann::json& summary) {
-  LsystemSource source;
-  source.file = c.tree;
-  source.steps = c.steps;
-  source.variants = c.variants;
-  const LsystemDrawing drawing =
-      draw_lsystem(source, c.compressed, -1.0, std::max(render.width, render.height));
-  summary = drawing.summary;
-  return mesh_lsystem(drawing, options);
-}
-
 void run_render(const RenderCommand& c) {
   refuse_overwriting_input(c.out, {c.tree, c.obstacles});
   const auto t0 = std::chrono::steady_clock::now();
@@ -484,18 +494,24 @@ void run_render(const RenderCommand& c) {
   set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
   mesh_options.edge_length_m = c.edge_length_m;
   const bool lsystem = input_kind(c.tree) == InputKind::kLsystem;
-  if ((c.compressed || c.steps >= 0 || c.variants > 0) && !lsystem) {
-    throw ValueError("--compressed, --steps and --variants apply to L-system files (.l)", c.tree);
-  }
+  check_lsystem_draw_arguments(c.lsystem, {c.tree});
   if (c.lod) {
     if (lsystem) throw ValueError("--lod does not apply to L-system files (.l)", c.tree);
     run_lod_render(c, mesh_options, options, t0);
     return;
   }
   nlohmann::json lsystem_summary;
-  graphics::InstancedMesh mesh = c.wind_time_s >= 0.0 ? wind_frame(c, mesh_options, options)
-                                 : lsystem ? lsystem_mesh(c, mesh_options, options, lsystem_summary)
-                                           : load_instanced(c.tree, c.format, mesh_options, true);
+  graphics::InstancedMesh mesh;
+  if (c.wind_time_s >= 0.0) {
+    mesh = wind_frame(c, mesh_options, options);
+  } else if (lsystem) {
+    const LsystemDrawing drawing =
+        draw_lsystem_file(c.tree, c.lsystem, std::max(options.width, options.height));
+    lsystem_summary = drawing.summary;
+    mesh = mesh_lsystem(drawing, mesh_options);
+  } else {
+    mesh = load_instanced(c.tree, c.format, mesh_options, true);
+  }
   if (c.leaves) report_missing_leaves(mesh, c.tree);
   if (!c.color_by.empty()) {
     for (const auto& m : mesh.meshes) (void)m.attribute(c.color_by);  // unknown: ValueError
@@ -531,6 +547,7 @@ struct ViewSource {
   InputKind kind = InputKind::kTree;
   TreeGraph tree;
   CompressedTreeGraph graph;
+  LsystemDrawing drawing;  // an L-system, drawn once
 
   // `age`: plant age for compressed graphs, latest birth time for trees, ignored for scenes;
   // infinity = everything.
@@ -538,6 +555,7 @@ struct ViewSource {
                              const std::string& format) const {
     if (kind == InputKind::kScene) return load_scene(path, options, true);
     if (is_compressed(kind)) return mesh_compressed(graph, std::isinf(age) ? -1.0 : age, options);
+    if (kind == InputKind::kLsystem) return mesh_lsystem(drawing, options);
     graphics::MeshOptions o = options;
     o.max_birth_time = age;
     (void)format;
@@ -621,6 +639,7 @@ void run_view(const ViewCommand& c) {
   options.frames = c.frames;
   options.shadows = !c.no_shadows;
   if (!c.screenshot.empty()) graphics::check_image_path(c.screenshot);
+  check_lsystem_draw_arguments(c.lsystem, c.trees);
   if (c.lod) {
     run_lod_view(c, options, t0);
     return;
@@ -653,6 +672,8 @@ void run_view(const ViewCommand& c) {
         if (ages.empty()) ages = plant_ages(s.graph);
       } else if (s.kind == InputKind::kTree) {
         s.tree = read_tree_file(path, c.format);
+      } else if (s.kind == InputKind::kLsystem) {
+        s.drawing = draw_lsystem_file(path, c.lsystem, std::max(options.width, options.height));
       } else {
         (void)graphics::read_scene_file(path);  // bad scene: error before any window
       }
@@ -727,8 +748,7 @@ void add_graphics_commands(CLI::App& app) {
   m->add_option(
        "TREE", mesh->tree,
        "Tree file (.tree, .treeb, .nwk, .mtg), compressed plant (.ctree or plant .toml, meshed "
-       "per substructure) or "
-       "scene (.json)")
+       "per substructure), scene (.json) or L-system (.l, with the .v beside it)")
       ->required();
   m->add_option("-o,--output", mesh->out,
                 "Output: .obj (+.mtl), .ply, .vtp, .pvd or .glb (.glb keeps the instancing)")
@@ -761,6 +781,7 @@ void add_graphics_commands(CLI::App& app) {
                 "keyframes per joint; phases from --seed)")
       ->check(positive_number(1e5));
   add_wind_options(m, mesh->wind, true);
+  add_lsystem_draw_options(m, mesh->lsystem);
   m->add_flag("--json", mesh->json, "Machine-readable JSON on stdout");
   m->callback([mesh] { run_mesh(*mesh); });
 
@@ -770,16 +791,7 @@ void add_graphics_commands(CLI::App& app) {
                 "Tree file (.tree, .treeb, .nwk, .mtg), compressed plant (.ctree, plant .toml), "
                 "scene (.json) or L-system (.l, with the .v beside it)")
       ->required();
-  r->add_flag("--compressed", render->compressed,
-              "L-system: derive into shared substructures and draw each once, placed by rigid "
-              "transforms (Jaeger 3.1.2); substructures smaller than a pixel drawn as one "
-              "internode. Plants far too large to derive explicitly");
-  r->add_option("--variants", render->variants,
-                "L-system with --compressed: stochastic productions derived with K variants per "
-                "substructure (Jaeger 2.1.3)")
-      ->check(number_in(1, 1e6));
-  r->add_option("--steps", render->steps, "L-system: derivation steps (default: the file's)")
-      ->check(number_in(0, lsystem::kMaxDerivationLength));
+  add_lsystem_draw_options(r, render->lsystem);
   r->add_option("-o,--output", render->out, "Image: .png, .tif or .exr")->required();
   r->add_option("--format", render->format, "Input format: " + formats);
   r->add_option("--color-by", render->color_by,
@@ -812,9 +824,8 @@ void add_graphics_commands(CLI::App& app) {
   CLI::App* v = app.add_subcommand(kViewCommand.name, kViewCommand.description);
   v->add_option(
        "FILE", view->trees,
-       "Tree files (.tree, .treeb, .nwk, .mtg), compressed plants (.ctree, plant .toml) or "
-       "scenes (.json), placed "
-       "side by side; or one .pvd growth sequence")
+       "Tree files (.tree, .treeb, .nwk, .mtg), compressed plants (.ctree, plant .toml), "
+       "scenes (.json) or L-systems (.l), placed side by side; or one .pvd growth sequence")
       ->required();
   v->add_option("--format", view->format, "Input format: " + formats);
   v->add_option("--ages", view->ages,
@@ -832,6 +843,7 @@ void add_graphics_commands(CLI::App& app) {
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
   add_lod_options(v, view->lod, view->lod_distance_m);
+  add_lsystem_draw_options(v, view->lsystem);
   v->add_flag("--json", view->json, "Machine-readable JSON on stdout (frame time)");
   v->callback([view] { run_view(*view); });
 }

@@ -56,6 +56,17 @@ nlohmann::json symbol_counts(const std::vector<std::uint64_t>& per_symbol,
   return symbols;
 }
 
+// -o OUT.ctree: the derived plant drawn by the turtle (by instancing with --compressed) and
+// written as a compressed tree graph with turtle geometry; the summary gains its size.
+void write_derive_output(const LsystemOptions& o, nlohmann::json& summary) {
+  if (o.output.empty()) return;
+  const LsystemDrawing drawing = draw_lsystem(o, o.compressed, 0.0, 0);
+  write_lsystem_ctree(drawing, o.output, summary);
+  summary["output"] = o.output;
+  spdlog::info("{}: wrote {} ({} records, {} bytes)", o.file, o.output,
+               summary["ctree_records"].dump(), summary["ctree_bytes"].dump());
+}
+
 // --compressed: the string as a graph of shared substructures (Jaeger 2.1.3), its module counts
 // computed on the graph.
 void run_derive_compressed(const LsystemOptions& o, const lsystem::LSystem& sys) {
@@ -72,6 +83,8 @@ void run_derive_compressed(const LsystemOptions& o, const lsystem::LSystem& sys)
   const nlohmann::json symbols = symbol_counts(c.per_symbol, sys.symbols);
   std::string text;
   if (o.string) text = lsystem::to_string(lsystem::expand(g, o.budget), sys.symbols);
+  nlohmann::json written;
+  write_derive_output(o, written);
   if (o.json) {
     nlohmann::json j = {{"steps", g.steps},
                         {"modules", c.modules},
@@ -85,6 +98,7 @@ void run_derive_compressed(const LsystemOptions& o, const lsystem::LSystem& sys)
     // Counts of 2^64 - 1 or more stay at 2^64 - 1.
     if (c.saturated) j["counts_saturated"] = true;
     if (o.string) j["string"] = text;
+    j.update(written);
     print_json(j);
     return;
   }
@@ -101,6 +115,15 @@ void run_derive_compressed(const LsystemOptions& o, const lsystem::LSystem& sys)
 }
 
 void run_derive(const LsystemOptions& o) {
+  if (!o.output.empty()) {
+    if (!is_ctree_path(o.output)) {
+      throw ValueError(
+          "derive writes a compressed tree graph: use an output ending in .ctree "
+          "(fspm lsystem interpret writes tree files and meshes)",
+          o.output);
+    }
+    refuse_overwriting_input(o.output, {o.file, o.view});
+  }
   const lsystem::LSystem sys = lsystem::parse_lsystem_file(o.file, parse_defines(o.defines));
   std::string why_not;
   if (o.compressed) {
@@ -124,6 +147,8 @@ void run_derive(const LsystemOptions& o) {
   std::vector<std::uint64_t> per_symbol(sys.symbols.size(), 0);
   for (lsystem::SymbolId id : s.symbols()) ++per_symbol[id];
   const nlohmann::json symbols = symbol_counts(per_symbol, sys.symbols);
+  nlohmann::json written;
+  write_derive_output(o, written);
   if (o.json) {
     nlohmann::json j = {{"steps", d.steps_done()}, {"modules", s.size()}, {"symbols", symbols}};
     if (o.compressed) {
@@ -131,6 +156,7 @@ void run_derive(const LsystemOptions& o) {
       j["why_not_compressed"] = why_not;
     }
     if (o.string) j["string"] = lsystem::to_string(s, sys.symbols);
+    j.update(written);
     print_json(j);
     return;
   }
@@ -150,6 +176,8 @@ void run_interpret_drawing(const LsystemOptions& o) {
   nlohmann::json summary = drawing.summary;
   if (is_mesh_path(o.output)) {
     write_lsystem_mesh(drawing, o.output, summary);
+  } else if (is_ctree_path(o.output)) {
+    write_lsystem_ctree(drawing, o.output, summary);
   } else {
     const TreeGraph tree = expand_instanced_tree(drawing.tree, o.budget);
     if (tree.empty()) {
@@ -168,7 +196,7 @@ void run_interpret_drawing(const LsystemOptions& o) {
 
 void run_interpret(const LsystemOptions& o) {
   refuse_overwriting_input(o.output, {o.file, o.view});
-  if (o.compressed || is_mesh_path(o.output)) {
+  if (o.compressed || is_mesh_path(o.output) || is_ctree_path(o.output)) {
     run_interpret_drawing(o);
     return;
   }
@@ -217,6 +245,13 @@ void add_lsystem_commands(CLI::App& app) {
                    "Derive into shared substructures (context-free L-systems without ran() or "
                    "per-step blocks): counts of strings far too large to hold; --json adds "
                    "graph_nodes, graph_bytes, explicit_bytes and compression");
+  derive->add_option("-o,--output", derive_opts->output,
+                     "Write the derived plant, drawn by the turtle (by instancing with "
+                     "--compressed), as a compressed tree graph with turtle geometry (.ctree) "
+                     "for fspm greenlab reconstruct, mesh, render and view; --json adds "
+                     "ctree_records, ctree_organs and ctree_bytes");
+  derive->add_option("--view", derive_opts->view,
+                     "With -o: view file (default: the .v beside FILE)");
   derive->callback([derive_opts] { run_derive(*derive_opts); });
 
   auto interp_opts = std::make_shared<LsystemOptions>();
@@ -225,8 +260,9 @@ void add_lsystem_commands(CLI::App& app) {
   interp->add_option("--view", interp_opts->view, "View file (default: the .v beside FILE)");
   interp
       ->add_option("-o,--output", interp_opts->output,
-                   "Tree file (.tree, .treeb, .nwk, .mtg) or mesh (.glb keeps the instances; "
-                   ".obj, .ply, .vtp flattened) to write")
+                   "Tree file (.tree, .treeb, .nwk, .mtg), mesh (.glb keeps the instances; "
+                   ".obj, .ply, .vtp flattened) or compressed tree graph with turtle geometry "
+                   "(.ctree) to write")
       ->required();
   interp->add_option("--format", interp_opts->format, "tree, treeb, nwk or mtg (default: ext)");
   interp->add_flag("--compressed", interp_opts->compressed,

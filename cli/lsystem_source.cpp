@@ -2,13 +2,17 @@
 
 #include <spdlog/spdlog.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <filesystem>
 
+#include "cli/output.hpp"
+#include "fspm/compressed_tree_graph.hpp"
 #include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
+#include "fspm/instanced_ctree.hpp"
 #include "lsystem/instanced_interpretation.hpp"
 #include "lsystem/parser.hpp"
 #include "lsystem/substructure_derivation.hpp"
@@ -136,11 +140,65 @@ LsystemDrawing draw_lsystem(const LsystemSource& source, bool compressed, double
   return out;
 }
 
-bool is_mesh_path(const std::string& path) {
+namespace {
+
+std::string lower_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+}  // namespace
+
+bool is_mesh_path(const std::string& path) {
+  const std::string ext = lower_extension(path);
   return ext == ".obj" || ext == ".ply" || ext == ".vtp" || ext == ".glb";
+}
+
+bool is_ctree_path(const std::string& path) { return lower_extension(path) == ".ctree"; }
+
+bool is_lsystem_path(const std::string& path) { return lower_extension(path) == ".l"; }
+
+void write_lsystem_ctree(const LsystemDrawing& drawing, const std::string& path,
+                         nlohmann::json& summary) {
+  const CompressedTreeGraph graph = compress_instanced_tree(drawing.tree);
+  write_ctree_file(graph, path);
+  summary["ctree_records"] = graph.size();
+  summary["ctree_organs"] = geometry_organ_count(graph);
+  summary["ctree_bytes"] = std::filesystem::file_size(path);
+}
+
+void add_lsystem_draw_options(CLI::App* command, LsystemDrawArguments& arguments) {
+  command->add_flag("--compressed", arguments.compressed,
+                    "L-system: derive into shared substructures and draw each once, placed by "
+                    "rigid transforms (Jaeger 3.1.2); plants far too large to derive explicitly");
+  command
+      ->add_option("--variants", arguments.variants,
+                   "L-system with --compressed: stochastic productions derived with K variants "
+                   "per substructure (Jaeger 2.1.3)")
+      ->check(number_in(1, 1e6));
+  command
+      ->add_option("--steps", arguments.steps, "L-system: derivation steps (default: the file's)")
+      ->check(number_in(0, lsystem::kMaxDerivationLength));
+}
+
+void check_lsystem_draw_arguments(const LsystemDrawArguments& arguments,
+                                  const std::vector<std::string>& files) {
+  if (!arguments.given()) return;
+  if (std::none_of(files.begin(), files.end(), is_lsystem_path)) {
+    throw ValueError("--compressed, --steps and --variants apply to L-system files (.l)",
+                     files.empty() ? std::string() : files.front());
+  }
+}
+
+LsystemSource lsystem_draw_source(const std::string& file, const LsystemDrawArguments& arguments) {
+  check_lsystem_draw_arguments(arguments, {file});
+  LsystemSource source;
+  source.file = file;
+  source.steps = arguments.steps;
+  source.variants = arguments.variants;
+  return source;
 }
 
 }  // namespace fspm::cli

@@ -14,6 +14,10 @@
 #include "lsystem/preprocessor.hpp"
 #include "lsystem/turtle.hpp"
 
+namespace CLI {
+class App;
+}
+
 namespace fspm::cli {
 
 struct LsystemSource {
@@ -57,5 +61,32 @@ void write_lsystem_mesh(const LsystemDrawing& drawing, const std::string& path,
 
 // .obj, .ply, .vtp or .glb (any case).
 bool is_mesh_path(const std::string& path);
+// .ctree (any case).
+bool is_ctree_path(const std::string& path);
+
+// Writes a drawing as a compressed tree graph with turtle geometry (.ctree version 2,
+// fspm/instanced_ctree.hpp) that fspm greenlab reconstruct, mesh, render and view read; adds
+// ctree_records, ctree_organs (internodes, leaves and flowers it stands for) and ctree_bytes to
+// `summary`.
+void write_lsystem_ctree(const LsystemDrawing& drawing, const std::string& path,
+                         nlohmann::json& summary);
+
+// The L-system options of the commands that draw files of several kinds (render, mesh, view),
+// declared once: --compressed, --variants, --steps.
+struct LsystemDrawArguments {
+  bool compressed = false;
+  int variants = 0;
+  int steps = -1;
+  bool given() const { return compressed || variants > 0 || steps >= 0; }
+};
+void add_lsystem_draw_options(CLI::App* command, LsystemDrawArguments& arguments);
+// The source of `file` drawn with `arguments`; throws ValueError when arguments were given and
+// `file` is not an L-system (.l).
+LsystemSource lsystem_draw_source(const std::string& file, const LsystemDrawArguments& arguments);
+// Throws ValueError when arguments were given but none of `files` is an L-system.
+void check_lsystem_draw_arguments(const LsystemDrawArguments& arguments,
+                                  const std::vector<std::string>& files);
+// .l (any case).
+bool is_lsystem_path(const std::string& path);
 
 }  // namespace fspm::cli
