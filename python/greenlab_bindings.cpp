@@ -4,6 +4,7 @@
 #include <pybind11/stl.h>
 
 #include "fspm/compressed_tree_graph.hpp"
+#include "fspm/instanced_ctree.hpp"
 #include "fspm/line_tree.hpp"
 #include "greenlab/plant_params.hpp"
 #include "greenlab/reconstruction.hpp"
@@ -15,13 +16,21 @@ namespace fspm::python {
 void bind_greenlab(py::module_& m) {
   py::class_<fspm::CompressedTreeGraph>(
       m, "CompressedPlant",
-      "A GreenLab plant as a compressed tree graph: one record per substructure")
+      "A plant as a compressed tree graph: one record per substructure (GreenLab), or a drawn "
+      "L-system with turtle geometry (lsystem_plant)")
       .def("__len__", &fspm::CompressedTreeGraph::size)
+      .def_property_readonly("has_geometry", &fspm::CompressedTreeGraph::has_geometry,
+                             "Whether the graph carries turtle geometry (a drawn L-system)")
+      .def_property_readonly(
+          "organs", &fspm::geometry_organ_count,
+          "Internodes, leaves and flowers of the explicit plant (records that are not groups; "
+          "the metamers of a GreenLab graph)")
       .def_property_readonly("graph_nodes", &fspm::CompressedTreeGraph::size,
                              "Records of the compressed graph (its substructures)")
       .def_property_readonly(
           "metamers", &fspm::CompressedTreeGraph::expanded_size,
-          "Metamers of the explicit plant it stands for (sum of the record multiplicities)")
+          "Metamers of the explicit plant it stands for (sum of the record multiplicities; "
+          "with turtle geometry, group records included: see organs)")
       .def(
           "counts",
           [](const fspm::CompressedTreeGraph& g) {
@@ -81,7 +90,8 @@ void bind_greenlab(py::module_& m) {
         return fspm::greenlab::reconstruct(g, o);
       },
       py::arg("plant"), py::arg("age") = py::none(), py::arg("leaves") = true,
-      "The explicit tree of a GreenLab plant at any age up to the simulated one");
+      "The explicit tree of a GreenLab plant at any age up to the simulated one, or of a drawn "
+      "L-system (lsystem_plant) as its turtle drew it");
 
   py::class_<fspm::LineTree>(m, "LineTree",
                              "Explicit plant geometry in single precision, one record per "

@@ -3,7 +3,12 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+
+#include "fspm/compressed_tree_graph.hpp"
+#include "fspm/instanced_ctree.hpp"
 #include "lsystem/derivation.hpp"
+#include "lsystem/instanced_interpretation.hpp"
 #include "lsystem/lsystem.hpp"
 #include "lsystem/parser.hpp"
 #include "lsystem/substructure_derivation.hpp"
@@ -77,6 +82,8 @@ void bind_lsystem(py::module_& m) {
           d["graph_nodes"] = graph_nodes;
           d["graph_bytes"] = graph_bytes;
           d["explicit_bytes"] = explicit_bytes;
+          d["compression"] = static_cast<double>(explicit_bytes) /
+                             static_cast<double>(std::max<std::size_t>(graph_bytes, 1));
         }
         return d;
       },
@@ -84,7 +91,39 @@ void bind_lsystem(py::module_& m) {
       py::arg("defines") = std::map<std::string, std::string>{}, py::arg("compressed") = false,
       "Derive an L-system file: steps, modules and the count of each module name; "
       "compressed=True derives into shared substructures (context-free L-systems only, "
-      "docs/lsystem-language.md) and adds graph_nodes, graph_bytes and explicit_bytes");
+      "docs/lsystem-language.md) and adds graph_nodes, graph_bytes, explicit_bytes and "
+      "compression (explicit_bytes / graph_bytes); lsystem_plant gives the drawn plant");
+
+  m.def(
+      "lsystem_plant",
+      [](const std::string& path, std::optional<int> steps, std::optional<std::uint64_t> seed,
+         const std::map<std::string, std::string>& defines, bool compressed, int variants) {
+        py::gil_scoped_release release;
+        const fspm::lsystem::LSystem sys = load_lsystem(path, defines);
+        const fspm::lsystem::TurtleSettings view = fspm::lsystem::view_for_lsystem(path);
+        auto options = derive_options(steps, seed);
+        fspm::InstancedTree tree;
+        if (compressed) {
+          // Derived into substructures and drawn by instancing (Jaeger 2.1.3, 3.1.2);
+          // ValueError when the L-system cannot be factorized.
+          const auto g = fspm::lsystem::derive_substructures(sys, options, variants);
+          tree = fspm::lsystem::interpret_instanced(g, sys, view).tree;
+        } else {
+          options.turtle = &view;
+          fspm::lsystem::Derivation der(sys, options);
+          der.run();
+          tree.prototypes.push_back(
+              {fspm::lsystem::interpret(der.interpretation_string(), sys.symbols, view).tree, {}});
+        }
+        return fspm::compress_instanced_tree(tree);
+      },
+      py::arg("path"), py::arg("steps") = py::none(), py::arg("seed") = py::none(),
+      py::arg("defines") = std::map<std::string, std::string>{}, py::arg("compressed") = true,
+      py::arg("variants") = 0,
+      "Derive and draw an L-system file into a CompressedPlant with turtle geometry (.ctree "
+      "version 2): compressed=True (the default) by shared substructures drawn once each, "
+      "variants=K for stochastic L-systems; greenlab_reconstruct(plant) gives the Tree and "
+      "plant.save(path) the .ctree file");
 
   m.def(
       "lsystem_interpret",

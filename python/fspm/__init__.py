@@ -7,7 +7,8 @@ same messages as the command line; long computations release the GIL.
 Families (names follow the C++ API):
 
 * trees: ``read_tree``, ``write_tree``, ``parse_newick``, ``Tree.from_arrays``, ``distance``
-* L-systems: ``lsystem_derive``, ``lsystem_interpret``
+* L-systems: ``lsystem_derive``, ``lsystem_interpret``, ``lsystem_plant`` (a ``CompressedPlant``
+  with turtle geometry)
 * GreenLab: ``greenlab_simulate``, ``greenlab_reconstruct``, ``greenlab_reconstruct_lines``
   (a single-precision ``LineTree``), ``read_plant_params``,
   ``fit_gl1``, ``predict_targets``, ``read_targets_csv``
@@ -70,6 +71,7 @@ from ._fspm import (  # noqa: F401
     light,
     lsystem_derive,
     lsystem_interpret,
+    lsystem_plant,
     main_skeleton_nodes,
     mann_whitney_u_test,
     mean,

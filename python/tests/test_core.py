@@ -96,6 +96,55 @@ def test_lsystem_derive_compressed_counts_what_cannot_be_held():
                             compressed=True)
 
 
+def abop_1_24_counts(n, f_per_x, x_per_x):
+    """F and X counts after n steps of X -> (f_per_x F's, x_per_x X's), F -> FF, axiom X,
+    by the recurrence of the productions: x' = x_per_x x, f' = 2 f + f_per_x x."""
+    f, x = 0, 1
+    for _ in range(n):
+        f, x = 2 * f + f_per_x * x, x_per_x * x
+    return f, x
+
+
+def test_lsystem_derive_compressed_follows_the_recurrence_at_twenty_steps():
+    # Fig. 1.24d: X -> F[+X]F[-X]+X (2 F, 3 X); Fig. 1.24f: X -> F-[[X]+X]+F[+FX]-X (3 F, 4 X).
+    for name, f_per_x, x_per_x in (("abop_1_24d.l", 2, 3), ("abop_1_24f.l", 3, 4)):
+        r = fspm.lsystem_derive(str(ROOT / "examples/lsystems" / name), steps=20, compressed=True)
+        f, x = abop_1_24_counts(20, f_per_x, x_per_x)
+        assert r["symbols"]["F"] == f, name
+        assert r["symbols"]["X"] == x, name
+        assert r["compression"] == pytest.approx(r["explicit_bytes"] / r["graph_bytes"])
+        assert r["compression"] > 1e6
+
+
+def sorted_ends(tree):
+    ends = np.round(np.asarray(tree.ends), 6)
+    return ends[np.lexsort(ends.T[::-1])]
+
+
+def test_lsystem_plant_expands_to_the_explicit_turtle_tree(tmp_path):
+    path = str(ROOT / "examples/lsystems/abop_1_24d.l")
+    plant = fspm.lsystem_plant(path, steps=4)
+    assert plant.has_geometry
+    f, _ = abop_1_24_counts(4, 2, 3)
+    assert plant.organs == f
+    tree = fspm.greenlab_reconstruct(plant)
+    explicit = fspm.lsystem_interpret(path, steps=4)  # the string derived and drawn explicitly
+    assert len(tree) == len(explicit) == f
+    np.testing.assert_allclose(sorted_ends(tree), sorted_ends(explicit), atol=1e-5)
+    plant.save(str(tmp_path / "d.ctree"))
+    back = fspm.read_plant(str(tmp_path / "d.ctree"))
+    assert back.has_geometry and len(back) == len(plant) and back.organs == f
+    # Fig. 1.24a at n = 20: a group per prototype (the axiom, F after 1..20 steps) and the five
+    # internodes of F(1), standing for 5^20 internodes.
+    big = fspm.lsystem_plant(str(ROOT / "examples/lsystems/abop_1_24a.l"), steps=20)
+    assert len(big) == 26
+    assert big.organs == 5 ** 20
+    flat = fspm.lsystem_plant(path, steps=4, compressed=False)
+    assert len(flat) == f + 1  # one group, every internode its own record
+    np.testing.assert_allclose(sorted_ends(fspm.greenlab_reconstruct(flat)), sorted_ends(tree),
+                               atol=1e-5)
+
+
 def test_developmental_stages_grow_into_the_given_tree():
     tree = fspm.read_tree(str(ROOT / "examples/trees/open_a12.treeb"))
     model = fspm.developmental_model(tree)
