@@ -83,7 +83,7 @@ void run_derive_compressed(const LsystemOptions& o, const lsystem::LSystem& sys)
   const nlohmann::json symbols = symbol_counts(c.per_symbol, sys.symbols);
   std::string text;
   if (o.string) text = lsystem::to_string(lsystem::expand(g, o.budget), sys.symbols);
-  nlohmann::json written;
+  nlohmann::json written = nlohmann::json::object();
   write_derive_output(o, written);
   if (o.json) {
     nlohmann::json j = {{"steps", g.steps},
@@ -147,7 +147,7 @@ void run_derive(const LsystemOptions& o) {
   std::vector<std::uint64_t> per_symbol(sys.symbols.size(), 0);
   for (lsystem::SymbolId id : s.symbols()) ++per_symbol[id];
   const nlohmann::json symbols = symbol_counts(per_symbol, sys.symbols);
-  nlohmann::json written;
+  nlohmann::json written = nlohmann::json::object();
   write_derive_output(o, written);
   if (o.json) {
     nlohmann::json j = {{"steps", d.steps_done()}, {"modules", s.size()}, {"symbols", symbols}};
