@@ -132,7 +132,10 @@ void run_derive(const LsystemOptions& o) {
       if (o.variants == 0 && !lsystem::factorization_obstacle(sys, true)) {
         why_not += " (--variants K derives it with K variants per substructure)";
       }
-      spdlog::warn("{}: derived explicitly, not into substructures: {}", o.file, why_not);
+      // With -o the drawing warns the same (draw_lsystem): once is enough.
+      if (o.output.empty()) {
+        spdlog::warn("{}: derived explicitly, not into substructures: {}", o.file, why_not);
+      }
     } else {
       run_derive_compressed(o, sys);
       return;
