@@ -5,7 +5,7 @@
 // expansion is the plant's explicit tree. Each record holds Jaeger's node table columns (2.2):
 // successor on the same axis, lateral (axillary) successors, physiological age, birth date,
 // volumes of pith, rings and leaf, and multiplicity (how many metamers of the plant it stands
-// for). File extension .ctree (docs/ctree-format.md).
+// for). File extension .ctree (docs/formats.md, ".ctree").
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -139,7 +139,7 @@ class CompressedTreeGraph {
   RecordId root_ = kNoRecord;
 };
 
-// Binary .ctree files (docs/ctree-format.md), written atomically. Reading checks the magic,
+// Binary .ctree files (docs/formats.md, ".ctree"), written atomically. Reading checks the magic,
 // the version, every id and the stored multiplicities; throws ParseError/IoError.
 void write_ctree_file(const CompressedTreeGraph& graph, const std::string& path);
 CompressedTreeGraph read_ctree_file(const std::string& path);
