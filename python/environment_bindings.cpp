@@ -473,7 +473,7 @@ void bind_growth(py::module_& m) {
       "base (x, y, z in m)");
 }
 
-void bind_adaptation(py::module_& m) {
+void bind_analysis_params(py::module_& m) {
   py::class_<env::AnalysisParams> ap(
       m, "AnalysisParams", "Parameters of the open-sky analysis for plastic adaptation (Pirk 4.3)");
   ap.def_property(
@@ -519,8 +519,11 @@ void bind_adaptation(py::module_& m) {
       .add("light_significance", &env::AnalysisParams::light_significance,
            "light_model 'sky': largest share of light an ignored occluder may remove (> 0; 0.01)")
       .finish();
+}
 
-  using TA = env::TreeAnalysis;
+using TA = env::TreeAnalysis;
+
+void bind_tree_analysis(py::module_& m) {
   py::class_<TA>(m, "TreeAnalysis", "A tree analysed as grown in the open (analyze_tree)")
       .def_property_readonly(
           "params", [](const TA& a) { return a.params; }, "The AnalysisParams used (a copy)")
@@ -582,7 +585,9 @@ void bind_adaptation(py::module_& m) {
         return "<fspm.TreeAnalysis: " + std::to_string(a.skeleton.size()) + " nodes, " +
                std::to_string(a.clusters.size()) + " clusters>";
       });
+}
 
+void bind_adaptation_result(py::module_& m) {
   using AR = env::AdaptationResult;
   py::class_<AR>(m, "AdaptationResult", "An adapted tree (attributes displacement and pruned)")
       .def_readonly("tree", &AR::tree,
@@ -610,7 +615,12 @@ void bind_adaptation(py::module_& m) {
         return "<fspm.AdaptationResult: " + std::to_string(r.tree.size()) + " nodes, " +
                std::to_string(r.pruned_nodes) + " pruned>";
       });
+}
 
+void bind_adaptation(py::module_& m) {
+  bind_analysis_params(m);
+  bind_tree_analysis(m);
+  bind_adaptation_result(m);
   m.def(
       "analyze_tree",
       [](const TreeGraph& tree, py::handle params, const Eigen::Vector3d& brightest) {

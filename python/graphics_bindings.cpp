@@ -50,7 +50,7 @@ gr::Image image_from(
   return image;
 }
 
-void bind_mesh(py::module_& m) {
+void bind_mesh_options(py::module_& m) {
   py::class_<gr::MeshOptions> mo(m, "MeshOptions",
                                  "How a tree is meshed: ring resolution, caps, leaves, junctions");
   // Junctions are a name, like the command line's --junctions.
@@ -119,8 +119,11 @@ void bind_mesh(py::module_& m) {
       .existing("junctions")
       .existing("foliage")
       .finish();
+}
 
-  using TM = gr::TriangleMesh;
+using TM = gr::TriangleMesh;
+
+void bind_triangle_mesh(py::module_& m) {
   py::class_<TM>(m, "TriangleMesh", "An indexed triangle mesh with per-vertex attributes")
       .def_property_readonly("vertex_count", &TM::vertex_count, "Number of vertices")
       .def(
@@ -191,7 +194,9 @@ void bind_mesh(py::module_& m) {
         return "<fspm.TriangleMesh with " + std::to_string(mesh.vertex_count()) + " vertices, " +
                std::to_string(mesh.triangle_count()) + " triangles>";
       });
+}
 
+void bind_meshing(py::module_& m) {
   m.def(
       "mesh_tree",
       [](const TreeGraph& tree, std::optional<gr::MeshOptions> options, const py::kwargs& kw) {
@@ -224,7 +229,9 @@ void bind_mesh(py::module_& m) {
       },
       py::arg("radius"), py::arg("options") = py::none(), py::arg("distance") = 0.0,
       "Ring resolution of a tube of this radius");
+}
 
+void bind_mesh_writers(py::module_& m) {
   const auto writer = [&m](const char* name, void (*fn)(const TM&, const std::string&),
                            const char* doc) {
     m.def(
@@ -264,6 +271,13 @@ void bind_mesh(py::module_& m) {
       py::arg("tree"), py::arg("path"), py::arg("ages") = py::none(),
       py::arg("options") = py::none(),
       "ParaView growth sequence: one .vtp per age beside `path` and the .pvd listing them");
+}
+
+void bind_mesh(py::module_& m) {
+  bind_mesh_options(m);
+  bind_triangle_mesh(m);
+  bind_meshing(m);
+  bind_mesh_writers(m);
 }
 
 void bind_render(py::module_& m) {
