@@ -5,6 +5,7 @@
 // computes them (a cluster's translucency follows Pirk eq. 4.4 in the environment module). The
 // environment turns it into occluders and a sky, graphics into placed plant meshes.
 #include <Eigen/Core>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <variant>
@@ -83,6 +84,43 @@ struct ScenePlant {
   std::optional<double> age;  // plant age of a compressed graph; unset: as simulated
 };
 
+// A terrain from a heightfield image (Argudo 2014, 6.1): pixel (i, j), row 0 at the top (north),
+// stands at x = i metres_per_pixel, y = (rows - 1 - j) metres_per_pixel and
+// z = height_scale_m * value, the value of its first channel (in [0, 1] for integer images, as
+// stored for floating-point ones).
+struct SceneTerrain {
+  std::string heightfield;  // resolved against the scene file's directory
+  double metres_per_pixel = 1.0;
+  double height_scale_m = 1.0;
+  int stride = 1;  // the mesh takes every stride-th pixel (plants stand on the full heightfield)
+};
+
+// One plant file of a population class, drawn with `probability` among the class's files.
+struct PopulationPlant {
+  std::string file;  // resolved
+  double probability = 1.0;
+  std::optional<double> age;
+};
+
+// The sites whose class-map grey level (0-255) is `value` hold a plant with probability
+// `density`, one of `plants` (Argudo 2014, 6.2: species as plants with a probability).
+struct PopulationClass {
+  int value = 0;
+  double density = 1.0;
+  std::vector<PopulationPlant> plants;
+};
+
+// Plants spread over the terrain at a minimum distance (Poisson-disk dart throwing), each on the
+// terrain, turned about z at random and scaled by a factor in [1 - scale_jitter, 1 + scale_jitter].
+struct ScenePopulation {
+  std::string map;  // class map, resolved, stretched over the terrain; empty: one class
+  std::vector<PopulationClass> classes;
+  double min_distance_m = 1.0;
+  std::optional<double> count;  // at most this many plants; unset: as many as fit
+  std::uint64_t seed = 1;
+  double scale_jitter = 0.0;
+};
+
 struct SceneDescription {
   std::string comment;  // free text, kept by fspm scene upgrade
   SceneSky sky;
@@ -90,6 +128,8 @@ struct SceneDescription {
   std::optional<SceneGround> ground;
   std::vector<SceneObstacle> obstacles;
   std::vector<ScenePlant> plants;
+  std::optional<SceneTerrain> terrain;
+  std::optional<ScenePopulation> population;  // needs the terrain
 };
 
 }  // namespace fspm

@@ -7,6 +7,7 @@
 
 #include "fspm/input_file.hpp"
 #include "fspm/json_fields.hpp"
+#include "fspm/scene_landscape_reader.hpp"
 #include "fspm/scene_obstacle_reader.hpp"
 
 namespace fspm {
@@ -98,11 +99,24 @@ void check_top_keys(const JsonFields& f, const json& doc) {
   for (auto it = doc.begin(); it != doc.end(); ++it) {
     if (earlier.count(it.key())) continue;
     f.check_keys(json{{it.key(), nullptr}}, "",
-                 {"fspm_scene", "comment", "sky", "gamma0", "ground", "obstacles", "plants"});
+                 {"fspm_scene", "comment", "sky", "gamma0", "ground", "obstacles", "plants",
+                  "terrain", "population"});
   }
   if (doc.contains("fspm_scene") && doc.at("fspm_scene") != 1 &&
       doc.at("fspm_scene") != kSceneVersion) {
     f.fail("/fspm_scene", "a scene version 1 or 2", &doc.at("fspm_scene"));
+  }
+}
+
+// The terrain and the population spread over it (a population needs the terrain).
+void read_landscape(const JsonFields& f, const json& doc, const std::filesystem::path& base,
+                    SceneDescription& scene) {
+  if (doc.contains("terrain")) {
+    scene.terrain = read_scene_terrain(f, doc.at("terrain"), "/terrain", base);
+  }
+  if (doc.contains("population")) {
+    if (!scene.terrain) f.fail("/terrain", "a terrain to place the population on (missing)");
+    scene.population = read_scene_population(f, doc.at("population"), "/population", base);
   }
 }
 
@@ -136,6 +150,7 @@ SceneDescription parse_scene_description(std::string_view text, const std::strin
       scene.plants.push_back(read_plant(f, (*list)[i], key + std::to_string(i), base));
     }
   }
+  read_landscape(f, doc, base, scene);
   return scene;
 }
 

@@ -65,17 +65,49 @@ json shape_json(const MeshObstacle& m) {
   return {{"type", "mesh"}, {"vertices", vertices}, {"triangles", triangles}};
 }
 
-json plant_json(const ScenePlant& p, const std::string& directory) {
-  // Relative to the written file, so the scene and its plants can move together.
-  std::filesystem::path file = p.file;
+// Relative to the written file, so the scene and its plants can move together.
+std::string relative_file(const std::string& path, const std::string& directory) {
+  std::filesystem::path file = path;
   std::error_code ec;
   const auto rel = std::filesystem::relative(file, directory.empty() ? "." : directory, ec);
   if (!ec && !rel.empty()) file = rel;
-  json o = {{"file", file.generic_string()},
+  return file.generic_string();
+}
+
+json plant_json(const ScenePlant& p, const std::string& directory) {
+  json o = {{"file", relative_file(p.file, directory)},
             {"position", array<3>(p.position)},
             {"rotation_deg", array<3>(p.rotation_deg)},
             {"scale", p.scale}};
   if (p.age) o["age"] = *p.age;
+  return o;
+}
+
+json terrain_json(const SceneTerrain& t, const std::string& directory) {
+  return {{"heightfield", relative_file(t.heightfield, directory)},
+          {"metres_per_pixel", t.metres_per_pixel},
+          {"height_scale_m", t.height_scale_m},
+          {"stride", t.stride}};
+}
+
+json population_json(const ScenePopulation& p, const std::string& directory) {
+  json o;
+  if (!p.map.empty()) o["map"] = relative_file(p.map, directory);
+  json classes = json::array();
+  for (const auto& c : p.classes) {
+    json plants = json::array();
+    for (const auto& q : c.plants) {
+      json j = {{"file", relative_file(q.file, directory)}, {"probability", q.probability}};
+      if (q.age) j["age"] = *q.age;
+      plants.push_back(j);
+    }
+    classes.push_back({{"value", c.value}, {"density", c.density}, {"plants", plants}});
+  }
+  o["classes"] = classes;
+  o["min_distance_m"] = p.min_distance_m;
+  if (p.count) o["count"] = *p.count;
+  o["seed"] = p.seed;
+  o["scale_jitter"] = p.scale_jitter;
   return o;
 }
 
@@ -101,6 +133,8 @@ json scene_description_json(const SceneDescription& scene, const std::string& di
   json plants = json::array();
   for (const auto& p : scene.plants) plants.push_back(plant_json(p, directory));
   doc["plants"] = plants;
+  if (scene.terrain) doc["terrain"] = terrain_json(*scene.terrain, directory);
+  if (scene.population) doc["population"] = population_json(*scene.population, directory);
   return doc;
 }
 
