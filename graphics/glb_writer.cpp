@@ -57,7 +57,7 @@ class GlbBuilder {
     const std::size_t nv = mesh.vertex_count();
     if (mesh.empty() || nv == 0) return -1;
     // Indices split by glTF material: the kMaterials order (bark, leaf, obstacle, crown,
-    // translucent obstacle), then one material per translucency of translucent obstacles.
+    // translucent obstacle, terrain), then one material per translucency of translucent obstacles.
     auto& indices = index_store_.emplace_back();
     const std::vector<std::size_t> material_of = triangle_materials(mesh);
     for (std::size_t i = 0; i < mesh.triangle_count(); ++i) {

@@ -25,7 +25,8 @@ void write_mtl(const std::string& path, const std::map<float, std::string>& tran
            "newmtl obstacle\nKa 0 0 0\nKd 0.62 0.61 0.58\nKs 0.02 0.02 0.02\nNs 5\nillum 2\n\n"
            "newmtl crown\nKa 0 0 0\nKd 0.35 0.62 0.25\nKs 0.02 0.02 0.02\nNs 5\nd 0.35\nillum 2\n\n"
            "newmtl translucent_obstacle\nKa 0 0 0\nKd 0.80 0.80 0.77\nKs 0.02 0.02 0.02\nNs 5\n"
-           "d 0.4\nillum 2\n";
+           "d 0.4\nillum 2\n\n"
+           "newmtl terrain\nKa 0 0 0\nKd 0.52 0.50 0.34\nKs 0.02 0.02 0.02\nNs 5\nillum 2\n";
     for (const auto& [gamma, name] : translucent) {
       out << fmt::format(
           "\nnewmtl {}\nKa 0 0 0\nKd 0.80 0.80 0.77\nKs 0.02 0.02 0.02\nNs 5\nd {:.3g}\nillum 2\n",

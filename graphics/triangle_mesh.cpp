@@ -16,6 +16,8 @@ std::string_view material_name(Material material) {
       return "crown";
     case Material::kTranslucentObstacle:
       return "translucent_obstacle";
+    case Material::kTerrain:
+      return "terrain";
     case Material::kBark:
       break;
   }
@@ -32,6 +34,8 @@ std::array<float, 3> material_color(Material material) {
       return {0.35f, 0.62f, 0.25f};
     case Material::kTranslucentObstacle:
       return {0.80f, 0.80f, 0.77f};
+    case Material::kTerrain:
+      return {0.52f, 0.50f, 0.34f};
     case Material::kBark:
       break;
   }
@@ -45,6 +49,7 @@ Material material_from_index(int index) {
   if (index == static_cast<int>(Material::kTranslucentObstacle)) {
     return Material::kTranslucentObstacle;
   }
+  if (index == static_cast<int>(Material::kTerrain)) return Material::kTerrain;
   return Material::kBark;
 }
 

@@ -20,12 +20,16 @@ enum class Material : std::uint8_t {
   kLeaf = 1,
   kObstacle = 2,
   kCrown = 3,
-  kTranslucentObstacle = 4
+  kTranslucentObstacle = 4,
+  kTerrain = 5
 };
 
-inline constexpr std::array<Material, 5> kMaterials = {Material::kBark, Material::kLeaf,
-                                                       Material::kObstacle, Material::kCrown,
-                                                       Material::kTranslucentObstacle};
+inline constexpr std::array<Material, 6> kMaterials = {Material::kBark,
+                                                       Material::kLeaf,
+                                                       Material::kObstacle,
+                                                       Material::kCrown,
+                                                       Material::kTranslucentObstacle,
+                                                       Material::kTerrain};
 
 // Opacity of the crown material (leaf-cluster volumes seen through) and of translucent obstacles
 // (any translucency above 0: hedges, nets, leaf clusters of a scene); the others are opaque.
@@ -46,12 +50,12 @@ inline bool is_obstacle(Material m) {
   return m == Material::kObstacle || m == Material::kTranslucentObstacle;
 }
 
-// "bark", "leaf", "obstacle", "crown", "translucent_obstacle".
+// "bark", "leaf", "obstacle", "crown", "translucent_obstacle", "terrain".
 std::string_view material_name(Material material);
 
 // The material's diffuse colour, linear RGB in [0, 1], shared by every renderer and exporter:
 // brown bark, green leaves, neutral grey stone for obstacles, a lighter green for crowns, a
-// lighter grey for translucent obstacles.
+// lighter grey for translucent obstacles, an olive brown for terrain.
 std::array<float, 3> material_color(Material material);
 
 // Material from the byte stored in PLY and VTP files; unknown values are bark.

@@ -100,7 +100,8 @@ TEST_F(ObstacleMaterial, GlbHasOneMaterialPerKind) {
   std::uint32_t json_len = 0;
   std::memcpy(&json_len, data.data() + 12, 4);
   const auto doc = nlohmann::json::parse(data.substr(20, json_len));
-  ASSERT_EQ(doc["materials"].size(), 5u);
+  ASSERT_EQ(doc["materials"].size(), 6u);
+  EXPECT_EQ(doc["materials"][5]["name"], "terrain");
   EXPECT_EQ(doc["materials"][2]["name"], "obstacle");
   EXPECT_FALSE(doc["materials"][2].contains("alphaMode"));  // stone is opaque
   // Obstacles that let light through: blended at their opacity.
