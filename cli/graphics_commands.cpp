@@ -36,6 +36,7 @@
 #include "graphics/image.hpp"
 #include "graphics/instance_lod.hpp"
 #include "graphics/instanced_mesh.hpp"
+#include "graphics/landscape.hpp"
 #include "graphics/mesh_writers.hpp"
 #include "graphics/render.hpp"
 #include "graphics/scene_file.hpp"
@@ -216,16 +217,40 @@ graphics::InstancedMesh place_plants(const graphics::SceneFile& scene,
   return graphics::place_parts(parts, placements);
 }
 
-// The plants of a scene file and its obstacles: near the plants (`near_plants`, for pictures),
-// or all of them whole. A scene without plants shows its obstacles whole.
+// A scene with its population's plants added to its plants; the terrain mesh, if any, in
+// `terrain`.
+SceneDescription read_landscape_scene(const std::string& path,
+                                      std::optional<graphics::TriangleMesh>& terrain) {
+  SceneDescription description = read_scene_description(path);
+  graphics::Landscape landscape = graphics::scene_landscape(description);
+  description.plants.insert(description.plants.end(), landscape.plants.begin(),
+                            landscape.plants.end());
+  terrain = std::move(landscape.terrain);
+  return description;
+}
+
+// The terrain placed once, as it is (after the obstacles, which are cropped to the plants).
+void add_terrain(graphics::InstancedMesh& mesh, std::optional<graphics::TriangleMesh>& terrain) {
+  if (!terrain) return;
+  graphics::MeshInstance inst;
+  inst.mesh = static_cast<std::uint32_t>(mesh.meshes.size());
+  mesh.meshes.push_back(std::move(*terrain));
+  mesh.instances.push_back(inst);
+}
+
+// The plants of a scene file (its population's among them), its obstacles and its terrain:
+// obstacles near the plants (`near_plants`, for pictures), or all of them whole. A scene without
+// plants shows its obstacles whole.
 graphics::InstancedMesh load_scene(const std::string& path, const graphics::MeshOptions& options,
                                    bool near_plants) {
-  const SceneDescription description = read_scene_description(path);
+  std::optional<graphics::TriangleMesh> terrain;
+  const SceneDescription description = read_landscape_scene(path, terrain);
   graphics::InstancedMesh mesh = place_plants(graphics::scene_plants(description.plants), options);
   if (!description.obstacles.empty()) {
     add_scene_obstacles(mesh, environment::scene_from_description(description), path,
                         near_plants && !description.plants.empty());
   }
+  add_terrain(mesh, terrain);
   return mesh;
 }
 
@@ -260,8 +285,9 @@ graphics::LodScene load_lod_scene(const std::string& path, const std::string& fo
   if (kind == InputKind::kPvd) throw ValueError("--lod needs a scene, tree or plant file", path);
   graphics::SceneFile plants;
   std::optional<SceneDescription> description;
+  std::optional<graphics::TriangleMesh> terrain;
   if (kind == InputKind::kScene) {
-    description = read_scene_description(path);
+    description = read_landscape_scene(path, terrain);
     plants = graphics::scene_plants(description->plants);
   } else {
     plants.sources.push_back({path, -1.0});
@@ -295,6 +321,7 @@ graphics::LodScene load_lod_scene(const std::string& path, const std::string& fo
     add_scene_obstacles(placed, environment::read_scene_file(obstacles_file), obstacles_file,
                         near_plants);
   }
+  add_terrain(placed, terrain);
   for (const auto& inst : placed.instances) {
     if (inst.mesh < plant_meshes) continue;
     graphics::MeshInstance fixed = inst;

@@ -1,5 +1,6 @@
 #include "graphics/heightfield.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 
