@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the example landscape's heightfield and class map (standard library only).
 
-hills.png: 129 x 129 16-bit grey heights in [0, 1] (6 m per pixel, 90 m per unit in the scene):
+hills.png: 129 x 129 16-bit grey heights in [0, 1] (6 m per pixel, 150 m per unit in the scene):
 a slope rising to the north with two rounded hills and a valley running north-south.
 classes.png: 65 x 65 8-bit grey classes stretched over the same terrain: 255 forest on the
 slopes, 128 open woodland in the valley floor, 0 a treeless meadow and a path.
