@@ -17,11 +17,14 @@ void add_adapt_commands(CLI::App& app);
 void add_stages_commands(CLI::App& app);
 void add_scan_commands(CLI::App& app);
 void add_scene_commands(CLI::App& app);
+// fspm decode (fspm-full: meshes).
+void add_decode_commands(CLI::App& app);
 // fspm crown (fspm-full, built with OpenImageIO).
 void add_crown_commands(CLI::App& app);
 
 // The commands that need the graphics and experiments libraries (run, compare, report, results,
-// mesh, render, view, crown): registered for real in fspm-full; in fspm only listed in --help.
+// mesh, render, view, decode, crown): registered for real in fspm-full; in fspm only listed in
+// --help.
 void add_full_commands(CLI::App& app);
 // In fspm: when the command line names one of those commands, replaces the process by fspm-full
 // with the same arguments (throws IoError when it cannot); otherwise returns. In fspm-full:

@@ -28,11 +28,16 @@ inline constexpr FullCommand kViewCommand{
     "Real-time viewer: drag to orbit, right-drag to pan, wheel to zoom, [ ] growth steps, "
     "S shadows, R reset, Esc quit"};
 
+inline constexpr FullCommand kDecodeCommand{
+    "decode",
+    "Decode a cluster-based tree (.clusters): skeleton mesh and clusters textured with "
+    "L-system patches"};
+
 inline constexpr FullCommand kCrownCommand{
     "crown", "A tree crown from one photograph (Argudo 2014): mesh and cubemaps"};
 
-inline constexpr std::array<FullCommand, 8> kFullCommands = {
-    kRunCommand,  kCompareCommand, kReportCommand, kResultsCommand,
-    kMeshCommand, kRenderCommand,  kViewCommand,   kCrownCommand};
+inline constexpr std::array<FullCommand, 9> kFullCommands = {
+    kRunCommand,    kCompareCommand, kReportCommand, kResultsCommand, kMeshCommand,
+    kRenderCommand, kViewCommand,    kDecodeCommand, kCrownCommand};
 
 }  // namespace fspm::cli

@@ -12,6 +12,7 @@ namespace fspm::cli {
 void add_full_commands(CLI::App& app) {
   add_experiment_commands(app);
   add_graphics_commands(app);
+  add_decode_commands(app);
 #ifdef FSPM_HAVE_CROWN
   add_crown_commands(app);
 #else

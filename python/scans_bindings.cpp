@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "python/bindings.hpp"
+#include "reconstruction/decoding.hpp"
 #include "scans/clusters_file.hpp"
 #include "scans/encoder.hpp"
 #include "scans/point_set_file.hpp"
@@ -138,6 +139,21 @@ void bind_scans(py::module_& m) {
         return scans::read_clusters_file(path);
       },
       py::arg("path"), "Read a .clusters file (docs/formats.md)");
+  m.def(
+      "decode_clusters",
+      [](const scans::ClusterModel& model, const std::string& species, int branchlets,
+         std::uint64_t seed) {
+        reconstruction::DecodeOptions o;
+        o.species = species;
+        o.library.branchlets = branchlets;
+        o.seed = seed;
+        py::gil_scoped_release release;
+        return reconstruction::decoded_tree(model, reconstruction::decode_clusters(model, o));
+      },
+      py::arg("model"), py::arg("species") = "", py::arg("branchlets") = 8, py::arg("seed") = 1,
+      "Decode a ClusterModel into a full Tree (Pirk 3.4): the skeleton (same node ids) followed "
+      "by the patches of L-system branchlets that texture its clusters, chosen by eq. 3.3 and "
+      "fitted to the hulls; species '' uses the model's; the same seed gives the same tree");
   m.def(
       "simulate_scan",
       [](const TreeGraph& tree, std::uint64_t seed, int scanners, double density_per_m2,

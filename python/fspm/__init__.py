@@ -56,6 +56,7 @@ from ._fspm import (  # noqa: F401
     adapt_trees,
     analyze_tree,
     cohens_d,
+    decode_clusters,
     count_mesh,
     display_available,
     developmental_model,

@@ -1,8 +1,12 @@
 """Trees from laser scans from Python (docs/scans.md), against shapes whose answers are known."""
+import pathlib
+
 import numpy as np
 import pytest
 
 import fspm
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 
 def cylinder_points(radius=0.15, height=3.0, rings=300, per_ring=48, seed=4):
@@ -81,3 +85,20 @@ def test_simulated_scans_depend_only_on_the_seed():
     trunk = a[a[:, 2] < 0.9]
     assert np.abs(np.hypot(trunk[:, 0], trunk[:, 1]) - 0.1).max() < 0.02
     assert radial.max() < 0.7
+
+
+def test_decoding_textures_the_clusters_below_the_skeleton():
+    tree = fspm.read_tree(str(ROOT / "examples" / "trees" / "open_a12.treeb"))
+    model = fspm.encode_points(fspm.simulate_scan(tree, seed=3), f_s=0.9)
+    assert len(model.clusters) > 0
+    decoded = fspm.decode_clusters(model, branchlets=3, seed=2)
+    n = len(model.skeleton)
+    # The skeleton keeps its node ids; every textured cluster adds at least one patch.
+    np.testing.assert_allclose(decoded.ends[:n], model.skeleton.ends)
+    assert len(decoded) > n
+    parents = decoded.parents
+    assert all(0 <= parents[k] < k for k in range(n, len(decoded)))
+    again = fspm.decode_clusters(model, branchlets=3, seed=2)
+    np.testing.assert_array_equal(decoded.ends, again.ends)
+    with pytest.raises(ValueError):
+        fspm.decode_clusters(model, species="pinee")

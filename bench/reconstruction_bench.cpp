@@ -1,0 +1,75 @@
+// Decoding a cluster-based tree (Pirk sec. 3.4, Table 3.2): the synthetic test tree scanned and
+// encoded once (as in scans_bench), its species library built once (a library serves every tree
+// of its species), then per iteration the clusters textured (eq. 3.3) and the result built as an
+// instanced mesh (skeleton tubes, each patch meshed once and placed by instances), or further
+// flattened into one explicit mesh. Pirk Table 3.2 (GPU): 3-18 ms full, 1-4 ms with LOD.
+#include <benchmark/benchmark.h>
+
+#include <random>
+
+#include "reconstruction/decoding.hpp"
+#include "scans/encoder.hpp"
+#include "scans/scan_simulator.hpp"
+#include "scans/synthetic_tree.hpp"
+
+namespace {
+
+namespace rc = fspm::reconstruction;
+
+const fspm::scans::ClusterModel& model() {
+  static const fspm::scans::ClusterModel m = [] {
+    fspm::scans::SyntheticTreeOptions t;
+    t.trunk_length_m = 8.0;
+    t.branch_length_m = 3.0;
+    t.branches = 8;
+    t.twigs = 4;
+    t.root_diameter_m = 0.4;
+    fspm::scans::ScanOptions s;
+    s.density_per_m2 = 20000.0;
+    std::mt19937_64 rng(1);
+    const fspm::scans::PointSet scan =
+        fspm::scans::simulate_scan(fspm::scans::synthetic_tree(t), s, rng);
+    fspm::scans::EncodeOptions e;
+    e.species.f_s = 0.9;
+    return fspm::scans::encode_point_set(scan, e).model;
+  }();
+  return m;
+}
+
+const rc::SpeciesLibrary& library() {
+  static const rc::SpeciesLibrary lib = rc::make_species_library("default", {});
+  return lib;
+}
+
+void run(benchmark::State& state, bool flatten, bool lod) {
+  const fspm::scans::ClusterModel& m = model();
+  rc::Decoding d;
+  d.library = library();
+  rc::DecodeMeshOptions options;
+  if (lod) options.camera_m = Eigen::Vector3d(0.0, -60.0, 5.0);
+  std::size_t triangles = 0, instances = 0;
+  for (auto _ : state) {
+    std::mt19937_64 rng(1);
+    d.placements = rc::texture_clusters(m, d.library, {}, rng);
+    const fspm::graphics::InstancedMesh mesh = rc::decoded_mesh(m, d, options);
+    if (flatten) {
+      const fspm::graphics::TriangleMesh flat = mesh.flatten();
+      benchmark::DoNotOptimize(flat.positions.data());
+    }
+    triangles = mesh.triangle_count();
+    instances = mesh.instances.size();
+  }
+  state.counters["clusters"] = static_cast<double>(m.clusters.size());
+  state.counters["instances"] = static_cast<double>(instances);
+  state.counters["triangles"] = static_cast<double>(triangles);
+}
+
+void BM_DecodeInstanced(benchmark::State& state) { run(state, false, false); }
+void BM_DecodeInstancedLod60m(benchmark::State& state) { run(state, false, true); }
+void BM_DecodeExplicitMesh(benchmark::State& state) { run(state, true, false); }
+
+}  // namespace
+
+BENCHMARK(BM_DecodeInstanced)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DecodeInstancedLod60m)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DecodeExplicitMesh)->Unit(benchmark::kMillisecond);

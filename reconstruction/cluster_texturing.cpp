@@ -1,0 +1,195 @@
+#include "reconstruction/cluster_texturing.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <numbers>
+#include <string>
+
+#include "fspm/error.hpp"
+#include "reconstruction/hull_geometry.hpp"
+
+namespace fspm::reconstruction {
+namespace {
+
+void validate(const TextureOptions& o) {
+  if (!(o.max_thickness_ratio >= 1.0) || !std::isfinite(o.max_thickness_ratio)) {
+    throw ValueError("the thickness ratio of similar patches must be >= 1");
+  }
+  if (!(o.max_angle_deg > 0.0 && o.max_angle_deg <= 180.0)) {
+    throw ValueError("the angle of similar patches must be within (0, 180] degrees");
+  }
+  if (!(o.fit_tolerance >= 0.0) || !std::isfinite(o.fit_tolerance)) {
+    throw ValueError("the fit tolerance must be finite and >= 0");
+  }
+  if (o.max_depth < 0 || o.max_patches_per_cluster == 0) {
+    throw ValueError("texturing needs max_depth >= 0 and at least one patch per cluster");
+  }
+  if (!(o.min_scale_ratio >= 0.0 && o.min_scale_ratio <= 1.0)) {
+    throw ValueError("the smallest scale ratio of a docked patch must be within [0, 1]");
+  }
+}
+
+struct Pending {
+  Docking docking;
+  std::uint32_t parent = kNoPlacement;
+  std::uint32_t docking_index = 0;
+  int depth = 0;
+  double parent_scale = 0.0;
+};
+
+// Rotation taking the patch's v_r onto the docking direction, rolled about it by `roll_rad`.
+Eigen::Matrix3d docking_rotation(const Eigen::Vector3d& v_r, const Eigen::Vector3d& v_d,
+                                 double roll_rad) {
+  const Eigen::Matrix3d align =
+      Eigen::Quaterniond::FromTwoVectors(v_r, v_d).normalized().toRotationMatrix();
+  return Eigen::AngleAxisd(roll_rad, v_d).toRotationMatrix() * align;
+}
+
+// Patch fitting: the scale at which the patch ends where the ray along the docking direction
+// leaves the hull (the last crossing from the seed point, which may lie outside the hull; the
+// first from a docking point inside it). 0 when the ray does not reach the hull.
+double fitted_scale(const scans::ClusterHull& hull, const Pending& p, const Patch& patch) {
+  const std::vector<double> ts = ray_hull_crossings(hull, p.docking.position, p.docking.direction);
+  if (ts.empty() || !(patch.length_m > 0.0)) return 0.0;
+  const double reach_m = p.parent == kNoPlacement ? ts.back() : ts.front();
+  const double scale = reach_m / patch.length_m;
+  return p.parent == kNoPlacement ? scale : std::min(scale, p.parent_scale);
+}
+
+}  // namespace
+
+double patch_fit(double thickness_r, double thickness_d, const Eigen::Vector3d& v_r,
+                 const Eigen::Vector3d& v_d) {
+  // Pirk eq. 3.3
+  return std::max(thickness_r, thickness_d) / std::min(thickness_r, thickness_d) * v_r.dot(v_d);
+}
+
+std::vector<std::uint32_t> similar_patches(const SpeciesLibrary& library, const Docking& docking,
+                                           const TextureOptions& options) {
+  const double min_cos = std::cos(options.max_angle_deg * std::numbers::pi / 180.0);
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t k = 0; k < library.patches.size(); ++k) {
+    const Patch& p = library.patches[k];
+    const double ratio =
+        std::max(p.thickness, docking.thickness) / std::min(p.thickness, docking.thickness);
+    if (ratio <= options.max_thickness_ratio && p.direction.dot(docking.direction) >= min_cos) {
+      out.push_back(k);
+    }
+  }
+  return out;
+}
+
+std::vector<std::uint32_t> best_fitting_patches(const SpeciesLibrary& library,
+                                                const std::vector<std::uint32_t>& candidates,
+                                                const Docking& docking,
+                                                const TextureOptions& options) {
+  std::vector<double> miss(candidates.size());
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    const Patch& p = library.patches[candidates[k]];
+    miss[k] =
+        std::abs(patch_fit(p.thickness, docking.thickness, p.direction, docking.direction) - 1.0);
+    best = std::min(best, miss[k]);
+  }
+  std::vector<std::uint32_t> out;
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    if (miss[k] <= best + options.fit_tolerance) out.push_back(candidates[k]);
+  }
+  return out;
+}
+
+Docking seed_docking(const scans::ClusterModel& model, std::size_t cluster) {
+  const scans::ClusterHull& hull = model.clusters[cluster];
+  Docking d;
+  d.position = model.skeleton.end(hull.seed_node);
+  const Eigen::Vector3d to_centroid = hull_centroid(hull) - d.position;
+  const Eigen::Vector3d heading = model.skeleton.direction(hull.seed_node);
+  if (to_centroid.norm() > 1e-12) {
+    d.direction = to_centroid.normalized();
+  } else if (heading.norm() > 1e-12) {
+    d.direction = heading.normalized();
+  }
+  d.thickness = 1.0;
+  return d;
+}
+
+std::vector<PlacedPatch> texture_cluster(const scans::ClusterModel& model, std::size_t cluster,
+                                         const SpeciesLibrary& library,
+                                         const TextureOptions& options, std::mt19937_64& rng) {
+  const scans::ClusterHull& hull = model.clusters[cluster];
+  std::vector<PlacedPatch> placed;
+  if (hull.triangles.empty()) return placed;
+  std::uniform_real_distribution<double> roll(0.0, 2.0 * std::numbers::pi);
+  std::deque<Pending> queue;
+  queue.push_back(Pending{seed_docking(model, cluster)});
+  while (!queue.empty() && placed.size() < options.max_patches_per_cluster) {
+    const Pending p = queue.front();
+    queue.pop_front();
+    std::vector<std::uint32_t> s_s = similar_patches(library, p.docking, options);
+    if (s_s.empty() && p.parent == kNoPlacement) {
+      for (std::uint32_t k = 0; k < library.patches.size(); ++k) s_s.push_back(k);
+    }
+    const std::vector<std::uint32_t> best = best_fitting_patches(library, s_s, p.docking, options);
+    if (best.empty()) continue;
+    std::uniform_int_distribution<std::size_t> pick(0, best.size() - 1);
+    const std::uint32_t chosen = best[pick(rng)];
+    const Patch& patch = library.patches[chosen];
+    const double scale = fitted_scale(hull, p, patch);
+    if (!(scale > 0.0) ||
+        (p.parent != kNoPlacement && scale < options.min_scale_ratio * p.parent_scale)) {
+      continue;
+    }
+    PlacedPatch pp;
+    pp.patch = chosen;
+    pp.cluster = static_cast<std::uint32_t>(cluster);
+    pp.parent = p.parent;
+    pp.docking = p.docking_index;
+    pp.rotation = docking_rotation(patch.direction, p.docking.direction, roll(rng));
+    pp.scale = scale;
+    pp.translation = p.docking.position;
+    pp.fit = patch_fit(patch.thickness, p.docking.thickness, patch.direction, p.docking.direction);
+    pp.depth = p.depth;
+    const auto index = static_cast<std::uint32_t>(placed.size());
+    placed.push_back(pp);
+    if (p.depth >= options.max_depth) continue;
+    for (std::uint32_t k = 0; k < patch.dockings.size(); ++k) {
+      const DockingPoint& dp = patch.dockings[k];
+      Pending next;
+      next.docking.position = pp.to_world(dp.position);
+      next.docking.direction = (pp.rotation * dp.direction).normalized();
+      next.docking.thickness = dp.thickness;
+      next.parent = index;
+      next.docking_index = k;
+      next.depth = p.depth + 1;
+      next.parent_scale = scale;
+      if (inside_hull(hull, next.docking.position)) queue.push_back(next);
+    }
+  }
+  return placed;
+}
+
+std::vector<PlacedPatch> texture_clusters(const scans::ClusterModel& model,
+                                          const SpeciesLibrary& library,
+                                          const TextureOptions& options, std::mt19937_64& rng) {
+  validate(options);
+  if (library.patches.empty()) throw ValueError("the species library has no patches");
+  std::vector<PlacedPatch> all;
+  for (std::size_t c = 0; c < model.clusters.size(); ++c) {
+    if (model.clusters[c].seed_node >= model.skeleton.size()) {
+      throw ValueError("cluster " + std::to_string(c) + " hangs at skeleton node " +
+                       std::to_string(model.clusters[c].seed_node) + ", but the skeleton has " +
+                       std::to_string(model.skeleton.size()) + " nodes");
+    }
+    std::vector<PlacedPatch> placed = texture_cluster(model, c, library, options, rng);
+    const auto offset = static_cast<std::uint32_t>(all.size());
+    for (PlacedPatch& p : placed) {
+      if (p.parent != kNoPlacement) p.parent += offset;
+      all.push_back(p);
+    }
+  }
+  return all;
+}
+
+}  // namespace fspm::reconstruction
