@@ -53,13 +53,13 @@ std::string branchlet_lsystem(std::string_view species) {
          "Axiom: A(0.5,0.05)\n"
          "A(l,w) --> !(w)F(l)" +
          leaves + "/(137.5)" + lateral +
-         "B(l*0.75,w*0.6)]A(l*0.9,w*0.85) : 0.65\n"
+         "B(l*0.8,w*0.6)]A(l*0.9,w*0.85) : 0.8\n"
          "A(l,w) --> !(w)F(l)" +
          leaves +
          "/(137.5)A(l*0.9,w*0.85) : 0.35\n"
          "B(l,w) --> !(w)F(l)" +
          leaves + "/(137.5)" + lateral +
-         "B(l*0.7,w*0.6)]B(l*0.85,w*0.8) : 0.45\n"
+         "B(l*0.75,w*0.6)]B(l*0.85,w*0.8) : 0.6\n"
          "B(l,w) --> !(w)F(l)" +
          leaves +
          "/(137.5)B(l*0.85,w*0.8) : 0.55\n"

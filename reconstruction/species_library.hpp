@@ -42,7 +42,7 @@ struct SpeciesLibrary {
 
 struct LibraryOptions {
   int branchlets = 8;  // seeded variants per species (Pirk uses 20-30)
-  int steps = 5;       // derivation steps of each branchlet
+  int steps = 6;       // derivation steps of each branchlet
   std::uint64_t seed = 1;
 };
 
