@@ -3,10 +3,12 @@
 // orbit (left drag), pan (right drag or shift + left drag), zoom (wheel), growth steps on [ and ]
 // (or left/right arrows), shadows from a sun with a 3x3 percentage-closer filtered shadow map
 // (Pirk 6.2.3) toggled with S, R resets the view, Esc or Q quits; the frame time is shown in the
-// title. Translucent obstacles are blended at the opacity of their translucency after the opaque
-// geometry, without writing depth. With a screenshot path it renders `frames` frames into an
-// offscreen framebuffer, writes the image and returns (tests run it under Xvfb with Mesa's software
-// OpenGL).
+// title. Crown volumes (at kCrownOpacity, as in renders) and translucent obstacles (at the
+// opacity of their translucency) are blended after the opaque geometry without writing depth,
+// their triangles placed in the world and sorted back to front from the eye whenever the camera
+// moves (translucent_sort.hpp). With a screenshot path it renders `frames` frames into an
+// offscreen framebuffer, writes the image and returns (tests run it under Xvfb with Mesa's
+// software OpenGL).
 #include <string>
 #include <vector>
 

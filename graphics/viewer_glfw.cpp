@@ -20,6 +20,7 @@
 
 #include "fspm/error.hpp"
 #include "graphics/image.hpp"
+#include "graphics/translucent_sort.hpp"
 #include "graphics/viewer.hpp"
 
 namespace fspm::graphics {
@@ -39,7 +40,7 @@ void main() {}
 const char* kSceneVs = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
-layout(location = 2) in vec4 color;  // alpha below 1: translucent obstacles
+layout(location = 2) in vec4 color;  // alpha below 1: crowns and translucent obstacles
 layout(location = 3) in mat4 model;  // per instance: rotation times uniform scale, translation
 uniform mat4 mvp;
 uniform mat4 light_mvp;
@@ -138,10 +139,31 @@ struct GpuMesh {
   GLsizei instances = 0;
 };
 
+// Crown volumes and translucent obstacles are blended over the opaque geometry.
+bool is_blended(Material m) { return m == Material::kCrown || m == Material::kTranslucentObstacle; }
+
+// The blended triangles of one shared mesh, three corners each, in the mesh's own frame.
+struct BlendedPart {
+  std::vector<Eigen::Vector3f> positions, normals;
+  std::vector<glm::vec4> colors;
+};
+
+// Every blended triangle of a step placed in the world (one copy per instance), three vertices
+// each, drawn as one mesh whose index buffer is rewritten back to front whenever the eye moves.
+struct BlendedSoup {
+  GpuMesh mesh;
+  std::vector<Eigen::Vector3f> centroids;
+  bool sorted = false;
+  glm::vec3 sorted_for{0.0f};  // the eye of the current order
+};
+
 // One GpuMesh per mesh of the step (a default one for an empty mesh), so a level-of-detail
-// frame can set the instances of mesh k.
+// frame can set the instances of mesh k; the blended triangles of each mesh on the CPU and,
+// placed, in the soup.
 struct GpuStep {
   std::vector<GpuMesh> meshes;
+  std::vector<BlendedPart> blended;  // one per mesh
+  BlendedSoup soup;
   std::size_t triangles = 0;  // of the explicit scene
 };
 
@@ -256,9 +278,18 @@ GpuMesh upload_raw(const std::vector<float>& v, const std::vector<std::uint32_t>
   return g;
 }
 
+void release(GpuMesh& g) {
+  if (g.vao == 0) return;
+  glDeleteBuffers(1, &g.vbo);
+  glDeleteBuffers(1, &g.ibo);
+  glDeleteBuffers(1, &g.instance_vbo);
+  glDeleteVertexArrays(1, &g.vao);
+}
+
 // Per-vertex RGBA of one mesh: bark colour or the attribute's colour map; leaves and crowns in
-// their colour unless coloured by an attribute; obstacles always in stone, translucent ones at
-// the opacity of their translucency (translucent_obstacle_opacity, as the renders).
+// their colour unless coloured by an attribute, crowns always at kCrownOpacity (as the renders);
+// obstacles always in stone, translucent ones at the opacity of their translucency
+// (translucent_obstacle_opacity, as the renders).
 std::vector<glm::vec4> vertex_colors(const TriangleMesh& mesh, const ViewerOptions& o,
                                      const Scene& scene, float value_offset) {
   auto rgba = [](Material m, float alpha) {
@@ -277,25 +308,40 @@ std::vector<glm::vec4> vertex_colors(const TriangleMesh& mesh, const ViewerOptio
   const bool gammas = mesh.has_attribute("translucency");
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
     const Material m = mesh.materials[t];
-    const bool foliage = m == Material::kLeaf || m == Material::kCrown;
-    if (m == Material::kBark || (foliage && !o.color_by.empty())) continue;
+    if (m == Material::kBark) continue;
+    const bool by_attribute =
+        !o.color_by.empty() && (m == Material::kLeaf || m == Material::kCrown);
     for (auto i : mesh.triangles[t]) {
-      float alpha = 1.0f;
+      float alpha = m == Material::kCrown ? kCrownOpacity : 1.0f;
       if (m == Material::kTranslucentObstacle) {
         alpha = gammas ? translucent_obstacle_opacity(mesh.attribute("translucency")[i])
                        : kTranslucentObstacleOpacity;
       }
-      colors[i] = rgba(m, alpha);
+      colors[i] = by_attribute ? glm::vec4(glm::vec3(colors[i]), alpha) : rgba(m, alpha);
     }
   }
   return colors;
 }
 
-// Interleaved position, normal, colour of one shared mesh; translucent obstacles' triangles
-// after the others, so they are drawn last.
+// The corners of the blended triangles of `mesh` with their colours.
+BlendedPart blended_part(const TriangleMesh& mesh, const std::vector<glm::vec4>& colors) {
+  BlendedPart part;
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    if (!is_blended(mesh.materials[t])) continue;
+    for (auto i : mesh.triangles[t]) {
+      part.positions.push_back(mesh.positions[i]);
+      part.normals.push_back(mesh.normals[i]);
+      part.colors.push_back(colors[i]);
+    }
+  }
+  return part;
+}
+
+// Interleaved position, normal, colour of one shared mesh; blended triangles after the others
+// (the shadow pass draws them all, the scene pass only the opaque ones: the blended ones are
+// drawn from the sorted soup).
 GpuMesh upload(const TriangleMesh& mesh, const std::vector<glm::mat4>& models,
-               const ViewerOptions& o, const Scene& scene, float value_offset) {
-  const std::vector<glm::vec4> colors = vertex_colors(mesh, o, scene, value_offset);
+               const std::vector<glm::vec4>& colors) {
   std::vector<float> v;
   v.reserve(mesh.vertex_count() * 10);
   for (std::size_t i = 0; i < mesh.vertex_count(); ++i) {
@@ -307,7 +353,7 @@ GpuMesh upload(const TriangleMesh& mesh, const std::vector<glm::mat4>& models,
   std::vector<std::uint32_t> idx, translucent;
   idx.reserve(mesh.triangle_count() * 3);
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-    auto& to = mesh.materials[t] == Material::kTranslucentObstacle ? translucent : idx;
+    auto& to = is_blended(mesh.materials[t]) ? translucent : idx;
     to.insert(to.end(), mesh.triangles[t].begin(), mesh.triangles[t].end());
   }
   const std::size_t opaque = idx.size();
@@ -315,16 +361,66 @@ GpuMesh upload(const TriangleMesh& mesh, const std::vector<glm::mat4>& models,
   return upload_raw(v, idx, opaque, models);
 }
 
+// The blended triangles of every mesh placed by `models` (one list per mesh) into one soup on
+// the GPU, in index order until the first sort.
+void place_blended(GpuStep& g, const std::vector<std::vector<glm::mat4>>& models) {
+  release(g.soup.mesh);
+  g.soup = BlendedSoup{};
+  std::vector<float> v;
+  std::vector<Eigen::Vector3f> corners;
+  for (std::size_t k = 0; k < g.blended.size(); ++k) {
+    const BlendedPart& part = g.blended[k];
+    for (const glm::mat4& model : models[k]) {
+      const glm::mat3 turn(model);  // rotation times uniform scale
+      for (std::size_t i = 0; i < part.positions.size(); ++i) {
+        const Eigen::Vector3f& p = part.positions[i];
+        const glm::vec3 w = glm::vec3(model * glm::vec4(p.x(), p.y(), p.z(), 1.0f));
+        const glm::vec3 n =
+            turn * glm::vec3(part.normals[i].x(), part.normals[i].y(), part.normals[i].z());
+        const glm::vec4& c = part.colors[i];
+        v.insert(v.end(), {w.x, w.y, w.z, n.x, n.y, n.z, c.r, c.g, c.b, c.a});
+        corners.emplace_back(w.x, w.y, w.z);
+      }
+    }
+  }
+  if (corners.empty()) return;
+  std::vector<std::uint32_t> idx(corners.size());
+  for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = static_cast<std::uint32_t>(i);
+  g.soup.mesh = upload_raw(v, idx, 0, {glm::mat4(1.0f)});
+  g.soup.centroids = soup_centroids(corners);
+}
+
+// The soup's triangles back to front from `eye` (painter's algorithm), when the eye has moved.
+void sort_blended(BlendedSoup& soup, const glm::vec3& eye) {
+  if (soup.mesh.vao == 0 || (soup.sorted && soup.sorted_for == eye)) return;
+  const std::vector<std::uint32_t> order =
+      back_to_front(soup.centroids, Eigen::Vector3f(eye.x, eye.y, eye.z));
+  std::vector<std::uint32_t> idx;
+  idx.reserve(3 * order.size());
+  for (std::uint32_t t : order) idx.insert(idx.end(), {3 * t, 3 * t + 1, 3 * t + 2});
+  glBindVertexArray(soup.mesh.vao);  // the element buffer binding belongs to the vertex array
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, soup.mesh.ibo);
+  glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(idx.size() * 4), idx.data());
+  glBindVertexArray(0);
+  soup.sorted = true;
+  soup.sorted_for = eye;
+}
+
 GpuStep upload(const StepRef& step, const ViewerOptions& o, const Scene& scene) {
   GpuStep g;
   for (std::size_t k = 0; k < step.meshes.size(); ++k) {
     if (step.meshes[k]->empty()) {
       g.meshes.emplace_back();  // nothing to draw, kept so indices match the step's meshes
+      g.blended.emplace_back();
       continue;
     }
-    g.meshes.push_back(upload(*step.meshes[k], step.models[k], o, scene, step.value_offsets[k]));
+    const std::vector<glm::vec4> colors =
+        vertex_colors(*step.meshes[k], o, scene, step.value_offsets[k]);
+    g.meshes.push_back(upload(*step.meshes[k], step.models[k], colors));
+    g.blended.push_back(blended_part(*step.meshes[k], colors));
     g.triangles += step.meshes[k]->triangle_count() * step.models[k].size();
   }
+  place_blended(g, step.models);
   return g;
 }
 
@@ -342,25 +438,16 @@ GpuMesh upload_ground(const Scene& scene) {
   return upload_raw(v, {0, 1, 2, 0, 2, 3}, 6, {glm::mat4(1.0f)});
 }
 
-enum class Part { kAll, kOpaque, kTranslucent };
+// kAll: every triangle (the shadow pass); kOpaque: the opaque ones alone (the blended ones are
+// drawn from the step's sorted soup).
+enum class Part { kAll, kOpaque };
 
 void draw(const GpuMesh& g, Part part = Part::kAll) {
   if (g.vao == 0 || g.instances == 0) return;
-  const GLsizei first = part == Part::kTranslucent ? g.opaque_indices : 0;
   const GLsizei end = part == Part::kOpaque ? g.opaque_indices : g.indices;
-  if (end <= first) return;
+  if (end <= 0) return;
   glBindVertexArray(g.vao);
-  glDrawElementsInstanced(GL_TRIANGLES, end - first, GL_UNSIGNED_INT,
-                          reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * 4),
-                          g.instances);
-}
-
-void release(GpuMesh& g) {
-  if (g.vao == 0) return;
-  glDeleteBuffers(1, &g.vbo);
-  glDeleteBuffers(1, &g.ibo);
-  glDeleteBuffers(1, &g.instance_vbo);
-  glDeleteVertexArrays(1, &g.vao);
+  glDrawElementsInstanced(GL_TRIANGLES, end, GL_UNSIGNED_INT, nullptr, g.instances);
 }
 
 struct Camera {
@@ -532,6 +619,7 @@ void release(GpuScene& g) {
   for (auto* list : {&g.steps, &g.coarse}) {
     for (auto& step : *list) {
       for (auto& m : step.meshes) release(m);
+      release(step.soup.mesh);
     }
   }
   release(g.ground);
@@ -630,11 +718,15 @@ void choose_instances(GpuStep& g, const LodView& lod, const FrameMatrices& f) {
   for (std::size_t k = 0; k < g.meshes.size(); ++k) {
     if (g.meshes[k].vao != 0) set_instances(g.meshes[k], models[k]);
   }
+  const bool blended = std::any_of(g.blended.begin(), g.blended.end(),
+                                   [](const BlendedPart& p) { return !p.positions.empty(); });
+  if (blended) place_blended(g, models);
   g.triangles = lod_triangle_count(*lod.scene, instances);
 }
 
-// Step 5: the shadow pass, then the scene: opaque geometry and the ground, then the translucent
-// obstacles blended over it without writing depth (so they never hide one another).
+// Step 5: the shadow pass, then the scene: opaque geometry and the ground, then the crowns and
+// translucent obstacles blended over it back to front (sorted by sort_blended), without writing
+// depth.
 void draw_frame(const GpuScene& gpu, const GpuStep& g, const Targets& t, const FrameMatrices& f,
                 bool shadows) {
   glEnable(GL_DEPTH_TEST);
@@ -671,7 +763,7 @@ void draw_frame(const GpuScene& gpu, const GpuStep& g, const Targets& t, const F
   glEnable(GL_BLEND);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);  // keep alpha 1
   glDepthMask(GL_FALSE);
-  for (const GpuMesh& m : g.meshes) draw(m, Part::kTranslucent);
+  draw(g.soup.mesh);
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
 }
@@ -692,6 +784,7 @@ ViewerStats run_frames(GLFWwindow* window, State& state, GpuScene& gpu, const Ta
     if (!offscreen) glfwGetFramebufferSize(window, &fw, &fh);
     const FrameMatrices f = frame_matrices(state, scene, fw, fh);
     if (lod.scene != nullptr) choose_instances(g, lod, f);
+    sort_blended(g.soup, f.eye);
     draw_frame(gpu, g, t, f, state.shadows);
     glFinish();
     const double ms =

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "fspm/error.hpp"
@@ -66,6 +67,108 @@ TEST(Viewer, ScreenshotAfterFramesShowsTreeAndShadow) {
   EXPECT_GT(lit_ground, 1000u);
   EXPECT_GT(dark_ground, 20u);
   fs::remove_all(dir);
+}
+
+// Blending in the viewer against closed-form "over" compositing. The viewer's home camera looks
+// at the centre of the bounds from yaw -0.9, pitch 0.35; squares facing it are stacked on that
+// line of sight. Every mesh carries the same unused corner vertices, so every screenshot has the
+// same bounds, camera and ground, and pixels compare one to one. Drawing a surface of opacity a
+// over a frame F gives a L + (1 - a) F, so with B the empty picture and X the picture of surface X
+// alone, X = a_X L_X + (1 - a_X) B and:
+//   a crown (C, a_c = 0.35) in front of an opaque wall (W):        CW = C + (1 - a_c) (W - B);
+//   a translucent square (S, a_s = 0.8) in front of the crown:     SC = S + (1 - a_s) (C - B),
+// whereas the crown drawn after the square (wrong order) gives C + (1 - a_c) (S - B), which
+// differs by a_s a_c (L_s - L_c); a crown drawn opaque gives CW = C.
+class ViewerBlending : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("fspm_viewer_blend_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+    const float yaw = -0.9f, pitch = 0.35f;
+    toward_eye_ = Eigen::Vector3f(std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw),
+                                  std::sin(pitch));
+    right_ = Eigen::Vector3f::UnitZ().cross(toward_eye_).normalized();
+    up_ = toward_eye_.cross(right_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // The fixed bounds [-1.5, 1.5]^3 as eight vertices no triangle uses.
+  static TriangleMesh corners() {
+    TriangleMesh m;
+    for (int k = 0; k < 8; ++k) {
+      m.positions.emplace_back(k & 1 ? 1.5f : -1.5f, k & 2 ? 1.5f : -1.5f, k & 4 ? 1.5f : -1.5f);
+      m.normals.emplace_back(0, 0, 1);
+      m.uvs.emplace_back(0, 0);
+    }
+    return m;
+  }
+
+  // A square of half side 0.6 facing the eye, `offset` towards it from the centre.
+  TriangleMesh square(float offset, Material material, float translucency = 0.0f) const {
+    TriangleMesh m;
+    const Eigen::Vector3f c = offset * toward_eye_;
+    for (const auto& [u, v] : {std::pair{-1.f, -1.f}, {1.f, -1.f}, {1.f, 1.f}, {-1.f, 1.f}}) {
+      m.positions.push_back(c + 0.6f * (u * right_ + v * up_));
+      m.normals.push_back(toward_eye_);
+      m.uvs.emplace_back(u, v);
+    }
+    m.triangles = {{0, 1, 2}, {0, 2, 3}};
+    m.materials = {material, material};
+    if (material == Material::kTranslucentObstacle) {
+      std::vector<float>& gamma = m.add_attribute("translucency");
+      std::fill(gamma.begin(), gamma.end(), translucency);
+    }
+    return m;
+  }
+
+  Image shot(const std::vector<TriangleMesh>& parts) const {
+    TriangleMesh mesh = corners();
+    for (const TriangleMesh& part : parts) mesh.append(part);
+    ViewerOptions o;
+    o.width = 240;
+    o.height = 180;
+    o.shadows = false;
+    o.frames = 2;
+    o.screenshot = (dir_ / "shot.png").string();
+    (void)run_viewer({mesh}, {0.0}, o);
+    return read_image(o.screenshot);
+  }
+
+  fs::path dir_;
+  Eigen::Vector3f toward_eye_, right_, up_;
+};
+
+TEST_F(ViewerBlending, CrownsAreTranslucentAndBlendedBackToFront) {
+  if (!viewer_available() || !render_available()) GTEST_SKIP() << "built without viewer/VTK";
+  if (!display_available()) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
+  const TriangleMesh crown = square(-0.4f, Material::kCrown);
+  const TriangleMesh wall = square(-1.0f, Material::kObstacle);
+  // Opacity 0.8; its triangles come first in the mesh, so drawing in mesh order would be wrong.
+  const TriangleMesh net = square(0.4f, Material::kTranslucentObstacle, 0.2f);
+  const Image b = shot({}), c = shot({crown}), w = shot({wall}), s = shot({net});
+  const Image cw = shot({crown, wall}), sc = shot({net, crown});
+  const float a_c = kCrownOpacity, a_s = translucent_obstacle_opacity(0.2f);
+  int checked = 0;
+  double wall_shows = 0.0, order_matters = 0.0;
+  for (int y = 80; y < 100; ++y) {
+    for (int x = 110; x < 130; ++x) {
+      for (int k = 0; k < 3; ++k) {
+        const auto at = [&](const Image& image) { return double(image.pixel(x, y)[k]); };
+        const double crown_over_wall = at(c) + (1 - a_c) * (at(w) - at(b));
+        const double net_over_crown = at(s) + (1 - a_s) * (at(c) - at(b));
+        const double crown_over_net = at(c) + (1 - a_c) * (at(s) - at(b));
+        EXPECT_NEAR(at(cw), crown_over_wall, 3.0) << x << "," << y << " channel " << k;
+        EXPECT_NEAR(at(sc), net_over_crown, 3.0) << x << "," << y << " channel " << k;
+        wall_shows = std::max(wall_shows, std::abs(crown_over_wall - at(c)));
+        order_matters = std::max(order_matters, std::abs(net_over_crown - crown_over_net));
+        ++checked;
+      }
+    }
+  }
+  EXPECT_EQ(checked, 1200);
+  // The checks can fail: an opaque crown would hide the wall, a wrong order would be off by more.
+  EXPECT_GT(wall_shows, 15.0);
+  EXPECT_GT(order_matters, 12.0);
 }
 
 }  // namespace
