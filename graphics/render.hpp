@@ -1,8 +1,8 @@
 #pragma once
-// Offscreen figures of a tree mesh with VTK: key/fill lighting, a ground plane under the tree,
-// colouring by a per-vertex attribute with a scalar bar, fixed camera views. VTK needs an X
-// display for its OpenGL context here (Debian's VTK has no EGL/OSMesa back end); the window
-// itself is never shown, so a virtual server (xvfb-run -a) is enough.
+// Offscreen figures of a tree mesh with VTK: key/fill lighting, ground under the tree out to the
+// picture's edges, colouring by a per-vertex attribute with a scalar bar, fixed camera views. VTK
+// needs an X display for its OpenGL context here (Debian's VTK has no EGL/OSMesa back end); the
+// window itself is never shown, so a virtual server (xvfb-run -a) is enough.
 #include <Eigen/Geometry>
 #include <optional>
 #include <string>

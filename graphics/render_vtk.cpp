@@ -38,6 +38,7 @@
 #include <map>
 #include <span>
 #include <sstream>
+#include <vector>
 
 #include "fspm/error.hpp"
 #include "graphics/instance_lod.hpp"
@@ -200,30 +201,106 @@ void add_scale_bar(vtkRenderer* renderer, const RenderOptions& options) {
   renderer->AddActor2D(text);
 }
 
-// A ground plane under [lo, hi], wider than the box so the plants stand well inside it.
-void add_ground(vtkRenderer* renderer, const Eigen::Vector3f& lo, const Eigen::Vector3f& hi) {
+// The eight corners of the camera's view from `near_m` to `far_m` along its line of sight, near
+// ones first, each four in the order (-,-), (+,-), (+,+), (-,+) across the image.
+std::array<Eigen::Vector3d, 8> view_corners(vtkCamera* camera, double aspect, double near_m,
+                                            double far_m) {
+  Eigen::Vector3d focal, eye, up;
+  camera->GetFocalPoint(focal.data());
+  camera->GetPosition(eye.data());
+  camera->GetViewUp(up.data());
+  const Eigen::Vector3d ahead = (focal - eye).normalized();
+  const Eigen::Vector3d right = ahead.cross(up).normalized();
+  const Eigen::Vector3d true_up = right.cross(ahead);
+  const double tan_v = std::tan(0.5 * camera->GetViewAngle() * 3.141592653589793 / 180.0);
+  const bool parallel = camera->GetParallelProjection() != 0;
+  std::array<Eigen::Vector3d, 8> corners;
+  for (int k = 0; k < 8; ++k) {
+    const double d = k < 4 ? near_m : far_m;
+    const double half_h = parallel ? camera->GetParallelScale() : d * tan_v;
+    const double sx = (k % 4 == 1 || k % 4 == 2) ? 1.0 : -1.0, sy = k % 4 >= 2 ? 1.0 : -1.0;
+    corners[k] = eye + d * ahead + sy * half_h * true_up + sx * half_h * aspect * right;
+  }
+  return corners;
+}
+
+// The part of the plane z = ground_z inside the view volume given by its corners: a convex
+// polygon whose vertices are the crossings of the volume's twelve edges with the plane.
+std::vector<Eigen::Vector3d> ground_in_view(const std::array<Eigen::Vector3d, 8>& c,
+                                            double ground_z) {
+  std::vector<Eigen::Vector3d> points;
+  const auto take = [&](const Eigen::Vector3d& p) { points.push_back(p); };
+  const auto cross = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    const double da = a.z() - ground_z, db = b.z() - ground_z;
+    if (da == 0.0) take(a);
+    if (db == 0.0) take(b);
+    if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0)) take(a + (b - a) * (da / (da - db)));
+  };
+  for (int k = 0; k < 4; ++k) {
+    cross(c[k], c[k + 4]);                // along the line of sight
+    cross(c[k], c[(k + 1) % 4]);          // across the near end
+    cross(c[k + 4], c[4 + (k + 1) % 4]);  // across the far end
+  }
+  return points;
+}
+
+// The ground: a slab of soil whose top face, at the bottom of [lo, hi], holds the plants well
+// inside it and reaches the edges of the picture (to a horizon 40 camera distances away), and
+// whose sides fill the picture below the ground line in horizontal parallel views, where the top
+// face is seen edge on. Called with the camera in place; returns the nearest and farthest
+// distances along the line of sight of the ground in view, for the clipping range.
+std::array<double, 2> add_ground(vtkRenderer* renderer, const Eigen::Vector3f& lo,
+                                 const Eigen::Vector3f& hi, double aspect) {
   const Eigen::Vector3f size = (hi - lo).cwiseMax(Eigen::Vector3f::Constant(0.1f));
-  const float half = 0.9f * std::max(size.x(), size.y()) + 0.4f * size.z();
-  const Eigen::Vector3f c = 0.5f * (lo + hi);
-  vtkNew<vtkPoints> corners;
-  corners->InsertNextPoint(c.x() - half, c.y() - half, lo.z());
-  corners->InsertNextPoint(c.x() + half, c.y() - half, lo.z());
-  corners->InsertNextPoint(c.x() + half, c.y() + half, lo.z());
-  corners->InsertNextPoint(c.x() - half, c.y() + half, lo.z());
-  vtkNew<vtkCellArray> quad;
-  const vtkIdType ids[4] = {0, 1, 2, 3};
-  quad->InsertNextCell(4, ids);
-  vtkNew<vtkPolyData> plane;
-  plane->SetPoints(corners);
-  plane->SetPolys(quad);
-  vtkNew<vtkPolyDataMapper> plane_mapper;
-  plane_mapper->SetInputData(plane);
-  plane_mapper->ScalarVisibilityOff();
+  const double half = 0.9 * std::max(size.x(), size.y()) + 0.4 * size.z();
+  const Eigen::Vector2d c = (0.5f * (lo + hi)).head<2>().cast<double>();
+  Eigen::Vector2d xy_lo = c.array() - half, xy_hi = c.array() + half;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const double distance = camera->GetDistance();
+  // A parallel view starts a quarter of the way to the focal point, in front of anything the
+  // clipping range could cut off near the eye.
+  const double near_m = camera->GetParallelProjection() != 0 ? 0.25 * distance : 0.0;
+  const double far_m = 40.0 * distance;
+  const auto corners = view_corners(camera, aspect, near_m, far_m);
+  Eigen::Vector3d eye, focal;
+  camera->GetPosition(eye.data());
+  camera->GetFocalPoint(focal.data());
+  const Eigen::Vector3d ahead = (focal - eye).normalized();
+  std::array<double, 2> depth = {far_m, near_m};
+  for (const Eigen::Vector3d& p : ground_in_view(corners, lo.z())) {
+    xy_lo = xy_lo.cwiseMin(p.head<2>());
+    xy_hi = xy_hi.cwiseMax(p.head<2>());
+    depth[0] = std::min(depth[0], (p - eye).dot(ahead));
+    depth[1] = std::max(depth[1], (p - eye).dot(ahead));
+  }
+  double bottom = lo.z() - 0.01 * size.z();
+  for (const Eigen::Vector3d& p : corners) bottom = std::min(bottom, p.z());
+
+  vtkNew<vtkPoints> points;
+  for (int k = 0; k < 8; ++k) {
+    const double x = (k % 4 == 1 || k % 4 == 2) ? xy_hi.x() : xy_lo.x();
+    const double y = k % 4 >= 2 ? xy_hi.y() : xy_lo.y();
+    points->InsertNextPoint(x, y, k < 4 ? lo.z() : bottom);
+  }
+  vtkNew<vtkCellArray> faces;
+  const vtkIdType quads[5][4] = {{0, 1, 2, 3},
+                                 {0, 1, 5, 4},
+                                 {1, 2, 6, 5},
+                                 {2, 3, 7, 6},
+                                 {3, 0, 4, 7}};  // top and the four sides
+  for (const auto& quad : quads) faces->InsertNextCell(4, quad);
+  vtkNew<vtkPolyData> slab;
+  slab->SetPoints(points);
+  slab->SetPolys(faces);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(slab);
+  mapper->ScalarVisibilityOff();
   vtkNew<vtkActor> ground;
-  ground->SetMapper(plane_mapper);
+  ground->SetMapper(mapper);
   ground->GetProperty()->SetColor(0.55, 0.62, 0.45);
   ground->GetProperty()->SetAmbient(0.2);
   renderer->AddActor(ground);
+  return depth;
 }
 
 // Sets up the renderer, lets `add_actors` fill it, adds the ground, lights and camera framing
@@ -272,9 +349,18 @@ Image render_with(const RenderOptions& options, Eigen::Vector3f lo, Eigen::Vecto
   // and far planes around the framed box until the actors are known).
   renderer->ResetCameraClippingRange(bounds);
   add_actors(renderer.Get());
-  if (options.ground) add_ground(renderer, lo, hi);
-
   renderer->ResetCameraClippingRange();
+  if (options.ground) {
+    // The clipping range of the plants and obstacles, widened to the ground in view (the range
+    // VTK would fit to the slab's whole bounds puts the near plane far out and cuts the ground).
+    const std::array<double, 2> ground = add_ground(
+        renderer, lo, hi, static_cast<double>(options.width) / static_cast<double>(options.height));
+    double range[2];
+    renderer->GetActiveCamera()->GetClippingRange(range);
+    const double far = std::max(range[1], 1.01 * ground[1]);
+    const double near = std::max(std::min(range[0], 0.9 * ground[0]), 1e-4 * far);
+    renderer->GetActiveCamera()->SetClippingRange(near, far);
+  }
 
   vtkNew<vtkRenderWindow> window;
   window->SetDisplayId(x.display);

@@ -177,5 +177,51 @@ TEST(Render, ScaleBarHasItsLengthInPixels) {
   EXPECT_NEAR(longest_black_run(render_mesh(mesh, o)), 40, 2);
 }
 
+// The ground reaches the bottom and sides of the picture in every view, perspective and parallel:
+// a hedge 40 m long, 0.5 m deep and 2 m high (a scene far wider than tall, which once left the
+// background showing below a ground quad that ended inside the frame). Every pixel of the bottom
+// row, and of the bottom three rows of the left and right columns, is grass (green above blue);
+// the pale background is bluer than green.
+TEST(Render, GroundCoversTheFrameInEveryView) {
+  if (!render_available()) GTEST_SKIP() << "built without VTK/OpenImageIO";
+  if (!display_available()) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
+  TriangleMesh hedge;
+  for (int k = 0; k < 8; ++k) {  // a box as eight corners and its twelve triangles
+    hedge.positions.emplace_back(k & 1 ? 20.f : -20.f, k & 2 ? 0.25f : -0.25f, k & 4 ? 2.f : 0.f);
+    hedge.normals.emplace_back(0, 0, 1);
+    hedge.uvs.emplace_back(0, 0);
+  }
+  hedge.triangles = {{0, 1, 3}, {0, 3, 2}, {4, 6, 7}, {4, 7, 5}, {0, 4, 5}, {0, 5, 1},
+                     {2, 3, 7}, {2, 7, 6}, {0, 2, 6}, {0, 6, 4}, {1, 5, 7}, {1, 7, 3}};
+  hedge.materials.assign(12, Material::kBark);
+  const auto grass = [](const Image& image, int x, int y) {
+    const auto* p = image.pixel(x, y);
+    return p[1] > p[2] + 15;
+  };
+  for (const View view : {View::kFront, View::kSide, View::kTop, View::kIso}) {
+    for (const bool parallel : {false, true}) {
+      RenderOptions o;
+      o.width = 320;
+      o.height = 160;
+      o.view = view;
+      if (parallel) {
+        o.ortho_height_m =
+            1.06 * ortho_height_to_fit(view, hedge.bbox_min(), hedge.bbox_max(), 2.0);
+      }
+      const Image image = render_mesh(hedge, o);
+      const std::string what = std::string(view_name(view)) + (parallel ? " parallel" : "");
+      int bottom = 0;
+      for (int x = 0; x < image.width; ++x) bottom += grass(image, x, image.height - 1);
+      EXPECT_EQ(bottom, image.width) << what;
+      // Parallel views frame the box with a 3 % margin, so the ground line is 5 rows up here.
+      for (int y = image.height - 3; y < image.height; ++y) {
+        EXPECT_TRUE(grass(image, 0, y) && grass(image, image.width - 1, y)) << what << " row " << y;
+      }
+      o.ground = false;  // the check can fail: without ground the background shows there
+      EXPECT_FALSE(grass(render_mesh(hedge, o), 0, o.height - 1)) << what;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace fspm::graphics
