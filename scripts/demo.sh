@@ -3,8 +3,18 @@
 # a small version of Pirk's adapted-versus-grown experiment through the experiment runner (grow,
 # adapt, compare, t-test, report), a parameter sweep of an L-system tree (results in SQLite and
 # CSV), a GreenLab plant simulated and reconstructed at three ages, and a mesh of one tree.
-# It ends by saying where the reports are (Markdown and HTML).
+# It ends by saying where the reports are (Markdown and HTML). Usage: scripts/demo.sh [OUT]: the
+# output goes to OUT, a folder that must not exist yet or be empty (default: demo-output in the
+# checkout, replaced on every run).
 set -euo pipefail
+given="${1:-}"
+if [ -n "$given" ]; then
+  given="$(realpath -m "$given")"
+  if [ -e "$given" ] && [ -n "$(ls -A "$given" 2> /dev/null)" ]; then
+    echo "demo.sh: $given exists and is not empty; give a new or empty folder" >&2
+    exit 2
+  fi
+fi
 cd "$(dirname "$0")/.."
 # ccache keys on paths relative to the checkout, so a fresh clone elsewhere (CI) reuses the cache.
 export CCACHE_BASEDIR="$(pwd)"
@@ -13,8 +23,8 @@ export CCACHE_NOHASHDIR=true
 scripts/deps.sh
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release > build.log 2>&1 || { cat build.log; exit 1; }
 cmake --build build -j "$(nproc)"
-out=demo-output
-rm -rf "$out"
+out="${given:-$(pwd)/demo-output}"
+[ -n "$given" ] || rm -rf "$out"
 mkdir -p "$out"
 fspm=build/bin/fspm
 
@@ -51,6 +61,6 @@ echo "== a mesh for ParaView or Blender"
 $fspm mesh "$out/monopodial.tree" -o "$out/monopodial.glb" --json
 
 echo
-echo "demo output is in $(pwd)/$out"
-echo "report: $(pwd)/$out/adapted_vs_grown/report.md (sweep: $out/branching/report.md)"
-echo "HTML report: $(pwd)/$out/adapted_vs_grown/report/index.html (sweep: $out/branching/report/index.html)"
+echo "demo output is in $out"
+echo "report: $out/adapted_vs_grown/report.md (sweep: $out/branching/report.md)"
+echo "HTML report: $out/adapted_vs_grown/report/index.html (sweep: $out/branching/report/index.html)"
