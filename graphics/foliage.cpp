@@ -39,7 +39,10 @@ void write_leaf_cloud(const Eigen::Vector3d& center, double radius_m, const Foli
     if (side.norm() < 1e-9) side = dir.cross(Eigen::Vector3d::UnitX());
     if (side.norm() < 1e-9) side = dir.cross(Eigen::Vector3d::UnitY());
     side.normalize();
-    const Eigen::Vector3f normal = dir.cross(side).normalized().cast<float>();
+    // The normal of the counter-clockwise quad below (as the mesher's leaves): renderers light
+    // the side the normal points to and flip it for the other, so a normal against the winding
+    // leaves every leaf unlit.
+    const Eigen::Vector3f normal = side.cross(dir).normalized().cast<float>();
     const Eigen::Vector3d corners[4] = {base - half_width * side, base + half_width * side,
                                         base + length * dir - half_width * side,
                                         base + length * dir + half_width * side};

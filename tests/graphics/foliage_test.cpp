@@ -124,5 +124,28 @@ TEST(Foliage, BadNamesAndOptionsAreUserErrors) {
   EXPECT_THROW(mesh_tree(clustered_tree(), o), ValueError);
 }
 
+// Every leaf and crown triangle is wound counter-clockwise about its vertex normals: the normal
+// of its corners (b - a) x (c - a) points the way they do. Renderers light the front side along
+// the normal and flip it for the back, so a normal against the winding would leave every leaf
+// facing away from the light and the viewer (nearly black).
+TEST(Foliage, TrianglesAreWoundAboutTheirNormals) {
+  for (const FoliageMode mode : {FoliageMode::kLeaves, FoliageMode::kVolumes}) {
+    const TriangleMesh mesh = mesh_tree(clustered_tree(), with_foliage(mode));
+    std::size_t checked = 0;
+    for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+      if (mesh.materials[t] == Material::kBark) continue;
+      const auto& tri = mesh.triangles[t];
+      const Eigen::Vector3f a = mesh.positions[tri[0]], b = mesh.positions[tri[1]],
+                            c = mesh.positions[tri[2]];
+      const Eigen::Vector3f face = (b - a).cross(c - a);
+      if (face.norm() < 1e-9f) continue;  // a degenerate cell at a pole of a sphere
+      const Eigen::Vector3f n = mesh.normals[tri[0]] + mesh.normals[tri[1]] + mesh.normals[tri[2]];
+      EXPECT_GT(face.normalized().dot(n.normalized()), 0.5f) << "triangle " << t;
+      ++checked;
+    }
+    EXPECT_GT(checked, 100u);
+  }
+}
+
 }  // namespace
 }  // namespace fspm::graphics
