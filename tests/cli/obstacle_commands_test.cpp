@@ -85,7 +85,8 @@ TEST(ObstacleCli, GlbHasThreeMaterialsAndTheWallAsOneMorePlacedMesh) {
   std::uint32_t json_len = 0;
   std::memcpy(&json_len, data.data() + 12, 4);
   const auto doc = nlohmann::json::parse(data.substr(20, json_len));
-  ASSERT_EQ(doc["materials"].size(), 5u);  // bark, leaf, obstacle, crown, translucent obstacle
+  // bark, leaf, obstacle, crown, terrain, translucent obstacle
+  ASSERT_EQ(doc["materials"].size(), 6u);
   EXPECT_EQ(doc["materials"][2]["name"], "obstacle");
   std::size_t obstacle_indices = 0;
   for (const auto& mesh : doc["meshes"]) {
