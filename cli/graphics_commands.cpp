@@ -23,6 +23,7 @@
 #include "cli/lsystem_mesh.hpp"
 #include "cli/lsystem_source.hpp"
 #include "cli/output.hpp"
+#include "cli/scan_render_mesh.hpp"
 #include "cli/scene_obstacles.hpp"
 #include "cli/wind_skin.hpp"
 #include "cli/xvfb.hpp"
@@ -90,6 +91,7 @@ struct RenderCommand {
   bool no_ground = false;
   double edge_length_m = 0.01;
   double ortho_height_m = 0.0;
+  std::string frame;
   std::string obstacles;
   double wind_time_s = -1.0;
   WindArguments wind;
@@ -480,8 +482,8 @@ graphics::InstancedMesh wind_frame(const RenderCommand& c, const graphics::MeshO
 void run_lod_render(const RenderCommand& c, const graphics::MeshOptions& mesh_options,
                     const graphics::RenderOptions& options,
                     std::chrono::steady_clock::time_point t0) {
-  if (c.wind_time_s >= 0.0 || !c.color_by.empty()) {
-    throw ValueError("--lod does not combine with --wind-time or --color-by");
+  if (c.wind_time_s >= 0.0 || !c.color_by.empty() || !c.frame.empty()) {
+    throw ValueError("--lod does not combine with --wind-time, --color-by or --frame");
   }
   const graphics::LodScene scene =
       load_lod_scene(c.tree, c.format, mesh_options, graphics::LodOptions{}, true, c.obstacles);
@@ -504,8 +506,25 @@ void run_lod_render(const RenderCommand& c, const graphics::MeshOptions& mesh_op
   }
 }
 
+// The mesh `fspm render` draws for a point set or .clusters file, or for any other input.
+graphics::InstancedMesh load_render_input(const std::string& path, const std::string& format,
+                                          const graphics::MeshOptions& options) {
+  if (auto scan = load_scan_render_mesh(path, options)) {
+    return graphics::InstancedMesh::single(std::move(*scan));
+  }
+  return load_instanced(path, format, options, true);
+}
+
+// --frame: the bounds of another input, drawn with the same options, so that pictures of the
+// stages of one tree (points, skeleton, clusters, reconstruction) share camera and ground.
+Eigen::AlignedBox3f frame_of(const std::string& path, const graphics::MeshOptions& options) {
+  const graphics::TriangleMesh mesh = load_render_input(path, "", options).flatten();
+  if (mesh.empty()) throw ValueError("--frame: nothing to draw in the file", path);
+  return {mesh.bbox_min(), mesh.bbox_max()};
+}
+
 void run_render(const RenderCommand& c) {
-  refuse_overwriting_input(c.out, {c.tree, c.obstacles});
+  refuse_overwriting_input(c.out, {c.tree, c.obstacles, c.frame});
   const auto t0 = std::chrono::steady_clock::now();
   graphics::RenderOptions options;
   options.view = c.view;
@@ -537,8 +556,9 @@ void run_render(const RenderCommand& c) {
     lsystem_summary = drawing.summary;
     mesh = mesh_lsystem(drawing, mesh_options);
   } else {
-    mesh = load_instanced(c.tree, c.format, mesh_options, true);
+    mesh = load_render_input(c.tree, c.format, mesh_options);
   }
+  if (!c.frame.empty()) options.frame = frame_of(c.frame, mesh_options);
   if (c.leaves) report_missing_leaves(mesh, c.tree);
   if (!c.color_by.empty()) {
     for (const auto& m : mesh.meshes) (void)m.attribute(c.color_by);  // unknown: ValueError
@@ -816,7 +836,9 @@ void add_graphics_commands(CLI::App& app) {
   CLI::App* r = app.add_subcommand(kRenderCommand.name, kRenderCommand.description);
   r->add_option("TREE", render->tree,
                 "Tree file (.tree, .treeb, .nwk, .mtg), compressed plant (.ctree, plant .toml), "
-                "scene (.json) or L-system (.l, with the .v beside it)")
+                "scene (.json), L-system (.l, with the .v beside it), point set (.ply, .xyz, "
+                ".txt, .csv, .pcd: small spheres) or cluster-based tree (.clusters: skeleton and "
+                "translucent cluster hulls)")
       ->required();
   add_lsystem_draw_options(r, render->lsystem);
   r->add_option("-o,--output", render->out, "Image: .png, .tif or .exr")->required();
@@ -834,6 +856,9 @@ void add_graphics_commands(CLI::App& app) {
   r->add_option("--ortho-height", render->ortho_height_m,
                 "Parallel projection whose image height spans this many metres (a known scale)")
       ->check(positive_number(1e6));
+  r->add_option("--frame", render->frame,
+                "Aim the camera at this file's bounds instead (any TREE input): pictures of one "
+                "tree's points, skeleton, clusters and reconstruction that line up");
   r->add_option("--obstacles", render->obstacles,
                 "Scene file (.json, docs/formats.md) whose walls, boxes, spheres and meshes near "
                 "the tree are drawn in stone (long walls cut to the tree's surroundings; a scene "

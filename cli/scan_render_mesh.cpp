@@ -1,0 +1,94 @@
+#include "cli/scan_render_mesh.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+#include "cli/obstacle_mesh.hpp"
+#include "environment/occluders.hpp"
+#include "scans/clusters_file.hpp"
+#include "scans/point_set_file.hpp"
+
+namespace fspm::cli {
+namespace {
+
+// Gives the triangles from `first` on `material` (the obstacle helpers emit kObstacle).
+void set_material(graphics::TriangleMesh& mesh, std::size_t first, graphics::Material material) {
+  std::fill(mesh.materials.begin() + static_cast<std::ptrdiff_t>(first), mesh.materials.end(),
+            material);
+}
+
+double largest_extent_m(const scans::PointSet& set) {
+  if (set.points.empty()) return 0.0;
+  Eigen::Vector3d lo = set.points.front(), hi = lo;
+  for (const Eigen::Vector3d& p : set.points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return (hi - lo).maxCoeff();
+}
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  return ext;
+}
+
+}  // namespace
+
+graphics::TriangleMesh mesh_point_set(const scans::PointSet& points, double radius_m,
+                                      graphics::Material material) {
+  graphics::TriangleMesh mesh;
+  for (const Eigen::Vector3d& p : points.points) {
+    append_sphere_mesh(p, radius_m, kPointSphereSegments, mesh);
+  }
+  set_material(mesh, 0, material);
+  return mesh;
+}
+
+graphics::TriangleMesh mesh_cluster_model(const scans::ClusterModel& model,
+                                          const graphics::MeshOptions& options,
+                                          double point_radius_m) {
+  graphics::MeshOptions bark = options;
+  bark.leaves = false;
+  graphics::TriangleMesh mesh = graphics::mesh_tree(model.skeleton, bark);
+  for (const scans::ClusterHull& hull : model.clusters) {
+    const std::size_t first = mesh.triangles.size();
+    if (hull.triangles.empty()) {
+      mesh.append(mesh_point_set({hull.vertices}, point_radius_m, graphics::Material::kCrown));
+      continue;
+    }
+    environment::TriangleMesh surface;
+    surface.vertices = hull.vertices;
+    for (const auto& t : hull.triangles) {
+      surface.triangles.emplace_back(static_cast<int>(t[0]), static_cast<int>(t[1]),
+                                     static_cast<int>(t[2]));
+    }
+    graphics::TriangleMesh part;
+    append_triangle_mesh(surface, part);
+    mesh.append(part);
+    set_material(mesh, first, graphics::Material::kCrown);
+  }
+  return mesh;
+}
+
+std::optional<graphics::TriangleMesh> load_scan_render_mesh(const std::string& path,
+                                                            const graphics::MeshOptions& options) {
+  const std::string ext = lower_extension(path);
+  if (ext == ".clusters") {
+    const scans::ClusterModel model = scans::read_clusters_file(path);
+    scans::PointSet nodes;
+    for (const auto& hull : model.clusters) {
+      nodes.points.insert(nodes.points.end(), hull.vertices.begin(), hull.vertices.end());
+    }
+    return mesh_cluster_model(model, options, kPointRadiusShare * largest_extent_m(nodes));
+  }
+  if (ext == ".ply" || ext == ".xyz" || ext == ".txt" || ext == ".csv" || ext == ".pcd") {
+    const scans::PointSet points = scans::read_point_set(path);
+    return mesh_point_set(points, kPointRadiusShare * largest_extent_m(points));
+  }
+  return std::nullopt;
+}
+
+}  // namespace fspm::cli

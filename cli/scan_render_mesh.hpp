@@ -1,0 +1,39 @@
+#pragma once
+// Meshes that let fspm render draw the stages of encoding a scan (Pirk 2013, sec. 3.3): a point
+// set as small spheres, and a cluster-based tree (.clusters) as its skeleton's tubes with each
+// cluster's alpha-shape hull as a translucent volume. Lives in the command line so graphics keeps
+// depending on the core only.
+#include <optional>
+#include <string>
+
+#include "graphics/tree_mesher.hpp"
+#include "graphics/triangle_mesh.hpp"
+#include "scans/cluster_model.hpp"
+#include "scans/point_set.hpp"
+
+namespace fspm::cli {
+
+// Meridians of the sphere drawn at each point: a coarse sphere, since a scan has 10^4-10^5 points.
+inline constexpr int kPointSphereSegments = 6;
+
+// The radius of the sphere drawn at each point: this share of the set's largest extent, so that
+// the points of a tree a few metres high are a few pixels wide in a figure.
+inline constexpr double kPointRadiusShare = 0.002;
+
+// One bark sphere of `radius_m` around each point.
+graphics::TriangleMesh mesh_point_set(const scans::PointSet& points, double radius_m,
+                                      graphics::Material material = graphics::Material::kBark);
+
+// The skeleton meshed as a tree (its eq. 3.1 radii, no leaves) and every cluster hull in the
+// translucent crown material; a cluster spanning no volume (points, no triangles) as small
+// spheres of `point_radius_m` in that material.
+graphics::TriangleMesh mesh_cluster_model(const scans::ClusterModel& model,
+                                          const graphics::MeshOptions& options,
+                                          double point_radius_m);
+
+// For `fspm render`: the mesh of a point set (.ply, .xyz, .txt, .csv, .pcd) or of a .clusters
+// file, nullopt for any other extension. Throws the readers' errors.
+std::optional<graphics::TriangleMesh> load_scan_render_mesh(const std::string& path,
+                                                            const graphics::MeshOptions& options);
+
+}  // namespace fspm::cli
