@@ -506,11 +506,14 @@ void run_lod_render(const RenderCommand& c, const graphics::MeshOptions& mesh_op
   }
 }
 
-// The mesh `fspm render` draws for a point set or .clusters file, or for any other input.
+// The mesh `fspm render` draws for a point set or .clusters file, or for any other input (an
+// explicit --format names a tree format, whatever the extension).
 graphics::InstancedMesh load_render_input(const std::string& path, const std::string& format,
                                           const graphics::MeshOptions& options) {
-  if (auto scan = load_scan_render_mesh(path, options)) {
-    return graphics::InstancedMesh::single(std::move(*scan));
+  if (format.empty()) {
+    if (auto scan = load_scan_render_mesh(path, options)) {
+      return graphics::InstancedMesh::single(std::move(*scan));
+    }
   }
   return load_instanced(path, format, options, true);
 }
