@@ -47,8 +47,8 @@ bool sweep_chart(const ex::SweptParameter& parameter, const std::string& metric,
                  const std::string& png_path) {
   // No legend (it would hide the top right corner): the report's text says which line is which.
   graphics::ChartSeries mean{"mean", {}, {}, 0, false, true, false};
-  graphics::ChartSeries upper{"mean + sd", {}, {}, 0, true, false, false};
-  graphics::ChartSeries lower{"mean - sd", {}, {}, 0, true, false, false};
+  graphics::ChartSeries upper{"mean + sd, at most the largest", {}, {}, 0, true, false, false};
+  graphics::ChartSeries lower{"mean - sd, at least the smallest", {}, {}, 0, true, false, false};
   graphics::ChartOptions options;
   const bool numeric = parameter.numeric();
   // A tick per value when the values are few and short (a grid's 10, 20, 30), VTK's own ticks
@@ -69,9 +69,9 @@ bool sweep_chart(const ex::SweptParameter& parameter, const std::string& metric,
     mean.x.push_back(x);
     mean.y.push_back(it->second.mean);
     upper.x.push_back(x);
-    upper.y.push_back(it->second.mean + it->second.sd());
+    upper.y.push_back(it->second.upper_band());
     lower.x.push_back(x);
-    lower.y.push_back(it->second.mean - it->second.sd());
+    lower.y.push_back(it->second.lower_band());
   }
   // A line needs two values (regrow_seconds, say, is only recorded for one set).
   if (mean.x.size() < 2) return false;
@@ -137,8 +137,9 @@ std::string sweep_figures(const ex::Experiment& x, const ex::ExperimentInfo& inf
   if (md.empty()) return md;
   return "\n## Metrics against the swept parameters\n\nFor each swept parameter and each value: "
          "the mean of each metric over all successful runs with that value, the other "
-         "parameters pooled (solid line, dots), and the mean ± its sample standard deviation "
-         "(dashed). The marginal-means tables above give the numbers.\n" +
+         "parameters pooled (solid line, dots), and the mean ± its sample standard deviation, "
+         "kept within the smallest and largest value (dashed). The marginal-means tables above "
+         "give the numbers.\n" +
          md;
 }
 

@@ -13,6 +13,8 @@ void Moments::add(double x) {
   const double d = x - mean;
   mean += d / static_cast<double>(n);
   m2 += d * (x - mean);
+  min = std::min(min, x);
+  max = std::max(max, x);
 }
 
 double Moments::sd() const { return n > 1 ? std::sqrt(m2 / static_cast<double>(n - 1)) : 0.0; }

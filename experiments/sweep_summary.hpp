@@ -3,7 +3,9 @@
 // sample standard deviation and count of every metric over the successful runs with that value
 // (marginal over the other parameters). `fspm report` prints these as tables and plots each
 // metric against each swept parameter.
+#include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -17,8 +19,14 @@ struct Moments {
   std::size_t n = 0;
   double mean = 0.0;
   double m2 = 0.0;
+  double min = std::numeric_limits<double>::infinity();
+  double max = -std::numeric_limits<double>::infinity();
   void add(double x);
   double sd() const;  // 0 for fewer than two values
+  // mean - sd and mean + sd kept within [min, max], so a band of counts never goes below the
+  // smallest count.
+  double lower_band() const { return std::max(mean - sd(), min); }
+  double upper_band() const { return std::min(mean + sd(), max); }
 };
 
 struct SweptValue {

@@ -118,6 +118,21 @@ TEST(SweepSummary, OneEntryPerValueWithTheMeanOfItsRuns) {
   }
 }
 
+// Counts 0, 0, 0, 12: mean 3, sample sd 6, so mean - sd = -3 lies below every count; the band
+// is kept within [0, 12]: lower 0, upper 9.
+TEST(ReportContents, SweepBandStaysWithinTheValues) {
+  Moments m;
+  for (const double x : {0.0, 0.0, 0.0, 12.0}) m.add(x);
+  EXPECT_DOUBLE_EQ(m.mean, 3.0);
+  EXPECT_DOUBLE_EQ(m.sd(), 6.0);
+  EXPECT_DOUBLE_EQ(m.lower_band(), 0.0);
+  EXPECT_DOUBLE_EQ(m.upper_band(), 9.0);
+  Moments one;
+  one.add(5.0);
+  EXPECT_DOUBLE_EQ(one.lower_band(), 5.0);
+  EXPECT_DOUBLE_EQ(one.upper_band(), 5.0);
+}
+
 const char* kGrowExperiment = R"(
 [experiment]
 name = "avg"
