@@ -63,6 +63,10 @@ class GrowModel final : public Model {
       parameter_integer(value, name);
       return;
     }
+    if (name == "adapt_light_model") {
+      env::cluster_light_model_from_name(parameter_string(value, name));
+      return;
+    }
     if (name == "preset_tropisms") {  // needs a preset: the whole set is checked by check_setup
       env::tropism_pairing_from_name(parameter_string(value, name));
       return;
@@ -124,6 +128,7 @@ class GrowModel final : public Model {
       ap.min_cluster_radius_m = params.cluster_radius_m;
       ap.light_directions = params.light_directions;
       ap.light_significance = params.light_significance;
+      ap.light_model = adapt_light_model(parameters);
       const env::TreeAnalysis analysis = env::analyze_tree(grown.tree, ap, open.sky.brightest);
       context.check();
       t0 = Clock::now();
@@ -156,7 +161,7 @@ class GrowModel final : public Model {
   env::GrowthParams growth_params(const ParameterSet& parameters, std::uint64_t seed) const {
     toml::table table = parse_toml_text(base_text_, base_name_);
     for (const auto& [name, value] : parameters) {
-      if (name == "set" || name == "scene" || name == "measure_regrowth") continue;
+      if (is_run_parameter(name)) continue;
       if (name == "seed") throw ValueError("seed: the growth seed is the run's seed");
       std::visit([&](const auto& v) { table.insert_or_assign(name, v); }, value);
     }
@@ -165,6 +170,20 @@ class GrowModel final : public Model {
     std::ostringstream text;
     text << table;
     return env::parse_growth_params(text.str(), base_name_);
+  }
+
+  // Parameters of the run, not of the growth model.
+  static bool is_run_parameter(const std::string& name) {
+    return name == "set" || name == "scene" || name == "measure_regrowth" ||
+           name == "adapt_light_model";
+  }
+
+  // The cluster light of set T's adaptation (Pirk 4.3.2's sky, or the shadow grid); the growth
+  // model's own light model does not choose it.
+  static env::ClusterLightModel adapt_light_model(const ParameterSet& parameters) {
+    const auto it = parameters.find("adapt_light_model");
+    if (it == parameters.end()) return env::ClusterLightModel::kSky;
+    return env::cluster_light_model_from_name(parameter_string(it->second, "adapt_light_model"));
   }
 
   std::string base_text_;
