@@ -19,11 +19,10 @@ namespace {
 
 using namespace fspm;
 
-// The example sits beside this file's folder: bench/../examples/greenlab/.
+// The example of the source tree, wherever the benchmark is started from.
 greenlab::PlantParams table1_params() {
-  const std::filesystem::path here(__FILE__);
-  return greenlab::read_plant_params(
-      (here.parent_path().parent_path() / "examples" / "greenlab" / "table1_tree.toml").string());
+  return greenlab::read_plant_params(std::string(FSPM_SOURCE_DIR) +
+                                     "/examples/greenlab/table1_tree.toml");
 }
 
 void BM_GreenlabSimulateTable1(benchmark::State& state) {

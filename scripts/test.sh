@@ -19,6 +19,9 @@ scripts/deps.sh
 echo "== clang-format check"
 git ls-files '*.cpp' '*.hpp' | xargs -r clang-format --dry-run -Werror
 
+echo "== benchmark table check (every benchmark in bench/ has a row in docs/BENCHMARKS.md)"
+/usr/bin/python3 scripts/bench_table.py --check
+
 echo "== sanitizer build (clang, ASan + UBSan, core libraries and fuzz targets)"
 CC=clang CXX=clang++ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug \
   -DCMAKE_CXX_FLAGS="-O1" -DFSPM_CORE_ONLY=ON -DFSPM_SANITIZE=ON -DFSPM_FUZZ=ON \
