@@ -5,7 +5,7 @@ if(FSPM_CCACHE)
 endif()
 
 add_library(fspm_warnings INTERFACE)
-target_compile_options(fspm_warnings INTERFACE -Wall -Wextra -Wpedantic)
+target_compile_options(fspm_warnings INTERFACE -Wall -Wextra -Wpedantic -Wshadow)
 if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
   # GCC 12 at -O3 reports impossible memcpy overlaps inside std::string's operator+
   # (GCC bug 105651), in every file that concatenates strings; the warning is noise there.

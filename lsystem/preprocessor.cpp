@@ -273,15 +273,15 @@ class Preprocessor {
         fail("expected \"file\" after #include", at);
       }
       const char close = line[at] == '"' ? '"' : '>';
-      const std::size_t e = line.find(close, at + 1);
-      if (e == std::string::npos) fail("expected the closing quote of the #include file", at);
-      const std::string rel = line.substr(at + 1, e - at - 1);
+      const std::size_t end = line.find(close, at + 1);
+      if (end == std::string::npos) fail("expected the closing quote of the #include file", at);
+      const std::string rel = line.substr(at + 1, end - at - 1);
       const std::filesystem::path path = std::filesystem::path(dir) / rel;
       std::string included;
       try {
         included = read_input_file(path.string());
-      } catch (const IoError& e) {
-        throw IoError("cannot read included file '" + path.string() + "': " + e.message(), file,
+      } catch (const IoError& error) {
+        throw IoError("cannot read included file '" + path.string() + "': " + error.message(), file,
                       line_no, static_cast<int>(at) + 1);
       }
       run(included, path.string(), path.parent_path().string(), depth + 1);
