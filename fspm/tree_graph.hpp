@@ -14,6 +14,8 @@
 #include <string_view>
 #include <vector>
 
+#include "fspm/dcheck.hpp"
+
 namespace fspm {
 
 using NodeId = std::uint32_t;
@@ -91,6 +93,8 @@ class TreeGraph {
   // taken as given (data.length >= 0, data.direction the unit heading), so nothing is derived.
   // Inline so that tight loops avoid the call; after reserve() it never reallocates.
   NodeId add_node_unchecked(NodeId parent, const NodeData& data) {
+    FSPM_DCHECK(parent == kNoNode ? parent_.empty() : parent < parent_.size(),
+                "add_node_unchecked: an existing parent, or kNoNode for the first node only");
     const NodeId id = static_cast<NodeId>(parent_.size());
     parent_.push_back(parent);
     first_child_.push_back(kNoNode);

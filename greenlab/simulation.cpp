@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <unordered_map>
 
+#include "fspm/dcheck.hpp"
 #include "fspm/error.hpp"
 #include "greenlab/functional.hpp"
 #include "greenlab/reconstruction.hpp"
@@ -30,9 +31,11 @@ class Factorizer {
     for (int i = p; i >= 1; --i) {
       const AgeParams& a = params.age(i);
       bool det = !a.stochastic();
+      FSPM_DCHECK(a.next_age == 0 || a.next_age >= i, "validate() keeps transitions upward");
       if (a.next_age > i) det = det && deterministic_[static_cast<std::size_t>(a.next_age)];
       for (const auto& run : a.units) {
         for (const auto& b : run.axillary) {
+          FSPM_DCHECK(b.age >= i, "validate() keeps axillary ages upward");
           if (b.age > i) det = det && deterministic_[static_cast<std::size_t>(b.age)];
           // A bud's own branching probability decides whether it grows.
           det = det && params.age(b.age).branching_probability >= 1.0;
