@@ -457,23 +457,29 @@ CtreeGeometry decode_geometry(Reader& in, std::uint32_t n, std::uint32_t n_refs)
   return g;
 }
 
-}  // namespace
+// The fixed header after the magic.
+struct CtreeHeader {
+  std::uint32_t version = 0;
+  std::uint32_t n = 0;       // records
+  std::uint32_t n_refs = 0;  // axillary references
+  std::uint32_t root = 0;
+};
 
-CompressedTreeGraph decode_ctree(std::string_view bytes, const std::string& source_name) {
-  Reader in(bytes, source_name);
+// Reads the version, counts and root into the header, the ages and metadata into g.
+CtreeHeader decode_header(Reader& in, CompressedTreeGraph& g, const std::string& source_name) {
   if (in.take(sizeof(kMagic), "the magic FSPMCTRE") != std::string_view(kMagic, sizeof(kMagic))) {
     throw ParseError("not a .ctree file (magic FSPMCTRE expected)", source_name);
   }
-  const auto version = in.get<std::uint32_t>("the version");
-  if (version != kVersion && version != kGeometryVersion) {
-    throw ParseError("unsupported .ctree version " + std::to_string(version) + " (expected " +
+  CtreeHeader h;
+  h.version = in.get<std::uint32_t>("the version");
+  if (h.version != kVersion && h.version != kGeometryVersion) {
+    throw ParseError("unsupported .ctree version " + std::to_string(h.version) + " (expected " +
                          std::to_string(kVersion) + " or " + std::to_string(kGeometryVersion) + ")",
                      source_name);
   }
-  const auto n = in.get<std::uint32_t>("the record count");
-  const auto n_refs = in.get<std::uint32_t>("the axillary count");
-  const auto root = in.get<std::uint32_t>("the root");
-  CompressedTreeGraph g;
+  h.n = in.get<std::uint32_t>("the record count");
+  h.n_refs = in.get<std::uint32_t>("the axillary count");
+  h.root = in.get<std::uint32_t>("the root");
   g.final_age = in.get<double>("the final age");
   g.birth_date = in.get<double>("the birth date");
   if (!(g.final_age >= 0.0 && g.final_age <= kMaxCtreeAge)) {
@@ -490,13 +496,19 @@ CompressedTreeGraph decode_ctree(std::string_view bytes, const std::string& sour
     std::string key(in.take(len, "a metadata key"));
     g.metadata[key] = in.get<double>("a metadata value");
   }
+  return h;
+}
+
+// The record table (52 bytes a record), after checking that the rest of the input can hold it
+// and the axillary references; each record's axillary range follows from the counts before it.
+std::vector<CompressedRecord> decode_records(Reader& in, const CtreeHeader& h) {
   const std::uint64_t table_bytes =
-      static_cast<std::uint64_t>(n) * 52 + static_cast<std::uint64_t>(n_refs) * 4;
-  if (version == kVersion ? in.remaining() != table_bytes : in.remaining() < table_bytes + 8) {
-    in.fail("size does not match " + std::to_string(n) + " records and " + std::to_string(n_refs) +
-            " axillary references");
+      static_cast<std::uint64_t>(h.n) * 52 + static_cast<std::uint64_t>(h.n_refs) * 4;
+  if (h.version == kVersion ? in.remaining() != table_bytes : in.remaining() < table_bytes + 8) {
+    in.fail("size does not match " + std::to_string(h.n) + " records and " +
+            std::to_string(h.n_refs) + " axillary references");
   }
-  std::vector<CompressedRecord> records(n);
+  std::vector<CompressedRecord> records(h.n);
   std::uint64_t begin = 0;
   for (auto& r : records) {
     r.successor = in.get<std::uint32_t>("a successor");
@@ -518,22 +530,21 @@ CompressedTreeGraph decode_ctree(std::string_view bytes, const std::string& sour
       in.fail("a record's birth date or volume is nan or infinite, expected finite numbers");
     }
   }
-  if (begin != n_refs) in.fail("axillary counts do not add up to the reference count");
-  std::vector<RecordId> refs(n_refs);
-  for (auto& a : refs) a = in.get<std::uint32_t>("an axillary reference");
-  if (version == kGeometryVersion) g.geometry = decode_geometry(in, n, n_refs);
-  for (const auto& r : records) {
-    const auto ax = std::span<const RecordId>(refs).subspan(r.axillary_begin, r.axillary_count);
-    g.add_record(r, ax);
-  }
-  g.set_root(root);
+  if (begin != h.n_refs) in.fail("axillary counts do not add up to the reference count");
+  return records;
+}
+
+// The stored multiplicities must be the ones the graph gives (a corrupt file could claim any).
+void check_stored_multiplicities(const CompressedTreeGraph& g,
+                                 const std::vector<CompressedRecord>& records,
+                                 const std::string& source_name) {
   CompressedTreeGraph check = g;
   try {
     check.compute_multiplicities();
   } catch (const ValueError& e) {
     throw ParseError(e.message(), source_name);
   }
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < records.size(); ++i) {
     if (check.record(static_cast<RecordId>(i)).multiplicity != records[i].multiplicity) {
       throw ParseError("record " + std::to_string(i) + " stores multiplicity " +
                            std::to_string(records[i].multiplicity) + " but the graph gives " +
@@ -541,6 +552,24 @@ CompressedTreeGraph decode_ctree(std::string_view bytes, const std::string& sour
                        source_name);
     }
   }
+}
+
+}  // namespace
+
+CompressedTreeGraph decode_ctree(std::string_view bytes, const std::string& source_name) {
+  Reader in(bytes, source_name);
+  CompressedTreeGraph g;
+  const CtreeHeader h = decode_header(in, g, source_name);
+  const std::vector<CompressedRecord> records = decode_records(in, h);
+  std::vector<RecordId> refs(h.n_refs);
+  for (auto& a : refs) a = in.get<std::uint32_t>("an axillary reference");
+  if (h.version == kGeometryVersion) g.geometry = decode_geometry(in, h.n, h.n_refs);
+  for (const auto& r : records) {
+    const auto ax = std::span<const RecordId>(refs).subspan(r.axillary_begin, r.axillary_count);
+    g.add_record(r, ax);
+  }
+  g.set_root(h.root);
+  check_stored_multiplicities(g, records, source_name);
   return g;
 }
 
