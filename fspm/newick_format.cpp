@@ -17,10 +17,17 @@ class Scanner {
  public:
   Scanner(std::string_view text, const std::string& source) : text_(text), source_(source) {}
 
+  // Blanks and Newick comments in square brackets ("[&R]", "[bootstrap 95]").
   void skip_space() {
-    while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\t' ||
-                                   text_[pos_] == '\n' || text_[pos_] == '\r')) {
-      advance();
+    for (;;) {
+      const char c = peek();
+      if (c == ' ' || c == '\t' || c == '\n' || c == '\r') {
+        advance();
+      } else if (c == '[') {
+        skip_comment();
+      } else {
+        return;
+      }
     }
   }
   bool at_end() const { return pos_ >= text_.size(); }
@@ -40,13 +47,34 @@ class Scanner {
     const std::size_t b = pos_;
     while (!at_end()) {
       const char c = text_[pos_];
-      if (c == '(' || c == ')' || c == ',' || c == ':' || c == ';' || c == ' ' || c == '\t' ||
-          c == '\n' || c == '\r') {
-        break;
-      }
+      if (ends_word(c)) break;
       advance();
     }
     return text_.substr(b, pos_ - b);
+  }
+
+  // A quoted label at the current "'": its text, with "''" read as one quote.
+  std::string quoted() {
+    const int open_line = line_;
+    const int open_column = column_;
+    advance();
+    std::string out;
+    for (;;) {
+      if (at_end()) {
+        fail("unterminated quoted label: the quote opened here is never closed", open_line,
+             open_column);
+      }
+      const char c = text_[pos_];
+      advance();
+      if (c != '\'') {
+        out += c;
+      } else if (peek() == '\'') {
+        out += '\'';
+        advance();
+      } else {
+        return out;
+      }
+    }
   }
 
   [[noreturn]] void fail(const std::string& what, int line, int column) const {
@@ -61,7 +89,23 @@ class Scanner {
   int line() const { return line_; }
   int column() const { return column_; }
 
+  // The characters an unquoted label or length cannot contain.
+  static bool ends_word(char c) {
+    return c == '(' || c == ')' || c == ',' || c == ':' || c == ';' || c == '[' || c == '\'' ||
+           c == ' ' || c == '\t' || c == '\n' || c == '\r';
+  }
+
  private:
+  void skip_comment() {
+    const int open_line = line_;
+    const int open_column = column_;
+    while (!at_end() && peek() != ']') advance();
+    if (at_end()) {
+      fail("unterminated comment: the '[' opened here is never closed", open_line, open_column);
+    }
+    advance();
+  }
+
   std::string_view text_;
   const std::string& source_;
   std::size_t pos_ = 0;
@@ -69,18 +113,28 @@ class Scanner {
   int column_ = 1;
 };
 
-// Reads the optional `label` and `:length` after a node and stores them.
-void read_label_and_length(Scanner& s, TreeGraph& tree, NodeId n) {
+// An unquoted name as Newick writes it: '_' stands for a blank.
+std::string unquoted_name(std::string_view word) {
+  std::string name(word);
+  for (char& c : name) {
+    if (c == '_') c = ' ';
+  }
+  return name;
+}
+
+// Reads the optional label and `:length` after a node and stores them: an unquoted number in
+// the attribute "label", any other label (a taxon name, or anything quoted) in `names`.
+void read_label_and_length(Scanner& s, TreeGraph& tree, NodeId n, std::vector<std::string>& names) {
   s.skip_space();
-  const int line = s.line();
-  const int col = s.column();
-  const std::string_view label = s.word();
-  if (!label.empty()) {
-    const auto v = parse_number(label);
-    if (!v) {
-      s.fail("expected a numeric node label, found '" + std::string(label) + "'", line, col);
+  names.resize(tree.size());
+  if (s.peek() == '\'') {
+    names[n] = s.quoted();
+  } else if (const std::string_view label = s.word(); !label.empty()) {
+    if (const auto v = parse_number(label)) {
+      tree.attribute(kNewickLabel)[n] = *v;
+    } else {
+      names[n] = unquoted_name(label);
     }
-    tree.attribute(kNewickLabel)[n] = *v;
   }
   s.skip_space();
   if (s.peek() == ':') {
@@ -99,11 +153,32 @@ void read_label_and_length(Scanner& s, TreeGraph& tree, NodeId n) {
   }
 }
 
+// Writes a name so that it reads back as the same name: bare when it is a plain word that is not
+// a number, else quoted with its quotes doubled.
+void append_name(std::string& out, const std::string& name) {
+  bool bare = !parse_number(name).has_value();
+  for (const char c : name) {
+    if (c == '_' || c == ']' || Scanner::ends_word(c)) bare = false;
+  }
+  if (bare) {
+    out += name;
+    return;
+  }
+  out += '\'';
+  for (const char c : name) {
+    out += c;
+    if (c == '\'') out += '\'';
+  }
+  out += '\'';
+}
+
 }  // namespace
 
-TreeGraph parse_newick(std::string_view text, const std::string& source) {
+NewickTree parse_newick_named(std::string_view text, const std::string& source) {
   Scanner s(text, source);
-  TreeGraph tree;
+  NewickTree named;
+  TreeGraph& tree = named.tree;
+  std::vector<std::string>& names = named.names;
   tree.add_attribute(std::string(kNewickLabel), kNaN);
   tree.add_attribute(std::string(kNewickBranchLength), kNaN);
   std::vector<NodeId> open;  // internal nodes whose ')' has not been read yet
@@ -133,7 +208,7 @@ TreeGraph parse_newick(std::string_view text, const std::string& source) {
       continue;
     }
     // A leaf; its label may be empty, as in "(,)".
-    read_label_and_length(s, tree, new_node());
+    read_label_and_length(s, tree, new_node(), names);
     // After a subtree: ',' for a sibling, ')' to close, ';' at the end.
     for (;;) {
       s.skip_space();
@@ -148,7 +223,7 @@ TreeGraph parse_newick(std::string_view text, const std::string& source) {
         open.pop_back();
         open_line.pop_back();
         open_col.pop_back();
-        read_label_and_length(s, tree, n);
+        read_label_and_length(s, tree, n, names);
         continue;
       }
       if (open.empty()) {
@@ -156,7 +231,8 @@ TreeGraph parse_newick(std::string_view text, const std::string& source) {
         s.advance();
         s.skip_space();
         if (!s.at_end()) s.fail("expected the end of the input after ';', found " + s.found());
-        return tree;
+        names.resize(tree.size());
+        return named;
       }
       if (s.at_end()) {
         s.fail("unbalanced parentheses: the '(' opened here is never closed", open_line.back(),
@@ -167,7 +243,20 @@ TreeGraph parse_newick(std::string_view text, const std::string& source) {
   }
 }
 
+TreeGraph parse_newick(std::string_view text, const std::string& source) {
+  return parse_newick_named(text, source).tree;
+}
+
 std::string to_newick(const TreeGraph& tree, std::string_view label_attribute) {
+  return to_newick_named(tree, {}, label_attribute);
+}
+
+std::string to_newick_named(const TreeGraph& tree, std::span<const std::string> names,
+                            std::string_view label_attribute) {
+  if (!names.empty() && names.size() != tree.size()) {
+    throw ValueError("to_newick: " + std::to_string(names.size()) + " names for a tree of " +
+                     std::to_string(tree.size()) + " nodes; expected one per node");
+  }
   std::string out;
   if (tree.empty()) return ";";
   const bool has_label = tree.has_attribute(label_attribute);
@@ -175,7 +264,11 @@ std::string to_newick(const TreeGraph& tree, std::string_view label_attribute) {
   const auto labels = has_label ? tree.attribute(label_attribute) : std::span<const double>{};
   const auto lengths = has_length ? tree.attribute(kNewickBranchLength) : std::span<const double>{};
   auto suffix = [&](NodeId n) {
-    if (has_label && !std::isnan(labels[n])) append_number(out, labels[n]);
+    if (!names.empty() && !names[n].empty()) {
+      append_name(out, names[n]);
+    } else if (has_label && !std::isnan(labels[n])) {
+      append_number(out, labels[n]);
+    }
     if (has_length && !std::isnan(lengths[n])) {
       out += ':';
       append_number(out, lengths[n]);

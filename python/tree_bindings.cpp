@@ -201,11 +201,26 @@ void bind_tree(py::module_& m) {
       "parse_newick", [](const std::string& text) { return fspm::parse_newick(text); },
       py::arg("text"),
       "A tree from Newick text ending in ';': numeric node labels become the attribute 'label', "
-      "branch lengths 'branch_length' (NaN where missing)");
+      "branch lengths 'branch_length' (NaN where missing); names are dropped "
+      "(parse_newick_named keeps them)");
   m.def(
-      "to_newick", [](const TreeGraph& t) { return fspm::to_newick(t); }, py::arg("tree"),
+      "parse_newick_named",
+      [](const std::string& text) {
+        fspm::NewickTree t = fspm::parse_newick_named(text);
+        return py::make_tuple(std::move(t.tree), std::move(t.names));
+      },
+      py::arg("text"),
+      "(tree, names) from Newick text: the tree as parse_newick gives it and one name per node "
+      "(taxon names and quoted labels; '' where a node has none or a numeric label)");
+  m.def(
+      "to_newick",
+      [](const TreeGraph& t, const std::vector<std::string>& names) {
+        return fspm::to_newick_named(t, names);
+      },
+      py::arg("tree"), py::arg("names") = std::vector<std::string>{},
       "The tree as Newick text: topology, the attribute 'label' as node labels and "
-      "'branch_length' when present");
+      "'branch_length' when present; with names (one per node), a node's name, quoted where "
+      "needed, in place of its label");
 }
 
 }  // namespace fspm::python

@@ -83,6 +83,7 @@ from ._fspm import (  # noqa: F401
     paired_t_test,
     parse_growth_params,
     parse_newick,
+    parse_newick_named,
     parse_plant_params,
     parse_scene_json,
     parse_targets_csv,

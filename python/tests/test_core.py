@@ -30,8 +30,8 @@ def test_columns_are_read_only_views_without_copy():
 
 
 def test_errors_are_python_exceptions_with_locations(tmp_path):
-    with pytest.raises(fspm.ParseError, match=r"1:4: expected a numeric node label"):
-        fspm.parse_newick("(1,abc);")
+    with pytest.raises(fspm.ParseError, match=r"1:4: expected a branch length"):
+        fspm.parse_newick("(1:,2);")
     with pytest.raises(fspm.IoError):
         fspm.read_tree(str(tmp_path / "missing.tree"))
     with pytest.raises(TypeError):
@@ -42,7 +42,7 @@ def test_errors_are_also_the_matching_builtin_exceptions(tmp_path):
     # A parse error is a ValueError, a file error an OSError, a bad parameter a ValueError, and
     # all of them fspm.Error.
     with pytest.raises(ValueError):
-        fspm.parse_newick("(1,abc);")
+        fspm.parse_newick("(1:,2);")
     with pytest.raises(OSError):
         fspm.read_tree(str(tmp_path / "missing.tree"))
     with pytest.raises(ValueError, match="expected sky or shadow_grid"):
@@ -264,3 +264,11 @@ def test_memory_limit_raises_memory_error_before_allocating(tmp_path):
         fspm.set_memory_limit(None)
     assert fspm.memory_limit() == default
     assert fspm.lsystem_derive(str(grammar), steps=10)["modules"] == 1024
+
+
+def test_newick_taxon_names_are_read_and_written_back():
+    tree, names = fspm.parse_newick_named("((A:1,B:2)C:0.5,'D d':1);")
+    assert len(tree) == 5
+    assert names == ["", "C", "A", "B", "D d"]
+    assert fspm.to_newick(tree, names) == "((A:1,B:2)C:0.5,'D d':1);"
+    assert fspm.to_newick(tree) == "((:1,:2):0.5,:1);"

@@ -37,6 +37,22 @@ TEST(EvaluationCli, OneNodeNewickLiteral) {
   EXPECT_EQ(nlohmann::json::parse(r.out)["distance"], 7.0);
 }
 
+// Taxon names and one-node literals; hand-computed in
+// tests/fspm/constrained_edit_distance_test.cpp (HandCaseNamedNewickTopological): 3, and a named
+// leaf against a named cherry is two insertions.
+TEST(EvaluationCli, NamedNewickLiterals) {
+  auto r = run_fspm("distance '((b,c)x,d)r;' \"('b',c,d)'r';\" --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["distance"], 3.0);
+  r = run_fspm("distance 'A;' '(A,B)C;' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["distance"], 2.0);
+  EXPECT_EQ(nlohmann::json::parse(r.out)["nodes_a"], 1);
+  r = run_fspm("distance \"'Fagus sylvatica';\" 'A;' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["distance"], 0.0);
+}
+
 TEST(EvaluationCli, DistanceReadsNewickFilesAndDefaultsToTopological) {
   const auto dir = scratch_dir("distance");
   write_text(dir / "a.nwk", "((1,2)3,4)5;\n");
@@ -55,7 +71,7 @@ TEST(EvaluationCli, DistanceBadInputExitsOne) {
   auto r = run_fspm("distance '((1,2)3,4;' '(1,2)3;'");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("Newick argument A"), std::string::npos) << r.err;
-  r = run_fspm("distance '(1,2)3;' '(1,x)3;'");
+  r = run_fspm("distance '(1,2)3;' \"(1,'x)3;\"");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("Newick argument B"), std::string::npos) << r.err;
   r = run_fspm("distance '(1,2)3;' '(1,2)3;' --cost absolute --attr nope");

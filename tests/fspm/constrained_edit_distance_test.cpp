@@ -333,6 +333,29 @@ TEST(ConstrainedEditDistance, HandCaseNewickLabels) {
   EXPECT_EQ(constrained.minimum(), 203.0);
 }
 
+// Named trees need no numbers for the topological cost (delete = insert = 1, relabel = 0): the
+// distance is |A| + |B| - 2 m for the largest constrained mapping of m pairs.
+// A = r(C(A, B), D), 5 nodes, embeds in B = r(C(A, B), F(D, E)), 7 nodes: m = 5 (D maps into F's
+// subtree, disjoint from C's), so 5 + 7 - 10 = 2, and no mapping does better than the 2 extra
+// nodes of B.
+// A = r(x(b, c), d), B = r(b, c, d): deleting x would merge {b, c} with {d}, so at most r, one of
+// x's subtree and d match: m = 3, 5 + 4 - 6 = 3.
+TEST(ConstrainedEditDistance, HandCaseNamedNewickTopological) {
+  const NewickTree a = parse_newick_named("((A:1,B:2)C:0.5,D:1);");
+  const NewickTree b = parse_newick_named("((A,B)C,(D,E)F);");
+  EditDistanceOptions opt;
+  opt.with_mapping = true;
+  const auto r = constrained_edit_distance(a.tree, b.tree, opt);
+  EXPECT_EQ(r.distance, 2.0);
+  EXPECT_EQ(r.nodes_a, 5u);
+  EXPECT_EQ(r.nodes_b, 7u);
+  EXPECT_EQ(r.mapping.size(), 5u);  // every node of A is matched
+  const TreeGraph x = parse_newick("((b,c)x,d)r;");
+  const TreeGraph y = parse_newick("(b,c,d)r;");
+  EXPECT_EQ(constrained_edit_distance(x, y).distance, 3.0);
+  EXPECT_EQ(constrained_edit_distance(y, x).distance, 3.0);
+}
+
 TEST(ConstrainedEditDistance, RejectsCostModelBreakingTheRelabelBound) {
   std::mt19937_64 rng(3);
   const TreeGraph a = random_tree(rng, 6), b = random_tree(rng, 6);

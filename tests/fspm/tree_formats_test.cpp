@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -125,8 +126,8 @@ TEST(Newick, MalformedInputNamesLineAndColumn) {
   };
   for (const Case& c : std::vector<Case>{{"(1,2", 1, 1, "never closed"},
                                          {"(1,2));", 1, 6, "expected ';'"},
-                                         {"(1,abc)3;", 1, 4, "numeric node label"},
-                                         {"(1,\n2)x;", 2, 3, "numeric node label"},
+                                         {"(1,'abc)3;", 1, 4, "quoted label"},
+                                         {"(1,\n2)[x;", 2, 3, "comment"},
                                          {"(1,2)3", 1, 7, "expected ';'"},
                                          {"", 1, 1, "empty"},
                                          {"(1:,2);", 1, 4, "branch length"},
@@ -140,6 +141,78 @@ TEST(Newick, MalformedInputNamesLineAndColumn) {
       EXPECT_NE(std::string(e.what()).find(c.expected), std::string::npos) << e.what();
     }
   }
+}
+
+// Taxon names as node labels; ids in the order the nodes open: 0 the root, 1 C, 2 A, 3 B, 4 D.
+TEST(Newick, ReadsTaxonNamesAndBranchLengths) {
+  const NewickTree t = parse_newick_named("((A:1,B:2)C:0.5,D:1);");
+  ASSERT_EQ(t.tree.size(), 5u);
+  EXPECT_EQ(t.names, (std::vector<std::string>{"", "C", "A", "B", "D"}));
+  EXPECT_EQ(t.tree.parent(1), 0u);
+  EXPECT_EQ(t.tree.parent(2), 1u);
+  EXPECT_EQ(t.tree.parent(3), 1u);
+  EXPECT_EQ(t.tree.parent(4), 0u);
+  const auto length = t.tree.attribute("branch_length");
+  EXPECT_TRUE(std::isnan(length[0]));
+  EXPECT_EQ(length[1], 0.5);
+  EXPECT_EQ(length[2], 1.0);
+  EXPECT_EQ(length[3], 2.0);
+  EXPECT_EQ(length[4], 1.0);
+  // Names are not numbers: the numeric label stays NaN everywhere.
+  for (const double v : t.tree.attribute("label")) EXPECT_TRUE(std::isnan(v));
+  // parse_newick reads the same tree without the names.
+  EXPECT_TRUE(parse_newick("((A:1,B:2)C:0.5,D:1);").identical(t.tree));
+}
+
+TEST(Newick, ReadsQuotedLabelsUnderscoresCommentsAndNumbers) {
+  const NewickTree t =
+      parse_newick_named("[&R] ('a b':1,'it''s',Quercus_robur[95],'7')'(root), node':2;");
+  ASSERT_EQ(t.tree.size(), 5u);
+  EXPECT_EQ(t.names,
+            (std::vector<std::string>{"(root), node", "a b", "it's", "Quercus robur", "7"}));
+  EXPECT_EQ(t.tree.child_count(0), 4u);
+  EXPECT_EQ(t.tree.attribute("branch_length")[0], 2.0);
+  EXPECT_EQ(t.tree.attribute("branch_length")[1], 1.0);
+  // A quoted number is a name; an unquoted one is the numeric label.
+  EXPECT_TRUE(std::isnan(t.tree.attribute("label")[4]));
+  const NewickTree mixed = parse_newick_named("(A,B)95;");
+  EXPECT_EQ(mixed.tree.attribute("label")[0], 95.0);
+  EXPECT_EQ(mixed.names, (std::vector<std::string>{"", "A", "B"}));
+}
+
+TEST(Newick, OneNodeTrees) {
+  const NewickTree number = parse_newick_named("10;");
+  ASSERT_EQ(number.tree.size(), 1u);
+  EXPECT_EQ(number.tree.attribute("label")[0], 10.0);
+  EXPECT_EQ(number.names, std::vector<std::string>{""});
+  const NewickTree name = parse_newick_named("A;");
+  ASSERT_EQ(name.tree.size(), 1u);
+  EXPECT_TRUE(std::isnan(name.tree.attribute("label")[0]));
+  EXPECT_EQ(name.names, std::vector<std::string>{"A"});
+  const NewickTree quoted = parse_newick_named("'Fagus sylvatica':3;");
+  ASSERT_EQ(quoted.tree.size(), 1u);
+  EXPECT_EQ(quoted.names, std::vector<std::string>{"Fagus sylvatica"});
+  EXPECT_EQ(quoted.tree.attribute("branch_length")[0], 3.0);
+}
+
+TEST(Newick, WritesNamesBackQuotedWhereNeeded) {
+  for (const std::string s :
+       {"((A:1,B:2)C:0.5,D:1);", "A;", "('a b','it''s')'x,y';", "(A,B)95;", "('7',A)B;"}) {
+    const NewickTree t = parse_newick_named(s);
+    EXPECT_EQ(to_newick_named(t.tree, t.names), s);
+  }
+  // An empty quoted label is no label.
+  const NewickTree empty = parse_newick_named("(A)'';");
+  EXPECT_EQ(to_newick_named(empty.tree, empty.names), "(A);");
+  // '_' reads as a blank, so a name with a blank or an underscore is written quoted.
+  const NewickTree t = parse_newick_named("(Quercus_robur,'Q_r');");
+  EXPECT_EQ(t.names[1], "Quercus robur");
+  EXPECT_EQ(t.names[2], "Q_r");
+  EXPECT_EQ(to_newick_named(t.tree, t.names), "('Quercus robur','Q_r');");
+  // Without names, the numbers only.
+  EXPECT_EQ(to_newick(t.tree), "(,);");
+  const std::vector<std::string> too_few{"A"};
+  EXPECT_THROW(to_newick_named(t.tree, too_few), ValueError);
 }
 
 TEST(Newick, DeepNestingDoesNotOverflowTheStack) {
