@@ -453,9 +453,9 @@ void Engine::bend(TreeRun& r, int level, int step) {
     const std::uint32_t gc = r.first_cluster + c;
     if (r.stamp[anchor] != step || !field_.alive(gc)) continue;
     const Eigen::Vector3d moved_to = r.F[anchor](center0_[gc]);
-    const double step = (moved_to - field_.center(gc)).norm();
-    path_[gc] += step;
-    step_max_ = std::max(step_max_, step);
+    const double moved_m = (moved_to - field_.center(gc)).norm();
+    path_[gc] += moved_m;
+    step_max_ = std::max(step_max_, moved_m);
     field_.move(gc, moved_to);
     cgroup_[gc] = r.group[anchor];
     moved_.push_back(gc);
