@@ -16,6 +16,17 @@ std::array<unsigned char, 3> chart_color(std::size_t i) {
   return {c[0], c[1], c[2]};
 }
 
+std::optional<std::array<double, 2>> flat_value_range(const std::vector<double>& values) {
+  if (values.empty()) return std::nullopt;
+  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  const double v = 0.5 * (*lo + *hi);
+  if (*hi - *lo > 1e-9 * std::abs(v)) return std::nullopt;
+  // A margin of a tenth of the value keeps the line clear of the frame and the ticks readable
+  // as the value itself (120, 130 for 125), not as its noise.
+  const double margin = v == 0.0 ? 1.0 : 0.1 * std::abs(v);
+  return std::array<double, 2>{v - margin, v + margin};
+}
+
 double quantile(std::vector<double> values, double q) {
   if (values.empty()) throw ValueError("quantile of no values");
   if (!(q >= 0.0 && q <= 1.0)) throw ValueError("quantile must be in [0, 1]");

@@ -4,6 +4,7 @@
 // this header. Like the tree renders, VTK's OpenGL context needs an X display here (xvfb-run -a
 // is enough).
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,12 @@ struct ChartOptions {
   std::vector<double> x_ticks;
   std::vector<std::string> x_tick_labels;
 };
+
+// The value axis of a chart whose values are all equal to v (to within 1e-9 of |v|): v ± 10 % of
+// |v|, or [-1, 1] for v = 0, rather than the plotting library's range of about ±1e-7 around v,
+// whose tick labels read as if the metric varied. Nothing when the values differ (or there are
+// none): the library's own range then fits them.
+std::optional<std::array<double, 2>> flat_value_range(const std::vector<double>& values);
 
 // Colour of series (or box) i: the Tableau 10 palette, cycling (8-bit RGB).
 std::array<unsigned char, 3> chart_color(std::size_t i);

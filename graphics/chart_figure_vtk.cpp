@@ -75,6 +75,14 @@ void style_title(vtkChart* chart, const std::string& title) {
   chart->GetTitleProperties()->SetColor(0.1, 0.1, 0.1);
 }
 
+// All values equal: the axis spans flat_value_range instead of VTK's ±1e-7 around them.
+void fix_flat_axis(vtkAxis* axis, const std::vector<double>& values) {
+  const auto range = flat_value_range(values);
+  if (!range) return;
+  axis->SetBehavior(vtkAxis::FIXED);
+  axis->SetRange((*range)[0], (*range)[1]);
+}
+
 }  // namespace
 
 Image line_chart_image(const std::vector<ChartSeries>& series, const ChartOptions& o) {
@@ -112,6 +120,9 @@ Image line_chart_image(const std::vector<ChartSeries>& series, const ChartOption
     }
     view->GetScene()->AddItem(chart);
     style_title(chart, o.title);
+    std::vector<double> values;
+    for (const ChartSeries& s : series) values.insert(values.end(), s.y.begin(), s.y.end());
+    fix_flat_axis(chart->GetAxis(vtkAxis::LEFT), values);
     chart->GetAxis(vtkAxis::BOTTOM)->SetTitle(o.x_label);
     chart->GetAxis(vtkAxis::LEFT)->SetTitle(o.y_label);
     const auto listed =
@@ -185,6 +196,9 @@ Image box_plot_image(const std::vector<std::string>& group_names,
     }
     box->SetLabels(labels);
     chart->GetYAxis()->SetTitle(o.y_label);
+    std::vector<double> values;
+    for (const auto& g : groups) values.insert(values.end(), g.begin(), g.end());
+    fix_flat_axis(chart->GetYAxis(), values);
     chart->SetShowLegend(true);
   });
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -26,6 +27,30 @@ TEST(ChartFigure, QuantilesMatchTypeSeven) {
   EXPECT_DOUBLE_EQ(quantile({2.0}, 0.3), 2.0);
   EXPECT_THROW(quantile({}, 0.5), ValueError);
   EXPECT_THROW(quantile(v, 1.5), ValueError);
+}
+
+// A metric equal in every run (a count fixed by the parameters, say) gets an axis of its value
+// ± 10 %, worked out by hand here; differing values keep the plotting library's range.
+TEST(ChartFigure, AllEqualValuesGetAnAxisOfTheValuePlusMinusTenPercent) {
+  const auto a = flat_value_range({125.0, 125.0, 125.0});
+  ASSERT_TRUE(a.has_value());
+  EXPECT_DOUBLE_EQ((*a)[0], 112.5);  // 125 - 12.5
+  EXPECT_DOUBLE_EQ((*a)[1], 137.5);
+  const auto b = flat_value_range({-2.0, -2.0});
+  ASSERT_TRUE(b.has_value());
+  EXPECT_DOUBLE_EQ((*b)[0], -2.2);
+  EXPECT_DOUBLE_EQ((*b)[1], -1.8);
+  const auto zero = flat_value_range({0.0, 0.0, 0.0});
+  ASSERT_TRUE(zero.has_value());
+  EXPECT_EQ((*zero)[0], -1.0);
+  EXPECT_EQ((*zero)[1], 1.0);
+  // Rounding noise (a mean of equal values) still counts as equal: 0.3 = 0.1 + 0.2 + 4e-17.
+  const auto noisy = flat_value_range({0.3, 0.1 + 0.2});
+  ASSERT_TRUE(noisy.has_value());
+  EXPECT_NEAR((*noisy)[0], 0.27, 1e-12);
+  EXPECT_NEAR((*noisy)[1], 0.33, 1e-12);
+  EXPECT_FALSE(flat_value_range({1.0, 1.001}).has_value());
+  EXPECT_FALSE(flat_value_range({}).has_value());
 }
 
 TEST(ChartFigure, BadInputIsValueErrorBeforeAnyRendering) {
@@ -111,6 +136,35 @@ TEST_F(Charts, LineChartDrawsEachSeriesInItsOwnColour) {
   EXPECT_LT(census(image, 5).per_color[4], 20u);
   EXPECT_THROW(write_line_chart(series, o, (dir_ / "missing/x.png").string()), IoError);
   EXPECT_FALSE(fs::exists(dir_ / "missing"));
+}
+
+// A flat line at 125 on the axis [112.5, 137.5] lies in the middle of the plot's height, and its
+// colour fills a horizontal run of pixels in one row band.
+TEST_F(Charts, ConstantSeriesIsDrawnAsAFlatLineInTheMiddle) {
+  ChartSeries flat{"flat", {10, 20, 30}, {125, 125, 125}, 0, false, true, false};
+  ChartOptions o;
+  o.title = "leaves (count)";
+  o.width = 420;
+  o.height = 300;
+  const std::string png = (dir_ / "flat.png").string();
+  write_line_chart({flat}, o, png);
+  const Image image = read_image(png);
+  const auto k = chart_color(0);
+  int top = image.height, bottom = -1;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const auto* p = &image.rgba[4 * (static_cast<std::size_t>(y) * image.width + x)];
+      if (std::abs(p[0] - k[0]) < 30 && std::abs(p[1] - k[1]) < 30 && std::abs(p[2] - k[2]) < 30) {
+        top = std::min(top, y);
+        bottom = std::max(bottom, y);
+      }
+    }
+  }
+  ASSERT_GE(bottom, 0) << "no line drawn";
+  EXPECT_LT(bottom - top, 20);  // one line with its dots, not a zigzag
+  const double middle = 0.5 * (top + bottom) / image.height;
+  EXPECT_GT(middle, 0.3);
+  EXPECT_LT(middle, 0.7);
 }
 
 TEST_F(Charts, BoxPlotDrawsOneColouredBoxPerGroup) {
