@@ -3,12 +3,13 @@
 // orbit (left drag), pan (right drag or shift + left drag), zoom (wheel), growth steps on [ and ]
 // (or left/right arrows), shadows from a sun with a 3x3 percentage-closer filtered shadow map
 // (Pirk 6.2.3) toggled with S, R resets the view, Esc or Q quits; the frame time is shown in the
-// title. Crown volumes (at kCrownOpacity, as in renders) and translucent obstacles (at the
-// opacity of their translucency) are blended after the opaque geometry without writing depth,
-// their triangles placed in the world and sorted back to front from the eye whenever the camera
-// moves (translucent_sort.hpp). With a screenshot path it renders `frames` frames into an
-// offscreen framebuffer, writes the image and returns (tests run it under Xvfb with Mesa's
-// software OpenGL).
+// title. The ground is the plane under the scene drawn to the horizon, hazing towards the sky's
+// colour with distance (aerial perspective). Crown volumes (at kCrownOpacity, as in renders) and
+// translucent obstacles (at the opacity of their translucency) are blended after the opaque
+// geometry without writing depth, their triangles placed in the world and sorted back to front from
+// the eye whenever the camera moves (translucent_sort.hpp). With a screenshot path it renders
+// `frames` frames into an offscreen framebuffer, writes the image and returns (tests run it under
+// Xvfb with Mesa's software OpenGL).
 #include <string>
 #include <vector>
 
@@ -25,6 +26,9 @@ struct ViewerOptions {
   std::string screenshot;  // non-empty: render `frames` frames hidden, write this image, return
   int frames = 1;          // frames before the screenshot
   bool shadows = true;
+  // The camera's starting elevation above the horizontal, looking at the scene's centre (a few
+  // degrees: a low view along the ground).
+  double pitch_deg = 20.0;
   // Distance-based level of detail: beyond this multiple of the starting camera distance the
   // coarse meshes (when given) are drawn instead.
   double lod_distance_factor = 1.5;

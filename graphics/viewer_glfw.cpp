@@ -27,6 +27,12 @@ namespace fspm::graphics {
 namespace {
 
 constexpr int kShadowSize = 2048;
+constexpr float kSky[3] = {0.80f, 0.87f, 0.96f};     // the background, cleared every frame
+constexpr float kGround[3] = {0.55f, 0.62f, 0.45f};  // before shading, as the renders' ground
+// Ground this many scene radii away is hazed by 1 - 1/e of kMaxHaze towards the sky colour.
+constexpr float kHazeRadii = 25.0f;
+// Even at the horizon the ground keeps half its own colour: the horizon stays a visible line.
+constexpr float kMaxHaze = 0.5f;
 
 const char* kShadowVs = R"(#version 330 core
 layout(location = 0) in vec3 position;
@@ -88,6 +94,63 @@ void main() {
   float s = lit();
   vec3 c = v_color.rgb * (0.35 + 0.65 * diffuse * s) + vec3(specular * s);
   frag = vec4(pow(c, vec3(1.0 / 1.2)), v_color.a);
+}
+)";
+
+// The ground: one triangle covering the screen; each pixel's ray from the eye meets the plane
+// z = ground_z (or not: sky), so the ground reaches the horizon whatever the far plane. The
+// depth written is that of the hit point (clamped to the far plane, drawn with GL_LEQUAL), the
+// shading that of the scene shader for a normal (0, 0, 1), and the colour tends to the sky's
+// with distance, at most kMaxHaze of it, as distant ground looks through air.
+const char* kGroundVs = R"(#version 330 core
+out vec2 v_ndc;
+void main() {
+  v_ndc = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);
+  gl_Position = vec4(v_ndc, 0.0, 1.0);
+}
+)";
+const char* kGroundFs = R"(#version 330 core
+in vec2 v_ndc;
+uniform mat4 mvp;
+uniform mat4 inverse_mvp;
+uniform mat4 light_mvp;
+uniform vec3 sun;
+uniform vec3 eye;
+uniform vec3 ground_color;
+uniform vec3 haze_color;
+uniform float ground_z;
+uniform float haze_distance;
+uniform float max_haze;
+uniform sampler2D shadow_map;
+uniform int shadows;
+out vec4 frag;
+float lit(vec4 v_light) {
+  if (shadows == 0) return 1.0;
+  vec3 p = v_light.xyz / v_light.w * 0.5 + 0.5;
+  if (p.z > 1.0 || p.x < 0.0 || p.x > 1.0 || p.y < 0.0 || p.y > 1.0) return 1.0;
+  vec2 texel = 1.0 / vec2(textureSize(shadow_map, 0));
+  float sum = 0.0;
+  for (int x = -1; x <= 1; ++x)
+    for (int y = -1; y <= 1; ++y)
+      sum += (p.z - 0.0015 > texture(shadow_map, p.xy + vec2(x, y) * texel).r) ? 0.0 : 1.0;
+  return sum / 9.0;
+}
+void main() {
+  vec4 a = inverse_mvp * vec4(v_ndc, -1.0, 1.0);
+  vec4 b = inverse_mvp * vec4(v_ndc, 1.0, 1.0);
+  vec3 from = a.xyz / a.w, dir = b.xyz / b.w - from;
+  if (abs(dir.z) < 1e-12) discard;
+  float t = (ground_z - from.z) / dir.z;
+  if (t <= 0.0) discard;  // the ray rises (eye above the ground): sky
+  vec3 world = from + t * dir;
+  vec4 clip = mvp * vec4(world, 1.0);
+  gl_FragDepth = clamp(clip.z / clip.w * 0.5 + 0.5, 0.0, 1.0);
+  vec3 n = eye.z >= ground_z ? vec3(0.0, 0.0, 1.0) : vec3(0.0, 0.0, -1.0);
+  float s = lit(light_mvp * vec4(world, 1.0));
+  vec3 c = ground_color * (0.35 + 0.65 * max(dot(n, sun), 0.0) * s);
+  c = pow(c, vec3(1.0 / 1.2));
+  float haze = max_haze * (1.0 - exp(-length(world - eye) / haze_distance));
+  frag = vec4(mix(c, haze_color, haze), 1.0);
 }
 )";
 
@@ -424,20 +487,6 @@ GpuStep upload(const StepRef& step, const ViewerOptions& o, const Scene& scene) 
   return g;
 }
 
-// A ground quad under the scene, drawn as one instance.
-GpuMesh upload_ground(const Scene& scene) {
-  const glm::vec3 size = glm::max(scene.hi - scene.lo, glm::vec3(0.1f));
-  const float half = 0.9f * std::max(size.x, size.y) + 0.4f * size.z;
-  const glm::vec3 c = 0.5f * (scene.lo + scene.hi);
-  std::vector<float> v;
-  for (int k = 0; k < 4; ++k) {
-    const float x = (k == 1 || k == 2) ? half : -half;
-    const float y = (k >= 2) ? half : -half;
-    v.insert(v.end(), {c.x + x, c.y + y, scene.lo.z, 0, 0, 1, 0.55f, 0.62f, 0.45f, 1.0f});
-  }
-  return upload_raw(v, {0, 1, 2, 0, 2, 3}, 6, {glm::mat4(1.0f)});
-}
-
 // kAll: every triangle (the shadow pass); kOpaque: the opaque ones alone (the blended ones are
 // drawn from the step's sorted soup).
 enum class Part { kAll, kOpaque };
@@ -451,7 +500,7 @@ void draw(const GpuMesh& g, Part part = Part::kAll) {
 }
 
 struct Camera {
-  float yaw = -0.9f, pitch = 0.35f, distance = 1.0f;
+  float yaw = -0.9f, pitch = 0.35f, distance = 1.0f;  // radians, metres
   glm::vec3 target{0.0f};
   glm::vec3 eye() const {
     return target + distance * glm::vec3(std::cos(pitch) * std::cos(yaw),
@@ -585,6 +634,7 @@ GLFWwindow* open_window(const ViewerOptions& o, const Scene& scene, int steps, S
   const float radius = std::max(0.5f * glm::length(scene.hi - scene.lo), 0.1f);
   state.camera.target = 0.5f * (scene.lo + scene.hi);
   state.camera.distance = 2.6f * radius;
+  state.camera.pitch = static_cast<float>(glm::radians(o.pitch_deg));
   state.home = state.camera;
   state.steps = steps;
   state.step = state.steps - 1;
@@ -601,7 +651,8 @@ GLFWwindow* open_window(const ViewerOptions& o, const Scene& scene, int steps, S
 struct GpuScene {
   GLuint shadow_program = 0, scene_program = 0;
   std::vector<GpuStep> steps, coarse;
-  GpuMesh ground;
+  GLuint ground_program = 0;
+  GLuint ground_vao = 0;  // no attributes: the ground's triangle comes from gl_VertexID
 };
 
 GpuScene upload_scene(const std::vector<StepRef>& steps, const std::vector<StepRef>& coarse,
@@ -611,7 +662,8 @@ GpuScene upload_scene(const std::vector<StepRef>& steps, const std::vector<StepR
   g.scene_program = program(kSceneVs, kSceneFs);
   for (const auto& step : steps) g.steps.push_back(upload(step, o, scene));
   for (const auto& step : coarse) g.coarse.push_back(upload(step, o, scene));
-  g.ground = upload_ground(scene);
+  g.ground_program = program(kGroundVs, kGroundFs);
+  glGenVertexArrays(1, &g.ground_vao);
   return g;
 }
 
@@ -622,7 +674,8 @@ void release(GpuScene& g) {
       release(step.soup.mesh);
     }
   }
-  release(g.ground);
+  glDeleteVertexArrays(1, &g.ground_vao);
+  glDeleteProgram(g.ground_program);
   glDeleteProgram(g.shadow_program);
   glDeleteProgram(g.scene_program);
 }
@@ -681,6 +734,7 @@ struct FrameMatrices {
   glm::vec3 sun{0.0f}, eye{0.0f};
   glm::mat4 light_mvp{1.0f}, mvp{1.0f};
   int width = 0, height = 0;
+  float ground_z = 0.0f, haze_distance = 1.0f;
 };
 
 FrameMatrices frame_matrices(const State& state, const Scene& scene, int width, int height) {
@@ -703,6 +757,8 @@ FrameMatrices frame_matrices(const State& state, const Scene& scene, int width, 
       glm::perspective(glm::radians(40.0f), static_cast<float>(width) / std::max(height, 1),
                        0.01f * c.distance, 10.0f * c.distance + radius * 4);
   f.mvp = proj * view;
+  f.ground_z = scene.lo.z;
+  f.haze_distance = kHazeRadii * radius;
   return f;
 }
 
@@ -724,6 +780,31 @@ void choose_instances(GpuStep& g, const LodView& lod, const FrameMatrices& f) {
   g.triangles = lod_triangle_count(*lod.scene, instances);
 }
 
+// The ground to the horizon (kGroundFs), first after the clear; GL_LEQUAL lets the points beyond
+// the far plane, clamped to depth 1, pass against the cleared depth.
+void draw_ground(const GpuScene& gpu, const FrameMatrices& f, bool shadows) {
+  const GLuint p = gpu.ground_program;
+  glUseProgram(p);
+  glUniformMatrix4fv(glGetUniformLocation(p, "mvp"), 1, GL_FALSE, glm::value_ptr(f.mvp));
+  const glm::mat4 inverse = glm::inverse(f.mvp);
+  glUniformMatrix4fv(glGetUniformLocation(p, "inverse_mvp"), 1, GL_FALSE, glm::value_ptr(inverse));
+  glUniformMatrix4fv(glGetUniformLocation(p, "light_mvp"), 1, GL_FALSE,
+                     glm::value_ptr(f.light_mvp));
+  glUniform3fv(glGetUniformLocation(p, "sun"), 1, glm::value_ptr(f.sun));
+  glUniform3fv(glGetUniformLocation(p, "eye"), 1, glm::value_ptr(f.eye));
+  glUniform3fv(glGetUniformLocation(p, "ground_color"), 1, kGround);
+  glUniform3fv(glGetUniformLocation(p, "haze_color"), 1, kSky);
+  glUniform1f(glGetUniformLocation(p, "ground_z"), f.ground_z);
+  glUniform1f(glGetUniformLocation(p, "haze_distance"), f.haze_distance);
+  glUniform1f(glGetUniformLocation(p, "max_haze"), kMaxHaze);
+  glUniform1i(glGetUniformLocation(p, "shadows"), shadows ? 1 : 0);
+  glUniform1i(glGetUniformLocation(p, "shadow_map"), 0);
+  glDepthFunc(GL_LEQUAL);
+  glBindVertexArray(gpu.ground_vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDepthFunc(GL_LESS);
+}
+
 // Step 5: the shadow pass, then the scene: opaque geometry and the ground, then the crowns and
 // translucent obstacles blended over it back to front (sorted by sort_blended), without writing
 // depth.
@@ -739,14 +820,17 @@ void draw_frame(const GpuScene& gpu, const GpuStep& g, const Targets& t, const F
     glUseProgram(gpu.shadow_program);
     glUniformMatrix4fv(glGetUniformLocation(gpu.shadow_program, "light_mvp"), 1, GL_FALSE,
                        glm::value_ptr(f.light_mvp));
+    // The ground is not drawn: a plane under the scene shadows nothing above it.
     for (const GpuMesh& m : g.meshes) draw(m);
-    draw(gpu.ground);
     glDisable(GL_POLYGON_OFFSET_FILL);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, t.target_fbo);
   glViewport(0, 0, f.width, f.height);
-  glClearColor(0.80f, 0.87f, 0.96f, 1.0f);
+  glClearColor(kSky[0], kSky[1], kSky[2], 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, t.shadow_tex);
+  draw_ground(gpu, f, shadows);
   const GLuint p = gpu.scene_program;
   glUseProgram(p);
   glUniformMatrix4fv(glGetUniformLocation(p, "mvp"), 1, GL_FALSE, glm::value_ptr(f.mvp));
@@ -759,7 +843,6 @@ void draw_frame(const GpuScene& gpu, const GpuStep& g, const Targets& t, const F
   glBindTexture(GL_TEXTURE_2D, t.shadow_tex);
   glUniform1i(glGetUniformLocation(p, "shadow_map"), 0);
   for (const GpuMesh& m : g.meshes) draw(m, Part::kOpaque);
-  draw(gpu.ground);
   glEnable(GL_BLEND);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);  // keep alpha 1
   glDepthMask(GL_FALSE);

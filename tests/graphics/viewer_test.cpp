@@ -69,10 +69,64 @@ TEST(Viewer, ScreenshotAfterFramesShowsTreeAndShadow) {
   fs::remove_all(dir);
 }
 
-// Blending in the viewer against closed-form "over" compositing. The viewer's home camera looks
-// at the centre of the bounds from yaw -0.9, pitch 0.35; squares facing it are stacked on that
-// line of sight. Every mesh carries the same unused corner vertices, so every screenshot has the
-// same bounds, camera and ground, and pixels compare one to one. Drawing a surface of opacity a
+// The ground reaches the horizon. Seen from 3 degrees above the horizontal, the plane's points at
+// infinity lie on the row where a horizontal ray meets the image: with the viewer's vertical field
+// of view of 40 degrees, y_ndc = tan 3 / tan 20 = 0.1440, 0.856 H / 2 = 102.7 rows from the top of
+// a 240-row image, whatever the eye's height. Below it, in every column, the pixels are ground
+// (green above blue, the sky's colour mixed in at most half), above it the cleared sky (blue
+// above green). A finite ground quad ends well below that row at this angle.
+TEST(Viewer, LowViewShowsGroundUpToTheHorizon) {
+  if (!viewer_available() || !render_available()) GTEST_SKIP() << "built without viewer/VTK";
+  if (!display_available()) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
+  const fs::path dir =
+      fs::temp_directory_path() / ("fspm_viewer_low_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  // A post at the centre of bounds [-1.5, 1.5]^3 given by unused corner vertices: the ground is
+  // the plane z = -1.5, the eye 2.6 x 2.6 m from the centre.
+  TriangleMesh mesh;
+  for (int k = 0; k < 8; ++k) {
+    mesh.positions.emplace_back(k & 1 ? 1.5f : -1.5f, k & 2 ? 1.5f : -1.5f, k & 4 ? 1.5f : -1.5f);
+    mesh.normals.emplace_back(0, 0, 1);
+    mesh.uvs.emplace_back(0, 0);
+  }
+  ViewerOptions o;
+  o.width = 320;
+  o.height = 240;
+  o.shadows = false;
+  o.pitch_deg = 3.0;
+  o.screenshot = (dir / "low.png").string();
+  (void)run_viewer({mesh}, {0.0}, o);
+  const Image shot = read_image(o.screenshot);
+  ASSERT_EQ(shot.height, 240);
+  const double pi = 3.141592653589793;
+  const double horizon = (1.0 - std::tan(3.0 * pi / 180) / std::tan(20.0 * pi / 180)) * 120.0;
+  ASSERT_NEAR(horizon, 102.7, 0.05);
+  std::size_t ground = 0, sky = 0, wrong = 0;
+  for (int x = 0; x < shot.width; ++x) {
+    for (int y = 0; y < shot.height; ++y) {
+      const auto* p = shot.pixel(x, y);
+      if (y >= horizon + 1) {
+        (p[1] > p[2] ? ground : wrong) += 1;
+      } else if (y <= horizon - 2) {
+        (p[2] > p[1] + 10 ? sky : wrong) += 1;
+      }
+    }
+  }
+  EXPECT_EQ(wrong, 0u);
+  EXPECT_EQ(ground, 320u * (240 - 104));  // rows 104-239
+  EXPECT_EQ(sky, 320u * 101);             // rows 0-100
+  // Nearby ground keeps its own colour (green well above blue), hazed less than the horizon.
+  const auto* near = shot.pixel(160, 239);
+  const auto* far = shot.pixel(5, 104);
+  EXPECT_GT(near[1] - near[2], far[1] - far[2]);
+  fs::remove_all(dir);
+}
+
+// Blending in the viewer against closed-form "over" compositing. The viewer's camera looks at the
+// centre of the bounds from yaw -0.9, 10 degrees below it (so that the sky, not the ground, is
+// behind the squares and an opaque wall stands out from it); squares facing it are stacked on
+// that line of sight. Every mesh carries the same unused corner vertices, so every screenshot has
+// the same bounds, camera and ground, and pixels compare one to one. Drawing a surface of opacity a
 // over a frame F gives a L + (1 - a) F, so with B the empty picture and X the picture of surface X
 // alone, X = a_X L_X + (1 - a_X) B and:
 //   a crown (C, a_c = 0.35) in front of an opaque wall (W):        CW = C + (1 - a_c) (W - B);
@@ -84,7 +138,7 @@ class ViewerBlending : public ::testing::Test {
   void SetUp() override {
     dir_ = fs::temp_directory_path() / ("fspm_viewer_blend_" + std::to_string(::getpid()));
     fs::create_directories(dir_);
-    const float yaw = -0.9f, pitch = 0.35f;
+    const float yaw = -0.9f, pitch = kPitchDeg * 3.14159265f / 180.0f;
     toward_eye_ = Eigen::Vector3f(std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw),
                                   std::sin(pitch));
     right_ = Eigen::Vector3f::UnitZ().cross(toward_eye_).normalized();
@@ -128,12 +182,14 @@ class ViewerBlending : public ::testing::Test {
     o.width = 240;
     o.height = 180;
     o.shadows = false;
+    o.pitch_deg = kPitchDeg;
     o.frames = 2;
     o.screenshot = (dir_ / "shot.png").string();
     (void)run_viewer({mesh}, {0.0}, o);
     return read_image(o.screenshot);
   }
 
+  static constexpr float kPitchDeg = -10.0f;
   fs::path dir_;
   Eigen::Vector3f toward_eye_, right_, up_;
 };
