@@ -23,7 +23,10 @@ std::optional<std::array<double, 2>> flat_value_range(const std::vector<double>&
   if (*hi - *lo > 1e-9 * std::abs(v)) return std::nullopt;
   // A margin of a tenth of the value keeps the line clear of the frame and the ticks readable
   // as the value itself (120, 130 for 125), not as its noise.
-  const double margin = v == 0.0 ? 1.0 : 0.1 * std::abs(v);
+  // A metric that is always 0 is most often a count (leaves of a leafless plant): up to 1, and
+  // only a tenth below 0, so the line shows above the frame without negative tick labels.
+  if (v == 0.0) return std::array<double, 2>{-0.1, 1.0};
+  const double margin = 0.1 * std::abs(v);
   return std::array<double, 2>{v - margin, v + margin};
 }
 

@@ -34,7 +34,7 @@ struct ChartOptions {
 };
 
 // The value axis of a chart whose values are all equal to v (to within 1e-9 of |v|): v ± 10 % of
-// |v|, or [-1, 1] for v = 0, rather than the plotting library's range of about ±1e-7 around v,
+// |v|, or [-0.1, 1] for v = 0, rather than the plotting library's range of about ±1e-7 around v,
 // whose tick labels read as if the metric varied. Nothing when the values differ (or there are
 // none): the library's own range then fits them.
 std::optional<std::array<double, 2>> flat_value_range(const std::vector<double>& values);
