@@ -56,7 +56,8 @@ struct OutputPaths {
 
 OutputPaths output_paths(const std::string& out) {
   namespace fs = std::filesystem;
-  const fs::path p(out);
+  // "crown/" names the directory crown (its parent_path would be crown itself).
+  const fs::path p = fs::path(out).has_filename() ? fs::path(out) : fs::path(out).parent_path();
   const std::string ext = p.extension().string();
   const bool directory = ext.empty() || fs::is_directory(p);
   const fs::path dir = directory ? p : p.parent_path();

@@ -50,6 +50,17 @@ TEST(CrownCli, ReconstructsTheExamplePictureAndWritesEveryOutput) {
   }
 }
 
+// "-o crown/" (as in docs/crown.md) is the directory crown, made when missing, not a file
+// inside a missing directory crown.
+TEST(CrownCli, OutputWithATrailingSlashIsADirectoryThatIsMade) {
+  const auto dir = scratch_dir("crown_slash");
+  const auto r = run_fspm("crown " + kPhoto + " -o " + (dir / "crown").string() + "/");
+  if (r.err.find("without OpenImageIO") != std::string::npos) GTEST_SKIP() << r.err;
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "crown" / "crown.glb"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "crown" / "crown_mask.png"));
+}
+
 TEST(CrownCli, MistakesFailInOneLineAndWriteNothing) {
   const auto dir = scratch_dir("crown_bad");
   auto r = run_fspm("crown " + kPhoto + " -o " + (dir / "missing" / "x.glb").string());
