@@ -20,6 +20,7 @@
 #include "cli/commands.hpp"
 #include "cli/enum_option.hpp"
 #include "cli/full_command_list.hpp"
+#include "cli/graph_lod_option.hpp"
 #include "cli/lsystem_mesh.hpp"
 #include "cli/lsystem_source.hpp"
 #include "cli/output.hpp"
@@ -31,6 +32,7 @@
 #include "fspm/compressed_tree_graph.hpp"
 #include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
+#include "fspm/instanced_lod.hpp"
 #include "fspm/scene_reader.hpp"
 #include "fspm/tree_file.hpp"
 #include "graphics/foliage.hpp"
@@ -69,6 +71,7 @@ struct MeshCommand {
   double animate_s = 0.0;
   WindArguments wind;
   LsystemDrawArguments lsystem;
+  GraphLodArguments graph_lod;
   bool json = false;
 };
 
@@ -98,6 +101,7 @@ struct RenderCommand {
   bool lod = false;
   double lod_distance_m = 0.0;
   LsystemDrawArguments lsystem;
+  GraphLodArguments graph_lod;
   bool json = false;
 };
 
@@ -117,6 +121,7 @@ struct ViewCommand {
   bool lod = false;
   double lod_distance_m = 0.0;
   LsystemDrawArguments lsystem;
+  GraphLodArguments graph_lod;
   bool json = false;
 };
 
@@ -168,7 +173,8 @@ CompressedTreeGraph load_compressed(const std::string& path, InputKind kind) {
 
 // Jaeger 3.1.2: one prototype per substructure, meshed once, placed by transforms.
 graphics::InstancedMesh mesh_compressed(const CompressedTreeGraph& graph, double age,
-                                        const graphics::MeshOptions& options) {
+                                        const graphics::MeshOptions& options,
+                                        const LevelOfDetail& lod) {
   greenlab::ReconstructionOptions ro;
   ro.age = age;
   greenlab::InstancedPlant plant = greenlab::reconstruct_instanced(graph, ro);
@@ -182,6 +188,8 @@ graphics::InstancedMesh mesh_compressed(const CompressedTreeGraph& graph, double
     }
     tree.prototypes.push_back(std::move(q));
   }
+  // Jaeger 3.1.1: the level of detail reduces the substructures before they are meshed.
+  if (lod.active()) tree = reduce_instanced_tree(tree, lod);
   return graphics::mesh_instanced(tree, options);
 }
 
@@ -189,8 +197,8 @@ graphics::InstancedMesh mesh_compressed(const CompressedTreeGraph& graph, double
 // a compressed graph (< 0: as simulated) or, for a tree, the latest birth time kept.
 graphics::InstancedMesh load_part(const std::string& path, InputKind kind,
                                   const std::string& format, double age,
-                                  graphics::MeshOptions options) {
-  if (is_compressed(kind)) return mesh_compressed(load_compressed(path, kind), age, options);
+                                  graphics::MeshOptions options, const LevelOfDetail& lod = {}) {
+  if (is_compressed(kind)) return mesh_compressed(load_compressed(path, kind), age, options, lod);
   if (kind == InputKind::kScene) throw ValueError("a scene cannot include another scene", path);
   if (kind == InputKind::kPvd) {
     throw ValueError("a .pvd is a growth sequence of meshes: open it with fspm view", path);
@@ -202,16 +210,18 @@ graphics::InstancedMesh load_part(const std::string& path, InputKind kind,
         path);
   }
   if (age >= 0.0) options.max_birth_time = age;
-  return graphics::InstancedMesh::single(
-      graphics::mesh_tree(read_tree_file(path, format), options));
+  TreeGraph tree = read_tree_file(path, format);
+  if (lod.active()) tree = reduce_tree(tree, lod);
+  return graphics::InstancedMesh::single(graphics::mesh_tree(tree, options));
 }
 
 // Each distinct plant file of a scene meshed once, placed as often as the scene says.
 graphics::InstancedMesh place_plants(const graphics::SceneFile& scene,
-                                     const graphics::MeshOptions& options) {
+                                     const graphics::MeshOptions& options,
+                                     const LevelOfDetail& lod) {
   std::vector<graphics::InstancedMesh> parts;
   for (const auto& source : scene.sources) {
-    parts.push_back(load_part(source.path, input_kind(source.path), "", source.age, options));
+    parts.push_back(load_part(source.path, input_kind(source.path), "", source.age, options, lod));
   }
   std::vector<graphics::PartPlacement> placements;
   for (const auto& inst : scene.instances) {
@@ -245,10 +255,11 @@ void add_terrain(graphics::InstancedMesh& mesh, std::optional<graphics::Triangle
 // obstacles near the plants (`near_plants`, for pictures), or all of them whole. A scene without
 // plants shows its obstacles whole.
 graphics::InstancedMesh load_scene(const std::string& path, const graphics::MeshOptions& options,
-                                   bool near_plants) {
+                                   bool near_plants, const LevelOfDetail& lod = {}) {
   std::optional<graphics::TriangleMesh> terrain;
   const SceneDescription description = read_landscape_scene(path, terrain);
-  graphics::InstancedMesh mesh = place_plants(graphics::scene_plants(description.plants), options);
+  graphics::InstancedMesh mesh =
+      place_plants(graphics::scene_plants(description.plants), options, lod);
   if (!description.obstacles.empty()) {
     add_scene_obstacles(mesh, environment::scene_from_description(description), path,
                         near_plants && !description.plants.empty());
@@ -258,10 +269,11 @@ graphics::InstancedMesh load_scene(const std::string& path, const graphics::Mesh
 }
 
 graphics::InstancedMesh load_instanced(const std::string& path, const std::string& format,
-                                       const graphics::MeshOptions& options, bool near_plants) {
+                                       const graphics::MeshOptions& options, bool near_plants,
+                                       const LevelOfDetail& lod = {}) {
   const InputKind kind = input_kind(path);
-  if (kind == InputKind::kScene) return load_scene(path, options, near_plants);
-  return load_part(path, kind, format, -1.0, options);
+  if (kind == InputKind::kScene) return load_scene(path, options, near_plants, lod);
+  return load_part(path, kind, format, -1.0, options, lod);
 }
 
 // --lod: the mesher options of the prebuilt resolutions, finest first: as given, rings four
@@ -370,6 +382,23 @@ LsystemDrawing draw_lsystem_file(const std::string& file, const LsystemDrawArgum
                       pixels > 0 ? -1.0 : 0.0, pixels);
 }
 
+// --max-order and --merge-collinear reduce trees and compressed plants (in scenes too); an
+// L-system is written as a plant first, and the per-plant --lod meshes every plant whole.
+void check_graph_lod(const GraphLodArguments& arguments, const std::vector<std::string>& files,
+                     bool per_plant_lod) {
+  if (!arguments.lod().active()) return;
+  if (per_plant_lod)
+    throw ValueError("--max-order and --merge-collinear do not combine with --lod");
+  for (const auto& f : files) {
+    if (input_kind(f) == InputKind::kLsystem) {
+      throw ValueError(
+          "--max-order and --merge-collinear apply to trees and compressed plants: write the "
+          "L-system as a plant first (fspm lsystem derive FILE --compressed -o PLANT.ctree)",
+          f);
+    }
+  }
+}
+
 // --skin writes one tree's bark as a skinned .glb; --animate needs --skin.
 void check_skin_request(const MeshCommand& c, graphics::MeshFormat format, InputKind kind) {
   if (format != graphics::MeshFormat::kGlb) {
@@ -399,6 +428,10 @@ void run_mesh(const MeshCommand& c) {
   std::size_t vertices = 0, triangles = 0;
   const bool lsystem = kind == InputKind::kLsystem;
   check_lsystem_draw_arguments(c.lsystem, {c.tree});
+  check_graph_lod(c.graph_lod, {c.tree}, false);
+  if (c.skin && c.graph_lod.lod().active()) {
+    throw ValueError("--skin writes the tree as it is: no --max-order or --merge-collinear");
+  }
   if (lsystem && (format == graphics::MeshFormat::kPvd || !c.ages.empty())) {
     throw ValueError("an L-system is meshed as derived: no .pvd growth sequence, no --ages",
                      c.tree);
@@ -419,9 +452,11 @@ void run_mesh(const MeshCommand& c) {
       throw ValueError("--obstacles applies to .obj, .ply, .vtp and .glb outputs, not .pvd", c.out);
     }
     // Growth of a compressed plant: its explicit tree filtered by birth date (Jaeger 3.2.2).
+    greenlab::ReconstructionOptions ro;
+    ro.lod = c.graph_lod.lod();
     const TreeGraph tree = is_compressed(kind)
-                               ? greenlab::reconstruct(load_compressed(c.tree, kind), {})
-                               : read_tree_file(c.tree, c.format);
+                               ? greenlab::reconstruct(load_compressed(c.tree, kind), ro)
+                               : reduce_tree(read_tree_file(c.tree, c.format), ro.lod);
     const std::vector<double> ages = c.ages.empty() ? graphics::default_ages(tree) : c.ages;
     const auto frames = graphics::write_pvd(tree, options, ages, c.out);
     nlohmann::json list = nlohmann::json::array();
@@ -444,7 +479,7 @@ void run_mesh(const MeshCommand& c) {
       j["lsystem"] = drawing.summary;
       mesh = mesh_lsystem(drawing, options);
     } else {
-      mesh = load_instanced(c.tree, c.format, options, false);
+      mesh = load_instanced(c.tree, c.format, options, false, c.graph_lod.lod());
     }
     if (c.leaves) report_missing_leaves(mesh, c.tree);
     if (!c.obstacles.empty()) {
@@ -510,13 +545,14 @@ void run_lod_render(const RenderCommand& c, const graphics::MeshOptions& mesh_op
 // The mesh `fspm render` draws for a point set or .clusters file, or for any other input (an
 // explicit --format names a tree format, whatever the extension).
 graphics::InstancedMesh load_render_input(const std::string& path, const std::string& format,
-                                          const graphics::MeshOptions& options) {
+                                          const graphics::MeshOptions& options,
+                                          const LevelOfDetail& lod = {}) {
   if (format.empty()) {
     if (auto scan = load_scan_render_mesh(path, options)) {
       return graphics::InstancedMesh::single(std::move(*scan));
     }
   }
-  return load_instanced(path, format, options, true);
+  return load_instanced(path, format, options, true, lod);
 }
 
 // --frame: the bounds of another input, drawn with the same options, so that pictures of the
@@ -545,6 +581,10 @@ void run_render(const RenderCommand& c) {
   mesh_options.edge_length_m = c.edge_length_m;
   const bool lsystem = input_kind(c.tree) == InputKind::kLsystem;
   check_lsystem_draw_arguments(c.lsystem, {c.tree});
+  check_graph_lod(c.graph_lod, {c.tree}, c.lod);
+  if (c.graph_lod.lod().active() && c.wind_time_s >= 0.0) {
+    throw ValueError("--wind-time poses the tree as it is: no --max-order or --merge-collinear");
+  }
   if (c.lod) {
     if (lsystem) throw ValueError("--lod does not apply to L-system files (.l)", c.tree);
     run_lod_render(c, mesh_options, options, t0);
@@ -560,7 +600,7 @@ void run_render(const RenderCommand& c) {
     lsystem_summary = drawing.summary;
     mesh = mesh_lsystem(drawing, mesh_options);
   } else {
-    mesh = load_render_input(c.tree, c.format, mesh_options);
+    mesh = load_render_input(c.tree, c.format, mesh_options, c.graph_lod.lod());
   }
   if (!c.frame.empty()) options.frame = frame_of(c.frame, mesh_options);
   if (c.leaves) report_missing_leaves(mesh, c.tree);
@@ -599,13 +639,16 @@ struct ViewSource {
   TreeGraph tree;
   CompressedTreeGraph graph;
   LsystemDrawing drawing;  // an L-system, drawn once
+  LevelOfDetail lod;
 
   // `age`: plant age for compressed graphs, latest birth time for trees, ignored for scenes;
   // infinity = everything.
   graphics::InstancedMesh at(double age, const graphics::MeshOptions& options,
                              const std::string& format) const {
-    if (kind == InputKind::kScene) return load_scene(path, options, true);
-    if (is_compressed(kind)) return mesh_compressed(graph, std::isinf(age) ? -1.0 : age, options);
+    if (kind == InputKind::kScene) return load_scene(path, options, true, lod);
+    if (is_compressed(kind)) {
+      return mesh_compressed(graph, std::isinf(age) ? -1.0 : age, options, lod);
+    }
     if (kind == InputKind::kLsystem) return mesh_lsystem(drawing, options);
     graphics::MeshOptions o = options;
     o.max_birth_time = age;
@@ -692,6 +735,7 @@ void run_view(const ViewCommand& c) {
   options.pitch_deg = c.pitch_deg;
   if (!c.screenshot.empty()) graphics::check_image_path(c.screenshot);
   check_lsystem_draw_arguments(c.lsystem, c.trees);
+  check_graph_lod(c.graph_lod, c.trees, c.lod);
   if (c.lod) {
     run_lod_view(c, options, t0);
     return;
@@ -719,11 +763,13 @@ void run_view(const ViewCommand& c) {
       ViewSource s;
       s.path = path;
       s.kind = input_kind(path);
+      s.lod = c.graph_lod.lod();
       if (is_compressed(s.kind)) {
         s.graph = load_compressed(path, s.kind);
         if (ages.empty()) ages = plant_ages(s.graph);
       } else if (s.kind == InputKind::kTree) {
         s.tree = read_tree_file(path, c.format);
+        if (s.lod.active()) s.tree = reduce_tree(s.tree, s.lod);
       } else if (s.kind == InputKind::kLsystem) {
         s.drawing = draw_lsystem_file(path, c.lsystem, std::max(options.width, options.height));
       } else {
@@ -834,6 +880,7 @@ void add_graphics_commands(CLI::App& app) {
       ->check(positive_number(1e5));
   add_wind_options(m, mesh->wind, true);
   add_lsystem_draw_options(m, mesh->lsystem);
+  add_graph_lod_options(m, mesh->graph_lod);
   m->add_flag("--json", mesh->json, "Machine-readable JSON on stdout");
   m->callback([mesh] { run_mesh(*mesh); });
 
@@ -874,6 +921,7 @@ void add_graphics_commands(CLI::App& app) {
       ->check(number_in(0.0, 1e9));
   add_wind_options(r, render->wind, false);
   add_lod_options(r, render->lod, render->lod_distance_m);
+  add_graph_lod_options(r, render->graph_lod);
   r->add_flag("--json", render->json, "Machine-readable JSON on stdout");
   r->callback([render] { run_render(*render); });
 
@@ -905,6 +953,7 @@ void add_graphics_commands(CLI::App& app) {
       ->capture_default_str();
   add_lod_options(v, view->lod, view->lod_distance_m);
   add_lsystem_draw_options(v, view->lsystem);
+  add_graph_lod_options(v, view->graph_lod);
   v->add_flag("--json", view->json, "Machine-readable JSON on stdout (frame time)");
   v->callback([view] { run_view(*view); });
 }

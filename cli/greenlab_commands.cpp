@@ -13,12 +13,14 @@
 #include <sstream>
 
 #include "cli/commands.hpp"
+#include "cli/graph_lod_option.hpp"
 #include "cli/output.hpp"
 #include "fspm/atomic_file.hpp"
 #include "fspm/compressed_tree_graph.hpp"
 #include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
 #include "fspm/input_file.hpp"
+#include "fspm/line_tree.hpp"
 #include "fspm/tree_file.hpp"
 #include "greenlab/calibration.hpp"
 #include "greenlab/plant_params.hpp"
@@ -42,6 +44,7 @@ struct ReconstructOptions {
   std::string format;
   double age = -1.0;
   bool no_leaves = false;
+  GraphLodArguments lod;
   bool json = false;
 };
 
@@ -66,11 +69,29 @@ void run_simulate(const SimulateOptions& o) {
   const greenlab::OrganCounts c = greenlab::count_organs(g);
   nlohmann::json by_age = nlohmann::json::object();
   for (const auto& [age, n] : c.metamers_by_age) by_age[std::to_string(age)] = n;
-  const nlohmann::json j = {{"cycles", params.cycles}, {"graph_nodes", g.size()},
-                            {"metamers", c.metamers},  {"leaves", c.leaves},
-                            {"flowers", c.flowers},    {"buds", c.buds},
-                            {"graph_bytes", bytes},    {"metamers_by_age", by_age},
-                            {"seconds", seconds},      {"output", o.out}};
+  // Jaeger's Table 1: the line tree of every age 1..final, and their sum (the sequence size).
+  nlohmann::json line_bytes = nlohmann::json::object();
+  std::uint64_t sequence_bytes = 0;
+  for (int age = 1; age <= static_cast<int>(g.final_age); ++age) {
+    greenlab::ReconstructionOptions ro;
+    ro.age = age;
+    const std::uint64_t bytes = greenlab::line_records_at_age(g, ro) *
+                                static_cast<std::uint64_t>(LineTree::kBytesPerRecord);
+    line_bytes[std::to_string(age)] = bytes;
+    sequence_bytes += bytes;
+  }
+  const nlohmann::json j = {{"cycles", params.cycles},
+                            {"graph_nodes", g.size()},
+                            {"metamers", c.metamers},
+                            {"leaves", c.leaves},
+                            {"flowers", c.flowers},
+                            {"buds", c.buds},
+                            {"graph_bytes", bytes},
+                            {"metamers_by_age", by_age},
+                            {"line_tree_bytes_by_age", line_bytes},
+                            {"sequence_bytes", sequence_bytes},
+                            {"seconds", seconds},
+                            {"output", o.out}};
   if (o.json) {
     print_json(j);
     return;
@@ -85,6 +106,7 @@ void run_reconstruct(const ReconstructOptions& o) {
   greenlab::ReconstructionOptions ro;
   ro.age = o.age;
   ro.leaves = !o.no_leaves;
+  ro.lod = o.lod.lod();
   greenlab::ReconstructionStats st;
   const auto t0 = std::chrono::steady_clock::now();
   const TreeGraph tree = greenlab::reconstruct(g, ro, &st);
@@ -170,6 +192,7 @@ void add_greenlab_commands(CLI::App& app) {
       ->required();
   r->add_option("--format", rec->format, "Output format (default: from the extension)");
   r->add_flag("--no-leaves", rec->no_leaves, "Leave the leaves out");
+  add_graph_lod_options(r, rec->lod);
   r->add_flag("--json", rec->json, "Machine-readable JSON on stdout");
   r->callback([rec] { run_reconstruct(*rec); });
 

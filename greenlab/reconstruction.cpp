@@ -317,6 +317,7 @@ class AxisBuilder {
             ++st.pruned_axes;  // the whole lateral axis has fallen
             continue;
           }
+          if (axis.order + 1 > options_.lod.max_order) continue;  // Jaeger 3.1.1: order limit
           const int q = child.physiological_age;
           Frame lf;
           lf.position = f.position;
@@ -435,6 +436,101 @@ std::uint64_t metamers_at_age(const CompressedTreeGraph& graph, double age) {
   return instances_at_age(graph, age, [](const CompressedRecord&) { return std::uint64_t{1}; });
 }
 
+std::uint64_t metamers_within_order(const CompressedTreeGraph& graph, double age,
+                                    double max_order) {
+  // A chain of k laterals passes k + 1 distinct records of the acyclic graph, so orders past
+  // the record count never occur; a table too large to hold falls back to the plain count.
+  const double n = static_cast<double>(graph.size());
+  if (!(max_order < n) || n * (max_order + 1.0) > 1e8 || graph.root() == kNoRecord) {
+    return metamers_at_age(graph, age);
+  }
+  if (max_order < 0.0) return 0;
+  const auto orders = static_cast<std::size_t>(max_order) + 1;
+  const double now = graph.birth_date + age;
+  std::vector<std::uint32_t> indegree(graph.size(), 0);
+  for (const auto& r : graph.records()) {
+    if (r.successor != kNoRecord) ++indegree[r.successor];
+  }
+  for (RecordId a : graph.axillary_refs()) ++indegree[a];
+  // count[id * orders + o]: instances of record id on axes of order o.
+  std::vector<std::uint64_t> count(graph.size() * orders, 0);
+  std::vector<RecordId> order;
+  for (RecordId i = 0; i < graph.size(); ++i) {
+    if (indegree[i] == 0) order.push_back(i);
+  }
+  count[graph.root() * orders] = 1;
+  std::uint64_t total = 0;
+  for (std::size_t head = 0; head < order.size(); ++head) {
+    const RecordId id = order[head];
+    const CompressedRecord& r = graph.record(id);
+    const bool born = r.birth <= now;
+    for (std::size_t o = 0; o < orders; ++o) {
+      const std::uint64_t c = born ? count[id * orders + o] : 0;
+      total = add_saturating(total, c);
+      if (r.successor != kNoRecord) {
+        std::uint64_t& to = count[r.successor * orders + o];
+        to = add_saturating(to, c);
+      }
+      if (o + 1 >= orders) continue;
+      for (RecordId a : graph.axillaries(id)) {
+        std::uint64_t& to = count[a * orders + o + 1];
+        to = add_saturating(to, c);
+      }
+    }
+    auto visit = [&](RecordId child) {
+      if (--indegree[child] == 0) order.push_back(child);
+    };
+    if (r.successor != kNoRecord) visit(r.successor);
+    for (RecordId a : graph.axillaries(id)) visit(a);
+  }
+  return total;
+}
+
+std::uint64_t line_records_at_age(const CompressedTreeGraph& graph,
+                                  const ReconstructionOptions& options) {
+  if (graph.has_geometry()) return geometry_organ_count(graph);
+  const AxisBuilder builder(graph, options, true);
+  if (graph.root() == kNoRecord) return 0;
+  const ReconstructionParams geo = ReconstructionParams::from_metadata(graph.metadata);
+  const double now = builder.now();
+  // The walk's rules, per record instead of per instance: a metamer is written when born, its
+  // leaf while its death status is positive, its terminal flower from the cycle after its unit;
+  // a lateral axis is walked when born and not fallen.
+  const auto weight = [&](const CompressedRecord& r) {
+    const AgeGeometry& g = geo.age(r.physiological_age);
+    const bool leaf =
+        options.leaves && builder.status(r.birth, g.leaf_life_span, g.pruning_period) > 0.0;
+    const bool flower =
+        options.flowers && r.apex == ApexState::kFlower && r.birth + 1.0 <= now + 1e-9;
+    return std::uint64_t{1} + (leaf ? 1 : 0) + (flower ? 1 : 0);
+  };
+  std::vector<std::uint32_t> indegree(graph.size(), 0);
+  for (const auto& r : graph.records()) {
+    if (r.successor != kNoRecord) ++indegree[r.successor];
+  }
+  for (RecordId a : graph.axillary_refs()) ++indegree[a];
+  std::vector<std::uint64_t> count(graph.size(), 0);
+  std::vector<RecordId> order;
+  for (RecordId i = 0; i < graph.size(); ++i) {
+    if (indegree[i] == 0) order.push_back(i);
+  }
+  count[graph.root()] = 1;
+  std::uint64_t total = 0;
+  for (std::size_t head = 0; head < order.size(); ++head) {
+    const RecordId id = order[head];
+    const CompressedRecord& r = graph.record(id);
+    const std::uint64_t c = r.birth <= now ? count[id] : 0;
+    total = add_saturating(total, multiply_saturating(c, weight(r)));
+    auto visit = [&](RecordId child, std::uint64_t n) {
+      count[child] = add_saturating(count[child], n);
+      if (--indegree[child] == 0) order.push_back(child);
+    };
+    if (r.successor != kNoRecord) visit(r.successor, c);
+    for (RecordId a : graph.axillaries(id)) visit(a, builder.pruned(a) ? 0 : c);
+  }
+  return total;
+}
+
 namespace {
 
 bool nothing_born(const CompressedTreeGraph& graph, const AxisBuilder& builder) {
@@ -442,8 +538,9 @@ bool nothing_born(const CompressedTreeGraph& graph, const AxisBuilder& builder) 
 }
 
 // Metamers born by the builder's age; throws when an explicit tree of them is too big.
-std::uint64_t explicit_metamers(const CompressedTreeGraph& graph, const AxisBuilder& builder) {
-  const std::uint64_t metamers = metamers_at_age(graph, builder.age());
+std::uint64_t explicit_metamers(const CompressedTreeGraph& graph, const AxisBuilder& builder,
+                                const LevelOfDetail& lod = {}) {
+  const std::uint64_t metamers = metamers_within_order(graph, builder.age(), lod.max_order);
   if (metamers > kMaxExplicitMetamers) {
     throw ValueError("the plant has " + std::to_string(metamers) + " metamers at age " +
                      std::to_string(builder.age()) + ", too many for an explicit tree (at most " +
@@ -470,17 +567,36 @@ CtreeInstancingOptions geometry_options(const CompressedTreeGraph& graph,
   return o;
 }
 
+// Internodes, leaves and flowers of a tree written by a level of detail (merged internodes once).
+void count_kinds(const TreeGraph& tree, ReconstructionStats& st) {
+  st.metamers = st.leaves = st.flowers = 0;
+  for (const OrganKind k : tree.kinds()) {
+    st.metamers += k == OrganKind::kInternode ? 1 : 0;
+    st.leaves += k == OrganKind::kLeaf ? 1 : 0;
+    st.flowers += k == OrganKind::kFlower ? 1 : 0;
+  }
+}
+
 TreeGraph reconstruct_geometry(const CompressedTreeGraph& graph,
                                const ReconstructionOptions& options, ReconstructionStats& st) {
   const CtreeInstancingOptions o = geometry_options(graph, options, st.age);
-  const std::uint64_t organs = geometry_organ_count(graph);
-  if (organs > kMaxExplicitMetamers) {
-    throw ValueError("the plant has " + std::to_string(organs) +
-                     " organs, too many for an explicit tree (at most " +
-                     std::to_string(kMaxExplicitMetamers) + "); use the instanced reconstruction");
+  const bool lod = options.lod.active();
+  // With a level of detail the organs are counted on the reduced substructures.
+  InstancedTree instanced;
+  std::uint64_t organs = geometry_organ_count(graph);
+  if (lod) {
+    instanced = reduce_instanced_tree(instanced_tree_of(graph, o), options.lod);
+    organs = count_instanced_tree(instanced).nodes;
   }
-  TreeGraph tree = expand_instanced_tree(instanced_tree_of(graph, o),
-                                         static_cast<std::size_t>(kMaxExplicitMetamers));
+  if (organs > kMaxExplicitMetamers) {
+    throw ValueError("the plant has " + std::to_string(organs) + " organs" +
+                     (lod ? " at this level of detail" : "") +
+                     ", too many for an explicit tree (at most " +
+                     std::to_string(kMaxExplicitMetamers) +
+                     "); use the instanced reconstruction or a lower maximum order");
+  }
+  if (!lod) instanced = instanced_tree_of(graph, o);
+  TreeGraph tree = expand_instanced_tree(instanced, static_cast<std::size_t>(kMaxExplicitMetamers));
   for (const OrganKind k : tree.kinds()) {
     st.metamers += k == OrganKind::kInternode ? 1 : 0;
     st.leaves += k == OrganKind::kLeaf ? 1 : 0;
@@ -516,7 +632,7 @@ void reconstruct_into(const CompressedTreeGraph& graph, const ReconstructionOpti
   }
   // Metamers born by the requested age bound the output (each adds at most a leaf and a
   // flower), so the columns are allocated once and impossible requests fail early.
-  const std::uint64_t bound = explicit_metamers(graph, builder);
+  const std::uint64_t bound = explicit_metamers(graph, builder, options.lod);
   if (builder.any_pruning_period()) tree.add_attribute(kDeadAttribute, 0.0);
   check_memory(
       static_cast<double>(bound * 2 + 8) * TreeGraph::bytes_per_node(tree.attribute_names().size()),
@@ -528,6 +644,10 @@ void reconstruct_into(const CompressedTreeGraph& graph, const ReconstructionOpti
   for (std::size_t head = 0; head < queue.size(); ++head) {
     const AxisStart axis = queue[head];  // copied: walk() appends to the queue
     builder.walk(axis, tree, queue, st);
+  }
+  if (options.lod.active()) {
+    tree = reduce_tree(tree, options.lod);
+    count_kinds(tree, st);
   }
   if (stats) *stats = st;
 }
@@ -778,6 +898,11 @@ LineTree reconstruct_lines(const CompressedTreeGraph& graph, const Reconstructio
 
 void reconstruct_lines_into(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
                             LineTree& lines, ReconstructionStats* stats) {
+  if (options.lod.active()) {
+    throw ValueError(
+        "the line tree reconstruction draws every metamer: use reconstruct() for a "
+        "level of detail");
+  }
   if (graph.has_geometry()) {
     ReconstructionStats st;
     lines = LineTree::from_tree_graph(reconstruct_geometry(graph, options, st));

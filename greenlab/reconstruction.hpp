@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "fspm/compressed_tree_graph.hpp"
+#include "fspm/instanced_lod.hpp"
 #include "fspm/line_tree.hpp"
 #include "fspm/tree_graph.hpp"
 #include "greenlab/plant_params.hpp"
@@ -59,6 +60,11 @@ struct ReconstructionOptions {
   double age = -1.0;  // plant age to rebuild (cycles since its birth); < 0: the final age
   bool leaves = true;
   bool flowers = true;
+  // Level of detail (Jaeger 3.1.1): applied by reconstruct() and reconstruct_into() (their
+  // stats then count the nodes written: merged internodes once); reconstruct_lines() refuses it
+  // and reconstruct_instanced() ignores it (reduce_instanced_tree() applies it to an instanced
+  // tree). Leaves count as one order above their axis, as laterals do.
+  LevelOfDetail lod;
 };
 
 struct ReconstructionStats {
@@ -72,6 +78,16 @@ struct ReconstructionStats {
 
 // Metamers of the plant born by `age` (pruning aside): the size of its explicit tree.
 std::uint64_t metamers_at_age(const CompressedTreeGraph& graph, double age);
+// The same, counting only the axes of branching order <= max_order (the trunk is order 0): an
+// upper bound of the metamers a level of detail keeps (merging only removes more).
+std::uint64_t metamers_within_order(const CompressedTreeGraph& graph, double age, double max_order);
+
+// Records (internodes, leaves, flowers) of the plant's line tree at the options' age, as
+// reconstruct_lines() writes them (born, not fallen), counted on the compressed graph without
+// reconstructing. Summed over the ages 1..final and times LineTree::kBytesPerRecord, Jaeger's
+// "sequence size" (Table 1). Graphs with turtle geometry: their organs (birth dates aside).
+std::uint64_t line_records_at_age(const CompressedTreeGraph& graph,
+                                  const ReconstructionOptions& options);
 
 // An explicit tree holds at most this many metamers (a leaf and a flower each may add nodes).
 inline constexpr std::uint64_t kMaxExplicitMetamers = std::uint64_t{1} << 30;
