@@ -64,7 +64,7 @@ struct ReconstructionOptions {
   // stats then count the nodes written: merged internodes once); reconstruct_lines() refuses it
   // and reconstruct_instanced() ignores it (reduce_instanced_tree() applies it to an instanced
   // tree). Leaves count as one order above their axis, as laterals do.
-  LevelOfDetail lod;
+  LevelOfDetail lod{};
 };
 
 struct ReconstructionStats {

@@ -83,9 +83,9 @@ TEST(InstancedLod, Figure124aAtTwentyStepsIsCountedWithoutExpanding) {
   EXPECT_DOUBLE_EQ(g.length(0), std::pow(3.0, 20));  // 3^20 unit internodes in one
   EXPECT_NEAR((g.end(0) - Eigen::Vector3d(0, 0, std::pow(3.0, 20))).norm(), 0.0, 1e-3);
   // Order 1 merged: M(n) = 3 M(n-1) + 2 (each branch merged to one), M(0) = 1: 2 3^n - 1.
-  EXPECT_EQ(nodes_at(t, 1, true), 2u * 3486784401u - 1u);
+  EXPECT_EQ(nodes_at(t, 1, true), std::uint64_t{2} * 3486784401u - 1u);
   // Order 1 not merged: I(n) = 3 I(n-1) + 2 3^(n-1), I(0) = 1: (2n + 3) 3^(n-1).
-  EXPECT_EQ(nodes_at(t, 1, false), 43u * 1162261467u);
+  EXPECT_EQ(nodes_at(t, 1, false), std::uint64_t{43} * 1162261467u);
 }
 
 // A chain of four unit internodes up z with a leaf at the top of the second and a lateral
@@ -129,8 +129,11 @@ TEST(InstancedLod, MergingStopsWhereSomethingGrows) {
   EXPECT_DOUBLE_EQ(m.radius(0), 3.0);  // (4 + 2) / 2, length-weighted
   EXPECT_DOUBLE_EQ(m.birth_time(0), 0.0);
   EXPECT_EQ(m.end(0), Eigen::Vector3d(0, 0, 2));
-  EXPECT_EQ(m.kind(1), OrganKind::kLeaf);
-  EXPECT_EQ(m.parent(1), 0u);
+  // Nodes keep their order: the merged internode, the two others, the leaf (on the merged one),
+  // the branch.
+  EXPECT_EQ(m.kind(3), OrganKind::kLeaf);
+  EXPECT_EQ(m.parent(3), 0u);
+  EXPECT_EQ(m.parent(4), 1u);
   // Without order 1 (leaf and branch) the whole chain is one internode of mean radius 9/4.
   merge.max_order = 0;
   const TreeGraph trunk = reduce_tree(g, merge);
