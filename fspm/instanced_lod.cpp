@@ -150,7 +150,11 @@ class Reducer {
       const std::uint32_t r = reduce(c.prototype, budget - c.order);
       const InstancedTree::Prototype& q = out_.prototypes[r];
       if (q.geometry.empty() && q.children.empty()) continue;  // draws nothing
-      if (q.geometry.size() == 1 && q.children.empty()) {
+      // Inlined into a referrer with no node yet, it would become the base every later node
+      // and substructure hangs from: only when nothing was placed before it (else a branch
+      // drawn after the first piece of an axis would be the root of that axis).
+      const bool becomes_base = attach == kNoNode && d.nodes.empty() && !d.children.empty();
+      if (q.geometry.size() == 1 && q.children.empty() && !becomes_base) {
         inline_node(q.geometry, c, attach, d);
       } else {
         InstancedTree::Child placed = c;

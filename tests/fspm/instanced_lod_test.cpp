@@ -69,6 +69,16 @@ TEST(InstancedLod, Figure124aAtTwoStepsByHand) {
   EXPECT_EQ(nodes_at(t, 0, true), 1u);
   EXPECT_EQ(nodes_at(t, 1, true), 9u + 2 + 6);
   EXPECT_EQ(nodes_at(t, 2, true), 25u);
+  // The trunk stays the root: its first internode, not a branch drawn after it.
+  LevelOfDetail lod;
+  lod.max_order = 1;
+  lod.merge_collinear = true;
+  const TreeGraph g = expand_instanced_tree(reduce_instanced_tree(t, lod), 100);
+  EXPECT_EQ(g.order(0), 0);
+  EXPECT_EQ(g.start(0), Eigen::Vector3d::Zero());
+  std::size_t long_branches = 0;
+  for (NodeId n = 0; n < g.size(); ++n) long_branches += g.length(n) == 3.0 ? 1 : 0;
+  EXPECT_EQ(long_branches, 2u);  // the two bare F^(1) branches, merged
 }
 
 TEST(InstancedLod, Figure124aAtTwentyStepsIsCountedWithoutExpanding) {
