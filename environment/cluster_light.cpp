@@ -83,6 +83,8 @@ void ClusterLightField::set_clusters(std::span<const Eigen::Vector3d> centers,
   listed_.assign(n, 0);
   grid_stale_ = true;
   obstacle_vis_.assign(n, {});
+  sky_share_.assign(n, 1.0);
+  sky_direction_.assign(n, open_direction_);
   obstacle_at_ = center_;
   obstacle_tolerance2_.assign(n, kInf);
 }
@@ -96,6 +98,16 @@ void ClusterLightField::set_obstacles(const Scene& scene) {
   obstacles_.ground = scene.ground;
   has_obstacles_ = !obstacles_.boxes.empty() || !obstacles_.meshes.empty() ||
                    !obstacles_.spheres.empty() || obstacles_.ground.has_value();
+  // The sky directions in every box's frame, converted once: the boxes do not move, and every
+  // visibility ray of every cluster uses one of these directions.
+  const auto n = static_cast<std::size_t>(dirs_.size());
+  box_dirs_.resize(obstacles_.boxes.size() * n);
+  for (std::size_t b = 0; b < obstacles_.boxes.size(); ++b) {
+    for (std::size_t i = 0; i < n; ++i) {
+      box_dirs_[b * n + i] =
+          obstacles_.boxes[b].local_direction(dirs_.direction(static_cast<int>(i)));
+    }
+  }
 }
 
 void ClusterLightField::obstacle_visibility(const Eigen::Vector3d& p, std::vector<float>& vis,
@@ -121,12 +133,16 @@ void ClusterLightField::obstacle_visibility(const Eigen::Vector3d& p, std::vecto
       dirs_.for_each_in_cap(d / dist, std::sqrt(dist * dist - r * r) / dist, hit);
     }
   };
-  for (const Box& b : obstacles_.boxes) {
+  for (std::size_t k = 0; k < obstacles_.boxes.size(); ++k) {
+    const Box& b = obstacles_.boxes[k];
     distance = std::min(distance, box_distance(b, p));
     if (b.translucency >= 1.0 || b.top_z() <= p.z()) continue;
     const auto g = static_cast<float>(b.translucency);
+    // Box::ray_entry with the point converted once and the directions taken from box_dirs_.
+    const Eigen::Vector3d local = b.to_local(p);
+    const Eigen::Vector3d* local_dirs = box_dirs_.data() + k * static_cast<std::size_t>(n);
     cast(b.center, b.bounding_radius(), [&](int i) {
-      if (b.ray_entry(p, dirs_.direction(i)) >= 0.0) {
+      if (b.ray_entry_local(local, local_dirs[i]) >= 0.0) {
         vis[static_cast<std::size_t>(i)] *= g;
         any = true;
       }
@@ -162,10 +178,16 @@ bool ClusterLightField::obstacles_stale(std::uint32_t c) const {
 }
 
 double ClusterLightField::sky_light(std::uint32_t c, Eigen::Vector3d& direction) const {
+  direction = sky_direction_[c];
+  return sky_share_[c];
+}
+
+void ClusterLightField::update_sky_light(std::uint32_t c) {
   const std::vector<float>& vis = obstacle_vis_[c];
   if (vis.empty()) {
-    direction = open_direction_;
-    return 1.0;
+    sky_direction_[c] = open_direction_;
+    sky_share_[c] = 1.0;
+    return;
   }
   double sum = 0.0;
   Eigen::Vector3d m = Eigen::Vector3d::Zero();
@@ -174,8 +196,8 @@ double ClusterLightField::sky_light(std::uint32_t c, Eigen::Vector3d& direction)
     sum += w;
     m += w * dirs_.direction(static_cast<int>(i));
   }
-  direction = m.norm() > 1e-300 ? Eigen::Vector3d(m.normalized()) : open_direction_;
-  return weight_sum_ > 0 ? std::clamp(sum / weight_sum_, 0.0, 1.0) : 0.0;
+  sky_direction_[c] = m.norm() > 1e-300 ? Eigen::Vector3d(m.normalized()) : open_direction_;
+  sky_share_[c] = weight_sum_ > 0 ? std::clamp(sum / weight_sum_, 0.0, 1.0) : 0.0;
 }
 
 bool ClusterLightField::update_obstacles(std::uint32_t c) {
@@ -185,7 +207,10 @@ bool ClusterLightField::update_obstacles(std::uint32_t c) {
   const double tol = std::max(kMinObstacleMove_m, kObstacleParallax * distance);
   obstacle_tolerance2_[c] = std::isfinite(tol) ? tol * tol : kInf;
   const bool changed = scratch_vis_ != obstacle_vis_[c];
-  if (changed) std::swap(scratch_vis_, obstacle_vis_[c]);
+  if (changed) {
+    std::swap(scratch_vis_, obstacle_vis_[c]);
+    update_sky_light(c);
+  }
   return changed;
 }
 

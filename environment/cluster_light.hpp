@@ -53,7 +53,9 @@ class ClusterLightField {
   // True when c moved far enough since its obstacle visibility was computed to need a new one.
   bool obstacles_stale(std::uint32_t c) const;
   // Cluster c's light from the sky through the obstacles alone (its cached visibility, no
-  // clusters): the share of the open sky's light, and its mean direction in `direction`.
+  // clusters): the share of the open sky's light, and its mean direction in `direction`. Summed
+  // when the visibility changes, not when asked: the shadow-grid adaptation asks for every
+  // cluster at every age level.
   double sky_light(std::uint32_t c, Eigen::Vector3d& direction) const;
 
   // Light and direction of cluster c from the alive clusters and the cached obstacle visibility.
@@ -135,6 +137,7 @@ class ClusterLightField {
   };
   void obstacle_visibility(const Eigen::Vector3d& p, std::vector<float>& vis,
                            double& distance) const;
+  void update_sky_light(std::uint32_t c);
 
   std::vector<Eigen::Vector3d> center_;
   std::vector<double> radius_, gamma_, reach2_, reach_;
@@ -156,8 +159,11 @@ class ClusterLightField {
   Scene obstacles_;
   bool has_obstacles_ = false;
   std::vector<std::vector<float>> obstacle_vis_;  // per cluster: empty = open sky
-  std::vector<Eigen::Vector3d> obstacle_at_;      // centre where it was computed
-  std::vector<double> obstacle_tolerance2_;       // squared move that makes it stale
+  std::vector<double> sky_share_;                 // sky_light() per cluster, from obstacle_vis_
+  std::vector<Eigen::Vector3d> sky_direction_;
+  std::vector<Eigen::Vector3d> box_dirs_;     // direction i in box k's frame at [k * n + i]
+  std::vector<Eigen::Vector3d> obstacle_at_;  // centre where it was computed
+  std::vector<double> obstacle_tolerance2_;   // squared move that makes it stale
 
   // Uniform point grid (CSR) over alive centres.
   Eigen::Vector3d grid_lo_ = Eigen::Vector3d::Zero();

@@ -37,14 +37,24 @@ double Box::top_z() const {
 }
 
 bool Box::contains(const Eigen::Vector3d& p) const {
-  const Eigen::Vector3d local = rotation.transpose() * (p - center);
+  const Eigen::Vector3d local = to_local(p);
   return (local.cwiseAbs().array() <= half_extent.array()).all();
 }
 
 double Box::ray_entry(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir) const {
+  return ray_entry_local(to_local(origin), local_direction(dir));
+}
+
+Eigen::Vector3d Box::to_local(const Eigen::Vector3d& p) const {
+  return rotation.transpose() * (p - center);
+}
+
+Eigen::Vector3d Box::local_direction(const Eigen::Vector3d& dir) const {
+  return rotation.transpose() * dir;
+}
+
+double Box::ray_entry_local(const Eigen::Vector3d& o, const Eigen::Vector3d& d) const {
   // Slab test in the box frame.
-  const Eigen::Vector3d o = rotation.transpose() * (origin - center);
-  const Eigen::Vector3d d = rotation.transpose() * dir;
   double t0 = 0.0;
   double t1 = std::numeric_limits<double>::infinity();
   for (int i = 0; i < 3; ++i) {

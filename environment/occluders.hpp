@@ -39,6 +39,13 @@ struct Box {
   // Entry distance t >= 0 of the ray origin + t * dir into the box (0 if the origin is inside), or
   // a negative value when the ray misses.
   double ray_entry(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir) const;
+  // A point (to_local) or a direction (local_direction) in the box frame, and ray_entry for a ray
+  // given in that frame: ray_entry(o, d) == ray_entry_local(to_local(o), local_direction(d))
+  // bit for bit, so that many rays from one point, or many points along fixed directions, convert
+  // once.
+  Eigen::Vector3d to_local(const Eigen::Vector3d& p) const;
+  Eigen::Vector3d local_direction(const Eigen::Vector3d& dir) const;
+  double ray_entry_local(const Eigen::Vector3d& o, const Eigen::Vector3d& d) const;
 };
 
 // The plane z = height; everything below it is inside the ground.
