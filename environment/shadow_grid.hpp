@@ -85,6 +85,8 @@ class ShadowGrid {
   void fill_region(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, double translucency,
                    const Inside& inside);
   void add_box(const Box& box);
+  void fill_aligned_box(const Box& box, const Eigen::Vector3i& axes, const Eigen::Vector3d& lo,
+                        const Eigen::Vector3d& hi);
   void add_sphere(const Sphere& sphere);
   void add_mesh(const TriangleMesh& mesh);
   void build_summed_area_tables();

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "fspm/error.hpp"
@@ -134,6 +135,64 @@ TEST(ShadowGrid, OpaqueRoofDarkensWhatLiesBelow) {
 // default grid (0.15 m voxels, q_max = 8) a 1 m cube of buds spans (6 + 9 + 9 + 1)^2 x
 // (6 + 9 + 1 + 1) = 10 625 voxels, about 0.6 MB with 37 bytes per voxel and half again of room:
 // inside 1 MiB. A 10 m cube spans 85^2 x 77 = 556 325 voxels, about 31 MB: refused.
+// Every obstacle voxel casts obstacle_shade * C * (1 - translucency) times the share of its 4 x 4 x
+// 4 sample points inside the obstacle. The oracle counts the samples with Box::contains for every
+// voxel and sums the pyramids directly; the grid takes a per-axis shortcut for boxes whose axes
+// lie along the world axes (an axis-aligned box, a wall along y) and samples the others (a wall at
+// an angle).
+TEST(ShadowGrid, ObstacleShadeIsTheSampledShareOfEachVoxel) {
+  ShadowGridParams p;
+  p.voxel_size_m = 0.3;
+  p.depth_voxels = 4;
+  p.obstacle_shade = 0.5;
+  const double h = p.voxel_size_m;
+  Box block = Box::from_min_max({0.35, 0.4, 0.5}, {1.2, 0.95, 1.37});
+  block.translucency = 0.3;
+  const std::vector<Box> boxes = {Box::wall({3.0, -2.0}, {3.0, 2.0}, 0.0, 3.0, 0.2), block,
+                                  Box::wall({0.0, 0.0}, {2.0, 1.3}, 0.0, 2.0, 0.25)};
+  for (const Box& box : boxes) {
+    ShadowGrid grid(p);
+    grid.reset({-1.0, -3.0, 0.0}, {4.0, 3.0, 3.5});
+    Scene scene;
+    scene.boxes.push_back(box);
+    grid.add_obstacles(scene);
+    grid.propagate();
+    // Oracle sources, in world voxel indices (voxel w spans [w h, (w + 1) h)).
+    std::vector<std::pair<Eigen::Vector3i, double>> sources;
+    for (int k = -1; k <= 12; ++k) {
+      for (int j = -11; j <= 11; ++j) {
+        for (int i = -4; i <= 14; ++i) {
+          int hits = 0;
+          for (int s = 0; s < 64; ++s) {
+            const Eigen::Vector3d f((s % 4 + 0.5) / 4, (s / 4 % 4 + 0.5) / 4, (s / 16 + 0.5) / 4);
+            hits += box.contains(h * (Eigen::Vector3d(i, j, k) + f)) ? 1 : 0;
+          }
+          if (hits > 0) {
+            const double strength =
+                p.obstacle_shade * p.full_light * (1.0 - box.translucency) * hits / 64.0;
+            sources.emplace_back(Eigen::Vector3i(i, j, k), strength);
+          }
+        }
+      }
+    }
+    ASSERT_GT(sources.size(), 20u);
+    int checked = 0;
+    for (int k = 0; k <= 11; k += 2) {
+      for (int j = -9; j <= 9; j += 2) {
+        for (int i = -2; i <= 13; ++i) {
+          const Eigen::Vector3i at(i, j, k);
+          double expected = 0.0;
+          for (const auto& [src, strength] : sources)
+            expected += pyramid_shade(p, src, strength, at);
+          EXPECT_NEAR(grid.shade(center_of(at, h)), expected, 1e-9) << i << " " << j << " " << k;
+          checked += expected > 0.0;
+        }
+      }
+    }
+    EXPECT_GT(checked, 100);
+  }
+}
+
 TEST(ShadowGrid, MemoryLimitRefusesAGridTooLargeForIt) {
   const test_support::ScopedMemoryLimit limit(std::uint64_t{1} << 20);
   ShadowGrid grid{ShadowGridParams{}};
