@@ -134,6 +134,7 @@ class Engine {
   std::vector<Eigen::Vector3d> buds0_, buds_;
   std::vector<std::uint32_t> bud_start_, bud_cluster_;
   std::uint64_t grid_epoch_ = ~std::uint64_t{0};
+  int step_ = -1;  // the step run() is at
 };
 
 Engine::Engine(const std::vector<const TreeGraph*>& trees,
@@ -291,11 +292,13 @@ void Engine::regrid() {
   moved_.clear();
   vanished_.clear();
   if (grid_epoch_ == epoch_) return;
+  // Only the anchors bent in this step have a new transform (an earlier step's buds were placed
+  // at that step's refill: bend() changes epoch_ whenever it moves something).
   for (std::size_t b = 0; b < buds_.size(); ++b) {
     const std::uint32_t g = bud_cluster_[b];
     const TreeRun& r = runs_[owner_[g]];
     const NodeId anchor = r.a->clusters[g - r.first_cluster].anchor;
-    if (r.stamp[anchor] >= 0) buds_[b] = r.F[anchor](buds0_[b]);
+    if (r.stamp[anchor] >= 0 && r.stamp[anchor] == step_) buds_[b] = r.F[anchor](buds0_[b]);
   }
   grid_light_.assign(field_.lights().begin(), field_.lights().end());
   grid_direction_.assign(field_.directions().begin(), field_.directions().end());
@@ -641,6 +644,7 @@ std::vector<AdaptationResult> Engine::run() {
   int steps = 0;
   for (const TreeRun& r : runs_) steps = std::max(steps, r.first_step + r.a->max_age + 1);
   for (int step = 0; step < steps; ++step) {
+    step_ = step;
     // Bend every tree's current level (lock-step, Pirk 4.4.3), then update the light once.
     for (TreeRun& r : runs_) {
       const int level = step - r.first_step;
