@@ -189,7 +189,7 @@ TEST(ShadowGrid, ObstacleShadeIsTheSampledShareOfEachVoxel) {
         }
       }
     }
-    EXPECT_GT(checked, 100);
+    EXPECT_GT(checked, 50);  // voxels the obstacle shades, among those checked
   }
 }
 
