@@ -13,7 +13,9 @@
 #include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
 #include "fspm/tree_file.hpp"
+#include "scans/mesh_file.hpp"
 #include "stages/developmental_model.hpp"
+#include "stages/mesh_skeleton.hpp"
 #include "stages/profile_diagram.hpp"
 
 namespace fspm::cli {
@@ -30,7 +32,36 @@ struct StagesOptions {
   double added_gamma = 1.0;
   double profile_m = 0.0;
   bool json = false;
+  // Mesh input (Pirk 5.2.1).
+  std::string skeleton;
+  double join_distance_m = 0.0;
+  bool uniform_laplacian = false;
 };
+
+// The given tree: a tree file, or the skeleton of a branch mesh (.obj, .ply) by contraction, whose
+// figures go to `info`.
+TreeGraph read_given_tree(const StagesOptions& o, nlohmann::json& info) {
+  if (!scans::is_mesh_file(o.tree)) return read_tree_file(o.tree);
+  const auto t0 = std::chrono::steady_clock::now();
+  const scans::GroupedMesh m = scans::read_mesh_file(o.tree);
+  const double read_seconds = seconds_since(t0);
+  const auto t1 = std::chrono::steady_clock::now();
+  stages::MeshSkeletonParams params;
+  params.join_distance_m = o.join_distance_m;
+  if (o.uniform_laplacian) params.contraction.weights = stages::LaplacianWeights::kUniform;
+  stages::MeshSkeleton s =
+      stages::mesh_skeleton(stages::weld_branch_mesh(m.vertices, m.faces), params);
+  info = {{"vertices", m.vertices.size()},          {"faces", m.faces.size()},
+          {"contraction_iterations", s.iterations}, {"area_ratio", s.area_ratio},
+          {"join_distance_m", s.join_distance_m},   {"skeleton_internodes", s.tree.size()},
+          {"read_seconds", read_seconds},           {"skeleton_seconds", seconds_since(t1)}};
+  spdlog::info(
+      "{}: {} vertices contracted in {} iteration(s) (area ratio {:.2g}), joined within "
+      "{:.3g} m into a skeleton of {} internodes",
+      o.tree, m.vertices.size(), s.iterations, s.area_ratio, s.join_distance_m, s.tree.size());
+  if (!o.skeleton.empty()) write_tree_file(s.tree, o.skeleton);
+  return std::move(s.tree);
+}
 
 // The stage times: one (--at) or N evenly spaced in (0, 1] (--steps), remapped by the seasons.
 std::vector<double> stage_times(const StagesOptions& o) {
@@ -74,8 +105,10 @@ nlohmann::json profile_json(const TreeGraph& tree, double layer_m) {
 
 void run_stages(const StagesOptions& o) {
   refuse_overwriting_input(o.output, {o.tree});
+  if (!o.skeleton.empty()) refuse_overwriting_input(o.skeleton, {o.tree});
   const std::vector<double> times = stage_times(o);
-  const TreeGraph tree = read_tree_file(o.tree);
+  nlohmann::json mesh_info;
+  const TreeGraph tree = read_given_tree(o, mesh_info);
   auto t0 = std::chrono::steady_clock::now();
   stages::StagesParams params;
   params.added.enabled = o.added;
@@ -100,6 +133,7 @@ void run_stages(const StagesOptions& o) {
     if (o.profile_m > 0.0) profile = profile_json(tree, o.profile_m);
     print_json({{"branches", branches},
                 {"profile", profile},
+                {"mesh", mesh_info},
                 {"chains", model.chain_count()},
                 {"added_branches", model.added_branch_count()},
                 {"crown_ratio", model.crown().crown_ratio()},
@@ -119,7 +153,10 @@ void add_stages_commands(CLI::App& app) {
   CLI::App* s = app.add_subcommand(
       "stages",
       "Developmental stages of a static tree (Pirk ch. 5): any stage from young to the given tree");
-  s->add_option("TREE", o->tree, "The grown tree (.tree, .treeb, .nwk, .mtg)")->required();
+  s->add_option("TREE", o->tree,
+                "The grown tree (.tree, .treeb, .nwk, .mtg), or its branch mesh (.obj, .ply), "
+                "whose skeleton is found by mesh contraction (Pirk 5.2.1)")
+      ->required();
   s->add_option("-o,--output", o->output,
                 "Tree file for --at; folder of stage_NNN files for --steps")
       ->required();
@@ -140,10 +177,20 @@ void add_stages_commands(CLI::App& app) {
                 "With --json: the given tree's profile diagrams (Pirk 5.3.4) in layers of this "
                 "many metres, by stratified clipping and main-axis cutting")
       ->check(number_in(1e-3, 1000.0));
+  s->add_option("--skeleton", o->skeleton,
+                "With a mesh: also write the skeleton found (the given tree) to this tree file");
+  s->add_option("--join-distance", o->join_distance_m,
+                "With a mesh: t_dist of Pirk eq. 5.1 in metres, contracted vertices closer than "
+                "this are joined (default: the median distance a vertex moved, about the median "
+                "branch radius)")
+      ->check(number_in(0.0, 1e6));
+  s->add_flag("--uniform-laplacian", o->uniform_laplacian,
+              "With a mesh: contract with uniform instead of cotangent Laplacian weights");
   s->add_option("--format", o->format, "tree, treeb, nwk, mtg (default: from the extension)");
   s->add_flag("--json", o->json,
               "One JSON object on stdout: branches, chains, stages, analysis_seconds, "
-              "seconds_per_stage");
+              "seconds_per_stage; for a mesh, \"mesh\": vertices, contraction_iterations, "
+              "join_distance_m, skeleton_seconds");
   s->callback([o] { run_stages(*o); });
 }
 

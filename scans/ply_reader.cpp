@@ -28,6 +28,15 @@ std::array<int, 3> xyz_columns(const PlyElement& e) {
   return col;
 }
 
+std::uint32_t face_index(double v, const std::string& path) {
+  if (!(v >= 0.0) || v >= 4294967295.0 || v != std::floor(v)) {
+    throw ParseError(
+        "a face names the vertex index " + std::to_string(v) + ", expected a whole number from 0",
+        path);
+  }
+  return static_cast<std::uint32_t>(v);
+}
+
 class BinaryCursor {
  public:
   BinaryCursor(std::string_view data, std::size_t pos, bool big_endian, const std::string& path)
@@ -85,8 +94,13 @@ class BinaryCursor {
   const std::string& path_;
 };
 
-void read_binary(const PlyHeader& h, std::string_view data, const std::string& path,
-                 PointSet& out) {
+bool is_face_list(const PlyElement& e, const PlyProperty& p) {
+  return e.name == "face" && p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index");
+}
+
+// Faces of the "face" element, kept only when `faces` is given.
+void read_binary(const PlyHeader& h, std::string_view data, const std::string& path, PointSet& out,
+                 std::vector<std::vector<std::uint32_t>>* faces) {
   BinaryCursor cur(data, h.data_offset, h.format == PlyFormat::kBinaryBigEndian, path);
   for (const PlyElement& e : h.elements) {
     const std::array<int, 3> col = xyz_columns(e);
@@ -99,7 +113,12 @@ void read_binary(const PlyHeader& h, std::string_view data, const std::string& p
         const PlyProperty& p = e.properties[i];
         const double v = cur.read(p.is_list ? p.count_type : p.type);
         if (p.is_list) {
-          for (double j = 0; j < v; ++j) cur.read(p.type);
+          const bool keep = faces != nullptr && is_face_list(e, p);
+          if (keep) faces->emplace_back();
+          for (double j = 0; j < v; ++j) {
+            const double index = cur.read(p.type);
+            if (keep) faces->back().push_back(face_index(index, path));
+          }
         }
         for (int c = 0; c < 3; ++c) xyz[c] = col[c] == static_cast<int>(i) ? v : xyz[c];
       }
@@ -114,7 +133,30 @@ void read_binary(const PlyHeader& h, std::string_view data, const std::string& p
   }
 }
 
-void read_ascii(const PlyHeader& h, std::string_view data, const std::string& path, PointSet& out) {
+// An ASCII face line: the values of the face element's properties, the vertex list kept.
+void read_ascii_face(const PlyElement& e, const std::vector<std::string_view>& f,
+                     const std::string& path, int line_no,
+                     std::vector<std::vector<std::uint32_t>>& faces) {
+  std::size_t at = 0;
+  for (const PlyProperty& p : e.properties) {
+    if (at >= f.size()) throw ParseError("the face line ends early", path, line_no);
+    if (!p.is_list) {
+      ++at;
+      continue;
+    }
+    const double count = parse_coordinate(f[at++], path, line_no);
+    const bool keep = is_face_list(e, p);
+    if (keep) faces.emplace_back();
+    for (double j = 0; j < count; ++j) {
+      if (at >= f.size()) throw ParseError("the face line ends inside its list", path, line_no);
+      const double v = parse_coordinate(f[at++], path, line_no);
+      if (keep) faces.back().push_back(face_index(v, path));
+    }
+  }
+}
+
+void read_ascii(const PlyHeader& h, std::string_view data, const std::string& path, PointSet& out,
+                std::vector<std::vector<std::uint32_t>>* faces) {
   TextLines lines(data, h.data_offset);
   int line_no = h.data_line - 1;
   std::string_view line;
@@ -127,6 +169,9 @@ void read_ascii(const PlyHeader& h, std::string_view data, const std::string& pa
                          path, line_no + 1);
       }
       ++line_no;
+      if (faces != nullptr && e.name == "face") {
+        read_ascii_face(e, split_fields(line), path, line_no, *faces);
+      }
       if (e.name != "vertex") continue;
       const std::vector<std::string_view> f = split_fields(line);
       double xyz[3];
@@ -144,7 +189,10 @@ void read_ascii(const PlyHeader& h, std::string_view data, const std::string& pa
 
 }  // namespace
 
-PointSet parse_ply_points(std::string_view data, const std::string& path) {
+namespace {
+
+PointSet parse_ply(std::string_view data, const std::string& path,
+                   std::vector<std::vector<std::uint32_t>>* faces) {
   const PlyHeader h = parse_ply_header(data, path);
   const PlyElement* vertex = nullptr;
   for (const PlyElement& e : h.elements) vertex = e.name == "vertex" ? &e : vertex;
@@ -155,11 +203,38 @@ PointSet parse_ply_points(std::string_view data, const std::string& path) {
   }
   PointSet out;
   if (h.format == PlyFormat::kAscii) {
-    read_ascii(h, data, path, out);
+    read_ascii(h, data, path, out, faces);
   } else {
-    read_binary(h, data, path, out);
+    read_binary(h, data, path, out, faces);
   }
   return out;
+}
+
+}  // namespace
+
+PointSet parse_ply_points(std::string_view data, const std::string& path) {
+  return parse_ply(data, path, nullptr);
+}
+
+GroupedMesh parse_ply_mesh(std::string_view data, const std::string& path) {
+  GroupedMesh m;
+  m.vertices = parse_ply(data, path, &m.faces).points;
+  for (std::size_t f = 0; f < m.faces.size(); ++f) {
+    for (const std::uint32_t i : m.faces[f]) {
+      if (i >= m.vertices.size()) {
+        throw ParseError("face " + std::to_string(f) + " names vertex " + std::to_string(i) +
+                             " of " + std::to_string(m.vertices.size()),
+                         path);
+      }
+    }
+  }
+  m.group_names.push_back("default");
+  m.face_group.assign(m.faces.size(), 0);
+  return m;
+}
+
+GroupedMesh read_ply_mesh(const std::string& path) {
+  return parse_ply_mesh(read_input_file(path), path);
 }
 
 PointSet read_ply_points(const std::string& path) {

@@ -22,7 +22,8 @@
 //     tip of a stage carries the organs of its chain's tip in the given tree (5.3.7).
 //   - Added structures (5.3.5-5.3.6, optional): copies of the crown's laterals on the bare trunk
 //     below the crown, removed as the crown ratio of eq. 5.10 falls (stages/added_structures.hpp).
-// Not modelled: mesh input (5.2.1), the overlap regions (5.3.5; their profile diagrams of 5.3.4
+// Mesh input (5.2.1) is reduced to a tree graph first (stages/mesh_skeleton.hpp). Not modelled:
+// the overlap regions (5.3.5; their profile diagrams of 5.3.4
 // are in stages/profile_diagram.hpp), growth-based editing (5.4.1).
 #include <Eigen/Core>
 #include <Eigen/Geometry>

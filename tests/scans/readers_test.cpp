@@ -155,5 +155,37 @@ TEST(PointSetFile, ChoosesTheReaderByExtension) {
   std::filesystem::remove(obj);
 }
 
+TEST(PlyReader, ReadsFacesAsAMesh) {
+  // A quad and a triangle after a non-list property; ASCII and binary little endian.
+  const std::string ascii =
+      "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 2\nproperty uchar flags\n"
+      "property list uchar int vertex_indices\nend_header\n"
+      "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n7 4 0 1 2 3\n7 3 0 1 4\n";
+  GroupedMesh m = parse_ply_mesh(ascii, "q.ply");
+  ASSERT_EQ(m.vertices.size(), 5u);
+  ASSERT_EQ(m.faces.size(), 2u);
+  EXPECT_EQ(m.faces[0], (std::vector<std::uint32_t>{0, 1, 2, 3}));
+  EXPECT_EQ(m.faces[1], (std::vector<std::uint32_t>{0, 1, 4}));
+  std::string binary =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty double x\n"
+      "property double y\nproperty double z\nelement face 1\n"
+      "property list uchar uint vertex_index\nend_header\n";
+  const double xyz[9] = {0, 0, 0, 2, 0, 0, 0, 3, 0};
+  binary.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+  const unsigned char count = 3;
+  const std::uint32_t idx[3] = {2, 0, 1};
+  binary.append(reinterpret_cast<const char*>(&count), 1);
+  binary.append(reinterpret_cast<const char*>(idx), sizeof idx);
+  m = parse_ply_mesh(binary, "b.ply");
+  ASSERT_EQ(m.faces.size(), 1u);
+  EXPECT_EQ(m.faces[0], (std::vector<std::uint32_t>{2, 0, 1}));
+  EXPECT_EQ(m.vertices[2], Eigen::Vector3d(0, 3, 0));
+  // A face naming a sixth vertex of five.
+  std::string bad = ascii;
+  bad.replace(bad.find("7 3 0 1 4"), 9, "7 3 0 1 5");
+  EXPECT_THROW(parse_ply_mesh(bad, "bad.ply"), ParseError);
+}
+
 }  // namespace
 }  // namespace fspm::scans
