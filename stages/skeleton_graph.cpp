@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <tuple>
 
 #include "stages/point_grid.hpp"
 
@@ -66,45 +67,44 @@ std::vector<WeightedEdge> mesh_edges(const JoinedVertices& j,
   return edges;
 }
 
-// Links between joined vertices of different parts within `radius` of each other.
-std::vector<WeightedEdge> near_links(const JoinedVertices& j, DisjointSets& sets, double radius) {
-  const PointGrid grid(j.positions, radius);
+// Links between joined vertices of different parts within `radius` of each other, searched from
+// the vertices outside the part `skip` (the largest: searching from it finds nothing new).
+std::vector<WeightedEdge> near_links(const JoinedVertices& j, const PointGrid& grid,
+                                     DisjointSets& sets, double radius, std::uint32_t skip) {
   std::vector<WeightedEdge> edges;
   for (std::uint32_t a = 0; a < j.positions.size(); ++a) {
+    if (sets.find(a) == skip) continue;
     grid.for_each_near(j.positions[a], radius, [&](std::uint32_t b) {
-      if (a < b && sets.find(a) != sets.find(b)) {
-        edges.push_back({(j.positions[a] - j.positions[b]).norm(), a, b});
+      if (sets.find(a) != sets.find(b)) {
+        edges.push_back({(j.positions[a] - j.positions[b]).norm(), std::min(a, b), std::max(a, b)});
       }
     });
   }
   return edges;
 }
 
-// For parts still apart: the shortest link from each part to any other, until one part is left
-// (Boruvka's rounds; each at least halves the number of parts).
-void link_remaining(const JoinedVertices& j, DisjointSets& sets, std::vector<SkeletonEdge>& tree) {
-  const auto n = static_cast<std::uint32_t>(j.positions.size());
-  const auto parts = [&] {
-    std::size_t roots = 0;
-    for (std::uint32_t a = 0; a < n; ++a) roots += sets.find(a) == a;
-    return roots;
-  };
-  while (parts() > 1) {
-    std::vector<WeightedEdge> best(n, WeightedEdge{INFINITY, 0, 0});
-    for (std::uint32_t a = 0; a < n; ++a) {
-      for (std::uint32_t b = a + 1; b < n; ++b) {
-        const std::uint32_t pa = sets.find(a), pb = sets.find(b);
-        if (pa == pb) continue;
-        const WeightedEdge e{(j.positions[a] - j.positions[b]).norm(), a, b};
-        if (e < best[pa]) best[pa] = e;
-        if (e < best[pb]) best[pb] = e;
-      }
-    }
-    std::vector<WeightedEdge> links;
-    for (const WeightedEdge& e : best) {
-      if (e.length < INFINITY) links.push_back(e);
-    }
-    add_spanning(std::move(links), sets, tree);
+// The root of the largest part and the number of parts.
+std::pair<std::uint32_t, std::size_t> largest_part(DisjointSets& sets, std::size_t n) {
+  std::vector<std::uint32_t> size(n, 0);
+  std::uint32_t best = 0;
+  std::size_t parts = 0;
+  for (std::uint32_t a = 0; a < n; ++a) {
+    const std::uint32_t r = sets.find(a);
+    parts += ++size[r] == 1;
+    if (size[r] > size[best]) best = r;
+  }
+  return {best, parts};
+}
+
+// Links parts within `radius`, then, while parts are still apart, within twice the radius, and
+// so on: each round joins every part to its nearest neighbours within reach (Kruskal over the
+// candidates, so the shortest links win).
+void link_parts(const JoinedVertices& j, DisjointSets& sets, double radius,
+                std::vector<SkeletonEdge>& tree) {
+  const PointGrid grid(j.positions, radius);
+  for (auto [largest, parts] = largest_part(sets, j.positions.size()); parts > 1; radius *= 2.0) {
+    add_spanning(near_links(j, grid, sets, radius, largest), sets, tree);
+    std::tie(largest, parts) = largest_part(sets, j.positions.size());
   }
 }
 
@@ -116,8 +116,7 @@ std::vector<SkeletonEdge> skeleton_spanning_tree(
   DisjointSets sets(joined.positions.size());
   std::vector<SkeletonEdge> tree;
   add_spanning(mesh_edges(joined, triangles), sets, tree);
-  add_spanning(near_links(joined, sets, link_radius), sets, tree);
-  link_remaining(joined, sets, tree);
+  link_parts(joined, sets, link_radius, tree);
   return tree;
 }
 

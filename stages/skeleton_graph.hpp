@@ -4,8 +4,8 @@
 // over, Pirk 5.2.1), and the minimum spanning tree of that graph by edge length (Kruskal) removes
 // the cycles left by joining. A mesh made of separate closed tubes (one per branch, as
 // `fspm mesh` writes by default) leaves one graph part per tube: parts are then linked by the
-// shortest links between them (first those shorter than `link_radius`, then, for parts still
-// apart, the shortest link found by searching all joined vertices).
+// shortest links between them: first those shorter than `link_radius`, then, for parts still
+// apart, those shorter than twice that, and so on.
 #include <array>
 #include <cstdint>
 #include <utility>
