@@ -1,6 +1,8 @@
 // fspm stages, run as a user would.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include "fspm/tree_file.hpp"
@@ -85,6 +87,41 @@ TEST(StagesCli, OneOfAtAndStepsIsRequired) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("either --at"), std::string::npos) << r.err;
   EXPECT_EQ(run_fspm("stages " + kTree + " --at 1.5 -o " + (dir / "y.tree").string()).exit_code, 1);
+}
+
+// A branch mesh written by `fspm mesh` is read through its skeleton (Pirk 5.2.1): the skeleton
+// has the given tree's height and about its total internode length, and the last stage is the
+// skeleton.
+TEST(StagesCli, BranchMeshThroughItsSkeleton) {
+  const auto dir = scratch_dir("stages_mesh");
+  const std::string mesh = (dir / "tree.ply").string();
+  auto r = run_fspm("mesh " + kTree + " -o " + mesh);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_fspm("stages " + mesh + " --at 1 -o " + (dir / "last.treeb").string() + " --skeleton " +
+               (dir / "skeleton.treeb").string() + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j["mesh"]["vertices"].get<int>(), 0);
+  const TreeGraph given = read_tree_file(kTree);
+  const TreeGraph skeleton = read_tree_file((dir / "skeleton.treeb").string());
+  const auto extent = [](const TreeGraph& g, double* length) {
+    double top = -1e9, bottom = 1e9;
+    *length = 0.0;
+    for (NodeId i = 0; i < g.size(); ++i) {
+      if (g.kind(i) != OrganKind::kInternode) continue;
+      top = std::max({top, g.start(i).z(), g.end(i).z()});
+      bottom = std::min({bottom, g.start(i).z(), g.end(i).z()});
+      *length += g.length(i);
+    }
+    return top - bottom;
+  };
+  double given_length = 0.0, skeleton_length = 0.0;
+  const double given_height = extent(given, &given_length);
+  EXPECT_NEAR(extent(skeleton, &skeleton_length), given_height, 0.02 * given_height);
+  EXPECT_NEAR(skeleton_length, given_length, 0.05 * given_length);
+  const TreeGraph last = read_tree_file((dir / "last.treeb").string());
+  ASSERT_EQ(last.size(), skeleton.size());
+  for (NodeId i = 0; i < last.size(); ++i) ASSERT_LT((last.end(i) - skeleton.end(i)).norm(), 1e-9);
 }
 
 }  // namespace
