@@ -11,19 +11,46 @@
 namespace fspm {
 namespace {
 
+namespace fs = std::filesystem;
+
 std::string system_reason(int error) {
   return error != 0 ? std::generic_category().message(error) : std::string("write failed");
+}
+
+// Opens `file`, runs `write` on it and closes it; every failure is an IoError naming `path`.
+void write_stream(const fs::path& file, const std::string& path,
+                  const std::function<void(std::ostream&)>& write, bool binary) {
+  errno = 0;
+  std::ofstream out(file, binary ? std::ios::binary | std::ios::trunc : std::ios::trunc);
+  if (!out) throw IoError("cannot open for writing: " + system_reason(errno), path);
+  out.exceptions(std::ios::badbit);
+  try {
+    write(out);
+    out.close();
+  } catch (const std::ios_base::failure&) {
+    // A failed write (full disk, file size limit): the reason is still in errno.
+    throw IoError("cannot write: " + system_reason(errno), path);
+  }
+  if (out.fail()) throw IoError("cannot write: " + system_reason(errno), path);
 }
 
 }  // namespace
 
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,
                            bool binary) {
-  namespace fs = std::filesystem;
   const fs::path target(path);
   if (target.filename().empty()) throw IoError("output path names no file", path);
-  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
   std::error_code ec;
+  const fs::file_status status = fs::status(target, ec);
+  if (fs::is_directory(status)) throw IoError("is a directory, expected a file", path);
+  // A device, pipe or socket (/dev/null, /dev/stdout, a FIFO) is written in place: renaming a
+  // file over it would replace the device node itself, and a stream has no half-written state
+  // to protect.
+  if (fs::exists(status) && !fs::is_regular_file(status)) {
+    write_stream(target, path, write, binary);
+    return;
+  }
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
   if (!fs::is_directory(dir, ec)) {
     throw IoError("cannot write: directory '" + dir.string() + "' does not exist", path);
   }
@@ -36,20 +63,7 @@ void write_file_atomically(const std::string& path, const std::function<void(std
   name += std::to_string(rd() % 1000000);
   const fs::path tmp = dir / name;
   try {
-    {
-      errno = 0;
-      std::ofstream out(tmp, binary ? std::ios::binary | std::ios::trunc : std::ios::trunc);
-      if (!out) throw IoError("cannot open for writing: " + system_reason(errno), path);
-      out.exceptions(std::ios::badbit);
-      try {
-        write(out);
-        out.close();
-      } catch (const std::ios_base::failure&) {
-        // A failed write (full disk, file size limit): the reason is still in errno.
-        throw IoError("cannot write: " + system_reason(errno), path);
-      }
-      if (out.fail()) throw IoError("cannot write: " + system_reason(errno), path);
-    }
+    write_stream(tmp, path, write, binary);
     fs::rename(tmp, target, ec);
     if (ec) throw IoError("cannot replace the file: " + ec.message(), path);
   } catch (...) {
