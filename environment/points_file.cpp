@@ -79,7 +79,7 @@ std::vector<Eigen::Vector3d> parse_points_csv(std::string_view text, const std::
 }
 
 std::vector<Eigen::Vector3d> read_points_csv(const std::string& path) {
-  return parse_points_csv(read_input_file(path), path);
+  return parse_points_csv(read_text_input_file(path), path);
 }
 
 void write_light_csv(std::ostream& out, std::span<const Eigen::Vector3d> points,

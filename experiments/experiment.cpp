@@ -740,7 +740,7 @@ void override_replicates(Experiment& x, std::size_t replicates) {
 }
 
 Experiment read_experiment(const std::string& path) {
-  return parse_experiment(read_input_file(path), path);
+  return parse_experiment(read_text_input_file(path), path);
 }
 
 }  // namespace fspm::experiments

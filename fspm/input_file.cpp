@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 #include <system_error>
 
 #include "fspm/error.hpp"
@@ -51,8 +52,19 @@ struct stat checked_status(const Descriptor& fd, const std::string& path) {
   return st;
 }
 
+// Refuses the first NUL byte of `chunk`, which starts at byte `offset` of the file: a text
+// format never holds one, while a binary file or /dev/zero is full of them, so it is told at the
+// first read instead of after a gigabyte.
+void refuse_binary(std::string_view chunk, std::size_t offset, const std::string& path) {
+  const std::size_t at = chunk.find('\0');
+  if (at == std::string_view::npos) return;
+  throw ParseError(
+      "binary data (a NUL byte at byte " + std::to_string(offset + at) + "), expected a text file",
+      path);
+}
+
 std::string read_all(const Descriptor& fd, const struct stat& st, const std::string& path,
-                     std::uint64_t limit) {
+                     std::uint64_t limit, bool text_only = false) {
   std::string text;
   if (S_ISREG(st.st_mode)) {
     if (static_cast<std::uint64_t>(st.st_size) > limit) too_large(path, limit);
@@ -66,6 +78,7 @@ std::string read_all(const Descriptor& fd, const struct stat& st, const std::str
       if (errno == EINTR) continue;
       throw IoError("cannot read: " + reason(errno), path);
     }
+    if (text_only) refuse_binary({buffer, static_cast<std::size_t>(n)}, text.size(), path);
     if (text.size() + static_cast<std::size_t>(n) > limit) too_large(path, limit);
     text.append(buffer, static_cast<std::size_t>(n));
   }
@@ -77,6 +90,11 @@ std::string read_all(const Descriptor& fd, const struct stat& st, const std::str
 std::string read_input_file(const std::string& path, std::uint64_t limit) {
   const Descriptor fd(path);
   return read_all(fd, checked_status(fd, path), path, limit);
+}
+
+std::string read_text_input_file(const std::string& path, std::uint64_t limit) {
+  const Descriptor fd(path);
+  return read_all(fd, checked_status(fd, path), path, limit, true);
 }
 
 std::unique_ptr<std::istream> open_input_file(const std::string& path, std::uint64_t limit) {

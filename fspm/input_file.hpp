@@ -20,6 +20,10 @@ inline constexpr std::uint64_t kMaxTreeFileBytes = std::uint64_t{16} << 30;
 // the limit of 1 GiB" when more than `limit` bytes are there.
 std::string read_input_file(const std::string& path, std::uint64_t limit = kMaxInputFileBytes);
 
+// read_input_file for a text format: a NUL byte (a binary file, /dev/zero) is a ParseError
+// "binary data (a NUL byte at byte N), expected a text file", raised at the first read.
+std::string read_text_input_file(const std::string& path, std::uint64_t limit = kMaxInputFileBytes);
+
 // A stream over `path` with the same checks: a regular file of at most `limit` bytes is streamed
 // from disk, anything else (a pipe, a device) is read whole, at most kMaxInputFileBytes.
 std::unique_ptr<std::istream> open_input_file(const std::string& path,

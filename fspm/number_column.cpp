@@ -58,7 +58,7 @@ double parse_field(const Field& f, const std::string& path, int line) {
 }  // namespace
 
 std::vector<double> read_number_column(const std::string& path, std::string_view column) {
-  return parse_number_column(read_input_file(path), path, column);
+  return parse_number_column(read_text_input_file(path), path, column);
 }
 
 std::vector<double> parse_number_column(std::string_view content_text, const std::string& path,

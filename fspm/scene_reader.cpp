@@ -155,7 +155,7 @@ SceneDescription parse_scene_description(std::string_view text, const std::strin
 }
 
 SceneDescription read_scene_description(const std::string& path) {
-  return parse_scene_description(read_input_file(path), path);
+  return parse_scene_description(read_text_input_file(path), path);
 }
 
 bool is_scene_path(const std::string& path) {

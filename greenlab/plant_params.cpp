@@ -364,7 +364,7 @@ PlantParams parse_plant_params(std::string_view toml_text, const std::string& so
 }
 
 PlantParams read_plant_params(const std::string& path) {
-  return parse_plant_params(read_input_file(path), path);
+  return parse_plant_params(read_text_input_file(path), path);
 }
 
 namespace {

@@ -279,7 +279,7 @@ class Preprocessor {
       const std::filesystem::path path = std::filesystem::path(dir) / rel;
       std::string included;
       try {
-        included = read_input_file(path.string());
+        included = read_text_input_file(path.string());
       } catch (const IoError& error) {
         throw IoError("cannot read included file '" + path.string() + "': " + error.message(), file,
                       line_no, static_cast<int>(at) + 1);
@@ -482,7 +482,7 @@ SourceText preprocess_text(std::string_view text, const std::string& name,
 }
 
 SourceText preprocess_file(const std::string& path, const MacroOverrides& overrides) {
-  const std::string text = read_input_file(path);
+  const std::string text = read_text_input_file(path);
   const std::string dir = std::filesystem::path(path).parent_path().string();
   return preprocess_text(text, path, overrides, dir.empty() ? "." : dir);
 }

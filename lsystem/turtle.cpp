@@ -136,7 +136,7 @@ TurtleSettings parse_view(std::string_view text, const std::string& name, Turtle
 }
 
 TurtleSettings read_view_file(const std::string& path, TurtleSettings base) {
-  return parse_view(read_input_file(path), path, base);
+  return parse_view(read_text_input_file(path), path, base);
 }
 
 TurtleSettings view_for_lsystem(const std::string& lsystem_path) {
