@@ -360,7 +360,14 @@ GrowthParams parse_growth_params(std::string_view text, const std::string& file_
 
 GrowthParams read_growth_params(const std::string& path,
                                 const std::vector<std::string>& overrides) {
-  return parse_growth_params(read_input_file(path), path, overrides);
+  const std::string text = read_text_input_file(path);
+  // Every key has a default, so a file without any (empty, or only comments) would grow the
+  // default tree: almost always a truncated or wrong file rather than a choice.
+  if (parse_toml_text(text, path).empty()) {
+    throw ParseError("no parameter in the file; expected growth parameters such as preset = \"A\"",
+                     path, 1);
+  }
+  return parse_growth_params(text, path, overrides);
 }
 
 }  // namespace fspm::environment
