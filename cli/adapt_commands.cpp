@@ -223,7 +223,8 @@ void add_adapt_commands(CLI::App& app) {
       ->required();
   a->add_option("--format", opt->format, "Output format (default: from the extension)");
   a->add_option("--skeleton-radius", opt->skeleton_radius_m,
-                "Skeleton thickness threshold in m (default: 2.5 x thinnest internode)");
+                "Skeleton thickness threshold in m (default: 2.5 x thinnest internode)")
+      ->check(positive_number(1000));
   a->add_option("--pruning-strength", opt->pruning_strength, "c_psi of Pirk eq. 4.12")
       ->capture_default_str();
   a->add_option("--phototropism", opt->phototropism, "Phototropism weight (eq. 4.6)")
@@ -232,7 +233,8 @@ void add_adapt_commands(CLI::App& app) {
       ->capture_default_str();
   a->add_option("--grown-brightest", opt->grown_brightest,
                 "Brightest sky direction x y z the trees grew under (default: the scene's)")
-      ->expected(3);
+      ->expected(3)
+      ->check(number_in(-1e6, 1e6));
   a->add_flag("--temporal-pruning", opt->temporal,
               "Pruning thresholds over all earlier growth stages (eq. 4.5), not the final one");
   a->add_flag("--absolute-pruning", opt->absolute_pruning,

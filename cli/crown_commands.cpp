@@ -66,7 +66,12 @@ OutputPaths output_paths(const std::string& out) {
   if (!must_exist.empty() && !fs::is_directory(must_exist)) {
     throw IoError("cannot write: directory '" + must_exist.string() + "' does not exist", out);
   }
-  if (directory) fs::create_directories(p);
+  std::error_code ec;
+  if (directory && !fs::create_directories(p, ec) && !fs::is_directory(p)) {
+    throw IoError("cannot create the output directory: " +
+                      (ec ? ec.message() : std::string("a file of that name exists")),
+                  out);
+  }
   const std::string stem = directory ? "crown" : p.stem().string();
   auto beside = [&](const std::string& suffix) { return (dir / (stem + suffix)).string(); };
   OutputPaths o;
@@ -287,7 +292,9 @@ void add_crown_commands(CLI::App& app) {
   c->add_flag("--keep-gaps", cmd->keep_gaps,
               "Keep sky seen through the foliage as crown texture (default: filled from the "
               "foliage around it)");
-  c->add_option("--seed", cmd->seed, "Seed of the texture synthesis")->capture_default_str();
+  c->add_option("--seed", cmd->seed, "Seed of the texture synthesis")
+      ->check(number_in(0, kMaxSeed))
+      ->capture_default_str();
   c->add_flag("--json", cmd->json, "Machine-readable JSON on stdout");
   c->callback([cmd] { run_crown(*cmd); });
 }

@@ -120,6 +120,7 @@ void add_decode_commands(CLI::App& app) {
       ->check(positive_number(1e9))
       ->capture_default_str();
   d->add_option("--seed", o->seed, "Seed of the patch choice, roll and leaf order")
+      ->check(number_in(0, kMaxSeed))
       ->capture_default_str();
   d->add_flag("--json", o->json,
               "One JSON object on stdout: nodes, triangles, instances, seconds, ...");

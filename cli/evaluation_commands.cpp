@@ -225,7 +225,8 @@ void add_evaluation_commands(CLI::App& app) {
                    "length,radius)")
       ->delimiter(',');
   dist->add_option("--main-skeleton", d->main_skeleton,
-                   "Compare only nodes with radius above this thickness (m) and their ancestors");
+                   "Compare only nodes with radius above this thickness (m) and their ancestors")
+      ->check(number_in(0, 1e300));
   add_enum_option(dist, "--solver", d->solver, kAssignmentSolvers, assignment_solver_name,
                   "Forest matching");
   dist->add_flag("--mapping", d->mapping, "Also print the matched node pairs");

@@ -42,6 +42,8 @@ namespace {
 
 namespace fs = std::filesystem;
 namespace ex = fspm::experiments;
+// Far above any machine; -j 0 is one thread per hardware thread.
+constexpr double kMaxJobs = 4096;
 
 std::atomic<bool> g_interrupted{false};
 
@@ -419,7 +421,8 @@ void add_experiment_commands(CLI::App& app) {
   CLI::App* r = app.add_subcommand(kRunCommand.name, kRunCommand.description);
   r->add_option("EXPERIMENT", run->experiment, "Experiment file (.toml, see docs/experiments.md)")
       ->required();
-  r->add_option("-j,--jobs", run->jobs, "Worker threads (default: one per hardware thread)");
+  r->add_option("-j,--jobs", run->jobs, "Worker threads (default: one per hardware thread)")
+      ->check(number_in(0, kMaxJobs));
   r->add_option("-o,--out", run->out, "Output directory (default: NAME-results)");
   r->add_flag("--resume", run->resume, "Continue the database in the output directory");
   r->add_option("--shard", run->shard, "Run only shard I of N (runs with index % N == I)");
@@ -443,7 +446,8 @@ void add_experiment_commands(CLI::App& app) {
   CLI::App* cmp = app.add_subcommand(kCompareCommand.name, kCompareCommand.description);
   cmp->add_option("DIR", compare->dir, "Output directory of fspm run (or of results merge)")
       ->required();
-  cmp->add_option("-j,--jobs", compare->jobs, "Threads (default: one per hardware thread)");
+  cmp->add_option("-j,--jobs", compare->jobs, "Threads (default: one per hardware thread)")
+      ->check(number_in(0, kMaxJobs));
   cmp->add_flag("--json", compare->json,
                 "One JSON object on stdout: pairs, seconds and every t-test (t, df, p, means)");
   cmp->callback([compare] { compare_command(*compare); });

@@ -821,6 +821,7 @@ void add_foliage_options(CLI::App* command, std::string& foliage, std::uint64_t&
                    "small leaves) or volumes (translucent crown spheres)")
       ->capture_default_str();
   command->add_option("--seed", seed, "Seed of the leaf placement in clusters")
+      ->check(number_in(0, kMaxSeed))
       ->capture_default_str();
 }
 

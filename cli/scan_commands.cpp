@@ -107,7 +107,8 @@ void add_encode_command(CLI::App& app) {
       ->check(positive_number(1000));
   e->add_option("--neighbours", o->neighbours, "k of the neighbour graph")->check(number_in(1, 64));
   e->add_option("--skeleton", o->skeleton, "Also write the main skeleton as a tree file");
-  e->add_option("--seed", o->seed, "Seed of the simulated scan of a tree model");
+  e->add_option("--seed", o->seed, "Seed of the simulated scan of a tree model")
+      ->check(number_in(0, kMaxSeed));
   e->add_flag("--json", o->json,
               "One JSON object on stdout: points, skeleton_nodes, clusters, bytes, seconds");
   e->callback([o] { run_encode(*o); });
@@ -151,7 +152,7 @@ void add_scan_command(CLI::App& app) {
                 "Internodes thinner than this (m) are "
                 "not scanned")
       ->check(number_in(0, 100));
-  s->add_option("--seed", o->seed, "Seed of the random generator");
+  s->add_option("--seed", o->seed, "Seed of the random generator")->check(number_in(0, kMaxSeed));
   s->add_flag("--json", o->json, "One JSON object on stdout: points, output");
   s->callback([o] { run_scan(*o); });
 }
