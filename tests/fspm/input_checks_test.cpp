@@ -2,12 +2,14 @@
 // "did you mean", finite geometry and the reason of a failed atomic write.
 #include <gtest/gtest.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 
 #include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <limits>
+#include <thread>
 
 #include "fspm/atomic_file.hpp"
 #include "fspm/closest_name.hpp"
@@ -51,6 +53,24 @@ TEST(InputFile, SaysWhatIsWrongWithThePath) {
   // A device without end is cut at the limit, not read until memory runs out.
   EXPECT_EQ(message_of([&] { read_input_file("/dev/zero", 1 << 20); }),
             "/dev/zero: larger than the limit of 1048576 bytes for an input file");
+  fs::remove_all(dir);
+}
+
+// A text reader refuses a NUL byte where it is read: /dev/zero at once, not after a gigabyte.
+TEST(InputFile, TextReaderRefusesBinaryData) {
+  const fs::path dir = scratch("text");
+  const std::string text_file = (dir / "a.txt").string();
+  std::ofstream(text_file) << "x = 1\n";
+  EXPECT_EQ(read_text_input_file(text_file), "x = 1\n");
+  const std::string binary = (dir / "b.txt").string();
+  {
+    std::ofstream out(binary, std::ios::binary);
+    out << std::string(70000, 'a') << '\0' << "b";
+  }
+  EXPECT_EQ(message_of([&] { read_text_input_file(binary); }),
+            binary + ": binary data (a NUL byte at byte 70000), expected a text file");
+  EXPECT_EQ(message_of([&] { read_text_input_file("/dev/zero"); }),
+            "/dev/zero: binary data (a NUL byte at byte 0), expected a text file");
   fs::remove_all(dir);
 }
 
@@ -104,6 +124,41 @@ TEST(AtomicFile, FailedWriteNamesThePathAndTheReasonAndLeavesNothing) {
   ::setrlimit(RLIMIT_FSIZE, &old);
   std::signal(SIGXFSZ, old_handler);
   EXPECT_EQ(message, path + ": cannot write: File too large");
+  EXPECT_TRUE(fs::is_empty(dir));
+  fs::remove_all(dir);
+}
+
+// A device is written in place: renaming a temporary file over /dev/full would replace the
+// device node (as root) and report success.
+TEST(AtomicFile, DeviceIsWrittenInPlace) {
+  const std::string message = message_of([] {
+    write_file_atomically("/dev/full", [](std::ostream& out) { out << std::string(1 << 16, 'x'); });
+  });
+  EXPECT_EQ(message, "/dev/full: cannot write: No space left on device");
+  EXPECT_TRUE(fs::is_character_file("/dev/full"));
+}
+
+TEST(AtomicFile, FifoStaysAFifo) {
+  const fs::path dir = scratch("atomic_fifo");
+  const fs::path fifo = dir / "out.fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::string received;
+  std::thread reader([&] {
+    std::ifstream in(fifo);
+    std::getline(in, received);
+  });
+  write_file_atomically(fifo.string(), [](std::ostream& out) { out << "through the pipe\n"; });
+  reader.join();
+  EXPECT_EQ(received, "through the pipe");
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  fs::remove_all(dir);
+}
+
+TEST(AtomicFile, DirectoryTargetIsRefused) {
+  const fs::path dir = scratch("atomic_dir");
+  const std::string message =
+      message_of([&] { write_file_atomically(dir.string(), [](std::ostream& out) { out << 1; }); });
+  EXPECT_EQ(message, dir.string() + ": is a directory, expected a file");
   EXPECT_TRUE(fs::is_empty(dir));
   fs::remove_all(dir);
 }
