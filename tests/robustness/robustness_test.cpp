@@ -133,7 +133,7 @@ std::vector<Case> output_cases() {
       {"EncodeToFullDevice",
        {},
        {},
-       "encode " + kExamples + "/trees/small.nwk -o {dir}/full.clusters",
+       "encode " + kExamples + "/trees/open_a12.treeb -o {dir}/full.clusters",
        1,
        "full.clusters: cannot write: " + kFull,
        {},
