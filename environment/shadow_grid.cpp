@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 #include "fspm/error.hpp"
 #include "fspm/memory_budget.hpp"
@@ -132,17 +133,29 @@ void ShadowGrid::mark_obstacle(int i, int j, int k, double translucency, double 
 }
 
 template <typename Inside>
+namespace {
+  // The first and last voxel index per axis of the box [lo, hi], clamped to a grid of n voxels of
+  // size h from origin.
+  std::pair<Eigen::Vector3i, Eigen::Vector3i> voxel_range(
+      const Eigen::Vector3d& origin, const Eigen::Vector3i& n, double h, const Eigen::Vector3d& lo,
+      const Eigen::Vector3d& hi) {
+    Eigen::Vector3i a, b;
+    for (int d = 0; d < 3; ++d) {
+      a[d] = std::max(0, static_cast<int>(std::floor((lo[d] - origin[d]) / h)));
+      b[d] = std::min(n[d] - 1, static_cast<int>(std::floor((hi[d] - origin[d]) / h)));
+    }
+    return {a, b};
+  }
+
+}  // namespace
+
 void ShadowGrid::fill_region(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
                              double translucency, const Inside& inside) {
   // The share of a voxel an obstacle fills, from 4 x 4 x 4 sample points, so that a wall casts
   // shade in proportion to its thickness whatever its alignment to the grid.
   constexpr int kSamples = 4;
   const double h = p_.voxel_size_m;
-  Eigen::Vector3i a, b;
-  for (int d = 0; d < 3; ++d) {
-    a[d] = std::max(0, static_cast<int>(std::floor((lo[d] - origin_[d]) / h)));
-    b[d] = std::min(n_[d] - 1, static_cast<int>(std::floor((hi[d] - origin_[d]) / h)));
-  }
+  const auto [a, b] = voxel_range(origin_, n_, h, lo, hi);
   for (int k = a.z(); k <= b.z(); ++k) {
     for (int j = a.y(); j <= b.y(); ++j) {
       for (int i = a.x(); i <= b.x(); ++i) {
@@ -170,11 +183,7 @@ void ShadowGrid::fill_aligned_box(const Box& box, const Eigen::Vector3i& axes,
   // voxel row; the same counts, bit for bit).
   constexpr int kSamples = 4;
   const double h = p_.voxel_size_m;
-  Eigen::Vector3i a, b;
-  for (int d = 0; d < 3; ++d) {
-    a[d] = std::max(0, static_cast<int>(std::floor((lo[d] - origin_[d]) / h)));
-    b[d] = std::min(n_[d] - 1, static_cast<int>(std::floor((hi[d] - origin_[d]) / h)));
-  }
+  const auto [a, b] = voxel_range(origin_, n_, h, lo, hi);
   std::array<std::vector<int>, 3> inside;
   for (int w = 0; w < 3; ++w) {
     inside[w].assign(static_cast<std::size_t>(std::max(0, b[w] - a[w] + 1)), 0);

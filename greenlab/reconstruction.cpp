@@ -390,11 +390,13 @@ class AxisBuilder {
 
 namespace {
 
-// Sum over the metamer instances born by `age` of weight(record): records are numbered parents
-// first by the simulation, but any order is handled by a topological pass. Saturating sums: a
-// count past 2^64 only needs to compare as huge.
-template <class Weight>
-std::uint64_t instances_at_age(const CompressedTreeGraph& graph, double age, Weight weight) {
+// Sum over the metamer instances born by `age` of weight(record), walking an axillary reference
+// only where walk_axillary(record) says so: records are numbered parents first by the
+// simulation, but any order is handled by a topological pass. Saturating sums: a count past
+// 2^64 only needs to compare as huge.
+template <class Weight, class WalkAxillary>
+std::uint64_t instances_at_age(const CompressedTreeGraph& graph, double age, Weight weight,
+                               WalkAxillary walk_axillary) {
   if (graph.root() == kNoRecord) return 0;
   const double now = graph.birth_date + age;
   std::vector<std::uint32_t> indegree(graph.size(), 0);
@@ -410,24 +412,24 @@ std::uint64_t instances_at_age(const CompressedTreeGraph& graph, double age, Wei
   }
   count[graph.root()] = 1;
   std::uint64_t total = 0;
-  auto add = [](std::uint64_t a, std::uint64_t b) {
-    std::uint64_t out = 0;
-    return __builtin_add_overflow(a, b, &out) ? std::numeric_limits<std::uint64_t>::max() : out;
-  };
   for (std::size_t head = 0; head < order.size(); ++head) {
     const RecordId id = order[head];
     const CompressedRecord& r = graph.record(id);
-    const bool born = r.birth <= now;
-    const std::uint64_t c = born ? count[id] : 0;
-    for (std::uint64_t w = weight(r); w > 0 && c > 0; --w) total = add(total, c);
-    auto visit = [&](RecordId child) {
-      count[child] = add(count[child], c);
+    const std::uint64_t c = r.birth <= now ? count[id] : 0;
+    total = add_saturating(total, multiply_saturating(c, weight(r)));
+    auto visit = [&](RecordId child, std::uint64_t n) {
+      count[child] = add_saturating(count[child], n);
       if (--indegree[child] == 0) order.push_back(child);
     };
-    if (r.successor != kNoRecord) visit(r.successor);
-    for (RecordId a : graph.axillaries(id)) visit(a);
+    if (r.successor != kNoRecord) visit(r.successor, c);
+    for (RecordId a : graph.axillaries(id)) visit(a, walk_axillary(a) ? c : 0);
   }
   return total;
+}
+
+template <class Weight>
+std::uint64_t instances_at_age(const CompressedTreeGraph& graph, double age, Weight weight) {
+  return instances_at_age(graph, age, weight, [](RecordId) { return true; });
 }
 
 }  // namespace
@@ -504,31 +506,8 @@ std::uint64_t line_records_at_age(const CompressedTreeGraph& graph,
         options.flowers && r.apex == ApexState::kFlower && r.birth + 1.0 <= now + 1e-9;
     return std::uint64_t{1} + (leaf ? 1 : 0) + (flower ? 1 : 0);
   };
-  std::vector<std::uint32_t> indegree(graph.size(), 0);
-  for (const auto& r : graph.records()) {
-    if (r.successor != kNoRecord) ++indegree[r.successor];
-  }
-  for (RecordId a : graph.axillary_refs()) ++indegree[a];
-  std::vector<std::uint64_t> count(graph.size(), 0);
-  std::vector<RecordId> order;
-  for (RecordId i = 0; i < graph.size(); ++i) {
-    if (indegree[i] == 0) order.push_back(i);
-  }
-  count[graph.root()] = 1;
-  std::uint64_t total = 0;
-  for (std::size_t head = 0; head < order.size(); ++head) {
-    const RecordId id = order[head];
-    const CompressedRecord& r = graph.record(id);
-    const std::uint64_t c = r.birth <= now ? count[id] : 0;
-    total = add_saturating(total, multiply_saturating(c, weight(r)));
-    auto visit = [&](RecordId child, std::uint64_t n) {
-      count[child] = add_saturating(count[child], n);
-      if (--indegree[child] == 0) order.push_back(child);
-    };
-    if (r.successor != kNoRecord) visit(r.successor, c);
-    for (RecordId a : graph.axillaries(id)) visit(a, builder.pruned(a) ? 0 : c);
-  }
-  return total;
+  return instances_at_age(graph, builder.age(), weight,
+                          [&](RecordId a) { return !builder.pruned(a); });
 }
 
 namespace {
