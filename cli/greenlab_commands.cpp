@@ -75,10 +75,10 @@ void run_simulate(const SimulateOptions& o) {
   for (int age = 1; age <= static_cast<int>(g.final_age); ++age) {
     greenlab::ReconstructionOptions ro;
     ro.age = age;
-    const std::uint64_t bytes = greenlab::line_records_at_age(g, ro) *
-                                static_cast<std::uint64_t>(LineTree::kBytesPerRecord);
-    line_bytes[std::to_string(age)] = bytes;
-    sequence_bytes += bytes;
+    const std::uint64_t age_bytes = greenlab::line_records_at_age(g, ro) *
+                                    static_cast<std::uint64_t>(LineTree::kBytesPerRecord);
+    line_bytes[std::to_string(age)] = age_bytes;
+    sequence_bytes += age_bytes;
   }
   const nlohmann::json j = {{"cycles", params.cycles},
                             {"graph_nodes", g.size()},

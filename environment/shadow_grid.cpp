@@ -132,23 +132,24 @@ void ShadowGrid::mark_obstacle(int i, int j, int k, double translucency, double 
       p_.obstacle_shade * p_.full_light * (1.0 - std::clamp(translucency, 0.0, 1.0)) * fraction;
 }
 
-template <typename Inside>
 namespace {
-  // The first and last voxel index per axis of the box [lo, hi], clamped to a grid of n voxels of
-  // size h from origin.
-  std::pair<Eigen::Vector3i, Eigen::Vector3i> voxel_range(
-      const Eigen::Vector3d& origin, const Eigen::Vector3i& n, double h, const Eigen::Vector3d& lo,
-      const Eigen::Vector3d& hi) {
-    Eigen::Vector3i a, b;
-    for (int d = 0; d < 3; ++d) {
-      a[d] = std::max(0, static_cast<int>(std::floor((lo[d] - origin[d]) / h)));
-      b[d] = std::min(n[d] - 1, static_cast<int>(std::floor((hi[d] - origin[d]) / h)));
-    }
-    return {a, b};
+// The first and last voxel index per axis of the box [lo, hi], clamped to a grid of n voxels of
+// size h from origin.
+std::pair<Eigen::Vector3i, Eigen::Vector3i> voxel_range(const Eigen::Vector3d& origin,
+                                                        const Eigen::Vector3i& n, double h,
+                                                        const Eigen::Vector3d& lo,
+                                                        const Eigen::Vector3d& hi) {
+  Eigen::Vector3i a, b;
+  for (int d = 0; d < 3; ++d) {
+    a[d] = std::max(0, static_cast<int>(std::floor((lo[d] - origin[d]) / h)));
+    b[d] = std::min(n[d] - 1, static_cast<int>(std::floor((hi[d] - origin[d]) / h)));
   }
+  return {a, b};
+}
 
 }  // namespace
 
+template <typename Inside>
 void ShadowGrid::fill_region(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
                              double translucency, const Inside& inside) {
   // The share of a voxel an obstacle fills, from 4 x 4 x 4 sample points, so that a wall casts

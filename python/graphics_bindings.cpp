@@ -130,8 +130,8 @@ void bind_triangle_mesh(py::module_& m) {
           "triangle_count",
           [](const TM& mesh, std::optional<std::string> material) {
             if (!material) return mesh.triangle_count();
-            for (gr::Material m : gr::kMaterials) {
-              if (*material == gr::material_name(m)) return mesh.triangle_count(m);
+            for (gr::Material kind : gr::kMaterials) {
+              if (*material == gr::material_name(kind)) return mesh.triangle_count(kind);
             }
             throw ValueError("unknown material '" + *material +
                              "' (expected bark, leaf, obstacle, crown or translucent_obstacle)");
