@@ -7,10 +7,10 @@
 
 #include <random>
 
+#include "bench/synthetic_scan_tree.hpp"
 #include "reconstruction/decoding.hpp"
 #include "scans/encoder.hpp"
 #include "scans/scan_simulator.hpp"
-#include "scans/synthetic_tree.hpp"
 
 namespace {
 
@@ -18,12 +18,7 @@ namespace rc = fspm::reconstruction;
 
 const fspm::scans::ClusterModel& model() {
   static const fspm::scans::ClusterModel m = [] {
-    fspm::scans::SyntheticTreeOptions t;
-    t.trunk_length_m = 8.0;
-    t.branch_length_m = 3.0;
-    t.branches = 8;
-    t.twigs = 4;
-    t.root_diameter_m = 0.4;
+    const fspm::scans::SyntheticTreeOptions t = fspm::bench::synthetic_scan_tree();
     fspm::scans::ScanOptions s;
     s.density_per_m2 = 20000.0;
     std::mt19937_64 rng(1);

@@ -6,21 +6,16 @@
 
 #include <random>
 
+#include "bench/synthetic_scan_tree.hpp"
 #include "scans/clusters_file.hpp"
 #include "scans/encoder.hpp"
 #include "scans/scan_simulator.hpp"
-#include "scans/synthetic_tree.hpp"
 
 namespace {
 
 const fspm::scans::PointSet& million_point_scan() {
   static const fspm::scans::PointSet scan = [] {
-    fspm::scans::SyntheticTreeOptions t;
-    t.trunk_length_m = 8.0;
-    t.branch_length_m = 3.0;
-    t.branches = 8;
-    t.twigs = 4;
-    t.root_diameter_m = 0.4;
+    const fspm::scans::SyntheticTreeOptions t = fspm::bench::synthetic_scan_tree();
     fspm::scans::ScanOptions s;
     s.density_per_m2 = 130000.0;
     std::mt19937_64 rng(1);
