@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <random>
 
+#include "environment/leaf_light.hpp"
 #include "environment/light_model.hpp"
 #include "environment/shadow_grid.hpp"
 #include "environment/space_colonization.hpp"
@@ -78,10 +80,16 @@ class Grower {
   }
 
  private:
-  Scene light_scene(int year) {
+  // The scene with the sky sampled as the parameters say, without clusters.
+  Scene light_scene_settings() const {
     Scene s = scene_;
     s.sky.directions = p_.light_directions;
     s.sky.significance = p_.light_significance;
+    return s;
+  }
+
+  Scene light_scene(int year) {
+    Scene s = light_scene_settings();
     for (auto& sh : shoots_) {
       sh.sphere = -1;
       if (!sh.alive || year - sh.year > p_.leaf_years) continue;
@@ -188,9 +196,13 @@ class Grower {
       q *= f;
       return std::isinf(k) ? q : q * (1.0 + k) / (q + k);
     };
+    // The light a node's bud sensed, for the output's "light" attribute: nodes without a bud
+    // sensed nothing, which is "no value" (nan), not darkness.
+    bud_light_.assign(n, std::numeric_limits<double>::quiet_NaN());
     for (std::size_t i = 0; i < n; ++i) {
       q_terminal_[i] = response(q_terminal_[i]);
       q_lateral_[i] = response(q_lateral_[i]);
+      if (has_bud(ms_[i])) bud_light_[i] = ms_[i].terminal_bud ? q_terminal_[i] : q_lateral_[i];
     }
   }
 
@@ -397,7 +409,7 @@ class Grower {
     }
     std::vector<NodeId> new_id(n, kNoNode);
     out.tree.reserve(n);
-    out.tree.add_attribute(kLightAttribute, 0.0);
+    out.tree.add_attribute(kLightAttribute, std::numeric_limits<double>::quiet_NaN());
     std::vector<std::int32_t> stack{0};
     double top = base_.z();
     // Light of the last cycle, at nodes that had a bud then.
@@ -414,8 +426,8 @@ class Grower {
       d.kind = OrganKind::kInternode;
       const NodeId id = out.tree.add_node(m.parent < 0 ? kNoNode : new_id[m.parent], d);
       new_id[k] = id;
-      if (static_cast<std::size_t>(k) < q_terminal_.size()) {
-        out.tree.attribute(kLightAttribute)[id] = m.terminal_bud ? q_terminal_[k] : q_lateral_[k];
+      if (static_cast<std::size_t>(k) < bud_light_.size()) {
+        out.tree.attribute(kLightAttribute)[id] = bud_light_[k];
       }
       top = std::max(top, m.end.z());
       if (m.lateral >= 0 && ms_[m.lateral].alive) stack.push_back(m.lateral);
@@ -424,7 +436,6 @@ class Grower {
     out.internodes = out.tree.size();
     // Leaf clusters of the young shoots, as after one more cycle.
     const Scene s = light_scene(p_.years + 1);
-    const LightModel cluster_light(s);
     out.tree.add_attribute("translucency", 1.0);
     for (const auto& sh : shoots_) {
       if (sh.sphere < 0 || !sh.alive) continue;
@@ -441,11 +452,10 @@ class Grower {
       d.kind = OrganKind::kLeaf;
       const NodeId id = out.tree.add_node(new_id[sh.last], d);
       out.tree.attribute("translucency")[id] = c.translucency;
-      // Light at the cluster's centre (Pirk eq. 4.3 over the final clusters, its own left out),
-      // as plastic adaptation evaluates clusters: the shoots of the last cycle had no bud light.
-      out.tree.attribute(kLightAttribute)[id] =
-          cluster_light.evaluate(c.center, static_cast<std::uint32_t>(sh.sphere)).light;
     }
+    // Light at each cluster's centre (Pirk eq. 4.3 over the final clusters, its own left out):
+    // the shoots of the last cycle had no bud light.
+    record_leaf_light(out.tree, light_scene_settings());
     out.clusters = out.cluster_spheres.size();
     out.shed = shed_;
     out.grown = grown_;
@@ -463,6 +473,7 @@ class Grower {
   std::vector<Shoot> shoots_;
   // Per node, this cycle: light Q and direction V of its terminal and lateral bud.
   std::vector<double> q_terminal_, q_lateral_;
+  std::vector<double> bud_light_;  // light sensed by each node's bud in the last cycle, nan: no bud
   std::vector<Eigen::Vector3d> dir_terminal_, dir_lateral_;
   std::vector<double> q_, v_, v_terminal_, v_lateral_;
   ShadowGrid grid_;

@@ -21,8 +21,9 @@ struct GrowthResult {
   // Internodes (kind internode, birth_time = year of growth, order, pipe-model radius) followed by
   // the leaf clusters as kind leaf nodes under the last internode of their shoot (start = end =
   // cluster centre, radius = cluster radius, attribute "translucency"). Internodes carry the
-  // attribute "light" (light at their node in the last cycle); a cluster carries the light at
-  // its centre (Pirk eq. 4.3 over the final clusters, its own left out).
+  // attribute "light" (the light their bud sensed in the last cycle; nan, "no value", for nodes
+  // that had no bud then); a cluster carries the light at its centre (Pirk eq. 4.3 over the
+  // final clusters, its own left out).
   TreeGraph tree;
   std::size_t internodes = 0;
   std::size_t clusters = 0;

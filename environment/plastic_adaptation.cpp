@@ -676,6 +676,27 @@ std::vector<AdaptationResult> Engine::run() {
   return out;
 }
 
+// The leaves' attribute "light" after adaptation: the light the tree recorded (in the scene it
+// grew in) times the change its cluster's light underwent, as eq. 4.13 reads it; pruned leaves
+// and leaves of vanished clusters have none (nan). Cheap beside a new light evaluation, and 1x
+// (unchanged) where nothing moved or shaded.
+void scale_leaf_light(const TreeAnalysis& a, const std::vector<std::uint8_t>& alive,
+                      const std::vector<double>& light_ratio,
+                      const std::vector<std::uint8_t>& pruned, TreeGraph& t) {
+  if (!t.has_attribute(kLightAttribute)) return;
+  auto light = t.attribute(kLightAttribute);
+  for (NodeId i = 0; i < t.size(); ++i) {
+    if (t.kind(i) == OrganKind::kLeaf && pruned[i]) light[i] = std::nan("");
+  }
+  for (std::uint32_t c = 0; c < a.clusters.size(); ++c) {
+    for (const NodeId m : a.clusters[c].nodes) {
+      if (t.kind(m) != OrganKind::kLeaf) continue;
+      // At most the open sky's light (1): the ratio is an estimate from the cluster field.
+      light[m] = alive[c] ? std::min(light[m] * light_ratio[c], 1.0) : std::nan("");
+    }
+  }
+}
+
 void Engine::finish(TreeRun& r) {
   const TreeGraph& tree = *r.tree;
   const TreeAnalysis& a = *r.a;
@@ -697,6 +718,7 @@ void Engine::finish(TreeRun& r) {
   }
   // Leaf clusters: moved with their anchor, eq. 4.14 translucency, eq. 4.13 density.
   std::vector<std::uint8_t> alive(a.clusters.size(), 0);
+  std::vector<double> light_ratio(a.clusters.size(), 1.0);
   for (std::uint32_t c = 0; c < a.clusters.size(); ++c) {
     const std::uint32_t g = r.first_cluster + c;
     if (!field_.alive(g)) continue;
@@ -709,9 +731,11 @@ void Engine::finish(TreeRun& r) {
                                static_cast<double>(count) / static_cast<double>(lc.nodes.size()));
     // Pirk eq. 4.13 with rho(i) = i: the density scales with the light against the analysis.
     const double i0 = a.cluster_light[c];
-    lc.density = i0 > 1e-9 ? std::clamp(field_.light(g) / i0, 0.0, 2.0) : 1.0;
+    if (i0 > 1e-9) light_ratio[c] = field_.light(g) / i0;
+    lc.density = i0 > 1e-9 ? std::clamp(light_ratio[c], 0.0, 2.0) : 1.0;
     res.clusters.push_back(std::move(lc));
   }
+  scale_leaf_light(a, alive, light_ratio, pruned, t);
   // Clusters that ended up in a solid obstacle are pushed out (Pirk Fig. 4.6).
   res.pushed_clusters = push_clusters_out_of_solids(scene_, t, res.clusters);
 

@@ -27,7 +27,9 @@ namespace fspm::environment {
 
 struct AdaptationResult {
   // The input tree with its moved nodes and the attributes "displacement" (distance the node's
-  // end moved, m) and "pruned" (1 for a pruned node, which keeps its adapted position).
+  // end moved, m) and "pruned" (1 for a pruned node, which keeps its adapted position). A leaf's
+  // "light", when the tree has it, is scaled by its cluster's change of light (eq. 4.13's ratio);
+  // pruned leaves have none (nan).
   TreeGraph tree;
   std::size_t pruned_nodes = 0;
   std::size_t bent_segments = 0;  // skeleton segments rotated by more than 1e-4 rad

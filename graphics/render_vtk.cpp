@@ -507,6 +507,10 @@ std::array<double, 2> attribute_range(const TriangleMesh& mesh, std::span<const 
   return {lo, hi};
 }
 
+bool has_nan(std::span<const float> values) {
+  return std::any_of(values.begin(), values.end(), [](float v) { return std::isnan(v); });
+}
+
 // The mesh coloured by options.color_by through a blue-to-red lookup table over `range`, with a
 // scalar bar when `bar` (and options.scalar_bar).
 vtkActor* add_colored_actor(vtkRenderer* renderer, const TriangleMesh& mesh,
@@ -517,6 +521,10 @@ vtkActor* add_colored_actor(vtkRenderer* renderer, const TriangleMesh& mesh,
   vtkNew<vtkLookupTable> lut;
   lut->SetHueRange(0.667, 0.0);  // blue (low) to red (high)
   lut->SetTableRange(range.data());
+  // Nodes without a value (nan: a branch where only buds or leaves were measured) keep the
+  // bark's colour instead of reading as the scale's lowest value.
+  const std::array<float, 3> bark = material_color(Material::kBark);
+  lut->SetNanColor(bark[0], bark[1], bark[2], 1.0);
   lut->Build();
   mapper->SetLookupTable(lut);
   mapper->SetScalarModeToUsePointData();
@@ -528,6 +536,10 @@ vtkActor* add_colored_actor(vtkRenderer* renderer, const TriangleMesh& mesh,
   scalar_bar->SetLookupTable(lut);
   scalar_bar->SetTitle(options.color_by.c_str());
   scalar_bar->SetNumberOfLabels(5);
+  if (has_nan(mesh.attribute(options.color_by))) {
+    scalar_bar->SetNanAnnotation("no value");
+    scalar_bar->DrawNanAnnotationOn();
+  }
   scalar_bar->SetMaximumWidthInPixels(std::max(60, options.width / 10));
   scalar_bar->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
   scalar_bar->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);

@@ -365,6 +365,7 @@ std::vector<glm::vec4> vertex_colors(const TriangleMesh& mesh, const ViewerOptio
     const float lo = scene.value_lo, hi = scene.value_hi;
     const float span = hi > lo ? hi - lo : 1.0f;
     for (std::size_t i = 0; i < colors.size(); ++i) {
+      if (std::isnan(a[i])) continue;  // no value: the bark's colour, as the renders draw it
       colors[i] = glm::vec4(colormap((a[i] + value_offset - lo) / span), 1.0f);
     }
   }

@@ -255,6 +255,7 @@
     const f = x - k;
     return kViridis[k].map((c, j) => c + f * (kViridis[k + 1][j] - c));
   }
+  const kBark = [0.45, 0.32, 0.20];  // nodes without a value keep the bark's colour, as the renders
   const isObstacle = (mesh) => /obstacle/.test(mesh.material.name || '');
 
   // Colours the tree (not the obstacles) by a vertex attribute, or restores the written materials.
@@ -263,13 +264,20 @@
     view.meshes.forEach((m) => {
       const a = m.geometry.getAttribute(attribute);
       if (!a || isObstacle(m)) return;
-      for (let i = 0; i < a.count; i++) { lo = Math.min(lo, a.getX(i)); hi = Math.max(hi, a.getX(i)); }
+      for (let i = 0; i < a.count; i++) {
+        const v = a.getX(i);
+        if (Number.isNaN(v)) continue;  // no value (e.g. light on a branch without a bud)
+        lo = Math.min(lo, v); hi = Math.max(hi, v);
+      }
     });
     view.meshes.forEach((m) => {
       const a = m.geometry.getAttribute(attribute);
       if (!attribute || !a || isObstacle(m)) { m.material = m.userData.written; return; }
       const colours = new Float32Array(3 * a.count);
-      for (let i = 0; i < a.count; i++) colours.set(viridis(hi > lo ? (a.getX(i) - lo) / (hi - lo) : 0.5), 3 * i);
+      for (let i = 0; i < a.count; i++) {
+        const v = a.getX(i);
+        colours.set(Number.isNaN(v) ? kBark : viridis(hi > lo ? (v - lo) / (hi - lo) : 0.5), 3 * i);
+      }
       m.geometry.setAttribute('color', new THREE.BufferAttribute(colours, 3));
       // Flat shading: the trees come without normals (docs/experiments.md).
       m.material = new THREE.MeshStandardMaterial({ vertexColors: true, side: THREE.DoubleSide, roughness: 0.8, flatShading: true });

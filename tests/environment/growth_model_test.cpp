@@ -71,6 +71,40 @@ TEST(GrowthModel, StructureIsConsistent) {
   EXPECT_NEAR(r.height_m, summarize(t).height_m, 1e-9);
 }
 
+// Internodes carry the light their bud sensed in the last cycle, and no value (nan) where they
+// had no bud: the root of a 10-year tree (its terminal bud grew on in year 1, its lateral bud
+// died after lateral_bud_lifetime_years) and every internode whose main and lateral positions
+// both grew into shoots before the last cycle (its buds were spent when the light was sensed).
+TEST(GrowthModel, InternodesWithoutABudHaveNoLight) {
+  GrowthParams p = growth_preset("A");
+  p.years = 10;
+  const TreeGraph t = grow_tree(p).tree;
+  const auto light = t.attribute("light");
+  EXPECT_TRUE(std::isnan(light[0]));
+  double last_cycle = 0.0;
+  for (NodeId i = 0; i < t.size(); ++i) last_cycle = std::max(last_cycle, t.birth_time(i));
+  std::vector<int> internode_children(t.size(), 0);
+  for (NodeId i = 1; i < t.size(); ++i) {
+    if (t.kind(i) == OrganKind::kInternode && t.birth_time(i) < last_cycle) {
+      ++internode_children[t.parent(i)];
+    }
+  }
+  std::size_t valued = 0, both_grown = 0;
+  for (NodeId i = 0; i < t.size(); ++i) {
+    if (t.kind(i) != OrganKind::kInternode) continue;
+    if (internode_children[i] == 2) {
+      ++both_grown;
+      EXPECT_TRUE(std::isnan(light[i])) << i;
+    }
+    if (std::isnan(light[i])) continue;
+    ++valued;
+    EXPECT_GE(light[i], 0.0);
+    EXPECT_LE(light[i], 1.0);
+  }
+  EXPECT_GT(both_grown, 10u);
+  EXPECT_GT(valued, 10u);
+}
+
 // Each leaf cluster carries the light at its centre, the other final clusters shading it:
 // against brute-force ray casting over the sky's directions (no shadow volumes, no closed form),
 // within the error of the growth model's significance cutoff.

@@ -8,6 +8,7 @@
 
 #include "environment/cluster_light.hpp"
 #include "environment/growth_model.hpp"
+#include "environment/leaf_light.hpp"
 #include "environment/light_model.hpp"
 #include "environment/plastic_adaptation.hpp"
 #include "environment/solid_push.hpp"
@@ -173,6 +174,46 @@ TEST(PlasticAdaptation, LeafDensityFollowsTheLight) {
   for (const LeafCluster& c : r.clusters) {
     for (const NodeId m : c.nodes) EXPECT_DOUBLE_EQ(dens[m], c.density);
   }
+}
+
+// A leaf's "light" after adaptation: unchanged in an open scene; beside a wall nan where pruned,
+// at most 1, and on average near the light an independent LightModel gives the adapted leaves
+// (the estimate scales each leaf's recorded light by its cluster's change of light).
+TEST(PlasticAdaptation, LeavesCarryTheirLightAfterAdaptation) {
+  const GrowthResult& g = grown(12);
+  const auto before = g.tree.attribute("light");
+  const AdaptationResult open = adapt_tree(g.tree, analyze_tree(g.tree), Scene{});
+  const auto same = open.tree.attribute("light");
+  for (NodeId i = 0; i < g.tree.size(); ++i) {
+    if (g.tree.kind(i) != OrganKind::kLeaf) continue;
+    EXPECT_EQ(same[i], before[i]) << i;
+  }
+  Scene scene;
+  scene.boxes.push_back(Box::wall({1.0, -20}, {1.0, 20}, 0.0, 30.0, 0.2));
+  const AdaptationResult r = adapt_tree(g.tree, analyze_tree(g.tree), scene);
+  const auto light = r.tree.attribute("light");
+  const auto pruned = r.tree.attribute("pruned");
+  TreeGraph exact = r.tree;
+  record_leaf_light(exact, scene);
+  const auto oracle = exact.attribute("light");
+  double sum = 0.0, oracle_sum = 0.0, before_sum = 0.0;
+  std::size_t n = 0;
+  for (NodeId i = 0; i < r.tree.size(); ++i) {
+    if (r.tree.kind(i) != OrganKind::kLeaf) continue;
+    if (pruned[i] != 0.0) {
+      EXPECT_TRUE(std::isnan(light[i])) << i;
+      continue;
+    }
+    ASSERT_FALSE(std::isnan(light[i])) << i;
+    EXPECT_GE(light[i], 0.0);
+    EXPECT_LE(light[i], 1.0);
+    sum += light[i], oracle_sum += oracle[i], before_sum += before[i], ++n;
+  }
+  ASSERT_GT(n, 10u);
+  std::printf("mean leaf light: grown %.3f, adapted %.3f, LightModel on the adapted %.3f\n",
+              before_sum / n, sum / n, oracle_sum / n);
+  EXPECT_LT(sum, before_sum);  // the wall takes light
+  EXPECT_NEAR(sum / n, oracle_sum / n, 0.25 * oracle_sum / n);
 }
 
 TEST(PlasticAdaptation, TreeCloseToAWallBendsAndPrunes) {

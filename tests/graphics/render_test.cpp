@@ -127,6 +127,38 @@ TEST(Render, ColourByAgeSpansTheLookupTable) {
   (void)count_near;
 }
 
+// Nodes without a value (nan) keep the bark's colour: with every internode's light missing, the
+// coloured render shows bark-brown branches; with the values present, none (blue to red only).
+TEST(Render, NodesWithoutAValueKeepTheBarkColour) {
+  if (!render_available()) GTEST_SKIP() << "built without VTK";
+  if (!display_available()) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
+  TreeGraph valued = testing::small_tree();
+  TreeGraph missing = valued;
+  auto light = missing.attribute("light");
+  for (NodeId i = 0; i < missing.size(); ++i) {
+    if (missing.kind(i) == OrganKind::kInternode) light[i] = std::nan("");
+  }
+  RenderOptions o;
+  o.width = 200;
+  o.height = 160;
+  o.view = View::kFront;
+  o.ground = false;
+  o.scalar_bar = false;
+  o.color_by = "light";
+  auto brown = [](const Image& image) {  // red > green > blue, as bark (0.45, 0.32, 0.20) lit
+    std::size_t n = 0;
+    for (int y = 0; y < image.height; ++y) {
+      for (int x = 0; x < image.width; ++x) {
+        const auto* p = image.pixel(x, y);
+        if (p[0] > p[1] + 15 && p[1] > p[2] + 15 && p[0] < 200) ++n;
+      }
+    }
+    return n;
+  };
+  EXPECT_GT(brown(render_mesh(mesh_tree(missing, {}), o)), 100u);
+  EXPECT_LT(brown(render_mesh(mesh_tree(valued, {}), o)), 10u);
+}
+
 TEST(Render, ScaleBarIsARoundFifthOfTheHeight) {
   EXPECT_DOUBLE_EQ(scale_bar_length(10.89), 2.0);  // a fifth is 2.18
   EXPECT_DOUBLE_EQ(scale_bar_length(10.0), 2.0);   // exactly a fifth
