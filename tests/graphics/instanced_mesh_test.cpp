@@ -172,6 +172,54 @@ TEST(InstancedMesh, PlacingPartsComposesTransforms) {
   EXPECT_THROW(place_parts({tree}, {PartPlacement{3}}), ValueError);
 }
 
+// One triangle with a normal, a texture coordinate and the attributes given, all per vertex.
+TriangleMesh one_triangle(bool with_normals, const std::vector<std::string>& attributes) {
+  TriangleMesh m;
+  m.positions = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  if (with_normals) m.normals = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}};
+  m.uvs = {{0, 0}, {1, 0}, {0, 1}};
+  m.triangles = {{0, 1, 2}};
+  m.materials = {Material::kLeaf};
+  for (const auto& name : attributes) m.attributes.push_back({name, {1.0f, 2.0f, 3.0f}});
+  return m;
+}
+
+// Flattening by hand: a quarter turn about z doubled moves (1, 0, 0) to (0, 2, 0) and turns the
+// normal (1, 0, 0) to (0, 1, 0); indices shift by the vertices before; a column missing in a
+// mesh is 0 there; order gains the instance's offset; normals only when every mesh has them.
+TEST(InstancedMesh, FlattenTransformsEveryColumnAsWorkedByHand) {
+  InstancedMesh scene;
+  scene.meshes.push_back(one_triangle(true, {"age", kAttributeOrder}));
+  scene.meshes.push_back(one_triangle(true, {"light"}));
+  MeshInstance a;
+  MeshInstance b;
+  b.mesh = 1;
+  b.linear = 2.0f * Eigen::AngleAxisf(0.5f * static_cast<float>(M_PI), Eigen::Vector3f::UnitZ())
+                        .toRotationMatrix();
+  b.translation = {0, 0, 5};
+  MeshInstance c = a;
+  c.order_offset = 4;
+  scene.instances = {a, b, c};
+  const TriangleMesh flat = scene.flatten();
+  ASSERT_EQ(flat.vertex_count(), 9u);
+  ASSERT_EQ(flat.triangle_count(), 3u);
+  EXPECT_TRUE(flat.positions[3].isApprox(Eigen::Vector3f(0, 2, 5), 1e-6f));
+  EXPECT_TRUE(flat.normals[3].isApprox(Eigen::Vector3f(0, 1, 0), 1e-6f));
+  EXPECT_EQ(flat.triangles[1], (std::array<std::uint32_t, 3>{3, 4, 5}));
+  EXPECT_EQ(flat.triangles[2], (std::array<std::uint32_t, 3>{6, 7, 8}));
+  EXPECT_EQ(flat.uvs.size(), 9u);
+  const auto age = flat.attribute("age"), light = flat.attribute("light");
+  const auto order = flat.attribute(kAttributeOrder);
+  EXPECT_EQ(age[0], 1.0f);
+  EXPECT_EQ(age[3], 0.0f);  // the second mesh has no age
+  EXPECT_EQ(light[3], 1.0f);
+  EXPECT_EQ(light[8], 0.0f);
+  EXPECT_EQ(order[2], 3.0f);
+  EXPECT_EQ(order[8], 7.0f);  // 3 + the offset 4
+  scene.meshes[1].normals.clear();
+  EXPECT_TRUE(scene.flatten().normals.empty());  // a gap would shift them onto other vertices
+}
+
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), {}};
