@@ -75,6 +75,9 @@ class ShadowGrid {
   double shade(const Eigen::Vector3d& p) const;
   bool obstacle(const Eigen::Vector3d& p) const;
   Eigen::Vector3i dimensions() const { return n_; }
+  // Corner of voxel (0, 0, 0) and the voxel edge, to place sources between voxel centres.
+  const Eigen::Vector3d& origin() const { return origin_; }
+  const ShadowGridParams& params() const { return p_; }
 
  private:
   bool voxel_of(const Eigen::Vector3d& p, Eigen::Vector3i& v) const;
