@@ -62,54 +62,6 @@ void ClusterGridLight::fit(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi)
   sized_ = true;
 }
 
-// The eight voxel centres around p with their trilinear weights (summing to 1), and whether each
-// lies in the upper layer. At a voxel centre one weight is 1: Palubicki's grid exactly.
-template <typename F>
-void ClusterGridLight::for_each_corner(const Eigen::Vector3d& p, F&& f) const {
-  const double h = grid_->params().voxel_size_m;
-  const Eigen::Vector3d g = (p - grid_->origin()) / h - Eigen::Vector3d::Constant(0.5);
-  const Eigen::Vector3d base = g.array().floor();
-  const Eigen::Vector3d t = g - base;
-  for (int c = 0; c < 8; ++c) {
-    const Eigen::Vector3d o(c & 1, (c >> 1) & 1, (c >> 2) & 1);
-    double w = 1.0;
-    for (int a = 0; a < 3; ++a) w *= o[a] > 0 ? t[a] : 1.0 - t[a];
-    f(grid_->origin() + (base + o + Eigen::Vector3d::Constant(0.5)) * h, w, o.z() > 0);
-  }
-}
-
-void ClusterGridLight::add_bud(const Eigen::Vector3d& p) {
-  for_each_corner(p, [this](const Eigen::Vector3d& q, double w, bool) {
-    if (w > 0.0) grid_->add_bud(q, w);
-  });
-}
-
-// Q / C interpolated between the eight voxel centres, each without the bud's own shade: its
-// share a w_k of the corner's source, and for the lower corners the upper corners' shares one
-// layer down (a / b times their weight, which every lower corner's pyramid takes in). A lone bud
-// anywhere sees 1.
-double ClusterGridLight::bud_light(const Eigen::Vector3d& p) const {
-  const ShadowGridParams& gp = grid_->params();
-  const double gz = (p.z() - grid_->origin().z()) / gp.voxel_size_m - 0.5;
-  const double upper_weight = gz - std::floor(gz);
-  double sum = 0.0;
-  for_each_corner(p, [&](const Eigen::Vector3d& q, double w, bool upper) {
-    if (w <= 0.0 || grid_->obstacle(q)) return;
-    const double own = gp.shade_a * (w + (upper ? 0.0 : upper_weight / gp.shade_b));
-    const double s = grid_->shade(q) - own;
-    sum += w * std::min(std::max(gp.full_light - s, 0.0) / gp.full_light, 1.0);
-  });
-  return sum;
-}
-
-Eigen::Vector3d ClusterGridLight::light_direction(const Eigen::Vector3d& p) const {
-  Eigen::Vector3d d = Eigen::Vector3d::Zero();
-  for_each_corner(p, [&](const Eigen::Vector3d& q, double w, bool) {
-    if (w > 0.0) d += w * grid_->light_direction(q);
-  });
-  return d.normalized();
-}
-
 void ClusterGridLight::evaluate(std::span<const Eigen::Vector3d> buds,
                                 std::span<const std::uint32_t> bud_start,
                                 std::span<const Eigen::Vector3d> centers,
@@ -126,7 +78,7 @@ void ClusterGridLight::evaluate(std::span<const Eigen::Vector3d> buds,
   fit(box.min(), box.max());
   for (std::size_t c = 0; c < nc; ++c) {
     if (!alive[c]) continue;
-    for (std::uint32_t b = bud_start[c]; b < bud_start[c + 1]; ++b) add_bud(buds[b]);
+    for (std::uint32_t b = bud_start[c]; b < bud_start[c + 1]; ++b) grid_->add_bud_spread(buds[b]);
   }
   grid_->propagate();
   for (std::size_t c = 0; c < nc; ++c) {
@@ -134,12 +86,12 @@ void ClusterGridLight::evaluate(std::span<const Eigen::Vector3d> buds,
     const std::uint32_t first = bud_start[c], end = bud_start[c + 1];
     if (end > first) {
       double sum = 0.0;
-      for (std::uint32_t b = first; b < end; ++b) sum += bud_light(buds[b]);
+      for (std::uint32_t b = first; b < end; ++b) sum += grid_->spread_bud_light(buds[b]);
       light[c] = sum / static_cast<double>(end - first);
     } else {
-      light[c] = bud_light(centers[c]);
+      light[c] = grid_->spread_bud_light(centers[c]);
     }
-    direction[c] = light_direction(centers[c]);
+    direction[c] = grid_->spread_light_direction(centers[c]);
   }
 }
 

@@ -10,8 +10,10 @@
 // The grid is coarser than the growth model's so that it can be filled and propagated again at
 // every age level of an adaptation (see cluster_grid_params). Unlike growth, which places a bud
 // in its voxel as Palubicki does, the cluster light spreads each bud over the eight nearest voxel
-// centres and interpolates its light: an adaptation moves buds by fractions of a voxel, and the
-// light must follow those moves smoothly.
+// centres and interpolates its light (ShadowGrid::add_bud_spread): an adaptation moves buds by
+// fractions of a voxel, and with the nearest voxel a bud's light jumps by up to a / C as it
+// crosses a voxel face; the adaptation's feedback (bend, read the light again, bend again) turned
+// those jumps into bends and pruning far from any obstacle.
 #include <Eigen/Core>
 #include <cstdint>
 #include <memory>
@@ -53,22 +55,8 @@ class ClusterGridLight {
                 std::span<const Eigen::Vector3d> centers, std::span<const std::uint8_t> alive,
                 std::span<double> light, std::span<Eigen::Vector3d> direction);
 
-  // Palubicki's Q / C for a bud at p without its own shade, interpolated between voxel centres:
-  // exact at a centre, continuous between them. Reads the buds of the last evaluate().
-  double bud_light(const Eigen::Vector3d& p) const;
-  // The grid's light direction at p, interpolated alike.
-  Eigen::Vector3d light_direction(const Eigen::Vector3d& p) const;
-
  private:
   void fit(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi);
-  template <typename F>
-  void for_each_corner(const Eigen::Vector3d& p, F&& f) const;
-  // A bud's shade spread over the eight voxel centres around it (trilinear weights), its light
-  // and direction interpolated alike: light changes in proportion to how far a bud moves. With
-  // the nearest voxel it jumps by up to a / C as a bud crosses a voxel face, and the adaptation's
-  // feedback (bend, read the light again, bend again) turned those jumps into bends and pruning
-  // far from any obstacle.
-  void add_bud(const Eigen::Vector3d& p);
 
   // Taken from a per-thread pool and given back: touching fresh memory costs more than an
   // adaptation on virtual machines, and experiments adapt thousands of trees in turn.

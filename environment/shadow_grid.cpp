@@ -315,6 +315,84 @@ double ShadowGrid::voxel_shade(int i, int j, int k) const {
   return s;
 }
 
+namespace {
+
+// Corner c (bits x, y, z) of the eight voxel centres around a point.
+Eigen::Vector3i corner_offset(int c) { return {c & 1, (c >> 1) & 1, (c >> 2) & 1}; }
+
+}  // namespace
+
+double ShadowGrid::Corners::weight(int c) const {
+  const Eigen::Vector3i o = corner_offset(c);
+  double w = 1.0;
+  for (int a = 0; a < 3; ++a) w *= o[a] ? t[a] : 1.0 - t[a];
+  return w;
+}
+
+bool ShadowGrid::corners_of(const Eigen::Vector3d& p, Corners& k) const {
+  const Eigen::Vector3d g = (p - origin_) / p_.voxel_size_m - Eigen::Vector3d::Constant(0.5);
+  const Eigen::Vector3d base = g.array().floor();
+  if (!base.allFinite() || (base.array().abs() > 1e9).any()) return false;
+  k.base = base.cast<int>();
+  k.t = g - base;
+  return true;
+}
+
+bool ShadowGrid::inside(const Eigen::Vector3i& v) const {
+  return (v.array() >= 0).all() && (v.array() < n_.array()).all();
+}
+
+void ShadowGrid::add_bud_spread(const Eigen::Vector3d& p, double weight) {
+  Corners k;
+  if (!corners_of(p, k)) return;
+  for (int c = 0; c < 8; ++c) {
+    const Eigen::Vector3i v = k.base + corner_offset(c);
+    const double w = k.weight(c);
+    if (w <= 0.0 || !inside(v)) continue;
+    const std::size_t at = index(v.x(), v.y(), v.z());
+    source_[at] += p_.shade_a * weight * w;
+    touched_.push_back(at);
+  }
+}
+
+// Palubicki's Q / C at each corner without the bud's own shade: its share a w at the corner
+// itself, and at a lower corner the upper corners' shares one layer up (every lower corner's
+// pyramid takes in all four, at b^-1). Outside the grid nothing shades.
+double ShadowGrid::spread_bud_light(const Eigen::Vector3d& p) const {
+  Corners k;
+  if (!corners_of(p, k)) return 1.0;
+  const double upper_share = k.t.z();
+  double light = 0.0;
+  for (int c = 0; c < 8; ++c) {
+    const Eigen::Vector3i v = k.base + corner_offset(c);
+    const double w = k.weight(c);
+    if (w <= 0.0) continue;
+    if (!inside(v)) {
+      light += w;
+      continue;
+    }
+    if (obstacle_[index(v.x(), v.y(), v.z())]) continue;
+    const bool upper = corner_offset(c).z() > 0;
+    const double own = p_.shade_a * (w + (upper ? 0.0 : upper_share / p_.shade_b));
+    const double s = voxel_shade(v.x(), v.y(), v.z()) - own;
+    light += w * std::min(std::max(p_.full_light - s, 0.0) / p_.full_light, 1.0);
+  }
+  return light;
+}
+
+Eigen::Vector3d ShadowGrid::spread_light_direction(const Eigen::Vector3d& p) const {
+  Corners k;
+  if (!corners_of(p, k)) return Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d d = Eigen::Vector3d::Zero();
+  for (int c = 0; c < 8; ++c) {
+    const Eigen::Vector3i v = k.base + corner_offset(c);
+    const double w = k.weight(c);
+    if (w <= 0.0) continue;
+    d += w * (inside(v) ? light_direction_at(v) : Eigen::Vector3d::UnitZ());
+  }
+  return d.normalized();
+}
+
 double ShadowGrid::shade(const Eigen::Vector3d& p) const {
   Eigen::Vector3i v;
   return voxel_of(p, v) ? voxel_shade(v.x(), v.y(), v.z()) : 0.0;
@@ -368,6 +446,10 @@ Eigen::Vector3d ShadowGrid::growth_direction(const Eigen::Vector3d& p) const {
 Eigen::Vector3d ShadowGrid::light_direction(const Eigen::Vector3d& p) const {
   Eigen::Vector3i v;
   if (!voxel_of(p, v)) return Eigen::Vector3d::UnitZ();
+  return light_direction_at(v);
+}
+
+Eigen::Vector3d ShadowGrid::light_direction_at(const Eigen::Vector3i& v) const {
   const double dark = p_.full_light + p_.shade_a;
   const auto shade_at = [&](Eigen::Vector3i w) {
     // Beyond the grid's side nothing is known: the same as the voxel itself.

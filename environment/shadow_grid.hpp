@@ -71,16 +71,30 @@ class ShadowGrid {
   // degrees of the shadow pyramid. Smooth where growth_direction picks one of 26.
   Eigen::Vector3d light_direction(const Eigen::Vector3d& p) const;
 
+  // The same spread over the eight voxel centres around p with trilinear weights (summing to 1):
+  // the bud casts `weight` a shared among them, and its light and light direction are the
+  // corners' values interpolated, the bud's own shares removed exactly (a lone bud sees 1). At a
+  // voxel centre these are add_bud, bud_light and light_direction; between centres they change
+  // continuously with p, where the nearest voxel jumps as p crosses a voxel face.
+  void add_bud_spread(const Eigen::Vector3d& p, double weight = 1.0);
+  double spread_bud_light(const Eigen::Vector3d& p) const;
+  Eigen::Vector3d spread_light_direction(const Eigen::Vector3d& p) const;
+
   // Shade s of the voxel containing p (0 outside the grid), for tests.
   double shade(const Eigen::Vector3d& p) const;
   bool obstacle(const Eigen::Vector3d& p) const;
   Eigen::Vector3i dimensions() const { return n_; }
-  // Corner of voxel (0, 0, 0) and the voxel edge, to place sources between voxel centres.
-  const Eigen::Vector3d& origin() const { return origin_; }
-  const ShadowGridParams& params() const { return p_; }
 
  private:
   bool voxel_of(const Eigen::Vector3d& p, Eigen::Vector3i& v) const;
+  struct Corners {
+    Eigen::Vector3i base;  // voxel of the lower-left-front centre
+    Eigen::Vector3d t;     // p's position between the centres, each in [0, 1)
+    double weight(int c) const;
+  };
+  bool corners_of(const Eigen::Vector3d& p, Corners& k) const;
+  bool inside(const Eigen::Vector3i& v) const;
+  Eigen::Vector3d light_direction_at(const Eigen::Vector3i& v) const;
   std::size_t index(int i, int j, int k) const;
   Eigen::Vector3d voxel_center(int i, int j, int k) const;
   void mark_obstacle(int i, int j, int k, double translucency, double fraction);
