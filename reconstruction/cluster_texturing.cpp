@@ -58,6 +58,43 @@ double fitted_scale(const scans::ClusterHull& hull, const Pending& p, const Patc
   return p.parent == kNoPlacement ? scale : std::min(scale, p.parent_scale);
 }
 
+// How many of the patch's docking points, placed by `rotation` and `scale` at the docking
+// position, lie inside the hull: where texturing can go on.
+std::size_t dockings_inside(const scans::ClusterHull& hull, const Pending& p, const Patch& patch,
+                            const Eigen::Matrix3d& rotation, double scale) {
+  std::size_t n = 0;
+  for (const DockingPoint& dp : patch.dockings) {
+    n += inside_hull(hull, p.docking.position + scale * (rotation * dp.position));
+  }
+  return n;
+}
+
+// Pirk 3.4: of the patches that fit eq. 3.3 equally well, the one that "corresponds best to the
+// local geometry of the cluster": the most docking points inside the hull once fitted, so that
+// texturing goes on until the cluster is filled (Figure 3.7) and patches without docking points
+// (which end it) are taken where nothing more fits. Ties are drawn with the generator.
+std::uint32_t geometric_choice(const scans::ClusterHull& hull, const Pending& p,
+                               const SpeciesLibrary& library,
+                               const std::vector<std::uint32_t>& best, double roll_rad,
+                               std::mt19937_64& rng) {
+  std::vector<std::uint32_t> most;
+  std::size_t most_inside = 0;
+  for (const std::uint32_t k : best) {
+    const Patch& patch = library.patches[k];
+    const double scale = fitted_scale(hull, p, patch);
+    const std::size_t inside =
+        scale > 0.0 ? dockings_inside(hull, p, patch,
+                                      docking_rotation(patch.direction, p.docking.direction,
+                                                       roll_rad),
+                                      scale)
+                    : 0;
+    if (inside > most_inside || most.empty()) most.clear(), most_inside = inside;
+    if (inside == most_inside) most.push_back(k);
+  }
+  std::uniform_int_distribution<std::size_t> pick(0, most.size() - 1);
+  return most[pick(rng)];
+}
+
 }  // namespace
 
 double patch_fit(double thickness_r, double thickness_d, const Eigen::Vector3d& v_r,
@@ -133,8 +170,8 @@ std::vector<PlacedPatch> texture_cluster(const scans::ClusterModel& model, std::
     }
     const std::vector<std::uint32_t> best = best_fitting_patches(library, s_s, p.docking, options);
     if (best.empty()) continue;
-    std::uniform_int_distribution<std::size_t> pick(0, best.size() - 1);
-    const std::uint32_t chosen = best[pick(rng)];
+    const double roll_rad = roll(rng);
+    const std::uint32_t chosen = geometric_choice(hull, p, library, best, roll_rad, rng);
     const Patch& patch = library.patches[chosen];
     const double scale = fitted_scale(hull, p, patch);
     if (!(scale > 0.0) ||
@@ -146,7 +183,7 @@ std::vector<PlacedPatch> texture_cluster(const scans::ClusterModel& model, std::
     pp.cluster = static_cast<std::uint32_t>(cluster);
     pp.parent = p.parent;
     pp.docking = p.docking_index;
-    pp.rotation = docking_rotation(patch.direction, p.docking.direction, roll(rng));
+    pp.rotation = docking_rotation(patch.direction, p.docking.direction, roll_rad);
     pp.scale = scale;
     pp.translation = p.docking.position;
     pp.fit = patch_fit(patch.thickness, p.docking.thickness, patch.direction, p.docking.direction);

@@ -116,6 +116,25 @@ TEST(ClusterTexturing, DockingPointsTooNearTheHullStayEmpty) {
   EXPECT_EQ(texture_clusters(two_cluster_model(), hand_library(), options, rng).size(), 2u);
 }
 
+// Pirk 3.4: of patches that fit eq. 3.3 equally well, the one that suits the cluster's geometry.
+// A copy of patch 0 without docking points ties with it at the seed (same thickness and
+// direction); the seed always takes patch 0, whose docking points lie inside the box, so the
+// cluster is filled further (3 patches), never the copy that would end it (1 patch).
+TEST(ClusterTexturing, EqualFitsGoToThePatchThatKeepsFillingTheHull) {
+  SpeciesLibrary lib = hand_library();
+  Patch end_here = lib.patches[0];
+  end_here.dockings.clear();
+  lib.patches.push_back(end_here);
+  const auto copy = static_cast<std::uint32_t>(lib.patches.size() - 1);
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    std::mt19937_64 rng(seed);
+    const std::vector<PlacedPatch> placed = texture_cluster(two_cluster_model(), 0, lib, {}, rng);
+    ASSERT_EQ(placed.size(), 3u) << seed;
+    EXPECT_EQ(placed[0].patch, 0u) << seed;
+    EXPECT_NE(placed[0].patch, copy);
+  }
+}
+
 TEST(ClusterTexturing, SameSeedSameResult) {
   const SpeciesLibrary lib = make_species_library("default", {3, 5, 1});
   const scans::ClusterModel model = two_cluster_model();
