@@ -43,6 +43,7 @@ class ByteReader {
   }
   std::size_t offset() const { return pos_; }
   bool at_end() const { return pos_ == data_.size(); }
+  std::size_t remaining() const { return data_.size() - pos_; }
   [[noreturn]] void fail(const std::string& message, std::size_t at) const {
     throw ParseError(message + " at byte " + std::to_string(at), path_);
   }

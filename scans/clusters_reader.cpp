@@ -21,6 +21,14 @@ void read_skeleton(ByteReader& r, ClusterModel& m) {
   const std::uint32_t n = r.get<std::uint32_t>("the skeleton node count");
   if (n == 0) r.fail("the skeleton has no node, expected at least the root", count_at);
   const Eigen::Vector3d root_start = get_vector(r, "the root start");
+  // Each node takes at least its parent, position and radius: a count the file cannot hold is
+  // refused before anything is reserved for it.
+  constexpr std::size_t kNodeBytes = 4 + 3 * 4 + 4;
+  if (n > r.remaining() / kNodeBytes) {
+    r.fail("the skeleton node count " + std::to_string(n) + " needs more than the " +
+               std::to_string(r.remaining()) + " bytes left",
+           count_at);
+  }
   m.skeleton.reserve(n);
   for (std::uint32_t u = 0; u < n; ++u) {
     const std::size_t at = r.offset();

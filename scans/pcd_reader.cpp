@@ -1,5 +1,6 @@
 #include "scans/pcd_reader.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -28,9 +29,11 @@ struct PcdHeader {
 };
 
 std::size_t to_count(std::string_view s, const std::string& path, int line) {
+  constexpr double kMaxCount = 1e12;  // beyond any file; keeps the conversion and sums exact
   const double v = parse_coordinate(s, path, line);
-  if (v < 0 || v != std::floor(v)) {
-    throw ParseError("expected a count, got '" + std::string(s) + "'", path, line);
+  if (!(v >= 0 && v <= kMaxCount) || v != std::floor(v)) {
+    throw ParseError("expected a count from 0 to 10^12, got '" + std::string(s.substr(0, 40)) + "'",
+                     path, line);
   }
   return static_cast<std::size_t>(v);
 }
@@ -46,7 +49,13 @@ void set_column(PcdHeader& h, const std::vector<std::string_view>& f, const std:
   }
   for (std::size_t i = 1; i < f.size(); ++i) {
     PcdField& fd = h.fields[i - 1];
-    if (f[0] == "SIZE") fd.size = to_count(f[i], path, line);
+    if (f[0] == "SIZE") {
+      fd.size = to_count(f[i], path, line);
+      if (fd.size != 1 && fd.size != 2 && fd.size != 4 && fd.size != 8) {
+        throw ParseError("expected a SIZE of 1, 2, 4 or 8 bytes, got " + std::to_string(fd.size),
+                         path, line);
+      }
+    }
     if (f[0] == "TYPE") fd.type = f[i].empty() ? '?' : f[i][0];
     if (f[0] == "COUNT") fd.count = to_count(f[i], path, line);
   }
@@ -95,13 +104,15 @@ double binary_value(const PcdField& f, const char* p) {
 
 void read_binary(const PcdHeader& h, const std::array<int, 3>& col, std::string_view data,
                  const std::string& path, PointSet& out) {
+  const std::size_t bytes = data.size() - std::min(h.data_offset, data.size());
   std::size_t stride = 0;
   std::array<std::size_t, 3> at{};
   for (std::size_t i = 0; i < h.fields.size(); ++i) {
     for (int c = 0; c < 3; ++c) at[c] = col[c] == static_cast<int>(i) ? stride : at[c];
-    stride += h.fields[i].size * h.fields[i].count;
+    stride += h.fields[i].size * h.fields[i].count;  // at most 8 x 10^12 per field
   }
-  if (h.data_offset + stride * h.points > data.size()) {
+  // Divided, not multiplied: counts from the header cannot overflow the test.
+  if (h.points > 0 && (stride == 0 || stride > bytes || h.points > bytes / stride)) {
     throw ParseError("the binary data ends at byte " + std::to_string(data.size()) + ", expected " +
                          std::to_string(h.points) + " points of " + std::to_string(stride) +
                          " bytes from byte " + std::to_string(h.data_offset),
@@ -159,8 +170,13 @@ PointSet parse_pcd_points(std::string_view data, const std::string& path) {
   if (col[0] < 0 || col[1] < 0 || col[2] < 0) {
     throw ParseError("FIELDS lacks one of x, y, z", path);
   }
+  for (const int c : col) {
+    if (h.fields[c].count == 0) {
+      throw ParseError("field " + h.fields[c].name + " has COUNT 0, expected at least 1", path);
+    }
+  }
   PointSet out;
-  out.points.reserve(h.points);
+  out.points.reserve(std::min(h.points, data.size() / 2));  // the header's count is not trusted
   if (h.data == "ascii") {
     read_ascii(h, col, data, path, out);
   } else if (h.data == "binary") {

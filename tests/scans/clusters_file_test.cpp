@@ -64,6 +64,15 @@ TEST(ClustersFile, DamageIsRefusedWithTheByteOffset) {
   bad = bytes;
   bad[65] = 1;
   EXPECT_THROW(parse_clusters_bytes(bad, "p.clusters"), ParseError);
+  // A node count (offset 8 + 1 + 4 + 16) of 2^32 - 1 is refused before anything is reserved.
+  bad = bytes;
+  for (int k = 29; k < 33; ++k) bad[k] = '\xff';
+  try {
+    parse_clusters_bytes(bad, "n.clusters");
+    FAIL() << "expected a ParseError";
+  } catch (const ParseError& e) {
+    EXPECT_NE(e.message().find("node count 4294967295"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

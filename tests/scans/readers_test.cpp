@@ -124,6 +124,24 @@ TEST(PcdReader, AsciiAndBinary) {
   EXPECT_EQ(b.points[1], Eigen::Vector3d(-1, -2, -3));
   EXPECT_THROW(parse_pcd_points(head + "DATA binary_compressed\n", "c.pcd"), ParseError);
   EXPECT_THROW(parse_pcd_points(head + "DATA ascii\n1 2 3 0\n", "d.pcd"), ParseError);
+  // Header counts beyond any file, or sizes PCD does not have, are refused; a huge POINTS with
+  // little data ends where the data does, without reserving for it.
+  auto with = [&](const std::string& from, const std::string& to) {
+    std::string h = head;
+    h.replace(h.find(from), from.size(), to);
+    return h;
+  };
+  EXPECT_THROW(parse_pcd_points(with("COUNT 1 1 1 1", "COUNT 1 1 1e66 1") + "DATA ascii\n", "e"),
+               ParseError);
+  EXPECT_THROW(parse_pcd_points(with("SIZE 4 4 4 4", "SIZE 4 4 4 3") + "DATA ascii\n", "f"),
+               ParseError);
+  EXPECT_THROW(parse_pcd_points(with("COUNT 1 1 1 1", "COUNT 0 1 1 1") + "DATA ascii\n", "g"),
+               ParseError);
+  EXPECT_THROW(parse_pcd_points(with("POINTS 2", "POINTS 999999999999") + "DATA binary\n", "h"),
+               ParseError);
+  EXPECT_THROW(
+      parse_pcd_points(with("POINTS 2", "POINTS 999999999999") + "DATA ascii\n1 2 3 0\n", "i"),
+      ParseError);
 }
 
 TEST(ObjReader, GroupsFacesAndNegativeIndices) {
