@@ -101,13 +101,15 @@ void ClusterLightField::set_obstacles(const Scene& scene) {
   // The sky directions in every box's frame, converted once: the boxes do not move, and every
   // visibility ray of every cluster uses one of these directions.
   const auto n = static_cast<std::size_t>(dirs_.size());
-  box_dirs_.resize(obstacles_.boxes.size() * n);
-  for (std::size_t b = 0; b < obstacles_.boxes.size(); ++b) {
+  box_rays_.clear();
+  std::vector<Eigen::Vector3d> local(n);
+  for (const Box& b : obstacles_.boxes) {
     for (std::size_t i = 0; i < n; ++i) {
-      box_dirs_[b * n + i] =
-          obstacles_.boxes[b].local_direction(dirs_.direction(static_cast<int>(i)));
+      local[i] = b.local_direction(dirs_.direction(static_cast<int>(i)));
     }
+    box_rays_.emplace_back(local);
   }
+  box_hit_.assign(n, 0);
 }
 
 void ClusterLightField::obstacle_visibility(const Eigen::Vector3d& p, std::vector<float>& vis,
@@ -138,11 +140,11 @@ void ClusterLightField::obstacle_visibility(const Eigen::Vector3d& p, std::vecto
     distance = std::min(distance, box_distance(b, p));
     if (b.translucency >= 1.0 || b.top_z() <= p.z()) continue;
     const auto g = static_cast<float>(b.translucency);
-    // Box::ray_entry with the point converted once and the directions taken from box_dirs_.
-    const Eigen::Vector3d local = b.to_local(p);
-    const Eigen::Vector3d* local_dirs = box_dirs_.data() + k * static_cast<std::size_t>(n);
+    // Box::ray_entry with the point converted once and every direction's slab test in one
+    // branch-free pass (BoxRayDirections); the bounding cap still picks the directions used.
+    box_rays_[k].hits(b, b.to_local(p), box_hit_);
     cast(b.center, b.bounding_radius(), [&](int i) {
-      if (b.ray_entry_local(local, local_dirs[i]) >= 0.0) {
+      if (box_hit_[static_cast<std::size_t>(i)] != 0) {
         vis[static_cast<std::size_t>(i)] *= g;
         any = true;
       }

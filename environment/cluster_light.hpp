@@ -161,9 +161,10 @@ class ClusterLightField {
   std::vector<std::vector<float>> obstacle_vis_;  // per cluster: empty = open sky
   std::vector<double> sky_share_;                 // sky_light() per cluster, from obstacle_vis_
   std::vector<Eigen::Vector3d> sky_direction_;
-  std::vector<Eigen::Vector3d> box_dirs_;     // direction i in box k's frame at [k * n + i]
-  std::vector<Eigen::Vector3d> obstacle_at_;  // centre where it was computed
-  std::vector<double> obstacle_tolerance2_;   // squared move that makes it stale
+  std::vector<BoxRayDirections> box_rays_;     // the sky directions in box k's frame
+  mutable std::vector<std::uint8_t> box_hit_;  // scratch: which directions hit the box
+  std::vector<Eigen::Vector3d> obstacle_at_;   // centre where it was computed
+  std::vector<double> obstacle_tolerance2_;    // squared move that makes it stale
 
   // Uniform point grid (CSR) over alive centres.
   Eigen::Vector3d grid_lo_ = Eigen::Vector3d::Zero();

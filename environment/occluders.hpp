@@ -5,6 +5,9 @@
 // gamma. Solid occluders also stop growth.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <array>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 namespace fspm::environment {
@@ -46,6 +49,24 @@ struct Box {
   Eigen::Vector3d to_local(const Eigen::Vector3d& p) const;
   Eigen::Vector3d local_direction(const Eigen::Vector3d& dir) const;
   double ray_entry_local(const Eigen::Vector3d& o, const Eigen::Vector3d& d) const;
+};
+
+// Fixed ray directions in a box's frame, prepared for slab tests from many origins: the inverse of
+// every component is taken once, and the directions are stored by component so that one origin's
+// tests over all of them run as a branch-free loop.
+class BoxRayDirections {
+ public:
+  BoxRayDirections() = default;
+  // `local_dirs`: the directions in the box frame (Box::local_direction).
+  explicit BoxRayDirections(std::span<const Eigen::Vector3d> local_dirs);
+  std::size_t size() const { return inv_[0].size(); }
+  // hit[i] = 1 when the ray local_origin + t * dir_i enters the box (Box::ray_entry_local(
+  // local_origin, dir_i) >= 0, bit for bit: the same products, minima and maxima), else 0.
+  void hits(const Box& box, const Eigen::Vector3d& local_origin, std::span<std::uint8_t> hit) const;
+
+ private:
+  std::array<std::vector<double>, 3> inv_;  // 1 / component (0 where the ray is parallel)
+  std::array<std::vector<std::uint8_t>, 3> parallel_;
 };
 
 // The plane z = height; everything below it is inside the ground.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <random>
 #include <vector>
 
 #include "environment/light_model.hpp"
@@ -133,6 +134,47 @@ TEST(LightBoxes, DegenerateInputStaysInRange) {
   EXPECT_NEAR(m.evaluate(Eigen::Vector3d(0, 0, 1)).light, q.light(), 1e-3);
   s.sky.analytic_boxes = false;  // ray-cast over the directions, as before
   EXPECT_NEAR(LightModel(s).evaluate(Eigen::Vector3d(0, 0, 1)).light, q.light(), 0.05);
+}
+
+// The branch-free slab tests over a fixed set of directions hit exactly where the per-ray slab
+// test does, and where the test's own slab test does; directions with exactly zero components
+// (parallel to a box face) included.
+TEST(LightBoxes, BatchedSlabTestsHitWhereSingleRaysDo) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Eigen::Vector3d> dirs = {Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(),
+                                       -Eigen::Vector3d::UnitY(),
+                                       Eigen::Vector3d(1, 1, 0).normalized()};
+  while (dirs.size() < 200) {
+    const Eigen::Vector3d d(u(rng), u(rng), u(rng));
+    if (d.norm() > 0.1) dirs.push_back(d.normalized());
+  }
+  const std::vector<Box> boxes = {Box::from_min_max({-1, -2, 0}, {1, 2, 3}),
+                                  Box::wall({3.0, -30}, {3.0, 30}, 0.0, 12.0, 0.2),
+                                  Box::wall({2.0, -10}, {4.0, 10}, 0.0, 6.0, 0.3)};
+  int hits = 0;
+  for (const Box& box : boxes) {
+    std::vector<Eigen::Vector3d> local(dirs.size());
+    for (std::size_t i = 0; i < dirs.size(); ++i) local[i] = box.local_direction(dirs[i]);
+    const BoxRayDirections batch(local);
+    std::vector<std::uint8_t> hit(dirs.size());
+    for (int k = 0; k < 300; ++k) {
+      // Origins around the box, some on its faces' planes (zero-width slabs) and inside it.
+      Eigen::Vector3d p(6 * u(rng), 6 * u(rng), 3 + 4 * u(rng));
+      if (k % 10 == 0) p = box.center + box.rotation * box.half_extent;
+      batch.hits(box, box.to_local(p), hit);
+      for (std::size_t i = 0; i < dirs.size(); ++i) {
+        const bool single = box.ray_entry_local(box.to_local(p), local[i]) >= 0.0;
+        ASSERT_EQ(hit[i] != 0, single) << "origin " << p.transpose() << " direction " << i;
+        if (k % 10 != 0) {
+          EXPECT_EQ(single,
+                    testing::ray_meets_box(p, dirs[i], box.center, box.half_extent, box.rotation));
+        }
+        hits += hit[i];
+      }
+    }
+  }
+  EXPECT_GT(hits, 1000);  // the rays do meet the boxes often
 }
 
 }  // namespace
