@@ -85,7 +85,7 @@ void add_full_commands(CLI::App& app) {
     sub->allow_extras();
     sub->callback([name = std::string(c.name)] {
       throw ValueError("could not hand '" + name +
-                       "' to fspm-full: put fspm's own options (-q, -v, "
+                       "' to fspm-full: put fspm's own options (-q, -v, --json, "
                        "--memory-limit) after the command");
     });
   }

@@ -8,9 +8,9 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/global_options.hpp"
 #include "cli/output.hpp"
 #include "fspm/error.hpp"
-#include "fspm/memory_budget.hpp"
 
 int main(int argc, char** argv) {
   fspm::cli::use_checked_standard_output();
@@ -21,23 +21,8 @@ int main(int argc, char** argv) {
   CLI::App app{"fspm: functional-structural plant modelling", "fspm"};
   app.set_version_flag("--version", std::string("fspm ") + FSPM_VERSION);
   app.require_subcommand(1);
-  int verbose = 0;
-  bool quiet = false;
-  app.add_flag("-v,--verbose", verbose, "More log output on stderr (repeat for more)");
-  app.add_flag("-q,--quiet", quiet, "Only warnings and errors on stderr");
-  std::string memory_limit;
-  app.add_option("--memory-limit", memory_limit,
-                 "Largest memory a command may plan to use: 512M, 2G ... (default: half of the "
-                 "physical memory)");
-  app.parse_complete_callback([&] {
-    fspm::cli::set_verbosity(quiet ? 0 : (verbose > 0 ? 2 : 1));
-    if (!memory_limit.empty()) {
-      fspm::set_memory_limit_bytes(fspm::parse_memory_size(memory_limit, "--memory-limit"));
-    }
-  });
-  // -q, -v and --memory-limit are accepted after the subcommand too (subcommands created below
-  // inherit this).
-  app.fallthrough();
+  // -v, -q, --memory-limit and --json, before the command or after it.
+  fspm::cli::add_global_options(app);
 
   fspm::cli::add_tree_commands(app);
   fspm::cli::add_environment_commands(app);
@@ -49,6 +34,7 @@ int main(int argc, char** argv) {
   fspm::cli::add_scan_commands(app);
   fspm::cli::add_scene_commands(app);
   fspm::cli::add_full_commands(app);
+  fspm::cli::refuse_empty_values(app);
 
   try {
     try {

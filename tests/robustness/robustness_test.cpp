@@ -545,6 +545,82 @@ std::vector<Case> memory_cases() {
   };
 }
 
+// Options of the whole command line given where the command has none, and empty option values,
+// which CLI11 would otherwise read as the option's default.
+std::vector<Case> option_cases() {
+  const std::string scan = "scan " + kTree + " -o {dir}/p.ply";
+  return {
+      {"GlobalJsonOnACommandWithout",
+       {},
+       {},
+       "--json tree convert " + kTree + " {dir}/t.tree",
+       1,
+       "^fspm: error: --json: 'fspm tree convert' has no JSON output\n$",
+       {"t.tree"}},
+      {"GlobalJsonAfterACommandWithout",
+       {},
+       {},
+       "tree convert " + kTree + " {dir}/t.tree --json",
+       1,
+       "^fspm: error: --json: 'fspm tree convert' has no JSON output\n$",
+       {"t.tree"}},
+      {"EmptySeed",
+       {},
+       {},
+       scan + " --seed ''",
+       1,
+       "^fspm: error: --seed: expected a number in \\[0, [0-9]+\\], got '' \\(see fspm scan "
+       "--help\\)\\n$",
+       {"p.ply"}},
+      {"EmptyTextOption",
+       {},
+       {},
+       "tree info " + kTree + " --format ''",
+       1,
+       "^fspm: error: --format: expected a value, got an empty string \\(see fspm tree info "
+       "--help\\)\\n$"},
+      {"EmptyEnumOption",
+       {},
+       {},
+       "distance " + kTree + " " + kTree + " --cost ''",
+       1,
+       "^fspm: error: --cost: '' is not a choice"},
+      {"EmptyListElement",
+       {},
+       {},
+       "adapt " + kTree + " --scene " + kScene + " --grown-brightest 0 '' 1 -o {dir}/t.tree",
+       1,
+       "^fspm: error: --grown-brightest: expected a number in .*got ''",
+       {"t.tree"}},
+      {"EmptyMemoryLimit",
+       {},
+       {},
+       "--memory-limit '' tree info " + kTree,
+       1,
+       "^fspm: error: --memory-limit: expected a value, got an empty string"},
+      {"EmptyPositional",
+       {},
+       {},
+       "tree convert " + kTree + " ''",
+       1,
+       "^fspm: error: OUT: expected a value, got an empty string"},
+      {"EmptyOptionOfAFullCommand",
+       {{"e.toml", kSynthetic}},
+       {},
+       "run {dir}/e.toml --jobs '' --out {dir}/out",
+       1,
+       "^fspm: error: --jobs: expected a number in \\[0, 4096\\], got ''",
+       {"out"}},
+      // CLI11 reads "--steps=" as the option without its value.
+      {"EmptyValueAfterEquals",
+       {},
+       {},
+       "lsystem derive " + kGrammar + " --steps=",
+       1,
+       "^fspm: error: --steps: 1 required .* missing"},
+  };
+}
+
 // Test names in ctest and failure reports show the case's name, not its bytes.
 void PrintTo(const Case& c, std::ostream* out) { *out << c.name; }
 
@@ -585,7 +661,66 @@ TEST_P(Robustness, FailsCleanly) {
   fs::remove_all(dir);
 }
 
+// The options of the whole command line (-q, -v, --json) mean the same before the command and
+// after it: both spellings succeed, print the same stdout, and their stdout and stderr show the
+// option's effect.
+struct Spelling {
+  std::string name;
+  std::string before;  // the option before the command
+  std::string after;   // the option after the command
+  std::string out;     // regex searched in stdout
+  std::string err;     // regex searched in stderr
+};
+
+void PrintTo(const Spelling& s, std::ostream* out) { *out << s.name; }
+
+std::vector<Spelling> spellings() {
+  const std::string light = "light --scene " + kScene + " --points " + kPoints;
+  const std::string ctree = "greenlab simulate " + kPlant + " -o {dir}/p.ctree";
+  return {
+      {"JsonTreeInfo", "--json tree info " + kTree, "tree info " + kTree + " --json",
+       "^\\{\\n  \"attributes\": \\[", "^$"},
+      // Between a command group and its command.
+      {"JsonInsideGroup", "tree --json info " + kTree, "tree info " + kTree + " --json",
+       "\"nodes\": 9,", "^$"},
+      {"JsonLight", "--json " + light, light + " --json", "\"points\": 4,", "^$"},
+      // Handed over to fspm-full with the whole command line.
+      {"JsonReport", "--json report {dir}/out --no-figures", "report {dir}/out --no-figures --json",
+       "\"runs\": 1", "^$"},
+      // Without -q both commands write a line on stderr ("wrote ...").
+      {"QuietConvert", "-q tree convert " + kTree + " {dir}/t.tree",
+       "tree convert " + kTree + " {dir}/t.tree -q", "^$", "^$"},
+      {"QuietSimulate", "-q " + ctree, ctree + " -q", "^$", "^$"},
+      {"VerboseLight", "-v " + light, light + " -v", "^x,y,z,light,dx,dy,dz\\n",
+       "\\[debug\\] light: 4 points in"},
+  };
+}
+
+class GlobalOption : public ::testing::TestWithParam<Spelling> {};
+
+TEST_P(GlobalOption, SameBeforeAndAfterTheCommand) {
+  const Spelling& s = GetParam();
+  const fs::path dir = scratch_dir("global_" + s.name);
+  write_text(dir / "e.toml", kSynthetic);
+  ASSERT_EQ(run_fspm(expand("run {dir}/e.toml --out {dir}/out -q", dir)).exit_code, 0);
+  const CommandResult before = run_fspm(expand(s.before, dir));
+  const CommandResult after = run_fspm(expand(s.after, dir));
+  for (const CommandResult* r : {&before, &after}) {
+    EXPECT_EQ(r->exit_code, 0) << r->err;
+    EXPECT_TRUE(std::regex_search(r->out, std::regex(s.out))) << r->out.substr(0, 600);
+    EXPECT_TRUE(std::regex_search(r->err, std::regex(s.err))) << r->err;
+  }
+  // Timings differ from run to run; the rest of the output must not.
+  const std::regex seconds("\"seconds\": [0-9.e+-]+");
+  EXPECT_EQ(std::regex_replace(before.out, seconds, ""),
+            std::regex_replace(after.out, seconds, ""));
+  fs::remove_all(dir);
+}
+
 std::string case_name(const ::testing::TestParamInfo<Case>& info) { return info.param.name; }
+std::string spelling_name(const ::testing::TestParamInfo<Spelling>& info) {
+  return info.param.name;
+}
 
 INSTANTIATE_TEST_SUITE_P(Output, Robustness, ::testing::ValuesIn(output_cases()), case_name);
 INSTANTIATE_TEST_SUITE_P(Nesting, Robustness, ::testing::ValuesIn(nesting_cases()), case_name);
@@ -593,6 +728,8 @@ INSTANTIATE_TEST_SUITE_P(WrongInput, Robustness, ::testing::ValuesIn(wrong_input
                          case_name);
 INSTANTIATE_TEST_SUITE_P(Messages, Robustness, ::testing::ValuesIn(message_cases()), case_name);
 INSTANTIATE_TEST_SUITE_P(Memory, Robustness, ::testing::ValuesIn(memory_cases()), case_name);
+INSTANTIATE_TEST_SUITE_P(Options, Robustness, ::testing::ValuesIn(option_cases()), case_name);
+INSTANTIATE_TEST_SUITE_P(Options, GlobalOption, ::testing::ValuesIn(spellings()), spelling_name);
 
 }  // namespace
 }  // namespace fspm::testing
