@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 
 namespace fspm {
 namespace {
@@ -63,13 +64,24 @@ void refuse_binary(std::string_view chunk, std::size_t offset, const std::string
       path);
 }
 
+// A pipe or device has no size to check first: its bytes are counted as they come, and refused
+// past the memory limit (--memory-limit) as well as past the format's limit.
+[[noreturn]] void above_memory_limit(const std::string& path, std::uint64_t memory) {
+  throw MemoryLimitError("a pipe or device holding more than the memory limit of " +
+                             memory_text(static_cast<double>(memory)) + " (--memory-limit)",
+                         path);
+}
+
+// The whole content, at most `limit` bytes and within the memory limit: the bytes are kept.
 std::string read_all(const Descriptor& fd, const struct stat& st, const std::string& path,
                      std::uint64_t limit, bool text_only = false) {
   std::string text;
   if (S_ISREG(st.st_mode)) {
     if (static_cast<std::uint64_t>(st.st_size) > limit) too_large(path, limit);
+    check_memory(static_cast<double>(st.st_size), "reading the whole file", path);
     text.reserve(static_cast<std::size_t>(st.st_size));
   }
+  const std::uint64_t memory = memory_limit_bytes();
   char buffer[1 << 16];
   for (;;) {
     const ssize_t n = ::read(fd.get(), buffer, sizeof buffer);
@@ -79,7 +91,10 @@ std::string read_all(const Descriptor& fd, const struct stat& st, const std::str
       throw IoError("cannot read: " + reason(errno), path);
     }
     if (text_only) refuse_binary({buffer, static_cast<std::size_t>(n)}, text.size(), path);
-    if (text.size() + static_cast<std::size_t>(n) > limit) too_large(path, limit);
+    const std::uint64_t total = text.size() + static_cast<std::size_t>(n);
+    if (total > limit) too_large(path, limit);
+    // A regular file that grows while it is read counts like a pipe.
+    if (total > memory) above_memory_limit(path, memory);
     text.append(buffer, static_cast<std::size_t>(n));
   }
   return text;

@@ -17,7 +17,10 @@ inline constexpr std::uint64_t kMaxTreeFileBytes = std::uint64_t{16} << 30;
 
 // The whole content of `path`. Throws IoError naming the path: "cannot open: No such file or
 // directory" (or the system's other reason), "is a directory, expected a file", or "larger than
-// the limit of 1 GiB" when more than `limit` bytes are there.
+// the limit of 1 GiB" when more than `limit` bytes are there. The bytes are kept, so they also
+// stay within the memory limit (fspm/memory_budget.hpp): a larger file, or a pipe or device
+// that goes on past it, is a MemoryLimitError naming the path and the limit, raised before the
+// file is read (a regular file) or as soon as the limit is passed (a pipe or device).
 std::string read_input_file(const std::string& path, std::uint64_t limit = kMaxInputFileBytes);
 
 // read_input_file for a text format: a NUL byte (a binary file, /dev/zero) is a ParseError
@@ -25,7 +28,8 @@ std::string read_input_file(const std::string& path, std::uint64_t limit = kMaxI
 std::string read_text_input_file(const std::string& path, std::uint64_t limit = kMaxInputFileBytes);
 
 // A stream over `path` with the same checks: a regular file of at most `limit` bytes is streamed
-// from disk, anything else (a pipe, a device) is read whole, at most kMaxInputFileBytes.
+// from disk, anything else (a pipe, a device) is read whole, at most kMaxInputFileBytes and
+// within the memory limit.
 std::unique_ptr<std::istream> open_input_file(const std::string& path,
                                               std::uint64_t limit = kMaxInputFileBytes);
 

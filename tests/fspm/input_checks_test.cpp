@@ -17,6 +17,7 @@
 #include "fspm/finite_geometry.hpp"
 #include "fspm/input_file.hpp"
 #include "fspm/nesting_depth.hpp"
+#include "tests/scoped_memory_limit.hpp"
 
 namespace fspm {
 namespace {
@@ -71,6 +72,45 @@ TEST(InputFile, TextReaderRefusesBinaryData) {
             binary + ": binary data (a NUL byte at byte 70000), expected a text file");
   EXPECT_EQ(message_of([&] { read_text_input_file("/dev/zero"); }),
             "/dev/zero: binary data (a NUL byte at byte 0), expected a text file");
+  fs::remove_all(dir);
+}
+
+// Bytes read whole are kept: they stay within the memory limit, told before reading a regular
+// file and as soon as a pipe or device passes it.
+TEST(InputFile, WholeReadsStayWithinTheMemoryLimit) {
+  const test_support::ScopedMemoryLimit limit(std::uint64_t{1} << 20);
+  const fs::path dir = scratch("memory");
+  const std::string two_mib = (dir / "big.treeb").string();
+  std::ofstream(two_mib, std::ios::binary) << std::string(std::size_t{2} << 20, 'x');
+  EXPECT_EQ(message_of([&] { read_input_file(two_mib); }),
+            two_mib +
+                ": reading the whole file needs about 2 MiB, above the memory limit of "
+                "1 MiB (--memory-limit)");
+  // A regular file is streamed, not held: its own limit applies, not the memory limit.
+  EXPECT_NO_THROW(open_input_file(two_mib));
+  const std::string device_message =
+      "/dev/zero: a pipe or device holding more than the memory limit of 1 MiB (--memory-limit)";
+  EXPECT_EQ(message_of([&] { read_input_file("/dev/zero"); }), device_message);
+  EXPECT_EQ(message_of([&] { open_input_file("/dev/zero", kMaxTreeFileBytes); }), device_message);
+  // A pipe with 1 MiB + 1 byte in it: one byte over.
+  const fs::path fifo = dir / "in.fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::thread writer([&] {
+    std::ofstream out(fifo, std::ios::binary);
+    out << std::string((std::size_t{1} << 20) + 1, 'y');
+  });
+  EXPECT_EQ(message_of([&] { read_input_file(fifo.string()); }),
+            fifo.string() +
+                ": a pipe or device holding more than the memory limit of 1 MiB "
+                "(--memory-limit)");
+  writer.join();
+  // Exactly at the limit is read.
+  std::thread exact_writer([&] {
+    std::ofstream out(fifo, std::ios::binary);
+    out << std::string(std::size_t{1} << 20, 'z');
+  });
+  EXPECT_EQ(read_input_file(fifo.string()).size(), std::size_t{1} << 20);
+  exact_writer.join();
   fs::remove_all(dir);
 }
 
