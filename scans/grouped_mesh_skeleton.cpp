@@ -1,10 +1,14 @@
 #include "scans/grouped_mesh_skeleton.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <numbers>
+#include <numeric>
+#include <set>
 
 #include "fspm/error.hpp"
 
@@ -16,17 +20,81 @@ struct Section {
   double radius;
 };
 
-// Midpoint and inscribed radius of each face of group g, in file order.
+// Newell's normal of a polygon (not normalised; zero for a degenerate one).
+Eigen::Vector3d newell_normal(const GroupedMesh& m, const std::vector<std::uint32_t>& face) {
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  for (std::size_t k = 0; k < face.size(); ++k) {
+    const Eigen::Vector3d& a = m.vertices[face[k]];
+    const Eigen::Vector3d& b = m.vertices[face[(k + 1) % face.size()]];
+    n += Eigen::Vector3d((a.y() - b.y()) * (a.z() + b.z()), (a.z() - b.z()) * (a.x() + b.x()),
+                         (a.x() - b.x()) * (a.y() + b.y()));
+  }
+  return n;
+}
+
+// Two faces that share an edge lie in one plane when their normals are parallel (within about
+// 0.1 degree, the rounding of single-precision coordinates).
+bool coplanar(const GroupedMesh& m, const std::vector<std::uint32_t>& a,
+              const std::vector<std::uint32_t>& b) {
+  const Eigen::Vector3d na = newell_normal(m, a), nb = newell_normal(m, b);
+  const double scale = na.norm() * nb.norm();
+  return scale > 0.0 && std::abs(na.dot(nb)) >= (1.0 - 1e-6) * scale;
+}
+
+// The faces of group g that make one cross-section each: a face, joined with the faces that share
+// an edge with it and lie in its plane (a polygon an exporter split into triangles, as glTF
+// stores only triangles). Vertices are compared by position, since exporters repeat them per
+// face. Cross-sections come in the order of their first face in the file.
+std::vector<std::vector<Eigen::Vector3d>> cross_sections(const GroupedMesh& m, std::uint32_t g) {
+  std::vector<std::size_t> faces;
+  for (std::size_t f = 0; f < m.faces.size(); ++f) {
+    if (m.face_group[f] == g) faces.push_back(f);
+  }
+  std::map<std::array<double, 3>, std::uint32_t> id_of;  // one id per distinct position
+  const auto id = [&](std::uint32_t v) {
+    const Eigen::Vector3d& p = m.vertices[v];
+    return id_of.try_emplace({p.x(), p.y(), p.z()}, static_cast<std::uint32_t>(id_of.size()))
+        .first->second;
+  };
+  std::vector<std::size_t> root(faces.size());
+  std::iota(root.begin(), root.end(), std::size_t{0});
+  const auto find = [&root](std::size_t i) {
+    while (root[i] != i) i = root[i] = root[root[i]];
+    return i;
+  };
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> first_face_of_edge;
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const std::vector<std::uint32_t>& f = m.faces[faces[i]];
+    for (std::size_t k = 0; k < f.size(); ++k) {
+      const std::uint32_t a = id(f[k]), b = id(f[(k + 1) % f.size()]);
+      const auto [it, fresh] = first_face_of_edge.try_emplace(std::minmax(a, b), i);
+      if (!fresh && coplanar(m, m.faces[faces[it->second]], f)) root[find(i)] = find(it->second);
+    }
+  }
+  std::vector<std::vector<Eigen::Vector3d>> out;
+  std::map<std::size_t, std::size_t> section_of_root;
+  std::vector<std::set<std::uint32_t>> seen;
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const auto [it, fresh] = section_of_root.try_emplace(find(i), out.size());
+    if (fresh) out.emplace_back(), seen.emplace_back();
+    for (std::uint32_t v : m.faces[faces[i]]) {
+      if (seen[it->second].insert(id(v)).second) out[it->second].push_back(m.vertices[v]);
+    }
+  }
+  return out;
+}
+
+// Midpoint and inscribed radius of each cross-section of group g, in file order: the radius of
+// the regular n-gon whose corners are, on average, as far from the midpoint as the section's.
 std::vector<Section> sections(const GroupedMesh& m, std::uint32_t g) {
   std::vector<Section> out;
-  for (std::size_t f = 0; f < m.faces.size(); ++f) {
-    if (m.face_group[f] != g) continue;
+  for (const std::vector<Eigen::Vector3d>& corners : cross_sections(m, g)) {
     Eigen::Vector3d mid = Eigen::Vector3d::Zero();
-    for (std::uint32_t v : m.faces[f]) mid += m.vertices[v];
-    mid /= static_cast<double>(m.faces[f].size());
+    for (const Eigen::Vector3d& p : corners) mid += p;
+    const double n = static_cast<double>(corners.size());
+    mid /= n;
     double r = 0.0;
-    for (std::uint32_t v : m.faces[f]) r += (m.vertices[v] - mid).norm();
-    const double n = static_cast<double>(m.faces[f].size());
+    for (const Eigen::Vector3d& p : corners) r += (p - mid).norm();
     out.push_back({mid, r / n * std::cos(std::numbers::pi / n)});
   }
   return out;

@@ -1,11 +1,14 @@
 #pragma once
 // The skeleton of a tree model exported with one mesh group per branch (Reynolds et al. 2011,
 // sec. 3.1, Xfrog's square cross-section primitive): every face of a group is one cross-section
-// of the branch; the bones join the midpoints of consecutive cross-sections in file order. A
+// of the branch, faces that share an edge and lie in one plane are one (a polygon split into
+// triangles, as glTF stores it); the bones join the midpoints of consecutive cross-sections in
+// file order. A
 // group's level is its name without the trailing sequence number ("Branch2_17" and "Branch2_3"
 // share the level "Branch2_"); levels are ranked by their first appearance in the file, the
 // trunk's first. A branch of level L > 0 hangs at the point of level L - 1 nearest to its first
-// midpoint. Radii are the inscribed radius of each cross-section polygon.
+// midpoint. Radii are the inscribed radius of each cross-section polygon. Groups are OBJ groups or
+// glTF nodes (scans/mesh_file.hpp).
 #include "fspm/tree_graph.hpp"
 #include "scans/obj_reader.hpp"
 

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "fspm/error.hpp"
+#include "scans/gltf_reader.hpp"
 #include "scans/ply_reader.hpp"
 
 namespace fspm::scans {
@@ -21,14 +22,21 @@ std::string lower_extension(std::string_view path) {
 
 bool is_mesh_file(std::string_view path) {
   const std::string ext = lower_extension(path);
-  return ext == ".obj" || ext == ".ply";
+  return ext == ".ply" || is_grouped_mesh_file(path);
 }
 
-GroupedMesh read_mesh_file(const std::string& path) {
+bool is_grouped_mesh_file(std::string_view path) {
   const std::string ext = lower_extension(path);
+  return ext == ".obj" || ext == ".gltf" || ext == ".glb";
+}
+
+GroupedMesh read_mesh_file(const std::string& path, std::string_view format) {
+  const std::string ext = format.empty() ? lower_extension(path) : "." + std::string(format);
   if (ext == ".obj") return read_obj_mesh(path);
   if (ext == ".ply") return read_ply_mesh(path);
-  throw ValueError("unknown mesh extension '" + ext + "', expected .obj or .ply", path);
+  if (ext == ".gltf" || ext == ".glb") return read_gltf_mesh(path);
+  throw ValueError("unknown mesh extension '" + ext + "', expected .obj, .ply, .gltf or .glb",
+                   path);
 }
 
 }  // namespace fspm::scans

@@ -1,6 +1,6 @@
 #pragma once
-// Reading a point set by file extension: .ply, .xyz/.txt/.csv, .pcd, and .obj (the mesh's
-// vertices). Throws ValueError for another extension.
+// Reading a point set by file extension: .ply, .xyz/.txt/.csv, .pcd, and the meshes .obj, .gltf and
+// .glb (their vertices, scans/mesh_file.hpp). Throws ValueError for another extension.
 #include <string>
 
 #include "scans/point_set.hpp"

@@ -12,8 +12,9 @@ packages=(
   libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev
   # SIMD light kernels with run-time target dispatch (Google Highway)
   libhwy-dev
-  # scans: nanoflann for the neighbour graph of point sets, CGAL for the alpha-shape cluster hulls
-  libnanoflann-dev libcgal-dev
+  # scans: nanoflann for the neighbour graph of point sets, CGAL for the alpha-shape cluster hulls,
+  # assimp for glTF 2.0 mesh input (.gltf, .glb)
+  libnanoflann-dev libcgal-dev libassimp-dev
   # graphics (optional parts: VTK renders, the viewer, image output)
   libvtk9-dev libopenimageio-dev openimageio-tools python3-imath libglfw3-dev libgl-dev libglx-mesa0 libgl1-mesa-dri xvfb xauth
   # HTML report (fspm report --html): zlib gzips its trees; chromium checks it in tests (node and
