@@ -90,8 +90,8 @@ void add_encode_command(CLI::App& app) {
       "Cluster-based representation of a scanned tree (Pirk sec. 3.3): skeleton, radii, "
       "leaf clusters");
   e->add_option("INPUT", o->input,
-                "Point set (.ply, .xyz, .txt, .csv, .pcd), mesh (.obj: its vertices) or tree "
-                "model (.tree, .treeb, .nwk: scanned from four positions first)")
+                "Point set (.ply, .xyz, .txt, .csv, .pcd), mesh (.obj, .gltf, .glb: its "
+                "vertices) or tree model (.tree, .treeb, .nwk: scanned from four positions first)")
       ->required();
   e->add_option("-o,--output", o->output, "The .clusters file to write")->required();
   e->add_option("--species", o->species, "Parameters of Pirk Table 3.1 (pine, willow, ...)");

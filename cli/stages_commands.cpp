@@ -38,8 +38,8 @@ struct StagesOptions {
   bool uniform_laplacian = false;
 };
 
-// The given tree: a tree file, or the skeleton of a branch mesh (.obj, .ply) by contraction, whose
-// figures go to `info`.
+// The given tree: a tree file, or the skeleton of a branch mesh (.obj, .ply, .gltf, .glb) by
+// contraction, whose figures go to `info`.
 TreeGraph read_given_tree(const StagesOptions& o, nlohmann::json& info) {
   if (!scans::is_mesh_file(o.tree)) return read_tree_file(o.tree);
   const auto t0 = std::chrono::steady_clock::now();
@@ -154,8 +154,8 @@ void add_stages_commands(CLI::App& app) {
       "stages",
       "Developmental stages of a static tree (Pirk ch. 5): any stage from young to the given tree");
   s->add_option("TREE", o->tree,
-                "The grown tree (.tree, .treeb, .nwk, .mtg), or its branch mesh (.obj, .ply), "
-                "whose skeleton is found by mesh contraction (Pirk 5.2.1)")
+                "The grown tree (.tree, .treeb, .nwk, .mtg), or its branch mesh (.obj, .ply, "
+                ".gltf, .glb), whose skeleton is found by mesh contraction (Pirk 5.2.1)")
       ->required();
   s->add_option("-o,--output", o->output,
                 "Tree file for --at; folder of stage_NNN files for --steps")

@@ -13,6 +13,7 @@
 #include "fspm/tree_file.hpp"
 #include "fspm/tree_summary.hpp"
 #include "scans/grouped_mesh_skeleton.hpp"
+#include "scans/mesh_file.hpp"
 
 namespace fspm::cli {
 namespace {
@@ -82,11 +83,13 @@ void run_info(const InfoOptions& o) {
 
 void run_convert(const ConvertOptions& o) {
   refuse_overwriting_input(o.out, {o.in});
-  // A grouped OBJ mesh (one group per branch) gives its skeleton (Reynolds et al. 2011, 3.1).
-  const bool obj =
-      o.from == "obj" || (o.from.empty() && std::filesystem::path(o.in).extension() == ".obj");
-  const TreeGraph tree = obj ? scans::grouped_mesh_skeleton(scans::read_obj_mesh(o.in), o.in)
-                             : read_tree_file(o.in, o.from);
+  // A grouped mesh (one OBJ group or glTF node per branch) gives its skeleton (Reynolds et al.
+  // 2011, 3.1).
+  const bool mesh = o.from == "obj" || o.from == "gltf" || o.from == "glb" ||
+                    (o.from.empty() && scans::is_grouped_mesh_file(o.in));
+  const TreeGraph tree =
+      mesh ? scans::grouped_mesh_skeleton(scans::read_mesh_file(o.in, o.from), o.in)
+           : read_tree_file(o.in, o.from);
   write_tree_file(tree, o.out, o.to);
   if (verbosity() > 0) {
     std::cerr << "wrote " << o.out << " (" << tree.size() << " nodes)\n";
@@ -110,11 +113,11 @@ void add_tree_commands(CLI::App& app) {
   auto conv = std::make_shared<ConvertOptions>();
   CLI::App* c = tree->add_subcommand("convert", "Convert a tree file to another format");
   c->add_option("IN", conv->in,
-                "Input tree file (.tree, .treeb, .nwk, .mtg), or an .obj mesh with one group "
-                "per branch (its skeleton)")
+                "Input tree file (.tree, .treeb, .nwk, .mtg), or a mesh with one group per "
+                "branch (.obj groups, .gltf/.glb nodes; its skeleton)")
       ->required();
   c->add_option("OUT", conv->out, "Output tree file (.tree, .treeb, .nwk, .mtg)")->required();
-  c->add_option("--from", conv->from, "Input format: " + formats + ", or obj");
+  c->add_option("--from", conv->from, "Input format: " + formats + ", or obj, gltf, glb");
   c->add_option("--format,--to", conv->to, "Output format: " + formats);
   c->callback([conv] { run_convert(*conv); });
 }

@@ -94,7 +94,8 @@ void bind_scans(py::module_& m) {
         return vector_rows(set.points);
       },
       py::arg("path"),
-      "The points of a point-set file (.ply ASCII or binary, .xyz/.txt/.csv, .pcd) as an (N, 3) "
+      "The points of a point-set file (.ply ASCII or binary, .xyz/.txt/.csv, .pcd), or the "
+      "vertices of a mesh (.obj, glTF 2.0 .gltf/.glb with node transforms applied), as an (N, 3) "
       "float64 array in the file's units (metres expected)");
   m.def(
       "species_presets",

@@ -70,6 +70,29 @@ def test_point_files_read_as_written(tmp_path):
         fspm.read_points(str(tmp_path / "missing.xyz"))
 
 
+def test_read_points_of_a_gltf_applies_the_node_transform(tmp_path):
+    import base64
+    import json
+    # A triangle moved by its node's translation (glTF 2.0 sec. 3.5.3).
+    corners = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0]], dtype="<f4")
+    data = corners.tobytes() + np.array([0, 1, 2], dtype="<u4").tobytes()
+    gltf = {
+        "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+        "nodes": [{"name": "leaf", "mesh": 0, "translation": [1, 2, 3]}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+        "buffers": [{"byteLength": len(data), "uri": "data:application/octet-stream;base64,"
+                     + base64.b64encode(data).decode()}],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36},
+                        {"buffer": 0, "byteOffset": 36, "byteLength": 12}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                       "min": [0, 0, 0], "max": [1, 1, 0]},
+                      {"bufferView": 1, "componentType": 5125, "count": 3, "type": "SCALAR"}],
+    }
+    path = tmp_path / "leaf.gltf"
+    path.write_text(json.dumps(gltf))
+    np.testing.assert_allclose(fspm.read_points(str(path)), corners + [1, 2, 3], rtol=1e-12)
+
+
 def test_simulated_scans_depend_only_on_the_seed():
     tree = fspm.Tree.from_arrays(
         parents=[-1, 0], starts=[[0, 0, 0], [0, 0, 1]], ends=[[0, 0, 1], [0.5, 0, 1.5]],

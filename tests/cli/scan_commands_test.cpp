@@ -1,4 +1,4 @@
-// fspm scan, fspm encode and fspm tree convert of a grouped OBJ, run as a user would.
+// fspm scan, fspm encode and fspm tree convert of a grouped OBJ or glTF, run as a user would.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -7,6 +7,7 @@
 
 #include "fspm/tree_file.hpp"
 #include "tests/cli/run_command.hpp"
+#include "tests/scans/gltf_test_file.hpp"
 
 namespace fspm {
 namespace {
@@ -72,6 +73,46 @@ TEST(ScanCli, TreeConvertReadsAGroupedObj) {
   ASSERT_EQ(t.size(), 5u);
   EXPECT_EQ(t.parent(3), 0u);  // the branch hangs at the trunk point z = 1
   EXPECT_NEAR(t.radius(4), 0.05, 1e-9);
+}
+
+// A mesh as input of encode: its vertices are the points (fspm mesh's own count of what it wrote).
+TEST(ScanCli, EncodeReadsTheVerticesOfAGlb) {
+  const auto dir = scratch_dir("scan_glb");
+  const std::string mesh = (dir / "tree.glb").string();
+  auto r = run_fspm("mesh " + kTree + " -o " + mesh + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto written = nlohmann::json::parse(r.out);
+  r = run_fspm("encode " + mesh + " -o " + (dir / "tree.clusters").string() + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["points"], written["vertices"]);
+  EXPECT_GE(j["skeleton_nodes"].get<int>(), 1);
+}
+
+// The branches of TreeConvertReadsAGroupedObj as glTF nodes, each square split into two
+// triangles: the same skeleton.
+TEST(ScanCli, TreeConvertReadsAGroupedGlb) {
+  const auto dir = scratch_dir("scan_glb_groups");
+  std::vector<scans::test::GltfPart> parts{{"trunk1", "a", {}, {}}, {"branch1", "b", {}, {}}};
+  const auto square = [](scans::test::GltfPart& p, float x, float y, float z, float w) {
+    const auto first = static_cast<std::uint32_t>(p.positions.size() / 3);
+    for (const auto& [dx, dy] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}) {
+      p.positions.insert(p.positions.end(), {x + dx * w / 2, y + dy * w / 2, z});
+    }
+    p.indices.insert(p.indices.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
+  };
+  for (int k = 0; k < 4; ++k) square(parts[0], 0, 0, static_cast<float>(k), 0.25f);
+  for (int k = 1; k <= 2; ++k) square(parts[1], 0.5f * k, 0, 1.25f + 0.25f * k, 0.125f);
+  const std::string glb = (dir / "branches.glb").string();
+  scans::test::write_glb(glb, parts);
+  const std::string tree = (dir / "tree.tree").string();
+  const auto r = run_fspm("tree convert " + glb + " " + tree);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const TreeGraph t = read_tree_file(tree);
+  ASSERT_EQ(t.size(), 5u);
+  EXPECT_EQ(t.parent(3), 0u);  // the branch hangs at the trunk point z = 1
+  EXPECT_NEAR(t.radius(0), 0.125, 1e-6);
+  EXPECT_NEAR(t.radius(4), 0.0625, 1e-6);
 }
 
 }  // namespace

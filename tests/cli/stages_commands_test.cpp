@@ -124,5 +124,33 @@ TEST(StagesCli, BranchMeshThroughItsSkeleton) {
   for (NodeId i = 0; i < last.size(); ++i) ASSERT_LT((last.end(i) - skeleton.end(i)).norm(), 1e-9);
 }
 
+// The same mesh as binary glTF (.glb, read through assimp): every vertex and triangle `fspm mesh`
+// wrote comes back, and the skeleton has the given tree's height.
+TEST(StagesCli, GlbBranchMeshThroughItsSkeleton) {
+  const auto dir = scratch_dir("stages_glb");
+  const std::string mesh = (dir / "tree.glb").string();
+  auto r = run_fspm("mesh " + kTree + " -o " + mesh + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto written = nlohmann::json::parse(r.out);
+  r = run_fspm("stages " + mesh + " --at 1 -o " + (dir / "last.treeb").string() + " --skeleton " +
+               (dir / "skeleton.treeb").string() + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["mesh"]["vertices"], written["vertices"]);
+  EXPECT_EQ(j["mesh"]["faces"], written["triangles"]);
+  const auto height = [](const TreeGraph& g) {
+    double top = -1e9, bottom = 1e9;
+    for (NodeId i = 0; i < g.size(); ++i) {
+      if (g.kind(i) != OrganKind::kInternode) continue;
+      top = std::max({top, g.start(i).z(), g.end(i).z()});
+      bottom = std::min({bottom, g.start(i).z(), g.end(i).z()});
+    }
+    return top - bottom;
+  };
+  const double given_height = height(read_tree_file(kTree));
+  EXPECT_NEAR(height(read_tree_file((dir / "skeleton.treeb").string())), given_height,
+              0.02 * given_height);
+}
+
 }  // namespace
 }  // namespace fspm
