@@ -21,6 +21,11 @@ bool same_point(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return (a - b).norm() <= 1e-9 * (1.0 + std::max(a.norm(), b.norm()));
 }
 
+// Whether p is the end point of internode x or on its surface there (within its radius).
+bool at_joint(const Eigen::Vector3d& p, const NodeData& x) {
+  return same_point(p, x.end) || (p - x.end).norm() <= x.radius * (1.0 + 1e-9);
+}
+
 // A reduced prototype being assembled: its nodes (parents before children), their user
 // attributes (one column per name of the whole tree) and the substructures it still places.
 struct Draft {
@@ -68,7 +73,9 @@ std::vector<NodeId> merge_collinear(Draft& d) {
       if (column[a] != column[b]) return false;
     }
     for (const NodeId c : kids[a]) {
-      if (c != b && into[c] == c && same_point(d.nodes[c].start, x.end)) return false;
+      // A child grows at the joint when it starts there or on the axis surface around it
+      // (leaves pushed to the surface, Jaeger 3.1.3).
+      if (c != b && into[c] == c && at_joint(d.nodes[c].start, x)) return false;
     }
     for (const auto& t : loose) {
       if (same_point(t, x.end)) return false;

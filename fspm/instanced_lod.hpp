@@ -20,8 +20,9 @@ struct LevelOfDetail {
   // Merges an internode into its parent internode when it continues it: it starts where the
   // parent ends, in the same direction (cosine within 1e-9), with the same kind, physiological
   // age, branching order and user attributes, and nothing else (no other node, no substructure)
-  // starts at that point. The merged internode keeps the parent's start, birth time and
-  // direction, ends where the child ends, and takes the length-weighted mean radius.
+  // starts at that point (for other nodes: or within the parent's radius of it, where leaves
+  // pushed to the axis surface start). The merged internode keeps the parent's start, birth time
+  // and direction, ends where the child ends, and takes the length-weighted mean radius.
   bool merge_collinear = false;
 
   bool active() const { return merge_collinear || max_order < kUnlimitedOrder; }

@@ -215,6 +215,17 @@ AgeParams read_age(const toml::table& table, const std::string& path, const std:
   a.internode_radius_m = r.get_nonnegative("internode_radius", 0.05);
   a.radius_growth_m = r.get_nonnegative("radius_growth", 0.0);
   a.leaf_length_m = r.get_nonnegative("leaf_length", 0.3);
+  if (const toml::node* s = r.find("leaf_on_surface")) {
+    const auto v = s->value_exact<bool>();
+    if (!v) {
+      throw ParseError("key '" + r.key_name("leaf_on_surface") + "' must be true or false", file,
+                       line_of(*s), column_of(*s));
+    }
+    a.leaf_on_surface = *v;
+  }
+  a.leaf_angle_increase_deg =
+      r.get_double("leaf_angle_increase", 0.0, -180.0, 180.0, "an angle in [-180, 180]");
+  a.leaf_opening_cycles = r.get_nonnegative("leaf_opening", 0.0);
   auto& f = a.functional;
   f.leaf_sink = r.get_nonnegative("leaf_sink", 1.0);
   f.internode_sink = r.get_nonnegative("internode_sink", 1.0);

@@ -59,6 +59,11 @@ struct AgeParams {
   double internode_radius_m = 0.05;
   double radius_growth_m = 0.0;  // radius gained per cycle of age when no GL1 volumes exist
   double leaf_length_m = 0.3;
+  // Leaves (Jaeger 3.1.3): origin pushed from the axis centre line to its surface, and the
+  // insertion angle increased over the branching angle, eased in over the leaf's first cycles.
+  bool leaf_on_surface = false;
+  double leaf_angle_increase_deg = 0.0;
+  double leaf_opening_cycles = 0.0;  // 0: the increase applies from birth
   AgeFunctional functional;
 
   bool stochastic() const {

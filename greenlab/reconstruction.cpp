@@ -88,6 +88,12 @@ std::map<std::string, double> geometry_metadata(const PlantParams& params) {
     m[age_key(p, "internode_radius_m")] = a.internode_radius_m;
     m[age_key(p, "radius_growth_m")] = a.radius_growth_m;
     m[age_key(p, "leaf_length_m")] = a.leaf_length_m;
+    // Written only when used, so that plants without them keep their files byte for byte.
+    if (a.leaf_on_surface) m[age_key(p, "leaf_on_surface")] = 1.0;
+    if (a.leaf_angle_increase_deg != 0.0) {
+      m[age_key(p, "leaf_angle_increase_deg")] = a.leaf_angle_increase_deg;
+    }
+    if (a.leaf_opening_cycles != 0.0) m[age_key(p, "leaf_opening")] = a.leaf_opening_cycles;
   }
   const auto& f = params.functional;
   m["functional.enabled"] = f.enabled ? 1.0 : 0.0;
@@ -119,12 +125,26 @@ ReconstructionParams ReconstructionParams::from_metadata(const std::map<std::str
     a.internode_radius_m = get(age_key(p, "internode_radius_m"), a.internode_radius_m);
     a.radius_growth_m = get(age_key(p, "radius_growth_m"), a.radius_growth_m);
     a.leaf_length_m = get(age_key(p, "leaf_length_m"), a.leaf_length_m);
+    a.leaf_on_surface = get(age_key(p, "leaf_on_surface"), 0.0) != 0.0;
+    a.leaf_angle_increase_deg =
+        get(age_key(p, "leaf_angle_increase_deg"), a.leaf_angle_increase_deg);
+    a.leaf_opening_cycles = get(age_key(p, "leaf_opening"), a.leaf_opening_cycles);
   }
   r.from_volumes = get("functional.enabled", 0.0) != 0.0;
   r.leaf_thickness = get("functional.leaf_thickness", r.leaf_thickness);
   r.reference_length = get("functional.reference_length", r.reference_length);
   r.allometry_b = get("functional.allometry_b", r.allometry_b);
   return r;
+}
+
+double leaf_insertion_angle_deg(double branching_deg, double increase_deg, double opening_cycles,
+                                double leaf_age_cycles) {
+  double eased = 1.0;
+  if (opening_cycles > 0.0) {
+    const double x = std::clamp(leaf_age_cycles / opening_cycles, 0.0, 1.0);
+    eased = x * x * (3.0 - 2.0 * x);
+  }
+  return branching_deg + increase_deg * eased;
 }
 
 InternodeDimensions internode_dimensions(double pith_volume, double ring_volume,
@@ -294,9 +314,8 @@ class AxisBuilder {
           if (geo_.from_volumes) {
             leaf_length = std::sqrt(std::max(r->leaf_volume, 0.0) / geo_.leaf_thickness);
           }
-          node.start = f.position;
-          node.direction = f.axes * rp.branching.col(0);  // heading of f.axes * branching
-          node.end = f.position + node.direction * leaf_length;
+          place_leaf(f, g, rp, radius, now_ - r->birth, node);
+          node.end = node.start + node.direction * leaf_length;
           node.length = leaf_length;
           node.radius = 0.0;
           node.kind = OrganKind::kLeaf;
@@ -367,6 +386,29 @@ class AxisBuilder {
         break;
       }
       id = r->successor;
+    }
+  }
+
+  // Start and direction of the leaf at the top of a metamer of frame f and radius `radius`:
+  // along the branching direction from the centre line, or (Jaeger 3.1.3) at a larger angle and
+  // from the axis surface, on the side the leaf leans to.
+  static void place_leaf(const Frame& f, const AgeGeometry& g, const AgeRotations& rp,
+                         double radius, double leaf_age, NodeData& node) {
+    node.start = f.position;
+    if (g.leaf_angle_increase_deg == 0.0) {
+      node.direction = f.axes * rp.branching.col(0);  // heading of f.axes * branching
+    } else {
+      const double a =
+          kDegToRad * leaf_insertion_angle_deg(g.branching_angle_deg, g.leaf_angle_increase_deg,
+                                               g.leaf_opening_cycles, leaf_age);
+      node.direction = f.axes.col(0) * std::cos(a) + f.axes.col(1) * std::sin(a);
+    }
+    if (g.leaf_on_surface) {
+      // The radial direction of the leaf: its direction without the heading component.
+      const Eigen::Vector3d h = f.axes.col(0);
+      Eigen::Vector3d radial = node.direction - node.direction.dot(h) * h;
+      radial = radial.squaredNorm() > 1e-24 ? radial.normalized() : Eigen::Vector3d(f.axes.col(1));
+      node.start += radius * radial;
     }
   }
 

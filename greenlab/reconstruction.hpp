@@ -28,6 +28,9 @@ struct AgeGeometry {
   double internode_radius_m = 0.05;
   double radius_growth_m = 0.0;
   double leaf_length_m = 0.3;
+  bool leaf_on_surface = false;
+  double leaf_angle_increase_deg = 0.0;
+  double leaf_opening_cycles = 0.0;
 };
 
 struct ReconstructionParams {
@@ -44,6 +47,14 @@ struct ReconstructionParams {
 
 // The per-age geometry of a plant description, as stored in a compressed graph's metadata.
 std::map<std::string, double> geometry_metadata(const PlantParams& params);
+
+// Leaf insertion (Jaeger 3.1.3: "the insertion angle is smoothly increased, and the leaf origin
+// pushed to the branch surface"). The paper gives no formula; the increase is eased in over the
+// leaf's first `opening` cycles by the smoothstep s(x) = x^2 (3 - 2x), x = min(age / opening, 1),
+// which starts and ends with zero slope:
+//   angle(age) = branching + increase * s(x)   (opening 0: branching + increase from birth).
+double leaf_insertion_angle_deg(double branching_deg, double increase_deg, double opening_cycles,
+                                double leaf_age_cycles);
 
 // Internode height and radii from pith and ring volumes (Jaeger annex):
 //   H = H_ref (Vp / V_ref)^(b / (1 + b)),  Rp^2 = V_ref / (pi H_ref) (Vp / V_ref)^(1 / (1 + b)),
