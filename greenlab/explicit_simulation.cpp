@@ -36,10 +36,14 @@ ExplicitPlant simulate_explicit(const PlantParams& params, std::mt19937_64& rng,
       }
       if (draw(rng, a.growth_probability)) {
         if (apices[i].first_unit < 0) apices[i].first_unit = c;
+        int n = 0;
+        for (const auto& run : a.units) n += run.count;
+        int rank = 0;  // metamers of the unit so far
         for (const auto& run : a.units) {
           for (int k = 0; k < run.count; ++k) {
             const auto id = static_cast<std::int64_t>(m.size());
-            m.push_back({apices[i].age, static_cast<double>(c), -1, {}, ApexState::kNone});
+            const double birth = metamer_birth(params.birth_dates, c, ++rank, n);
+            m.push_back({apices[i].age, birth, -1, {}, ApexState::kNone});
             if (apices[i].last >= 0) {
               m[static_cast<std::size_t>(apices[i].last)].successor = id;
             } else if (apices[i].bearer >= 0) {

@@ -10,7 +10,7 @@ OrganTable organ_counts(const CompressedTreeGraph& graph, int ages, int cycles) 
   OrganTable t(static_cast<std::size_t>(ages) + 1,
                std::vector<double>(static_cast<std::size_t>(cycles) + 1, 0.0));
   for (const auto& r : graph.records()) {
-    const auto c = static_cast<long>(std::lround(r.birth));
+    const auto c = birth_cycle(r.birth);
     if (r.physiological_age < 1 || r.physiological_age > ages || c < 1 || c > cycles) continue;
     t[r.physiological_age][static_cast<std::size_t>(c)] += static_cast<double>(r.multiplicity);
   }
@@ -119,7 +119,7 @@ Gl1Result apply_functional(const PlantParams& params, CompressedTreeGraph& graph
   const double density = params.functional.density;
   for (RecordId id = 0; id < graph.size(); ++id) {
     const auto& r = graph.record(id);
-    const auto c = static_cast<long>(std::lround(r.birth));
+    const auto c = birth_cycle(r.birth);
     if (r.physiological_age < 1 || r.physiological_age > n_ages || c < 1 || c > cycles) continue;
     const auto p = static_cast<std::size_t>(r.physiological_age);
     const auto uc = static_cast<std::size_t>(c);

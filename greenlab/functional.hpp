@@ -13,7 +13,8 @@
 namespace fspm::greenlab {
 
 // Metamers per physiological age and birth cycle: counts[p][c], p = 1..P, c = 1..cycles
-// (index 0 unused).
+// (index 0 unused). A metamer born at a fractional date (continuous birth dates) counts in the
+// cycle that holds it, birth_cycle(birth): the functioning stays per cycle.
 using OrganTable = std::vector<std::vector<double>>;
 OrganTable organ_counts(const CompressedTreeGraph& graph, int ages, int cycles);
 

@@ -1,6 +1,7 @@
 #include "greenlab/plant_params.hpp"
 
 #include <toml++/toml.h>
+#include <cmath>
 #include <fstream>
 #include <limits>
 #include <set>
@@ -260,6 +261,16 @@ Functional read_functional(const toml::table& table, const std::string& file) {
 
 }  // namespace
 
+double metamer_birth(BirthDates mode, int cycle, int k, int n) {
+  if (mode == BirthDates::kCycle || n <= 0) return cycle;
+  return static_cast<double>(cycle - 1) + static_cast<double>(k) / static_cast<double>(n);
+}
+
+long birth_cycle(double birth) {
+  // Dates a rounding step above an integer c still belong to cycle c.
+  return static_cast<long>(std::ceil(birth - 1e-9));
+}
+
 bool PlantParams::stochastic() const {
   for (const auto& a : ages) {
     if (a.stochastic()) return true;
@@ -308,6 +319,17 @@ PlantParams parse_plant_params(std::string_view toml_text, const std::string& so
                        file, line_of(*root["plant"]["cycles"].node()));
     }
     params.seed = static_cast<std::uint64_t>(plant.get_int("seed", 1, 0));
+    if (const toml::node* b = plant.find("birth_dates")) {
+      const auto s = b->value<std::string>();
+      if (s == "cycle") {
+        params.birth_dates = BirthDates::kCycle;
+      } else if (s == "continuous") {
+        params.birth_dates = BirthDates::kContinuous;
+      } else {
+        throw ParseError("key 'plant.birth_dates' must be \"cycle\" or \"continuous\"", file,
+                         line_of(*b), column_of(*b));
+      }
+    }
     plant.reject_unknown();
   }
   const auto& ages = as_array(top.require("age"), "age", file);

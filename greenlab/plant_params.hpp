@@ -23,6 +23,10 @@ struct MetamerRun {
 
 enum class Terminal : std::uint8_t { kNone = 0, kFlower = 1 };
 enum class Orientation : std::uint8_t { kOrthotropic = 0, kPlagiotropic = 1 };
+// When the metamers of a growth unit appear. kCycle: all at the end of their cycle (birth date
+// c). kContinuous: one after another through the cycle, as a continuous-time simulator produces
+// them (Jaeger 4.2: time and aging attributes in floating point), metamer k of n at c - 1 + k/n.
+enum class BirthDates : std::uint8_t { kCycle = 0, kContinuous = 1 };
 
 // Organ-level GL1 parameters of one physiological age (MODELS_DIGEST §3).
 struct AgeFunctional {
@@ -93,6 +97,7 @@ inline constexpr int kMaxCycles = 10000;
 struct PlantParams {
   int cycles = 10;
   std::uint64_t seed = 1;
+  BirthDates birth_dates = BirthDates::kCycle;
   std::vector<AgeParams> ages;  // ages[i].index == i + 1
   Functional functional;
   std::vector<std::string> calibration_parameters;  // names for `fspm greenlab fit`
@@ -103,6 +108,12 @@ struct PlantParams {
   // Throws ValueError when the description is inconsistent (transitions to lower ages, ...).
   void validate() const;
 };
+
+// Birth date of metamer k (1..n) of a growth unit of n metamers grown in cycle c: c, or
+// c - 1 + k/n for continuous birth dates (the cycle spans the dates (c - 1, c]).
+double metamer_birth(BirthDates mode, int cycle, int k, int n);
+// The cycle whose dates (c - 1, c] hold a birth date: c for both kinds of birth dates.
+long birth_cycle(double birth);
 
 // Parses a plant description. Errors name the key and the line of `source_name`.
 PlantParams parse_plant_params(std::string_view toml_text, const std::string& source_name = {});

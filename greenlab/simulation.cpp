@@ -72,8 +72,12 @@ class Factorizer {
   // Appends the metamers of one growth unit of age p born in cycle c to the chain first..last.
   void grow_metamers(const AgeParams& a, int p, int c, RecordId& first, RecordId& last) {
     std::vector<RecordId> refs;
+    int n = 0;
+    for (const auto& run : a.units) n += run.count;
+    int rank = 0;  // metamers of the unit so far
     for (const auto& run : a.units) {
       for (int m = 0; m < run.count; ++m) {
+        ++rank;
         refs.clear();
         for (const auto& b : run.axillary) {
           const AgeParams& bud = params_.age(b.age);
@@ -85,7 +89,7 @@ class Factorizer {
         }
         CompressedRecord r;
         r.physiological_age = static_cast<std::uint16_t>(p);
-        r.birth = c;
+        r.birth = metamer_birth(params_.birth_dates, c, rank, n);
         const RecordId id = graph_.add_record(r, refs);
         if (last != kNoRecord) {
           graph_.set_successor(last, id);
