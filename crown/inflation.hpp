@@ -4,7 +4,8 @@
 // eq. 4.2 applied to x, y and z independently. Silhouette pixels are fixed at (i, j, 0); pixels
 // outside the crown that a stencil reaches (the outer silhouette S_o) are fixed at
 // (i - d_i / 2, j - d_j / 2, -k): half way toward the pixel consulting them, so the surface leaves
-// the silhouette with a near-vertical tangent. Solved with Eigen's SimplicialLDLT.
+// the silhouette with a near-vertical tangent. Solved with Eigen's SimplicialLDLT, the unknowns in
+// nested dissection order (crown/nested_dissection.hpp).
 #include <Eigen/Core>
 #include <vector>
 
