@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "fspm/error.hpp"
+#include "stages/profile_diagram.hpp"
 
 namespace fspm::stages {
 namespace {
@@ -90,6 +91,76 @@ NodeId append_copy(TreeGraph& out, NodeId parent, NodeId source, double turn_rad
   return out.append_subtree(parent, copy);
 }
 
+// Where copies go: the main chain's edges and arc lengths, the live laterals on it, and the
+// given tree's chains (for the profile diagrams).
+struct MainChain {
+  std::vector<NodeId> edges;
+  std::vector<double> arc;
+  std::vector<Lateral> side;
+  const std::vector<std::uint32_t>* chain = nullptr;
+};
+
+// Records the heights at which the nodes appended since `root` are attached.
+void mark_copy(AddedStructures& out, std::vector<double>& attach_height, NodeId root,
+               double height_m) {
+  attach_height.resize(out.tree.size(), std::numeric_limits<double>::quiet_NaN());
+  std::fill(attach_height.begin() + root, attach_height.end(), height_m);
+  ++out.copies;
+}
+
+// Pirk 5.3.5 heuristic: a segment whose tissue above by stratified clipping clearly exceeds that
+// by main-axis cutting carries biomass grown from elsewhere on the axis (a branch there was
+// lost); where both are low the crown is thin. Per layer of the profile diagrams.
+std::vector<std::uint8_t> overlap_layers(const TreeGraph& tree, const MainChain& m,
+                                         const AddedStructuresParams& params, double height_m,
+                                         double& layer_m) {
+  layer_m = params.overlap_layer_m > 0.0 ? params.overlap_layer_m : height_m / 20.0;
+  const ProfileDiagram stc = profile_diagram(tree, *m.chain, layer_m, Clipping::kStratified);
+  const ProfileDiagram mac = profile_diagram(tree, *m.chain, layer_m, Clipping::kMainAxis);
+  std::vector<std::uint8_t> keep(stc.tissue_above.size(), 0);
+  for (std::size_t k = 0; k < keep.size(); ++k) {
+    const double s = stc.tissue_above[k], a = mac.tissue_above[k];
+    keep[k] = s > (1.0 + params.overlap_significance) * a || std::max(s, a) < params.overlap_low;
+  }
+  return keep;
+}
+
+// Pirk 5.3.5: the overlap region is the main chain from the crown base s_b up over the length of
+// the filled sub-crown region; the laterals one copy period above it are copied down by the
+// period into it, on the segments the heuristic keeps.
+void fill_overlap(const TreeGraph& tree, const MainChain& m, const AddedStructuresParams& params,
+                  double s_b, double length_m, double period, AddedStructures& out,
+                  std::vector<double>& attach_height) {
+  const double golden_rad = std::numbers::pi * (3.0 - std::sqrt(5.0));
+  const double base_z = tree.start(0).z();
+  double layer_m = 0.0;
+  const std::vector<std::uint8_t> keep =
+      overlap_layers(tree, m, params, out.crown.height_m, layer_m);
+  const std::size_t top = nearest_edge(m.arc, m.edges.size(), s_b + length_m);
+  out.overlap_top_m = tree.end(m.edges[top]).z() - base_z;
+  for (const Lateral& l : m.side) {
+    const double target = l.arc_m - period;
+    if (target < s_b - 1e-12 || target >= s_b + length_m - 1e-12) continue;
+    const std::size_t j = nearest_edge(m.arc, m.edges.size(), target);
+    if (j + 1 >= m.edges.size()) continue;
+    if (tree.radius(l.base) * params.scale >= 0.9 * tree.radius(m.edges[j + 1])) continue;
+    const double height_m = tree.end(m.edges[j]).z() - base_z;
+    const auto layer = static_cast<std::size_t>(
+        std::clamp(std::floor(height_m / layer_m), 0.0, static_cast<double>(keep.size() - 1)));
+    if (!keep[layer]) continue;
+    const NodeId root = append_copy(out.tree, m.edges[j], l.base, golden_rad, params.scale);
+    mark_copy(out, attach_height, root, height_m);
+    out.in_overlap.resize(out.tree.size(), 0);
+    std::fill(out.in_overlap.begin() + root, out.in_overlap.end(), std::uint8_t{1});
+    ++out.overlap_copies;
+  }
+  // Eq. 5.10 with the region's top as the crown base at the given height: its copies are shed
+  // as the crown base of the stages rises through it.
+  const double h = out.crown.height_m;
+  out.overlap_curve = CrownRatioCurve(params.crown_ratio_at_zero_height, h,
+                                      h > 0.0 ? (h - out.overlap_top_m) / h : 1.0, params.gamma);
+}
+
 }  // namespace
 
 void AddedStructuresParams::validate() const {
@@ -98,6 +169,13 @@ void AddedStructuresParams::validate() const {
   }
   if (!(gamma > 0.0 && gamma <= 100.0)) throw ValueError("stages: gamma must be in (0, 100]");
   if (!(scale > 0.0 && scale <= 10.0)) throw ValueError("stages: copy scale must be in (0, 10]");
+  if (!(overlap_layer_m >= 0.0 && overlap_layer_m <= 1e4) ||
+      !(overlap_significance >= 0.0 && overlap_significance <= 100.0) ||
+      !(overlap_low >= 0.0 && overlap_low <= 1.0)) {
+    throw ValueError(
+        "stages: expected an overlap layer in [0, 1e4] m, a significance in [0, 100] and a low "
+        "share in [0, 1]");
+  }
 }
 
 double tree_height(const TreeGraph& tree) {
@@ -149,13 +227,15 @@ AddedStructures add_structures(const TreeGraph& tree, const std::vector<std::uin
   out.crown = crown_shape(tree, chain);
   out.curve = CrownRatioCurve(params.crown_ratio_at_zero_height, out.crown.height_m,
                               out.crown.crown_ratio(), params.gamma);
-  std::vector<NodeId> edges;
-  std::vector<double> arc;
-  main_chain(tree, chain, edges, arc);
-  const std::vector<Lateral> side = laterals(tree, chain, edges, arc);
+  out.attach_height_m.assign(tree.size(), std::numeric_limits<double>::quiet_NaN());
+  MainChain m;
+  m.chain = &chain;
+  main_chain(tree, chain, m.edges, m.arc);
+  m.side = laterals(tree, chain, m.edges, m.arc);
+  const std::vector<Lateral>& side = m.side;
+  const std::vector<double>& arc = m.arc;
   if (side.empty() || side.front().on == 0 ||
       out.crown.crown_ratio() >= params.crown_ratio_at_zero_height) {
-    out.attach_height_m.assign(tree.size(), std::numeric_limits<double>::quiet_NaN());
     return out;
   }
   // Pirk 5.3.5: copy the largest continuous block of crown laterals with the fewest copies. The
@@ -167,12 +247,9 @@ AddedStructures add_structures(const TreeGraph& tree, const std::vector<std::uin
   const double gap = side.size() > 1 ? span / static_cast<double>(side.size() - 1) : s_b - s_0;
   const double block = span + gap > 0.0 ? span + gap : s_b - s_0;
   const double period = std::min(s_b - s_0, block);
-  if (!(period > 0.0)) {
-    out.attach_height_m.assign(tree.size(), std::numeric_limits<double>::quiet_NaN());
-    return out;
-  }
+  if (!(period > 0.0)) return out;
   const double golden_rad = std::numbers::pi * (3.0 - std::sqrt(5.0));
-  std::vector<double> attach_height;
+  std::vector<double> attach_height = out.attach_height_m;
   for (int k = 1; s_b - k * period + period > s_0; ++k) {
     for (const Lateral& l : side) {
       const double target = l.arc_m - k * period;
@@ -180,19 +257,16 @@ AddedStructures add_structures(const TreeGraph& tree, const std::vector<std::uin
       const std::size_t j = nearest_edge(arc, bare, target);
       // A copy nearly as thick as the trunk above it would continue the main chain (5.2.2)
       // and turn the trunk into a lateral; it is left out.
-      if (tree.radius(l.base) * params.scale >= 0.9 * tree.radius(edges[j + 1])) continue;
-      const NodeId at = edges[j];
+      if (tree.radius(l.base) * params.scale >= 0.9 * tree.radius(m.edges[j + 1])) continue;
+      const NodeId at = m.edges[j];
       const NodeId root = append_copy(out.tree, at, l.base, k * golden_rad, params.scale);
-      attach_height.resize(out.tree.size(), std::numeric_limits<double>::quiet_NaN());
-      std::fill(attach_height.begin() + root, attach_height.end(),
-                tree.end(at).z() - tree.start(0).z());
-      ++out.copies;
+      mark_copy(out, attach_height, root, tree.end(at).z() - tree.start(0).z());
     }
   }
+  if (params.overlap) fill_overlap(tree, m, params, s_b, s_b - s_0, period, out, attach_height);
   attach_height.resize(out.tree.size(), std::numeric_limits<double>::quiet_NaN());
-  std::fill(attach_height.begin(), attach_height.begin() + tree.size(),
-            std::numeric_limits<double>::quiet_NaN());
   out.attach_height_m = std::move(attach_height);
+  if (!out.in_overlap.empty()) out.in_overlap.resize(out.tree.size(), 0);
   return out;
 }
 

@@ -5,9 +5,9 @@
 // branches (self-similarity) and removed again as the crown ratio falls with the tree's height
 // (Pirk eq. 5.10), so that the last stage is the given tree.
 //
-// Built: the region below the crown on the main chain (Gravelius level 1). Not built: the overlap
-// regions inside the crown found from stratified clipping against main-axis cutting (5.3.4-5.3.5)
-// and the same filling on higher-level chains.
+// Built: the region below the crown on the main chain (Gravelius level 1), and optionally the
+// overlap region above the crown base (5.3.5), filled where stratified clipping finds more tissue
+// than main-axis cutting (5.3.4). Not built: the same filling on higher-level chains.
 #include <cstdint>
 #include <vector>
 
@@ -20,8 +20,17 @@ struct AddedStructuresParams {
   // before the crown base is reached, and a grown tree that never shed needs none.
   bool enabled = false;
   double crown_ratio_at_zero_height = 0.99;  // CR_0 of eq. 5.10 (Hasenauer and Monserud)
-  double gamma = 1.0;     // eq. 5.10; != 1 moves the removal times (< 1 keeps some at t = 1)
-  double scale = 1.0;     // size of each copy relative to its source branch
+  double gamma = 1.0;  // eq. 5.10; != 1 moves the removal times (< 1 keeps some at t = 1)
+  double scale = 1.0;  // size of each copy relative to its source branch
+  // Pirk 5.3.5: also fill the overlap region, the main chain from the crown base up over the
+  // length of the filled sub-crown region, with copies kept only on segments whose tissue above
+  // T(z) by stratified clipping exceeds that by main-axis cutting by more than
+  // `overlap_significance` (relative), or where both are below `overlap_low` (shares of the
+  // whole tree). Off by default, like `enabled`.
+  bool overlap = false;
+  double overlap_layer_m = 0.0;  // Δz of the profile diagrams; 0: a twentieth of the height
+  double overlap_significance = 0.1;
+  double overlap_low = 0.05;
   void validate() const;  // throws ValueError for values out of range
 };
 
@@ -65,13 +74,21 @@ struct AddedStructures {
   std::vector<double> attach_height_m;
   CrownShape crown;
   CrownRatioCurve curve;
-  std::size_t copies = 0;  // added branches
+  std::size_t copies = 0;  // added branches, both regions
+  // Per node: 1 for the copies in the overlap region (empty without them). They are shed by
+  // `overlap_curve`, eq. 5.10 fitted to the crown ratio whose base is the region's top.
+  std::vector<std::uint8_t> in_overlap;
+  CrownRatioCurve overlap_curve;
+  std::size_t overlap_copies = 0;
+  double overlap_top_m = 0.0;  // height of the overlap region's top (0: no region)
 };
 
 // Pirk 5.3.5: the live laterals of the main chain from the crown base up are copied, as one
 // continuous block per copy and with as few copies as cover it, downward along the main chain
 // onto the bare trunk below the crown base; copy k is turned about the vertical by k times the
-// golden angle so that copies do not hide each other.
+// golden angle so that copies do not hide each other. With `overlap`, the laterals one copy
+// block above the overlap region are copied down by the same offset into it, on the segments
+// that pass the heuristic of 5.3.5 (decided once, on the given tree's profile diagrams).
 AddedStructures add_structures(const TreeGraph& tree, const std::vector<std::uint32_t>& chain,
                                const AddedStructuresParams& params);
 

@@ -58,6 +58,12 @@ void StagesParams::validate() const {
     throw ValueError("stages: same_level_tolerance must be in [0, 1]");
   }
   added.validate();
+  for (const AgeEdit& a : edits.age) {
+    if (!(std::abs(a.delta_t) <= 1.0)) {
+      throw ValueError("stages: a branch's age change must be in [-1, 1] (units of t), got " +
+                       std::to_string(a.delta_t));
+    }
+  }
 }
 
 double seasonal_time(double t, int years, double c, double s) {
@@ -70,7 +76,7 @@ double seasonal_time(double t, int years, double c, double s) {
 }
 
 DevelopmentalModel::DevelopmentalModel(const TreeGraph& tree, const StagesParams& params)
-    : tree_(tree), params_(params) {
+    : tree_(tree), params_(params), given_size_(static_cast<NodeId>(tree.size())) {
   params_.validate();
   if (tree_.empty() || !is_edge(tree_, 0)) {
     throw ValueError("developmental stages: the tree needs an internode at its root");
@@ -81,6 +87,7 @@ DevelopmentalModel::DevelopmentalModel(const TreeGraph& tree, const StagesParams
   compute_growth_times();
   compute_bending();
   compute_radius_coefficients();
+  apply_edits();
 }
 
 // Pirk 5.3.5: the given tree's main chain decides where the copies go; the model then analyses
@@ -92,6 +99,7 @@ void DevelopmentalModel::add_missing_structures() {
   added_ = add_structures(tree_, given.chain(), params_.added);
   tree_ = std::move(added_.tree);
   added_.tree = TreeGraph{};
+  added_end_ = static_cast<NodeId>(tree_.size());
 }
 
 std::size_t DevelopmentalModel::lateral_chain_count() const {
@@ -294,7 +302,8 @@ void DevelopmentalModel::stage(double t, TreeGraph& out) const {
   grown.clear_keep_capacity();
   grown.reserve(tree_.size());
   place_nodes(t, grown);
-  if (t < 1.0) add_tip_leaves(grown);
+  // A branch made younger (5.4.1) is still growing at t = 1.
+  if (t < 1.0 || !chain_shift_.empty()) add_tip_leaves(grown);
   // Pirk 5.3.6: the branches shed later still count in the radii (eq. 5.8), so removing them
   // leaves the radii below unchanged.
   set_radii(grown);
@@ -305,14 +314,20 @@ void DevelopmentalModel::stage(double t, TreeGraph& out) const {
 // h (1 - CR(h)) of the stage's height h. With gamma = 1 the last stage has the given crown base,
 // above every added branch; it is the given tree by definition, whatever the rounding.
 void DevelopmentalModel::remove_shed(double t, const TreeGraph& grown, TreeGraph& out) const {
-  const double base_m = t >= 1.0 && params_.added.gamma == 1.0
-                            ? std::numeric_limits<double>::infinity()
-                            : added_.curve.crown_base_m(tree_height(grown));
+  const bool last = t >= 1.0 && params_.added.gamma == 1.0;
+  const double height_m = tree_height(grown);
+  const double base_m =
+      last ? std::numeric_limits<double>::infinity() : added_.curve.crown_base_m(height_m);
+  // The overlap region's copies follow eq. 5.10 with the region's top as the final crown base.
+  const double overlap_base_m =
+      last ? std::numeric_limits<double>::infinity() : added_.overlap_curve.crown_base_m(height_m);
   kept_id_.assign(grown.size(), 0);  // 0: shed, 1: kept; then the new id
   for (NodeId k = 0; k < grown.size(); ++k) kept_id_[k] = 1;
-  for (NodeId i = added_.first_added; i < tree_.size(); ++i) {
+  for (NodeId i = added_.first_added; i < added_end_; ++i) {
     const bool copy_root = tree_.parent(i) < added_.first_added;
-    if (copy_root && id_of_[i] != kNoNode && added_.attach_height_m[i] < base_m) {
+    const bool overlap = !added_.in_overlap.empty() && added_.in_overlap[i];
+    if (copy_root && id_of_[i] != kNoNode &&
+        added_.attach_height_m[i] < (overlap ? overlap_base_m : base_m)) {
       kept_id_[id_of_[i]] = 0;
     }
   }
@@ -366,19 +381,21 @@ void DevelopmentalModel::place_nodes(double t, TreeGraph& out) const {
     if (p != kNoNode && (id_of_[p] == kNoNode || grown_[p] < tree_.length(p))) continue;
     const bool edge = is_edge(tree_, i);
     double length = tree_.length(i);
+    // The chain's own clock: t, unless an edit shifted it (5.4.1).
+    const double tc = edge && !chain_shift_.empty() ? t + chain_shift_[chain_[i]] : t;
     if (edge) {
-      const double reach = chain_rate_[chain_[i]] * (t - chain_start_[chain_[i]]) - offset_[i];
-      if (t < 1.0 && !(reach > 0.0)) continue;  // not started yet
+      const double reach = chain_rate_[chain_[i]] * (tc - chain_start_[chain_[i]]) - offset_[i];
+      if (tc < 1.0 && !(reach > 0.0)) continue;  // not started yet
       // At t = 1 every edge is complete (rounding must not leave one a hair short).
-      if (t < 1.0) length = std::min(reach, length);
+      if (tc < 1.0) length = std::min(reach, length);
     }
     grown_[i] = length;
     bool turned = p != kNoNode && turned_[p];
     Eigen::Quaterniond q = turned ? turn_[p] : Eigen::Quaterniond::Identity();
-    if (edge && chain_base_[i] && bend_angle_[i] != 0.0 && t < bend_end_[i]) {
+    if (edge && chain_base_[i] && bend_angle_[i] != 0.0 && tc < bend_end_[i]) {
       // Eq. 5.5: the part of the turn still to come, about the base.
       const double span = std::max(bend_end_[i] - start_time_[i], 1e-12);
-      const double done = std::clamp((t - start_time_[i]) / span, 0.0, 1.0);
+      const double done = std::clamp((tc - start_time_[i]) / span, 0.0, 1.0);
       q = q * Eigen::AngleAxisd(-(1.0 - done) * bend_angle_[i], bend_axis_[i]);
       turned = true;
     }
@@ -388,6 +405,11 @@ void DevelopmentalModel::place_nodes(double t, TreeGraph& out) const {
     d.kind = tree_.kind(i);
     d.order = static_cast<std::uint16_t>(level_[i] - 1);
     d.birth_time = start_time_[i];
+    if (!chain_shift_.empty()) {
+      NodeId e = i;  // organs take the clock of the internode bearing them
+      while (!is_edge(tree_, e)) e = tree_.parent(e);
+      d.birth_time -= chain_shift_[chain_[e]];
+    }
     d.physiological_age = tree_.physiological_age(i);
     d.radius = tree_.radius(i);
     d.length = length;

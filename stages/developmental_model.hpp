@@ -23,8 +23,8 @@
 //   - Added structures (5.3.5-5.3.6, optional): copies of the crown's laterals on the bare trunk
 //     below the crown, removed as the crown ratio of eq. 5.10 falls (stages/added_structures.hpp).
 // Mesh input (5.2.1) is reduced to a tree graph first (stages/mesh_skeleton.hpp). Not modelled:
-// the overlap regions (5.3.5; their profile diagrams of 5.3.4
-// are in stages/profile_diagram.hpp), growth-based editing (5.4.1).
+// filling chains of higher order (5.3.5). Growth-based editing of selected branches (5.4.1):
+// stages/branch_edits.hpp.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cstdint>
@@ -33,6 +33,7 @@
 
 #include "fspm/tree_graph.hpp"
 #include "stages/added_structures.hpp"
+#include "stages/branch_edits.hpp"
 
 namespace fspm::stages {
 
@@ -57,6 +58,7 @@ struct StagesParams {
   double pipe_exponent = 2.5;          // u of eq. 5.7-5.8 (Murray's 2.49)
   double same_level_tolerance = 0.05;  // 5.2.2: children within 5 % keep the parent's level
   AddedStructuresParams added;         // 5.3.5-5.3.6: branches the young tree had (off)
+  BranchEdits edits;                   // 5.4.1: branches aged or copied (none)
   void validate() const;               // throws ValueError for values out of range
 };
 
@@ -79,11 +81,17 @@ class DevelopmentalModel {
   TreeGraph stage(double t) const;
 
   // With added structures on, the analysis (chains, levels, the per-node vectors below) is of
-  // the given tree with the copies appended (node ids from the given tree's size on).
+  // the given tree with the copies appended (node ids from the given tree's size on), then the
+  // branch copies of StagesParams::edits. Times in these vectors are on each chain's own clock,
+  // which an age edit or a copy shifts by chain_shift() (stage birth times are on the common one).
   std::size_t chain_count() const { return chain_rate_.size(); }
   // Branches added below the crown (0 unless StagesParams::added is enabled), the given tree's
   // crown (always) and the crown ratio curve of eq. 5.10 fitted to it (with added structures).
   std::size_t added_branch_count() const { return added_.copies; }
+  // Of those, the copies in the overlap region above the crown base (AddedStructuresParams::
+  // overlap), and the height of that region's top (0: none).
+  std::size_t overlap_branch_count() const { return added_.overlap_copies; }
+  double overlap_top_m() const { return added_.overlap_top_m; }
   const CrownShape& crown() const { return added_.crown; }
   const CrownRatioCurve& crown_ratio_curve() const { return added_.curve; }
   std::size_t lateral_chain_count() const;
@@ -95,9 +103,17 @@ class DevelopmentalModel {
   // Per chain: growth rate (length per unit of t) and the time it starts.
   const std::vector<double>& chain_rate() const { return chain_rate_; }
   const std::vector<double>& chain_start() const { return chain_start_; }
+  // Per chain: how far its clock runs ahead of t (growth-based editing; empty without edits).
+  const std::vector<double>& chain_shift() const { return chain_shift_; }
 
  private:
   void add_missing_structures();
+  void apply_edits();
+  bool is_internode(NodeId n) const;
+  NodeId edited_branch_base(NodeId node, const char* what) const;
+  std::vector<NodeId> subtree(NodeId base) const;
+  void mark_edited_ancestors(NodeId from);
+  void append_branch_copy(const CopyEdit& edit);
   void remove_shed(double t, const TreeGraph& grown, TreeGraph& out) const;
   void assign_levels_and_chains();
   NodeId continuation(NodeId p, const std::vector<NodeId>& edges) const;
@@ -111,6 +127,9 @@ class DevelopmentalModel {
   TreeGraph tree_;  // the given tree, with the added structures appended when they are on
   StagesParams params_;
   AddedStructures added_;  // its tree is moved into tree_
+  NodeId added_end_ = 0;   // nodes added_.first_added..added_end_ - 1 are added structures
+  NodeId given_size_ = 0;  // nodes of the given tree
+  std::vector<double> chain_shift_;  // per chain, t of its own clock minus t (edits only)
   std::vector<std::uint16_t> level_;
   std::vector<std::uint32_t> chain_;
   std::vector<double> offset_;            // length of the chain before the edge

@@ -190,5 +190,90 @@ TEST(AddedStructures, BadParametersAreRejected) {
   EXPECT_THROW(DevelopmentalModel(bare_trunk(), p), ValueError);
 }
 
+// Pirk 5.3.5, overlap regions. A vertical trunk of ten unit edges (radius 0.1, ends at
+// z = 1..10); on the end of edge 3 (z = 4) a lateral rising at 45 degrees to z = 6 (length
+// 2 sqrt 2, radius 0.08), on z = 5..9 horizontal unit laterals (radius 0.05). Crown base 4,
+// height 10; the bare trunk from z = 1 to 4 is filled, so the overlap region is z in [4, 7), and
+// the copy period is 3 (the bare length; the crown block is 6): the laterals at z = 7, 8, 9 are
+// the candidates for z = 4, 5, 6.
+TreeGraph rising_lateral_tree() {
+  TreeGraph t;
+  NodeId a = kNoNode;
+  std::vector<NodeId> trunk;
+  for (int k = 0; k < 10; ++k) trunk.push_back(a = edge(t, a, Eigen::Vector3d::UnitZ(), 1.0, 0.1));
+  edge(t, trunk[3], Eigen::Vector3d(1.0, 0.0, 1.0), 2.0 * std::sqrt(2.0), 0.08);
+  for (int k = 4; k <= 8; ++k) {
+    edge(t, trunk[k], Eigen::Vector3d(k % 2 ? 1.0 : -1.0, 0.0, 0.0), 1.0, 0.05);
+  }
+  return t;
+}
+
+StagesParams with_overlap() {
+  StagesParams p = with_added();
+  p.added.overlap = true;
+  p.added.overlap_layer_m = 1.0;
+  return p;
+}
+
+// Laterals (internodes leaving the trunk) whose base is at height z.
+int laterals_at(const TreeGraph& st, double z) {
+  int count = 0;
+  for (NodeId i = 1; i < st.size(); ++i) {
+    const NodeId p = st.parent(i);
+    const bool on_trunk = st.kind(p) == OrganKind::kInternode && st.direction(p).z() > 0.999;
+    const bool lateral = st.kind(i) == OrganKind::kInternode && st.direction(i).z() < 0.999;
+    if (on_trunk && lateral && std::abs(st.start(i).z() - z) < 1e-9) ++count;
+  }
+  return count;
+}
+
+// The heuristic by hand, with layers of 1 m and no leaves (T = half the wood share above). Wood
+// pi r^2 l: trunk 10 x 0.01, horizontals 5 x 0.0025, the rising one 0.0064 * 2 sqrt 2, of which
+// stratified clipping puts half in layer 5 ([5, 6)) and main-axis cutting all in layer 4. The
+// shares above differ only in layer 5: MAC 0.0625 / W, STC (0.0625 + 0.0032 sqrt 8) / W, a ratio
+// of 1.145 > 1.1; layers 4 and 6 have a ratio of 1 and T well above 0.05. So of the three
+// candidates only the one on z = 5 is kept.
+TEST(AddedStructures, OverlapRegionIsFilledWhereStratifiedClippingExceedsMainAxisCutting) {
+  const double w = 10 * 0.01 + 5 * 0.0025 + 0.0064 * std::sqrt(8.0);
+  const double mac5 = 0.5 * (5 * 0.01 + 5 * 0.0025) / w;
+  const double stc5 = 0.5 * (5 * 0.01 + 5 * 0.0025 + 0.0032 * std::sqrt(8.0)) / w;
+  ASSERT_GT(stc5, 1.1 * mac5);  // the hand figures put layer 5 in the region kept
+  const TreeGraph t = rising_lateral_tree();
+  const DevelopmentalModel m(t, with_overlap());
+  EXPECT_EQ(m.overlap_branch_count(), 1u);
+  EXPECT_EQ(m.added_branch_count(), 4u);  // three below the crown (z = 1, 2, 3) and one
+  EXPECT_NEAR(m.overlap_top_m(), 7.0, 1e-12);
+  // At t = 0.55 the trunk is 5.5 high and every copy present (checked below by eq. 5.10).
+  const TreeGraph st = m.stage(0.55);
+  EXPECT_EQ(laterals_at(st, 4.0), 1);  // the given rising lateral only
+  EXPECT_EQ(laterals_at(st, 5.0), 2);  // the given one and the copy of the lateral at z = 8
+  EXPECT_EQ(laterals_at(st, 6.0), 0);  // not grown yet; its lateral starts at t = 0.6
+  const TreeGraph plain = DevelopmentalModel(t, with_added()).stage(0.55);
+  EXPECT_EQ(laterals_at(plain, 5.0), 1);         // without overlap regions
+  EXPECT_EQ(laterals_at(m.stage(0.8), 6.0), 1);  // the copy for z = 6 was not made
+}
+
+// Removal (5.3.6): eq. 5.10 through CR(0) = 0.99 and the crown ratio (10 - 7) / 10 = 0.3 whose base
+// is the overlap region's top; the copy at z = 5 is present while 5 >= h (1 - CR(h)).
+TEST(AddedStructures, OverlapCopiesAreShedByTheirOwnCrownRatioCurve) {
+  const TreeGraph t = rising_lateral_tree();
+  const DevelopmentalModel m(t, with_overlap());
+  const double c0 = std::log(99.0), c1 = (std::log(0.3 / 0.7) - c0) / 10.0;
+  int present_seen = 0, shed_seen = 0;
+  for (int step = 11; step <= 20; ++step) {
+    const double time = step / 20.0;
+    const TreeGraph st = m.stage(time);
+    double h = 0.0;
+    for (NodeId i = 0; i < st.size(); ++i) h = std::max(h, st.end(i).z());
+    const double base = h * (1.0 - 1.0 / (1.0 + std::exp(-(c0 + c1 * h))));
+    const int expected = time < 1.0 && 5.0 >= base ? 2 : 1;
+    EXPECT_EQ(laterals_at(st, 5.0), expected) << "t = " << time << ", crown base " << base;
+    (expected == 2 ? present_seen : shed_seen) += 1;
+  }
+  EXPECT_GT(present_seen, 0);
+  EXPECT_GT(shed_seen, 1);  // shed before t = 1 too
+  EXPECT_TRUE(m.stage(1.0).identical(DevelopmentalModel(t).stage(1.0)));
+}
+
 }  // namespace
 }  // namespace fspm::stages
