@@ -117,6 +117,7 @@ struct ViewCommand {
   std::string foliage = "leaves";
   std::uint64_t seed = 1;
   bool no_shadows = false;
+  bool no_panel = false;
   double pitch_deg = 20.0;
   bool lod = false;
   double lod_distance_m = 0.0;
@@ -732,6 +733,7 @@ void run_view(const ViewCommand& c) {
   options.screenshot = c.screenshot;
   options.frames = c.frames;
   options.shadows = !c.no_shadows;
+  options.panel = !c.no_panel;
   options.pitch_deg = c.pitch_deg;
   if (!c.screenshot.empty()) graphics::check_image_path(c.screenshot);
   check_lsystem_draw_arguments(c.lsystem, c.trees);
@@ -942,6 +944,9 @@ void add_graphics_commands(CLI::App& app) {
   v->add_flag("--leaves", view->leaves, "Show leaves and leaf clusters");
   add_foliage_options(v, view->foliage, view->seed);
   v->add_flag("--no-shadows", view->no_shadows, "Start without shadows");
+  v->add_flag("--no-panel", view->no_panel,
+              "Hide the controls panel (growth step, shadows, level-of-detail distance, colour "
+              "attribute, frame time and triangles)");
   v->add_option("--pitch-deg", view->pitch_deg,
                 "Starting camera elevation above the horizontal, degrees (a few: a low view)")
       ->check(CLI::Range(-89.0, 89.0))

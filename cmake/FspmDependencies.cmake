@@ -75,6 +75,21 @@ if(FSPM_WITH_VIEWER)
     set(FSPM_WITH_VIEWER OFF)
   endif()
 endif()
+# The viewer's controls panel: Dear ImGui (Debian's static library with the GLFW and OpenGL 3 back
+# ends, found through pkg-config); without it the viewer runs without the panel.
+set(FSPM_HAVE_IMGUI OFF)
+if(FSPM_WITH_VIEWER)
+  find_package(PkgConfig QUIET)
+  if(PkgConfig_FOUND)
+    pkg_check_modules(IMGUI QUIET IMPORTED_TARGET imgui)
+  endif()
+  if(IMGUI_FOUND)
+    set(FSPM_HAVE_IMGUI ON)
+  else()
+    message(STATUS "fspm: Dear ImGui not found, the viewer has no controls panel "
+                   "(install libimgui-dev to add it)")
+  endif()
+endif()
 if(FSPM_WITH_MPI AND NOT MPI_CXX_FOUND)
   message(STATUS "fspm: MPI not found, FSPM_WITH_MPI turned off "
                  "(install libopenmpi-dev openmpi-bin to enable it)")

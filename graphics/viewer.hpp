@@ -1,15 +1,18 @@
 #pragma once
 // Real-time viewer (GLFW window, OpenGL 3.3 core, GLM), drawing every mesh with instanced draws:
 // orbit (left drag), pan (right drag or shift + left drag), zoom (wheel), growth steps on [ and ]
-// (or left/right arrows), shadows from a sun with a 3x3 percentage-closer filtered shadow map
-// (Pirk 6.2.3) toggled with S, R resets the view, Esc or Q quits; the frame time is shown in the
-// title. The ground is the plane under the scene drawn to the horizon, hazing towards the sky's
-// colour with distance (aerial perspective). Crown volumes (at kCrownOpacity, as in renders) and
-// translucent obstacles (at the opacity of their translucency) are blended after the opaque
-// geometry without writing depth, their triangles placed in the world and sorted back to front from
-// the eye whenever the camera moves (translucent_sort.hpp). With a screenshot path it renders
-// `frames` frames into an offscreen framebuffer, writes the image and returns (tests run it under
-// Xvfb with Mesa's software OpenGL).
+// (or left/right arrows), shadows from a sun with a variance shadow map (Pirk 6.2.3, eq.
+// 6.10-6.12; variance_shadow.hpp) toggled with S, R resets the view, Esc or Q quits; the frame
+// time is shown in the title. A controls panel (Dear ImGui, when fspm was built with it) shows and
+// changes the growth step, shadows, the level-of-detail distance and the colour attribute, with
+// the frame time and the triangles drawn. The ground is the plane under the scene drawn to the
+// horizon, hazing towards the sky's colour with distance (aerial perspective). Crown volumes (at
+// kCrownOpacity, as in renders) and translucent obstacles (at the opacity of their translucency)
+// are blended after the opaque geometry without writing depth, their triangles placed in the world
+// and sorted back to front from the eye whenever the camera moves (translucent_sort.hpp). With a
+// screenshot path it renders `frames` frames into an offscreen framebuffer, writes the image and
+// returns (tests run it under Xvfb with Mesa's software OpenGL).
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -18,6 +21,16 @@
 #include "graphics/triangle_mesh.hpp"
 
 namespace fspm::graphics {
+
+// What the controls panel shows and changes; a test hook (ViewerOptions::before_frame) may set
+// it as the panel's widgets do.
+struct ViewerControls {
+  int step = 0;  // the growth step shown, 0 .. steps - 1
+  bool shadows = true;
+  // Coarse meshes (or, per plant, the coarsest resolution) from this camera distance on.
+  double lod_distance_m = 0.0;
+  std::string color_by;  // empty = bark and leaf colours
+};
 
 struct ViewerOptions {
   int width = 1280;
@@ -32,16 +45,26 @@ struct ViewerOptions {
   // Distance-based level of detail: beyond this multiple of the starting camera distance the
   // coarse meshes (when given) are drawn instead.
   double lod_distance_factor = 1.5;
+  // The controls panel in the window's top-left corner (drawn into screenshots too); fspm view
+  // shows it unless --no-panel. Ignored when fspm was built without Dear ImGui.
+  bool panel = false;
+  // Test hook: called before every frame with the frame's number (from 0) and the controls,
+  // which it may change as the panel would.
+  std::function<void(int frame, ViewerControls& controls)> before_frame;
 };
 
 struct ViewerStats {
   int frames = 0;
   double mean_frame_ms = 0.0;  // CPU wall time per frame, glFinish included
   std::size_t triangles = 0;   // of the step shown last (with per-instance LOD: drawn last)
+  ViewerControls controls;     // as the last frame left them
 };
 
 // True when fspm was built with the viewer (FSPM_WITH_VIEWER).
 bool viewer_available();
+
+// True when the viewer has its controls panel (built with Dear ImGui).
+bool viewer_panel_available();
 
 // `steps` are the growth steps (one mesh each; one step for a still tree), `labels` their ages,
 // `coarse_steps` (empty, or one per step) lower-resolution meshes for distant views.

@@ -1,6 +1,7 @@
-// The GLFW/OpenGL 3.3 core viewer. Two passes a frame: depth from the sun into a shadow map,
-// then the scene with Blinn-Phong shading and 3x3 percentage-closer filtering of the shadow map
-// (Pirk 6.2.3: filtered shadow maps soften the aliasing of hard shadow-map edges).
+// The GLFW/OpenGL 3.3 core viewer. Three passes a frame: the depth moments seen from the sun
+// into a variance shadow map, a separable blur of it, then the scene with Blinn-Phong shading and
+// the Chebyshev bound of the blurred moments as the light reaching each point (Pirk 6.2.3, eq.
+// 6.10-6.12; variance_shadow.hpp has the same formulas on the CPU).
 #define GLFW_INCLUDE_NONE
 #define GL_GLEXT_PROTOTYPES
 #include <GL/glcorearb.h>
@@ -10,6 +11,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -21,12 +23,14 @@
 #include "fspm/error.hpp"
 #include "graphics/image.hpp"
 #include "graphics/translucent_sort.hpp"
+#include "graphics/variance_shadow.hpp"
 #include "graphics/viewer.hpp"
+#include "graphics/viewer_panel.hpp"
 
 namespace fspm::graphics {
 namespace {
 
-constexpr int kShadowSize = 2048;
+constexpr int kShadowSize = 1024;
 constexpr float kSky[3] = {0.80f, 0.87f, 0.96f};     // the background, cleared every frame
 constexpr float kGround[3] = {0.55f, 0.62f, 0.45f};  // before shading, as the renders' ground
 // Ground this many scene radii away is hazed by 1 - 1/e of kMaxHaze towards the sky colour.
@@ -34,14 +38,68 @@ constexpr float kHazeRadii = 25.0f;
 // Even at the horizon the ground keeps half its own colour: the horizon stays a visible line.
 constexpr float kMaxHaze = 0.5f;
 
+// The moments pass: depth x and x^2 seen from the sun (Pirk eq. 6.10, one sample each), x^2 with
+// the depth's slope across the pixel added (Donnelly and Lauritzen's bias: a tilted surface covers
+// a range of depths within one texel). The light's projection is orthographic, so x is linear.
 const char* kShadowVs = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 3) in mat4 model;  // per instance
 uniform mat4 light_mvp;
-void main() { gl_Position = light_mvp * model * vec4(position, 1.0); }
+out float v_depth;
+void main() {
+  gl_Position = light_mvp * model * vec4(position, 1.0);
+  v_depth = gl_Position.z * 0.5 + 0.5;
+}
 )";
 const char* kShadowFs = R"(#version 330 core
-void main() {}
+in float v_depth;
+out vec2 moments;
+void main() {
+  float dx = dFdx(v_depth), dy = dFdy(v_depth);
+  moments = vec2(v_depth, v_depth * v_depth + 0.25 * (dx * dx + dy * dy));
+}
+)";
+// The blur: one separable pass of a 5-tap binomial filter (1 4 6 4 1) / 16 along `step`, drawn as
+// one triangle covering the map. Blurring the moments is what softens the shadow's edge.
+const char* kBlurVs = R"(#version 330 core
+out vec2 v_uv;
+void main() {
+  vec2 ndc = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);
+  v_uv = ndc * 0.5 + 0.5;
+  gl_Position = vec4(ndc, 0.0, 1.0);
+}
+)";
+const char* kBlurFs = R"(#version 330 core
+in vec2 v_uv;
+uniform sampler2D source;
+uniform vec2 step;
+out vec2 moments;
+void main() {
+  moments = (6.0 * texture(source, v_uv).rg +
+             4.0 * (texture(source, v_uv - step).rg + texture(source, v_uv + step).rg) +
+             texture(source, v_uv - 2.0 * step).rg + texture(source, v_uv + 2.0 * step).rg) / 16.0;
+}
+)";
+// The light reaching a point from its position in the light's clip space: the Chebyshev bound of
+// the blurred moments (Pirk eq. 6.11-6.12, with (t - mu)^2), light bleeding reduced; points outside
+// the map are lit. Shared by the scene and the ground shaders (chebyshev_upper_bound and
+// variance_shadow_light in variance_shadow.cpp are its CPU twins).
+const char* kVsmGlsl = R"(
+uniform sampler2D shadow_map;
+uniform int shadows;
+uniform float min_variance;
+uniform float bleed;
+float lit(vec4 light_clip) {
+  if (shadows == 0) return 1.0;
+  vec3 p = light_clip.xyz / light_clip.w * 0.5 + 0.5;
+  if (p.z > 1.0 || p.x < 0.0 || p.x > 1.0 || p.y < 0.0 || p.y > 1.0) return 1.0;
+  vec2 m = texture(shadow_map, p.xy).rg;
+  if (p.z <= m.x) return 1.0;
+  float variance = max(m.y - m.x * m.x, min_variance);
+  float d = p.z - m.x;
+  float p_max = variance / (variance + d * d);
+  return clamp((p_max - bleed) / (1.0 - bleed), 0.0, 1.0);
+}
 )";
 const char* kSceneVs = R"(#version 330 core
 layout(location = 0) in vec3 position;
@@ -63,35 +121,21 @@ void main() {
   gl_Position = mvp * world;
 }
 )";
-const char* kSceneFs = R"(#version 330 core
+const char* kSceneFs = R"(
 in vec3 v_normal;
 in vec4 v_color;
 in vec3 v_world;
 in vec4 v_light;
 uniform vec3 sun;
 uniform vec3 eye;
-uniform sampler2D shadow_map;
-uniform int shadows;
 out vec4 frag;
-float lit() {
-  if (shadows == 0) return 1.0;
-  vec3 p = v_light.xyz / v_light.w * 0.5 + 0.5;
-  if (p.z > 1.0 || p.x < 0.0 || p.x > 1.0 || p.y < 0.0 || p.y > 1.0) return 1.0;
-  vec2 texel = 1.0 / vec2(textureSize(shadow_map, 0));
-  float bias = 0.0015;
-  float sum = 0.0;
-  for (int x = -1; x <= 1; ++x)
-    for (int y = -1; y <= 1; ++y)
-      sum += (p.z - bias > texture(shadow_map, p.xy + vec2(x, y) * texel).r) ? 0.0 : 1.0;
-  return sum / 9.0;
-}
 void main() {
   vec3 n = normalize(v_normal);
   vec3 v = normalize(eye - v_world);
   if (dot(n, v) < 0.0) n = -n;  // two-sided leaves
   float diffuse = max(dot(n, sun), 0.0);
   float specular = pow(max(dot(n, normalize(sun + v)), 0.0), 32.0) * 0.15;
-  float s = lit();
+  float s = lit(v_light);
   vec3 c = v_color.rgb * (0.35 + 0.65 * diffuse * s) + vec3(specular * s);
   frag = vec4(pow(c, vec3(1.0 / 1.2)), v_color.a);
 }
@@ -109,7 +153,7 @@ void main() {
   gl_Position = vec4(v_ndc, 0.0, 1.0);
 }
 )";
-const char* kGroundFs = R"(#version 330 core
+const char* kGroundFs = R"(
 in vec2 v_ndc;
 uniform mat4 mvp;
 uniform mat4 inverse_mvp;
@@ -121,20 +165,7 @@ uniform vec3 haze_color;
 uniform float ground_z;
 uniform float haze_distance;
 uniform float max_haze;
-uniform sampler2D shadow_map;
-uniform int shadows;
 out vec4 frag;
-float lit(vec4 v_light) {
-  if (shadows == 0) return 1.0;
-  vec3 p = v_light.xyz / v_light.w * 0.5 + 0.5;
-  if (p.z > 1.0 || p.x < 0.0 || p.x > 1.0 || p.y < 0.0 || p.y > 1.0) return 1.0;
-  vec2 texel = 1.0 / vec2(textureSize(shadow_map, 0));
-  float sum = 0.0;
-  for (int x = -1; x <= 1; ++x)
-    for (int y = -1; y <= 1; ++y)
-      sum += (p.z - 0.0015 > texture(shadow_map, p.xy + vec2(x, y) * texel).r) ? 0.0 : 1.0;
-  return sum / 9.0;
-}
 void main() {
   vec4 a = inverse_mvp * vec4(v_ndc, -1.0, 1.0);
   vec4 b = inverse_mvp * vec4(v_ndc, 1.0, 1.0);
@@ -168,9 +199,12 @@ GLuint compile(GLenum type, const char* source) {
   return shader;
 }
 
-GLuint program(const char* vs, const char* fs) {
+// `fs` without its #version line when `with_vsm`: the version, then kVsmGlsl, then `fs`.
+GLuint program(const char* vs, const char* fs, bool with_vsm = false) {
   const GLuint p = glCreateProgram();
-  const GLuint a = compile(GL_VERTEX_SHADER, vs), b = compile(GL_FRAGMENT_SHADER, fs);
+  const std::string fragment =
+      with_vsm ? std::string("#version 330 core\n") + kVsmGlsl + fs : std::string(fs);
+  const GLuint a = compile(GL_VERTEX_SHADER, vs), b = compile(GL_FRAGMENT_SHADER, fragment.c_str());
   glAttachShader(p, a);
   glAttachShader(p, b);
   glLinkProgram(p);
@@ -232,6 +266,7 @@ struct GpuStep {
 
 struct Scene {
   glm::vec3 lo{0.0f}, hi{0.0f};
+  std::string color_by;                       // the attribute the uploaded colours show
   float value_lo = 1e30f, value_hi = -1e30f;  // of the colour attribute
 };
 
@@ -511,9 +546,9 @@ struct Camera {
 
 struct State {
   Camera camera, home;
-  int step = 0;
+  ViewerControls controls;  // the keys and the panel change them
   int steps = 1;
-  bool shadows = true;
+  const ViewerPanel* panel = nullptr;  // while it has the mouse or keys, the camera does not
   bool dragging_orbit = false, dragging_pan = false;
   double last_x = 0, last_y = 0;
 };
@@ -523,11 +558,13 @@ State* state_of(GLFWwindow* w) { return static_cast<State*>(glfwGetWindowUserPoi
 void on_key(GLFWwindow* w, int key, int, int action, int) {
   if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
   State* s = state_of(w);
+  if (s->panel != nullptr && s->panel->wants_keyboard()) return;
+  int& step = s->controls.step;
   if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) glfwSetWindowShouldClose(w, GLFW_TRUE);
   if (key == GLFW_KEY_RIGHT_BRACKET || key == GLFW_KEY_RIGHT)
-    s->step = std::min(s->step + 1, s->steps - 1);
-  if (key == GLFW_KEY_LEFT_BRACKET || key == GLFW_KEY_LEFT) s->step = std::max(s->step - 1, 0);
-  if (key == GLFW_KEY_S) s->shadows = !s->shadows;
+    step = std::min(step + 1, s->steps - 1);
+  if (key == GLFW_KEY_LEFT_BRACKET || key == GLFW_KEY_LEFT) step = std::max(step - 1, 0);
+  if (key == GLFW_KEY_S) s->controls.shadows = !s->controls.shadows;
   if (key == GLFW_KEY_R) s->camera = s->home;
 }
 
@@ -535,6 +572,7 @@ void on_button(GLFWwindow* w, int button, int action, int mods) {
   State* s = state_of(w);
   glfwGetCursorPos(w, &s->last_x, &s->last_y);
   const bool down = action == GLFW_PRESS;
+  if (down && s->panel != nullptr && s->panel->wants_mouse()) return;  // a click on the panel
   if (button == GLFW_MOUSE_BUTTON_LEFT && !(mods & GLFW_MOD_SHIFT)) s->dragging_orbit = down;
   if (button == GLFW_MOUSE_BUTTON_RIGHT ||
       (button == GLFW_MOUSE_BUTTON_LEFT && (mods & GLFW_MOD_SHIFT))) {
@@ -561,6 +599,7 @@ void on_cursor(GLFWwindow* w, double x, double y) {
 
 void on_scroll(GLFWwindow* w, double, double dy) {
   State* s = state_of(w);
+  if (s->panel != nullptr && s->panel->wants_mouse()) return;
   s->camera.distance *= std::pow(0.9f, static_cast<float>(dy));
 }
 
@@ -587,6 +626,22 @@ bool viewer_available() { return true; }
 
 namespace {
 
+// The range of `color_by` over every step (nothing for the materials' colours).
+void measure_values(const std::vector<StepRef>& steps, const std::string& color_by, Scene& scene) {
+  scene.color_by = color_by;
+  scene.value_lo = 1e30f;
+  scene.value_hi = -1e30f;
+  if (color_by.empty()) return;
+  for (const auto& step : steps) {
+    for (std::size_t k = 0; k < step.meshes.size(); ++k) {
+      for (float x : step.meshes[k]->attribute(color_by)) {
+        scene.value_lo = std::min(scene.value_lo, x + step.value_offsets[k]);
+        scene.value_hi = std::max(scene.value_hi, x + step.value_offsets[k]);
+      }
+    }
+  }
+}
+
 // Step 1: the arguments checked before any window opens; the bounds of every step and the range
 // of the colour attribute.
 Scene check_and_measure(const std::vector<StepRef>& steps, const ViewerOptions& o,
@@ -605,17 +660,9 @@ Scene check_and_measure(const std::vector<StepRef>& steps, const ViewerOptions& 
   Scene scene;
   scene.lo = glm::vec3(1e30f);
   scene.hi = glm::vec3(-1e30f);
-  for (const auto& step : steps) {
-    bounds(step, scene.lo, scene.hi);
-    if (o.color_by.empty()) continue;
-    for (std::size_t k = 0; k < step.meshes.size(); ++k) {
-      for (float x : step.meshes[k]->attribute(o.color_by)) {
-        scene.value_lo = std::min(scene.value_lo, x + step.value_offsets[k]);
-        scene.value_hi = std::max(scene.value_hi, x + step.value_offsets[k]);
-      }
-    }
-  }
+  for (const auto& step : steps) bounds(step, scene.lo, scene.hi);
   if (scene.lo.x > scene.hi.x) scene.lo = scene.hi = glm::vec3(0.0f);
+  measure_values(steps, o.color_by, scene);
   return scene;
 }
 
@@ -638,8 +685,10 @@ GLFWwindow* open_window(const ViewerOptions& o, const Scene& scene, int steps, S
   state.camera.pitch = static_cast<float>(glm::radians(o.pitch_deg));
   state.home = state.camera;
   state.steps = steps;
-  state.step = state.steps - 1;
-  state.shadows = o.shadows;
+  state.controls.step = state.steps - 1;
+  state.controls.shadows = o.shadows;
+  state.controls.color_by = o.color_by;
+  state.controls.lod_distance_m = o.lod_distance_factor * state.home.distance;
   glfwSetWindowUserPointer(window, &state);
   glfwSetKeyCallback(window, on_key);
   glfwSetMouseButtonCallback(window, on_button);
@@ -650,7 +699,7 @@ GLFWwindow* open_window(const ViewerOptions& o, const Scene& scene, int steps, S
 
 // Step 3: shaders, every step's meshes and the ground on the GPU.
 struct GpuScene {
-  GLuint shadow_program = 0, scene_program = 0;
+  GLuint shadow_program = 0, blur_program = 0, scene_program = 0;
   std::vector<GpuStep> steps, coarse;
   GLuint ground_program = 0;
   GLuint ground_vao = 0;  // no attributes: the ground's triangle comes from gl_VertexID
@@ -660,10 +709,11 @@ GpuScene upload_scene(const std::vector<StepRef>& steps, const std::vector<StepR
                       const ViewerOptions& o, const Scene& scene) {
   GpuScene g;
   g.shadow_program = program(kShadowVs, kShadowFs);
-  g.scene_program = program(kSceneVs, kSceneFs);
+  g.blur_program = program(kBlurVs, kBlurFs);
+  g.scene_program = program(kSceneVs, kSceneFs, true);
   for (const auto& step : steps) g.steps.push_back(upload(step, o, scene));
   for (const auto& step : coarse) g.coarse.push_back(upload(step, o, scene));
-  g.ground_program = program(kGroundVs, kGroundFs);
+  g.ground_program = program(kGroundVs, kGroundFs, true);
   glGenVertexArrays(1, &g.ground_vao);
   return g;
 }
@@ -678,31 +728,45 @@ void release(GpuScene& g) {
   glDeleteVertexArrays(1, &g.ground_vao);
   glDeleteProgram(g.ground_program);
   glDeleteProgram(g.shadow_program);
+  glDeleteProgram(g.blur_program);
   glDeleteProgram(g.scene_program);
 }
 
-// The shadow map and, for screenshots, the offscreen target (a hidden window's default
-// framebuffer is undefined).
+// The variance shadow map (two RG32F moment textures: the moments pass writes the first, the
+// blur goes to the second and back) and, for screenshots, the offscreen target (a hidden window's
+// default framebuffer is undefined).
 struct Targets {
-  GLuint shadow_tex = 0, shadow_fbo = 0;
+  std::array<GLuint, 2> moments_tex{}, moments_fbo{};
+  GLuint shadow_depth_rb = 0;                         // depth test of the moments pass
   GLuint target_fbo = 0, color_rb = 0, depth_rb = 0;  // 0: the window
 };
 
 Targets make_targets(const ViewerOptions& o) {
   Targets t;
-  glGenTextures(1, &t.shadow_tex);
-  glBindTexture(GL_TEXTURE_2D, t.shadow_tex);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, kShadowSize, kShadowSize, 0,
-               GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glGenFramebuffers(1, &t.shadow_fbo);
-  glBindFramebuffer(GL_FRAMEBUFFER, t.shadow_fbo);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, t.shadow_tex, 0);
-  glDrawBuffer(GL_NONE);
-  glReadBuffer(GL_NONE);
+  glGenTextures(2, t.moments_tex.data());
+  glGenFramebuffers(2, t.moments_fbo.data());
+  glGenRenderbuffers(1, &t.shadow_depth_rb);
+  glBindRenderbuffer(GL_RENDERBUFFER, t.shadow_depth_rb);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, kShadowSize, kShadowSize);
+  for (int k = 0; k < 2; ++k) {
+    glBindTexture(GL_TEXTURE_2D, t.moments_tex[k]);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, kShadowSize, kShadowSize, 0, GL_RG, GL_FLOAT, nullptr);
+    // Moments, unlike depths, may be interpolated: linear filtering is part of the filter.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glBindFramebuffer(GL_FRAMEBUFFER, t.moments_fbo[k]);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t.moments_tex[k],
+                           0);
+    if (k == 0) {
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                t.shadow_depth_rb);
+    }
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      throw IoError("cannot create the shadow map framebuffer");
+    }
+  }
   if (o.screenshot.empty()) return t;
   glGenFramebuffers(1, &t.target_fbo);
   glBindFramebuffer(GL_FRAMEBUFFER, t.target_fbo);
@@ -721,8 +785,9 @@ Targets make_targets(const ViewerOptions& o) {
 }
 
 void release(Targets& t) {
-  glDeleteFramebuffers(1, &t.shadow_fbo);
-  glDeleteTextures(1, &t.shadow_tex);
+  glDeleteFramebuffers(2, t.moments_fbo.data());
+  glDeleteTextures(2, t.moments_tex.data());
+  glDeleteRenderbuffers(1, &t.shadow_depth_rb);
   if (t.target_fbo == 0) return;
   glDeleteFramebuffers(1, &t.target_fbo);
   glDeleteRenderbuffers(1, &t.color_rb);
@@ -781,6 +846,14 @@ void choose_instances(GpuStep& g, const LodView& lod, const FrameMatrices& f) {
   g.triangles = lod_triangle_count(*lod.scene, instances);
 }
 
+// The uniforms of kVsmGlsl; the blurred moments are texture unit 0.
+void set_shadow_uniforms(GLuint p, bool shadows) {
+  glUniform1i(glGetUniformLocation(p, "shadows"), shadows ? 1 : 0);
+  glUniform1i(glGetUniformLocation(p, "shadow_map"), 0);
+  glUniform1f(glGetUniformLocation(p, "min_variance"), static_cast<float>(kVsmMinVariance));
+  glUniform1f(glGetUniformLocation(p, "bleed"), static_cast<float>(kVsmBleedReduction));
+}
+
 // The ground to the horizon (kGroundFs), first after the clear; GL_LEQUAL lets the points beyond
 // the far plane, clamped to depth 1, pass against the cleared depth.
 void draw_ground(const GpuScene& gpu, const FrameMatrices& f, bool shadows) {
@@ -798,39 +871,56 @@ void draw_ground(const GpuScene& gpu, const FrameMatrices& f, bool shadows) {
   glUniform1f(glGetUniformLocation(p, "ground_z"), f.ground_z);
   glUniform1f(glGetUniformLocation(p, "haze_distance"), f.haze_distance);
   glUniform1f(glGetUniformLocation(p, "max_haze"), kMaxHaze);
-  glUniform1i(glGetUniformLocation(p, "shadows"), shadows ? 1 : 0);
-  glUniform1i(glGetUniformLocation(p, "shadow_map"), 0);
+  set_shadow_uniforms(p, shadows);
   glDepthFunc(GL_LEQUAL);
   glBindVertexArray(gpu.ground_vao);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glDepthFunc(GL_LESS);
 }
 
-// Step 5: the shadow pass, then the scene: opaque geometry and the ground, then the crowns and
+// The variance shadow map of step `g`: its depth moments from the sun into moments_tex[0]
+// (cleared to the far depth, moments (1, 1): nothing there shadows), then blurred along x into
+// moments_tex[1] and along y back into moments_tex[0]. The ground is not drawn: a plane under the
+// scene shadows nothing above it.
+void draw_shadow_map(const GpuScene& gpu, const GpuStep& g, const Targets& t,
+                     const FrameMatrices& f) {
+  glBindFramebuffer(GL_FRAMEBUFFER, t.moments_fbo[0]);
+  glViewport(0, 0, kShadowSize, kShadowSize);
+  glClearColor(1.0f, 1.0f, 0.0f, 0.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glUseProgram(gpu.shadow_program);
+  glUniformMatrix4fv(glGetUniformLocation(gpu.shadow_program, "light_mvp"), 1, GL_FALSE,
+                     glm::value_ptr(f.light_mvp));
+  for (const GpuMesh& m : g.meshes) draw(m);
+  glDisable(GL_DEPTH_TEST);
+  glUseProgram(gpu.blur_program);
+  glUniform1i(glGetUniformLocation(gpu.blur_program, "source"), 0);
+  glActiveTexture(GL_TEXTURE0);
+  glBindVertexArray(gpu.ground_vao);  // no attributes: the triangle comes from gl_VertexID
+  const float texel = 1.0f / kShadowSize;
+  for (int pass = 0; pass < 2; ++pass) {
+    glBindFramebuffer(GL_FRAMEBUFFER, t.moments_fbo[1 - pass]);
+    glBindTexture(GL_TEXTURE_2D, t.moments_tex[pass]);
+    glUniform2f(glGetUniformLocation(gpu.blur_program, "step"), pass == 0 ? texel : 0.0f,
+                pass == 0 ? 0.0f : texel);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+}
+
+// Step 5: the shadow map, then the scene: opaque geometry and the ground, then the crowns and
 // translucent obstacles blended over it back to front (sorted by sort_blended), without writing
 // depth.
 void draw_frame(const GpuScene& gpu, const GpuStep& g, const Targets& t, const FrameMatrices& f,
                 bool shadows) {
+  if (shadows) draw_shadow_map(gpu, g, t, f);
   glEnable(GL_DEPTH_TEST);
-  if (shadows) {
-    glBindFramebuffer(GL_FRAMEBUFFER, t.shadow_fbo);
-    glViewport(0, 0, kShadowSize, kShadowSize);
-    glClear(GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(2.0f, 4.0f);
-    glUseProgram(gpu.shadow_program);
-    glUniformMatrix4fv(glGetUniformLocation(gpu.shadow_program, "light_mvp"), 1, GL_FALSE,
-                       glm::value_ptr(f.light_mvp));
-    // The ground is not drawn: a plane under the scene shadows nothing above it.
-    for (const GpuMesh& m : g.meshes) draw(m);
-    glDisable(GL_POLYGON_OFFSET_FILL);
-  }
   glBindFramebuffer(GL_FRAMEBUFFER, t.target_fbo);
   glViewport(0, 0, f.width, f.height);
   glClearColor(kSky[0], kSky[1], kSky[2], 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, t.shadow_tex);
+  glBindTexture(GL_TEXTURE_2D, t.moments_tex[0]);
   draw_ground(gpu, f, shadows);
   const GLuint p = gpu.scene_program;
   glUseProgram(p);
@@ -839,10 +929,7 @@ void draw_frame(const GpuScene& gpu, const GpuStep& g, const Targets& t, const F
                      glm::value_ptr(f.light_mvp));
   glUniform3fv(glGetUniformLocation(p, "sun"), 1, glm::value_ptr(f.sun));
   glUniform3fv(glGetUniformLocation(p, "eye"), 1, glm::value_ptr(f.eye));
-  glUniform1i(glGetUniformLocation(p, "shadows"), shadows ? 1 : 0);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, t.shadow_tex);
-  glUniform1i(glGetUniformLocation(p, "shadow_map"), 0);
+  set_shadow_uniforms(p, shadows);
   for (const GpuMesh& m : g.meshes) draw(m, Part::kOpaque);
   glEnable(GL_BLEND);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);  // keep alpha 1
@@ -852,29 +939,80 @@ void draw_frame(const GpuScene& gpu, const GpuStep& g, const Targets& t, const F
   glDisable(GL_BLEND);
 }
 
+// The steps as StepRefs coloured by an attribute: meshes of instanced steps are grouped by order
+// offset when coloured by order (step_ref), so a new colour may need new references.
+using StepMaker = std::function<void(const std::string& color_by, std::vector<StepRef>& steps,
+                                     std::vector<StepRef>& coarse)>;
+
+// Every step uploaded again, coloured by `color_by` (chosen on the panel).
+void recolor(GpuScene& gpu, Scene& scene, const StepMaker& make, ViewerOptions o,
+             const std::string& color_by) {
+  o.color_by = color_by;
+  std::vector<StepRef> steps, coarse;
+  make(color_by, steps, coarse);
+  measure_values(steps, color_by, scene);
+  for (auto* list : {&gpu.steps, &gpu.coarse}) {
+    for (auto& step : *list) {
+      for (auto& m : step.meshes) release(m);
+      release(step.soup.mesh);
+    }
+    list->clear();
+  }
+  for (const auto& step : steps) gpu.steps.push_back(upload(step, o, scene));
+  for (const auto& step : coarse) gpu.coarse.push_back(upload(step, o, scene));
+}
+
+// What a frame needs besides the GPU: the scene, the step references for recolouring, the ages,
+// the per-plant level of detail and the panel with what it shows.
+struct FrameContext {
+  Scene scene;
+  StepMaker make;
+  const std::vector<double>* labels = nullptr;
+  LodView lod;
+  ViewerPanel* panel = nullptr;
+  PanelInfo info;
+};
+
+// One frame: the controls applied (colour, level of detail), the scene and the panel drawn.
+// Returns the step drawn.
+const GpuStep& draw_controlled_frame(GLFWwindow* window, State& state, GpuScene& gpu,
+                                     const Targets& t, FrameContext& x, const ViewerOptions& o) {
+  ViewerControls& c = state.controls;
+  c.step = std::clamp(c.step, 0, state.steps - 1);
+  if (c.color_by != x.scene.color_by) recolor(gpu, x.scene, x.make, o, c.color_by);
+  x.info.far = !gpu.coarse.empty() && state.camera.distance > c.lod_distance_m;
+  GpuStep& g = x.info.far ? gpu.coarse[c.step] : gpu.steps[c.step];
+  int fw = o.width, fh = o.height;
+  if (o.screenshot.empty()) glfwGetFramebufferSize(window, &fw, &fh);
+  const FrameMatrices f = frame_matrices(state, x.scene, fw, fh);
+  if (x.lod.scene != nullptr) {
+    x.lod.options.max_distance_m = c.lod_distance_m;
+    choose_instances(g, x.lod, f);
+  }
+  sort_blended(g.soup, f.eye);
+  draw_frame(gpu, g, t, f, c.shadows);
+  x.info.triangles = g.triangles;
+  x.panel->draw(x.info, c, fw, fh);
+  return g;
+}
+
 // Step 6: frames until the window closes (or `frames` frames for a screenshot), timed.
 ViewerStats run_frames(GLFWwindow* window, State& state, GpuScene& gpu, const Targets& t,
-                       const Scene& scene, const ViewerOptions& o,
-                       const std::vector<double>& labels, const LodView& lod) {
+                       FrameContext& x, const ViewerOptions& o) {
   const bool offscreen = !o.screenshot.empty();
+  const std::vector<double>& labels = *x.labels;
   ViewerStats stats;
   double total_ms = 0.0, smooth_ms = 0.0;
   while (!glfwWindowShouldClose(window)) {
+    if (o.before_frame) o.before_frame(stats.frames, state.controls);
     const auto t0 = std::chrono::steady_clock::now();
-    const bool far =
-        !gpu.coarse.empty() && state.camera.distance > o.lod_distance_factor * state.home.distance;
-    GpuStep& g = far ? gpu.coarse[state.step] : gpu.steps[state.step];
-    int fw = o.width, fh = o.height;
-    if (!offscreen) glfwGetFramebufferSize(window, &fw, &fh);
-    const FrameMatrices f = frame_matrices(state, scene, fw, fh);
-    if (lod.scene != nullptr) choose_instances(g, lod, f);
-    sort_blended(g.soup, f.eye);
-    draw_frame(gpu, g, t, f, state.shadows);
+    const GpuStep& g = draw_controlled_frame(window, state, gpu, t, x, o);
     glFinish();
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     total_ms += ms;
     smooth_ms = stats.frames == 0 ? ms : 0.9 * smooth_ms + 0.1 * ms;
+    x.info.frame_ms = smooth_ms;
     ++stats.frames;
     stats.triangles = g.triangles;
     if (offscreen) {
@@ -882,17 +1020,19 @@ ViewerStats run_frames(GLFWwindow* window, State& state, GpuScene& gpu, const Ta
       glfwPollEvents();
       continue;
     }
+    const int step = state.controls.step;
     char title[160];
     std::snprintf(title, sizeof(title),
                   "fspm view  |  step %d/%d  age %g  |  %zu triangles%s  |  %.1f ms/frame",
-                  state.step + 1, state.steps,
-                  state.step < static_cast<int>(labels.size()) ? labels[state.step] : 0.0,
-                  g.triangles, far ? " (far LOD)" : "", smooth_ms);
+                  step + 1, state.steps,
+                  step < static_cast<int>(labels.size()) ? labels[step] : 0.0, g.triangles,
+                  x.info.far ? " (far LOD)" : "", smooth_ms);
     glfwSetWindowTitle(window, title);
     glfwSwapBuffers(window);
     glfwPollEvents();
   }
   stats.mean_frame_ms = stats.frames > 0 ? total_ms / stats.frames : 0.0;
+  stats.controls = state.controls;
   return stats;
 }
 
@@ -914,16 +1054,56 @@ void write_screenshot(const ViewerOptions& o, const Targets& t) {
   write_image(image, o.screenshot);
 }
 
-ViewerStats view(const std::vector<StepRef>& steps, const std::vector<double>& labels,
-                 const ViewerOptions& o, const std::vector<StepRef>& coarse_steps,
+// The colour attributes every mesh of every step has (the panel's choices).
+std::vector<std::string> common_attributes(const std::vector<StepRef>& steps) {
+  std::vector<std::string> names;
+  bool first = true;
+  for (const auto& step : steps) {
+    for (const TriangleMesh* m : step.meshes) {
+      if (m->empty()) continue;
+      std::vector<std::string> here = m->attribute_names();
+      if (first) {
+        names = here;
+        first = false;
+        continue;
+      }
+      std::erase_if(names, [&](const std::string& n) {
+        return std::find(here.begin(), here.end(), n) == here.end();
+      });
+    }
+  }
+  return names;
+}
+
+ViewerStats view(const StepMaker& make, const std::vector<double>& labels, const ViewerOptions& o,
                  const LodView& lod = {}) {
-  const Scene scene = check_and_measure(steps, o, coarse_steps);
+  std::vector<StepRef> steps, coarse_steps;
+  make(o.color_by, steps, coarse_steps);
+  FrameContext x;
+  x.scene = check_and_measure(steps, o, coarse_steps);
+  x.make = make;
+  x.labels = &labels;
+  x.lod = lod;
   GlfwSession session;
   State state;
-  GLFWwindow* window = open_window(o, scene, static_cast<int>(steps.size()), state);
-  GpuScene gpu = upload_scene(steps, coarse_steps, o, scene);
+  GLFWwindow* window = open_window(o, x.scene, static_cast<int>(steps.size()), state);
+  GpuScene gpu = upload_scene(steps, coarse_steps, o, x.scene);
   Targets targets = make_targets(o);
-  const ViewerStats stats = run_frames(window, state, gpu, targets, scene, o, labels, lod);
+  ViewerPanel panel(window, o.panel);
+  state.panel = &panel;
+  x.panel = &panel;
+  x.info.labels = &labels;
+  x.info.steps = state.steps;
+  x.info.attributes = common_attributes(steps);
+  if (lod.scene != nullptr) {
+    state.controls.lod_distance_m = lod.options.max_distance_m;
+    x.info.lod_min_m = 0.05 * lod.options.max_distance_m;
+    x.info.lod_max_m = 5.0 * lod.options.max_distance_m;
+  } else if (!coarse_steps.empty()) {
+    x.info.lod_min_m = 0.25 * state.home.distance;
+    x.info.lod_max_m = 20.0 * state.home.distance;
+  }
+  const ViewerStats stats = run_frames(window, state, gpu, targets, x, o);
   if (!o.screenshot.empty()) write_screenshot(o, targets);
   release(gpu);
   release(targets);
@@ -933,27 +1113,50 @@ ViewerStats view(const std::vector<StepRef>& steps, const std::vector<double>& l
 
 }  // namespace
 
+bool viewer_panel_available() {
+#ifdef FSPM_HAVE_IMGUI
+  return true;
+#else
+  return false;
+#endif
+}
+
 ViewerStats run_viewer(const std::vector<TriangleMesh>& steps, const std::vector<double>& labels,
                        const ViewerOptions& o, const std::vector<TriangleMesh>& coarse_steps) {
-  std::vector<StepRef> refs, coarse;
-  for (const auto& m : steps) refs.push_back(step_ref(m));
-  for (const auto& m : coarse_steps) coarse.push_back(step_ref(m));
-  return view(refs, labels, o, coarse);
+  // Plain meshes: the references do not depend on the colour.
+  const StepMaker make = [&](const std::string&, std::vector<StepRef>& refs,
+                             std::vector<StepRef>& coarse) {
+    refs.clear();
+    coarse.clear();
+    for (const auto& m : steps) refs.push_back(step_ref(m));
+    for (const auto& m : coarse_steps) coarse.push_back(step_ref(m));
+  };
+  return view(make, labels, o);
 }
 
 ViewerStats run_instanced_viewer(const std::vector<InstancedMesh>& steps,
                                  const std::vector<double>& labels, const ViewerOptions& o,
                                  const std::vector<InstancedMesh>& coarse_steps) {
-  std::vector<StepRef> refs, coarse;
-  for (const auto& m : steps) refs.push_back(step_ref(m, o.color_by));
-  for (const auto& m : coarse_steps) coarse.push_back(step_ref(m, o.color_by));
-  return view(refs, labels, o, coarse);
+  const StepMaker make = [&](const std::string& color_by, std::vector<StepRef>& refs,
+                             std::vector<StepRef>& coarse) {
+    refs.clear();
+    coarse.clear();
+    for (const auto& m : steps) refs.push_back(step_ref(m, color_by));
+    for (const auto& m : coarse_steps) coarse.push_back(step_ref(m, color_by));
+  };
+  return view(make, labels, o);
 }
 
 ViewerStats run_lod_viewer(const LodScene& scene, const LodOptions& lod_options,
                            const ViewerOptions& o) {
   validate(lod_options);
-  return view({step_ref(scene)}, {}, o, {}, LodView{&scene, lod_options});
+  const StepMaker make = [&](const std::string&, std::vector<StepRef>& refs,
+                             std::vector<StepRef>& coarse) {
+    refs = {step_ref(scene)};
+    coarse.clear();
+  };
+  static const std::vector<double> kNoLabels;
+  return view(make, kNoLabels, o, LodView{&scene, lod_options});
 }
 
 }  // namespace fspm::graphics

@@ -5,6 +5,8 @@ namespace fspm::graphics {
 
 bool viewer_available() { return false; }
 
+bool viewer_panel_available() { return false; }
+
 ViewerStats run_viewer(const std::vector<TriangleMesh>&, const std::vector<double>&,
                        const ViewerOptions&, const std::vector<TriangleMesh>&) {
   throw ValueError("fspm was built without the viewer (FSPM_WITH_VIEWER=OFF)");

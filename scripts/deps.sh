@@ -17,6 +17,8 @@ packages=(
   libnanoflann-dev libcgal-dev libassimp-dev
   # graphics (optional parts: VTK renders, the viewer, image output)
   libvtk9-dev libopenimageio-dev openimageio-tools python3-imath libglfw3-dev libgl-dev libglx-mesa0 libgl1-mesa-dri xvfb xauth
+  # the viewer's controls panel: Dear ImGui (a static library with its GLFW and OpenGL 3 back ends)
+  libimgui-dev
   # HTML report (fspm report --html): zlib gzips its trees; chromium checks it in tests (node and
   # npm, which install its browser libraries from the npm registry at build time, see below)
   zlib1g-dev chromium
