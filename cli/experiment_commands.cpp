@@ -200,6 +200,75 @@ ex::Experiment stored_experiment(const ex::ResultsDb& db) {
   return ex::parse_experiment(db.info().experiment_text, db.info().experiment_path);
 }
 
+// Where and how the runs go: output folder, threads, shard, time limit, files kept per run.
+ex::RunnerOptions runner_options(const RunOptions& o, const ex::Experiment& x) {
+  ex::RunnerOptions r;
+  r.out_dir = o.out.empty() ? default_out(x) : o.out;
+  r.jobs = o.jobs;
+  r.resume = o.resume;
+  if (!o.shard.empty()) std::tie(r.shard_index, r.shard_count) = parse_shard(o.shard);
+  if (o.time_limit_s > 0.0) r.time_limit_s = o.time_limit_s;
+  r.interrupt = &g_interrupted;
+  r.longest_first = !o.grid_order;
+  if (o.mpi && !ex::mpi_available()) {
+    throw ValueError("--mpi: this fspm was built without MPI (install libopenmpi-dev, rebuild)");
+  }
+  r.file_writers = graphics_run_file_writers(x);
+  ex::check_run_file_writers(x, r.file_writers);
+  return r;
+}
+
+// Images kept per run are rendered with VTK, which needs an X display: found (or started under
+// xvfb-run) before the first run.
+void require_display_for_images(const RunOptions& o, const ex::Experiment& x) {
+  if (std::find(x.keep.begin(), x.keep.end(), ex::KeptFile::kImage) == x.keep.end()) return;
+  // Under mpirun every rank would start its own virtual server: the ranks need a display.
+  if (!o.mpi) rerun_under_xvfb_if_needed();
+  if (graphics::display_available()) return;
+  throw IoError(
+      "outputs.keep: images are rendered with VTK, which needs an X display; run under "
+      "xvfb-run -a" +
+          std::string(o.mpi ? " (every rank needs a display: xvfb-run -a mpirun ... on one "
+                              "machine, mpirun ... xvfb-run -a fspm run ... on several)"
+                            : ""),
+      x.path, x.keep_line);
+}
+
+// Runs the plan, stopping cleanly at SIGINT or SIGTERM (the runs done so far are kept).
+ex::RunnerSummary run_interruptibly(const RunOptions& o, const ex::Experiment& x,
+                                    const ex::Model& model, const ex::RunnerOptions& r,
+                                    bool& is_root) {
+  g_interrupted = false;
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+  const ex::RunnerSummary s =
+      o.mpi ? ex::run_experiment_mpi(x, model, r, is_root) : ex::run_experiment(x, model, r);
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  return s;
+}
+
+void print_run_summary(const RunOptions& o, const ex::Experiment& x, const ex::RunnerSummary& s) {
+  if (o.json) {
+    print_json({{"experiment", x.name},
+                {"database", s.database},
+                {"total_runs", s.total_runs},
+                {"shard_runs", s.shard_runs},
+                {"already_done", s.already_done},
+                {"ran", s.ran},
+                {"ok", s.ok},
+                {"error", s.failed},
+                {"timeout", s.timed_out},
+                {"interrupted", s.interrupted},
+                {"seconds", s.seconds}});
+    return;
+  }
+  std::cout << s.database << ": " << s.ran << " runs in " << s.seconds << " s (" << s.ok << " ok, "
+            << s.failed << " error, " << s.timed_out << " timeout)";
+  if (s.already_done > 0) std::cout << ", " << s.already_done << " were already done";
+  std::cout << '\n';
+}
+
 void run_command(const RunOptions& o) {
   ex::Experiment x = ex::read_experiment(o.experiment);
   if (o.replicates > 0) {
@@ -214,33 +283,8 @@ void run_command(const RunOptions& o) {
     emit_slurm(o, x);
     return;
   }
-  ex::RunnerOptions r;
-  r.out_dir = o.out.empty() ? default_out(x) : o.out;
-  r.jobs = o.jobs;
-  r.resume = o.resume;
-  if (!o.shard.empty()) std::tie(r.shard_index, r.shard_count) = parse_shard(o.shard);
-  if (o.time_limit_s > 0.0) r.time_limit_s = o.time_limit_s;
-  r.interrupt = &g_interrupted;
-  r.longest_first = !o.grid_order;
-  if (o.mpi && !ex::mpi_available()) {
-    throw ValueError("--mpi: this fspm was built without MPI (install libopenmpi-dev, rebuild)");
-  }
-  r.file_writers = graphics_run_file_writers(x);
-  ex::check_run_file_writers(x, r.file_writers);
-  if (std::find(x.keep.begin(), x.keep.end(), ex::KeptFile::kImage) != x.keep.end()) {
-    // Under mpirun every rank would start its own virtual server: the ranks need a display.
-    if (!o.mpi) rerun_under_xvfb_if_needed();
-    if (!graphics::display_available()) {
-      throw IoError(
-          "outputs.keep: images are rendered with VTK, which needs an X display; run under "
-          "xvfb-run -a" +
-              std::string(
-                  o.mpi ? " (every rank needs a display: xvfb-run -a mpirun ... on one machine, "
-                          "mpirun ... xvfb-run -a fspm run ... on several)"
-                        : ""),
-          x.path, x.keep_line);
-    }
-  }
+  ex::RunnerOptions r = runner_options(o, x);
+  require_display_for_images(o, x);
   if (verbosity() > 0) {
     r.progress = &std::cerr;
     r.progress_bar = ::isatty(STDERR_FILENO) != 0;
@@ -248,33 +292,10 @@ void run_command(const RunOptions& o) {
       std::cerr << "experiment " << x.name << ": " << plan.size() << " runs (" << plan.points()
                 << " points x " << x.replicates << " replicates) into " << r.out_dir << '\n';
   }
-  g_interrupted = false;
-  std::signal(SIGINT, on_interrupt);
-  std::signal(SIGTERM, on_interrupt);
   bool is_root = true;
-  const ex::RunnerSummary s =
-      o.mpi ? ex::run_experiment_mpi(x, *model, r, is_root) : ex::run_experiment(x, *model, r);
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
+  const ex::RunnerSummary s = run_interruptibly(o, x, *model, r, is_root);
   if (!is_root) return;  // rank 0 reports for everyone
-  if (o.json) {
-    print_json({{"experiment", x.name},
-                {"database", s.database},
-                {"total_runs", s.total_runs},
-                {"shard_runs", s.shard_runs},
-                {"already_done", s.already_done},
-                {"ran", s.ran},
-                {"ok", s.ok},
-                {"error", s.failed},
-                {"timeout", s.timed_out},
-                {"interrupted", s.interrupted},
-                {"seconds", s.seconds}});
-  } else {
-    std::cout << s.database << ": " << s.ran << " runs in " << s.seconds << " s (" << s.ok
-              << " ok, " << s.failed << " error, " << s.timed_out << " timeout)";
-    if (s.already_done > 0) std::cout << ", " << s.already_done << " were already done";
-    std::cout << '\n';
-  }
+  print_run_summary(o, x, s);
   if (!s.interrupted && r.shard_count == 1 && !x.comparisons.empty()) {
     compare_runs(r.out_dir, o.jobs, o.json);
   }

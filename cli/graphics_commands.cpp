@@ -722,11 +722,7 @@ void run_lod_view(const ViewCommand& c, const graphics::ViewerOptions& options,
   }
 }
 
-void run_view(const ViewCommand& c) {
-  const auto t0 = std::chrono::steady_clock::now();
-  if (!graphics::viewer_available()) {
-    throw ValueError("fspm was built without the viewer (FSPM_WITH_VIEWER=OFF)");
-  }
+graphics::ViewerOptions viewer_options(const ViewCommand& c) {
   graphics::ViewerOptions options;
   graphics::parse_size(c.size, options.width, options.height);
   options.color_by = c.color_by;
@@ -735,6 +731,90 @@ void run_view(const ViewCommand& c) {
   options.shadows = !c.no_shadows;
   options.panel = !c.no_panel;
   options.pitch_deg = c.pitch_deg;
+  return options;
+}
+
+// A growth sequence written by fspm mesh -o X.pvd (or any ParaView collection of .vtp triangle
+// meshes): one step per data set, the age keys stepping through its time steps.
+void load_pvd_steps(const ViewCommand& c, std::vector<graphics::InstancedMesh>& steps,
+                    std::vector<double>& ages) {
+  if (c.trees.size() != 1) throw ValueError("fspm view opens one .pvd sequence at a time");
+  if (!c.ages.empty()) throw ValueError("--ages does not apply to a .pvd (its time steps do)");
+  if (!graphics::vtk_available()) {
+    throw ValueError("fspm was built without VTK (FSPM_WITH_VTK=OFF): cannot read .vtp steps");
+  }
+  for (const auto& step : graphics::read_pvd_file(c.trees[0])) {
+    steps.push_back(graphics::InstancedMesh::single(graphics::read_vtp_mesh(step.path)));
+    ages.push_back(step.time);
+  }
+}
+
+// Trees, plants, scenes and L-systems read (and checked) before any window opens; the ages of
+// the compressed plants when --ages gives none.
+std::vector<ViewSource> read_view_sources(const ViewCommand& c, int size_px,
+                                          std::vector<double>& ages) {
+  std::vector<ViewSource> sources;
+  for (const auto& path : c.trees) {
+    ViewSource s;
+    s.path = path;
+    s.kind = input_kind(path);
+    s.lod = c.graph_lod.lod();
+    if (is_compressed(s.kind)) {
+      s.graph = load_compressed(path, s.kind);
+      if (ages.empty()) ages = plant_ages(s.graph);
+    } else if (s.kind == InputKind::kTree) {
+      s.tree = read_tree_file(path, c.format);
+      if (s.lod.active()) s.tree = reduce_tree(s.tree, s.lod);
+    } else if (s.kind == InputKind::kLsystem) {
+      s.drawing = draw_lsystem_file(path, c.lsystem, size_px);
+    } else {
+      (void)graphics::read_scene_file(path);  // bad scene: error before any window
+    }
+    sources.push_back(std::move(s));
+  }
+  return sources;
+}
+
+// The meshes of every age step, and a far level of detail: rings four times coarser, at most
+// six sides.
+void mesh_view_steps(const ViewCommand& c, const std::vector<ViewSource>& sources,
+                     std::vector<double>& ages, std::vector<graphics::InstancedMesh>& steps,
+                     std::vector<graphics::InstancedMesh>& far) {
+  if (ages.empty()) ages.push_back(std::numeric_limits<double>::infinity());
+  std::sort(ages.begin(), ages.end());
+  graphics::MeshOptions mesh_options;
+  set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
+  steps = view_steps(sources, c.format, ages, mesh_options);
+  graphics::MeshOptions coarse = mesh_options;
+  coarse.edge_length_m *= 4.0;
+  coarse.max_sides = 6;
+  coarse.min_sides = 3;
+  far = view_steps(sources, c.format, ages, coarse);
+}
+
+void print_view_json(const ViewCommand& c, const std::vector<graphics::InstancedMesh>& steps,
+                     const graphics::ViewerStats& stats, std::chrono::steady_clock::time_point t0) {
+  std::size_t meshes = 0, instances = 0;
+  for (const auto& step : steps) {
+    meshes += step.meshes.size();
+    instances += step.instances.size();
+  }
+  print_json({{"frames", stats.frames},
+              {"mean_frame_ms", stats.mean_frame_ms},
+              {"triangles", stats.triangles},
+              {"steps", steps.size()},
+              {"meshes", meshes},
+              {"instances", instances},
+              {"screenshot", c.screenshot},
+              {"seconds", seconds_since(t0)}});
+}
+
+void run_view(const ViewCommand& c) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (!graphics::viewer_available()) {
+    throw ValueError("fspm was built without the viewer (FSPM_WITH_VIEWER=OFF)");
+  }
+  const graphics::ViewerOptions options = viewer_options(c);
   if (!c.screenshot.empty()) graphics::check_image_path(c.screenshot);
   check_lsystem_draw_arguments(c.lsystem, c.trees);
   check_graph_lod(c.graph_lod, c.trees, c.lod);
@@ -748,48 +828,10 @@ void run_view(const ViewCommand& c) {
     return input_kind(p) == InputKind::kPvd;
   });
   if (pvd) {
-    // A growth sequence written by fspm mesh -o X.pvd (or any ParaView collection of .vtp
-    // triangle meshes): one step per data set, the age keys stepping through its time steps.
-    if (c.trees.size() != 1) throw ValueError("fspm view opens one .pvd sequence at a time");
-    if (!c.ages.empty()) throw ValueError("--ages does not apply to a .pvd (its time steps do)");
-    if (!graphics::vtk_available()) {
-      throw ValueError("fspm was built without VTK (FSPM_WITH_VTK=OFF): cannot read .vtp steps");
-    }
-    for (const auto& step : graphics::read_pvd_file(c.trees[0])) {
-      steps.push_back(graphics::InstancedMesh::single(graphics::read_vtp_mesh(step.path)));
-      ages.push_back(step.time);
-    }
+    load_pvd_steps(c, steps, ages);
   } else {
-    std::vector<ViewSource> sources;
-    for (const auto& path : c.trees) {
-      ViewSource s;
-      s.path = path;
-      s.kind = input_kind(path);
-      s.lod = c.graph_lod.lod();
-      if (is_compressed(s.kind)) {
-        s.graph = load_compressed(path, s.kind);
-        if (ages.empty()) ages = plant_ages(s.graph);
-      } else if (s.kind == InputKind::kTree) {
-        s.tree = read_tree_file(path, c.format);
-        if (s.lod.active()) s.tree = reduce_tree(s.tree, s.lod);
-      } else if (s.kind == InputKind::kLsystem) {
-        s.drawing = draw_lsystem_file(path, c.lsystem, std::max(options.width, options.height));
-      } else {
-        (void)graphics::read_scene_file(path);  // bad scene: error before any window
-      }
-      sources.push_back(std::move(s));
-    }
-    if (ages.empty()) ages.push_back(std::numeric_limits<double>::infinity());
-    std::sort(ages.begin(), ages.end());
-    graphics::MeshOptions mesh_options;
-    set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
-    steps = view_steps(sources, c.format, ages, mesh_options);
-    // Far level of detail: rings four times coarser, at most six sides.
-    graphics::MeshOptions coarse = mesh_options;
-    coarse.edge_length_m *= 4.0;
-    coarse.max_sides = 6;
-    coarse.min_sides = 3;
-    far = view_steps(sources, c.format, ages, coarse);
+    const auto sources = read_view_sources(c, std::max(options.width, options.height), ages);
+    mesh_view_steps(c, sources, ages, steps, far);
   }
   if (!c.color_by.empty()) {
     for (const auto& step : steps) {
@@ -798,21 +840,7 @@ void run_view(const ViewCommand& c) {
   }
   if (!c.screenshot.empty()) rerun_under_xvfb_if_needed();
   const graphics::ViewerStats stats = graphics::run_instanced_viewer(steps, ages, options, far);
-  if (c.json) {
-    std::size_t meshes = 0, instances = 0;
-    for (const auto& step : steps) {
-      meshes += step.meshes.size();
-      instances += step.instances.size();
-    }
-    print_json({{"frames", stats.frames},
-                {"mean_frame_ms", stats.mean_frame_ms},
-                {"triangles", stats.triangles},
-                {"steps", steps.size()},
-                {"meshes", meshes},
-                {"instances", instances},
-                {"screenshot", c.screenshot},
-                {"seconds", seconds_since(t0)}});
-  }
+  if (c.json) print_view_json(c, steps, stats, t0);
 }
 
 // --foliage and --seed of the commands that draw leaf clusters.
@@ -842,7 +870,7 @@ void add_lod_options(CLI::App* command, bool& lod, double& distance_m) {
 }  // namespace
 
 void add_graphics_commands(CLI::App& app) {
-  const std::string formats = "tree, treeb, nwk (default: from the extension)";
+  const std::string formats = "tree, treeb, nwk or mtg (default: from the extension)";
 
   auto mesh = std::make_shared<MeshCommand>();
   CLI::App* m = app.add_subcommand(kMeshCommand.name, kMeshCommand.description);

@@ -199,9 +199,10 @@ void add_greenlab_commands(CLI::App& app) {
   auto fit = std::make_shared<FitOptions>();
   CLI::App* f = gl->add_subcommand(
       "fit", "Calibrate GL1 parameters on target data (CSV: quantity,age,cycle,value)");
-  f->add_option("PARAMS", fit->params, "Plant description with [functional] and [calibration]")
+  f->add_option("PARAMS", fit->params,
+                "Plant description (TOML) with [functional] and [calibration]")
       ->required();
-  f->add_option("TARGET", fit->targets, "Target data (CSV)")->required();
+  f->add_option("TARGET", fit->targets, "Target data (CSV, see docs/greenlab.md)")->required();
   f->add_option("-o,--output", fit->out, "Fitted plant description (TOML)")->required();
   f->add_option("--max-iterations", fit->max_iterations, "Solver iteration limit")
       ->check(number_in(1, 1e6));

@@ -254,13 +254,13 @@ void add_lsystem_commands(CLI::App& app) {
                      "for fspm greenlab reconstruct, mesh, render and view; --json adds "
                      "ctree_records, ctree_organs and ctree_bytes");
   derive->add_option("--view", derive_opts->view,
-                     "With -o: view file (default: the .v beside FILE)");
+                     "With -o: view file (.v; default: the .v beside FILE)");
   derive->callback([derive_opts] { run_derive(*derive_opts); });
 
   auto interp_opts = std::make_shared<LsystemOptions>();
   auto* interp = group->add_subcommand("interpret", "Derive and draw into a tree graph file");
   add_common(interp, *interp_opts);
-  interp->add_option("--view", interp_opts->view, "View file (default: the .v beside FILE)");
+  interp->add_option("--view", interp_opts->view, "View file (.v; default: the .v beside FILE)");
   interp
       ->add_option("-o,--output", interp_opts->output,
                    "Tree file (.tree, .treeb, .nwk, .mtg), mesh (.glb keeps the instances; "

@@ -36,7 +36,7 @@ struct EncodeCommand {
 
 bool is_tree_file(const std::string& path) {
   const std::string ext = std::filesystem::path(path).extension().string();
-  return ext == ".tree" || ext == ".treeb" || ext == ".nwk";
+  return ext == ".tree" || ext == ".treeb" || ext == ".nwk" || ext == ".mtg";
 }
 
 // A point set, or a tree model scanned as a laser scanner at four positions would see it.
@@ -91,7 +91,8 @@ void add_encode_command(CLI::App& app) {
       "leaf clusters");
   e->add_option("INPUT", o->input,
                 "Point set (.ply, .xyz, .txt, .csv, .pcd), mesh (.obj, .gltf, .glb: its "
-                "vertices) or tree model (.tree, .treeb, .nwk: scanned from four positions first)")
+                "vertices) or tree model (.tree, .treeb, .nwk, .mtg: scanned from four positions "
+                "first)")
       ->required();
   e->add_option("-o,--output", o->output, "The .clusters file to write")->required();
   e->add_option("--species", o->species, "Parameters of Pirk Table 3.1 (pine, willow, ...)");
@@ -139,7 +140,7 @@ void add_scan_command(CLI::App& app) {
   auto o = std::make_shared<ScanCommand>();
   CLI::App* s = app.add_subcommand(
       "scan", "Simulated laser scan of a tree model: visible branch surfaces, range noise");
-  s->add_option("TREE", o->tree, "The tree (.tree, .treeb, .nwk)")->required();
+  s->add_option("TREE", o->tree, "The tree (.tree, .treeb, .nwk, .mtg)")->required();
   s->add_option("-o,--output", o->output, "Point set to write (.ply or .xyz)")->required();
   s->add_option("--scanners", o->options.scanners, "Scanner positions around the tree")
       ->check(number_in(1, 64));

@@ -41,6 +41,13 @@ class IoError : public Error {
   using Error::Error;
 };
 
+// An input file that does not exist (the path, or a folder on it, is missing): an IoError that
+// callers can tell apart (Python raises it as a FileNotFoundError).
+class FileNotFoundError : public IoError {
+ public:
+  using IoError::IoError;
+};
+
 // A parameter outside its valid range, an unknown name, an impossible request.
 class ValueError : public Error {
  public:

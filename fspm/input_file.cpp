@@ -34,6 +34,9 @@ std::string size_text(std::uint64_t bytes) {
 class Descriptor {
  public:
   explicit Descriptor(const std::string& path) : fd_(::open(path.c_str(), O_RDONLY | O_CLOEXEC)) {
+    if (fd_ < 0 && errno == ENOENT) {
+      throw FileNotFoundError("cannot open for reading: " + reason(errno), path);
+    }
     if (fd_ < 0) throw IoError("cannot open for reading: " + reason(errno), path);
   }
   ~Descriptor() { ::close(fd_); }

@@ -25,13 +25,15 @@ void step_slider(const PanelInfo& info, ViewerControls& c) {
                     std::isfinite((*info.labels)[c.step]);
   char format[64];
   if (aged) {
-    std::snprintf(format, sizeof(format), "%%d of %d: age %g", n - 1, (*info.labels)[c.step]);
+    std::snprintf(format, sizeof(format), "%%d of %d: age %g", n, (*info.labels)[c.step]);
   } else {
-    std::snprintf(format, sizeof(format), "%%d of %d", n - 1);
+    std::snprintf(format, sizeof(format), "%%d of %d", n);
   }
+  int shown = c.step + 1;  // counted from 1, as a user counts the ages given
   ImGui::BeginDisabled(n == 1);
-  ImGui::SliderInt("step", &c.step, 0, n - 1, format, ImGuiSliderFlags_AlwaysClamp);
+  ImGui::SliderInt("step", &shown, 1, n, format, ImGuiSliderFlags_AlwaysClamp);
   ImGui::EndDisabled();
+  c.step = shown - 1;
 }
 
 // The colour attribute: the materials' colours or one of the meshes' attributes.

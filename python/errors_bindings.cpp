@@ -39,6 +39,11 @@ void bind_errors(py::module_& m) {
   static PyObject* const io_error =
       new_exception(m, "IoError", "A file that cannot be opened, read or written (also an OSError)",
                     {error, PyExc_OSError});
+  static PyObject* const file_not_found = new_exception(
+      m, "FileNotFoundError_",
+      "An input file that does not exist (also an IoError, an OSError and a FileNotFoundError); "
+      "fspm.MissingFileError",
+      {io_error, PyExc_FileNotFoundError});
   static PyObject* const value_error = new_exception(
       m, "ValueError_",
       "A parameter outside its valid range, an unknown name or an impossible request (also a "
@@ -54,6 +59,8 @@ void bind_errors(py::module_& m) {
       if (p) std::rethrow_exception(p);
     } catch (const fspm::ParseError& e) {
       PyErr_SetString(parse_error, e.what());
+    } catch (const fspm::FileNotFoundError& e) {
+      PyErr_SetString(file_not_found, e.what());
     } catch (const fspm::IoError& e) {
       PyErr_SetString(io_error, e.what());
     } catch (const fspm::ValueError& e) {

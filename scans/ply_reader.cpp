@@ -37,6 +37,34 @@ std::uint32_t face_index(double v, const std::string& path) {
   return static_cast<std::uint32_t>(v);
 }
 
+// A value of `type` at `p`, in the machine's byte order.
+double load(PlyType type, const char* p) {
+  const auto as = [p]<class T>(T) {
+    T v;
+    std::memcpy(&v, p, sizeof v);
+    return static_cast<double>(v);
+  };
+  switch (type) {
+    case PlyType::kInt8:
+      return as(std::int8_t{});
+    case PlyType::kUint8:
+      return as(std::uint8_t{});
+    case PlyType::kInt16:
+      return as(std::int16_t{});
+    case PlyType::kUint16:
+      return as(std::uint16_t{});
+    case PlyType::kInt32:
+      return as(std::int32_t{});
+    case PlyType::kUint32:
+      return as(std::uint32_t{});
+    case PlyType::kFloat32:
+      return as(float{});
+    case PlyType::kFloat64:
+      return as(double{});
+  }
+  return 0.0;
+}
+
 class BinaryCursor {
  public:
   BinaryCursor(std::string_view data, std::size_t pos, bool big_endian, const std::string& path)
@@ -56,38 +84,11 @@ class BinaryCursor {
     std::memcpy(b, data_.data() + pos_, n);
     if (swap_) std::reverse(b, b + n);
     pos_ += n;
-    return decode(type, b);
+    return load(type, reinterpret_cast<const char*>(b));
   }
   std::size_t offset() const { return pos_; }
 
  private:
-  static double decode(PlyType type, const unsigned char* b) {
-    switch (type) {
-      case PlyType::kInt8:
-        return static_cast<std::int8_t>(b[0]);
-      case PlyType::kUint8:
-        return b[0];
-      case PlyType::kInt16:
-        return as<std::int16_t>(b);
-      case PlyType::kUint16:
-        return as<std::uint16_t>(b);
-      case PlyType::kInt32:
-        return as<std::int32_t>(b);
-      case PlyType::kUint32:
-        return as<std::uint32_t>(b);
-      case PlyType::kFloat32:
-        return as<float>(b);
-      case PlyType::kFloat64:
-        return as<double>(b);
-    }
-    return 0.0;
-  }
-  template <class T>
-  static double as(const unsigned char* b) {
-    T v;
-    std::memcpy(&v, b, sizeof v);
-    return static_cast<double>(v);
-  }
   std::string_view data_;
   std::size_t pos_;
   bool swap_;
@@ -98,38 +99,137 @@ bool is_face_list(const PlyElement& e, const PlyProperty& p) {
   return e.name == "face" && p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index");
 }
 
+// An element of one list of 32-bit integers among scalar properties (the face element as most
+// writers give it), in bulk; the list is kept when it is the face list and `faces` is given.
+bool read_bulk_list(const PlyElement& e, std::string_view data, std::size_t& pos,
+                    const std::string& path, std::vector<std::vector<std::uint32_t>>* faces) {
+  const PlyProperty* list = nullptr;
+  std::size_t before = 0, after = 0;  // bytes of the scalar properties around the list
+  for (const PlyProperty& p : e.properties) {
+    if (p.is_list && list != nullptr) return false;
+    if (p.is_list) list = &p;
+    if (!p.is_list) (list == nullptr ? before : after) += ply_type_size(p.type);
+  }
+  if (list == nullptr || (list->type != PlyType::kInt32 && list->type != PlyType::kUint32)) {
+    return false;
+  }
+  const bool keep = faces != nullptr && is_face_list(e, *list);
+  const std::size_t count_size = ply_type_size(list->count_type);
+  std::vector<std::vector<std::uint32_t>> read;
+  if (keep) read.reserve(e.count);
+  std::size_t at = pos;
+  for (std::size_t k = 0; k < e.count; ++k) {
+    if (data.size() - at < before + count_size) return false;
+    at += before;
+    const double n = load(list->count_type, data.data() + at);
+    at += count_size;
+    if (!(n >= 0.0) || static_cast<double>((data.size() - at) / 4) < n) return false;
+    const auto size = static_cast<std::size_t>(n);
+    if (data.size() - at - 4 * size < after) return false;
+    if (keep) {
+      std::vector<std::uint32_t>& face = read.emplace_back(size);
+      std::memcpy(face.data(), data.data() + at, 4 * size);
+      if (list->type == PlyType::kInt32) {
+        for (const std::uint32_t i : face) {
+          if (i > 0x7fffffffu) face_index(static_cast<std::int32_t>(i), path);  // throws
+        }
+      }
+    }
+    at += 4 * size + after;
+  }
+  if (keep) {
+    faces->insert(faces->end(), std::make_move_iterator(read.begin()),
+                  std::make_move_iterator(read.end()));
+  }
+  pos = at;
+  return true;
+}
+
+// The common layouts in the machine's byte order, read in bulk rather than value by value: an
+// element of scalar properties only (fixed record size; the vertex element's x, y, z taken at
+// their offsets) and an element of one list of 32-bit integers among scalars (read_bulk_list).
+// Returns false, having read nothing, for another layout or a file too short, which the
+// value-by-value reader then handles (and reports).
+bool read_bulk(const PlyElement& e, std::string_view data, std::size_t& pos,
+               const std::string& path, PointSet& out,
+               std::vector<std::vector<std::uint32_t>>* faces) {
+  const bool scalars = std::none_of(e.properties.begin(), e.properties.end(),
+                                    [](const PlyProperty& p) { return p.is_list; });
+  if (scalars) {
+    std::size_t stride = 0;
+    std::array<std::size_t, 3> at{};
+    const std::array<int, 3> col = xyz_columns(e);
+    for (std::size_t i = 0; i < e.properties.size(); ++i) {
+      for (int c = 0; c < 3; ++c) at[c] = col[c] == static_cast<int>(i) ? stride : at[c];
+      stride += ply_type_size(e.properties[i].type);
+    }
+    if (stride == 0 || (data.size() - pos) / stride < e.count) return false;
+    if (e.name == "vertex") {
+      out.points.reserve(e.count);
+      std::array<PlyType, 3> type{};
+      for (int c = 0; c < 3; ++c) type[c] = e.properties[static_cast<std::size_t>(col[c])].type;
+      for (std::size_t k = 0; k < e.count; ++k) {
+        const char* record = data.data() + pos + k * stride;
+        const Eigen::Vector3d p(load(type[0], record + at[0]), load(type[1], record + at[1]),
+                                load(type[2], record + at[2]));
+        if (!p.allFinite()) {
+          throw ParseError("vertex " + std::to_string(k) + " at byte " +
+                               std::to_string(pos + k * stride) +
+                               " has a nan or infinite coordinate",
+                           path);
+        }
+        out.points.push_back(p);
+      }
+    }
+    pos += e.count * stride;
+    return true;
+  }
+  return read_bulk_list(e, data, pos, path, faces);
+}
+
+// One element value by value.
+void read_element(const PlyElement& e, BinaryCursor& cur, const std::string& path, PointSet& out,
+                  std::vector<std::vector<std::uint32_t>>* faces) {
+  const std::array<int, 3> col = xyz_columns(e);
+  const bool is_vertex = e.name == "vertex";
+  if (is_vertex) out.points.reserve(e.count);
+  for (std::size_t k = 0; k < e.count; ++k) {
+    const std::size_t at = cur.offset();
+    double xyz[3] = {0, 0, 0};
+    for (std::size_t i = 0; i < e.properties.size(); ++i) {
+      const PlyProperty& p = e.properties[i];
+      const double v = cur.read(p.is_list ? p.count_type : p.type);
+      if (p.is_list) {
+        const bool keep = faces != nullptr && is_face_list(e, p);
+        if (keep) faces->emplace_back();
+        for (double j = 0; j < v; ++j) {
+          const double index = cur.read(p.type);
+          if (keep) faces->back().push_back(face_index(index, path));
+        }
+      }
+      for (int c = 0; c < 3; ++c) xyz[c] = col[c] == static_cast<int>(i) ? v : xyz[c];
+    }
+    if (!is_vertex) continue;
+    if (!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2])) {
+      throw ParseError("vertex " + std::to_string(k) + " at byte " + std::to_string(at) +
+                           " has a nan or infinite coordinate",
+                       path);
+    }
+    out.points.emplace_back(xyz[0], xyz[1], xyz[2]);
+  }
+}
+
 // Faces of the "face" element, kept only when `faces` is given.
 void read_binary(const PlyHeader& h, std::string_view data, const std::string& path, PointSet& out,
                  std::vector<std::vector<std::uint32_t>>* faces) {
-  BinaryCursor cur(data, h.data_offset, h.format == PlyFormat::kBinaryBigEndian, path);
+  const bool native =
+      (h.format == PlyFormat::kBinaryBigEndian) == (std::endian::native == std::endian::big);
+  std::size_t pos = h.data_offset;
   for (const PlyElement& e : h.elements) {
-    const std::array<int, 3> col = xyz_columns(e);
-    const bool is_vertex = e.name == "vertex";
-    if (is_vertex) out.points.reserve(e.count);
-    for (std::size_t k = 0; k < e.count; ++k) {
-      const std::size_t at = cur.offset();
-      double xyz[3] = {0, 0, 0};
-      for (std::size_t i = 0; i < e.properties.size(); ++i) {
-        const PlyProperty& p = e.properties[i];
-        const double v = cur.read(p.is_list ? p.count_type : p.type);
-        if (p.is_list) {
-          const bool keep = faces != nullptr && is_face_list(e, p);
-          if (keep) faces->emplace_back();
-          for (double j = 0; j < v; ++j) {
-            const double index = cur.read(p.type);
-            if (keep) faces->back().push_back(face_index(index, path));
-          }
-        }
-        for (int c = 0; c < 3; ++c) xyz[c] = col[c] == static_cast<int>(i) ? v : xyz[c];
-      }
-      if (!is_vertex) continue;
-      if (!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2])) {
-        throw ParseError("vertex " + std::to_string(k) + " at byte " + std::to_string(at) +
-                             " has a nan or infinite coordinate",
-                         path);
-      }
-      out.points.emplace_back(xyz[0], xyz[1], xyz[2]);
-    }
+    if (native && read_bulk(e, data, pos, path, out, faces)) continue;
+    BinaryCursor cur(data, pos, h.format == PlyFormat::kBinaryBigEndian, path);
+    read_element(e, cur, path, out, faces);
+    pos = cur.offset();
   }
 }
 

@@ -122,6 +122,7 @@ from ._fspm import (  # noqa: F401
     write_tree,
     write_vtp,
     ValueError_ as ParameterError,
+    FileNotFoundError_ as MissingFileError,
 )
 
 # Crowns from photographs need OpenImageIO (built with the VTK option).

@@ -52,6 +52,38 @@ def test_errors_are_also_the_matching_builtin_exceptions(tmp_path):
     assert issubclass(fspm.ParseError, ValueError) and issubclass(fspm.IoError, OSError)
 
 
+def test_builtin_exceptions_catch_errors_raised_in_cpp(tmp_path):
+    # Each raised from C++ and caught by the built-in class alone, as a user would write it.
+    try:
+        fspm.read_tree(str(tmp_path / "missing.tree"))
+    except FileNotFoundError as e:
+        assert isinstance(e, fspm.IoError) and isinstance(e, fspm.MissingFileError)
+        assert "missing.tree: cannot open for reading: No such file or directory" in str(e)
+    else:
+        pytest.fail("no FileNotFoundError for a missing file")
+    (tmp_path / "bad.nwk").write_text("((1,2);\n")
+    try:
+        fspm.read_tree(str(tmp_path / "bad.nwk"))
+    except ValueError as e:
+        assert isinstance(e, fspm.ParseError) and not isinstance(e, OSError)
+        assert "bad.nwk" in str(e)
+    else:
+        pytest.fail("no ValueError for a malformed file")
+    # A directory is an OSError, but it exists: not a FileNotFoundError.
+    try:
+        fspm.read_tree(str(tmp_path))
+    except OSError as e:
+        assert not isinstance(e, FileNotFoundError) and "is a directory" in str(e)
+    else:
+        pytest.fail("no OSError for a directory")
+    try:
+        fspm.set_memory_limit("lots")
+    except ValueError as e:
+        assert isinstance(e, fspm.ParameterError) and "expected a size" in str(e)
+    else:
+        pytest.fail("no ValueError for a bad parameter")
+
+
 def test_write_and_read_every_format(tmp_path):
     t = fspm.parse_newick("((1,2)3,(4,(5,6)7)8)9;")
     for ext in ("tree", "treeb", "nwk"):

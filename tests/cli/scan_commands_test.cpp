@@ -36,6 +36,26 @@ TEST(ScanCli, ScanThenEncodeReportsWhatItWrote) {
   EXPECT_GE(j["seconds"].get<double>(), 0.0);
 }
 
+// An MTG is a tree model like the others: scanned as the same tree in .treeb gives the same
+// points.
+TEST(ScanCli, EncodeAndScanReadMtgTrees) {
+  const auto dir = scratch_dir("scan_mtg");
+  const std::string mtg = (dir / "tree.mtg").string();
+  const std::string treeb = (dir / "tree.treeb").string();
+  ASSERT_EQ(run_fspm("tree convert " + kTree + " " + mtg).exit_code, 0);
+  ASSERT_EQ(run_fspm("tree convert " + mtg + " " + treeb).exit_code, 0);
+  const auto from_treeb = run_fspm("scan " + treeb + " --seed 3 -o " + (dir / "a.ply").string());
+  const auto from_mtg = run_fspm("scan " + mtg + " --seed 3 -o " + (dir / "b.ply").string());
+  ASSERT_EQ(from_treeb.exit_code, 0) << from_treeb.err;
+  ASSERT_EQ(from_mtg.exit_code, 0) << from_mtg.err;
+  EXPECT_GT(read_text(dir / "a.ply").size(), 10000u);
+  EXPECT_EQ(read_text(dir / "a.ply"), read_text(dir / "b.ply"));
+  const auto r = run_fspm("encode " + mtg + " -o " + (dir / "t.clusters").string() + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(nlohmann::json::parse(r.out)["points"].get<std::size_t>(), 1000u);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(ScanCli, MistakesExitWithOneLine) {
   const auto dir = scratch_dir("scan_bad");
   const std::string xyz = (dir / "p.xyz").string();

@@ -205,5 +205,56 @@ TEST(PlyReader, ReadsFacesAsAMesh) {
   EXPECT_THROW(parse_ply_mesh(bad, "bad.ply"), ParseError);
 }
 
+// Little endian takes the bulk path of the common layouts, big endian the value-by-value one:
+// both give the hand-written mesh (mixed scalar types, properties around x and around the face
+// list, 4- and 3-gons).
+TEST(PlyReader, BulkAndValueByValueReadingAgree) {
+  const auto file = [](bool big, std::int32_t last_index, std::size_t drop_bytes) {
+    std::string data = std::string("ply\nformat ") +
+                       (big ? "binary_big_endian" : "binary_little_endian") +
+                       " 1.0\nelement vertex 5\nproperty uchar red\nproperty float x\n"
+                       "property double y\nproperty int16 z\nelement face 2\n"
+                       "property uchar flags\nproperty list uchar int vertex_indices\n"
+                       "property int16 material\nend_header\n";
+    const double corners[5][3] = {{0, 0, 0}, {1.5, 0, 0}, {1.5, 2.25, 0}, {0, 2.25, 0}, {0, 0, 7}};
+    for (const auto& c : corners) {
+      append<std::uint8_t>(data, 9);
+      append(data, static_cast<float>(c[0]), big);
+      append(data, c[1], big);
+      append(data, static_cast<std::int16_t>(c[2]), big);
+    }
+    append<std::uint8_t>(data, 1);
+    append<std::uint8_t>(data, 4);
+    for (std::int32_t i : {0, 1, 2, 3}) append(data, i, big);
+    append<std::int16_t>(data, 5, big);
+    append<std::uint8_t>(data, 1);
+    append<std::uint8_t>(data, 3);
+    for (std::int32_t i : {0, 1, last_index}) append(data, i, big);
+    append<std::int16_t>(data, 5, big);
+    data.resize(data.size() - drop_bytes);
+    return data;
+  };
+  for (bool big : {false, true}) {
+    const GroupedMesh m = parse_ply_mesh(file(big, 4, 0), "m.ply");
+    ASSERT_EQ(m.vertices.size(), 5u) << big;
+    EXPECT_EQ(m.vertices[2], Eigen::Vector3d(1.5, 2.25, 0)) << big;
+    EXPECT_EQ(m.vertices[4], Eigen::Vector3d(0, 0, 7)) << big;
+    ASSERT_EQ(m.faces.size(), 2u) << big;
+    EXPECT_EQ(m.faces[0], (std::vector<std::uint32_t>{0, 1, 2, 3})) << big;
+    EXPECT_EQ(m.faces[1], (std::vector<std::uint32_t>{0, 1, 4})) << big;
+    EXPECT_EQ(parse_ply_points(file(big, 4, 0), "m.ply").points.size(), 5u) << big;
+    EXPECT_THROW(parse_ply_mesh(file(big, -1, 0), "n.ply"), ParseError) << big;
+    // The last index cut in half: the error names the byte where the file ends.
+    const std::string cut = file(big, 4, 4);
+    try {
+      parse_ply_mesh(cut, "t.ply");
+      ADD_FAILURE() << "expected a ParseError";
+    } catch (const ParseError& e) {
+      EXPECT_NE(e.message().find("byte " + std::to_string(cut.size() - 2)), std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace fspm::scans
