@@ -24,6 +24,7 @@
 #include "cli/lsystem_mesh.hpp"
 #include "cli/lsystem_source.hpp"
 #include "cli/output.hpp"
+#include "cli/placed_mesh.hpp"
 #include "cli/scan_render_mesh.hpp"
 #include "cli/scene_obstacles.hpp"
 #include "cli/wind_skin.hpp"
@@ -149,7 +150,7 @@ void report_missing_leaves(const graphics::InstancedMesh& mesh, const std::strin
 // What a graphics command was given: a tree file, a compressed graph (.ctree) or a GreenLab plant
 // description (.toml, simulated on the fly), a scene of many plants (.json), a ParaView growth
 // sequence (.pvd, viewer only) or an L-system (.l, drawn by the turtle; not inside a scene).
-enum class InputKind { kTree, kCompressed, kPlant, kScene, kPvd, kLsystem };
+enum class InputKind { kTree, kCompressed, kPlant, kScene, kPvd, kLsystem, kMesh };
 
 InputKind input_kind(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -160,6 +161,7 @@ InputKind input_kind(const std::string& path) {
   if (ext == ".json") return InputKind::kScene;
   if (ext == ".pvd") return InputKind::kPvd;
   if (ext == ".l") return InputKind::kLsystem;
+  if (is_placed_mesh_path(path)) return InputKind::kMesh;  // a crown from fspm crown
   return InputKind::kTree;
 }
 
@@ -201,6 +203,7 @@ graphics::InstancedMesh load_part(const std::string& path, InputKind kind,
                                   graphics::MeshOptions options, const LevelOfDetail& lod = {}) {
   if (is_compressed(kind)) return mesh_compressed(load_compressed(path, kind), age, options, lod);
   if (kind == InputKind::kScene) throw ValueError("a scene cannot include another scene", path);
+  if (kind == InputKind::kMesh) return graphics::InstancedMesh::single(read_placed_mesh(path));
   if (kind == InputKind::kPvd) {
     throw ValueError("a .pvd is a growth sequence of meshes: open it with fspm view", path);
   }

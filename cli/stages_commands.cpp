@@ -3,10 +3,14 @@
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
@@ -29,8 +33,11 @@ struct StagesOptions {
   int steps = 0;
   int season_years = 0;
   bool added = false;
+  bool added_overlap = false;
   double added_gamma = 1.0;
   double profile_m = 0.0;
+  std::vector<std::string> age_branch;   // NODE:DT (Pirk 5.4.1)
+  std::vector<std::string> copy_branch;  // FROM:TO
   bool json = false;
   // Mesh input (Pirk 5.2.1).
   std::string skeleton;
@@ -103,6 +110,61 @@ nlohmann::json profile_json(const TreeGraph& tree, double layer_m) {
   return out;
 }
 
+// "A:B" split at its one colon into two non-empty parts; throws ValueError naming `option`.
+std::pair<std::string, std::string> split_pair(const std::string& text, const char* option,
+                                               const char* form) {
+  const std::size_t colon = text.find(':');
+  if (colon == std::string::npos || colon == 0 || colon + 1 == text.size() ||
+      text.find(':', colon + 1) != std::string::npos) {
+    throw ValueError(std::string(option) + ": expected " + form + ", got '" + text + "'");
+  }
+  return {text.substr(0, colon), text.substr(colon + 1)};
+}
+
+NodeId parse_node(const std::string& text, const char* option) {
+  std::size_t used = 0;
+  unsigned long id = 0;
+  try {
+    id = std::stoul(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || text.empty() || text.front() == '-' || id >= kNoNode) {
+    throw ValueError(std::string(option) + ": '" + text + "' is not a node id");
+  }
+  return static_cast<NodeId>(id);
+}
+
+// Pirk 5.4.1: --age-branch NODE:DT (DT in units of t, or NODE:Ky for K years with
+// --season-years N, DT = K / N) and --copy-branch FROM:TO.
+stages::BranchEdits branch_edits(const StagesOptions& o) {
+  stages::BranchEdits edits;
+  for (const std::string& a : o.age_branch) {
+    auto [node, delta] = split_pair(a, "--age-branch", "NODE:DT (e.g. 812:0.1 or 812:-2y)");
+    const bool years = delta.back() == 'y';
+    if (years) delta.pop_back();
+    if (years && o.season_years <= 0) {
+      throw ValueError("--age-branch " + a + ": a change in years needs --season-years N");
+    }
+    std::size_t used = 0;
+    double dt = 0.0;
+    try {
+      dt = std::stod(delta, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != delta.size() || !std::isfinite(dt)) {
+      throw ValueError("--age-branch " + a + ": '" + delta + "' is not a number");
+    }
+    edits.age.push_back({parse_node(node, "--age-branch"), years ? dt / o.season_years : dt});
+  }
+  for (const std::string& c : o.copy_branch) {
+    const auto [from, to] = split_pair(c, "--copy-branch", "FROM:TO (e.g. 812:40)");
+    edits.copy.push_back({parse_node(from, "--copy-branch"), parse_node(to, "--copy-branch")});
+  }
+  return edits;
+}
+
 void run_stages(const StagesOptions& o) {
   refuse_overwriting_input(o.output, {o.tree});
   if (!o.skeleton.empty()) refuse_overwriting_input(o.skeleton, {o.tree});
@@ -111,8 +173,10 @@ void run_stages(const StagesOptions& o) {
   const TreeGraph tree = read_given_tree(o, mesh_info);
   auto t0 = std::chrono::steady_clock::now();
   stages::StagesParams params;
-  params.added.enabled = o.added;
+  params.added.enabled = o.added || o.added_overlap;
+  params.added.overlap = o.added_overlap;
   params.added.gamma = o.added_gamma;
+  params.edits = branch_edits(o);
   const stages::DevelopmentalModel model(tree, params);
   const double analysis_seconds = seconds_since(t0);
   if (o.steps > 0) std::filesystem::create_directories(o.output);
@@ -136,6 +200,7 @@ void run_stages(const StagesOptions& o) {
                 {"mesh", mesh_info},
                 {"chains", model.chain_count()},
                 {"added_branches", model.added_branch_count()},
+                {"overlap_branches", model.overlap_branch_count()},
                 {"crown_ratio", model.crown().crown_ratio()},
                 {"stages", times.size()},
                 {"times", times},
@@ -169,10 +234,23 @@ void add_stages_commands(CLI::App& app) {
   s->add_flag("--added", o->added,
               "Add the branches a young tree had below the crown and shed them as the crown "
               "ratio falls (Pirk 5.3.5-5.3.6, eq. 5.10)");
+  s->add_flag("--added-overlap", o->added_overlap,
+              "--added, and also fill the overlap region above the crown base where stratified "
+              "clipping finds more tissue than main-axis cutting (Pirk 5.3.5)");
   s->add_option("--added-gamma", o->added_gamma,
                 "gamma of eq. 5.10 for --added (1: the last stage is the given tree; < 1 keeps "
                 "some added branches, > 1 sheds them earlier)")
       ->check(number_in(1e-6, 100.0));
+  s->add_option("--age-branch", o->age_branch,
+                "NODE:DT: make the branch holding internode NODE older by DT (units of t; "
+                "negative: younger), or by K years as NODE:Ky with --season-years; it shows at "
+                "each stage what it would show DT later (Pirk 5.4.1). Repeatable")
+      ->allow_extra_args(false);
+  s->add_option("--copy-branch", o->copy_branch,
+                "FROM:TO: copy the branch holding internode FROM to the end of internode TO, "
+                "moved rigidly and growing from the time the tree reaches TO, at the age FROM "
+                "had when it started (Pirk 5.4.1). Repeatable")
+      ->allow_extra_args(false);
   s->add_option("--profile", o->profile_m,
                 "With --json: the given tree's profile diagrams (Pirk 5.3.4) in layers of this "
                 "many metres, by stratified clipping and main-axis cutting")

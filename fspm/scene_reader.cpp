@@ -4,6 +4,7 @@
 #include <cctype>
 #include <filesystem>
 #include <set>
+#include <system_error>
 
 #include "fspm/input_file.hpp"
 #include "fspm/json_fields.hpp"
@@ -58,16 +59,49 @@ SceneSky read_sky(const JsonFields& f, const json& s, const std::string& path) {
   return sky;
 }
 
+// A crown reconstructed from a photograph (`fspm crown`, Argudo ch. 4-5): its mesh (.glb or
+// .obj), or the output directory holding crown.glb; checked here so that a wrong path is named
+// with its line in the scene file.
+std::string crown_mesh_path(const JsonFields& f, const json& p, const std::string& path,
+                            const std::filesystem::path& base) {
+  const char* what = "a crown from fspm crown: its .glb or .obj mesh, or its output directory";
+  std::filesystem::path file = f.text(p, path, "crown", what);
+  if (file.is_relative() && !base.empty()) file = base / file;
+  file = file.lexically_normal();
+  std::error_code ec;
+  const auto fail = [&](const std::string& why) {
+    f.fail(path + "/crown", std::string(what) + " ('" + file.string() + "' " + why + ")",
+           &p.at("crown"));
+  };
+  if (!std::filesystem::exists(file, ec)) fail("does not exist");
+  if (std::filesystem::is_directory(file, ec)) {
+    file /= "crown.glb";
+    if (!std::filesystem::is_regular_file(file, ec)) fail("does not exist");
+  }
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext != ".glb" && ext != ".gltf" && ext != ".obj") {
+    fail("is neither a .glb, .gltf or .obj mesh nor a directory");
+  }
+  return file.string();
+}
+
 ScenePlant read_plant(const JsonFields& f, const json& p, const std::string& path,
                       const std::filesystem::path& base) {
   if (!p.is_object())
-    f.fail(path, "a plant object with file, position, rotation_deg, scale, age", &p);
-  f.check_keys(p, path, {"file", "position", "rotation_deg", "scale", "age"});
+    f.fail(path, "a plant object with file or crown, position, rotation_deg, scale, age", &p);
+  f.check_keys(p, path, {"file", "crown", "position", "rotation_deg", "scale", "age"});
   ScenePlant plant;
-  std::filesystem::path file =
-      f.text(p, path, "file", "a plant file (tree, .ctree or plant .toml)");
-  if (file.is_relative() && !base.empty()) file = base / file;
-  plant.file = file.lexically_normal().string();
+  if (p.contains("crown")) {
+    if (p.contains("file")) f.fail(path, "either file or crown, not both", &p);
+    plant.file = crown_mesh_path(f, p, path, base);
+  } else {
+    std::filesystem::path file =
+        f.text(p, path, "file", "a plant file (tree, .ctree or plant .toml)");
+    if (file.is_relative() && !base.empty()) file = base / file;
+    plant.file = file.lexically_normal().string();
+  }
   if (p.contains("position")) plant.position = f.vec<3>(p, path, "position");
   if (p.contains("rotation_deg")) {
     // A single number is a rotation about z.

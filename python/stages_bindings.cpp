@@ -27,6 +27,9 @@ void bind_stages(py::module_& m) {
                              "Number of chains (runs of edges of one Gravelius level), >= 1")
       .def_property_readonly("added_branch_count", &DevelopmentalModel::added_branch_count,
                              "Branches added below the crown (Pirk 5.3.5), 0 unless added=True")
+      .def_property_readonly("overlap_branch_count", &DevelopmentalModel::overlap_branch_count,
+                             "Of the added branches, those in the overlap region above the crown "
+                             "base (Pirk 5.3.5), 0 unless added_overlap=True")
       .def_property_readonly(
           "crown_ratio",
           [](const DevelopmentalModel& model) { return model.crown().crown_ratio(); },
@@ -44,20 +47,35 @@ void bind_stages(py::module_& m) {
 
   m.def(
       "developmental_model",
-      [](const TreeGraph& tree, bool thickest_continues, bool added, double added_gamma) {
+      [](const TreeGraph& tree, bool thickest_continues, bool added, double added_gamma,
+         bool added_overlap, const std::vector<std::pair<NodeId, double>>& age_branches,
+         const std::vector<std::pair<NodeId, NodeId>>& copy_branches) {
         stages::StagesParams p;
         p.continuation = thickest_continues ? stages::Continuation::kThickest
                                             : stages::Continuation::kLeastDeviation;
-        p.added.enabled = added;
+        p.added.enabled = added || added_overlap;
         p.added.gamma = added_gamma;
+        p.added.overlap = added_overlap;
+        for (const auto& [node, delta] : age_branches) p.edits.age.push_back({node, delta});
+        for (const auto& [from, to] : copy_branches) p.edits.copy.push_back({from, to});
         return DevelopmentalModel(tree, p);
       },
       py::arg("tree"), py::arg("thickest_continues") = true, py::arg("added") = false,
-      py::arg("added_gamma") = 1.0,
+      py::arg("added_gamma") = 1.0, py::arg("added_overlap") = false,
+      py::arg("age_branches") = std::vector<std::pair<NodeId, double>>{},
+      py::arg("copy_branches") = std::vector<std::pair<NodeId, NodeId>>{},
       "Analyse a Tree into a DevelopmentalModel (chains, growth rates, angles, radii). "
       "thickest_continues=False uses Pirk's rule (the child deviating least continues the axis); "
       "added=True adds the branches a young tree had below the crown and sheds them as the crown "
-      "ratio of Pirk eq. 5.10 (exponent added_gamma) falls; raises ValueError for an empty tree "
+      "ratio of Pirk eq. 5.10 (exponent added_gamma) falls; added_overlap=True (implies added) "
+      "also "
+      "fills the overlap region above the crown base where stratified clipping finds more tissue "
+      "than main-axis cutting (Pirk 5.3.5). Growth-based editing (Pirk 5.4.1): age_branches, a "
+      "list of (node, dt), makes the branch holding internode `node` older by dt (units of t; "
+      "negative: younger), so that it shows at each stage what it would show dt later; "
+      "copy_branches, a list of (from, to), copies the branch holding internode `from` rigidly "
+      "to the end of internode `to`, growing from the time the tree reaches `to` at the age the "
+      "source had when it started; raises ValueError for an empty tree "
       "or bad parameters");
 
   m.def("seasonal_time", &stages::seasonal_time, py::arg("t"), py::arg("years"), py::arg("c") = 1.2,

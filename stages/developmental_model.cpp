@@ -88,6 +88,7 @@ DevelopmentalModel::DevelopmentalModel(const TreeGraph& tree, const StagesParams
   compute_bending();
   compute_radius_coefficients();
   apply_edits();
+  build_plans();
 }
 
 // Pirk 5.3.5: the given tree's main chain decides where the copies go; the model then analyses
@@ -287,7 +288,6 @@ void DevelopmentalModel::compute_radius_coefficients() {
     radius_pow_[i] = std::pow(tree_.radius(i), u);
     heading_[i] = heading(tree_, i);
   }
-  turned_.assign(n, 0);
 }
 
 TreeGraph DevelopmentalModel::stage(double t) const {
@@ -326,9 +326,9 @@ void DevelopmentalModel::remove_shed(double t, const TreeGraph& grown, TreeGraph
   for (NodeId i = added_.first_added; i < added_end_; ++i) {
     const bool copy_root = tree_.parent(i) < added_.first_added;
     const bool overlap = !added_.in_overlap.empty() && added_.in_overlap[i];
-    if (copy_root && id_of_[i] != kNoNode &&
+    if (copy_root && state_[i].id != kNoNode &&
         added_.attach_height_m[i] < (overlap ? overlap_base_m : base_m)) {
-      kept_id_[id_of_[i]] = 0;
+      kept_id_[state_[i].id] = 0;
     }
   }
   out.clear_keep_capacity();
@@ -352,13 +352,13 @@ void DevelopmentalModel::add_tip_leaves(TreeGraph& out) const {
   // Anything on an edge (a child edge or its own organs) makes it no tip for this purpose.
   for (NodeId k = 1; k < present; ++k) tip_[out.parent(k)] = 0;
   for (NodeId i = 0; i < tree_.size(); ++i) {
-    const NodeId k = id_of_[i];
+    const NodeId k = state_[i].id;
     if (k == kNoNode || k >= present || !is_edge(tree_, i) || !tip_[k]) continue;
     const NodeId last = chain_last_[chain_[i]];
     if (last == i) continue;  // the chain's own tip: its organs come when it is complete
     for (const NodeId organ : tree_.children(last)) {
       if (is_edge(tree_, organ)) continue;
-      const Eigen::Quaterniond& q = turn_[i];
+      const Eigen::Quaterniond q = state_[i].turned ? turn_[i] : Eigen::Quaterniond::Identity();
       NodeData d = tree_.data(organ);
       d.order = static_cast<std::uint16_t>(level_[i] - 1);
       d.birth_time = start_time_[i];
@@ -371,95 +371,134 @@ void DevelopmentalModel::add_tip_leaves(TreeGraph& out) const {
 }
 
 // Forward, parents first: grown length, rotation (the bends of the chain bases above), position.
+// Reads one plan per node in id order (a stage streams through it; see build_plans()).
 void DevelopmentalModel::place_nodes(double t, TreeGraph& out) const {
-  const std::size_t n = tree_.size();
-  id_of_.assign(n, kNoNode);
+  const std::size_t n = plan_.size();
+  state_.resize(n);
   turn_.resize(n);
-  grown_.resize(n);
+  const bool shifted = !chain_shift_.empty();
   for (NodeId i = 0; i < n; ++i) {
+    // The parent first, from its own column: most nodes of an early stage stop here, without
+    // reading their plan.
     const NodeId p = i == 0 ? kNoNode : tree_.parent(i);
-    if (p != kNoNode && (id_of_[p] == kNoNode || grown_[p] < tree_.length(p))) continue;
-    const bool edge = is_edge(tree_, i);
-    double length = tree_.length(i);
+    NodeState& s = state_[i];
+    s.id = kNoNode;
+    s.complete = 0;
+    s.turned = 0;
+    if (p != kNoNode && !state_[p].complete) continue;  // absent or still growing
+    const PlacePlan& a = plan_[i];
+    const bool edge = a.kind == OrganKind::kInternode;
+    double length = a.length;
     // The chain's own clock: t, unless an edit shifted it (5.4.1).
-    const double tc = edge && !chain_shift_.empty() ? t + chain_shift_[chain_[i]] : t;
+    const double tc = edge && shifted ? t + chain_shift_[a.chain] : t;
     if (edge) {
-      const double reach = chain_rate_[chain_[i]] * (tc - chain_start_[chain_[i]]) - offset_[i];
+      const double reach = chain_rate_[a.chain] * (tc - chain_start_[a.chain]) - a.chain_offset;
       if (tc < 1.0 && !(reach > 0.0)) continue;  // not started yet
       // At t = 1 every edge is complete (rounding must not leave one a hair short).
       if (tc < 1.0) length = std::min(reach, length);
     }
-    grown_[i] = length;
-    bool turned = p != kNoNode && turned_[p];
+    bool turned = p != kNoNode && state_[p].turned;
     Eigen::Quaterniond q = turned ? turn_[p] : Eigen::Quaterniond::Identity();
-    if (edge && chain_base_[i] && bend_angle_[i] != 0.0 && tc < bend_end_[i]) {
+    if (edge && a.chain_base && bend_angle_[i] != 0.0 && tc < bend_end_[i]) {
       // Eq. 5.5: the part of the turn still to come, about the base.
-      const double span = std::max(bend_end_[i] - start_time_[i], 1e-12);
-      const double done = std::clamp((tc - start_time_[i]) / span, 0.0, 1.0);
+      const double span = std::max(bend_end_[i] - a.start_time, 1e-12);
+      const double done = std::clamp((tc - a.start_time) / span, 0.0, 1.0);
       q = q * Eigen::AngleAxisd(-(1.0 - done) * bend_angle_[i], bend_axis_[i]);
       turned = true;
     }
-    turn_[i] = q;
-    turned_[i] = turned;
+    if (turned) turn_[i] = q;  // read only under a turned node
     NodeData d;
-    d.kind = tree_.kind(i);
-    d.order = static_cast<std::uint16_t>(level_[i] - 1);
-    d.birth_time = start_time_[i];
-    if (!chain_shift_.empty()) {
-      NodeId e = i;  // organs take the clock of the internode bearing them
-      while (!is_edge(tree_, e)) e = tree_.parent(e);
-      d.birth_time -= chain_shift_[chain_[e]];
-    }
-    d.physiological_age = tree_.physiological_age(i);
-    d.radius = tree_.radius(i);
+    d.kind = a.kind;
+    d.order = a.order;
+    d.birth_time = a.start_time;
+    if (shifted) d.birth_time -= birth_shift(i);
+    d.physiological_age = a.age;
+    d.radius = a.radius;
     d.length = length;
-    const Eigen::Vector3d offset = tree_.start(i) - (p == kNoNode ? tree_.start(0) : tree_.end(p));
-    const Eigen::Vector3d base = p == kNoNode ? tree_.start(0) : out.end(id_of_[p]);
+    const Eigen::Vector3d base = p == kNoNode ? root_start_ : state_[p].end;
+    d.direction = turned ? Eigen::Vector3d(q * a.heading) : a.heading;
+    d.start = base + (turned ? Eigen::Vector3d(q * a.offset) : a.offset);
     if (edge) {
-      d.direction = turned ? Eigen::Vector3d(q * heading_[i]) : heading_[i];
-      d.start = base + (turned ? Eigen::Vector3d(q * offset) : offset);
       d.end = d.start + length * d.direction;
     } else {
-      d.direction = turned ? Eigen::Vector3d(q * tree_.direction(i)) : tree_.direction(i);
-      d.start = base + (turned ? Eigen::Vector3d(q * offset) : offset);
       const Eigen::Vector3d span = tree_.end(i) - tree_.start(i);
       d.end = d.start + (turned ? Eigen::Vector3d(q * span) : span);
     }
-    id_of_[i] = out.add_node_unchecked(p == kNoNode ? kNoNode : id_of_[p], d);
+    s.end = d.end;  // the base of its children, without going through the stage's ids
+    s.id = out.add_node_unchecked(p == kNoNode ? kNoNode : state_[p].id, d);
+    s.complete = !(length < a.length);
+    s.turned = turned;
   }
+}
+
+// Organs take the clock of the internode bearing them.
+double DevelopmentalModel::birth_shift(NodeId i) const {
+  while (!is_edge(tree_, i)) i = tree_.parent(i);
+  return chain_shift_[chain_[i]];
 }
 
 // Backward, from the tips: radii by eq. 5.8 (r^u carried, so one root per inner edge). An edge
 // whose subtree is complete has its given radius, which eq. 5.8 gives back by construction of b.
 void DevelopmentalModel::set_radii(TreeGraph& out) const {
   const double inv_u = 1.0 / params_.pipe_exponent;
-  sum_.assign(out.size(), 0.0);
-  has_child_.assign(out.size(), 0);
-  complete_children_.assign(out.size(), 0);
-  for (NodeId i = static_cast<NodeId>(tree_.size()); i-- > 0;) {
-    const NodeId k = id_of_[i];
-    if (k == kNoNode || !is_edge(tree_, i)) continue;
-    const bool complete =
-        grown_[i] >= tree_.length(i) && complete_children_[k] == edge_children_[i];
-    double r = tree_.radius(i), r_u = radius_pow_[i];
+  below_.assign(out.size(), Below{});
+  for (NodeId i = static_cast<NodeId>(radius_plan_.size()); i-- > 0;) {
+    const NodeId k = state_[i].id;
+    const RadiusPlan& a = radius_plan_[i];
+    if (k == kNoNode || !a.edge) continue;
+    const Below& b = below_[k];
+    const bool complete = state_[i].complete && b.complete_children == a.edge_children;
+    double r = a.radius, r_u = a.radius_pow;
     if (complete) {
       // the given radius
-    } else if (has_child_[k]) {
-      if (radius_coefficient_[i] > 0.0) {
-        r_u = sum_[k] / radius_coefficient_[i];
+    } else if (b.has_child) {
+      if (a.coefficient > 0.0) {
+        r_u = b.sum / a.coefficient;
         r = std::pow(r_u, inv_u);
       }
-    } else if (radius_coefficient_[i] > 0.0) {
+    } else if (a.coefficient > 0.0) {
       r = tip_radius_;  // a tip now that is not one in the given tree
       r_u = tip_radius_pow_;
     }
     out.set_radius(k, r);
     if (i > 0) {
-      const NodeId pk = id_of_[tree_.parent(i)];
-      sum_[pk] += r_u;
-      has_child_[pk] = 1;
-      complete_children_[pk] += complete ? 1u : 0u;
+      Below& up = below_[state_[a.parent].id];
+      up.sum += r_u;
+      up.has_child = 1;
+      up.complete_children += complete ? 1u : 0u;
     }
+  }
+}
+
+// The per-node data a stage reads, gathered from the analysis (and the edits) into one record
+// per node, so that place_nodes() and set_radii() each stream through one array.
+void DevelopmentalModel::build_plans() {
+  const std::size_t n = tree_.size();
+  plan_.resize(n);
+  radius_plan_.resize(n);
+  root_start_ = tree_.start(0);
+  for (NodeId i = 0; i < n; ++i) {
+    const NodeId p = i == 0 ? kNoNode : tree_.parent(i);
+    const bool edge = is_edge(tree_, i);
+    PlacePlan& a = plan_[i];
+    a.offset = tree_.start(i) - (p == kNoNode ? tree_.start(0) : tree_.end(p));
+    a.heading = edge ? heading_[i] : tree_.direction(i);
+    a.length = tree_.length(i);
+    a.chain_offset = offset_[i];
+    a.start_time = start_time_[i];
+    a.radius = tree_.radius(i);
+    a.chain = chain_[i];
+    a.order = static_cast<std::uint16_t>(level_[i] - 1);
+    a.age = tree_.physiological_age(i);
+    a.kind = tree_.kind(i);
+    a.chain_base = chain_base_[i];
+    RadiusPlan& r = radius_plan_[i];
+    r.radius = tree_.radius(i);
+    r.radius_pow = radius_pow_[i];
+    r.coefficient = radius_coefficient_[i];
+    r.parent = p;
+    r.edge_children = edge_children_[i];
+    r.edge = edge;
   }
 }
 

@@ -123,6 +123,8 @@ class DevelopmentalModel {
   void place_nodes(double t, TreeGraph& out) const;
   void set_radii(TreeGraph& out) const;
   void add_tip_leaves(TreeGraph& out) const;
+  void build_plans();
+  double birth_shift(NodeId i) const;
 
   TreeGraph tree_;  // the given tree, with the added structures appended when they are on
   StagesParams params_;
@@ -147,13 +149,41 @@ class DevelopmentalModel {
   std::vector<double> radius_pow_;            // r^u of the given tree
   std::vector<std::uint32_t> edge_children_;  // internode children in the given tree
   std::vector<Eigen::Vector3d> heading_;      // unit directions of the given tree
+  // What a stage reads per node, in one record (build_plans()).
+  struct PlacePlan {
+    Eigen::Vector3d offset;   // start minus the parent's end (0 at the root)
+    Eigen::Vector3d heading;  // unit heading of an internode, direction of an organ
+    double length = 0.0, chain_offset = 0.0, start_time = 0.0, radius = 0.0;
+    std::uint32_t chain = 0;
+    std::uint16_t order = 0, age = 1;
+    OrganKind kind = OrganKind::kInternode;
+    std::uint8_t chain_base = 0;
+  };
+  struct RadiusPlan {
+    double radius = 0.0, radius_pow = 0.0, coefficient = 0.0;
+    NodeId parent = kNoNode;
+    std::uint32_t edge_children = 0;
+    std::uint8_t edge = 0;
+  };
+  std::vector<PlacePlan> plan_;
+  std::vector<RadiusPlan> radius_plan_;
+  Eigen::Vector3d root_start_ = Eigen::Vector3d::Zero();
   // Buffers of stage(), kept between calls (a slider computes stage after stage).
-  mutable std::vector<NodeId> id_of_;
+  struct NodeState {
+    Eigen::Vector3d end;        // its end in the stage (when present)
+    NodeId id = kNoNode;        // id in the stage, kNoNode when absent
+    std::uint8_t complete = 0;  // grown to its full length
+    std::uint8_t turned = 0;    // turn_ holds its rotation
+  };
+  struct Below {  // per stage node: what its children give eq. 5.8
+    double sum = 0.0;
+    std::uint32_t complete_children = 0;
+    std::uint8_t has_child = 0;
+  };
+  mutable std::vector<NodeState> state_;
   mutable std::vector<Eigen::Quaterniond> turn_;
-  mutable std::vector<std::uint8_t> turned_;
-  mutable std::vector<double> grown_, sum_;
-  mutable std::vector<std::uint8_t> has_child_, tip_;
-  mutable std::vector<std::uint32_t> complete_children_;
+  mutable std::vector<Below> below_;
+  mutable std::vector<std::uint8_t> tip_;
   mutable TreeGraph grown_tree_;  // the stage with every added branch, before shedding
   mutable std::vector<NodeId> kept_id_;
 };

@@ -123,7 +123,6 @@ void DevelopmentalModel::append_branch_copy(const CopyEdit& edit) {
     radius_pow_.push_back(radius_pow_[k]);
     edge_children_.push_back(edge_children_[k]);
     heading_.push_back(q * heading_[k]);
-    turned_.push_back(0);
   }
   for (const auto& [source, copy] : new_chain) chain_last_[copy] = id.at(chain_last_[source]);
   // A former tip carries the copy's pipes alone (b = 1 in eq. 5.8).

@@ -304,3 +304,39 @@ def test_newick_taxon_names_are_read_and_written_back():
     assert names == ["", "C", "A", "B", "D d"]
     assert fspm.to_newick(tree, names) == "((A:1,B:2)C:0.5,'D d':1);"
     assert fspm.to_newick(tree) == "((:1,:2):0.5,:1);"
+
+
+def test_developmental_stages_with_overlap_region():
+    # A vertical trunk of ten unit edges, a lateral rising at 45 degrees from z = 4 to 6 and
+    # horizontal laterals at z = 5..9: the overlap region z in [4, 7) takes copies only where
+    # stratified clipping exceeds main-axis cutting, at z = 5 (docs/stages.md).
+    parents = [-1] + list(range(9)) + [3, 4, 5, 6, 7, 8]
+    starts = [(0, 0, k) for k in range(10)] + [(0, 0, z) for z in range(4, 10)]
+    ends = ([(0, 0, k + 1) for k in range(10)] + [(2, 0, 6)] +
+            [(1 if k % 2 else -1, 0, k + 1) for k in range(4, 9)])
+    tree = fspm.Tree.from_arrays(np.array(parents), np.array(starts, float), np.array(ends, float),
+                                 radii=np.array([0.1] * 10 + [0.08] + [0.05] * 5))
+    assert fspm.developmental_model(tree, added=True).overlap_branch_count == 0
+    model = fspm.developmental_model(tree, added_overlap=True)
+    assert model.overlap_branch_count == 1 and model.added_branch_count == 4
+
+
+def test_developmental_stages_with_branch_edits():
+    # Trunk of four unit edges (nodes 0, 1 up; 2, 3 leaning to -x at 45 degrees), a lateral of two
+    # unit edges along +x at z = 1 (nodes 4, 5). By eq. 5.3-5.4 the lateral grows 8/3 per unit of t
+    # from t = 0.25 (docs/stages.md): made 0.15 younger it is 8/3 (1 - 0.4) = 1.6 long at t = 1;
+    # copied to the end of node 2 (reached at t = 0.75) it is 8/3 (1 - 0.75) = 2/3 long.
+    h = 0.5 ** 0.5
+    parents = [-1, 0, 1, 2, 0, 4]
+    starts = [(0, 0, 0), (0, 0, 1), (0, 0, 2), (-h, 0, 2 + h), (0, 0, 1), (1, 0, 1)]
+    ends = [(0, 0, 1), (0, 0, 2), (-h, 0, 2 + h), (-2 * h, 0, 2 + 2 * h), (1, 0, 1), (2, 0, 1)]
+    tree = fspm.Tree.from_arrays(np.array(parents), np.array(starts, float), np.array(ends, float),
+                                 radii=np.array([0.05] * 4 + [0.02] * 2))
+    younger = fspm.developmental_model(tree, age_branches=[(5, -0.15)]).stage(1.0)
+    assert abs(younger.lengths[4] + younger.lengths[5] - 1.6) < 1e-9
+    copied = fspm.developmental_model(tree, copy_branches=[(4, 2)]).stage(1.0)
+    assert len(copied) == 7 and copied.parents[6] == 2
+    assert abs(copied.lengths[6] - 2.0 / 3.0) < 1e-9
+    assert np.allclose(copied.starts[6], (-h, 0, 2 + h))
+    with pytest.raises(ValueError):
+        fspm.developmental_model(tree, age_branches=[(1, 0.1)])  # the trunk

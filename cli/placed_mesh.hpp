@@ -1,0 +1,18 @@
+#pragma once
+// Meshes placed in scenes as they are: crowns reconstructed from a photograph (`fspm crown`,
+// Argudo ch. 4-5), read from the .glb, .gltf or .obj the command wrote.
+#include <string>
+
+#include "graphics/triangle_mesh.hpp"
+
+namespace fspm::cli {
+
+// True for .glb, .gltf and .obj (any case).
+bool is_placed_mesh_path(const std::string& path);
+
+// A glTF mesh (assimp) with its materials and vertex colours; an .obj with every polygon as a fan
+// of leaf triangles (the reader keeps groups, not materials). Throws IoError, ParseError or ValueError
+// naming the file.
+graphics::TriangleMesh read_placed_mesh(const std::string& path);
+
+}  // namespace fspm::cli
