@@ -11,8 +11,8 @@ namespace fspm::cli {
 bool is_placed_mesh_path(const std::string& path);
 
 // A glTF mesh (assimp) with its materials and vertex colours; an .obj with every polygon as a fan
-// of leaf triangles (the reader keeps groups, not materials). Throws IoError, ParseError or ValueError
-// naming the file.
+// of leaf triangles (the reader keeps groups, not materials). Throws IoError, ParseError or
+// ValueError naming the file.
 graphics::TriangleMesh read_placed_mesh(const std::string& path);
 
 }  // namespace fspm::cli

@@ -83,10 +83,9 @@ std::uint32_t geometric_choice(const scans::ClusterHull& hull, const Pending& p,
     const Patch& patch = library.patches[k];
     const double scale = fitted_scale(hull, p, patch);
     const std::size_t inside =
-        scale > 0.0 ? dockings_inside(hull, p, patch,
-                                      docking_rotation(patch.direction, p.docking.direction,
-                                                       roll_rad),
-                                      scale)
+        scale > 0.0 ? dockings_inside(
+                          hull, p, patch,
+                          docking_rotation(patch.direction, p.docking.direction, roll_rad), scale)
                     : 0;
     if (inside > most_inside || most.empty()) most.clear(), most_inside = inside;
     if (inside == most_inside) most.push_back(k);

@@ -114,10 +114,11 @@ TEST(SceneCrown, RenderPlacesEachCrownWhereItsProjectedBoxSays) {
 
 TEST(SceneCrown, MissingCrownIsRefusedWithFileAndLine) {
   const auto dir = scratch_dir("scene_crown_bad");
-  write_text(dir / "bad.json", "{\"fspm_scene\": 2, \"plants\": [\n  {\"file\": \"t.tree\"},\n"
-                               "  {\"crown\": \"no_such_crown\", \"position\": [1, 0, 0]}]}\n");
-  auto r = run_fspm("render " + (dir / "bad.json").string() + " -o " +
-                    (dir / "bad.png").string() + " --view front --size 100x100");
+  write_text(dir / "bad.json",
+             "{\"fspm_scene\": 2, \"plants\": [\n  {\"file\": \"t.tree\"},\n"
+             "  {\"crown\": \"no_such_crown\", \"position\": [1, 0, 0]}]}\n");
+  auto r = run_fspm("render " + (dir / "bad.json").string() + " -o " + (dir / "bad.png").string() +
+                    " --view front --size 100x100");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("bad.json:3:"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("/plants/1/crown"), std::string::npos) << r.err;
