@@ -12,9 +12,9 @@
 namespace fspm {
 namespace {
 
+using testing::read_text;
 using testing::run_fspm;
 using testing::scratch_dir;
-using testing::read_text;
 
 const std::string kTree = std::string(FSPM_SOURCE_DIR) + "/examples/trees/open_a12.treeb";
 
