@@ -10,19 +10,12 @@
 
 #include "fspm/error.hpp"
 #include "stages/developmental_model.hpp"
+#include "tests/stages/edge_builder.hpp"
 
 namespace fspm::stages {
 namespace {
 
-NodeId edge(TreeGraph& t, NodeId parent, const Eigen::Vector3d& dir, double length, double r) {
-  NodeData d;
-  d.start = parent == kNoNode ? Eigen::Vector3d::Zero() : t.end(parent);
-  d.direction = dir.normalized();
-  d.end = d.start + length * d.direction;
-  d.length = length;
-  d.radius = r;
-  return t.add_node(parent, d);
-}
+using testing::edge;
 
 // A vertical trunk of eight unit edges (ends at z = 1..8) with one horizontal lateral of length 1
 // at the ends of edges 3..6 (z = 4..7): height 8, crown base 4, crown ratio 0.5; the trunk below

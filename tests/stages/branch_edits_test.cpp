@@ -10,19 +10,12 @@
 
 #include "fspm/error.hpp"
 #include "stages/developmental_model.hpp"
+#include "tests/stages/edge_builder.hpp"
 
 namespace fspm::stages {
 namespace {
 
-NodeId edge(TreeGraph& t, NodeId parent, const Eigen::Vector3d& dir, double length, double r) {
-  NodeData d;
-  d.start = parent == kNoNode ? Eigen::Vector3d::Zero() : t.end(parent);
-  d.direction = dir.normalized();
-  d.end = d.start + length * d.direction;
-  d.length = length;
-  d.radius = r;
-  return t.add_node(parent, d);
-}
+using testing::edge;
 
 // A trunk of four unit edges (radius 0.05): nodes 0 and 1 vertical, 2 and 3 leaning to -x at
 // 45 degrees; on the end of node 0 (z = 1) a lateral of two unit edges along +x (nodes 4, 5,

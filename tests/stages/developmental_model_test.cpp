@@ -2,6 +2,7 @@
 // equations: chain lengths (eq. 5.3-5.4), Gravelius levels (5.2.2), angles (eq. 5.5), radii
 // (eq. 5.6-5.8) and the seasonal remapping (eq. 5.11).
 #include "stages/developmental_model.hpp"
+#include "tests/stages/edge_builder.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,16 +16,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// An edge from `from` along `dir` (unit) of `length`, radius r, under `parent`.
-NodeId edge(TreeGraph& t, NodeId parent, const Eigen::Vector3d& dir, double length, double r) {
-  NodeData d;
-  d.start = parent == kNoNode ? Eigen::Vector3d::Zero() : t.end(parent);
-  d.direction = dir.normalized();
-  d.end = d.start + length * d.direction;
-  d.length = length;
-  d.radius = r;
-  return t.add_node(parent, d);
-}
+using testing::edge;
 
 Eigen::Vector3d at_angle(double deg) {  // in the x-z plane, from +z toward +x
   return {std::sin(deg * kPi / 180.0), 0.0, std::cos(deg * kPi / 180.0)};
