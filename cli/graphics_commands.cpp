@@ -416,92 +416,121 @@ void check_skin_request(const MeshCommand& c, graphics::MeshFormat format, Input
   }
 }
 
-void run_mesh(const MeshCommand& c) {
-  refuse_overwriting_input(c.out, {c.tree, c.obstacles});
-  const auto t0 = std::chrono::steady_clock::now();
-  const graphics::MeshFormat format = graphics::mesh_format_for(c.out);
-  const InputKind kind = input_kind(c.tree);
-  if (c.animate_s > 0.0 && !c.skin) throw ValueError("--animate needs --skin");
+// The mesh options of the mesh command's flags.
+graphics::MeshOptions mesh_options(const MeshCommand& c) {
   graphics::MeshOptions options;
   set_leaves(options, c.leaves, c.foliage, c.seed);
   options.edge_length_m = c.edge_length_m;
   options.max_sides = c.max_sides;
   options.junctions = junction_mode(c.junctions);
   options.reynolds_width = c.reynolds_width;
-  nlohmann::json j = {{"file", c.tree}, {"output", c.out}};
-  std::size_t vertices = 0, triangles = 0;
-  const bool lsystem = kind == InputKind::kLsystem;
+  return options;
+}
+
+// Combinations of flags the mesh command refuses before reading anything.
+void check_mesh_request(const MeshCommand& c, graphics::MeshFormat format, InputKind kind) {
+  if (c.animate_s > 0.0 && !c.skin) throw ValueError("--animate needs --skin");
   check_lsystem_draw_arguments(c.lsystem, {c.tree});
   check_graph_lod(c.graph_lod, {c.tree}, false);
   if (c.skin && c.graph_lod.lod().active()) {
     throw ValueError("--skin writes the tree as it is: no --max-order or --merge-collinear");
   }
-  if (lsystem && (format == graphics::MeshFormat::kPvd || !c.ages.empty())) {
+  if (kind == InputKind::kLsystem && (format == graphics::MeshFormat::kPvd || !c.ages.empty())) {
     throw ValueError("an L-system is meshed as derived: no .pvd growth sequence, no --ages",
                      c.tree);
   }
-  if (c.skin) {
-    check_skin_request(c, format, kind);
-    const TreeGraph tree = read_tree_file(c.tree, c.format);
-    const SkinnedOutput out = write_wind_glb(tree, options, c.wind, c.animate_s, c.seed, c.out);
-    vertices = out.vertices;
-    triangles = out.triangles;
-    j["joints"] = out.joints;
-    j["keyframes"] = out.keyframes;
-  } else if (format == graphics::MeshFormat::kPvd) {
-    if (kind == InputKind::kScene || kind == InputKind::kPvd) {
-      throw ValueError("a .pvd growth sequence is made from one tree or plant", c.tree);
-    }
-    if (!c.obstacles.empty()) {
-      throw ValueError("--obstacles applies to .obj, .ply, .vtp and .glb outputs, not .pvd", c.out);
-    }
-    // Growth of a compressed plant: its explicit tree filtered by birth date (Jaeger 3.2.2).
-    greenlab::ReconstructionOptions ro;
-    ro.lod = c.graph_lod.lod();
-    const TreeGraph tree = is_compressed(kind)
-                               ? greenlab::reconstruct(load_compressed(c.tree, kind), ro)
-                               : reduce_tree(read_tree_file(c.tree, c.format), ro.lod);
-    const std::vector<double> ages = c.ages.empty() ? graphics::default_ages(tree) : c.ages;
-    const auto frames = graphics::write_pvd(tree, options, ages, c.out);
-    nlohmann::json list = nlohmann::json::array();
-    for (const auto& f : frames) {
-      vertices += f.vertices;
-      triangles += f.triangles;
-      list.push_back({{"age", f.age},
-                      {"file", f.vtp_path},
-                      {"vertices", f.vertices},
-                      {"triangles", f.triangles}});
-    }
-    j["frames"] = list;
-  } else {
-    if (!c.ages.empty()) {
-      throw ValueError("--ages makes a growth sequence: use an output ending in .pvd", c.out);
-    }
-    graphics::InstancedMesh mesh;
-    if (lsystem) {
-      const LsystemDrawing drawing = draw_lsystem_file(c.tree, c.lsystem, 0);
-      j["lsystem"] = drawing.summary;
-      mesh = mesh_lsystem(drawing, options);
-    } else {
-      mesh = load_instanced(c.tree, c.format, options, false, c.graph_lod.lod());
-    }
-    if (c.leaves) report_missing_leaves(mesh, c.tree);
-    if (!c.obstacles.empty()) {
-      add_scene_obstacles(mesh, environment::read_scene_file(c.obstacles), c.obstacles, false);
-    }
-    j["obstacle_triangles"] = obstacle_triangle_count(mesh);
-    graphics::write_mesh(mesh, c.out);
-    vertices = mesh.vertex_count();
-    triangles = mesh.triangle_count();
-    j.update(instancing_json(mesh));
+  if (c.skin) check_skin_request(c, format, kind);
+}
+
+// One tree's bark as a skinned .glb with its wind animation (Reynolds 3.3).
+void write_skinned_mesh(const MeshCommand& c, const graphics::MeshOptions& options,
+                        nlohmann::json& j) {
+  const TreeGraph tree = read_tree_file(c.tree, c.format);
+  const SkinnedOutput out = write_wind_glb(tree, options, c.wind, c.animate_s, c.seed, c.out);
+  j["vertices"] = out.vertices;
+  j["triangles"] = out.triangles;
+  j["joints"] = out.joints;
+  j["keyframes"] = out.keyframes;
+}
+
+// A growth sequence: one .vtp per age. A compressed plant's explicit tree is filtered by birth
+// date (Jaeger 3.2.2).
+void write_growth_sequence(const MeshCommand& c, InputKind kind,
+                           const graphics::MeshOptions& options, nlohmann::json& j) {
+  if (kind == InputKind::kScene || kind == InputKind::kPvd) {
+    throw ValueError("a .pvd growth sequence is made from one tree or plant", c.tree);
   }
+  if (!c.obstacles.empty()) {
+    throw ValueError("--obstacles applies to .obj, .ply, .vtp and .glb outputs, not .pvd", c.out);
+  }
+  greenlab::ReconstructionOptions ro;
+  ro.lod = c.graph_lod.lod();
+  const TreeGraph tree = is_compressed(kind)
+                             ? greenlab::reconstruct(load_compressed(c.tree, kind), ro)
+                             : reduce_tree(read_tree_file(c.tree, c.format), ro.lod);
+  const std::vector<double> ages = c.ages.empty() ? graphics::default_ages(tree) : c.ages;
+  const auto frames = graphics::write_pvd(tree, options, ages, c.out);
+  std::size_t vertices = 0, triangles = 0;
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& f : frames) {
+    vertices += f.vertices;
+    triangles += f.triangles;
+    list.push_back({{"age", f.age},
+                    {"file", f.vtp_path},
+                    {"vertices", f.vertices},
+                    {"triangles", f.triangles}});
+  }
+  j["frames"] = list;
   j["vertices"] = vertices;
   j["triangles"] = triangles;
+}
+
+// One mesh (instanced where the format keeps instances) of a tree, plant, scene or L-system,
+// with the obstacles of --obstacles.
+void write_single_mesh(const MeshCommand& c, InputKind kind, const graphics::MeshOptions& options,
+                       nlohmann::json& j) {
+  if (!c.ages.empty()) {
+    throw ValueError("--ages makes a growth sequence: use an output ending in .pvd", c.out);
+  }
+  graphics::InstancedMesh mesh;
+  if (kind == InputKind::kLsystem) {
+    const LsystemDrawing drawing = draw_lsystem_file(c.tree, c.lsystem, 0);
+    j["lsystem"] = drawing.summary;
+    mesh = mesh_lsystem(drawing, options);
+  } else {
+    mesh = load_instanced(c.tree, c.format, options, false, c.graph_lod.lod());
+  }
+  if (c.leaves) report_missing_leaves(mesh, c.tree);
+  if (!c.obstacles.empty()) {
+    add_scene_obstacles(mesh, environment::read_scene_file(c.obstacles), c.obstacles, false);
+  }
+  j["obstacle_triangles"] = obstacle_triangle_count(mesh);
+  graphics::write_mesh(mesh, c.out);
+  j["vertices"] = mesh.vertex_count();
+  j["triangles"] = mesh.triangle_count();
+  j.update(instancing_json(mesh));
+}
+
+void run_mesh(const MeshCommand& c) {
+  refuse_overwriting_input(c.out, {c.tree, c.obstacles});
+  const auto t0 = std::chrono::steady_clock::now();
+  const graphics::MeshFormat format = graphics::mesh_format_for(c.out);
+  const InputKind kind = input_kind(c.tree);
+  check_mesh_request(c, format, kind);
+  const graphics::MeshOptions options = mesh_options(c);
+  nlohmann::json j = {{"file", c.tree}, {"output", c.out}};
+  if (c.skin) {
+    write_skinned_mesh(c, options, j);
+  } else if (format == graphics::MeshFormat::kPvd) {
+    write_growth_sequence(c, kind, options, j);
+  } else {
+    write_single_mesh(c, kind, options, j);
+  }
   j["seconds"] = seconds_since(t0);
   if (c.json) {
     print_json(j);
   } else if (verbosity() > 0) {
-    std::cerr << "wrote " << c.out << " (" << vertices << " vertices, " << triangles
+    std::cerr << "wrote " << c.out << " (" << j["vertices"] << " vertices, " << j["triangles"]
               << " triangles)\n";
   }
 }
