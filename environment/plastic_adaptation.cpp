@@ -90,6 +90,8 @@ class Engine {
   void prune_subtree(TreeRun& r, NodeId s);
   void prune_blocked(TreeRun& r, int step);
   void mark_dirty(std::uint32_t c);
+  void note_drift(std::uint32_t c, std::uint32_t j, const ClusterNeighbor& e);
+  void release_vanished_shade();
   void check_moved();
   void refresh();
   void setup_grid();
@@ -518,34 +520,50 @@ void Engine::mark_dirty(std::uint32_t c) {
   dirty_list_.push_back(c);
 }
 
+// A neighbour j that drifted against c by more than the tolerance (and kDriftParallax of its
+// distance) may have changed c's light by up to the share it can take (loss_bound); c is
+// re-evaluated once these possible changes reach kLightChange.
+void Engine::note_drift(std::uint32_t c, std::uint32_t j, const ClusterNeighbor& e) {
+  const Eigen::Vector3d now = field_.center(j) - field_.center(c);
+  const Eigen::Vector3d then = e.relative.cast<double>();
+  // Cheap test first: j shades c neither now nor then (out of reach or below the horizon).
+  const double r_j = field_.radius(j), reach2 = field_.reach2(j);
+  if ((now.z() + r_j <= 0.0 || now.squaredNorm() > reach2) &&
+      (then.z() + r_j <= 0.0 || then.squaredNorm() > reach2)) {
+    return;
+  }
+  const double dist = then.norm();
+  const double tol = std::max(kDriftTolerance_m, kDriftParallax * dist);
+  const double drift2 = (now - then).squaredNorm();
+  if (drift2 <= tol * tol) return;
+  // A cap turned by the angle a changes the integral of I = cos^2 by at most its share times a
+  // (|dI/dtheta| <= 1): the light can change by loss_bound * min(1, drift / distance).
+  const double turn = dist > 0.0 ? std::min(1.0, std::sqrt(drift2) / dist) : 1.0;
+  lost_[c] += turn * std::max(field_.loss_bound(j, now), field_.loss_bound(j, then));
+  if (lost_[c] >= kLightChange) {
+    mark_dirty(c);
+  }
+}
+
+// A vanished cluster no longer shades the clusters in its shadow volume: they are re-evaluated
+// once the light they may have gained since their evaluation reaches kLightChange.
+void Engine::release_vanished_shade() {
+  for (const std::uint32_t c : vanished_) {
+    const ClusterLightField::ListView view = field_.neighbors(c);
+    for (const ClusterNeighbor& e : view) {
+      const std::uint32_t j = e.index + view.offset;
+      if (!field_.alive(j) || dirty_[j]) continue;
+      lost_[j] += field_.loss_bound(c, field_.center(j) - field_.center(c));
+      if (lost_[j] >= kLightChange) mark_dirty(j);
+    }
+  }
+  vanished_.clear();
+}
+
 // Which clusters' light the moves of this step changed: relative drift against a neighbour that
 // moved with another group, a turn against the sky, or new obstacle visibility.
 void Engine::check_moved() {
   const double cos_half_turn = std::cos(0.5 * kTurnTolerance_rad);
-  // A neighbour j that drifted against c by more than the tolerance (and kDriftParallax of its
-  // distance) may have changed c's light by up to the share it can take (loss_bound); c is
-  // re-evaluated once these possible changes reach kLightChange.
-  const auto drift = [&](std::uint32_t c, std::uint32_t j, const ClusterNeighbor& e) {
-    const Eigen::Vector3d now = field_.center(j) - field_.center(c);
-    const Eigen::Vector3d then = e.relative.cast<double>();
-    // Cheap test first: j shades c neither now nor then (out of reach or below the horizon).
-    const double r_j = field_.radius(j), reach2 = field_.reach2(j);
-    if ((now.z() + r_j <= 0.0 || now.squaredNorm() > reach2) &&
-        (then.z() + r_j <= 0.0 || then.squaredNorm() > reach2)) {
-      return;
-    }
-    const double dist = then.norm();
-    const double tol = std::max(kDriftTolerance_m, kDriftParallax * dist);
-    const double drift2 = (now - then).squaredNorm();
-    if (drift2 <= tol * tol) return;
-    // A cap turned by the angle a changes the integral of I = cos^2 by at most its share times a
-    // (|dI/dtheta| <= 1): the light can change by loss_bound * min(1, drift / distance).
-    const double turn = dist > 0.0 ? std::min(1.0, std::sqrt(drift2) / dist) : 1.0;
-    lost_[c] += turn * std::max(field_.loss_bound(j, now), field_.loss_bound(j, then));
-    if (lost_[c] >= kLightChange) {
-      mark_dirty(c);
-    }
-  };
   // Relative drift since c's evaluation is at most its own path since then plus the largest
   // path any cluster can have made since then (the sum of the per-step maxima): below the
   // tolerance no pair needs a look (small changes, e.g. a box beside the crown, stay cheap).
@@ -576,7 +594,7 @@ void Engine::check_moved() {
         check_[j] = 1;
         check_list_.push_back(j);
       }
-      if (c_may && !dirty_[c]) drift(c, j, e);
+      if (c_may && !dirty_[c]) note_drift(c, j, e);
     }
   }
   for (const std::uint32_t c : check_list_) {
@@ -586,25 +604,14 @@ void Engine::check_moved() {
     for (const ClusterNeighbor& e : view) {
       const std::uint32_t j = e.index + view.offset;
       if (!field_.alive(j) || cgroup_[j] == kStill) continue;
-      drift(c, j, e);
+      note_drift(c, j, e);
       if (dirty_[c]) break;
     }
   }
   check_list_.clear();
   for (const std::uint32_t c : moved_) cgroup_[c] = kStill;
   moved_.clear();
-  // A vanished cluster no longer shades the clusters in its shadow volume: they are re-evaluated
-  // once the light they may have gained since their evaluation reaches kLightChange.
-  for (const std::uint32_t c : vanished_) {
-    const ClusterLightField::ListView view = field_.neighbors(c);
-    for (const ClusterNeighbor& e : view) {
-      const std::uint32_t j = e.index + view.offset;
-      if (!field_.alive(j) || dirty_[j]) continue;
-      lost_[j] += field_.loss_bound(c, field_.center(j) - field_.center(c));
-      if (lost_[j] >= kLightChange) mark_dirty(j);
-    }
-  }
-  vanished_.clear();
+  release_vanished_shade();
 }
 
 void Engine::refresh() {
