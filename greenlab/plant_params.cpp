@@ -305,46 +305,36 @@ void PlantParams::validate() const {
   }
 }
 
-PlantParams parse_plant_params(std::string_view toml_text, const std::string& source_name) {
-  const toml::table root = parse_toml_text(toml_text, source_name);
-  const std::string& file = source_name;
-  TableReader top(root, "", file);
-  PlantParams params;
-  {
-    TableReader plant(as_table(top.require("plant"), "plant", file), "plant", file);
-    params.cycles = plant.get_int("cycles", 0, 0, true);
-    if (params.cycles > kMaxCycles) {
-      throw ParseError("key 'plant.cycles' is " + std::to_string(params.cycles) +
-                           ", expected at most " + std::to_string(kMaxCycles),
-                       file, line_of(*root["plant"]["cycles"].node()));
-    }
-    params.seed = static_cast<std::uint64_t>(plant.get_int("seed", 1, 0));
-    if (const toml::node* b = plant.find("birth_dates")) {
-      const auto s = b->value<std::string>();
-      if (s == "cycle") {
-        params.birth_dates = BirthDates::kCycle;
-      } else if (s == "continuous") {
-        params.birth_dates = BirthDates::kContinuous;
-      } else {
-        throw ParseError("key 'plant.birth_dates' must be \"cycle\" or \"continuous\"", file,
-                         line_of(*b), column_of(*b));
-      }
-    }
-    plant.reject_unknown();
+namespace {
+
+// The [plant] table: cycles, seed and how birth dates are kept.
+void read_plant_table(const toml::table& root, TableReader& top, const std::string& file,
+                      PlantParams& params) {
+  TableReader plant(as_table(top.require("plant"), "plant", file), "plant", file);
+  params.cycles = plant.get_int("cycles", 0, 0, true);
+  if (params.cycles > kMaxCycles) {
+    throw ParseError("key 'plant.cycles' is " + std::to_string(params.cycles) +
+                         ", expected at most " + std::to_string(kMaxCycles),
+                     file, line_of(*root["plant"]["cycles"].node()));
   }
-  const auto& ages = as_array(top.require("age"), "age", file);
-  std::vector<AgeLines> lines(ages.size());
-  for (std::size_t i = 0; i < ages.size(); ++i) {
-    const std::string p = "age[" + std::to_string(i) + "]";
-    AgeParams a = read_age(as_table(ages[i], p, file), p, file, lines[i]);
-    if (a.index != static_cast<int>(i) + 1) {
-      throw ParseError("key 'age[" + std::to_string(i) + "].index' is " + std::to_string(a.index) +
-                           ", expected " + std::to_string(i + 1) + " (ages listed in order 1..P)",
-                       file, lines[i].table);
+  params.seed = static_cast<std::uint64_t>(plant.get_int("seed", 1, 0));
+  if (const toml::node* b = plant.find("birth_dates")) {
+    const auto s = b->value<std::string>();
+    if (s == "cycle") {
+      params.birth_dates = BirthDates::kCycle;
+    } else if (s == "continuous") {
+      params.birth_dates = BirthDates::kContinuous;
+    } else {
+      throw ParseError("key 'plant.birth_dates' must be \"cycle\" or \"continuous\"", file,
+                       line_of(*b), column_of(*b));
     }
-    params.ages.push_back(std::move(a));
   }
-  // Transitions checked here, with lines, before validate() repeats them without.
+  plant.reject_unknown();
+}
+
+// Transitions checked here, with lines, before validate() repeats them without.
+void check_age_transitions(const PlantParams& params, const std::vector<AgeLines>& lines,
+                           const std::string& file) {
   const int count = static_cast<int>(params.ages.size());
   for (std::size_t i = 0; i < params.ages.size(); ++i) {
     const AgeParams& a = params.ages[i];
@@ -369,28 +359,58 @@ PlantParams parse_plant_params(std::string_view toml_text, const std::string& so
       }
     }
   }
+}
+
+// The [[age]] tables, in order 1..P.
+void read_age_tables(TableReader& top, const std::string& file, PlantParams& params) {
+  const auto& ages = as_array(top.require("age"), "age", file);
+  std::vector<AgeLines> lines(ages.size());
+  for (std::size_t i = 0; i < ages.size(); ++i) {
+    const std::string p = "age[" + std::to_string(i) + "]";
+    AgeParams a = read_age(as_table(ages[i], p, file), p, file, lines[i]);
+    if (a.index != static_cast<int>(i) + 1) {
+      throw ParseError("key 'age[" + std::to_string(i) + "].index' is " + std::to_string(a.index) +
+                           ", expected " + std::to_string(i + 1) + " (ages listed in order 1..P)",
+                       file, lines[i].table);
+    }
+    params.ages.push_back(std::move(a));
+  }
+  check_age_transitions(params, lines, file);
+}
+
+// The [calibration] table: names of parameters that get_parameter() knows.
+void read_calibration_table(const toml::node& c, const std::string& file, PlantParams& params) {
+  TableReader cal(as_table(c, "calibration", file), "calibration", file);
+  const auto& names = as_array(cal.require("parameters"), "calibration.parameters", file);
+  for (const auto& n : names) {
+    auto s = n.value<std::string>();
+    if (!s) {
+      throw ParseError("calibration.parameters must hold strings", file, line_of(n), column_of(n));
+    }
+    PlantParams probe = params;
+    try {
+      (void)get_parameter(probe, *s);
+    } catch (const ValueError& e) {
+      throw ParseError(e.message(), file, line_of(n), column_of(n));
+    }
+    params.calibration_parameters.push_back(*s);
+  }
+  cal.reject_unknown();
+}
+
+}  // namespace
+
+PlantParams parse_plant_params(std::string_view toml_text, const std::string& source_name) {
+  const toml::table root = parse_toml_text(toml_text, source_name);
+  const std::string& file = source_name;
+  TableReader top(root, "", file);
+  PlantParams params;
+  read_plant_table(root, top, file, params);
+  read_age_tables(top, file, params);
   if (const toml::node* f = top.find("functional")) {
     params.functional = read_functional(as_table(*f, "functional", file), file);
   }
-  if (const toml::node* c = top.find("calibration")) {
-    TableReader cal(as_table(*c, "calibration", file), "calibration", file);
-    const auto& names = as_array(cal.require("parameters"), "calibration.parameters", file);
-    for (const auto& n : names) {
-      auto s = n.value<std::string>();
-      if (!s) {
-        throw ParseError("calibration.parameters must hold strings", file, line_of(n),
-                         column_of(n));
-      }
-      PlantParams probe = params;
-      try {
-        (void)get_parameter(probe, *s);
-      } catch (const ValueError& e) {
-        throw ParseError(e.message(), file, line_of(n), column_of(n));
-      }
-      params.calibration_parameters.push_back(*s);
-    }
-    cal.reject_unknown();
-  }
+  if (const toml::node* c = top.find("calibration")) read_calibration_table(*c, file, params);
   top.reject_unknown();
   params.validate();
   return params;
