@@ -87,6 +87,7 @@ class BinaryCursor {
     return load(type, reinterpret_cast<const char*>(b));
   }
   std::size_t offset() const { return pos_; }
+  std::size_t remaining() const { return data_.size() - std::min(pos_, data_.size()); }
 
  private:
   std::string_view data_;
@@ -116,7 +117,7 @@ bool read_bulk_list(const PlyElement& e, std::string_view data, std::size_t& pos
   const bool keep = faces != nullptr && is_face_list(e, *list);
   const std::size_t count_size = ply_type_size(list->count_type);
   std::vector<std::vector<std::uint32_t>> read;
-  if (keep) read.reserve(e.count);
+  if (keep) read.reserve(std::min(e.count, data.size() - pos));  // a face takes a byte at least
   std::size_t at = pos;
   for (std::size_t k = 0; k < e.count; ++k) {
     if (data.size() - at < before + count_size) return false;
@@ -128,7 +129,7 @@ bool read_bulk_list(const PlyElement& e, std::string_view data, std::size_t& pos
     if (data.size() - at - 4 * size < after) return false;
     if (keep) {
       std::vector<std::uint32_t>& face = read.emplace_back(size);
-      std::memcpy(face.data(), data.data() + at, 4 * size);
+      if (size > 0) std::memcpy(face.data(), data.data() + at, 4 * size);
       if (list->type == PlyType::kInt32) {
         for (const std::uint32_t i : face) {
           if (i > 0x7fffffffu) face_index(static_cast<std::int32_t>(i), path);  // throws
@@ -153,6 +154,8 @@ bool read_bulk_list(const PlyElement& e, std::string_view data, std::size_t& pos
 bool read_bulk(const PlyElement& e, std::string_view data, std::size_t& pos,
                const std::string& path, PointSet& out,
                std::vector<std::vector<std::uint32_t>>* faces) {
+  // The header may promise data past the end (no newline after end_header, nothing after it).
+  if (pos > data.size()) return false;
   const bool scalars = std::none_of(e.properties.begin(), e.properties.end(),
                                     [](const PlyProperty& p) { return p.is_list; });
   if (scalars) {
@@ -164,6 +167,8 @@ bool read_bulk(const PlyElement& e, std::string_view data, std::size_t& pos,
       stride += ply_type_size(e.properties[i].type);
     }
     if (stride == 0 || (data.size() - pos) / stride < e.count) return false;
+    const bool has_xyz = col[0] >= 0 && col[1] >= 0 && col[2] >= 0;
+    if (e.name == "vertex" && !has_xyz) return false;  // (another element named vertex)
     if (e.name == "vertex") {
       out.points.reserve(e.count);
       std::array<PlyType, 3> type{};
@@ -192,7 +197,8 @@ void read_element(const PlyElement& e, BinaryCursor& cur, const std::string& pat
                   std::vector<std::vector<std::uint32_t>>* faces) {
   const std::array<int, 3> col = xyz_columns(e);
   const bool is_vertex = e.name == "vertex";
-  if (is_vertex) out.points.reserve(e.count);
+  // A vertex takes at least three bytes: a count the file cannot hold reserves no more.
+  if (is_vertex) out.points.reserve(std::min(e.count, cur.remaining() / 3));
   for (std::size_t k = 0; k < e.count; ++k) {
     const std::size_t at = cur.offset();
     double xyz[3] = {0, 0, 0};

@@ -13,7 +13,7 @@ bool TextLines::next(std::string_view& line) {
   if (end == std::string_view::npos) end = text_.size();
   line = text_.substr(pos_, end - pos_);
   if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-  pos_ = end + 1;
+  pos_ = end < text_.size() ? end + 1 : end;  // offset() never passes the end of the text
   ++line_;
   return true;
 }

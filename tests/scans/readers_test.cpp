@@ -76,6 +76,16 @@ TEST(PlyReader, TruncatedBinaryNamesTheByteOffset) {
   }
 }
 
+// Found by the point-set fuzzer: a header whose last line has no newline puts the data past the
+// end of the file, which the bulk reader must refuse rather than read before the data starts.
+TEST(PlyReader, HeaderEndingWithoutNewlineHasNoData) {
+  const std::string data =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 5\nproperty float x\n"
+      "property float y\nproperty float z\nend_header y@";
+  EXPECT_THROW(parse_ply_points(data, "cut.ply"), ParseError);
+  EXPECT_THROW(parse_ply_mesh(data, "cut.ply"), ParseError);
+}
+
 TEST(PlyReader, BadAsciiValueNamesTheLine) {
   const std::string text =
       "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
