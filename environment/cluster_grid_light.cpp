@@ -76,9 +76,15 @@ void ClusterGridLight::evaluate(std::span<const Eigen::Vector3d> buds,
   }
   if (box.isEmpty()) return;
   fit(box.min(), box.max());
+  // Each bud's corners are found once, for its shade and for its light.
+  corners_.resize(buds.size());
+  located_.resize(buds.size());
   for (std::size_t c = 0; c < nc; ++c) {
     if (!alive[c]) continue;
-    for (std::uint32_t b = bud_start[c]; b < bud_start[c + 1]; ++b) grid_->add_bud_spread(buds[b]);
+    for (std::uint32_t b = bud_start[c]; b < bud_start[c + 1]; ++b) {
+      located_[b] = grid_->locate(buds[b], corners_[b]);
+      if (located_[b]) grid_->add_bud_spread(corners_[b]);
+    }
   }
   grid_->propagate();
   for (std::size_t c = 0; c < nc; ++c) {
@@ -86,7 +92,9 @@ void ClusterGridLight::evaluate(std::span<const Eigen::Vector3d> buds,
     const std::uint32_t first = bud_start[c], end = bud_start[c + 1];
     if (end > first) {
       double sum = 0.0;
-      for (std::uint32_t b = first; b < end; ++b) sum += grid_->spread_bud_light(buds[b]);
+      for (std::uint32_t b = first; b < end; ++b) {
+        sum += located_[b] ? grid_->spread_bud_light(corners_[b]) : 1.0;
+      }
       light[c] = sum / static_cast<double>(end - first);
     } else {
       light[c] = grid_->spread_bud_light(centers[c]);

@@ -63,6 +63,8 @@ class ClusterGridLight {
   std::unique_ptr<ShadowGrid> grid_;
   const Scene& scene_;
   bool sized_ = false;
+  std::vector<ShadowGrid::Corners> corners_;  // per bud, reused between evaluations
+  std::vector<std::uint8_t> located_;
 };
 
 }  // namespace fspm::environment

@@ -106,10 +106,6 @@ bool ShadowGrid::covers(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) co
          (last.array() < (have + n_.cast<double>()).array()).all();
 }
 
-std::size_t ShadowGrid::index(int i, int j, int k) const {
-  return (static_cast<std::size_t>(k) * n_.y() + j) * n_.x() + i;
-}
-
 Eigen::Vector3d ShadowGrid::voxel_center(int i, int j, int k) const {
   return origin_ + p_.voxel_size_m * Eigen::Vector3d(i + 0.5, j + 0.5, k + 0.5);
 }
@@ -300,19 +296,40 @@ void ShadowGrid::propagate() {
   for (int q = 0; q <= p_.depth_voxels; ++q) falloff_[q] = std::pow(p_.shade_b, -q);
 }
 
-double ShadowGrid::voxel_shade(int i, int j, int k) const {
+double ShadowGrid::voxel_shade(std::size_t at, int i, int j, int k) const {
   // Computed when first asked: buds and their neighbours are a small part of the grid.
-  const std::size_t at = index(i, j, k);
   double& s = shade_[at];
   if (shade_stamp_[at] == stamp_) return s;
   shade_stamp_[at] = stamp_;
+  s = pyramid_sum(i, j, k);
+  return s;
+}
+
+double ShadowGrid::pyramid_sum(int i, int j, int k) const {
   // Palubicki: s(i, j, k) = sum over q of b^-q times the sources of layer k + q within the
   // square of half width q above (i, j).
-  const int q_last = std::min(p_.depth_voxels, n_.z() - 1 - k);
+  const int q_max = p_.depth_voxels;
+  const int q_last = std::min(q_max, n_.z() - 1 - k);
   double sum = 0.0;
-  for (int q = 0; q <= q_last; ++q) sum += falloff_[q] * box_sum(k + q, i - q, i + q, j - q, j + q);
-  s = sum;
-  return s;
+  if (i < q_max || j < q_max || i + q_max >= n_.x() || j + q_max >= n_.y()) {
+    for (int q = 0; q <= q_last; ++q)
+      sum += falloff_[q] * box_sum(k + q, i - q, i + q, j - q, j + q);
+    return sum;
+  }
+  // Every square lies inside its layer (the usual case: reset() leaves q_max + 1 voxels of
+  // margin): box_sum without the clipping, the same terms in the same order.
+  const std::size_t sx = static_cast<std::size_t>(n_.x()) + 1;
+  const std::size_t layer_size = sx * (static_cast<std::size_t>(n_.y()) + 1);
+  const double* layer = sat_.data() + static_cast<std::size_t>(k) * layer_size;
+  for (int q = 0; q <= q_last; ++q, layer += layer_size) {
+    const std::size_t lo_row = static_cast<std::size_t>(j - q) * sx;
+    const std::size_t hi_row = static_cast<std::size_t>(j + q + 1) * sx;
+    const std::size_t lo_col = static_cast<std::size_t>(i - q);
+    const std::size_t hi_col = static_cast<std::size_t>(i + q + 1);
+    sum += falloff_[q] * (layer[hi_row + hi_col] - layer[lo_row + hi_col] - layer[hi_row + lo_col] +
+                          layer[lo_row + lo_col]);
+  }
+  return sum;
 }
 
 namespace {
@@ -322,34 +339,37 @@ Eigen::Vector3i corner_offset(int c) { return {c & 1, (c >> 1) & 1, (c >> 2) & 1
 
 }  // namespace
 
-double ShadowGrid::Corners::weight(int c) const {
-  const Eigen::Vector3i o = corner_offset(c);
-  double w = 1.0;
-  for (int a = 0; a < 3; ++a) w *= o[a] ? t[a] : 1.0 - t[a];
-  return w;
-}
-
-bool ShadowGrid::corners_of(const Eigen::Vector3d& p, Corners& k) const {
+bool ShadowGrid::locate(const Eigen::Vector3d& p, Corners& k) const {
   const Eigen::Vector3d g = (p - origin_) / p_.voxel_size_m - Eigen::Vector3d::Constant(0.5);
   const Eigen::Vector3d base = g.array().floor();
   if (!base.allFinite() || (base.array().abs() > 1e9).any()) return false;
   k.base = base.cast<int>();
   k.t = g - base;
+  const double wx[2] = {1.0 - k.t.x(), k.t.x()}, wy[2] = {1.0 - k.t.y(), k.t.y()},
+               wz[2] = {1.0 - k.t.z(), k.t.z()};
+  for (int c = 0; c < 8; ++c) k.w[c] = wx[c & 1] * wy[(c >> 1) & 1] * wz[(c >> 2) & 1];
+  k.all_inside = (k.base.array() >= 0).all() && (k.base.array() + 1 < n_.array()).all();
+  k.at = k.all_inside ? index(k.base.x(), k.base.y(), k.base.z()) : 0;
   return true;
-}
-
-bool ShadowGrid::inside(const Eigen::Vector3i& v) const {
-  return (v.array() >= 0).all() && (v.array() < n_.array()).all();
 }
 
 void ShadowGrid::add_bud_spread(const Eigen::Vector3d& p, double weight) {
   Corners k;
-  if (!corners_of(p, k)) return;
+  if (locate(p, k)) add_bud_spread(k, weight);
+}
+
+void ShadowGrid::add_bud_spread(const Corners& k, double weight) {
   for (int c = 0; c < 8; ++c) {
-    const Eigen::Vector3i v = k.base + corner_offset(c);
-    const double w = k.weight(c);
-    if (w <= 0.0 || !inside(v)) continue;
-    const std::size_t at = index(v.x(), v.y(), v.z());
+    const double w = k.w[c];
+    if (w <= 0.0) continue;
+    std::size_t at;
+    if (k.all_inside) {
+      at = corner_index(k, c);
+    } else {
+      const Eigen::Vector3i v = k.base + corner_offset(c);
+      if (!inside(v)) continue;
+      at = index(v.x(), v.y(), v.z());
+    }
     source_[at] += p_.shade_a * weight * w;
     touched_.push_back(at);
   }
@@ -360,21 +380,25 @@ void ShadowGrid::add_bud_spread(const Eigen::Vector3d& p, double weight) {
 // pyramid takes in all four, at b^-1). Outside the grid nothing shades.
 double ShadowGrid::spread_bud_light(const Eigen::Vector3d& p) const {
   Corners k;
-  if (!corners_of(p, k)) return 1.0;
+  return locate(p, k) ? spread_bud_light(k) : 1.0;
+}
+
+double ShadowGrid::spread_bud_light(const Corners& k) const {
   const double upper_share = k.t.z();
   double light = 0.0;
   for (int c = 0; c < 8; ++c) {
-    const Eigen::Vector3i v = k.base + corner_offset(c);
-    const double w = k.weight(c);
+    const double w = k.w[c];
     if (w <= 0.0) continue;
-    if (!inside(v)) {
+    const Eigen::Vector3i v = k.base + corner_offset(c);
+    if (!k.all_inside && !inside(v)) {
       light += w;
       continue;
     }
-    if (obstacle_[index(v.x(), v.y(), v.z())]) continue;
-    const bool upper = corner_offset(c).z() > 0;
+    const std::size_t at = k.all_inside ? corner_index(k, c) : index(v.x(), v.y(), v.z());
+    if (obstacle_[at]) continue;
+    const bool upper = (c >> 2) != 0;
     const double own = p_.shade_a * (w + (upper ? 0.0 : upper_share / p_.shade_b));
-    const double s = voxel_shade(v.x(), v.y(), v.z()) - own;
+    const double s = voxel_shade(at, v.x(), v.y(), v.z()) - own;
     light += w * std::min(std::max(p_.full_light - s, 0.0) / p_.full_light, 1.0);
   }
   return light;
@@ -382,13 +406,13 @@ double ShadowGrid::spread_bud_light(const Eigen::Vector3d& p) const {
 
 Eigen::Vector3d ShadowGrid::spread_light_direction(const Eigen::Vector3d& p) const {
   Corners k;
-  if (!corners_of(p, k)) return Eigen::Vector3d::UnitZ();
+  if (!locate(p, k)) return Eigen::Vector3d::UnitZ();
   Eigen::Vector3d d = Eigen::Vector3d::Zero();
   for (int c = 0; c < 8; ++c) {
-    const Eigen::Vector3i v = k.base + corner_offset(c);
-    const double w = k.weight(c);
+    const double w = k.w[c];
     if (w <= 0.0) continue;
-    d += w * (inside(v) ? light_direction_at(v) : Eigen::Vector3d::UnitZ());
+    const Eigen::Vector3i v = k.base + corner_offset(c);
+    d += w * (k.all_inside || inside(v) ? light_direction_at(v) : Eigen::Vector3d::UnitZ());
   }
   return d.normalized();
 }
@@ -454,7 +478,8 @@ Eigen::Vector3d ShadowGrid::light_direction_at(const Eigen::Vector3i& v) const {
   const auto shade_at = [&](Eigen::Vector3i w) {
     // Beyond the grid's side nothing is known: the same as the voxel itself.
     for (int a = 0; a < 2; ++a) w[a] = std::clamp(w[a], 0, n_[a] - 1);
-    return obstacle_[index(w.x(), w.y(), w.z())] ? dark : voxel_shade(w.x(), w.y(), w.z());
+    const std::size_t at = index(w.x(), w.y(), w.z());
+    return obstacle_[at] ? dark : voxel_shade(at, w.x(), w.y(), w.z());
   };
   // The light comes through the 45-degree cone of the shadow pyramid: from the zenith when both
   // sides are equally shaded, tilted toward the brighter side by up to the cone's half angle when

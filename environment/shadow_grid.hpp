@@ -80,6 +80,20 @@ class ShadowGrid {
   double spread_bud_light(const Eigen::Vector3d& p) const;
   Eigen::Vector3d spread_light_direction(const Eigen::Vector3d& p) const;
 
+  // The eight voxel centres around a point and their weights, found once for a bud that is added
+  // and then read (locate() is false for a point too far out to place; such a bud casts nothing
+  // and sees full light).
+  struct Corners {
+    Eigen::Vector3i base;  // voxel of the lower-left-front centre
+    Eigen::Vector3d t;     // the point's position between the centres, each in [0, 1)
+    double w[8];           // trilinear weight of corner c (bits x, y, z)
+    bool all_inside;       // the eight corners lie in the grid
+    std::size_t at;        // index of base when all_inside
+  };
+  bool locate(const Eigen::Vector3d& p, Corners& k) const;
+  void add_bud_spread(const Corners& k, double weight = 1.0);
+  double spread_bud_light(const Corners& k) const;
+
   // Shade s of the voxel containing p (0 outside the grid), for tests.
   double shade(const Eigen::Vector3d& p) const;
   bool obstacle(const Eigen::Vector3d& p) const;
@@ -87,15 +101,18 @@ class ShadowGrid {
 
  private:
   bool voxel_of(const Eigen::Vector3d& p, Eigen::Vector3i& v) const;
-  struct Corners {
-    Eigen::Vector3i base;  // voxel of the lower-left-front centre
-    Eigen::Vector3d t;     // p's position between the centres, each in [0, 1)
-    double weight(int c) const;
-  };
-  bool corners_of(const Eigen::Vector3d& p, Corners& k) const;
-  bool inside(const Eigen::Vector3i& v) const;
+  bool inside(const Eigen::Vector3i& v) const {
+    return (v.array() >= 0).all() && (v.array() < n_.array()).all();
+  }
+  // Index of corner c when all eight lie in the grid.
+  std::size_t corner_index(const Corners& k, int c) const {
+    return k.at + (c & 1) + ((c >> 1) & 1) * static_cast<std::size_t>(n_.x()) +
+           ((c >> 2) & 1) * static_cast<std::size_t>(n_.x()) * n_.y();
+  }
   Eigen::Vector3d light_direction_at(const Eigen::Vector3i& v) const;
-  std::size_t index(int i, int j, int k) const;
+  std::size_t index(int i, int j, int k) const {
+    return (static_cast<std::size_t>(k) * n_.y() + j) * n_.x() + i;
+  }
   Eigen::Vector3d voxel_center(int i, int j, int k) const;
   void mark_obstacle(int i, int j, int k, double translucency, double fraction);
   template <typename Inside>
@@ -108,7 +125,10 @@ class ShadowGrid {
   void add_mesh(const TriangleMesh& mesh);
   void build_summed_area_tables();
   double box_sum(int k, int i0, int i1, int j0, int j1) const;
-  double voxel_shade(int i, int j, int k) const;
+  double voxel_shade(int i, int j, int k) const { return voxel_shade(index(i, j, k), i, j, k); }
+  // The same for the voxel at index `at` (= index(i, j, k)).
+  double voxel_shade(std::size_t at, int i, int j, int k) const;
+  double pyramid_sum(int i, int j, int k) const;
 
   ShadowGridParams p_;
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();  // corner of voxel (0, 0, 0)
