@@ -91,7 +91,7 @@ Gl1Result run_gl1(const PlantParams& params, const OrganTable& counts, int cycle
     double area = 0.0;
     for (int p = 1; p <= n_ages; ++p) {
       const auto up = static_cast<std::size_t>(p);
-      const double span = params.age(p).leaf_life_span;
+      const double span = params.age(p).geometry.leaf_life_span;
       for (std::size_t c = 1; c <= n; ++c) {
         if (span > 0.0 && static_cast<double>(n - c) >= span) continue;
         area += counts[up][c] * res.leaf_mass[up][c] / fp.specific_leaf_mass;

@@ -194,39 +194,39 @@ AgeParams read_age(const toml::table& table, const std::string& path, const std:
   a.branching_probability = r.get_probability("branching_probability");
   a.growth_probability = r.get_probability("growth_probability");
   a.survival_probability = r.get_probability("survival_probability");
-  a.leaf_life_span = r.get_nonnegative("leaf_life_span", 1.0);
-  a.axis_life_span = r.get_nonnegative("axis_life_span", 0.0);
-  a.pruning_period = r.get_nonnegative("pruning_period", 0.0);
-  a.branching_angle_deg = r.get_any("branching_angle", 60.0);
-  a.phyllotaxy_deg = r.get_any("phyllotaxy", 147.5);
+  a.geometry.leaf_life_span = r.get_nonnegative("leaf_life_span", 1.0);
+  a.geometry.axis_life_span = r.get_nonnegative("axis_life_span", 0.0);
+  a.geometry.pruning_period = r.get_nonnegative("pruning_period", 0.0);
+  a.geometry.branching_angle_deg = r.get_any("branching_angle", 60.0);
+  a.geometry.phyllotaxy_deg = r.get_any("phyllotaxy", 147.5);
   if (const toml::node* o = r.find("orientation")) {
     const auto s = o->value<std::string>();
     if (s == "orthotropic") {
-      a.orientation = Orientation::kOrthotropic;
+      a.geometry.orientation = Orientation::kOrthotropic;
     } else if (s == "plagiotropic") {
-      a.orientation = Orientation::kPlagiotropic;
+      a.geometry.orientation = Orientation::kPlagiotropic;
     } else {
       throw ParseError(
           "key '" + r.key_name("orientation") + "' must be \"orthotropic\" or \"plagiotropic\"",
           file, line_of(*o), column_of(*o));
     }
   }
-  a.straightening = r.get_double("straightening", 0.0, 0.0, 1.0, "a fraction in [0, 1]");
-  a.internode_length_m = r.get_nonnegative("internode_length", 1.0);
-  a.internode_radius_m = r.get_nonnegative("internode_radius", 0.05);
-  a.radius_growth_m = r.get_nonnegative("radius_growth", 0.0);
-  a.leaf_length_m = r.get_nonnegative("leaf_length", 0.3);
+  a.geometry.straightening = r.get_double("straightening", 0.0, 0.0, 1.0, "a fraction in [0, 1]");
+  a.geometry.internode_length_m = r.get_nonnegative("internode_length", 1.0);
+  a.geometry.internode_radius_m = r.get_nonnegative("internode_radius", 0.05);
+  a.geometry.radius_growth_m = r.get_nonnegative("radius_growth", 0.0);
+  a.geometry.leaf_length_m = r.get_nonnegative("leaf_length", 0.3);
   if (const toml::node* s = r.find("leaf_on_surface")) {
     const auto v = s->value_exact<bool>();
     if (!v) {
       throw ParseError("key '" + r.key_name("leaf_on_surface") + "' must be true or false", file,
                        line_of(*s), column_of(*s));
     }
-    a.leaf_on_surface = *v;
+    a.geometry.leaf_on_surface = *v;
   }
-  a.leaf_angle_increase_deg =
+  a.geometry.leaf_angle_increase_deg =
       r.get_double("leaf_angle_increase", 0.0, -180.0, 180.0, "an angle in [-180, 180]");
-  a.leaf_opening_cycles = r.get_nonnegative("leaf_opening", 0.0);
+  a.geometry.leaf_opening_cycles = r.get_nonnegative("leaf_opening", 0.0);
   auto& f = a.functional;
   f.leaf_sink = r.get_nonnegative("leaf_sink", 1.0);
   f.internode_sink = r.get_nonnegative("internode_sink", 1.0);

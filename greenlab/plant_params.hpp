@@ -40,21 +40,12 @@ struct AgeFunctional {
   double internode_beta_b = 2.0;
 };
 
-// One physiological age (a macro-state of the dual-scale automaton).
-struct AgeParams {
-  int index = 0;
-  int duration = 1;  // cycles at this age, counted from the first growth unit
-  int next_age = 0;  // 0: the apex stops and leaves `terminal`
-  Terminal terminal = Terminal::kNone;
-  int branching_delay = 1;  // cycles between a bud of this age's creation and its first unit
-  std::vector<MetamerRun> units;
-  double branching_probability = 1.0;  // GL2
-  double growth_probability = 1.0;     // GL2
-  double survival_probability = 1.0;   // GL2
-  double leaf_life_span = 1.0;         // cycles; 0 = never falls
-  double axis_life_span = 0.0;         // cycles; 0 = never dies
-  double pruning_period = 0.0;         // cycles a dead organ stays on the plant (Jaeger 3.2.1)
-  // Geometry used by the reconstruction (Jaeger 3.1.2).
+// Life spans and geometry of one physiological age, what the reconstruction needs (Jaeger
+// 3.1.2-3.1.3, 3.2.1); a compressed graph carries them in its metadata (geometry_metadata).
+struct AgeGeometry {
+  double leaf_life_span = 1.0;  // cycles; 0 = never falls
+  double axis_life_span = 0.0;  // cycles; 0 = never dies
+  double pruning_period = 0.0;  // cycles a dead organ stays on the plant (Jaeger 3.2.1)
   double branching_angle_deg = 60.0;
   double phyllotaxy_deg = 147.5;
   Orientation orientation = Orientation::kOrthotropic;
@@ -68,6 +59,22 @@ struct AgeParams {
   bool leaf_on_surface = false;
   double leaf_angle_increase_deg = 0.0;
   double leaf_opening_cycles = 0.0;  // 0: the increase applies from birth
+
+  bool plagiotropic() const { return orientation == Orientation::kPlagiotropic; }
+};
+
+// One physiological age (a macro-state of the dual-scale automaton).
+struct AgeParams {
+  int index = 0;
+  int duration = 1;  // cycles at this age, counted from the first growth unit
+  int next_age = 0;  // 0: the apex stops and leaves `terminal`
+  Terminal terminal = Terminal::kNone;
+  int branching_delay = 1;  // cycles between a bud of this age's creation and its first unit
+  std::vector<MetamerRun> units;
+  double branching_probability = 1.0;  // GL2
+  double growth_probability = 1.0;     // GL2
+  double survival_probability = 1.0;   // GL2
+  AgeGeometry geometry;
   AgeFunctional functional;
 
   bool stochastic() const {

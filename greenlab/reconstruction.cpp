@@ -72,28 +72,47 @@ const AgeGeometry& ReconstructionParams::age(int p) const {
   return ages[static_cast<std::size_t>(p - 1)];
 }
 
+namespace {
+
+// The metadata key of each number of AgeGeometry: one table for writing and reading. The keys of
+// the last three are written only when they differ from the default, so that plants without them
+// keep their files byte for byte.
+struct GeometryField {
+  const char* key;
+  double AgeGeometry::*member;
+  bool written_when_default;
+};
+constexpr GeometryField kGeometryFields[] = {
+    {"leaf_life_span", &AgeGeometry::leaf_life_span, true},
+    {"axis_life_span", &AgeGeometry::axis_life_span, true},
+    {"pruning_period", &AgeGeometry::pruning_period, true},
+    {"branching_angle_deg", &AgeGeometry::branching_angle_deg, true},
+    {"phyllotaxy_deg", &AgeGeometry::phyllotaxy_deg, true},
+    {"straightening", &AgeGeometry::straightening, true},
+    {"internode_length_m", &AgeGeometry::internode_length_m, true},
+    {"internode_radius_m", &AgeGeometry::internode_radius_m, true},
+    {"radius_growth_m", &AgeGeometry::radius_growth_m, true},
+    {"leaf_length_m", &AgeGeometry::leaf_length_m, true},
+    {"leaf_angle_increase_deg", &AgeGeometry::leaf_angle_increase_deg, false},
+    {"leaf_opening", &AgeGeometry::leaf_opening_cycles, false},
+};
+
+}  // namespace
+
 std::map<std::string, double> geometry_metadata(const PlantParams& params) {
   std::map<std::string, double> m;
   m["age.count"] = static_cast<double>(params.ages.size());
+  const AgeGeometry kDefault{};
   for (const auto& a : params.ages) {
     const int p = a.index;
-    m[age_key(p, "leaf_life_span")] = a.leaf_life_span;
-    m[age_key(p, "axis_life_span")] = a.axis_life_span;
-    m[age_key(p, "pruning_period")] = a.pruning_period;
-    m[age_key(p, "branching_angle_deg")] = a.branching_angle_deg;
-    m[age_key(p, "phyllotaxy_deg")] = a.phyllotaxy_deg;
-    m[age_key(p, "plagiotropic")] = a.orientation == Orientation::kPlagiotropic ? 1.0 : 0.0;
-    m[age_key(p, "straightening")] = a.straightening;
-    m[age_key(p, "internode_length_m")] = a.internode_length_m;
-    m[age_key(p, "internode_radius_m")] = a.internode_radius_m;
-    m[age_key(p, "radius_growth_m")] = a.radius_growth_m;
-    m[age_key(p, "leaf_length_m")] = a.leaf_length_m;
-    // Written only when used, so that plants without them keep their files byte for byte.
-    if (a.leaf_on_surface) m[age_key(p, "leaf_on_surface")] = 1.0;
-    if (a.leaf_angle_increase_deg != 0.0) {
-      m[age_key(p, "leaf_angle_increase_deg")] = a.leaf_angle_increase_deg;
+    const AgeGeometry& g = a.geometry;
+    for (const GeometryField& f : kGeometryFields) {
+      if (f.written_when_default || g.*f.member != kDefault.*f.member) {
+        m[age_key(p, f.key)] = g.*f.member;
+      }
     }
-    if (a.leaf_opening_cycles != 0.0) m[age_key(p, "leaf_opening")] = a.leaf_opening_cycles;
+    m[age_key(p, "plagiotropic")] = g.plagiotropic() ? 1.0 : 0.0;
+    if (g.leaf_on_surface) m[age_key(p, "leaf_on_surface")] = 1.0;
   }
   const auto& f = params.functional;
   m["functional.enabled"] = f.enabled ? 1.0 : 0.0;
@@ -114,21 +133,11 @@ ReconstructionParams ReconstructionParams::from_metadata(const std::map<std::str
   r.ages.resize(static_cast<std::size_t>(count));
   for (int p = 1; p <= static_cast<int>(r.ages.size()); ++p) {
     AgeGeometry& a = r.ages[static_cast<std::size_t>(p - 1)];
-    a.leaf_life_span = get(age_key(p, "leaf_life_span"), a.leaf_life_span);
-    a.axis_life_span = get(age_key(p, "axis_life_span"), a.axis_life_span);
-    a.pruning_period = get(age_key(p, "pruning_period"), a.pruning_period);
-    a.branching_angle_deg = get(age_key(p, "branching_angle_deg"), a.branching_angle_deg);
-    a.phyllotaxy_deg = get(age_key(p, "phyllotaxy_deg"), a.phyllotaxy_deg);
-    a.plagiotropic = get(age_key(p, "plagiotropic"), 0.0) != 0.0;
-    a.straightening = get(age_key(p, "straightening"), a.straightening);
-    a.internode_length_m = get(age_key(p, "internode_length_m"), a.internode_length_m);
-    a.internode_radius_m = get(age_key(p, "internode_radius_m"), a.internode_radius_m);
-    a.radius_growth_m = get(age_key(p, "radius_growth_m"), a.radius_growth_m);
-    a.leaf_length_m = get(age_key(p, "leaf_length_m"), a.leaf_length_m);
+    for (const GeometryField& f : kGeometryFields)
+      a.*f.member = get(age_key(p, f.key), a.*f.member);
+    a.orientation = get(age_key(p, "plagiotropic"), 0.0) != 0.0 ? Orientation::kPlagiotropic
+                                                                : Orientation::kOrthotropic;
     a.leaf_on_surface = get(age_key(p, "leaf_on_surface"), 0.0) != 0.0;
-    a.leaf_angle_increase_deg =
-        get(age_key(p, "leaf_angle_increase_deg"), a.leaf_angle_increase_deg);
-    a.leaf_opening_cycles = get(age_key(p, "leaf_opening"), a.leaf_opening_cycles);
   }
   r.from_volumes = get("functional.enabled", 0.0) != 0.0;
   r.leaf_thickness = get("functional.leaf_thickness", r.leaf_thickness);
@@ -211,7 +220,7 @@ class AxisBuilder {
   // rigid placement.
   bool orientation_dependent(int p) const {
     const AgeGeometry& g = geo_.age(p);
-    return g.plagiotropic || g.straightening > 0.0;
+    return g.plagiotropic() || g.straightening > 0.0;
   }
   bool any_pruning_period() const { return any_pruning_period_; }
 
@@ -227,7 +236,7 @@ class AxisBuilder {
   Frame root_frame() const {
     Frame f = trunk_frame();
     if (absolute_effects_ &&
-        geo_.age(graph_.record(graph_.root()).physiological_age).plagiotropic) {
+        geo_.age(graph_.record(graph_.root()).physiological_age).plagiotropic()) {
       f.axes = plagiotropic_frame(Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY());
     }
     return f;
@@ -348,7 +357,7 @@ class AxisBuilder {
           } else {
             lf.axes = f.axes * rotations(q).branching;
           }
-          if (absolute_effects_ && geo_.age(q).plagiotropic) {
+          if (absolute_effects_ && geo_.age(q).plagiotropic()) {
             lf.axes = plagiotropic_frame(lf.axes.col(0), lf.axes.col(1));
           }
           laterals.push_back({ax[k], internode, lf, static_cast<std::uint16_t>(axis.order + 1)});
@@ -359,7 +368,7 @@ class AxisBuilder {
       } else {
         f.axes = f.axes * rp.phyllotaxy;
       }
-      if (absolute_effects_ && g.straightening > 0.0 && !g.plagiotropic) {
+      if (absolute_effects_ && g.straightening > 0.0 && !g.plagiotropic()) {
         // Orthotropic axes (Rauh) turn their heading up by a fraction per metamer.
         const Eigen::Vector3d h = f.axes.col(0);
         const Eigen::Vector3d target = (h + g.straightening * (Eigen::Vector3d::UnitZ() - h));

@@ -16,23 +16,6 @@
 
 namespace fspm::greenlab {
 
-struct AgeGeometry {
-  double leaf_life_span = 1.0;  // 0 = never falls
-  double axis_life_span = 0.0;  // 0 = never dies
-  double pruning_period = 0.0;
-  double branching_angle_deg = 60.0;
-  double phyllotaxy_deg = 147.5;
-  bool plagiotropic = false;
-  double straightening = 0.0;
-  double internode_length_m = 1.0;
-  double internode_radius_m = 0.05;
-  double radius_growth_m = 0.0;
-  double leaf_length_m = 0.3;
-  bool leaf_on_surface = false;
-  double leaf_angle_increase_deg = 0.0;
-  double leaf_opening_cycles = 0.0;
-};
-
 struct ReconstructionParams {
   std::vector<AgeGeometry> ages;  // ages[p - 1]
   // GL1 volumes turned into dimensions by the allometry of Jaeger's annex.

@@ -110,9 +110,9 @@ TEST(LeafInsertion, SurfaceFollowsTheRadiusAtTheReconstructedAge) {
 TEST(LeafInsertion, EveryLeafOfABranchedPlantSitsOnItsInternodeSurface) {
   PlantParams p = testing::example("rauh.toml");
   for (auto& a : p.ages) {
-    a.leaf_on_surface = true;
-    a.leaf_angle_increase_deg = 20.0;
-    a.leaf_opening_cycles = 1.5;
+    a.geometry.leaf_on_surface = true;
+    a.geometry.leaf_angle_increase_deg = 20.0;
+    a.geometry.leaf_opening_cycles = 1.5;
   }
   const CompressedTreeGraph g = simulate_compressed(p);
   const double now = g.birth_date + g.final_age;
@@ -125,7 +125,7 @@ TEST(LeafInsertion, EveryLeafOfABranchedPlantSitsOnItsInternodeSurface) {
     EXPECT_NEAR((t.start(l) - t.end(m)).dot(t.direction(m)), 0.0, 1e-9);
     const AgeParams& a = p.age(t.physiological_age(m));
     const double expected =
-        leaf_insertion_angle_deg(a.branching_angle_deg, 20.0, 1.5, now - t.birth_time(l));
+        leaf_insertion_angle_deg(a.geometry.branching_angle_deg, 20.0, 1.5, now - t.birth_time(l));
     EXPECT_NEAR(std::acos(std::clamp(t.direction(l).dot(t.direction(m)), -1.0, 1.0)) / kDeg,
                 expected, 1e-7);
     ++checked;

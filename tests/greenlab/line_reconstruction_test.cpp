@@ -73,7 +73,7 @@ TEST(LineReconstruction, SameRecordsAsTheExplicitTreeForEveryExample) {
     check_plant(example(name), name);
   }
   PlantParams free = example("leeuwenberg.toml");
-  for (auto& a : free.ages) a.straightening = 0.0;
+  for (auto& a : free.ages) a.geometry.straightening = 0.0;
   check_plant(free, "leeuwenberg without straightening");
 }
 
@@ -92,9 +92,9 @@ TEST(LineReconstruction, Table1TreeMixesWalkedAndCopiedAxes) {
 TEST(LineReconstruction, SelfPruningWithAPruningPeriodKeepsTheDeadFlags) {
   PlantParams p = example("leeuwenberg.toml");
   for (auto& a : p.ages) {
-    a.leaf_life_span = 2;
-    a.pruning_period = 1;
-    if (a.index > 1) a.axis_life_span = 3;
+    a.geometry.leaf_life_span = 2;
+    a.geometry.pruning_period = 1;
+    if (a.index > 1) a.geometry.axis_life_span = 3;
   }
   check_plant(p, "pruned leeuwenberg");
 }

@@ -70,7 +70,7 @@ TEST(PlantParams, ParsesAValidDescription) {
   ASSERT_EQ(a.units[1].axillary.size(), 1u);
   EXPECT_EQ(a.units[1].axillary[0].age, 2);
   EXPECT_EQ(a.units[1].axillary[0].count, 2);
-  EXPECT_DOUBLE_EQ(a.phyllotaxy_deg, 147.5);
+  EXPECT_DOUBLE_EQ(a.geometry.phyllotaxy_deg, 147.5);
   EXPECT_FALSE(p.stochastic());
 }
 

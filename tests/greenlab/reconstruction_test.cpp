@@ -173,8 +173,8 @@ namespace {
 TEST(Reconstruction, InstancedFormExpandsToTheExplicitTree) {
   // Leeuwenberg without straightening: no orientation-dependent effect, so instancing is exact.
   PlantParams p = testing::example("leeuwenberg.toml");
-  p.age(1).straightening = 0.0;
-  p.age(1).leaf_life_span = 2;
+  p.age(1).geometry.straightening = 0.0;
+  p.age(1).geometry.leaf_life_span = 2;
   const CompressedTreeGraph g = simulate_compressed(p);
   for (double age : {6.0, 4.0}) {
     ReconstructionOptions o;
