@@ -899,11 +899,10 @@ void add_lod_options(CLI::App* command, bool& lod, double& distance_m) {
       ->check(positive_number(1e9));
 }
 
-}  // namespace
+constexpr const char* kTreeFormats = "tree, treeb, nwk or mtg (default: from the extension)";
 
-void add_graphics_commands(CLI::App& app) {
-  const std::string formats = "tree, treeb, nwk or mtg (default: from the extension)";
-
+void add_mesh_command(CLI::App& app) {
+  const std::string formats = kTreeFormats;
   auto mesh = std::make_shared<MeshCommand>();
   CLI::App* m = app.add_subcommand(kMeshCommand.name, kMeshCommand.description);
   m->add_option(
@@ -946,7 +945,10 @@ void add_graphics_commands(CLI::App& app) {
   add_graph_lod_options(m, mesh->graph_lod);
   m->add_flag("--json", mesh->json, "Machine-readable JSON on stdout");
   m->callback([mesh] { run_mesh(*mesh); });
+}
 
+void add_render_command(CLI::App& app) {
+  const std::string formats = kTreeFormats;
   auto render = std::make_shared<RenderCommand>();
   CLI::App* r = app.add_subcommand(kRenderCommand.name, kRenderCommand.description);
   r->add_option("TREE", render->tree,
@@ -987,7 +989,10 @@ void add_graphics_commands(CLI::App& app) {
   add_graph_lod_options(r, render->graph_lod);
   r->add_flag("--json", render->json, "Machine-readable JSON on stdout");
   r->callback([render] { run_render(*render); });
+}
 
+void add_view_command(CLI::App& app) {
+  const std::string formats = kTreeFormats;
   auto view = std::make_shared<ViewCommand>();
   CLI::App* v = app.add_subcommand(kViewCommand.name, kViewCommand.description);
   v->add_option(
@@ -1022,6 +1027,14 @@ void add_graphics_commands(CLI::App& app) {
   add_graph_lod_options(v, view->graph_lod);
   v->add_flag("--json", view->json, "Machine-readable JSON on stdout (frame time)");
   v->callback([view] { run_view(*view); });
+}
+
+}  // namespace
+
+void add_graphics_commands(CLI::App& app) {
+  add_mesh_command(app);
+  add_render_command(app);
+  add_view_command(app);
 }
 
 }  // namespace fspm::cli

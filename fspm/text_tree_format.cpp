@@ -159,9 +159,10 @@ void write_tree_text(const TreeGraph& tree, std::ostream& out) {
   out.write(buf.data(), static_cast<std::streamsize>(buf.size()));
 }
 
-TreeGraph read_tree_text(std::istream& in, const std::string& source) {
-  Reader r(in, source);
-  std::vector<Token> t;
+namespace {
+
+// The header line 'fspm-tree VERSION' and the node count of the line 'nodes COUNT'.
+std::uint64_t read_header(Reader& r, std::vector<Token>& t) {
   if (!r.next(t) || t[0].text != kMagic) {
     r.fail("expected the header 'fspm-tree " + std::to_string(kTextTreeFormatVersion) +
            "' (is this a .tree file?)");
@@ -174,7 +175,36 @@ TreeGraph read_tree_text(std::istream& in, const std::string& source) {
            t[1].column);
   }
   if (!r.next(t) || t[0].text != "nodes" || t.size() != 2) r.fail("expected 'nodes COUNT'");
-  const auto count = r.integer<std::uint64_t>(t[1], "the node count", kNoNode - 1);
+  return r.integer<std::uint64_t>(t[1], "the node count", kNoNode - 1);
+}
+
+// The fixed fields of a node line after the ids: kind, ages, geometry and birth time.
+NodeData read_node_fields(Reader& r, const std::vector<Token>& t) {
+  NodeData d;
+  try {
+    d.kind = organ_kind_from_name(t[2].text);
+  } catch (const ValueError& e) {
+    r.fail(e.message(), t[2].column);
+  }
+  d.physiological_age = r.integer<std::uint16_t>(t[3], "the physiological age", 65535);
+  d.order = r.integer<std::uint16_t>(t[4], "the branching order", 65535);
+  static const char* kVecFields[] = {"start", "end", "direction"};
+  for (int v = 0; v < 3; ++v) {
+    Eigen::Vector3d& dst = v == 0 ? d.start : (v == 1 ? d.end : d.direction);
+    for (int k = 0; k < 3; ++k) dst[k] = r.finite_number(t[5 + 3 * v + k], kVecFields[v]);
+  }
+  d.length = r.finite_number(t[14], "length");
+  d.radius = r.finite_number(t[15], "radius");
+  d.birth_time = r.finite_number(t[16], "birth time");
+  return d;
+}
+
+}  // namespace
+
+TreeGraph read_tree_text(std::istream& in, const std::string& source) {
+  Reader r(in, source);
+  std::vector<Token> t;
+  const std::uint64_t count = read_header(r, t);
 
   TreeGraph tree;
   bool more = r.next(t);
@@ -211,22 +241,7 @@ TreeGraph read_tree_text(std::istream& in, const std::string& source) {
     } else if (id != 0) {
       r.fail("only node 0 may be the root ('-' parent)", t[1].column);
     }
-    NodeData d;
-    try {
-      d.kind = organ_kind_from_name(t[2].text);
-    } catch (const ValueError& e) {
-      r.fail(e.message(), t[2].column);
-    }
-    d.physiological_age = r.integer<std::uint16_t>(t[3], "the physiological age", 65535);
-    d.order = r.integer<std::uint16_t>(t[4], "the branching order", 65535);
-    static const char* kVecFields[] = {"start", "end", "direction"};
-    for (int v = 0; v < 3; ++v) {
-      Eigen::Vector3d& dst = v == 0 ? d.start : (v == 1 ? d.end : d.direction);
-      for (int k = 0; k < 3; ++k) dst[k] = r.finite_number(t[5 + 3 * v + k], kVecFields[v]);
-    }
-    d.length = r.finite_number(t[14], "length");
-    d.radius = r.finite_number(t[15], "radius");
-    d.birth_time = r.finite_number(t[16], "birth time");
+    const NodeData d = read_node_fields(r, t);
     for (std::size_t k = 0; k < names.size(); ++k) {
       attrs[k] = r.number(t[kFixedFields + k], names[k].c_str());
     }

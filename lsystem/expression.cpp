@@ -121,6 +121,27 @@ void Expression::division_by_zero() const {
   throw ValueError("division by zero", position_.file, position_.line, position_.column);
 }
 
+double Expression::eval_nran(const Node& node, EvalState& s) const {
+  // Box-Muller from two uniforms of the seeded generator (platform independent).
+  const double mean = eval(node.a, s);
+  const double sd = eval(node.b, s);
+  const double u1 = 1.0 - uniform01(*s.rng);
+  const double u2 = uniform01(*s.rng);
+  return mean + sd * std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
+}
+
+double Expression::eval_while(const Node& node, EvalState& s) const {
+  long iterations = 0;
+  while (eval(node.a, s) != 0.0) {
+    if (++iterations > kMaxLoopIterations) {
+      throw ValueError("while loop ran more than 1000000 times", position_.file, position_.line,
+                       position_.column);
+    }
+    eval(node.b, s);
+  }
+  return 0.0;
+}
+
 double Expression::eval(std::int32_t n, EvalState& s) const {
   const Node& node = nodes_[n];
   switch (node.op) {
@@ -184,28 +205,13 @@ double Expression::eval(std::int32_t n, EvalState& s) const {
       const double x = eval(node.a, s);
       return uniform01(*s.rng) * x;
     }
-    case Op::kNran: {
-      // Box-Muller from two uniforms of the seeded generator (platform independent).
-      const double mean = eval(node.a, s);
-      const double sd = eval(node.b, s);
-      const double u1 = 1.0 - uniform01(*s.rng);
-      const double u2 = uniform01(*s.rng);
-      return mean + sd * std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
-    }
+    case Op::kNran:
+      return eval_nran(node, s);
     case Op::kComma:
       eval(node.a, s);
       return eval(node.b, s);
-    case Op::kWhile: {
-      long iterations = 0;
-      while (eval(node.a, s) != 0.0) {
-        if (++iterations > kMaxLoopIterations) {
-          throw ValueError("while loop ran more than 1000000 times", position_.file, position_.line,
-                           position_.column);
-        }
-        eval(node.b, s);
-      }
-      return 0.0;
-    }
+    case Op::kWhile:
+      return eval_while(node, s);
   }
   return 0.0;
 }
@@ -507,18 +513,7 @@ std::int32_t ExpressionCompiler::primary() {
   }
   if (std::isdigit(static_cast<unsigned char>(c)) ||
       (c == '.' && std::isdigit(static_cast<unsigned char>(cur_.peek(1))))) {
-    const std::string_view rest = cur_.rest();
-    std::string buffer(rest.substr(0, std::min<std::size_t>(rest.size(), 64)));
-    char* end = nullptr;
-    const double v = std::strtod(buffer.c_str(), &end);
-    std::size_t used = static_cast<std::size_t>(end - buffer.c_str());
-    cur_.advance(used);
-    if (cur_.peek() == 'f' || cur_.peek() == 'F') {
-      if (!is_ident_char(cur_.peek(1))) cur_.advance();  // C float suffix 1.5f
-    }
-    Expression::Node n{Op::kConst};
-    n.value = v;
-    return add(n);
+    return number();
   }
   if (is_ident_start(c)) {
     const std::size_t start = cur_.pos();
@@ -527,60 +522,81 @@ std::int32_t ExpressionCompiler::primary() {
     const std::string name(cur_.rest().substr(0, p));
     cur_.advance(p);
     cur_.skip_space();
-    if (cur_.peek() == '(') {
-      cur_.advance();
-      std::vector<std::int32_t> args;
-      cur_.skip_space();
-      if (cur_.peek() != ')') {
-        for (;;) {
-          args.push_back(assignment());
-          if (!cur_.accept(",")) break;
-        }
-      }
-      cur_.expect(')', "')' closing the arguments of " + name);
-      auto arity_error = [&](int n) {
-        cur_.fail_at(start, "function " + name + " expects " + std::to_string(n) +
-                                " argument(s), got " + std::to_string(args.size()));
-      };
-      if (name == "ran") {
-        if (args.size() != 1) arity_error(1);
-        Expression::Node n{Op::kRan};
-        n.a = args[0];
-        return add(n);
-      }
-      if (name == "nran") {
-        if (args.size() != 2) arity_error(2);
-        Expression::Node n{Op::kNran};
-        n.a = args[0];
-        n.b = args[1];
-        return add(n);
-      }
-      for (const FunctionInfo& f : kFunctions) {
-        if (f.name != name) continue;
-        if (static_cast<int>(args.size()) != f.arity) arity_error(f.arity);
-        Expression::Node n{f.arity == 1 ? Op::kCall1 : Op::kCall2};
-        n.function = f.id;
-        n.a = args[0];
-        if (f.arity == 2) n.b = args[1];
-        return add(n);
-      }
-      cur_.fail_at(start, "unknown function '" + name + "'");
-    }
-    int slot = scope_.find_local(name);
-    if (slot >= 0) {
-      Expression::Node n{Op::kLocal};
-      n.a = slot;
-      return add(n);
-    }
-    slot = scope_.find_global(name);
-    if (slot >= 0) {
-      Expression::Node n{Op::kGlobal};
-      n.a = slot;
-      return add(n);
-    }
-    cur_.fail_at(start, "undefined parameter or variable '" + name + "'");
+    return cur_.peek() == '(' ? call(name, start) : variable(name, start);
   }
   cur_.fail("a number, a parameter, a function call or '('");
+}
+
+std::int32_t ExpressionCompiler::number() {
+  const std::string_view rest = cur_.rest();
+  std::string buffer(rest.substr(0, std::min<std::size_t>(rest.size(), 64)));
+  char* end = nullptr;
+  const double v = std::strtod(buffer.c_str(), &end);
+  std::size_t used = static_cast<std::size_t>(end - buffer.c_str());
+  cur_.advance(used);
+  if (cur_.peek() == 'f' || cur_.peek() == 'F') {
+    if (!is_ident_char(cur_.peek(1))) cur_.advance();  // C float suffix 1.5f
+  }
+  Expression::Node n{Op::kConst};
+  n.value = v;
+  return add(n);
+}
+
+// A call `name(args)`, the cursor on its '('; `start` is where the name began.
+std::int32_t ExpressionCompiler::call(const std::string& name, std::size_t start) {
+  cur_.advance();
+  std::vector<std::int32_t> args;
+  cur_.skip_space();
+  if (cur_.peek() != ')') {
+    for (;;) {
+      args.push_back(assignment());
+      if (!cur_.accept(",")) break;
+    }
+  }
+  cur_.expect(')', "')' closing the arguments of " + name);
+  auto arity_error = [&](int n) {
+    cur_.fail_at(start, "function " + name + " expects " + std::to_string(n) +
+                            " argument(s), got " + std::to_string(args.size()));
+  };
+  if (name == "ran") {
+    if (args.size() != 1) arity_error(1);
+    Expression::Node n{Op::kRan};
+    n.a = args[0];
+    return add(n);
+  }
+  if (name == "nran") {
+    if (args.size() != 2) arity_error(2);
+    Expression::Node n{Op::kNran};
+    n.a = args[0];
+    n.b = args[1];
+    return add(n);
+  }
+  for (const FunctionInfo& f : kFunctions) {
+    if (f.name != name) continue;
+    if (static_cast<int>(args.size()) != f.arity) arity_error(f.arity);
+    Expression::Node n{f.arity == 1 ? Op::kCall1 : Op::kCall2};
+    n.function = f.id;
+    n.a = args[0];
+    if (f.arity == 2) n.b = args[1];
+    return add(n);
+  }
+  cur_.fail_at(start, "unknown function '" + name + "'");
+}
+
+std::int32_t ExpressionCompiler::variable(const std::string& name, std::size_t start) {
+  int slot = scope_.find_local(name);
+  if (slot >= 0) {
+    Expression::Node n{Op::kLocal};
+    n.a = slot;
+    return add(n);
+  }
+  slot = scope_.find_global(name);
+  if (slot >= 0) {
+    Expression::Node n{Op::kGlobal};
+    n.a = slot;
+    return add(n);
+  }
+  cur_.fail_at(start, "undefined parameter or variable '" + name + "'");
 }
 
 }  // namespace fspm::lsystem

@@ -98,6 +98,8 @@ class Expression {
     double value = 0.0;
   };
   double eval(std::int32_t n, EvalState& state) const;
+  double eval_nran(const Node& node, EvalState& state) const;
+  double eval_while(const Node& node, EvalState& state) const;
   [[noreturn]] void division_by_zero() const;
 
   std::vector<Node> nodes_;
@@ -133,6 +135,9 @@ class ExpressionCompiler {
   std::int32_t unary();
   std::int32_t power();
   std::int32_t primary();
+  std::int32_t number();
+  std::int32_t call(const std::string& name, std::size_t start);
+  std::int32_t variable(const std::string& name, std::size_t start);
 
   Cursor& cur_;
   NameScope& scope_;

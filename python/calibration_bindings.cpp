@@ -10,7 +10,9 @@ namespace fspm::python {
 
 namespace gl = fspm::greenlab;
 
-void bind_calibration(py::module_& m) {
+namespace {
+
+void bind_plant_params(py::module_& m) {
   py::class_<gl::PlantParams>(m, "PlantParams",
                               "A GreenLab plant description (TOML, docs/greenlab.md)")
       .def_readwrite("cycles", &gl::PlantParams::cycles,
@@ -66,7 +68,9 @@ void bind_calibration(py::module_& m) {
         return gl::parse_plant_params(text, source);
       },
       py::arg("text"), py::arg("source") = "", "A plant description from TOML text");
+}
 
+void bind_calibration_targets(py::module_& m) {
   py::class_<gl::Target>(m, "Target", "One observation for the calibration")
       .def(py::init([](std::string quantity, int age, int cycle, double value) {
              return gl::Target{std::move(quantity), age, cycle, value, 0};
@@ -100,7 +104,9 @@ void bind_calibration(py::module_& m) {
         return gl::parse_targets_csv(text, source);
       },
       py::arg("text"), py::arg("source") = "", "Targets from CSV text");
+}
 
+void bind_fit_result(py::module_& m) {
   using FR = gl::FitResult;
   py::class_<FR>(m, "FitResult", "A GL1 calibration: estimates, standard errors, residuals")
       .def_readonly("names", &FR::names, "Names of the fitted parameters, in order")
@@ -163,6 +169,14 @@ void bind_calibration(py::module_& m) {
       py::arg("params"), py::arg("targets"), "Model values of the targets");
   m.def("fitted_toml", &gl::fitted_toml, py::arg("original_text"), py::arg("fit"),
         py::arg("source") = "", "The original TOML with the fitted values written in");
+}
+
+}  // namespace
+
+void bind_calibration(py::module_& m) {
+  bind_plant_params(m);
+  bind_calibration_targets(m);
+  bind_fit_result(m);
 }
 
 }  // namespace fspm::python

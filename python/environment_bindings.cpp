@@ -115,45 +115,8 @@ py::array cluster_array(const std::vector<env::LeafCluster>& clusters) {
   return a;
 }
 
-void bind_scene(py::module_& m) {
-  py::class_<env::Scene>(m, "Scene",
-                         "The sky and the occluders (spheres, boxes, meshes, ground), z up")
-      .def(py::init<>(), "An open scene: no occluders, brightest sky point at the zenith")
-      .def_property(
-          "brightest", [](const env::Scene& s) { return s.sky.brightest; },
-          [](env::Scene& s, const Eigen::Vector3d& d) {
-            s.sky.brightest = unit_above_horizon(d, "brightest");
-          },
-          "Unit direction of the brightest sky point")
-      .def_property(
-          "directions", [](const env::Scene& s) { return s.sky.directions; },
-          [](env::Scene& s, int n) {
-            if (n < 1) throw ValueError("directions: expected a count >= 1");
-            s.sky.directions = n;
-          },
-          "Stratified sky directions of the light integral (integer >= 1)")
-      .def_property(
-          "significance", [](const env::Scene& s) { return s.sky.significance; },
-          [](env::Scene& s, double v) { s.sky.significance = v; },
-          "Shadow-volume cutoff: largest share of light an ignored occluder may remove")
-      .def_property(
-          "analytic", [](const env::Scene& s) { return s.sky.analytic; },
-          [](env::Scene& s, bool v) { s.sky.analytic = v; },
-          "Exact sphere-cap integrals where they apply")
-      .def_property_readonly(
-          "spheres", [](const env::Scene& s) { return sphere_array(s.spheres); },
-          "Spheres as rows x, y, z, radius (m), translucency in [0, 1] (a copy)")
-      .def_property_readonly(
-          "boxes", [](const env::Scene& s) { return s.boxes.size(); }, "Number of boxes and walls")
-      .def_property_readonly(
-          "meshes", [](const env::Scene& s) { return s.meshes.size(); }, "Number of meshes")
-      .def_property_readonly(
-          "ground",
-          [](const env::Scene& s) -> py::object {
-            if (!s.ground) return py::none();
-            return py::cast(s.ground->height_m);
-          },
-          "Height z of the ground plane (m), or None")
+void bind_scene_obstacles(py::class_<env::Scene>& scene) {
+  scene
       .def(
           "add_sphere",
           [](env::Scene& s, const Eigen::Vector3d& center, double radius, double translucency,
@@ -217,6 +180,48 @@ void bind_scene(py::module_& m) {
                std::to_string(s.boxes.size()) + " boxes, " + std::to_string(s.meshes.size()) +
                " meshes" + (s.ground ? ", ground" : "") + ">";
       });
+}
+
+void bind_scene(py::module_& m) {
+  py::class_<env::Scene> scene(m, "Scene",
+                               "The sky and the occluders (spheres, boxes, meshes, ground), z up");
+  scene.def(py::init<>(), "An open scene: no occluders, brightest sky point at the zenith")
+      .def_property(
+          "brightest", [](const env::Scene& s) { return s.sky.brightest; },
+          [](env::Scene& s, const Eigen::Vector3d& d) {
+            s.sky.brightest = unit_above_horizon(d, "brightest");
+          },
+          "Unit direction of the brightest sky point")
+      .def_property(
+          "directions", [](const env::Scene& s) { return s.sky.directions; },
+          [](env::Scene& s, int n) {
+            if (n < 1) throw ValueError("directions: expected a count >= 1");
+            s.sky.directions = n;
+          },
+          "Stratified sky directions of the light integral (integer >= 1)")
+      .def_property(
+          "significance", [](const env::Scene& s) { return s.sky.significance; },
+          [](env::Scene& s, double v) { s.sky.significance = v; },
+          "Shadow-volume cutoff: largest share of light an ignored occluder may remove")
+      .def_property(
+          "analytic", [](const env::Scene& s) { return s.sky.analytic; },
+          [](env::Scene& s, bool v) { s.sky.analytic = v; },
+          "Exact sphere-cap integrals where they apply")
+      .def_property_readonly(
+          "spheres", [](const env::Scene& s) { return sphere_array(s.spheres); },
+          "Spheres as rows x, y, z, radius (m), translucency in [0, 1] (a copy)")
+      .def_property_readonly(
+          "boxes", [](const env::Scene& s) { return s.boxes.size(); }, "Number of boxes and walls")
+      .def_property_readonly(
+          "meshes", [](const env::Scene& s) { return s.meshes.size(); }, "Number of meshes")
+      .def_property_readonly(
+          "ground",
+          [](const env::Scene& s) -> py::object {
+            if (!s.ground) return py::none();
+            return py::cast(s.ground->height_m);
+          },
+          "Height z of the ground plane (m), or None");
+  bind_scene_obstacles(scene);
 
   m.def(
       "read_scene_file",
@@ -329,7 +334,7 @@ void bind_growth_light(py::class_<env::GrowthParams>& gp) {
                "space_colonization: height of the marker cylinder on the tree's base (m, > 0; 14)");
 }
 
-void bind_growth(py::module_& m) {
+void bind_growth_params(py::module_& m) {
   py::class_<env::GrowthParams> gp(
       m, "GrowthParams",
       "Parameters of the self-organizing growth model (docs/environment.md). "
@@ -411,7 +416,9 @@ void bind_growth(py::module_& m) {
   gp.def(
       "validate", [](const env::GrowthParams& p) { env::validate(p); },
       "Raises ParameterError naming the first parameter out of range");
+}
 
+void bind_growth_functions(py::module_& m) {
   m.def(
       "growth_preset",
       [](const std::string& name, const std::string& light_model, const std::string& tropisms) {
@@ -471,6 +478,11 @@ void bind_growth(py::module_& m) {
       py::arg("base") = Eigen::Vector3d::Zero().eval(),
       "Grow a tree (GrowthParams, or a dict of them with an optional 'preset') in a scene from "
       "base (x, y, z in m)");
+}
+
+void bind_growth(py::module_& m) {
+  bind_growth_params(m);
+  bind_growth_functions(m);
 }
 
 void bind_analysis_params(py::module_& m) {

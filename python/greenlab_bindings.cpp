@@ -13,7 +13,9 @@
 
 namespace fspm::python {
 
-void bind_greenlab(py::module_& m) {
+namespace {
+
+void bind_compressed_plant(py::module_& m) {
   py::class_<fspm::CompressedTreeGraph>(
       m, "CompressedPlant",
       "A plant as a compressed tree graph: one record per substructure (GreenLab), or a drawn "
@@ -51,7 +53,9 @@ void bind_greenlab(py::module_& m) {
             fspm::write_ctree_file(g, path);
           },
           py::arg("path"), "Write a .ctree file (atomically)");
+}
 
+void bind_greenlab_simulation(py::module_& m) {
   m.def(
       "greenlab_simulate",
       [](const std::string& params_path, std::optional<int> cycles,
@@ -92,7 +96,9 @@ void bind_greenlab(py::module_& m) {
       py::arg("plant"), py::arg("age") = py::none(), py::arg("leaves") = true,
       "The explicit tree of a GreenLab plant at any age up to the simulated one, or of a drawn "
       "L-system (lsystem_plant) as its turtle drew it");
+}
 
+void bind_line_tree(py::module_& m) {
   py::class_<fspm::LineTree>(m, "LineTree",
                              "Explicit plant geometry in single precision, one record per "
                              "internode, leaf or flower (parents first)")
@@ -167,6 +173,14 @@ void bind_greenlab(py::module_& m) {
       py::arg("plant"), py::arg("age") = py::none(), py::arg("leaves") = true,
       "The explicit plant as a single-precision LineTree (the same records as "
       "greenlab_reconstruct, several times faster for big plants)");
+}
+
+}  // namespace
+
+void bind_greenlab(py::module_& m) {
+  bind_compressed_plant(m);
+  bind_greenlab_simulation(m);
+  bind_line_tree(m);
 }
 
 }  // namespace fspm::python

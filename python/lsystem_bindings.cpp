@@ -31,9 +31,7 @@ fspm::lsystem::DeriveOptions derive_options(std::optional<int> steps,
   return o;
 }
 
-}  // namespace
-
-void bind_lsystem(py::module_& m) {
+void bind_lsystem_derivation(py::module_& m) {
   m.def(
       "lsystem_derive",
       [](const std::string& path, std::optional<int> steps, std::optional<std::uint64_t> seed,
@@ -93,7 +91,9 @@ void bind_lsystem(py::module_& m) {
       "compressed=True derives into shared substructures (context-free L-systems only, "
       "docs/lsystem-language.md) and adds graph_nodes, graph_bytes, explicit_bytes and "
       "compression (explicit_bytes / graph_bytes); lsystem_plant gives the drawn plant");
+}
 
+void bind_lsystem_drawing(py::module_& m) {
   m.def(
       "lsystem_plant",
       [](const std::string& path, std::optional<int> steps, std::optional<std::uint64_t> seed,
@@ -141,6 +141,13 @@ void bind_lsystem(py::module_& m) {
       py::arg("path"), py::arg("steps") = py::none(), py::arg("seed") = py::none(),
       py::arg("defines") = std::map<std::string, std::string>{},
       "Derive an L-system file and draw it into a Tree");
+}
+
+}  // namespace
+
+void bind_lsystem(py::module_& m) {
+  bind_lsystem_derivation(m);
+  bind_lsystem_drawing(m);
 }
 
 }  // namespace fspm::python

@@ -79,10 +79,7 @@ void bind_cluster_model(py::module_& m) {
           "vertices (N, 3) in m and triangles (M, 3) of its alpha-shape hull");
 }
 
-}  // namespace
-
-void bind_scans(py::module_& m) {
-  bind_cluster_model(m);
+void bind_point_encoding(py::module_& m) {
   m.def(
       "read_points",
       [](const std::string& path) {
@@ -126,6 +123,9 @@ void bind_scans(py::module_& m) {
       "species names a preset of Table 3.1 ('default', 'pine', ...) whose beta, gamma, f_s any "
       "keyword overrides; root_diameter (m) is estimated from the trunk points when None; "
       "voxel: thinning size in m (0: 1/1000 of the extent, negative: none)");
+}
+
+void bind_cluster_files(py::module_& m) {
   m.def(
       "write_clusters",
       [](const scans::ClusterModel& model, const std::string& path) {
@@ -176,6 +176,14 @@ void bind_scans(py::module_& m) {
       "A simulated terrestrial laser scan of the tree's internodes (cylinders) from `scanners` "
       "positions around it: (N, 3) points in m; density per m^2 at normal incidence, Gaussian "
       "range noise in m; the same seed gives the same points");
+}
+
+}  // namespace
+
+void bind_scans(py::module_& m) {
+  bind_cluster_model(m);
+  bind_point_encoding(m);
+  bind_cluster_files(m);
 }
 
 }  // namespace fspm::python

@@ -28,9 +28,7 @@ void def_t_test(py::module_& m, const char* name, TTestFn fn, const char* doc) {
 
 py::tuple interval(const Interval& i) { return py::make_tuple(i.low, i.high); }
 
-}  // namespace
-
-void bind_statistics(py::module_& m) {
+void bind_test_results(py::module_& m) {
   py::class_<TTestResult>(m, "TTestResult", "A t-test: statistic, degrees of freedom, p-value")
       .def_readonly("t", &TTestResult::t, "t statistic")
       .def_readonly("df", &TTestResult::df, "Degrees of freedom")
@@ -89,7 +87,9 @@ void bind_statistics(py::module_& m) {
             .format(r.u, r.p, r.exact)
             .cast<std::string>();
       });
+}
 
+void bind_statistics_functions(py::module_& m) {
   m.def(
       "mean", [](const Sample& v) { return mean(as_sample(v, "values")); }, py::arg("values"),
       "Arithmetic mean");
@@ -130,6 +130,13 @@ void bind_statistics(py::module_& m) {
         return cohens_d(as_sample(a, "a"), as_sample(b, "b"));
       },
       py::arg("a"), py::arg("b"), "(mean_a - mean_b) / pooled standard deviation");
+}
+
+}  // namespace
+
+void bind_statistics(py::module_& m) {
+  bind_test_results(m);
+  bind_statistics_functions(m);
 }
 
 }  // namespace fspm::python

@@ -81,9 +81,7 @@ fspm::TreeGraph tree_from_arrays(
   return t;
 }
 
-}  // namespace
-
-void bind_tree(py::module_& m) {
+void bind_tree_class(py::module_& m) {
   py::class_<TreeGraph>(m, "Tree", "A plant's tree graph: one node per internode or organ")
       .def(py::init<>(), "An empty tree")
       .def("__len__", &TreeGraph::size)
@@ -161,7 +159,9 @@ void bind_tree(py::module_& m) {
                   "ends (N, 3), optional radii, birth times, orders, kinds and user attributes")
       .def(
           "copy", [](const TreeGraph& t) { return TreeGraph(t); }, "An independent copy");
+}
 
+void bind_tree_functions(py::module_& m) {
   m.def(
       "set_memory_limit",
       [](std::optional<std::variant<std::uint64_t, std::string>> limit) {
@@ -221,6 +221,13 @@ void bind_tree(py::module_& m) {
       "The tree as Newick text: topology, the attribute 'label' as node labels and "
       "'branch_length' when present; with names (one per node), a node's name, quoted where "
       "needed, in place of its label");
+}
+
+}  // namespace
+
+void bind_tree(py::module_& m) {
+  bind_tree_class(m);
+  bind_tree_functions(m);
 }
 
 }  // namespace fspm::python
