@@ -51,6 +51,7 @@
 #include "greenlab/reconstruction.hpp"
 #include "greenlab/simulation.hpp"
 #include "lsystem/parser.hpp"
+#include "stages/developmental_model.hpp"
 
 namespace fspm::cli {
 namespace {
@@ -122,6 +123,7 @@ struct ViewCommand {
   double pitch_deg = 20.0;
   bool lod = false;
   double lod_distance_m = 0.0;
+  int stages = 0;  // developmental stages per tree file (0: none)
   LsystemDrawArguments lsystem;
   GraphLodArguments graph_lod;
   bool json = false;
@@ -673,9 +675,11 @@ struct ViewSource {
   CompressedTreeGraph graph;
   LsystemDrawing drawing;  // an L-system, drawn once
   LevelOfDetail lod;
+  // With --stages: the tree's developmental model (Pirk 5), whose stage at time `age` is drawn.
+  std::shared_ptr<const stages::DevelopmentalModel> model;
 
-  // `age`: plant age for compressed graphs, latest birth time for trees, ignored for scenes;
-  // infinity = everything.
+  // `age`: plant age for compressed graphs, latest birth time for trees, the stage's time in
+  // (0, 1] with --stages, ignored for scenes; infinity = everything.
   graphics::InstancedMesh at(double age, const graphics::MeshOptions& options,
                              const std::string& format) const {
     if (kind == InputKind::kScene) return load_scene(path, options, true, lod);
@@ -683,6 +687,10 @@ struct ViewSource {
       return mesh_compressed(graph, std::isinf(age) ? -1.0 : age, options, lod);
     }
     if (kind == InputKind::kLsystem) return mesh_lsystem(drawing, options);
+    if (model) {
+      return graphics::InstancedMesh::single(
+          graphics::mesh_tree(model->stage(std::isinf(age) ? 1.0 : age), options));
+    }
     graphics::MeshOptions o = options;
     o.max_birth_time = age;
     (void)format;
@@ -783,6 +791,19 @@ void load_pvd_steps(const ViewCommand& c, std::vector<graphics::InstancedMesh>& 
 
 // Trees, plants, scenes and L-systems read (and checked) before any window opens; the ages of
 // the compressed plants when --ages gives none.
+// --stages N: the times 1/N, 2/N, ..., 1 of the stages, each tree file as its own model.
+void check_stages_view(const ViewCommand& c, std::vector<double>& ages) {
+  if (c.stages <= 0) return;
+  if (!c.ages.empty()) throw ValueError("--stages and --ages exclude each other");
+  for (const auto& path : c.trees) {
+    if (input_kind(path) != InputKind::kTree) {
+      throw ValueError("--stages takes tree files (.tree, .treeb, .nwk, .mtg), not '" + path + "'");
+    }
+  }
+  ages.clear();
+  for (int k = 1; k <= c.stages; ++k) ages.push_back(static_cast<double>(k) / c.stages);
+}
+
 std::vector<ViewSource> read_view_sources(const ViewCommand& c, int size_px,
                                           std::vector<double>& ages) {
   std::vector<ViewSource> sources;
@@ -797,6 +818,7 @@ std::vector<ViewSource> read_view_sources(const ViewCommand& c, int size_px,
     } else if (s.kind == InputKind::kTree) {
       s.tree = read_tree_file(path, c.format);
       if (s.lod.active()) s.tree = reduce_tree(s.tree, s.lod);
+      if (c.stages > 0) s.model = std::make_shared<const stages::DevelopmentalModel>(s.tree);
     } else if (s.kind == InputKind::kLsystem) {
       s.drawing = draw_lsystem_file(path, c.lsystem, size_px);
     } else {
@@ -846,15 +868,18 @@ void run_view(const ViewCommand& c) {
   if (!graphics::viewer_available()) {
     throw ValueError("fspm was built without the viewer (FSPM_WITH_VIEWER=OFF)");
   }
-  const graphics::ViewerOptions options = viewer_options(c);
+  graphics::ViewerOptions options = viewer_options(c);
+  if (c.stages > 0) options.step_label = "time";
   if (!c.screenshot.empty()) graphics::check_image_path(c.screenshot);
   check_lsystem_draw_arguments(c.lsystem, c.trees);
   check_graph_lod(c.graph_lod, c.trees, c.lod);
+  if (c.stages > 0 && c.lod) throw ValueError("--stages and --lod exclude each other");
   if (c.lod) {
     run_lod_view(c, options, t0);
     return;
   }
   std::vector<double> ages = c.ages;
+  check_stages_view(c, ages);
   std::vector<graphics::InstancedMesh> steps, far;
   const bool pvd = std::any_of(c.trees.begin(), c.trees.end(), [](const std::string& p) {
     return input_kind(p) == InputKind::kPvd;
@@ -1022,6 +1047,10 @@ void add_view_command(CLI::App& app) {
   v->add_option("--frames", view->frames, "Frames before the screenshot")
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
+  v->add_option("--stages", view->stages,
+                "Developmental stages of each tree file (Pirk 5, as fspm stages): N stages from "
+                "t = 1/N to the given tree at t = 1, stepped with [ and ] and the panel's slider")
+      ->check(CLI::Range(1, 200));
   add_lod_options(v, view->lod, view->lod_distance_m);
   add_lsystem_draw_options(v, view->lsystem);
   add_graph_lod_options(v, view->graph_lod);

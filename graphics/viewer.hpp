@@ -48,6 +48,9 @@ struct ViewerOptions {
   // The controls panel in the window's top-left corner (drawn into screenshots too); fspm view
   // shows it unless --no-panel. Ignored when fspm was built without Dear ImGui.
   bool panel = false;
+  // What the steps' labels count, shown on the panel's step slider: "age" (plant ages, birth
+  // times) or "time" (the times of developmental stages, in (0, 1]).
+  std::string step_label = "age";
   // Test hook: called before every frame with the frame's number (from 0) and the controls,
   // which it may change as the panel would.
   std::function<void(int frame, ViewerControls& controls)> before_frame;

@@ -1093,6 +1093,7 @@ ViewerStats view(const StepMaker& make, const std::vector<double>& labels, const
   state.panel = &panel;
   x.panel = &panel;
   x.info.labels = &labels;
+  x.info.label_name = o.step_label;
   x.info.steps = state.steps;
   x.info.attributes = common_attributes(steps);
   if (lod.scene != nullptr) {

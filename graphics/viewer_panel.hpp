@@ -15,6 +15,7 @@ namespace fspm::graphics {
 // What the panel shows but does not change.
 struct PanelInfo {
   const std::vector<double>* labels = nullptr;  // the age of each step (may be shorter)
+  std::string label_name = "age";               // what the labels count (ViewerOptions)
   int steps = 1;
   std::vector<std::string> attributes;      // colour choices besides the materials' colours
   double lod_min_m = 0.0, lod_max_m = 0.0;  // the distance slider's range; max 0: no LOD

@@ -25,7 +25,8 @@ void step_slider(const PanelInfo& info, ViewerControls& c) {
                     std::isfinite((*info.labels)[c.step]);
   char format[64];
   if (aged) {
-    std::snprintf(format, sizeof(format), "%%d of %d: age %g", n, (*info.labels)[c.step]);
+    std::snprintf(format, sizeof(format), "%%d of %d: %s %g", n, info.label_name.c_str(),
+                  (*info.labels)[c.step]);
   } else {
     std::snprintf(format, sizeof(format), "%%d of %d", n);
   }

@@ -174,5 +174,33 @@ TEST(GraphicsCli, ViewerScreenshot) {
   EXPECT_FALSE(std::filesystem::exists(dir / "w.png"));
 }
 
+// fspm view --stages N: N developmental stages (Pirk 5), the last one the given tree itself
+// (Pirk: t = 1 gives back the input), so its triangles are those fspm mesh makes of the file.
+TEST(GraphicsCli, ViewerStepsThroughDevelopmentalStages) {
+  const auto dir = scratch_dir("view_stages");
+  const std::string tree = std::string(FSPM_SOURCE_DIR) + "/examples/trees/open_a12.treeb";
+  auto r = run_fspm("mesh " + tree + " -o " + (dir / "whole.ply").string() + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto whole = nlohmann::json::parse(r.out)["triangles"].get<std::size_t>();
+  r = run_fspm("view " + tree + " --stages 5 --screenshot " + (dir / "s.png").string() +
+               " --size 160x120 --json");
+  if (r.err.find("without the viewer") != std::string::npos ||
+      r.err.find("without OpenImageIO") != std::string::npos) {
+    GTEST_SKIP() << r.err;
+  }
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["steps"], 5);
+  EXPECT_EQ(j["triangles"].get<std::size_t>(), whole);  // the last stage, shown last
+  // Stages of what is not a tree file, or with ages, are refused before any window.
+  r = run_fspm("view " + std::string(FSPM_SOURCE_DIR) +
+               "/examples/greenlab/rauh.toml --stages 3 --screenshot " + (dir / "x.png").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("--stages takes tree files"), std::string::npos) << r.err;
+  r = run_fspm("view " + tree + " --stages 3 --ages 1 --screenshot " + (dir / "y.png").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.png") || std::filesystem::exists(dir / "y.png"));
+}
+
 }  // namespace
 }  // namespace fspm
