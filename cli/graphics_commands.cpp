@@ -46,6 +46,7 @@
 #include "graphics/scene_file.hpp"
 #include "graphics/tree_mesher.hpp"
 #include "graphics/viewer.hpp"
+#include "graphics/viewer_wind.hpp"
 #include "graphics/vtk_readback.hpp"
 #include "greenlab/plant_params.hpp"
 #include "greenlab/reconstruction.hpp"
@@ -124,6 +125,8 @@ struct ViewCommand {
   bool lod = false;
   double lod_distance_m = 0.0;
   int stages = 0;  // developmental stages per tree file (0: none)
+  bool wind = false;
+  WindArguments wind_args;
   LsystemDrawArguments lsystem;
   GraphLodArguments graph_lod;
   bool json = false;
@@ -863,6 +866,33 @@ void print_view_json(const ViewCommand& c, const std::vector<graphics::Instanced
               {"seconds", seconds_since(t0)}});
 }
 
+// fspm view TREE --wind: the tree swaying as fspm mesh --skin --animate and fspm render
+// --wind-time pose it (the same bones, weights, wind model and phases from --seed), posed every
+// frame, its strength on the panel.
+void run_wind_view(const ViewCommand& c, graphics::ViewerOptions options,
+                   std::chrono::steady_clock::time_point t0) {
+  if (c.trees.size() != 1 || input_kind(c.trees[0]) != InputKind::kTree) {
+    throw ValueError("--wind sways one tree file (.tree, .treeb, .nwk, .mtg)");
+  }
+  if (!c.ages.empty() || c.stages > 0 || c.lod) {
+    throw ValueError("--wind takes no --ages, --stages or --lod");
+  }
+  const TreeGraph tree = read_tree_file(c.trees[0], c.format);
+  graphics::MeshOptions mesh_options;
+  set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
+  auto wind = std::make_shared<graphics::ViewerWind>();
+  wind->mesh = skinnable_mesh(tree, mesh_options);
+  wind->skin = graphics::skin_mesh(tree, wind->mesh);
+  wind->wind = wind_options(c.wind_args, c.wind_args.duration_s, c.seed);
+  if (!c.color_by.empty()) (void)wind->mesh.attribute(c.color_by);
+  const std::vector<graphics::InstancedMesh> steps{graphics::InstancedMesh::single(wind->mesh)};
+  options.wind = std::move(wind);
+  if (!c.screenshot.empty()) rerun_under_xvfb_if_needed();
+  const std::vector<double> ages{std::numeric_limits<double>::infinity()};
+  const graphics::ViewerStats stats = graphics::run_instanced_viewer(steps, ages, options);
+  if (c.json) print_view_json(c, steps, stats, t0);
+}
+
 void run_view(const ViewCommand& c) {
   const auto t0 = std::chrono::steady_clock::now();
   if (!graphics::viewer_available()) {
@@ -873,6 +903,10 @@ void run_view(const ViewCommand& c) {
   if (!c.screenshot.empty()) graphics::check_image_path(c.screenshot);
   check_lsystem_draw_arguments(c.lsystem, c.trees);
   check_graph_lod(c.graph_lod, c.trees, c.lod);
+  if (c.wind) {
+    run_wind_view(c, options, t0);
+    return;
+  }
   if (c.stages > 0 && c.lod) throw ValueError("--stages and --lod exclude each other");
   if (c.lod) {
     run_lod_view(c, options, t0);
@@ -1051,6 +1085,15 @@ void add_view_command(CLI::App& app) {
                 "Developmental stages of each tree file (Pirk 5, as fspm stages): N stages from "
                 "t = 1/N to the given tree at t = 1, stepped with [ and ] and the panel's slider")
       ->check(CLI::Range(1, 200));
+  CLI::Option* wind = v->add_flag(
+      "--wind", view->wind,
+      "Sway the tree in the wind (one tree file; Reynolds' bones and weights, the wind of fspm "
+      "mesh --skin --animate; its strength on the panel)");
+  add_wind_options(v, view->wind_args, false);
+  for (const char* name :
+       {"--wind-amplitude", "--wind-frequency", "--wind-direction", "--wind-period"}) {
+    v->get_option(name)->needs(wind);
+  }
   add_lod_options(v, view->lod, view->lod_distance_m);
   add_lsystem_draw_options(v, view->lsystem);
   add_graph_lod_options(v, view->graph_lod);

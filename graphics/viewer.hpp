@@ -4,8 +4,9 @@
 // (or left/right arrows), shadows from a sun with a variance shadow map (Pirk 6.2.3, eq.
 // 6.10-6.12; variance_shadow.hpp) toggled with S, R resets the view, Esc or Q quits; the frame
 // time is shown in the title. A controls panel (Dear ImGui, when fspm was built with it) shows and
-// changes the growth step, shadows, the level-of-detail distance and the colour attribute, with
-// the frame time and the triangles drawn. The ground is the plane under the scene drawn to the
+// changes the growth step, shadows, the level-of-detail distance, the wind's strength (for a tree
+// in the wind, viewer_wind.hpp) and the colour attribute, with the frame time and the triangles
+// drawn. The ground is the plane under the scene drawn to the
 // horizon, hazing towards the sky's colour with distance (aerial perspective). Crown volumes (at
 // kCrownOpacity, as in renders) and translucent obstacles (at the opacity of their translucency)
 // are blended after the opaque geometry without writing depth, their triangles placed in the world
@@ -13,6 +14,7 @@
 // screenshot path it renders `frames` frames into an offscreen framebuffer, writes the image and
 // returns (tests run it under Xvfb with Mesa's software OpenGL).
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,6 +24,8 @@
 
 namespace fspm::graphics {
 
+struct ViewerWind;  // graphics/viewer_wind.hpp
+
 // What the controls panel shows and changes; a test hook (ViewerOptions::before_frame) may set
 // it as the panel's widgets do.
 struct ViewerControls {
@@ -29,7 +33,8 @@ struct ViewerControls {
   bool shadows = true;
   // Coarse meshes (or, per plant, the coarsest resolution) from this camera distance on.
   double lod_distance_m = 0.0;
-  std::string color_by;  // empty = bark and leaf colours
+  std::string color_by;        // empty = bark and leaf colours
+  double wind_strength = 1.0;  // with ViewerOptions::wind: the swing's scale (0: at rest)
 };
 
 struct ViewerOptions {
@@ -51,6 +56,9 @@ struct ViewerOptions {
   // What the steps' labels count, shown on the panel's step slider: "age" (plant ages, birth
   // times) or "time" (the times of developmental stages, in (0, 1]).
   std::string step_label = "age";
+  // A tree in the wind (viewer_wind.hpp): the one step, posed every frame; the time is the
+  // wall clock's, or frame / 24 s for a screenshot (so that it is reproducible).
+  std::shared_ptr<const ViewerWind> wind;
   // Test hook: called before every frame with the frame's number (from 0) and the controls,
   // which it may change as the panel would.
   std::function<void(int frame, ViewerControls& controls)> before_frame;

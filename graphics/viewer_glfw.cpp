@@ -26,6 +26,7 @@
 #include "graphics/variance_shadow.hpp"
 #include "graphics/viewer.hpp"
 #include "graphics/viewer_panel.hpp"
+#include "graphics/viewer_wind.hpp"
 
 namespace fspm::graphics {
 namespace {
@@ -962,8 +963,38 @@ void recolor(GpuScene& gpu, Scene& scene, const StepMaker& make, ViewerOptions o
   for (const auto& step : coarse) gpu.coarse.push_back(upload(step, o, scene));
 }
 
+// A tree in the wind: its vertex buffer as uploaded (colours included), read back once per
+// upload, and the posed positions and normals of the frame.
+struct WindBuffer {
+  GLuint vbo = 0;  // the buffer `interleaved` was read from; 0: read it again
+  std::vector<float> interleaved;
+  std::vector<Eigen::Vector3f> positions, normals;
+};
+
+// The step's one mesh posed at t_s, its positions and normals written over the uploaded ones
+// (the shadow pass draws the same buffer, so the shadows sway too).
+void sway(GpuStep& g, WindBuffer& w, const ViewerWind& wind, double t_s, double strength) {
+  const GpuMesh& m = g.meshes.front();
+  const std::size_t n = wind.mesh.vertex_count();
+  const auto bytes = static_cast<GLsizeiptr>(n * 10 * sizeof(float));
+  glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
+  if (w.vbo != m.vbo) {
+    w.interleaved.resize(n * 10);
+    glGetBufferSubData(GL_ARRAY_BUFFER, 0, bytes, w.interleaved.data());
+    w.vbo = m.vbo;
+  }
+  wind.pose(t_s, strength, w.positions, w.normals);
+  for (std::size_t i = 0; i < n; ++i) {
+    float* v = w.interleaved.data() + 10 * i;  // position, normal, colour (upload_raw)
+    std::copy_n(w.positions[i].data(), 3, v);
+    std::copy_n(w.normals[i].data(), 3, v + 3);
+  }
+  glBufferSubData(GL_ARRAY_BUFFER, 0, bytes, w.interleaved.data());
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
 // What a frame needs besides the GPU: the scene, the step references for recolouring, the ages,
-// the per-plant level of detail and the panel with what it shows.
+// the per-plant level of detail, the panel with what it shows, and the wind's time and buffer.
 struct FrameContext {
   Scene scene;
   StepMaker make;
@@ -971,6 +1002,8 @@ struct FrameContext {
   LodView lod;
   ViewerPanel* panel = nullptr;
   PanelInfo info;
+  double time_s = 0.0;
+  WindBuffer wind;
 };
 
 // One frame: the controls applied (colour, level of detail), the scene and the panel drawn.
@@ -979,7 +1012,10 @@ const GpuStep& draw_controlled_frame(GLFWwindow* window, State& state, GpuScene&
                                      const Targets& t, FrameContext& x, const ViewerOptions& o) {
   ViewerControls& c = state.controls;
   c.step = std::clamp(c.step, 0, state.steps - 1);
-  if (c.color_by != x.scene.color_by) recolor(gpu, x.scene, x.make, o, c.color_by);
+  if (c.color_by != x.scene.color_by) {
+    recolor(gpu, x.scene, x.make, o, c.color_by);
+    x.wind.vbo = 0;  // new buffers, new colours to keep
+  }
   x.info.far = !gpu.coarse.empty() && state.camera.distance > c.lod_distance_m;
   GpuStep& g = x.info.far ? gpu.coarse[c.step] : gpu.steps[c.step];
   int fw = o.width, fh = o.height;
@@ -989,6 +1025,7 @@ const GpuStep& draw_controlled_frame(GLFWwindow* window, State& state, GpuScene&
     x.lod.options.max_distance_m = c.lod_distance_m;
     choose_instances(g, x.lod, f);
   }
+  if (o.wind && !x.info.far) sway(g, x.wind, *o.wind, x.time_s, c.wind_strength);
   sort_blended(g.soup, f.eye);
   draw_frame(gpu, g, t, f, c.shadows);
   x.info.triangles = g.triangles;
@@ -1003,9 +1040,13 @@ ViewerStats run_frames(GLFWwindow* window, State& state, GpuScene& gpu, const Ta
   const std::vector<double>& labels = *x.labels;
   ViewerStats stats;
   double total_ms = 0.0, smooth_ms = 0.0;
+  const auto start = std::chrono::steady_clock::now();
+  constexpr double kScreenshotFps = 24.0;  // the wind's clock for screenshots
   while (!glfwWindowShouldClose(window)) {
     if (o.before_frame) o.before_frame(stats.frames, state.controls);
     const auto t0 = std::chrono::steady_clock::now();
+    x.time_s = offscreen ? stats.frames / kScreenshotFps
+                         : std::chrono::duration<double>(t0 - start).count();
     const GpuStep& g = draw_controlled_frame(window, state, gpu, t, x, o);
     glFinish();
     const double ms =
@@ -1079,6 +1120,11 @@ ViewerStats view(const StepMaker& make, const std::vector<double>& labels, const
                  const LodView& lod = {}) {
   std::vector<StepRef> steps, coarse_steps;
   make(o.color_by, steps, coarse_steps);
+  if (o.wind &&
+      (steps.size() != 1 || steps[0].meshes.size() != 1 || steps[0].models[0].size() != 1 ||
+       steps[0].meshes[0]->vertex_count() != o.wind->mesh.vertex_count())) {
+    throw ValueError("the viewer's wind sways one tree, the only mesh of the only step");
+  }
   FrameContext x;
   x.scene = check_and_measure(steps, o, coarse_steps);
   x.make = make;
@@ -1094,6 +1140,7 @@ ViewerStats view(const StepMaker& make, const std::vector<double>& labels, const
   x.panel = &panel;
   x.info.labels = &labels;
   x.info.label_name = o.step_label;
+  x.info.wind = o.wind != nullptr;
   x.info.steps = state.steps;
   x.info.attributes = common_attributes(steps);
   if (lod.scene != nullptr) {

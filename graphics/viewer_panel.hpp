@@ -21,7 +21,8 @@ struct PanelInfo {
   double lod_min_m = 0.0, lod_max_m = 0.0;  // the distance slider's range; max 0: no LOD
   double frame_ms = 0.0;
   std::size_t triangles = 0;
-  bool far = false;  // the coarse meshes are drawn
+  bool far = false;   // the coarse meshes are drawn
+  bool wind = false;  // a tree in the wind: the wind strength slider
 };
 
 class ViewerPanel {

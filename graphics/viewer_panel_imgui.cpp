@@ -95,6 +95,11 @@ void ViewerPanel::build(const PanelInfo& info, ViewerControls& c, int width, int
                        ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
     c.lod_distance_m = d;
   }
+  if (info.wind) {
+    float strength = static_cast<float>(c.wind_strength);
+    ImGui::SliderFloat("wind", &strength, 0.0f, 3.0f, "%.2f x", ImGuiSliderFlags_AlwaysClamp);
+    c.wind_strength = strength;
+  }
   colour_combo(info, c);
   ImGui::Separator();
   ImGui::Text("%.1f ms/frame", info.frame_ms);

@@ -202,5 +202,33 @@ TEST(GraphicsCli, ViewerStepsThroughDevelopmentalStages) {
   EXPECT_FALSE(std::filesystem::exists(dir / "x.png") || std::filesystem::exists(dir / "y.png"));
 }
 
+// fspm view --wind plays the sway: two screenshots half a second apart differ, where the same
+// two of the tree standing still are identical (the control: nothing else changes between frames).
+TEST(GraphicsCli, ViewerPlaysTheWind) {
+  const auto dir = scratch_dir("view_wind");
+  const std::string tree = std::string(FSPM_SOURCE_DIR) + "/examples/trees/open_a12.treeb";
+  const auto shot = [&](const std::string& extra, int frames, const std::string& name) {
+    return run_fspm("view " + tree + extra + " --no-panel --size 160x120 --frames " +
+                    std::to_string(frames) + " --screenshot " + (dir / name).string());
+  };
+  auto r = shot(" --wind", 1, "w1.png");
+  if (r.err.find("without the viewer") != std::string::npos ||
+      r.err.find("without OpenImageIO") != std::string::npos) {
+    GTEST_SKIP() << r.err;
+  }
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_EQ(shot(" --wind", 12, "w12.png").exit_code, 0);
+  ASSERT_EQ(shot("", 1, "s1.png").exit_code, 0);
+  ASSERT_EQ(shot("", 12, "s12.png").exit_code, 0);
+  EXPECT_EQ(testing::read_text(dir / "s1.png"), testing::read_text(dir / "s12.png"));
+  EXPECT_NE(testing::read_text(dir / "w1.png"), testing::read_text(dir / "w12.png"));
+  // Wind options without --wind, or wind on more than one tree, are refused.
+  r = run_fspm("view " + tree + " --wind-amplitude 20 --screenshot " + (dir / "x.png").string());
+  EXPECT_EQ(r.exit_code, 1);
+  r = run_fspm("view " + tree + " " + tree + " --wind --screenshot " + (dir / "y.png").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("--wind sways one tree file"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace fspm
