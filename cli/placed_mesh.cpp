@@ -9,6 +9,7 @@
 #include <assimp/Importer.hpp>
 #include <cctype>
 #include <filesystem>
+#include <limits>
 
 #include "fspm/error.hpp"
 #include "fspm/input_file.hpp"
@@ -61,13 +62,15 @@ graphics::Material material_named(const std::string& name) {
   return graphics::Material::kLeaf;
 }
 
-// The vertex colours (red, green, blue attributes in [0, 1]) of a mesh appended at `base`; the
-// vertices before it without colours are black until another mesh gives theirs.
+// The vertex colours (graphics::kVertexColorAttributes) of a mesh appended at `base`; vertices
+// of meshes without colours keep NaN: their material's colour.
 void append_colours(const aiMesh& in, std::size_t base, graphics::TriangleMesh& out) {
-  static constexpr std::array<const char*, 3> kChannels = {"red", "green", "blue"};
+  constexpr float kNone = std::numeric_limits<float>::quiet_NaN();
   for (std::size_t c = 0; c < 3; ++c) {
-    std::vector<float>& values = out.add_attribute(kChannels[c]);
-    values.resize(out.positions.size(), 0.0f);
+    const std::string name(graphics::kVertexColorAttributes[c]);
+    if (!out.has_attribute(name)) out.attributes.push_back({name, {}});
+    std::vector<float>& values = out.add_attribute(name);
+    values.resize(out.positions.size(), kNone);
     for (unsigned v = 0; v < in.mNumVertices; ++v) {
       const aiColor4D& colour = in.mColors[0][v];
       values[base + v] = c == 0 ? colour.r : c == 1 ? colour.g : colour.b;
@@ -122,7 +125,10 @@ graphics::TriangleMesh read_gltf_triangles(const std::string& path) {
   }
   graphics::TriangleMesh mesh;
   append_subtree(*scene, *scene->mRootNode, aiMatrix4x4(), mesh);
-  for (auto& a : mesh.attributes) a.values.resize(mesh.positions.size(), 0.0f);
+  for (auto& a : mesh.attributes) {
+    const bool colour = graphics::is_vertex_color_attribute(a.name);
+    a.values.resize(mesh.positions.size(), colour ? std::numeric_limits<float>::quiet_NaN() : 0.0f);
+  }
   if (mesh.triangles.empty()) throw ParseError("no triangle in the glTF meshes", path);
   // A vertex without a normal in the file gets the normal of its triangles.
   const auto normals = vertex_normals(mesh);

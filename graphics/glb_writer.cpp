@@ -82,13 +82,12 @@ class GlbBuilder {
       attributes["TEXCOORD_0"] =
           add_accessor(add_view(mesh.uvs.data(), nv * 8, kArrayBuffer), kFloat, nv, "VEC2");
     }
-    // Per-vertex colours (a crown reconstructed from a photograph) as glTF's COLOR_0.
-    if (mesh.has_attribute("red") && mesh.has_attribute("green") && mesh.has_attribute("blue")) {
+    // Per-vertex colours (a crown reconstructed from a photograph) as glTF's COLOR_0; vertices
+    // without one (a tree placed beside the crown) take their material's.
+    if (mesh.has_vertex_colors()) {
       auto& rgb = color_store_.emplace_back(3 * nv);
-      const auto r = mesh.attribute("red"), g = mesh.attribute("green"), b = mesh.attribute("blue");
-      for (std::size_t i = 0; i < nv; ++i) {
-        rgb[3 * i] = r[i], rgb[3 * i + 1] = g[i], rgb[3 * i + 2] = b[i];
-      }
+      const std::vector<std::array<float, 3>> colors = resolved_vertex_colors(mesh);
+      for (std::size_t i = 0; i < nv; ++i) std::copy_n(colors[i].data(), 3, rgb.data() + 3 * i);
       attributes["COLOR_0"] =
           add_accessor(add_view(rgb.data(), nv * 12, kArrayBuffer), kFloat, nv, "VEC3");
     }

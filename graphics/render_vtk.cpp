@@ -57,6 +57,21 @@ std::array<unsigned char, 3> material_rgb(Material material) {
   return rgb;
 }
 
+// A mesh with vertex colours (a crown from a photograph): each triangle the mean of its corners'
+// colours, corners without one taking their material's.
+void set_vertex_colored_cells(const TriangleMesh& mesh, vtkUnsignedCharArray* colors) {
+  const std::vector<std::array<float, 3>> vertex = resolved_vertex_colors(mesh);
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    std::array<unsigned char, 3> rgb;
+    for (int k = 0; k < 3; ++k) {
+      float sum = 0.0f;
+      for (const std::uint32_t v : mesh.triangles[t]) sum += vertex[v][k];
+      rgb[k] = static_cast<unsigned char>(std::lround(255.0f * std::clamp(sum / 3.0f, 0.0f, 1.0f)));
+    }
+    colors->SetTypedTuple(static_cast<vtkIdType>(t), rgb.data());
+  }
+}
+
 vtkNew<vtkPolyData> to_polydata(const TriangleMesh& mesh, const std::string& color_by) {
   vtkNew<vtkPolyData> poly;
   const auto nv = static_cast<vtkIdType>(mesh.vertex_count());
@@ -99,10 +114,14 @@ vtkNew<vtkPolyData> to_polydata(const TriangleMesh& mesh, const std::string& col
     colors->SetName("material_rgb");
     colors->SetNumberOfComponents(3);
     colors->SetNumberOfTuples(nt);
-    std::array<std::array<unsigned char, 3>, kMaterials.size()> rgb;
-    for (Material m : kMaterials) rgb[static_cast<std::size_t>(m)] = material_rgb(m);
-    for (vtkIdType t = 0; t < nt; ++t) {
-      colors->SetTypedTuple(t, rgb[static_cast<std::size_t>(mesh.materials[t])].data());
+    if (mesh.has_vertex_colors()) {
+      set_vertex_colored_cells(mesh, colors);
+    } else {
+      std::array<std::array<unsigned char, 3>, kMaterials.size()> rgb;
+      for (Material m : kMaterials) rgb[static_cast<std::size_t>(m)] = material_rgb(m);
+      for (vtkIdType t = 0; t < nt; ++t) {
+        colors->SetTypedTuple(t, rgb[static_cast<std::size_t>(mesh.materials[t])].data());
+      }
     }
     poly->GetCellData()->SetScalars(colors);
   }
@@ -609,6 +628,30 @@ void add_material_glyphs(vtkRenderer* renderer, vtkPolyData* placed, const Trian
   }
 }
 
+// A mesh with vertex colours (a crown from a photograph, placed a few times in a scene) drawn
+// explicitly, each instance a placed copy, with the colours as cell scalars: the glyph mapper
+// colours a glyph as a whole.
+void add_vertex_colored_instances(vtkRenderer* renderer, const TriangleMesh& mesh, std::uint32_t m,
+                                  const std::vector<MeshInstance>& instances) {
+  TriangleMesh placed;
+  for (const MeshInstance& inst : instances) {
+    if (inst.mesh != m) continue;
+    TriangleMesh copy = mesh;
+    const Eigen::Matrix3f turn = inst.linear.inverse().transpose();  // for the normals
+    for (auto& p : copy.positions) p = inst.linear * p + inst.translation;
+    for (auto& n : copy.normals) n = (turn * n).normalized();
+    placed.append(copy);
+  }
+  if (placed.empty()) return;
+  vtkNew<vtkPolyData> poly = to_polydata(placed, "");
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(poly);
+  mapper->SetScalarModeToUseCellData();
+  mapper->SetColorModeToDirectScalars();
+  mapper->ScalarVisibilityOn();
+  add_surface_actor(renderer, mapper);
+}
+
 // GPU instancing through VTK's glyph mapper: one source per shared mesh and material, one glyph
 // (position, quaternion, scale) per instance.
 void add_instanced_actors(vtkRenderer* renderer, const std::vector<const TriangleMesh*>& meshes,
@@ -616,6 +659,10 @@ void add_instanced_actors(vtkRenderer* renderer, const std::vector<const Triangl
   for (std::uint32_t m = 0; m < meshes.size(); ++m) {
     const TriangleMesh& mesh = *meshes[m];
     if (mesh.empty()) continue;
+    if (mesh.has_vertex_colors()) {
+      add_vertex_colored_instances(renderer, mesh, m, instances);
+      continue;
+    }
     vtkNew<vtkPoints> points;
     vtkNew<vtkFloatArray> orientation, scale;
     orientation->SetName("orientation");

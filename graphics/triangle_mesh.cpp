@@ -1,6 +1,8 @@
 #include "graphics/triangle_mesh.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "fspm/error.hpp"
 
@@ -95,6 +97,35 @@ std::size_t TriangleMesh::triangle_count(Material material) const {
   return static_cast<std::size_t>(std::count(materials.begin(), materials.end(), material));
 }
 
+bool is_vertex_color_attribute(std::string_view name) {
+  return std::find(kVertexColorAttributes.begin(), kVertexColorAttributes.end(), name) !=
+         kVertexColorAttributes.end();
+}
+
+bool TriangleMesh::has_vertex_colors() const {
+  return std::all_of(kVertexColorAttributes.begin(), kVertexColorAttributes.end(),
+                     [this](std::string_view name) { return has_attribute(name); });
+}
+
+std::vector<std::array<float, 3>> resolved_vertex_colors(const TriangleMesh& mesh) {
+  std::vector<std::array<float, 3>> out(mesh.vertex_count(), material_color(Material::kBark));
+  std::vector<std::uint8_t> own(mesh.vertex_count(), 0);
+  if (mesh.has_vertex_colors()) {
+    const auto r = mesh.attribute("red"), g = mesh.attribute("green"), b = mesh.attribute("blue");
+    for (std::size_t v = 0; v < out.size(); ++v) {
+      if (std::isnan(r[v]) || std::isnan(g[v]) || std::isnan(b[v])) continue;
+      out[v] = {r[v], g[v], b[v]};
+      own[v] = 1;
+    }
+  }
+  for (std::size_t t = mesh.triangle_count(); t-- > 0;) {  // the first triangle writes last
+    for (const std::uint32_t v : mesh.triangles[t]) {
+      if (!own[v]) out[v] = material_color(mesh.materials[t]);
+    }
+  }
+  return out;
+}
+
 void TriangleMesh::append(const TriangleMesh& other) {
   const auto offset = static_cast<std::uint32_t>(positions.size());
   const std::size_t old_vertices = positions.size();
@@ -106,13 +137,16 @@ void TriangleMesh::append(const TriangleMesh& other) {
     triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
   }
   materials.insert(materials.end(), other.materials.begin(), other.materials.end());
+  const auto missing = [](const std::string& name) {
+    return is_vertex_color_attribute(name) ? std::numeric_limits<float>::quiet_NaN() : 0.0f;
+  };
   for (const auto& a : other.attributes) {
     if (!has_attribute(a.name)) {
-      attributes.push_back({a.name, std::vector<float>(old_vertices, 0.0f)});
+      attributes.push_back({a.name, std::vector<float>(old_vertices, missing(a.name))});
     }
   }
   for (auto& a : attributes) {
-    a.values.resize(old_vertices, 0.0f);
+    a.values.resize(old_vertices, missing(a.name));
     bool found = false;
     for (const auto& b : other.attributes) {
       if (b.name == a.name) {
@@ -121,7 +155,7 @@ void TriangleMesh::append(const TriangleMesh& other) {
         break;
       }
     }
-    if (!found) a.values.resize(positions.size(), 0.0f);
+    if (!found) a.values.resize(positions.size(), missing(a.name));
   }
 }
 

@@ -61,6 +61,12 @@ std::array<float, 3> material_color(Material material);
 // Material from the byte stored in PLY and VTP files; unknown values are bark.
 Material material_from_index(int index);
 
+// Vertex colours (a crown reconstructed from a photograph, fspm crown): the attributes "red",
+// "green" and "blue", linear RGB in [0, 1]; NaN where a vertex has none (TriangleMesh::append
+// leaves NaN on the vertices of meshes without colours), so that its material's colour applies.
+inline constexpr std::array<std::string_view, 3> kVertexColorAttributes = {"red", "green", "blue"};
+bool is_vertex_color_attribute(std::string_view name);
+
 struct VertexAttribute {
   std::string name;
   std::vector<float> values;  // one per vertex
@@ -96,12 +102,19 @@ class TriangleMesh {
   // Triangles of one material, in order (the mesher emits bark first, then leaves).
   std::size_t triangle_count(Material material) const;
 
-  // Appends `other`, offsetting its indices; attributes missing on either side are filled with 0.
+  // Appends `other`, offsetting its indices; attributes missing on either side are filled with 0
+  // (vertex colours with NaN: no colour of their own).
   void append(const TriangleMesh& other);
+  // All three vertex colour attributes are there.
+  bool has_vertex_colors() const;
 
   // Axis-aligned bounds of the positions (zero when empty).
   Eigen::Vector3f bbox_min() const;
   Eigen::Vector3f bbox_max() const;
 };
+
+// Each vertex's colour: its own where it has one (kVertexColorAttributes), else the material
+// colour of the first triangle that uses it (bark for a vertex no triangle uses).
+std::vector<std::array<float, 3>> resolved_vertex_colors(const TriangleMesh& mesh);
 
 }  // namespace fspm::graphics

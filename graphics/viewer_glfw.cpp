@@ -406,8 +406,17 @@ std::vector<glm::vec4> vertex_colors(const TriangleMesh& mesh, const ViewerOptio
     }
   }
   const bool gammas = mesh.has_attribute("translucency");
+  const bool own = o.color_by.empty() && mesh.has_vertex_colors();
+  const std::vector<std::array<float, 3>> own_colors =
+      own ? resolved_vertex_colors(mesh) : std::vector<std::array<float, 3>>{};
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
     const Material m = mesh.materials[t];
+    if (own && (m == Material::kLeaf || m == Material::kBark)) {  // a crown from a photograph
+      for (auto i : mesh.triangles[t]) {
+        colors[i] = glm::vec4(own_colors[i][0], own_colors[i][1], own_colors[i][2], 1.0f);
+      }
+      continue;
+    }
     if (m == Material::kBark) continue;
     const bool by_attribute =
         !o.color_by.empty() && (m == Material::kLeaf || m == Material::kCrown);
