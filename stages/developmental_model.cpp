@@ -89,6 +89,7 @@ DevelopmentalModel::DevelopmentalModel(const TreeGraph& tree, const StagesParams
   compute_radius_coefficients();
   apply_edits();
   build_plans();
+  build_tip_organs();
 }
 
 // Pirk 5.3.5: the given tree's main chain decides where the copies go; the model then analyses
@@ -351,20 +352,21 @@ void DevelopmentalModel::add_tip_leaves(TreeGraph& out) const {
   tip_.assign(present, 1);
   // Anything on an edge (a child edge or its own organs) makes it no tip for this purpose.
   for (NodeId k = 1; k < present; ++k) tip_[out.parent(k)] = 0;
-  for (NodeId i = 0; i < tree_.size(); ++i) {
-    const NodeId k = state_[i].id;
-    if (k == kNoNode || k >= present || !is_edge(tree_, i) || !tip_[k]) continue;
-    const NodeId last = chain_last_[chain_[i]];
-    if (last == i) continue;  // the chain's own tip: its organs come when it is complete
-    for (const NodeId organ : tree_.children(last)) {
-      if (is_edge(tree_, organ)) continue;
-      const Eigen::Quaterniond q = state_[i].turned ? turn_[i] : Eigen::Quaterniond::Identity();
-      NodeData d = tree_.data(organ);
+  // Stage nodes come in the given tree's order (place_nodes), so the organs are added in it.
+  for (NodeId k = 0; k < present; ++k) {
+    if (!tip_[k]) continue;
+    const NodeId i = given_of_[k];
+    if (plan_[i].kind != OrganKind::kInternode) continue;
+    const std::uint32_t c = chain_[i];
+    if (chain_last_[c] == i) continue;  // the chain's own tip: its organs come when it is complete
+    const Eigen::Quaterniond q = state_[i].turned ? turn_[i] : Eigen::Quaterniond::Identity();
+    for (std::uint32_t o = tip_organ_start_[c]; o < tip_organ_start_[c + 1]; ++o) {
+      NodeData d = tip_organs_[o];
       d.order = static_cast<std::uint16_t>(level_[i] - 1);
       d.birth_time = start_time_[i];
-      d.start = out.end(k) + q * (tree_.start(organ) - tree_.end(last));
-      d.end = out.end(k) + q * (tree_.end(organ) - tree_.end(last));
-      d.direction = q * tree_.direction(organ);
+      d.start = out.end(k) + q * d.start;
+      d.end = out.end(k) + q * d.end;
+      d.direction = q * d.direction;
       out.add_node_unchecked(k, d);
     }
   }
@@ -376,6 +378,7 @@ void DevelopmentalModel::place_nodes(double t, TreeGraph& out) const {
   const std::size_t n = plan_.size();
   state_.resize(n);
   turn_.resize(n);
+  given_of_.resize(n);  // a stage holds each node of tree_ once at most
   const bool shifted = !chain_shift_.empty();
   for (NodeId i = 0; i < n; ++i) {
     // The parent first, from its own column: most nodes of an early stage stop here, without
@@ -426,6 +429,7 @@ void DevelopmentalModel::place_nodes(double t, TreeGraph& out) const {
     }
     s.end = d.end;  // the base of its children, without going through the stage's ids
     s.id = out.add_node_unchecked(p == kNoNode ? kNoNode : state_[p].id, d);
+    given_of_[s.id] = i;
     s.complete = !(length < a.length);
     s.turned = turned;
   }
@@ -499,6 +503,22 @@ void DevelopmentalModel::build_plans() {
     r.parent = p;
     r.edge_children = edge_children_[i];
     r.edge = edge;
+  }
+}
+
+// The organs each chain's tip carries in the given tree, for add_tip_leaves().
+void DevelopmentalModel::build_tip_organs() {
+  tip_organs_.clear();
+  tip_organ_start_.assign(1, 0);
+  for (const NodeId last : chain_last_) {
+    for (const NodeId organ : tree_.children(last)) {
+      if (is_edge(tree_, organ)) continue;
+      NodeData d = tree_.data(organ);
+      d.start = tree_.start(organ) - tree_.end(last);
+      d.end = tree_.end(organ) - tree_.end(last);
+      tip_organs_.push_back(d);
+    }
+    tip_organ_start_.push_back(static_cast<std::uint32_t>(tip_organs_.size()));
   }
 }
 

@@ -124,6 +124,7 @@ class DevelopmentalModel {
   void set_radii(TreeGraph& out) const;
   void add_tip_leaves(TreeGraph& out) const;
   void build_plans();
+  void build_tip_organs();
   double birth_shift(NodeId i) const;
 
   TreeGraph tree_;  // the given tree, with the added structures appended when they are on
@@ -167,6 +168,11 @@ class DevelopmentalModel {
   };
   std::vector<PlacePlan> plan_;
   std::vector<RadiusPlan> radius_plan_;
+  // Per chain, the organs on its last edge in the given tree (5.3.7): their data with start and
+  // end relative to that edge's end; chain c has tip_organs_[tip_organ_start_[c] ..
+  // tip_organ_start_[c + 1]).
+  std::vector<NodeData> tip_organs_;
+  std::vector<std::uint32_t> tip_organ_start_;
   Eigen::Vector3d root_start_ = Eigen::Vector3d::Zero();
   // Buffers of stage(), kept between calls (a slider computes stage after stage).
   struct NodeState {
@@ -181,6 +187,7 @@ class DevelopmentalModel {
     std::uint8_t has_child = 0;
   };
   mutable std::vector<NodeState> state_;
+  mutable std::vector<NodeId> given_of_;  // per stage node, the node of tree_ it stands for
   mutable std::vector<Eigen::Quaterniond> turn_;
   mutable std::vector<Below> below_;
   mutable std::vector<std::uint8_t> tip_;
