@@ -3,10 +3,51 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+
+#include "fspm/error.hpp"
 
 namespace fspm::environment {
 
 double cluster_translucency(double radius_m, double gamma0) { return std::pow(gamma0, radius_m); }
+
+namespace {
+
+void check_translucency(double translucency) {
+  if (!(translucency >= 0.0 && translucency <= 1.0)) {
+    throw ValueError("translucency: expected a value in [0, 1], got " +
+                     std::to_string(translucency));
+  }
+}
+
+}  // namespace
+
+void validate(const Sphere& sphere) {
+  if (!sphere.center.allFinite()) throw ValueError("sphere: expected a finite centre");
+  if (!(sphere.radius_m > 0.0) || !std::isfinite(sphere.radius_m)) {
+    throw ValueError("radius: expected a finite value > 0");
+  }
+  check_translucency(sphere.translucency);
+}
+
+void validate(const Box& box) {
+  if (!box.center.allFinite()) throw ValueError("box: expected a finite centre");
+  if (!box.half_extent.allFinite() || !(box.half_extent.array() > 0.0).all()) {
+    throw ValueError(
+        "box: expected a finite size > 0 along every axis (min < max; a wall's distinct ends, "
+        "height > 0 and thickness > 0)");
+  }
+  const Eigen::Matrix3d gram = box.rotation.transpose() * box.rotation;
+  if (!box.rotation.allFinite() || !gram.isIdentity(1e-9)) {
+    throw ValueError("box: expected a rotation (orthonormal columns)");
+  }
+  check_translucency(box.translucency);
+}
+
+void validate(const Ground& ground) {
+  if (!std::isfinite(ground.height_m)) throw ValueError("ground: expected a finite height");
+  check_translucency(ground.translucency);
+}
 
 Box Box::from_min_max(const Eigen::Vector3d& min, const Eigen::Vector3d& max) {
   Box b;

@@ -90,6 +90,14 @@ struct TriangleMesh {
                 double max_t = 1e300) const;
 };
 
+// Each throws ValueError naming the first value out of range: finite positions, a radius and half
+// extents > 0, a rotation with orthonormal columns, translucency in [0, 1]. The Python bindings
+// check what they build with these (the scene file reader checks each value where it reads it,
+// with its file and line).
+void validate(const Sphere& sphere);
+void validate(const Box& box);
+void validate(const Ground& ground);
+
 // Ray/sphere: true when the ray origin + t * dir (t > 0, dir unit) crosses the sphere's interior
 // within max_t (an origin inside counts).
 bool ray_hits_sphere(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,

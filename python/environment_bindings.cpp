@@ -121,11 +121,9 @@ void bind_scene_obstacles(py::class_<env::Scene>& scene) {
           "add_sphere",
           [](env::Scene& s, const Eigen::Vector3d& center, double radius, double translucency,
              bool solid) {
-            if (!(radius > 0.0)) throw ValueError("radius: expected a value > 0");
-            if (!(translucency >= 0.0 && translucency <= 1.0)) {
-              throw ValueError("translucency: expected a value in [0, 1]");
-            }
-            s.spheres.push_back({center, radius, translucency, solid});
+            const env::Sphere sphere{center, radius, translucency, solid};
+            env::validate(sphere);
+            s.spheres.push_back(sphere);
           },
           py::arg("center"), py::arg("radius"), py::arg("translucency") = 0.0,
           py::arg("solid") = false,
@@ -135,15 +133,10 @@ void bind_scene_obstacles(py::class_<env::Scene>& scene) {
           "add_box",
           [](env::Scene& s, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
              double translucency, bool solid) {
-            if (!(lo.array() < hi.array()).all()) {
-              throw ValueError("add_box: expected min < max on every axis");
-            }
-            if (!(translucency >= 0.0 && translucency <= 1.0)) {
-              throw ValueError("translucency: expected a value in [0, 1]");
-            }
             env::Box b = env::Box::from_min_max(lo, hi);
             b.translucency = translucency;
             b.solid = solid;
+            env::validate(b);
             s.boxes.push_back(b);
           },
           py::arg("min"), py::arg("max"), py::arg("translucency") = 0.0, py::arg("solid") = true,
@@ -153,11 +146,9 @@ void bind_scene_obstacles(py::class_<env::Scene>& scene) {
           "add_wall",
           [](env::Scene& s, const Eigen::Vector2d& from, const Eigen::Vector2d& to, double height,
              double thickness, double base, double translucency) {
-            if (!(height > 0.0) || !(thickness > 0.0) || (to - from).norm() == 0.0) {
-              throw ValueError("add_wall: expected distinct ends, height > 0 and thickness > 0");
-            }
             env::Box b = env::Box::wall(from, to, base, height, thickness);
             b.translucency = translucency;
+            env::validate(b);
             s.boxes.push_back(b);
           },
           py::arg("from_xy"), py::arg("to_xy"), py::arg("height"), py::arg("thickness") = 0.2,
@@ -168,7 +159,9 @@ void bind_scene_obstacles(py::class_<env::Scene>& scene) {
       .def(
           "set_ground",
           [](env::Scene& s, double height, double translucency, bool solid) {
-            s.ground = env::Ground{height, translucency, solid};
+            const env::Ground ground{height, translucency, solid};
+            env::validate(ground);
+            s.ground = ground;
           },
           py::arg("height") = 0.0, py::arg("translucency") = 0.0, py::arg("solid") = true,
           "Adds (or replaces) the ground plane z = height (m)")

@@ -81,6 +81,25 @@ def test_scene_and_light_errors():
         fspm.light("scene.json", np.zeros((1, 3)))
 
 
+def test_scene_obstacles_are_checked_by_the_library():
+    scene = fspm.Scene()
+    with pytest.raises(ValueError, match="radius"):
+        scene.add_sphere((0, 0, 1), 0.0)
+    with pytest.raises(ValueError, match="min < max"):
+        scene.add_box((0, 0, 0), (1, 0, 1))
+    with pytest.raises(ValueError, match="translucency"):
+        scene.add_wall((0, 0), (1, 0), 2.0, translucency=2.0)
+    with pytest.raises(ValueError, match="thickness"):
+        scene.add_wall((0, 0), (0, 0), 2.0)
+    with pytest.raises(ValueError, match="translucency"):
+        scene.set_ground(0.0, translucency=5.0)
+    with pytest.raises(ValueError, match="height"):
+        scene.set_ground(float("nan"))
+    assert "0 spheres, 0 boxes" in repr(scene)  # nothing refused was added
+    scene.add_wall((0, 0), (1, 0), 2.0, translucency=0.5)
+    assert "1 boxes" in repr(scene)
+
+
 def test_growth_parameters_presets_dicts_and_toml(tmp_path):
     a = fspm.growth_preset("A")
     assert (a.phototropism, a.gravitropism) == (0.25, 0.12)  # Pirk 4.5.4, type A

@@ -1,0 +1,47 @@
+// Obstacles check themselves: every value out of range is refused with what was expected.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <limits>
+
+#include "environment/occluders.hpp"
+#include "fspm/error.hpp"
+
+namespace fspm::environment {
+namespace {
+
+constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+
+TEST(OccluderValidation, Spheres) {
+  EXPECT_NO_THROW(validate(Sphere{{0, 0, 1}, 0.5, 0.3, false}));
+  EXPECT_THROW(validate(Sphere{{0, 0, 1}, 0.0, 0.3, false}), ValueError);
+  EXPECT_THROW(validate(Sphere{{0, kNan, 1}, 0.5, 0.3, false}), ValueError);
+  EXPECT_THROW(validate(Sphere{{0, 0, 1}, 0.5, 1.5, false}), ValueError);
+  EXPECT_THROW(validate(Sphere{{0, 0, 1}, 0.5, -0.1, false}), ValueError);
+}
+
+TEST(OccluderValidation, BoxesAndWalls) {
+  EXPECT_NO_THROW(validate(Box::from_min_max({0, 0, 0}, {1, 2, 3})));
+  EXPECT_THROW(validate(Box::from_min_max({0, 0, 0}, {1, 0, 3})), ValueError);  // flat
+  EXPECT_NO_THROW(validate(Box::wall({0, 0}, {3, 4}, 0.0, 2.0, 0.2)));
+  EXPECT_THROW(validate(Box::wall({1, 1}, {1, 1}, 0.0, 2.0, 0.2)), ValueError);  // no length
+  EXPECT_THROW(validate(Box::wall({0, 0}, {3, 4}, 0.0, 0.0, 0.2)), ValueError);  // no height
+  EXPECT_THROW(validate(Box::wall({0, 0}, {3, 4}, 0.0, 2.0, kNan)), ValueError);
+  Box turned = Box::from_min_max({0, 0, 0}, {1, 1, 1});
+  turned.rotation = Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()).matrix();
+  EXPECT_NO_THROW(validate(turned));
+  turned.rotation(0, 0) *= 2.0;  // no longer a rotation
+  EXPECT_THROW(validate(turned), ValueError);
+  Box see_through = Box::from_min_max({0, 0, 0}, {1, 1, 1});
+  see_through.translucency = 1.01;
+  EXPECT_THROW(validate(see_through), ValueError);
+}
+
+TEST(OccluderValidation, Ground) {
+  EXPECT_NO_THROW(validate(Ground{-1.0, 0.0, true}));
+  EXPECT_THROW(validate(Ground{kNan, 0.0, true}), ValueError);
+  EXPECT_THROW(validate(Ground{0.0, 2.0, true}), ValueError);
+}
+
+}  // namespace
+}  // namespace fspm::environment
