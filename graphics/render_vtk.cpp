@@ -419,6 +419,17 @@ vtkActor* add_surface_actor(vtkRenderer* renderer, vtkMapper* mapper) {
   return actor.Get();
 }
 
+// The mesh in its cell colours (materials, or the mean of its vertex colours; to_polydata).
+vtkActor* add_cell_colored_actor(vtkRenderer* renderer, const TriangleMesh& mesh) {
+  vtkNew<vtkPolyData> poly = to_polydata(mesh, "");
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(poly);
+  mapper->SetScalarModeToUseCellData();
+  mapper->SetColorModeToDirectScalars();
+  mapper->ScalarVisibilityOn();
+  return add_surface_actor(renderer, mapper);
+}
+
 vtkActor* add_glyph_actor(vtkRenderer* renderer, vtkPolyData* instances, const TriangleMesh& part,
                           const std::array<unsigned char, 3>& rgb) {
   vtkNew<vtkPolyData> source = to_polydata(part, "");
@@ -600,13 +611,7 @@ void add_plant_actors(vtkRenderer* renderer, const TriangleMesh& plants,
   }
   for (const TriangleMesh* part : {&solid, &crown}) {
     if (part->empty()) continue;
-    vtkNew<vtkPolyData> poly = to_polydata(*part, "");
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(poly);
-    mapper->SetScalarModeToUseCellData();
-    mapper->SetColorModeToDirectScalars();
-    mapper->ScalarVisibilityOn();
-    vtkActor* actor = add_surface_actor(renderer, mapper);
+    vtkActor* actor = add_cell_colored_actor(renderer, *part);
     if (part == &crown) crown_look(actor);
   }
 }
@@ -629,27 +634,18 @@ void add_material_glyphs(vtkRenderer* renderer, vtkPolyData* placed, const Trian
 }
 
 // A mesh with vertex colours (a crown from a photograph, placed a few times in a scene) drawn
-// explicitly, each instance a placed copy, with the colours as cell scalars: the glyph mapper
-// colours a glyph as a whole.
+// explicitly, its instances flattened, with the colours as cell scalars: the glyph mapper colours
+// a glyph as a whole.
 void add_vertex_colored_instances(vtkRenderer* renderer, const TriangleMesh& mesh, std::uint32_t m,
                                   const std::vector<MeshInstance>& instances) {
-  TriangleMesh placed;
-  for (const MeshInstance& inst : instances) {
+  InstancedMesh placed;
+  placed.meshes.push_back(mesh);
+  for (MeshInstance inst : instances) {
     if (inst.mesh != m) continue;
-    TriangleMesh copy = mesh;
-    const Eigen::Matrix3f turn = inst.linear.inverse().transpose();  // for the normals
-    for (auto& p : copy.positions) p = inst.linear * p + inst.translation;
-    for (auto& n : copy.normals) n = (turn * n).normalized();
-    placed.append(copy);
+    inst.mesh = 0;
+    placed.instances.push_back(inst);
   }
-  if (placed.empty()) return;
-  vtkNew<vtkPolyData> poly = to_polydata(placed, "");
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(poly);
-  mapper->SetScalarModeToUseCellData();
-  mapper->SetColorModeToDirectScalars();
-  mapper->ScalarVisibilityOn();
-  add_surface_actor(renderer, mapper);
+  if (!placed.instances.empty()) add_cell_colored_actor(renderer, placed.flatten());
 }
 
 // GPU instancing through VTK's glyph mapper: one source per shared mesh and material, one glyph
