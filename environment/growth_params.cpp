@@ -56,7 +56,7 @@ namespace {
 // internodes (docs/environment.md, "Presets").
 constexpr double kFittedAlpha[3][3] = {
     {1.42, 1.94, 1.15},  // A
-    {1.66, 2.20, 1.15},  // B (not fitted for space colonization: it does not grow, see docs)
+    {1.66, 2.20, 1.80},  // B
     {1.22, 1.77, 1.41},  // C
 };
 
