@@ -1,5 +1,6 @@
 // fspm tree info | convert: inspect and convert tree graph files.
 #include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <filesystem>
@@ -81,19 +82,29 @@ void run_info(const InfoOptions& o) {
   std::cout << "  attributes: " << j["attributes"].dump() << '\n';
 }
 
+// Only Newick carries node names (taxon names, quoted labels); converting to another format says
+// how many are left behind rather than dropping them silently.
+void warn_of_dropped_names(const NamedTree& named, const ConvertOptions& o) {
+  if (tree_format_keeps_names(tree_format_for(o.out, o.to))) return;
+  const auto named_nodes = std::count_if(named.names.begin(), named.names.end(),
+                                         [](const std::string& n) { return !n.empty(); });
+  if (named_nodes == 0) return;
+  spdlog::warn("{}: {} node names are not kept in {}: only Newick (.nwk) carries names", o.in,
+               named_nodes, o.out);
+}
+
 void run_convert(const ConvertOptions& o) {
   refuse_overwriting_input(o.out, {o.in});
   // A grouped mesh (one OBJ group or glTF node per branch) gives its skeleton (Reynolds et al.
   // 2011, 3.1).
   const bool mesh = o.from == "obj" || o.from == "gltf" || o.from == "glb" ||
                     (o.from.empty() && scans::is_grouped_mesh_file(o.in));
-  const TreeGraph tree =
-      mesh ? scans::grouped_mesh_skeleton(scans::read_mesh_file(o.in, o.from), o.in)
-           : read_tree_file(o.in, o.from);
-  write_tree_file(tree, o.out, o.to);
-  if (verbosity() > 0) {
-    std::cerr << "wrote " << o.out << " (" << tree.size() << " nodes)\n";
-  }
+  const NamedTree named =
+      mesh ? NamedTree{scans::grouped_mesh_skeleton(scans::read_mesh_file(o.in, o.from), o.in), {}}
+           : read_named_tree_file(o.in, o.from);
+  write_named_tree_file(named, o.out, o.to);
+  warn_of_dropped_names(named, o);
+  spdlog::info("wrote {} ({} nodes)", o.out, named.tree.size());
 }
 
 }  // namespace

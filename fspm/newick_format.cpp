@@ -174,9 +174,9 @@ void append_name(std::string& out, const std::string& name) {
 
 }  // namespace
 
-NewickTree parse_newick_named(std::string_view text, const std::string& source) {
+NamedTree parse_newick_named(std::string_view text, const std::string& source) {
   Scanner s(text, source);
-  NewickTree named;
+  NamedTree named;
   TreeGraph& tree = named.tree;
   std::vector<std::string>& names = named.names;
   tree.add_attribute(std::string(kNewickLabel), kNaN);

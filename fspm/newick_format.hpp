@@ -19,13 +19,13 @@ inline constexpr std::string_view kNewickBranchLength = "branch_length";
 
 // A tree with the names of its nodes: names[n] is node n's name, empty where it has none (or a
 // numeric label). Tree attributes are numbers, so names travel beside the tree.
-struct NewickTree {
+struct NamedTree {
   TreeGraph tree;
   std::vector<std::string> names;
 };
 
 // Parses one tree ending in ';'. Throws ParseError with `source`, line and column.
-NewickTree parse_newick_named(std::string_view text, const std::string& source = "<newick>");
+NamedTree parse_newick_named(std::string_view text, const std::string& source = "<newick>");
 // The same, dropping the names (topology, "label" and "branch_length" only).
 TreeGraph parse_newick(std::string_view text, const std::string& source = "<newick>");
 // Writes `label_attribute` (when the tree has it and the value is not NaN) as each node's label

@@ -43,24 +43,33 @@ std::string_view tree_format_name(TreeFormat format) {
   return "tree";
 }
 
-TreeGraph read_tree_file(const std::string& path, std::string_view format) {
-  // The path first: a directory or a missing file is not "an unknown format".
-  const auto in = open_input_file(path, kMaxTreeFileBytes);
-  const TreeFormat f = tree_format_for(path, format);
+namespace {
+
+TreeGraph read_tree_stream(std::istream& in, TreeFormat f, const std::string& path) {
   switch (f) {
     case TreeFormat::kText:
-      return read_tree_text(*in, path);
+      return read_tree_text(in, path);
     case TreeFormat::kBinary:
-      return read_tree_binary(*in, path);
+      return read_tree_binary(in, path);
     default: {
-      const std::string text{std::istreambuf_iterator<char>(*in), {}};
+      const std::string text{std::istreambuf_iterator<char>(in), {}};
       return f == TreeFormat::kMtg ? parse_mtg(text, path) : parse_newick(text, path);
     }
   }
 }
 
-void write_tree_file(const TreeGraph& tree, const std::string& path, std::string_view format) {
-  const TreeFormat f = tree_format_for(path, format);
+}  // namespace
+
+TreeGraph read_tree_file(const std::string& path, std::string_view format) {
+  // The path first: a directory or a missing file is not "an unknown format".
+  const auto in = open_input_file(path, kMaxTreeFileBytes);
+  return read_tree_stream(*in, tree_format_for(path, format), path);
+}
+
+namespace {
+
+void write_tree_format(const TreeGraph& tree, std::span<const std::string> names,
+                       const std::string& path, TreeFormat f) {
   require_finite_geometry(tree, path);
   write_file_atomically(
       path,
@@ -73,7 +82,7 @@ void write_tree_file(const TreeGraph& tree, const std::string& path, std::string
             write_tree_binary(tree, out);
             break;
           case TreeFormat::kNewick:
-            out << to_newick(tree) << '\n';
+            out << to_newick_named(tree, names) << '\n';
             break;
           case TreeFormat::kMtg:
             write_mtg(tree, out);
@@ -81,6 +90,30 @@ void write_tree_file(const TreeGraph& tree, const std::string& path, std::string
         }
       },
       f == TreeFormat::kBinary);
+}
+
+}  // namespace
+
+void write_tree_file(const TreeGraph& tree, const std::string& path, std::string_view format) {
+  write_tree_format(tree, {}, path, tree_format_for(path, format));
+}
+
+bool tree_format_keeps_names(TreeFormat format) { return format == TreeFormat::kNewick; }
+
+NamedTree read_named_tree_file(const std::string& path, std::string_view format) {
+  const auto in = open_input_file(path, kMaxTreeFileBytes);
+  const TreeFormat f = tree_format_for(path, format);
+  if (f != TreeFormat::kNewick) return {read_tree_stream(*in, f, path), {}};
+  const std::string text{std::istreambuf_iterator<char>(*in), {}};
+  return parse_newick_named(text, path);
+}
+
+void write_named_tree_file(const NamedTree& named, const std::string& path,
+                           std::string_view format) {
+  const TreeFormat f = tree_format_for(path, format);
+  const std::span<const std::string> names =
+      tree_format_keeps_names(f) ? named.names : std::span<const std::string>{};
+  write_tree_format(named.tree, names, path, f);
 }
 
 }  // namespace fspm

@@ -1,12 +1,13 @@
 #pragma once
 // Reading and writing tree graphs in every supported format, chosen by extension or by name:
 //   .tree  text format (versioned, line-oriented)     .treeb binary format
-//   .nwk   Newick (topology + one numeric label)      .mtg   OpenAlea MTG (write only)
+//   .nwk   Newick (topology, labels or names)         .mtg   OpenAlea MTG
 // Writes go to a temporary file in the same directory, renamed over the target on success, so
 // a failed write never leaves a half-written file.
 #include <string>
 #include <string_view>
 
+#include "fspm/newick_format.hpp"
 #include "fspm/tree_graph.hpp"
 
 namespace fspm {
@@ -20,5 +21,14 @@ std::string_view tree_format_name(TreeFormat format);
 
 TreeGraph read_tree_file(const std::string& path, std::string_view format = {});
 void write_tree_file(const TreeGraph& tree, const std::string& path, std::string_view format = {});
+
+// Whether the format carries node names (taxon names, quoted labels): Newick only.
+bool tree_format_keeps_names(TreeFormat format);
+// The tree and its node names: from Newick, as parse_newick_named gives them; from the other
+// formats, which carry no names, an empty `names`.
+NamedTree read_named_tree_file(const std::string& path, std::string_view format = {});
+// Writes the names where the format carries them (Newick) and drops them otherwise.
+void write_named_tree_file(const NamedTree& named, const std::string& path,
+                           std::string_view format = {});
 
 }  // namespace fspm

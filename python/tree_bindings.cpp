@@ -206,7 +206,7 @@ void bind_tree_functions(py::module_& m) {
   m.def(
       "parse_newick_named",
       [](const std::string& text) {
-        fspm::NewickTree t = fspm::parse_newick_named(text);
+        fspm::NamedTree t = fspm::parse_newick_named(text);
         return py::make_tuple(std::move(t.tree), std::move(t.names));
       },
       py::arg("text"),

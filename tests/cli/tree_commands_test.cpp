@@ -29,6 +29,25 @@ TEST(TreeCli, NewickSurvivesConversionThroughEveryFormat) {
   EXPECT_NE(read_text(dir / "x.mtg").find("MTG:"), std::string::npos);
 }
 
+// Node names (taxon names, quoted labels) survive a Newick-to-Newick conversion; a format without
+// names says how many it leaves behind.
+TEST(TreeCli, ConversionKeepsNewickNamesOrSaysTheyAreDropped) {
+  const auto dir = scratch_dir("convert_names");
+  const std::string nwk = "((A:1,B:2)C:0.5,'Quercus robur':1,7);";
+  write_text(dir / "x.nwk", nwk + "\n");
+  auto r = run_fspm("tree convert " + (dir / "x.nwk").string() + " " + (dir / "y.nwk").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_text(dir / "y.nwk"), nwk + "\n");
+  EXPECT_EQ(r.err.find("not kept"), std::string::npos) << r.err;
+  r = run_fspm("tree convert " + (dir / "x.nwk").string() + " " + (dir / "x.tree").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("4 node names are not kept"), std::string::npos) << r.err;
+  r = run_fspm("-q tree convert " + (dir / "x.tree").string() + " " + (dir / "z.nwk").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_EQ(read_text(dir / "z.nwk"), "((:1,:2):0.5,:1,7);\n");
+}
+
 // A grown tree through MTG and back: every summary figure is the same (MTG carries the node
 // ends, lengths, radii, birth times, orders and attributes; node numbering is depth first).
 TEST(TreeCli, GrownTreeSurvivesMtgExportAndImport) {

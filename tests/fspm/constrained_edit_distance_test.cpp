@@ -341,8 +341,8 @@ TEST(ConstrainedEditDistance, HandCaseNewickLabels) {
 // A = r(x(b, c), d), B = r(b, c, d): deleting x would merge {b, c} with {d}, so at most r, one of
 // x's subtree and d match: m = 3, 5 + 4 - 6 = 3.
 TEST(ConstrainedEditDistance, HandCaseNamedNewickTopological) {
-  const NewickTree a = parse_newick_named("((A:1,B:2)C:0.5,D:1);");
-  const NewickTree b = parse_newick_named("((A,B)C,(D,E)F);");
+  const NamedTree a = parse_newick_named("((A:1,B:2)C:0.5,D:1);");
+  const NamedTree b = parse_newick_named("((A,B)C,(D,E)F);");
   EditDistanceOptions opt;
   opt.with_mapping = true;
   const auto r = constrained_edit_distance(a.tree, b.tree, opt);

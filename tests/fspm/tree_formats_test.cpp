@@ -145,7 +145,7 @@ TEST(Newick, MalformedInputNamesLineAndColumn) {
 
 // Taxon names as node labels; ids in the order the nodes open: 0 the root, 1 C, 2 A, 3 B, 4 D.
 TEST(Newick, ReadsTaxonNamesAndBranchLengths) {
-  const NewickTree t = parse_newick_named("((A:1,B:2)C:0.5,D:1);");
+  const NamedTree t = parse_newick_named("((A:1,B:2)C:0.5,D:1);");
   ASSERT_EQ(t.tree.size(), 5u);
   EXPECT_EQ(t.names, (std::vector<std::string>{"", "C", "A", "B", "D"}));
   EXPECT_EQ(t.tree.parent(1), 0u);
@@ -165,7 +165,7 @@ TEST(Newick, ReadsTaxonNamesAndBranchLengths) {
 }
 
 TEST(Newick, ReadsQuotedLabelsUnderscoresCommentsAndNumbers) {
-  const NewickTree t =
+  const NamedTree t =
       parse_newick_named("[&R] ('a b':1,'it''s',Quercus_robur[95],'7')'(root), node':2;");
   ASSERT_EQ(t.tree.size(), 5u);
   EXPECT_EQ(t.names,
@@ -175,21 +175,21 @@ TEST(Newick, ReadsQuotedLabelsUnderscoresCommentsAndNumbers) {
   EXPECT_EQ(t.tree.attribute("branch_length")[1], 1.0);
   // A quoted number is a name; an unquoted one is the numeric label.
   EXPECT_TRUE(std::isnan(t.tree.attribute("label")[4]));
-  const NewickTree mixed = parse_newick_named("(A,B)95;");
+  const NamedTree mixed = parse_newick_named("(A,B)95;");
   EXPECT_EQ(mixed.tree.attribute("label")[0], 95.0);
   EXPECT_EQ(mixed.names, (std::vector<std::string>{"", "A", "B"}));
 }
 
 TEST(Newick, OneNodeTrees) {
-  const NewickTree number = parse_newick_named("10;");
+  const NamedTree number = parse_newick_named("10;");
   ASSERT_EQ(number.tree.size(), 1u);
   EXPECT_EQ(number.tree.attribute("label")[0], 10.0);
   EXPECT_EQ(number.names, std::vector<std::string>{""});
-  const NewickTree name = parse_newick_named("A;");
+  const NamedTree name = parse_newick_named("A;");
   ASSERT_EQ(name.tree.size(), 1u);
   EXPECT_TRUE(std::isnan(name.tree.attribute("label")[0]));
   EXPECT_EQ(name.names, std::vector<std::string>{"A"});
-  const NewickTree quoted = parse_newick_named("'Fagus sylvatica':3;");
+  const NamedTree quoted = parse_newick_named("'Fagus sylvatica':3;");
   ASSERT_EQ(quoted.tree.size(), 1u);
   EXPECT_EQ(quoted.names, std::vector<std::string>{"Fagus sylvatica"});
   EXPECT_EQ(quoted.tree.attribute("branch_length")[0], 3.0);
@@ -198,14 +198,14 @@ TEST(Newick, OneNodeTrees) {
 TEST(Newick, WritesNamesBackQuotedWhereNeeded) {
   for (const std::string s :
        {"((A:1,B:2)C:0.5,D:1);", "A;", "('a b','it''s')'x,y';", "(A,B)95;", "('7',A)B;"}) {
-    const NewickTree t = parse_newick_named(s);
+    const NamedTree t = parse_newick_named(s);
     EXPECT_EQ(to_newick_named(t.tree, t.names), s);
   }
   // An empty quoted label is no label.
-  const NewickTree empty = parse_newick_named("(A)'';");
+  const NamedTree empty = parse_newick_named("(A)'';");
   EXPECT_EQ(to_newick_named(empty.tree, empty.names), "(A);");
   // '_' reads as a blank, so a name with a blank or an underscore is written quoted.
-  const NewickTree t = parse_newick_named("(Quercus_robur,'Q_r');");
+  const NamedTree t = parse_newick_named("(Quercus_robur,'Q_r');");
   EXPECT_EQ(t.names[1], "Quercus robur");
   EXPECT_EQ(t.names[2], "Q_r");
   EXPECT_EQ(to_newick_named(t.tree, t.names), "('Quercus robur','Q_r');");
