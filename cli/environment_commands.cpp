@@ -80,10 +80,7 @@ struct GrowOptions {
 void run_light(const LightOptions& o) {
   refuse_overwriting_input(o.out, {o.scene, o.points});
   environment::Scene scene = environment::read_scene_file(o.scene);
-  if (o.directions != 0) {
-    if (o.directions < 1) throw ValueError("--directions: expected a count >= 1");
-    scene.sky.directions = o.directions;
-  }
+  if (o.directions != 0) scene.sky.directions = o.directions;  // checked by the LightModel
   const auto points = environment::read_points_csv(o.points);
   const auto t0 = std::chrono::steady_clock::now();
   const environment::LightModel model(scene);

@@ -78,12 +78,6 @@ struct MeshCommand {
   bool json = false;
 };
 
-graphics::JunctionMode junction_mode(const std::string& name) {
-  if (name == "separate") return graphics::JunctionMode::kSeparate;
-  if (name == "continuous") return graphics::JunctionMode::kContinuous;
-  throw ValueError("unknown junction mode '" + name + "' (expected separate or continuous)");
-}
-
 struct RenderCommand {
   std::string tree;
   std::string format;
@@ -427,7 +421,7 @@ graphics::MeshOptions mesh_options(const MeshCommand& c) {
   set_leaves(options, c.leaves, c.foliage, c.seed);
   options.edge_length_m = c.edge_length_m;
   options.max_sides = c.max_sides;
-  options.junctions = junction_mode(c.junctions);
+  options.junctions = graphics::junction_mode_from_name(c.junctions);
   options.reynolds_width = c.reynolds_width;
   return options;
 }

@@ -56,10 +56,7 @@ graphics::TriangleMesh obj_as_triangles(const scans::GroupedMesh& obj) {
 
 // fspm's materials by the names its glTF writer gives them; any other name draws as leaf.
 graphics::Material material_named(const std::string& name) {
-  for (const graphics::Material m : graphics::kMaterials) {
-    if (name == graphics::material_name(m)) return m;
-  }
-  return graphics::Material::kLeaf;
+  return graphics::find_material(name).value_or(graphics::Material::kLeaf);
 }
 
 // The vertex colours (graphics::kVertexColorAttributes) of a mesh appended at `base`; vertices

@@ -24,9 +24,16 @@ double shadow_reach2(double r, double g, double significance) {
   return r * r / sin2_min;
 }
 
+// The scene, once its sky is checked: the direction set is built from it before the body runs.
+const Scene& with_checked_sky(const Scene& scene) {
+  validate(scene.sky);
+  return scene;
+}
+
 }  // namespace
 
-LightModel::LightModel(const Scene& scene) : scene_(scene), dirs_(scene.sky.directions) {
+LightModel::LightModel(const Scene& scene)
+    : scene_(with_checked_sky(scene)), dirs_(scene.sky.directions) {
   set_sky_weights();
   for (auto& mesh : scene_.meshes) mesh.update_bounds();
   if (!scene_.boxes.empty()) build_fine_directions();
@@ -35,9 +42,7 @@ LightModel::LightModel(const Scene& scene) : scene_(scene), dirs_(scene.sky.dire
 }
 
 void LightModel::set_sky_weights() {
-  Eigen::Vector3d b = scene_.sky.brightest;
-  b = b.norm() > 0 ? Eigen::Vector3d(b.normalized()) : Eigen::Vector3d::UnitZ();
-  scene_.sky.brightest = b;
+  const Eigen::Vector3d b = scene_.sky.brightest;  // a unit vector: validate(Sky)
   weight_.resize(dirs_.size());
   Eigen::Vector3d m = Eigen::Vector3d::Zero();
   for (int i = 0; i < dirs_.size(); ++i) {

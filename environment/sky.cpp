@@ -2,10 +2,30 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
+
+#include "fspm/error.hpp"
+#include "fspm/scene_description.hpp"
 
 namespace fspm::environment {
 namespace {
 constexpr double kDegToRad = std::numbers::pi / 180.0;
+}
+
+void validate(const Sky& sky) {
+  if (!sky.brightest.allFinite() || std::abs(sky.brightest.norm() - 1.0) > 1e-9) {
+    throw ValueError(
+        "sky brightest: expected a non-zero direction (a unit vector once normalized)");
+  }
+  if (sky.directions < 1 || sky.directions > kMaxSkyDirections) {
+    throw ValueError("sky directions: expected a count in [1, " +
+                     std::to_string(kMaxSkyDirections) + "], got " +
+                     std::to_string(sky.directions));
+  }
+  if (!(sky.significance >= 0.0 && sky.significance < 1.0)) {
+    throw ValueError("sky significance: expected a number in [0, 1), got " +
+                     std::to_string(sky.significance));
+  }
 }
 
 Eigen::Vector3d direction_from_elevation_azimuth(double elevation_deg, double azimuth_deg) {

@@ -15,6 +15,11 @@ struct Sky {
   bool analytic_boxes = true;
 };
 
+// Throws ValueError naming the field unless brightest is a finite unit vector, directions is in
+// [1, kMaxSkyDirections] and significance in [0, 1). (A brightest point below the horizon is
+// allowed: the cos^2 sky of -b is the same as that of b.)
+void validate(const Sky& sky);
+
 // Unit direction from elevation above the horizon and azimuth clockwise from north (degrees).
 Eigen::Vector3d direction_from_elevation_azimuth(double elevation_deg, double azimuth_deg);
 

@@ -470,12 +470,12 @@ TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
 
   // Light of the final stage: the tree's clusters alone under an open sky, one evaluation per
   // cluster (the adaptation starts from this cache).
-  a.brightest =
-      brightest.norm() > 0 ? Eigen::Vector3d(brightest.normalized()) : Eigen::Vector3d::UnitZ();
   Scene scene;
-  scene.sky.brightest = a.brightest;
+  scene.sky.brightest = brightest.normalized();
   scene.sky.directions = params.light_directions;
   scene.sky.significance = params.light_significance;
+  validate(scene.sky);
+  a.brightest = scene.sky.brightest;
   ClusterLightField field(params.light_directions, params.light_significance, a.brightest);
   if (params.light_model == ClusterLightModel::kShadowGrid) {
     grid_light(t, scene, field.open_direction(), a);

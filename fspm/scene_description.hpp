@@ -13,6 +13,9 @@
 
 namespace fspm {
 
+// Largest number of sky directions of the light integral (scene files, the library's check).
+inline constexpr int kMaxSkyDirections = 1 << 20;
+
 // Where the brightest sky direction comes from (one of them at most).
 enum class SkySource { kDefault, kBrightest, kSun, kNoonSun };
 

@@ -50,7 +50,7 @@ SceneSky read_sky(const JsonFields& f, const json& s, const std::string& path) {
   } else if (s.contains("day_of_year")) {
     f.fail(path + "/latitude_deg", "a latitude to go with day_of_year (missing)");
   }
-  if (const auto d = f.optional_number(s, path, "directions", 1, 1 << 20,
+  if (const auto d = f.optional_number(s, path, "directions", 1, kMaxSkyDirections,
                                        "a direction count in [1, 1048576]")) {
     sky.directions = static_cast<int>(*d);
   }

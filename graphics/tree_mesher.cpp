@@ -12,6 +12,17 @@
 #include "graphics/parallel_transport.hpp"
 
 namespace fspm::graphics {
+
+std::string_view junction_mode_name(JunctionMode mode) {
+  return mode == JunctionMode::kContinuous ? "continuous" : "separate";
+}
+
+JunctionMode junction_mode_from_name(std::string_view name) {
+  if (name == "separate") return JunctionMode::kSeparate;
+  if (name == "continuous") return JunctionMode::kContinuous;
+  throw ValueError("unknown junction mode '" + std::string(name) +
+                   "' (expected separate or continuous)");
+}
 namespace {
 
 constexpr double kMinSegmentM = 1e-9;

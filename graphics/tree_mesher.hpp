@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <string_view>
 
 #include "fspm/tree_graph.hpp"
 #include "graphics/foliage.hpp"
@@ -27,6 +28,11 @@ namespace fspm::graphics {
 //     the vertices a lateral shares with its parent weigh both). Laterals whose quad is taken, that
 //     leave at a shallow angle or that hang from an axis tip fall back to separate tubes.
 enum class JunctionMode { kSeparate, kContinuous };
+
+// "separate" or "continuous", as the command line's --junctions and Python's MeshOptions name them.
+std::string_view junction_mode_name(JunctionMode mode);
+// Inverse of junction_mode_name; throws ValueError naming both.
+JunctionMode junction_mode_from_name(std::string_view name);
 
 struct MeshOptions {
   JunctionMode junctions = JunctionMode::kSeparate;

@@ -26,6 +26,23 @@ std::string_view material_name(Material material) {
   return "bark";
 }
 
+std::optional<Material> find_material(std::string_view name) {
+  for (const Material m : kMaterials) {
+    if (name == material_name(m)) return m;
+  }
+  return std::nullopt;
+}
+
+Material material_from_name(std::string_view name) {
+  if (const auto m = find_material(name)) return *m;
+  std::string names;
+  for (const Material m : kMaterials) {
+    names += names.empty() ? "" : ", ";
+    names += material_name(m);
+  }
+  throw ValueError("unknown material '" + std::string(name) + "' (expected " + names + ")");
+}
+
 std::array<float, 3> material_color(Material material) {
   switch (material) {
     case Material::kLeaf:

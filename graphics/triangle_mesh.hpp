@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -52,6 +53,10 @@ inline bool is_obstacle(Material m) {
 
 // "bark", "leaf", "obstacle", "crown", "translucent_obstacle", "terrain".
 std::string_view material_name(Material material);
+// Inverse of material_name: the material of that name, or none.
+std::optional<Material> find_material(std::string_view name);
+// The same, throwing ValueError listing every name when there is none.
+Material material_from_name(std::string_view name);
 
 // The material's diffuse colour, linear RGB in [0, 1], shared by every renderer and exporter:
 // brown bark, green leaves, neutral grey stone for obstacles, a lighter green for crowns, a

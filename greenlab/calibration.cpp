@@ -178,6 +178,10 @@ FitResult fit_gl1(const PlantParams& params, const std::vector<Target>& targets,
   if (names.empty()) {
     throw ValueError("no parameters to fit: list them in [calibration] parameters = [...]");
   }
+  if (options.max_iterations < 1) {
+    throw ValueError("max_iterations: expected a count >= 1, got " +
+                     std::to_string(options.max_iterations));
+  }
   if (targets.size() < names.size()) {
     throw ValueError("fitting " + std::to_string(names.size()) + " parameters needs at least as " +
                      "many targets, got " + std::to_string(targets.size()));

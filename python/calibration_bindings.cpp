@@ -146,7 +146,6 @@ void bind_fit_result(py::module_& m) {
       "fit_gl1",
       [](const gl::PlantParams& params, const std::vector<gl::Target>& targets,
          const std::vector<std::string>& names, int max_iterations) {
-        if (max_iterations < 1) throw ValueError("max_iterations: expected a count >= 1");
         gl::FitOptions o;
         o.max_iterations = max_iterations;
         py::gil_scoped_release release;

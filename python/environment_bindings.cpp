@@ -67,11 +67,14 @@ py::tuple evaluate(const env::LightModel& model, const PointArray& points) {
   return light_arrays(std::move(samples));
 }
 
-Eigen::Vector3d unit_above_horizon(const Eigen::Vector3d& d, const char* what) {
-  if (!(d.z() > 0.0) || !d.allFinite()) {
-    throw ValueError(std::string(what) + ": expected a direction above the horizon (z > 0)");
-  }
-  return d.normalized();
+// Sets one field of a scene's sky through the library's check, leaving the sky as it was when
+// the value is refused.
+template <typename Set>
+void set_checked_sky(env::Scene& scene, const Set& set) {
+  env::Sky sky = scene.sky;
+  set(sky);
+  env::validate(sky);
+  scene.sky = sky;
 }
 
 env::Scene scene_from(py::handle scene) {
@@ -182,19 +185,20 @@ void bind_scene(py::module_& m) {
       .def_property(
           "brightest", [](const env::Scene& s) { return s.sky.brightest; },
           [](env::Scene& s, const Eigen::Vector3d& d) {
-            s.sky.brightest = unit_above_horizon(d, "brightest");
+            set_checked_sky(s, [&](env::Sky& sky) { sky.brightest = d.normalized(); });
           },
           "Unit direction of the brightest sky point")
       .def_property(
           "directions", [](const env::Scene& s) { return s.sky.directions; },
           [](env::Scene& s, int n) {
-            if (n < 1) throw ValueError("directions: expected a count >= 1");
-            s.sky.directions = n;
+            set_checked_sky(s, [&](env::Sky& sky) { sky.directions = n; });
           },
           "Stratified sky directions of the light integral (integer >= 1)")
       .def_property(
           "significance", [](const env::Scene& s) { return s.sky.significance; },
-          [](env::Scene& s, double v) { s.sky.significance = v; },
+          [](env::Scene& s, double v) {
+            set_checked_sky(s, [&](env::Sky& sky) { sky.significance = v; });
+          },
           "Shadow-volume cutoff: largest share of light an ignored occluder may remove")
       .def_property(
           "analytic", [](const env::Scene& s) { return s.sky.analytic; },
@@ -261,8 +265,7 @@ void bind_light(py::module_& m) {
       [](py::handle scene, const PointArray& points, std::optional<int> directions) {
         env::Scene s = scene_from(scene);
         if (directions) {
-          if (*directions < 1) throw ValueError("directions: expected a count >= 1");
-          s.sky.directions = *directions;
+          set_checked_sky(s, [&](env::Sky& sky) { sky.directions = *directions; });
         }
         std::unique_ptr<env::LightModel> model;
         {
@@ -629,7 +632,6 @@ void bind_adaptation(py::module_& m) {
   m.def(
       "analyze_tree",
       [](const TreeGraph& tree, py::handle params, const Eigen::Vector3d& brightest) {
-        const Eigen::Vector3d b = unit_above_horizon(brightest, "brightest");
         // None: defaults; a dict goes through the keyword constructor AnalysisParams(**params).
         env::AnalysisParams p;
         if (py::isinstance<py::dict>(params)) {
@@ -639,7 +641,7 @@ void bind_adaptation(py::module_& m) {
           p = params.cast<env::AnalysisParams>();
         }
         py::gil_scoped_release release;
-        return env::analyze_tree(tree, p, b);
+        return env::analyze_tree(tree, p, brightest);
       },
       py::arg("tree"), py::arg("params") = py::none(),
       py::arg("brightest") = Eigen::Vector3d::UnitZ().eval(),

@@ -56,18 +56,9 @@ void bind_mesh_options(py::module_& m) {
   // Junctions are a name, like the command line's --junctions.
   mo.def_property(
       "junctions",
-      [](const gr::MeshOptions& o) {
-        return o.junctions == gr::JunctionMode::kContinuous ? "continuous" : "separate";
-      },
+      [](const gr::MeshOptions& o) { return std::string(gr::junction_mode_name(o.junctions)); },
       [](gr::MeshOptions& o, const std::string& name) {
-        if (name == "separate") {
-          o.junctions = gr::JunctionMode::kSeparate;
-        } else if (name == "continuous") {
-          o.junctions = gr::JunctionMode::kContinuous;
-        } else {
-          throw ValueError("unknown junction mode '" + name +
-                           "' (expected separate or continuous)");
-        }
+        o.junctions = gr::junction_mode_from_name(name);
       },
       "'separate' (one closed tube per chain) or 'continuous' (Reynolds)");
   // Foliage of leaf clusters is a name too, like --foliage.
@@ -130,14 +121,11 @@ void bind_triangle_mesh(py::module_& m) {
           "triangle_count",
           [](const TM& mesh, std::optional<std::string> material) {
             if (!material) return mesh.triangle_count();
-            for (gr::Material kind : gr::kMaterials) {
-              if (*material == gr::material_name(kind)) return mesh.triangle_count(kind);
-            }
-            throw ValueError("unknown material '" + *material +
-                             "' (expected bark, leaf, obstacle, crown or translucent_obstacle)");
+            return mesh.triangle_count(gr::material_from_name(*material));
           },
           py::arg("material") = py::none(),
-          "Triangles, or those of 'bark', 'leaf', 'obstacle', 'crown' or 'translucent_obstacle'")
+          "Triangles, or those of 'bark', 'leaf', 'obstacle', 'crown', 'translucent_obstacle' or "
+          "'terrain'")
       .def_property_readonly(
           "positions",
           [](py::object self) {
@@ -289,7 +277,6 @@ void bind_render(py::module_& m) {
       [](const gr::TriangleMesh& mesh, int width, int height, const std::string& view,
          const std::string& color_by, bool ground, bool scalar_bar) {
         gr::RenderOptions o;
-        if (width < 1 || height < 1) throw ValueError("image size: expected width, height >= 1");
         o.width = width;
         o.height = height;
         o.view = gr::view_from_name(view);

@@ -75,8 +75,12 @@ def test_scene_and_light_errors():
         fspm.light(fspm.Scene(), np.zeros((4, 2)))
     with pytest.raises(fspm.ParameterError, match="directions"):
         fspm.light(fspm.Scene(), np.zeros((1, 3)), directions=0)
-    with pytest.raises(fspm.ParameterError, match="horizon"):
-        fspm.Scene().brightest = (1, 0, -1)
+    with pytest.raises(fspm.ParameterError, match="non-zero direction"):
+        fspm.Scene().brightest = (0, 0, 0)
+    with pytest.raises(fspm.ParameterError, match=r"\[0, 1\)"):
+        fspm.Scene().significance = 1.5
+    with pytest.raises(fspm.ParameterError, match="1048576"):
+        fspm.Scene().directions = 1 << 21
     with pytest.raises(TypeError):
         fspm.light("scene.json", np.zeros((1, 3)))
 

@@ -4,7 +4,9 @@
 #include <Eigen/Geometry>
 #include <limits>
 
+#include "environment/light_model.hpp"
 #include "environment/occluders.hpp"
+#include "environment/sky.hpp"
 #include "fspm/error.hpp"
 
 namespace fspm::environment {
@@ -41,6 +43,43 @@ TEST(OccluderValidation, Ground) {
   EXPECT_NO_THROW(validate(Ground{-1.0, 0.0, true}));
   EXPECT_THROW(validate(Ground{kNan, 0.0, true}), ValueError);
   EXPECT_THROW(validate(Ground{0.0, 2.0, true}), ValueError);
+}
+
+// The sky checks itself too, and every light model built from a scene uses that check.
+TEST(SkyValidation, RefusesWhatNoLightIntegralCanUse) {
+  EXPECT_NO_THROW(validate(Sky{}));
+  Sky s;
+  s.directions = 0;
+  EXPECT_THROW(validate(s), ValueError);
+  s.directions = (1 << 20) + 1;
+  EXPECT_THROW(validate(s), ValueError);
+  s = Sky{};
+  s.significance = 1.0;
+  EXPECT_THROW(validate(s), ValueError);
+  s.significance = kNan;
+  EXPECT_THROW(validate(s), ValueError);
+  s = Sky{};
+  s.brightest = Eigen::Vector3d::Zero();
+  EXPECT_THROW(validate(s), ValueError);
+  s.brightest = {0, 0, 2};  // not normalized
+  EXPECT_THROW(validate(s), ValueError);
+  Scene scene;
+  scene.sky.directions = -3;
+  EXPECT_THROW(LightModel{scene}, ValueError);
+}
+
+// Pirk eq. 4.3's sky, I = cos^2 of the angle to the brightest point, is the same for b and -b:
+// a brightest point below the horizon is allowed and lights a sphere's shadow like its mirror.
+TEST(SkyValidation, BrightestBelowTheHorizonLightsLikeItsMirror) {
+  Scene below;
+  below.sky.brightest = Eigen::Vector3d(1, 0, -1).normalized();
+  below.spheres.push_back({{-1.5, 0.0, 1.5}, 1.0, 0.0, false});  // towards the mirror of b
+  Scene above = below;
+  above.sky.brightest = -below.sky.brightest;
+  const LightSample a = LightModel(below).evaluate({0, 0, 0});
+  const LightSample b = LightModel(above).evaluate({0, 0, 0});
+  EXPECT_LT(a.light, 0.9);
+  EXPECT_NEAR(a.light, b.light, 1e-12);
 }
 
 }  // namespace

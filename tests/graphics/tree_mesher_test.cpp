@@ -21,6 +21,22 @@ using testing::small_tree;
 std::size_t tube_vertices(std::size_t m, std::size_t s) { return (m + 1) * (s + 1) + 2 * (s + 1); }
 std::size_t tube_triangles(std::size_t m, std::size_t s) { return 2 * m * s + 2 * s; }
 
+// Junction modes and materials by the names the command line, scene files and Python use.
+TEST(MeshNames, JunctionModesAndMaterialsRoundTripTheirNames) {
+  for (JunctionMode m : {JunctionMode::kSeparate, JunctionMode::kContinuous}) {
+    EXPECT_EQ(junction_mode_from_name(junction_mode_name(m)), m);
+  }
+  EXPECT_THROW(junction_mode_from_name("smooth"), ValueError);
+  for (Material m : kMaterials) EXPECT_EQ(material_from_name(material_name(m)), m);
+  EXPECT_FALSE(find_material("marble").has_value());
+  try {
+    material_from_name("marble");
+    FAIL() << "expected ValueError";
+  } catch (const ValueError& e) {
+    EXPECT_NE(std::string(e.what()).find("terrain"), std::string::npos) << e.what();
+  }
+}
+
 TEST(SidesForRadius, ClampsCircumferenceOverEdge) {
   MeshOptions o;
   o.edge_length_m = 0.01;

@@ -99,6 +99,13 @@ TEST(Calibration, NonConvergenceReportsFinalCost) {
   }
 }
 
+TEST(Calibration, RefusesAnIterationLimitBelowOne) {
+  const PlantParams truth = parse_plant_params(kPlant);
+  FitOptions o;
+  o.max_iterations = 0;
+  EXPECT_THROW(fit_gl1(truth, synthetic_targets(truth, 3), {}, o), ValueError);
+}
+
 TEST(Calibration, TargetsCsv) {
   const auto t =
       parse_targets_csv("quantity,age,cycle,value\nleaf_mass,1,2,0.5\nproduction,,3,1e-2\n");
