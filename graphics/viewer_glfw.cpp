@@ -980,8 +980,25 @@ struct WindBuffer {
   std::vector<Eigen::Vector3f> positions, normals;
 };
 
+// The blended corners (crown volumes) of the posed mesh, in blended_part's order, placed anew
+// in the soup, which is sorted again before it is drawn.
+void sway_blended(GpuStep& g, const TriangleMesh& mesh, const WindBuffer& w) {
+  BlendedPart& part = g.blended.front();
+  if (part.positions.empty()) return;
+  std::size_t corner = 0;
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    if (!is_blended(mesh.materials[t])) continue;
+    for (auto i : mesh.triangles[t]) {
+      part.positions[corner] = w.positions[i];
+      part.normals[corner] = w.normals[i];
+      ++corner;
+    }
+  }
+  place_blended(g, {{glm::mat4(1.0f)}});
+}
+
 // The step's one mesh posed at t_s, its positions and normals written over the uploaded ones
-// (the shadow pass draws the same buffer, so the shadows sway too).
+// (the shadow pass draws the same buffer, so the shadows sway too), and its crown volumes.
 void sway(GpuStep& g, WindBuffer& w, const ViewerWind& wind, double t_s, double strength) {
   const GpuMesh& m = g.meshes.front();
   const std::size_t n = wind.mesh.vertex_count();
@@ -1000,6 +1017,7 @@ void sway(GpuStep& g, WindBuffer& w, const ViewerWind& wind, double t_s, double 
   }
   glBufferSubData(GL_ARRAY_BUFFER, 0, bytes, w.interleaved.data());
   glBindBuffer(GL_ARRAY_BUFFER, 0);
+  sway_blended(g, wind.mesh, w);
 }
 
 // What a frame needs besides the GPU: the scene, the step references for recolouring, the ages,
