@@ -20,6 +20,7 @@
 
 #include "graphics/instance_lod.hpp"
 #include "graphics/instanced_mesh.hpp"
+#include "graphics/relief_crown.hpp"
 #include "graphics/triangle_mesh.hpp"
 
 namespace fspm::graphics {
@@ -59,6 +60,9 @@ struct ViewerOptions {
   // A tree in the wind (viewer_wind.hpp): the one step, posed every frame; the time is the
   // wall clock's, or frame / 24 s for a screenshot (so that it is reproducible).
   std::shared_ptr<const ViewerWind> wind;
+  // Crowns drawn by relief-mapped ray casting of their cubemaps (relief_crown.hpp, Argudo 5.1),
+  // with the opaque geometry; they take part in the framing but cast no shadow.
+  std::vector<ReliefCrown> relief_crowns;
   // Test hook: called before every frame with the frame's number (from 0) and the controls,
   // which it may change as the panel would.
   std::function<void(int frame, ViewerControls& controls)> before_frame;

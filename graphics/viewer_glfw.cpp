@@ -7,6 +7,8 @@
 #include <GL/glcorearb.h>
 #include <GLFW/glfw3.h>
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -16,6 +18,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <map>
+#include <memory>
 #include <string>
 #include <thread>
 #include <vector>
@@ -26,6 +29,7 @@
 #include "graphics/variance_shadow.hpp"
 #include "graphics/viewer.hpp"
 #include "graphics/viewer_panel.hpp"
+#include "graphics/viewer_relief.hpp"
 #include "graphics/viewer_wind.hpp"
 
 namespace fspm::graphics {
@@ -652,6 +656,21 @@ void measure_values(const std::vector<StepRef>& steps, const std::string& color_
   }
 }
 
+// The corners of each placed copy's cube around the crown's bounding sphere.
+void relief_bounds(const ReliefCrown& crown, glm::vec3& lo, glm::vec3& hi) {
+  validate(crown);
+  const float r = crown.max_radius_m();
+  for (const Eigen::Matrix4f& m : crown.placements) {
+    for (int k = 0; k < 8; ++k) {
+      const Eigen::Vector3f corner =
+          crown.centre_m + r * Eigen::Vector3f(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+      const Eigen::Vector3f w = (m * corner.homogeneous()).head<3>();
+      lo = glm::min(lo, glm::vec3(w.x(), w.y(), w.z()));
+      hi = glm::max(hi, glm::vec3(w.x(), w.y(), w.z()));
+    }
+  }
+}
+
 // Step 1: the arguments checked before any window opens; the bounds of every step and the range
 // of the colour attribute.
 Scene check_and_measure(const std::vector<StepRef>& steps, const ViewerOptions& o,
@@ -671,6 +690,7 @@ Scene check_and_measure(const std::vector<StepRef>& steps, const ViewerOptions& 
   scene.lo = glm::vec3(1e30f);
   scene.hi = glm::vec3(-1e30f);
   for (const auto& step : steps) bounds(step, scene.lo, scene.hi);
+  for (const ReliefCrown& crown : o.relief_crowns) relief_bounds(crown, scene.lo, scene.hi);
   if (scene.lo.x > scene.hi.x) scene.lo = scene.hi = glm::vec3(0.0f);
   measure_values(steps, o.color_by, scene);
   return scene;
@@ -713,6 +733,7 @@ struct GpuScene {
   std::vector<GpuStep> steps, coarse;
   GLuint ground_program = 0;
   GLuint ground_vao = 0;  // no attributes: the ground's triangle comes from gl_VertexID
+  std::unique_ptr<ReliefCrownRenderer> relief;  // with ViewerOptions::relief_crowns
 };
 
 GpuScene upload_scene(const std::vector<StepRef>& steps, const std::vector<StepRef>& coarse,
@@ -725,6 +746,7 @@ GpuScene upload_scene(const std::vector<StepRef>& steps, const std::vector<StepR
   for (const auto& step : coarse) g.coarse.push_back(upload(step, o, scene));
   g.ground_program = program(kGroundVs, kGroundFs, true);
   glGenVertexArrays(1, &g.ground_vao);
+  if (!o.relief_crowns.empty()) g.relief = std::make_unique<ReliefCrownRenderer>(o.relief_crowns);
   return g;
 }
 
@@ -735,6 +757,7 @@ void release(GpuScene& g) {
       release(step.soup.mesh);
     }
   }
+  g.relief.reset();  // while the context is current
   glDeleteVertexArrays(1, &g.ground_vao);
   glDeleteProgram(g.ground_program);
   glDeleteProgram(g.shadow_program);
@@ -941,6 +964,10 @@ void draw_frame(const GpuScene& gpu, const GpuStep& g, const Targets& t, const F
   glUniform3fv(glGetUniformLocation(p, "eye"), 1, glm::value_ptr(f.eye));
   set_shadow_uniforms(p, shadows);
   for (const GpuMesh& m : g.meshes) draw(m, Part::kOpaque);
+  if (gpu.relief) {
+    gpu.relief->draw(glm::value_ptr(f.mvp), glm::value_ptr(f.eye), glm::value_ptr(f.sun));
+    glUseProgram(p);  // the blended soup below is drawn by the scene program
+  }
   glEnable(GL_BLEND);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);  // keep alpha 1
   glDepthMask(GL_FALSE);

@@ -1,0 +1,78 @@
+#include "graphics/relief_crown.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "fspm/error.hpp"
+
+namespace fspm::graphics {
+namespace {
+
+struct FaceCoordinates {
+  int face = 0;
+  float u = 0.0f;  // in [-1, 1], right on the face as drawn
+  float v = 0.0f;  // in [-1, 1], down
+};
+
+// The inverse of crown/cubemap.cpp's texel_direction: which face a direction falls on, and where.
+FaceCoordinates face_coordinates(const Eigen::Vector3f& d) {
+  const Eigen::Vector3f a = d.cwiseAbs();
+  if (a.z() >= a.x() && a.z() >= a.y()) {
+    const bool top = d.z() > 0.0f;
+    return {top ? 4 : 5, d.x() / a.z(), (top ? -d.y() : d.y()) / a.z()};
+  }
+  if (a.x() >= a.y()) {
+    const bool right = d.x() > 0.0f;
+    return {right ? 1 : 3, (right ? d.y() : -d.y()) / a.x(), -d.z() / a.x()};
+  }
+  const bool front = d.y() < 0.0f;
+  return {front ? 0 : 2, (front ? d.x() : -d.x()) / a.y(), -d.z() / a.y()};
+}
+
+}  // namespace
+
+float ReliefCrown::max_radius_m() const {
+  return radius_m.empty() ? 0.0f : *std::max_element(radius_m.begin(), radius_m.end());
+}
+
+void validate(const ReliefCrown& crown) {
+  const auto n = static_cast<std::size_t>(std::max(crown.face_size, 0));
+  if (crown.face_size < 1) throw ValueError("relief crown: expected a cubemap face size >= 1");
+  if (crown.radius_m.size() != 6 * n * n || crown.rgb.size() != 3 * 6 * n * n) {
+    throw ValueError(
+        "relief crown: expected cubemap strips of 6N x N texels (N = " + std::to_string(n) + ")");
+  }
+  for (float r : crown.radius_m) {
+    if (!std::isfinite(r) || r < 0.0f) {
+      throw ValueError("relief crown: expected radii that are finite and >= 0");
+    }
+  }
+  if (!(crown.max_radius_m() > 0.0f) || !crown.centre_m.allFinite()) {
+    throw ValueError("relief crown: expected a finite centre and a radius above 0");
+  }
+  for (const Eigen::Matrix4f& m : crown.placements) {
+    if (!m.allFinite() || std::abs(m.block<3, 3>(0, 0).determinant()) < 1e-12f) {
+      throw ValueError("relief crown: expected finite, invertible placements");
+    }
+  }
+}
+
+float relief_radius_m(const ReliefCrown& crown, const Eigen::Vector3f& direction) {
+  const FaceCoordinates f = face_coordinates(direction);
+  const int n = crown.face_size;
+  // Texel centres at (i + 0.5) / N: clamp to the face's outer centres so no sample leaves it.
+  const float x = std::clamp(0.5f * (f.u + 1.0f) * n - 0.5f, 0.0f, n - 1.0f);
+  const float y = std::clamp(0.5f * (f.v + 1.0f) * n - 0.5f, 0.0f, n - 1.0f);
+  const int x0 = std::min(static_cast<int>(x), n - 1), y0 = std::min(static_cast<int>(y), n - 1);
+  const int x1 = std::min(x0 + 1, n - 1), y1 = std::min(y0 + 1, n - 1);
+  const float fx = x - x0, fy = y - y0;
+  auto at = [&](int xi, int yi) {
+    return crown.radius_m[static_cast<std::size_t>(yi) * 6 * n + f.face * n + xi];
+  };
+  return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x1, y0)) +
+         fy * ((1 - fx) * at(x0, y1) + fx * at(x1, y1));
+}
+
+}  // namespace fspm::graphics

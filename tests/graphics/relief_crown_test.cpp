@@ -1,0 +1,175 @@
+// Relief-mapped crowns (Argudo 5.1): the radius lookup against the cubemap layout written out
+// here from its description (crown/cubemap.hpp, docs/crown.md), and the viewer's ray-cast crown
+// against the same surface drawn as triangles.
+#include "graphics/relief_crown.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <random>
+#include <string>
+
+#include "fspm/error.hpp"
+#include "graphics/image.hpp"
+#include "graphics/render.hpp"
+#include "graphics/tree_mesher.hpp"
+#include "graphics/viewer.hpp"
+#include "tests/graphics/test_trees.hpp"
+
+namespace fspm::graphics {
+namespace {
+
+// Face f, texel centre (x, y) of an N x N face: front -y, right +x, back +y, left -x (seen from
+// outside, z up, so the four form one strip), top +z with the front face below it, bottom -z
+// with the front face above it.
+Eigen::Vector3f texel_direction(int face, int x, int y, int n) {
+  const float u = 2.0f * (x + 0.5f) / n - 1.0f, v = 2.0f * (y + 0.5f) / n - 1.0f;
+  const Eigen::Vector3f d[6] = {{u, -1, -v},  {1, u, -v}, {-u, 1, -v},
+                                {-1, -u, -v}, {u, -v, 1}, {u, v, -1}};
+  return d[face].normalized();
+}
+
+// A lopsided crown: R(d) = 1 + 0.3 dx + 0.2 dy - 0.25 dz, so a face read the wrong way round
+// gives the wrong radius.
+float lopsided_radius(const Eigen::Vector3f& d) {
+  return 1.0f + 0.3f * d.x() + 0.2f * d.y() - 0.25f * d.z();
+}
+
+ReliefCrown crown_of(int n, float (*radius)(const Eigen::Vector3f&)) {
+  ReliefCrown c;
+  c.face_size = n;
+  c.radius_m.resize(6 * n * n);
+  c.rgb.assign(3 * 6 * n * n, 0);
+  for (int f = 0; f < 6; ++f) {
+    for (int y = 0; y < n; ++y) {
+      for (int x = 0; x < n; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * 6 * n + f * n + x;
+        c.radius_m[i] = radius(texel_direction(f, x, y, n));
+        c.rgb[3 * i] = 205;  // red: 0.8, 0.1, 0.1
+        c.rgb[3 * i + 1] = c.rgb[3 * i + 2] = 26;
+      }
+    }
+  }
+  c.centre_m = {0.0f, 0.0f, 1.5f};
+  return c;
+}
+
+TEST(ReliefCrown, RadiusLookupFollowsTheCubemapLayout) {
+  const ReliefCrown c = crown_of(64, lopsided_radius);
+  std::mt19937_64 rng(3);
+  std::normal_distribution<float> g;
+  for (int k = 0; k < 2000; ++k) {
+    const Eigen::Vector3f d = Eigen::Vector3f(g(rng), g(rng), g(rng)).normalized();
+    EXPECT_NEAR(relief_radius_m(c, d), lopsided_radius(d), 0.01f) << d.transpose();
+  }
+  EXPECT_NEAR(c.max_radius_m(), 1.0f + std::sqrt(0.09f + 0.04f + 0.0625f), 0.01f);
+}
+
+TEST(ReliefCrown, RefusesWhatCannotBeDrawn) {
+  EXPECT_NO_THROW(validate(crown_of(4, lopsided_radius)));
+  ReliefCrown c = crown_of(4, lopsided_radius);
+  c.radius_m.pop_back();
+  EXPECT_THROW(validate(c), ValueError);
+  c = crown_of(4, lopsided_radius);
+  c.radius_m[5] = std::nanf("");
+  EXPECT_THROW(validate(c), ValueError);
+  c = crown_of(4, lopsided_radius);
+  c.placements.front()(0, 0) = 0.0f;
+  c.placements.front()(1, 1) = 0.0f;
+  EXPECT_THROW(validate(c), ValueError);
+}
+
+// The lopsided surface as triangles: a latitude-longitude sphere around the centre with each
+// vertex at R(d) d, coloured like the crown.
+TriangleMesh lopsided_mesh(const Eigen::Vector3f& centre) {
+  TriangleMesh m;
+  const int slices = 96, stacks = 48;
+  for (int i = 0; i <= stacks; ++i) {
+    for (int j = 0; j <= slices; ++j) {
+      const float th = static_cast<float>(M_PI) * i / stacks;
+      const float ph = 2.0f * static_cast<float>(M_PI) * j / slices;
+      const Eigen::Vector3f d(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph),
+                              std::cos(th));
+      m.positions.push_back(centre + lopsided_radius(d) * d);
+      m.normals.push_back(d);
+      m.uvs.emplace_back(0.0f, 0.0f);
+    }
+  }
+  for (int i = 0; i < stacks; ++i) {
+    for (int j = 0; j < slices; ++j) {
+      const auto a = static_cast<std::uint32_t>(i * (slices + 1) + j), b = a + slices + 1;
+      m.triangles.push_back({a, a + 1, b});
+      m.triangles.push_back({a + 1, b + 1, b});
+      m.materials.insert(m.materials.end(), 2, Material::kLeaf);
+    }
+  }
+  for (const auto& [name, value] : {std::pair{"red", 0.8f}, {"green", 0.1f}, {"blue", 0.1f}}) {
+    m.add_attribute(name).assign(m.positions.size(), value);
+  }
+  return m;
+}
+
+std::vector<bool> red_pixels(const Image& image) {
+  std::vector<bool> red;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const auto* p = image.pixel(x, y);
+      red.push_back(p[0] > p[1] + 25 && p[0] > p[2] + 25);  // lit or in shade
+    }
+  }
+  return red;
+}
+
+// Seen from the viewer's starting camera, the ray-cast crown covers the pixels the triangulated
+// surface covers (intersection over union), both beside the same small trunk and framed alike.
+TEST(ReliefCrown, ViewerDrawsTheSurfaceOfItsRadiusCubemap) {
+  if (!viewer_available()) GTEST_SKIP() << "built without the viewer";
+  if (!display_available()) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
+  TreeGraph tree;
+  testing::add(tree, kNoNode, {0, 0, 0}, {0, 0, 0.6}, 0.05, 0, 0);
+  TriangleMesh trunk = mesh_tree(tree, {});
+  const ReliefCrown crown = crown_of(128, lopsided_radius);
+  // Degenerate triangles at the corners of the cube the viewer frames a relief crown by, so that
+  // both pictures are framed alike.
+  const float r = crown.max_radius_m();
+  for (int k = 0; k < 8; ++k) {
+    const auto v = static_cast<std::uint32_t>(trunk.positions.size());
+    trunk.positions.push_back(crown.centre_m +
+                              r * Eigen::Vector3f(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1));
+    trunk.normals.push_back(Eigen::Vector3f::UnitZ());
+    trunk.uvs.emplace_back(0.0f, 0.0f);
+    for (auto& a : trunk.attributes) a.values.push_back(0.0f);
+    trunk.triangles.push_back({v, v, v});
+    trunk.materials.push_back(Material::kBark);
+  }
+  TriangleMesh with_mesh = trunk;
+  with_mesh.append(lopsided_mesh(crown.centre_m));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("fspm_relief_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  ViewerOptions o;
+  o.width = 240;
+  o.height = 180;
+  o.shadows = false;
+  o.screenshot = (dir / "mesh.png").string();
+  run_viewer({with_mesh}, {0.0}, o);
+  const std::vector<bool> a = red_pixels(read_image(o.screenshot));
+  o.relief_crowns = {crown};
+  o.screenshot = (dir / "relief.png").string();
+  run_viewer({trunk}, {0.0}, o);
+  const std::vector<bool> b = red_pixels(read_image(o.screenshot));
+  std::filesystem::remove_all(dir);
+  std::size_t both = 0, either = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    both += a[i] && b[i];
+    either += a[i] || b[i];
+  }
+  ASSERT_GT(either, 2000u);  // the crown fills a good part of the picture
+  EXPECT_GT(static_cast<double>(both) / static_cast<double>(either), 0.97)
+      << both << " of " << either;
+}
+
+}  // namespace
+}  // namespace fspm::graphics
