@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/crown_cubemaps_file.hpp"
 #include "cli/full_command_list.hpp"
 #include "cli/output.hpp"
 #include "crown/auto_mask.hpp"
@@ -51,7 +52,7 @@ struct CrownCommand {
 // Where each output goes: OUT is a mesh file (.glb, .obj, .ply; the cubemaps beside it, named
 // after its stem) or a directory (crown.glb and the rest inside).
 struct OutputPaths {
-  std::string mesh, color, radius, relief, mask, billboards;
+  std::string mesh, color, radius, cubemaps, relief, mask, billboards;
 };
 
 OutputPaths output_paths(const std::string& out) {
@@ -80,6 +81,7 @@ OutputPaths output_paths(const std::string& out) {
   if (o.mesh.ends_with(".pvd")) throw ValueError("a crown is one mesh, not a .pvd sequence", out);
   o.color = beside("_color_cubemap.png");
   o.radius = beside("_radius_cubemap.exr");
+  o.cubemaps = crown_cubemaps_path(o.mesh);
   o.relief = beside("_relief.png");
   o.mask = beside("_mask.png");
   o.billboards = beside("_billboards.csv");
@@ -166,6 +168,7 @@ void write_outputs(const CrownCommand& c, const OutputPaths& paths, const crown:
   graphics::write_mesh(to_triangle_mesh(model.mesh), paths.mesh);
   crown::write_raster(crown::cubemap_strip(model.color), paths.color);
   crown::write_raster(crown::cubemap_strip(model.radius), paths.radius);
+  write_crown_cubemaps(paths.cubemaps, model.centre, model.radius.size, paths.color, paths.radius);
   crown::write_raster(relief_picture(model.relief), paths.relief);
   if (c.billboards) write_billboards(model.billboards, paths.billboards);
   const double ground_row = lowest_row(mask) + c.trunk_m / model.metres_per_pixel;
@@ -223,6 +226,7 @@ void run_crown(const CrownCommand& c) {
   nlohmann::json files = {{"mesh", paths.mesh},
                           {"color_cubemap", paths.color},
                           {"radius_cubemap", paths.radius},
+                          {"cubemaps", paths.cubemaps},
                           {"relief", paths.relief}};
   if (c.mask.empty()) files["mask"] = paths.mask;
   if (c.billboards) files["billboards"] = paths.billboards;

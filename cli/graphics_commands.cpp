@@ -18,6 +18,9 @@
 #include <optional>
 
 #include "cli/commands.hpp"
+#ifdef FSPM_HAVE_CROWN
+#include "cli/crown_cubemaps_file.hpp"
+#endif
 #include "cli/enum_option.hpp"
 #include "cli/full_command_list.hpp"
 #include "cli/graph_lod_option.hpp"
@@ -121,6 +124,7 @@ struct ViewCommand {
   int stages = 0;  // developmental stages per tree file (0: none)
   bool wind = false;
   WindArguments wind_args;
+  bool relief = false;
   LsystemDrawArguments lsystem;
   GraphLodArguments graph_lod;
   bool json = false;
@@ -670,7 +674,8 @@ struct ViewSource {
   InputKind kind = InputKind::kTree;
   TreeGraph tree;
   CompressedTreeGraph graph;
-  LsystemDrawing drawing;  // an L-system, drawn once
+  LsystemDrawing drawing;       // an L-system, drawn once
+  graphics::TriangleMesh mesh;  // a crown from fspm crown, read once
   LevelOfDetail lod;
   // With --stages: the tree's developmental model (Pirk 5), whose stage at time `age` is drawn.
   std::shared_ptr<const stages::DevelopmentalModel> model;
@@ -684,6 +689,7 @@ struct ViewSource {
       return mesh_compressed(graph, std::isinf(age) ? -1.0 : age, options, lod);
     }
     if (kind == InputKind::kLsystem) return mesh_lsystem(drawing, options);
+    if (kind == InputKind::kMesh) return graphics::InstancedMesh::single(mesh);
     if (model) {
       return graphics::InstancedMesh::single(
           graphics::mesh_tree(model->stage(std::isinf(age) ? 1.0 : age), options));
@@ -818,6 +824,8 @@ std::vector<ViewSource> read_view_sources(const ViewCommand& c, int size_px,
       if (c.stages > 0) s.model = std::make_shared<const stages::DevelopmentalModel>(s.tree);
     } else if (s.kind == InputKind::kLsystem) {
       s.drawing = draw_lsystem_file(path, c.lsystem, size_px);
+    } else if (s.kind == InputKind::kMesh) {
+      s.mesh = read_placed_mesh(path);
     } else {
       (void)graphics::read_scene_file(path);  // bad scene: error before any window
     }
@@ -887,6 +895,39 @@ void run_wind_view(const ViewCommand& c, graphics::ViewerOptions options,
   if (c.json) print_view_json(c, steps, stats, t0);
 }
 
+// fspm view CROWN --relief: a crown from fspm crown drawn by relief-mapped ray casting of its
+// cubemaps (Argudo 5.1) in place of its triangles; its trunk stays a mesh.
+void run_relief_view(const ViewCommand& c, graphics::ViewerOptions options,
+                     std::chrono::steady_clock::time_point t0) {
+  if (c.trees.size() != 1 || input_kind(c.trees[0]) != InputKind::kMesh) {
+    throw ValueError("--relief draws one crown from fspm crown (its .glb or .obj)");
+  }
+  if (!c.ages.empty() || c.stages > 0 || c.lod || c.wind) {
+    throw ValueError("--relief takes no --ages, --stages, --lod or --wind");
+  }
+#ifdef FSPM_HAVE_CROWN
+  options.relief_crowns.push_back(read_relief_crown(c.trees[0]));
+#else
+  throw ValueError("fspm was built without the crown module (OpenImageIO): no --relief");
+#endif
+  graphics::TriangleMesh trunk = read_placed_mesh(c.trees[0]);
+  // The crown's triangles (material leaf) give way to the ray-cast crown; the vertices stay.
+  std::vector<graphics::TriangleMesh::Triangle> triangles;
+  std::vector<graphics::Material> materials;
+  for (std::size_t t = 0; t < trunk.triangle_count(); ++t) {
+    if (trunk.materials[t] == graphics::Material::kLeaf) continue;
+    triangles.push_back(trunk.triangles[t]);
+    materials.push_back(trunk.materials[t]);
+  }
+  trunk.triangles = std::move(triangles);
+  trunk.materials = std::move(materials);
+  const std::vector<graphics::InstancedMesh> steps{graphics::InstancedMesh::single(trunk)};
+  if (!c.screenshot.empty()) rerun_under_xvfb_if_needed();
+  const std::vector<double> ages{std::numeric_limits<double>::infinity()};
+  const graphics::ViewerStats stats = graphics::run_instanced_viewer(steps, ages, options);
+  if (c.json) print_view_json(c, steps, stats, t0);
+}
+
 void run_view(const ViewCommand& c) {
   const auto t0 = std::chrono::steady_clock::now();
   if (!graphics::viewer_available()) {
@@ -899,6 +940,10 @@ void run_view(const ViewCommand& c) {
   check_graph_lod(c.graph_lod, c.trees, c.lod);
   if (c.wind) {
     run_wind_view(c, options, t0);
+    return;
+  }
+  if (c.relief) {
+    run_relief_view(c, options, t0);
     return;
   }
   if (c.stages > 0 && c.lod) throw ValueError("--stages and --lod exclude each other");
@@ -1088,6 +1133,9 @@ void add_view_command(CLI::App& app) {
        {"--wind-amplitude", "--wind-frequency", "--wind-direction", "--wind-period"}) {
     v->get_option(name)->needs(wind);
   }
+  v->add_flag("--relief", view->relief,
+              "Draw a crown from fspm crown (its .glb or .obj) by relief-mapped ray casting of "
+              "its cubemaps (Argudo 5.1) instead of its triangles");
   add_lod_options(v, view->lod, view->lod_distance_m);
   add_lsystem_draw_options(v, view->lsystem);
   add_graph_lod_options(v, view->graph_lod);

@@ -16,7 +16,7 @@
 namespace fspm::crown {
 namespace {
 
-// All channels of the first subimage as floats in [0, 1].
+// All channels of the first subimage as floats: 8-bit ones in [0, 1], float ones as stored.
 std::vector<float> read_pixels(const std::string& path, OIIO::ImageSpec& spec) {
   if (!std::filesystem::is_regular_file(path)) {
     throw IoError("cannot read image: no such file", path);
@@ -46,6 +46,16 @@ Raster read_rgb(const std::string& path) {
       out.values[3 * i + c] = std::clamp(pixels[i * n + (n >= 3 ? c : 0)], 0.0f, 1.0f);
     }
   }
+  return out;
+}
+
+Raster read_raster(const std::string& path) {
+  OIIO::ImageSpec spec;
+  Raster out;
+  out.values = read_pixels(path, spec);
+  out.width = spec.width;
+  out.height = spec.height;
+  out.channels = spec.nchannels;
   return out;
 }
 

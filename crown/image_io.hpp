@@ -11,6 +11,10 @@ namespace fspm::crown {
 // Throws IoError when the file cannot be read.
 Raster read_rgb(const std::string& path);
 
+// Every channel as it is stored (8-bit images in [0, 1], floats of .exr and .tif unclamped).
+// Throws IoError when the file cannot be read.
+Raster read_raster(const std::string& path);
+
 // A crown mask: pixels whose first channel is above half its range are crown.
 // Throws IoError when unreadable, ValueError when it has no crown pixel.
 Mask read_mask(const std::string& path);

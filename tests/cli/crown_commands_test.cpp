@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "graphics/image.hpp"
 #include "tests/cli/run_command.hpp"
 
 namespace fspm {
@@ -45,9 +46,59 @@ TEST(CrownCli, ReconstructsTheExamplePictureAndWritesEveryOutput) {
   EXPECT_EQ(vertices, j["vertices"].get<long>());
   EXPECT_EQ(faces, j["triangles"].get<long>());
   for (const char* name : {"tree_color_cubemap.png", "tree_radius_cubemap.exr", "tree_relief.png",
-                           "tree_mask.png", "tree_billboards.csv"}) {
+                           "tree_mask.png", "tree_billboards.csv", "tree_cubemaps.json"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / name)) << name;
   }
+}
+
+// Pixels of the crown's dark foliage greens (the example tree's), not of the sky or of the ground,
+// whose green barely exceeds its red.
+std::size_t foliage_pixels(const graphics::Image& image) {
+  std::size_t n = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const auto* p = image.pixel(x, y);
+      n += p[1] > p[0] + 30 && p[1] > p[2] + 30;
+    }
+  }
+  return n;
+}
+
+// fspm view CROWN --relief ray casts the crown from its cubemaps (Argudo 5.1), found through the
+// description fspm crown writes beside the mesh; without that description it says what is
+// missing, and it refuses anything but one crown mesh.
+TEST(CrownCli, ViewerRayCastsTheCrownFromItsCubemaps) {
+  const auto dir = scratch_dir("crown_relief");
+  auto r = run_fspm("crown " + kPhoto + " -o " + (dir / "oak").string() + " --json");
+  if (r.err.find("without OpenImageIO") != std::string::npos) GTEST_SKIP() << r.err;
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto made = nlohmann::json::parse(r.out);
+  std::ifstream in(dir / "oak" / "crown_cubemaps.json");
+  const auto d = nlohmann::json::parse(in);
+  EXPECT_EQ(d["cubemap_size"], made["cubemap_size"]);
+  EXPECT_EQ(d["radius_cubemap"], "crown_radius_cubemap.exr");
+  EXPECT_EQ(d["centre_m"].size(), 3u);
+  const std::string mesh = (dir / "oak" / "crown.glb").string();
+  r = run_fspm("view " + mesh + " --relief --no-panel --size 160x120 --json --screenshot " +
+               (dir / "relief.png").string());
+  if (r.err.find("without the viewer") != std::string::npos) GTEST_SKIP() << r.err;
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["triangles"], 0);  // no trunk: the crown is ray cast
+  // The crown fills a good part of the picture (the photograph's crown seen from the front).
+  EXPECT_GT(foliage_pixels(graphics::read_image((dir / "relief.png").string())), 160u * 120u / 20);
+  // Without --relief the viewer draws the mesh itself.
+  r = run_fspm("view " + mesh + " --no-panel --size 160x120 --json --screenshot " +
+               (dir / "mesh.png").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["triangles"], made["triangles"]);
+  EXPECT_GT(foliage_pixels(graphics::read_image((dir / "mesh.png").string())), 160u * 120u / 20);
+  r = run_fspm("view " + std::string(FSPM_SOURCE_DIR) + "/examples/trees/open_a12.treeb --relief");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("--relief draws one crown"), std::string::npos) << r.err;
+  std::filesystem::remove(dir / "oak" / "crown_cubemaps.json");
+  r = run_fspm("view " + mesh + " --relief --screenshot " + (dir / "x.png").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("written by fspm crown"), std::string::npos) << r.err;
 }
 
 // "-o crown/" (as in docs/crown.md) is the directory crown, made when missing, not a file
