@@ -29,7 +29,6 @@ fspm::FeatureCostModel feature_model(const TreeGraph& a, const TreeGraph& b,
   if (dims(fb, b, "Fb") != da) {
     throw fspm::ValueError("features: Fa and Fb need the same number of columns");
   }
-  if (!(unit_cost >= 0.0)) throw fspm::ValueError("unit_cost: expected a value >= 0");
   return fspm::FeatureCostModel(da, std::vector<double>(fa.data(), fa.data() + fa.size()),
                                 std::vector<double>(fb.data(), fb.data() + fb.size()), unit_cost);
 }
