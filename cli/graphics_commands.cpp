@@ -223,12 +223,33 @@ graphics::InstancedMesh load_part(const std::string& path, InputKind kind,
 }
 
 // Each distinct plant file of a scene meshed once, placed as often as the scene says.
+// A crown's mesh from fspm crown without the crown's triangles (material leaf), which a ray-cast
+// crown replaces; its trunk, if any, stays. The vertices stay too (they frame the view alike).
+graphics::TriangleMesh without_crown(graphics::TriangleMesh mesh) {
+  std::vector<graphics::TriangleMesh::Triangle> triangles;
+  std::vector<graphics::Material> materials;
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    if (mesh.materials[t] == graphics::Material::kLeaf) continue;
+    triangles.push_back(mesh.triangles[t]);
+    materials.push_back(mesh.materials[t]);
+  }
+  mesh.triangles = std::move(triangles);
+  mesh.materials = std::move(materials);
+  return mesh;
+}
+
 graphics::InstancedMesh place_plants(const graphics::SceneFile& scene,
-                                     const graphics::MeshOptions& options,
-                                     const LevelOfDetail& lod) {
+                                     const graphics::MeshOptions& options, const LevelOfDetail& lod,
+                                     bool crowns_as_relief) {
   std::vector<graphics::InstancedMesh> parts;
   for (const auto& source : scene.sources) {
-    parts.push_back(load_part(source.path, input_kind(source.path), "", source.age, options, lod));
+    const InputKind kind = input_kind(source.path);
+    if (crowns_as_relief && kind == InputKind::kMesh) {
+      parts.push_back(
+          graphics::InstancedMesh::single(without_crown(read_placed_mesh(source.path))));
+      continue;
+    }
+    parts.push_back(load_part(source.path, kind, "", source.age, options, lod));
   }
   std::vector<graphics::PartPlacement> placements;
   for (const auto& inst : scene.instances) {
@@ -262,11 +283,12 @@ void add_terrain(graphics::InstancedMesh& mesh, std::optional<graphics::Triangle
 // obstacles near the plants (`near_plants`, for pictures), or all of them whole. A scene without
 // plants shows its obstacles whole.
 graphics::InstancedMesh load_scene(const std::string& path, const graphics::MeshOptions& options,
-                                   bool near_plants, const LevelOfDetail& lod = {}) {
+                                   bool near_plants, const LevelOfDetail& lod = {},
+                                   bool crowns_as_relief = false) {
   std::optional<graphics::TriangleMesh> terrain;
   const SceneDescription description = read_landscape_scene(path, terrain);
   graphics::InstancedMesh mesh =
-      place_plants(graphics::scene_plants(description.plants), options, lod);
+      place_plants(graphics::scene_plants(description.plants), options, lod, crowns_as_relief);
   if (!description.obstacles.empty()) {
     add_scene_obstacles(mesh, environment::scene_from_description(description), path,
                         near_plants && !description.plants.empty());
@@ -895,33 +917,57 @@ void run_wind_view(const ViewCommand& c, graphics::ViewerOptions options,
   if (c.json) print_view_json(c, steps, stats, t0);
 }
 
-// fspm view CROWN --relief: a crown from fspm crown drawn by relief-mapped ray casting of its
-// cubemaps (Argudo 5.1) in place of its triangles; its trunk stays a mesh.
+#ifdef FSPM_HAVE_CROWN
+// The crowns of a scene from fspm crown, each with the placements of its copies.
+std::vector<graphics::ReliefCrown> scene_relief_crowns(const std::string& path) {
+  std::optional<graphics::TriangleMesh> terrain;
+  const graphics::SceneFile plants =
+      graphics::scene_plants(read_landscape_scene(path, terrain).plants);
+  std::vector<graphics::ReliefCrown> crowns;
+  for (std::size_t s = 0; s < plants.sources.size(); ++s) {
+    if (input_kind(plants.sources[s].path) != InputKind::kMesh) continue;
+    graphics::ReliefCrown crown = read_relief_crown(plants.sources[s].path);
+    crown.placements.clear();
+    for (const auto& inst : plants.instances) {
+      if (inst.source != s) continue;
+      Eigen::Matrix4f m = Eigen::Matrix4f::Identity();
+      m.block<3, 3>(0, 0) = inst.linear().cast<float>();
+      m.block<3, 1>(0, 3) = inst.position.cast<float>();
+      crown.placements.push_back(m);
+    }
+    crowns.push_back(std::move(crown));
+  }
+  if (crowns.empty()) throw ValueError("--relief: the scene places no crown from fspm crown", path);
+  return crowns;
+}
+#endif
+
+// fspm view CROWN|SCENE --relief: crowns from fspm crown drawn by relief-mapped ray casting of
+// their cubemaps (Argudo 5.1) in place of their triangles; trunks and everything else stay meshes.
 void run_relief_view(const ViewCommand& c, graphics::ViewerOptions options,
                      std::chrono::steady_clock::time_point t0) {
-  if (c.trees.size() != 1 || input_kind(c.trees[0]) != InputKind::kMesh) {
-    throw ValueError("--relief draws one crown from fspm crown (its .glb or .obj)");
+  const InputKind kind = c.trees.size() == 1 ? input_kind(c.trees[0]) : InputKind::kTree;
+  if (kind != InputKind::kMesh && kind != InputKind::kScene) {
+    throw ValueError(
+        "--relief draws the crowns of one crown file from fspm crown (its .glb or "
+        ".obj) or of one scene");
   }
   if (!c.ages.empty() || c.stages > 0 || c.lod || c.wind) {
     throw ValueError("--relief takes no --ages, --stages, --lod or --wind");
   }
 #ifdef FSPM_HAVE_CROWN
-  options.relief_crowns.push_back(read_relief_crown(c.trees[0]));
+  options.relief_crowns = kind == InputKind::kMesh
+                              ? std::vector<graphics::ReliefCrown>{read_relief_crown(c.trees[0])}
+                              : scene_relief_crowns(c.trees[0]);
 #else
   throw ValueError("fspm was built without the crown module (OpenImageIO): no --relief");
 #endif
-  graphics::TriangleMesh trunk = read_placed_mesh(c.trees[0]);
-  // The crown's triangles (material leaf) give way to the ray-cast crown; the vertices stay.
-  std::vector<graphics::TriangleMesh::Triangle> triangles;
-  std::vector<graphics::Material> materials;
-  for (std::size_t t = 0; t < trunk.triangle_count(); ++t) {
-    if (trunk.materials[t] == graphics::Material::kLeaf) continue;
-    triangles.push_back(trunk.triangles[t]);
-    materials.push_back(trunk.materials[t]);
-  }
-  trunk.triangles = std::move(triangles);
-  trunk.materials = std::move(materials);
-  const std::vector<graphics::InstancedMesh> steps{graphics::InstancedMesh::single(trunk)};
+  graphics::MeshOptions mesh_options;
+  set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
+  const std::vector<graphics::InstancedMesh> steps{
+      kind == InputKind::kMesh
+          ? graphics::InstancedMesh::single(without_crown(read_placed_mesh(c.trees[0])))
+          : load_scene(c.trees[0], mesh_options, true, {}, true)};
   if (!c.screenshot.empty()) rerun_under_xvfb_if_needed();
   const std::vector<double> ages{std::numeric_limits<double>::infinity()};
   const graphics::ViewerStats stats = graphics::run_instanced_viewer(steps, ages, options);
@@ -1133,9 +1179,10 @@ void add_view_command(CLI::App& app) {
        {"--wind-amplitude", "--wind-frequency", "--wind-direction", "--wind-period"}) {
     v->get_option(name)->needs(wind);
   }
-  v->add_flag("--relief", view->relief,
-              "Draw a crown from fspm crown (its .glb or .obj) by relief-mapped ray casting of "
-              "its cubemaps (Argudo 5.1) instead of its triangles");
+  v->add_flag(
+      "--relief", view->relief,
+      "Draw the crowns from fspm crown (a crown's .glb or .obj, or a scene placing them) by "
+      "relief-mapped ray casting of their cubemaps (Argudo 5.1) instead of triangles");
   add_lod_options(v, view->lod, view->lod_distance_m);
   add_lsystem_draw_options(v, view->lsystem);
   add_graph_lod_options(v, view->graph_lod);

@@ -92,9 +92,26 @@ TEST(CrownCli, ViewerRayCastsTheCrownFromItsCubemaps) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out)["triangles"], made["triangles"]);
   EXPECT_GT(foliage_pixels(graphics::read_image((dir / "mesh.png").string())), 160u * 120u / 20);
+  // A scene placing the crown twice, once turned and halved: both ray cast, nothing meshed.
+  testing::write_text(dir / "scene.json",
+                      R"({"fspm_scene": 2, "plants": [{"crown": "oak/", "position": [-6, 0, 0]},
+                          {"crown": "oak/crown.glb", "position": [5, 2, 0], "rotation_deg": 90,
+                           "scale": 0.5}]})");
+  r = run_fspm("view " + (dir / "scene.json").string() +
+               " --relief --no-panel --size 160x120 --json --screenshot " +
+               (dir / "scene.png").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["triangles"], 0);
+  EXPECT_GT(foliage_pixels(graphics::read_image((dir / "scene.png").string())), 160u * 120u / 20);
+  testing::write_text(dir / "trees.json", R"({"fspm_scene": 2, "plants": [{"file": ")" +
+                                              std::string(FSPM_SOURCE_DIR) +
+                                              R"(/examples/trees/open_a12.treeb"}]})");
+  r = run_fspm("view " + (dir / "trees.json").string() + " --relief");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("places no crown"), std::string::npos) << r.err;
   r = run_fspm("view " + std::string(FSPM_SOURCE_DIR) + "/examples/trees/open_a12.treeb --relief");
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("--relief draws one crown"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--relief draws the crowns of one crown file"), std::string::npos) << r.err;
   std::filesystem::remove(dir / "oak" / "crown_cubemaps.json");
   r = run_fspm("view " + mesh + " --relief --screenshot " + (dir / "x.png").string());
   EXPECT_EQ(r.exit_code, 1);
