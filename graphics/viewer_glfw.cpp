@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "fspm/error.hpp"
+#include "graphics/gl_shader.hpp"
 #include "graphics/image.hpp"
 #include "graphics/translucent_sort.hpp"
 #include "graphics/variance_shadow.hpp"
@@ -190,35 +191,10 @@ void main() {
 }
 )";
 
-GLuint compile(GLenum type, const char* source) {
-  const GLuint shader = glCreateShader(type);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[2048];
-    glGetShaderInfoLog(shader, sizeof(log), nullptr, log);
-    throw IoError(std::string("viewer shader does not compile: ") + log);
-  }
-  return shader;
-}
-
 // `fs` without its #version line when `with_vsm`: the version, then kVsmGlsl, then `fs`.
 GLuint program(const char* vs, const char* fs, bool with_vsm = false) {
-  const GLuint p = glCreateProgram();
-  const std::string fragment =
-      with_vsm ? std::string("#version 330 core\n") + kVsmGlsl + fs : std::string(fs);
-  const GLuint a = compile(GL_VERTEX_SHADER, vs), b = compile(GL_FRAGMENT_SHADER, fragment.c_str());
-  glAttachShader(p, a);
-  glAttachShader(p, b);
-  glLinkProgram(p);
-  glDeleteShader(a);
-  glDeleteShader(b);
-  GLint ok = 0;
-  glGetProgramiv(p, GL_LINK_STATUS, &ok);
-  if (!ok) throw IoError("viewer shaders do not link");
-  return p;
+  return gl_program(
+      vs, with_vsm ? std::string("#version 330 core\n") + kVsmGlsl + fs : std::string(fs));
 }
 
 glm::vec3 colormap(float t) {  // blue -> cyan -> green -> yellow -> red, as the VTK renders

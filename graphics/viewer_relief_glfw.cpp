@@ -8,7 +8,7 @@
 #include <array>
 #include <string>
 
-#include "fspm/error.hpp"
+#include "graphics/gl_shader.hpp"
 #include "graphics/viewer_relief.hpp"
 
 namespace fspm::graphics {
@@ -109,21 +109,6 @@ void main() {
 }
 )";
 
-GLuint compile_stage(GLenum type, const char* source) {
-  const GLuint shader = glCreateShader(type);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[2048];
-    glGetShaderInfoLog(shader, sizeof(log), nullptr, log);
-    glDeleteShader(shader);
-    throw IoError(std::string("relief crown shader does not compile: ") + log);
-  }
-  return shader;
-}
-
 GLuint texture_2d(GLint internal_format, int width, int height, GLenum format, GLenum type,
                   const void* data) {
   GLuint tex = 0;
@@ -156,21 +141,6 @@ struct ReliefCrownRenderer::Gpu {
 
 namespace {
 
-GLuint relief_program() {
-  const GLuint vs = compile_stage(GL_VERTEX_SHADER, kReliefVs);
-  const GLuint fs = compile_stage(GL_FRAGMENT_SHADER, kReliefFs);
-  const GLuint p = glCreateProgram();
-  glAttachShader(p, vs);
-  glAttachShader(p, fs);
-  glLinkProgram(p);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint ok = 0;
-  glGetProgramiv(p, GL_LINK_STATUS, &ok);
-  if (!ok) throw IoError("relief crown shaders do not link");
-  return p;
-}
-
 // The cube [-1, 1]^3 as 8 corners and 12 triangles, wound counter-clockwise seen from outside.
 void upload_cube(GLuint& vao, GLuint& vbo, GLuint& ibo) {
   const std::array<float, 24> corners = {-1, -1, -1, 1, -1, -1, 1, 1, -1, -1, 1, -1,
@@ -194,7 +164,7 @@ void upload_cube(GLuint& vao, GLuint& vbo, GLuint& ibo) {
 
 ReliefCrownRenderer::ReliefCrownRenderer(const std::vector<ReliefCrown>& crowns)
     : gpu_(std::make_unique<Gpu>()) {
-  gpu_->program = relief_program();
+  gpu_->program = gl_program(kReliefVs, kReliefFs);
   upload_cube(gpu_->vao, gpu_->vbo, gpu_->ibo);
   for (const ReliefCrown& c : crowns) {
     validate(c);
