@@ -61,7 +61,7 @@ struct ViewerOptions {
   // wall clock's, or frame / 24 s for a screenshot (so that it is reproducible).
   std::shared_ptr<const ViewerWind> wind;
   // Crowns drawn by relief-mapped ray casting of their cubemaps (relief_crown.hpp, Argudo 5.1),
-  // with the opaque geometry; they take part in the framing but cast no shadow.
+  // with the opaque geometry; they take part in the framing and in the shadows.
   std::vector<ReliefCrown> relief_crowns;
   // Test hook: called before every frame with the frame's number (from 0) and the controls,
   // which it may change as the panel would.

@@ -722,7 +722,9 @@ GpuScene upload_scene(const std::vector<StepRef>& steps, const std::vector<StepR
   for (const auto& step : coarse) g.coarse.push_back(upload(step, o, scene));
   g.ground_program = program(kGroundVs, kGroundFs, true);
   glGenVertexArrays(1, &g.ground_vao);
-  if (!o.relief_crowns.empty()) g.relief = std::make_unique<ReliefCrownRenderer>(o.relief_crowns);
+  if (!o.relief_crowns.empty()) {
+    g.relief = std::make_unique<ReliefCrownRenderer>(o.relief_crowns, kVsmGlsl);
+  }
   return g;
 }
 
@@ -902,6 +904,7 @@ void draw_shadow_map(const GpuScene& gpu, const GpuStep& g, const Targets& t,
   glUniformMatrix4fv(glGetUniformLocation(gpu.shadow_program, "light_mvp"), 1, GL_FALSE,
                      glm::value_ptr(f.light_mvp));
   for (const GpuMesh& m : g.meshes) draw(m);
+  if (gpu.relief) gpu.relief->draw_moments(glm::value_ptr(f.light_mvp), glm::value_ptr(f.sun));
   glDisable(GL_DEPTH_TEST);
   glUseProgram(gpu.blur_program);
   glUniform1i(glGetUniformLocation(gpu.blur_program, "source"), 0);
@@ -941,7 +944,10 @@ void draw_frame(const GpuScene& gpu, const GpuStep& g, const Targets& t, const F
   set_shadow_uniforms(p, shadows);
   for (const GpuMesh& m : g.meshes) draw(m, Part::kOpaque);
   if (gpu.relief) {
-    gpu.relief->draw(glm::value_ptr(f.mvp), glm::value_ptr(f.eye), glm::value_ptr(f.sun));
+    glUseProgram(gpu.relief->program());
+    set_shadow_uniforms(gpu.relief->program(), shadows);
+    gpu.relief->draw(glm::value_ptr(f.mvp), glm::value_ptr(f.eye), glm::value_ptr(f.sun),
+                     glm::value_ptr(f.light_mvp));
     glUseProgram(p);  // the blended soup below is drawn by the scene program
   }
   glEnable(GL_BLEND);

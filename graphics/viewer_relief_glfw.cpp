@@ -1,6 +1,7 @@
-// Relief-mapped ray casting of crowns in the viewer (Argudo 2014, 5.1). The march takes kSteps
-// equal steps through the bounding sphere, then bisects the step where the ray entered the crown;
-// the normal is the gradient of |q| - R(q), by central differences.
+// Relief-mapped ray casting of crowns in the viewer (Argudo 2014, 5.1). The march takes
+// kCameraSteps (kShadowSteps from the sun) equal steps through the bounding sphere, then bisects
+// the step where the ray entered the crown; the normal is the gradient of |q| - R(q), by central
+// differences.
 #define GL_GLEXT_PROTOTYPES
 #include <GL/glcorearb.h>
 
@@ -13,6 +14,10 @@
 
 namespace fspm::graphics {
 namespace {
+
+// Steps of the march through the bounding sphere, for the picture and for the shadow map.
+constexpr int kCameraSteps = 96;
+constexpr int kShadowSteps = 24;
 
 const char* kReliefVs = R"(#version 330 core
 layout(location = 0) in vec3 corner;  // of the cube [-1, 1]^3
@@ -27,19 +32,23 @@ void main() {
 }
 )";
 
-const char* kReliefFs = R"(#version 330 core
+// After "#version 330 core" and the viewer's variance-shadow code (lit()).
+const char* kReliefFs = R"(
 in vec3 v_local;
-uniform mat4 view_projection;
+uniform mat4 view_projection;  // the camera's, or the sun's in the moments pass
+uniform mat4 light_mvp;
 uniform mat4 model;
-uniform vec3 eye_local;  // the eye in the crown's frame
+uniform int moments_pass;  // 1: the sun's orthographic view, writing depth moments
+uniform vec3 eye_local;    // the eye in the crown's frame (camera pass)
+uniform vec3 ray_local;    // the sun's viewing direction in the crown's frame (moments pass)
 uniform vec3 centre;
 uniform float bound;
 uniform float face_size;
 uniform vec3 sun;
 uniform sampler2D radius_map;  // the 6N x N strip, row 0 at t = 0
 uniform sampler2D color_map;
+uniform int steps;  // of the march: fewer for shadows, which need less precision
 out vec4 frag;
-const int kSteps = 96;
 
 // graphics/relief_crown.cpp's face_coordinates and relief_radius_m: the face a direction falls
 // on, and the texel position within it, half a texel from the face's edges.
@@ -71,18 +80,20 @@ float outside(vec3 p) {  // > 0 outside the crown, <= 0 inside
 }
 
 void main() {
-  vec3 d = normalize(v_local - eye_local);
-  vec3 oc = eye_local - centre;
+  // The camera's rays leave the eye; the sun's are parallel, started outside the sphere.
+  vec3 d = moments_pass == 1 ? ray_local : normalize(v_local - eye_local);
+  vec3 origin = moments_pass == 1 ? v_local - 4.0 * bound * d : eye_local;
+  vec3 oc = origin - centre;
   float b = dot(oc, d);
   float disc = b * b - (dot(oc, oc) - bound * bound);
   if (disc < 0.0) discard;
   float t0 = max(-b - sqrt(disc), 0.0), t1 = -b + sqrt(disc);
   if (t1 <= t0) discard;
-  float dt = (t1 - t0) / float(kSteps);
+  float dt = (t1 - t0) / float(steps);
   float t = t0;
   bool hit = false;
-  for (int i = 0; i <= kSteps; ++i) {
-    if (outside(eye_local + t * d) <= 0.0) {
+  for (int i = 0; i <= steps; ++i) {
+    if (outside(origin + t * d) <= 0.0) {
       hit = true;
       break;
     }
@@ -92,9 +103,17 @@ void main() {
   float lo = max(t - dt, t0), hi = t;
   for (int i = 0; i < 8; ++i) {
     float mid = 0.5 * (lo + hi);
-    if (outside(eye_local + mid * d) <= 0.0) hi = mid; else lo = mid;
+    if (outside(origin + mid * d) <= 0.0) hi = mid; else lo = mid;
   }
-  vec3 p = eye_local + hi * d;
+  vec3 p = origin + hi * d;
+  vec4 world = model * vec4(p, 1.0);
+  vec4 clip = view_projection * world;
+  float depth = clamp(clip.z / clip.w * 0.5 + 0.5, 0.0, 1.0);
+  gl_FragDepth = depth;
+  if (moments_pass == 1) {  // as the viewer's moments pass (Pirk eq. 6.10), without slope bias
+    frag = vec4(depth, depth * depth, 0.0, 0.0);
+    return;
+  }
   float e = bound / 128.0;
   vec3 g = vec3(outside(p + vec3(e, 0, 0)) - outside(p - vec3(e, 0, 0)),
                 outside(p + vec3(0, e, 0)) - outside(p - vec3(0, e, 0)),
@@ -102,10 +121,9 @@ void main() {
   if (dot(g, g) < 1e-20) g = p - centre;
   vec3 n = normalize(mat3(model) * g);  // rotation times uniform scale
   vec3 albedo = texture(color_map, strip_uv(p - centre)).rgb;
-  vec3 c = albedo * (0.35 + 0.65 * max(dot(n, sun), 0.0));
+  float s = lit(light_mvp * world);
+  vec3 c = albedo * (0.35 + 0.65 * max(dot(n, sun), 0.0) * s);
   frag = vec4(pow(c, vec3(1.0 / 1.2)), 1.0);
-  vec4 clip = view_projection * model * vec4(p, 1.0);
-  gl_FragDepth = clamp(clip.z / clip.w * 0.5 + 0.5, 0.0, 1.0);
 }
 )";
 
@@ -162,9 +180,10 @@ void upload_cube(GLuint& vao, GLuint& vbo, GLuint& ibo) {
 
 }  // namespace
 
-ReliefCrownRenderer::ReliefCrownRenderer(const std::vector<ReliefCrown>& crowns)
+ReliefCrownRenderer::ReliefCrownRenderer(const std::vector<ReliefCrown>& crowns,
+                                         const std::string& shadow_glsl)
     : gpu_(std::make_unique<Gpu>()) {
-  gpu_->program = gl_program(kReliefVs, kReliefFs);
+  gpu_->program = gl_program(kReliefVs, "#version 330 core\n" + shadow_glsl + kReliefFs);
   upload_cube(gpu_->vao, gpu_->vbo, gpu_->ibo);
   for (const ReliefCrown& c : crowns) {
     validate(c);
@@ -191,10 +210,36 @@ ReliefCrownRenderer::~ReliefCrownRenderer() {
   glDeleteProgram(gpu_->program);
 }
 
-void ReliefCrownRenderer::draw(const float* view_projection, const float* eye,
-                               const float* sun) const {
+unsigned ReliefCrownRenderer::program() const { return gpu_->program; }
+
+void ReliefCrownRenderer::draw(const float* view_projection, const float* eye, const float* sun,
+                               const float* light_mvp) const {
+  glUseProgram(gpu_->program);
+  glUniformMatrix4fv(glGetUniformLocation(gpu_->program, "light_mvp"), 1, GL_FALSE, light_mvp);
+  glUniform1i(glGetUniformLocation(gpu_->program, "moments_pass"), 0);
+  glUniform1i(glGetUniformLocation(gpu_->program, "steps"), kCameraSteps);
+  draw_cubes(view_projection, sun, [&](const Eigen::Matrix4f& model) {
+    const Eigen::Vector4f eye_local = model.inverse() * Eigen::Vector4f(eye[0], eye[1], eye[2], 1);
+    glUniform3fv(glGetUniformLocation(gpu_->program, "eye_local"), 1, eye_local.data());
+  });
+}
+
+void ReliefCrownRenderer::draw_moments(const float* light_mvp, const float* sun) const {
+  glUseProgram(gpu_->program);
+  glUniform1i(glGetUniformLocation(gpu_->program, "moments_pass"), 1);
+  glUniform1i(glGetUniformLocation(gpu_->program, "steps"), kShadowSteps);
+  draw_cubes(light_mvp, sun, [&](const Eigen::Matrix4f& model) {
+    // The sun looks along -sun; in the crown's frame, through the inverse rotation and scale.
+    const Eigen::Vector3f ray =
+        (model.block<3, 3>(0, 0).inverse() * -Eigen::Vector3f(sun[0], sun[1], sun[2])).normalized();
+    glUniform3fv(glGetUniformLocation(gpu_->program, "ray_local"), 1, ray.data());
+  });
+}
+
+template <typename PerPlacement>
+void ReliefCrownRenderer::draw_cubes(const float* view_projection, const float* sun,
+                                     const PerPlacement& per_placement) const {
   const GLuint p = gpu_->program;
-  glUseProgram(p);
   auto at = [p](const char* name) { return glGetUniformLocation(p, name); };
   glUniformMatrix4fv(at("view_projection"), 1, GL_FALSE, view_projection);
   glUniform3fv(at("sun"), 1, sun);
@@ -203,7 +248,6 @@ void ReliefCrownRenderer::draw(const float* view_projection, const float* eye,
   glEnable(GL_CULL_FACE);
   glCullFace(GL_FRONT);  // back faces: the cube is drawn even with the eye inside it
   glBindVertexArray(gpu_->vao);
-  const Eigen::Vector4f eye_world(eye[0], eye[1], eye[2], 1.0f);
   for (const GpuCrown& g : gpu_->crowns) {
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, g.radius_tex);
@@ -213,9 +257,8 @@ void ReliefCrownRenderer::draw(const float* view_projection, const float* eye,
     glUniform1f(at("bound"), g.bound);
     glUniform1f(at("face_size"), g.face_size);
     for (const Eigen::Matrix4f& model : g.placements) {
-      const Eigen::Vector4f eye_local = model.inverse() * eye_world;
       glUniformMatrix4fv(at("model"), 1, GL_FALSE, model.data());
-      glUniform3fv(at("eye_local"), 1, eye_local.data());
+      per_placement(model);
       glDrawElements(GL_TRIANGLES, 36, GL_UNSIGNED_INT, nullptr);
     }
   }

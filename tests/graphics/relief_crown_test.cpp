@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <random>
 #include <string>
@@ -122,53 +123,99 @@ std::vector<bool> red_pixels(const Image& image) {
   return red;
 }
 
-// Seen from the viewer's starting camera, the ray-cast crown covers the pixels the triangulated
-// surface covers (intersection over union), both beside the same small trunk and framed alike.
-TEST(ReliefCrown, ViewerDrawsTheSurfaceOfItsRadiusCubemap) {
-  if (!viewer_available()) GTEST_SKIP() << "built without the viewer";
-  if (!display_available()) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
-  TreeGraph tree;
-  testing::add(tree, kNoNode, {0, 0, 0}, {0, 0, 0.6}, 0.05, 0, 0);
-  TriangleMesh trunk = mesh_tree(tree, {});
-  const ReliefCrown crown = crown_of(128, lopsided_radius);
-  // Degenerate triangles at the corners of the cube the viewer frames a relief crown by, so that
-  // both pictures are framed alike.
-  const float r = crown.max_radius_m();
-  for (int k = 0; k < 8; ++k) {
-    const auto v = static_cast<std::uint32_t>(trunk.positions.size());
-    trunk.positions.push_back(crown.centre_m +
-                              r * Eigen::Vector3f(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1));
-    trunk.normals.push_back(Eigen::Vector3f::UnitZ());
-    trunk.uvs.emplace_back(0.0f, 0.0f);
-    for (auto& a : trunk.attributes) a.values.push_back(0.0f);
-    trunk.triangles.push_back({v, v, v});
-    trunk.materials.push_back(Material::kBark);
+// The lopsided crown beside a small trunk, seen from the viewer's starting camera: drawn as
+// triangles, or ray cast from its cubemaps; both framed alike (degenerate triangles at the
+// corners of the cube the viewer frames a relief crown by).
+class ReliefView : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!viewer_available()) GTEST_SKIP() << "built without the viewer";
+    if (!display_available()) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
+    TreeGraph tree;
+    testing::add(tree, kNoNode, {0, 0, 0}, {0, 0, 0.6}, 0.05, 0, 0);
+    trunk_ = mesh_tree(tree, {});
+    crown_ = crown_of(128, lopsided_radius);
+    const float r = crown_.max_radius_m();
+    for (int k = 0; k < 8; ++k) {
+      const auto v = static_cast<std::uint32_t>(trunk_.positions.size());
+      trunk_.positions.push_back(
+          crown_.centre_m + r * Eigen::Vector3f(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1));
+      trunk_.normals.push_back(Eigen::Vector3f::UnitZ());
+      trunk_.uvs.emplace_back(0.0f, 0.0f);
+      for (auto& a : trunk_.attributes) a.values.push_back(0.0f);
+      trunk_.triangles.push_back({v, v, v});
+      trunk_.materials.push_back(Material::kBark);
+    }
+    dir_ = std::filesystem::temp_directory_path() / ("fspm_relief_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir_);
   }
-  TriangleMesh with_mesh = trunk;
-  with_mesh.append(lopsided_mesh(crown.centre_m));
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("fspm_relief_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  ViewerOptions o;
-  o.width = 240;
-  o.height = 180;
-  o.shadows = false;
-  o.screenshot = (dir / "mesh.png").string();
-  run_viewer({with_mesh}, {0.0}, o);
-  const std::vector<bool> a = red_pixels(read_image(o.screenshot));
-  o.relief_crowns = {crown};
-  o.screenshot = (dir / "relief.png").string();
-  run_viewer({trunk}, {0.0}, o);
-  const std::vector<bool> b = red_pixels(read_image(o.screenshot));
-  std::filesystem::remove_all(dir);
-  std::size_t both = 0, either = 0;
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  Image shot(bool relief, bool shadows) {
+    ViewerOptions o;
+    o.width = 240;
+    o.height = 180;
+    o.shadows = shadows;
+    o.screenshot = (dir_ / "shot.png").string();
+    TriangleMesh mesh = trunk_;
+    if (relief) {
+      o.relief_crowns = {crown_};
+    } else {
+      mesh.append(lopsided_mesh(crown_.centre_m));
+    }
+    run_viewer({mesh}, {0.0}, o);
+    return read_image(o.screenshot);
+  }
+
+  TriangleMesh trunk_;
+  ReliefCrown crown_;
+  std::filesystem::path dir_;
+};
+
+double intersection_over_union(const std::vector<bool>& a, const std::vector<bool>& b,
+                               std::size_t& either) {
+  std::size_t both = 0;
+  either = 0;
   for (std::size_t i = 0; i < a.size(); ++i) {
     both += a[i] && b[i];
     either += a[i] || b[i];
   }
+  return either == 0 ? 0.0 : static_cast<double>(both) / static_cast<double>(either);
+}
+
+// The ray-cast crown covers the pixels the triangulated surface covers.
+TEST_F(ReliefView, DrawsTheSurfaceOfItsRadiusCubemap) {
+  std::size_t either = 0;
+  const double iou = intersection_over_union(red_pixels(shot(false, false)),
+                                             red_pixels(shot(true, false)), either);
   ASSERT_GT(either, 2000u);  // the crown fills a good part of the picture
-  EXPECT_GT(static_cast<double>(both) / static_cast<double>(either), 0.97)
-      << both << " of " << either;
+  EXPECT_GT(iou, 0.97);
+}
+
+// Pixels outside the crown that the shadows darken: the ground under the crown.
+std::vector<bool> shadowed_pixels(const Image& lit, const Image& unlit) {
+  const std::vector<bool> crown = red_pixels(lit);
+  std::vector<bool> shadow;
+  for (int y = 0; y < lit.height; ++y) {
+    for (int x = 0; x < lit.width; ++x) {
+      const auto *a = lit.pixel(x, y), *b = unlit.pixel(x, y);
+      const int darker = (b[0] - a[0]) + (b[1] - a[1]) + (b[2] - a[2]);
+      shadow.push_back(!crown[shadow.size()] && darker > 30);
+    }
+  }
+  return shadow;
+}
+
+// The ray-cast crown casts the triangulated crown's shadow: the same march from the sun writes
+// its depth moments into the variance shadow map.
+TEST_F(ReliefView, CastsTheShadowOfItsSurface) {
+  const std::vector<bool> mesh = shadowed_pixels(shot(false, true), shot(false, false));
+  const std::vector<bool> relief = shadowed_pixels(shot(true, true), shot(true, false));
+  std::size_t either = 0;
+  const double iou = intersection_over_union(mesh, relief, either);
+  ASSERT_GT(either, 300u);
+  EXPECT_GT(iou, 0.8) << either << " pixels in either shadow";
+  std::printf("shadow IoU %.3f of %zu\n", iou, either);
 }
 
 }  // namespace
