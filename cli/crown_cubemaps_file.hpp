@@ -1,7 +1,7 @@
 #pragma once
 // The description `fspm crown` writes beside a crown's mesh, STEM_cubemaps.json, so that the
 // crown can be drawn by relief-mapped ray casting of its cubemaps (Argudo 5.1; fspm view
-// --relief):
+// --ray-cast):
 //   {"fspm_crown_cubemaps": 1, "centre_m": [x, y, z], "cubemap_size": N,
 //    "color_cubemap": "STEM_color_cubemap.png", "radius_cubemap": "STEM_radius_cubemap.exr"}
 // The centre is in the mesh's frame (metres); the cubemap names are relative to the file.

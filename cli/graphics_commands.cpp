@@ -124,7 +124,7 @@ struct ViewCommand {
   int stages = 0;  // developmental stages per tree file (0: none)
   bool wind = false;
   WindArguments wind_args;
-  bool relief = false;
+  bool ray_cast = false;
   LsystemDrawArguments lsystem;
   GraphLodArguments graph_lod;
   bool json = false;
@@ -937,30 +937,31 @@ std::vector<graphics::ReliefCrown> scene_relief_crowns(const std::string& path) 
     }
     crowns.push_back(std::move(crown));
   }
-  if (crowns.empty()) throw ValueError("--relief: the scene places no crown from fspm crown", path);
+  if (crowns.empty())
+    throw ValueError("--ray-cast: the scene places no crown from fspm crown", path);
   return crowns;
 }
 #endif
 
-// fspm view CROWN|SCENE --relief: crowns from fspm crown drawn by relief-mapped ray casting of
+// fspm view CROWN|SCENE --ray-cast: crowns from fspm crown drawn by relief-mapped ray casting of
 // their cubemaps (Argudo 5.1) in place of their triangles; trunks and everything else stay meshes.
-void run_relief_view(const ViewCommand& c, graphics::ViewerOptions options,
-                     std::chrono::steady_clock::time_point t0) {
+void run_ray_cast_view(const ViewCommand& c, graphics::ViewerOptions options,
+                       std::chrono::steady_clock::time_point t0) {
   const InputKind kind = c.trees.size() == 1 ? input_kind(c.trees[0]) : InputKind::kTree;
   if (kind != InputKind::kMesh && kind != InputKind::kScene) {
     throw ValueError(
-        "--relief draws the crowns of one crown file from fspm crown (its .glb or "
+        "--ray-cast draws the crowns of one crown file from fspm crown (its .glb or "
         ".obj) or of one scene");
   }
   if (!c.ages.empty() || c.stages > 0 || c.lod || c.wind) {
-    throw ValueError("--relief takes no --ages, --stages, --lod or --wind");
+    throw ValueError("--ray-cast takes no --ages, --stages, --lod or --wind");
   }
 #ifdef FSPM_HAVE_CROWN
   options.relief_crowns = kind == InputKind::kMesh
                               ? std::vector<graphics::ReliefCrown>{read_relief_crown(c.trees[0])}
                               : scene_relief_crowns(c.trees[0]);
 #else
-  throw ValueError("fspm was built without the crown module (OpenImageIO): no --relief");
+  throw ValueError("fspm was built without the crown module (OpenImageIO): no --ray-cast");
 #endif
   graphics::MeshOptions mesh_options;
   set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
@@ -988,8 +989,8 @@ void run_view(const ViewCommand& c) {
     run_wind_view(c, options, t0);
     return;
   }
-  if (c.relief) {
-    run_relief_view(c, options, t0);
+  if (c.ray_cast) {
+    run_ray_cast_view(c, options, t0);
     return;
   }
   if (c.stages > 0 && c.lod) throw ValueError("--stages and --lod exclude each other");
@@ -1180,7 +1181,7 @@ void add_view_command(CLI::App& app) {
     v->get_option(name)->needs(wind);
   }
   v->add_flag(
-      "--relief", view->relief,
+      "--ray-cast", view->ray_cast,
       "Draw the crowns from fspm crown (a crown's .glb or .obj, or a scene placing them) by "
       "relief-mapped ray casting of their cubemaps (Argudo 5.1) instead of triangles");
   add_lod_options(v, view->lod, view->lod_distance_m);

@@ -1,8 +1,9 @@
 #pragma once
 // Radius cubemap (Argudo 4.6): the distance from the crown centre to its surface in every
-// direction. Argudo renders the mesh into the cubemap; here every mesh vertex is splatted into the
-// texel of its direction (keeping the largest radius) and texels no vertex reached take the mean
-// of their filled neighbours, repeatedly, which for meshes denser than the cubemap is the same.
+// direction. Argudo renders the mesh into the cubemap; here every texel takes the distance along
+// its direction to the triangles it passes through (the largest: the outer surface), every
+// vertex is also splatted into its texel (for the few triangles across a face's plane), and
+// texels left empty take the mean of their filled neighbours.
 #include <Eigen/Core>
 
 #include "crown/crown_mesh.hpp"

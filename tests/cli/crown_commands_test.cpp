@@ -64,7 +64,7 @@ std::size_t foliage_pixels(const graphics::Image& image) {
   return n;
 }
 
-// fspm view CROWN --relief ray casts the crown from its cubemaps (Argudo 5.1), found through the
+// fspm view CROWN --ray-cast ray casts the crown from its cubemaps (Argudo 5.1), found through the
 // description fspm crown writes beside the mesh; without that description it says what is
 // missing, and it refuses anything but one crown mesh.
 TEST(CrownCli, ViewerRayCastsTheCrownFromItsCubemaps) {
@@ -79,14 +79,14 @@ TEST(CrownCli, ViewerRayCastsTheCrownFromItsCubemaps) {
   EXPECT_EQ(d["radius_cubemap"], "crown_radius_cubemap.exr");
   EXPECT_EQ(d["centre_m"].size(), 3u);
   const std::string mesh = (dir / "oak" / "crown.glb").string();
-  r = run_fspm("view " + mesh + " --relief --no-panel --size 160x120 --json --screenshot " +
+  r = run_fspm("view " + mesh + " --ray-cast --no-panel --size 160x120 --json --screenshot " +
                (dir / "relief.png").string());
   if (r.err.find("without the viewer") != std::string::npos) GTEST_SKIP() << r.err;
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out)["triangles"], 0);  // no trunk: the crown is ray cast
   // The crown fills a good part of the picture (the photograph's crown seen from the front).
   EXPECT_GT(foliage_pixels(graphics::read_image((dir / "relief.png").string())), 160u * 120u / 20);
-  // Without --relief the viewer draws the mesh itself.
+  // Without --ray-cast the viewer draws the mesh itself.
   r = run_fspm("view " + mesh + " --no-panel --size 160x120 --json --screenshot " +
                (dir / "mesh.png").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -98,7 +98,7 @@ TEST(CrownCli, ViewerRayCastsTheCrownFromItsCubemaps) {
                           {"crown": "oak/crown.glb", "position": [5, 2, 0], "rotation_deg": 90,
                            "scale": 0.5}]})");
   r = run_fspm("view " + (dir / "scene.json").string() +
-               " --relief --no-panel --size 160x120 --json --screenshot " +
+               " --ray-cast --no-panel --size 160x120 --json --screenshot " +
                (dir / "scene.png").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out)["triangles"], 0);
@@ -106,14 +106,16 @@ TEST(CrownCli, ViewerRayCastsTheCrownFromItsCubemaps) {
   testing::write_text(dir / "trees.json", R"({"fspm_scene": 2, "plants": [{"file": ")" +
                                               std::string(FSPM_SOURCE_DIR) +
                                               R"(/examples/trees/open_a12.treeb"}]})");
-  r = run_fspm("view " + (dir / "trees.json").string() + " --relief");
+  r = run_fspm("view " + (dir / "trees.json").string() + " --ray-cast");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("places no crown"), std::string::npos) << r.err;
-  r = run_fspm("view " + std::string(FSPM_SOURCE_DIR) + "/examples/trees/open_a12.treeb --relief");
+  r = run_fspm("view " + std::string(FSPM_SOURCE_DIR) +
+               "/examples/trees/open_a12.treeb --ray-cast");
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("--relief draws the crowns of one crown file"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--ray-cast draws the crowns of one crown file"), std::string::npos)
+      << r.err;
   std::filesystem::remove(dir / "oak" / "crown_cubemaps.json");
-  r = run_fspm("view " + mesh + " --relief --screenshot " + (dir / "x.png").string());
+  r = run_fspm("view " + mesh + " --ray-cast --screenshot " + (dir / "x.png").string());
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("written by fspm crown"), std::string::npos) << r.err;
 }

@@ -10,6 +10,7 @@
 
 #include "crown/billboard_cloud.hpp"
 #include "crown/color_cubemap.hpp"
+#include "crown/radius_cubemap.hpp"
 #include "crown/texture_synthesis.hpp"
 
 namespace fspm::crown {
@@ -49,6 +50,36 @@ TEST(Cubemap, LateralFacesFormAStripAroundTheCrown) {
   // The top face's bottom row meets the front face's top row.
   EXPECT_GT(texel_direction(4, 5, n - 0.5f, n).dot(texel_direction(0, 5, -0.5f, n)), 0.99999f);
   EXPECT_GT(texel_direction(5, 5, -0.5f, n).dot(texel_direction(0, 5, n - 0.5f, n)), 0.99999f);
+}
+
+// A cube of side 2 about the centre, 12 triangles and 8 vertices, far coarser than the cubemap:
+// every texel's radius is the distance along its direction to the cube, 1 / max |d_i|, which a
+// splat of the vertices alone could not give.
+TEST(RadiusCubemap, EveryTexelHoldsTheDistanceToTheSurfaceAlongItsDirection) {
+  CrownMesh cube;
+  for (int k = 0; k < 8; ++k) {
+    cube.positions.emplace_back(k & 1 ? 1.0f : -1.0f, k & 2 ? 1.0f : -1.0f, k & 4 ? 1.0f : -1.0f);
+  }
+  cube.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                    {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  cube.crown_triangles = cube.triangles.size();
+  const int n = 32;
+  const Cubemap r = radius_cubemap(cube, Eigen::Vector3f::Zero(), n);
+  int exact = 0, total = 0;
+  for (int f = 0; f < kCubeFaces; ++f) {
+    for (int y = 0; y < n; ++y) {
+      for (int x = 0; x < n; ++x) {
+        const Eigen::Vector3f d =
+            texel_direction(f, static_cast<float>(x), static_cast<float>(y), n);
+        const float expected = 1.0f / d.cwiseAbs().maxCoeff();
+        const float got = r.faces[static_cast<std::size_t>(f)].at(x, y);
+        EXPECT_NEAR(got, expected, 0.05f) << f << " " << x << " " << y;
+        exact += std::abs(got - expected) < 1e-4f;
+        ++total;
+      }
+    }
+  }
+  EXPECT_GE(exact, total - 8);  // the corners' texels also hold a corner vertex, sqrt(3) away
 }
 
 TEST(TextureSynthesis, MinimumErrorCutMatchesBruteForce) {
