@@ -975,8 +975,19 @@ void run_ray_cast_view(const ViewCommand& c, graphics::ViewerOptions options,
   if (c.json) print_view_json(c, steps, stats, t0);
 }
 
-void run_view(const ViewCommand& c) {
+// The folder fspm crown wrote (OUT/ holding crown.glb) stands for its crown, as in scene files.
+void resolve_crown_folders(std::vector<std::string>& paths) {
+  for (std::string& path : paths) {
+    const std::filesystem::path crown = std::filesystem::path(path) / "crown.glb";
+    if (std::filesystem::is_directory(path) && std::filesystem::is_regular_file(crown)) {
+      path = crown.string();
+    }
+  }
+}
+
+void run_view(ViewCommand c) {
   const auto t0 = std::chrono::steady_clock::now();
+  resolve_crown_folders(c.trees);
   if (!graphics::viewer_available()) {
     throw ValueError("fspm was built without the viewer (FSPM_WITH_VIEWER=OFF)");
   }
