@@ -87,8 +87,8 @@ TEST(CrownCli, ViewerRayCastsTheCrownFromItsCubemaps) {
   // The crown fills a good part of the picture (the photograph's crown seen from the front).
   EXPECT_GT(foliage_pixels(graphics::read_image((dir / "relief.png").string())), 160u * 120u / 20);
   // Without --ray-cast the viewer draws the mesh itself; the folder stands for its crown.
-  r = run_fspm("view " + (dir / "oak").string() + " --no-panel --size 160x120 --json --screenshot " +
-               (dir / "mesh.png").string());
+  r = run_fspm("view " + (dir / "oak").string() +
+               " --no-panel --size 160x120 --json --screenshot " + (dir / "mesh.png").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out)["triangles"], made["triangles"]);
   EXPECT_GT(foliage_pixels(graphics::read_image((dir / "mesh.png").string())), 160u * 120u / 20);
