@@ -5,11 +5,13 @@
 #ifdef FSPM_HAVE_CROWN
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <optional>
 #include <random>
 #include <string>
 
 #include "crown/auto_mask.hpp"
+#include "crown/cubemap.hpp"
 #include "crown/gap_fill.hpp"
 #include "crown/image_io.hpp"
 #include "crown/reconstruction.hpp"
@@ -30,6 +32,16 @@ crown::CrownModel reconstruct(const std::string& photo_path,
   options.relief_weight = relief;
   std::mt19937_64 rng(seed);
   return crown::reconstruct_crown(texture, mask, options, rng);
+}
+
+// A cubemap as the (N, 6N, C) float32 strip of its faces side by side, as fspm crown writes it.
+py::array_t<float> strip_array(const crown::Cubemap& cubemap) {
+  const crown::Raster strip = crown::cubemap_strip(cubemap);
+  py::array_t<float> out({static_cast<py::ssize_t>(strip.height),
+                          static_cast<py::ssize_t>(strip.width),
+                          static_cast<py::ssize_t>(strip.channels)});
+  std::copy(strip.values.begin(), strip.values.end(), out.mutable_data());
+  return out;
 }
 
 }  // namespace
@@ -58,6 +70,19 @@ void bind_crown(py::module_& m) {
             return out;
           },
           "Vertex indices of each triangle, counter-clockwise seen from outside, (M, 3) uint32")
+      .def_property_readonly(
+          "color_cubemap", [](const CrownModel& c) { return strip_array(c.color); },
+          "Colour cubemap, an (N, 6N, 3) float32 strip of the faces front (-y), right (+x), back "
+          "(+y), left (-x), top (+z), bottom (-z), as fspm crown writes it (docs/crown.md)")
+      .def_property_readonly(
+          "radius_cubemap", [](const CrownModel& c) { return strip_array(c.radius); },
+          "Radius cubemap, an (N, 6N, 1) float32 strip: metres from `centre` to the surface")
+      .def_property_readonly(
+          "centre",
+          [](const CrownModel& c) {
+            return std::vector<float>(c.centre.data(), c.centre.data() + 3);
+          },
+          "The crown's centre in m, [x, y, z]: the radii are measured from it")
       .def_readonly("volume_m3", &CrownModel::volume_m3, "Volume of the crown in m^3")
       .def_readonly("silhouette_pixels", &CrownModel::silhouette_pixels,
                     "Pixels of the crown's silhouette S (8-connected)")

@@ -37,6 +37,15 @@ def test_a_disc_becomes_a_sphere(tmp_path):
     r = np.linalg.norm(v - centre, axis=1)
     assert np.mean(np.abs(r - 3.95)) / 3.95 < 0.02
     assert set(crown.seconds) >= {"base_mesh", "relief", "texture_synthesis", "composition"}
+    # The cubemaps as fspm crown writes them: the sphere's radius in every direction from its
+    # centre, and the photograph's crown green.
+    radius, color = crown.radius_cubemap, crown.color_cubemap
+    n = radius.shape[0]
+    assert radius.shape == (n, 6 * n, 1) and color.shape == (n, 6 * n, 3)
+    assert np.allclose(crown.centre, centre, atol=0.1)
+    assert np.mean(np.abs(radius - 3.95)) / 3.95 < 0.02
+    mean = color.reshape(-1, 3).mean(axis=0)
+    assert mean[1] > mean[0] and mean[1] > mean[2]
 
 
 def test_mistakes_raise_builtin_exceptions(tmp_path):
