@@ -222,7 +222,6 @@ graphics::InstancedMesh load_part(const std::string& path, InputKind kind,
   return graphics::InstancedMesh::single(graphics::mesh_tree(tree, options));
 }
 
-// Each distinct plant file of a scene meshed once, placed as often as the scene says.
 // A crown's mesh from fspm crown without the crown's triangles (material leaf), which a ray-cast
 // crown replaces; its trunk, if any, stays. The vertices stay too (they frame the view alike).
 graphics::TriangleMesh without_crown(graphics::TriangleMesh mesh) {
@@ -238,13 +237,15 @@ graphics::TriangleMesh without_crown(graphics::TriangleMesh mesh) {
   return mesh;
 }
 
+// Each distinct plant file of a scene meshed once, placed as often as the scene says; with
+// `crowns_ray_cast`, crowns from fspm crown without their crown triangles.
 graphics::InstancedMesh place_plants(const graphics::SceneFile& scene,
                                      const graphics::MeshOptions& options, const LevelOfDetail& lod,
-                                     bool crowns_as_relief) {
+                                     bool crowns_ray_cast) {
   std::vector<graphics::InstancedMesh> parts;
   for (const auto& source : scene.sources) {
     const InputKind kind = input_kind(source.path);
-    if (crowns_as_relief && kind == InputKind::kMesh) {
+    if (crowns_ray_cast && kind == InputKind::kMesh) {
       parts.push_back(
           graphics::InstancedMesh::single(without_crown(read_placed_mesh(source.path))));
       continue;
@@ -284,11 +285,11 @@ void add_terrain(graphics::InstancedMesh& mesh, std::optional<graphics::Triangle
 // plants shows its obstacles whole.
 graphics::InstancedMesh load_scene(const std::string& path, const graphics::MeshOptions& options,
                                    bool near_plants, const LevelOfDetail& lod = {},
-                                   bool crowns_as_relief = false) {
+                                   bool crowns_ray_cast = false) {
   std::optional<graphics::TriangleMesh> terrain;
   const SceneDescription description = read_landscape_scene(path, terrain);
   graphics::InstancedMesh mesh =
-      place_plants(graphics::scene_plants(description.plants), options, lod, crowns_as_relief);
+      place_plants(graphics::scene_plants(description.plants), options, lod, crowns_ray_cast);
   if (!description.obstacles.empty()) {
     add_scene_obstacles(mesh, environment::scene_from_description(description), path,
                         near_plants && !description.plants.empty());
@@ -937,8 +938,9 @@ std::vector<graphics::ReliefCrown> scene_relief_crowns(const std::string& path) 
     }
     crowns.push_back(std::move(crown));
   }
-  if (crowns.empty())
+  if (crowns.empty()) {
     throw ValueError("--ray-cast: the scene places no crown from fspm crown", path);
+  }
   return crowns;
 }
 #endif

@@ -7,6 +7,19 @@
 namespace fspm::graphics {
 namespace {
 
+// The shader's or program's info log after a failed compile or link, in an IoError.
+[[noreturn]] void fail_with_log(const std::string& what, GLuint object, bool is_program) {
+  char log[2048] = {};
+  if (is_program) {
+    glGetProgramInfoLog(object, sizeof(log), nullptr, log);
+    glDeleteProgram(object);
+  } else {
+    glGetShaderInfoLog(object, sizeof(log), nullptr, log);
+    glDeleteShader(object);
+  }
+  throw IoError(what + log);
+}
+
 GLuint compile(GLenum type, const std::string& source) {
   const GLuint shader = glCreateShader(type);
   const char* text = source.c_str();
@@ -14,12 +27,7 @@ GLuint compile(GLenum type, const std::string& source) {
   glCompileShader(shader);
   GLint ok = 0;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[2048];
-    glGetShaderInfoLog(shader, sizeof(log), nullptr, log);
-    glDeleteShader(shader);
-    throw IoError(std::string("viewer shader does not compile: ") + log);
-  }
+  if (!ok) fail_with_log("viewer shader does not compile: ", shader, false);
   return shader;
 }
 
@@ -42,12 +50,7 @@ unsigned gl_program(const std::string& vertex_source, const std::string& fragmen
   glDeleteShader(fs);
   GLint ok = 0;
   glGetProgramiv(p, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[2048];
-    glGetProgramInfoLog(p, sizeof(log), nullptr, log);
-    glDeleteProgram(p);
-    throw IoError(std::string("viewer shaders do not link: ") + log);
-  }
+  if (!ok) fail_with_log("viewer shaders do not link: ", p, true);
   return p;
 }
 
