@@ -274,14 +274,19 @@ void ClusterLightField::add_occluder(std::uint32_t c, std::uint32_t j, const Eig
   // Does j shade c? Inside its shadow volume and not entirely below c's horizon.
   const double d2 = d.squaredNorm();
   if (d2 > reach2_[j] || d.z() + radius_[j] <= 0.0) return;
-  const double r2 = radius_[j] * radius_[j];
-  if (d2 <= r2) {
-    all *= gamma_[j];  // every ray from inside crosses the cluster
-    return;
-  }
-  const double dist = std::sqrt(d2);
-  caps_.push_back({d / dist, std::sqrt(d2 - r2) / dist, radius_[j] / dist, gamma_[j]});
+  add_sphere_occluder(d, d2, radius_[j], gamma_[j], all, caps_);
   (void)c;
+}
+
+std::vector<ClusterNeighbor>& ClusterLightField::own_neighbor_list(std::uint32_t c) {
+  std::vector<ClusterNeighbor>& list = neighbors_[c];
+  if (external_[c] != nullptr) {
+    const ListView view = neighbors(c);
+    list.assign(view.begin(), view.end());
+    for (ClusterNeighbor& e : list) e.index += view.offset;
+    external_[c] = nullptr;
+  }
+  return list;
 }
 
 void ClusterLightField::gather_from_grid(std::uint32_t c, double& all) {
@@ -347,13 +352,7 @@ void ClusterLightField::evaluate(std::uint32_t c, bool rebuild) {
   if (rebuild) {
     gather_from_grid(c, all);
   } else {
-    std::vector<ClusterNeighbor>& list = neighbors_[c];
-    if (external_[c] != nullptr) {
-      const ListView view = neighbors(c);
-      list.assign(view.begin(), view.end());
-      for (ClusterNeighbor& e : list) e.index += view.offset;
-      external_[c] = nullptr;
-    }
+    std::vector<ClusterNeighbor>& list = own_neighbor_list(c);
     for (ClusterNeighbor& e : list) {
       const std::uint32_t j = e.index;
       if (!alive_[j]) continue;
@@ -457,13 +456,7 @@ void ClusterLightField::evaluate_batch(std::span<const std::uint32_t> which,
       caps_.clear();
       continue;
     }
-    std::vector<ClusterNeighbor>& list = neighbors_[c];
-    if (external_[c] != nullptr) {
-      const ListView view = neighbors(c);
-      list.assign(view.begin(), view.end());
-      for (ClusterNeighbor& e : list) e.index += view.offset;
-      external_[c] = nullptr;
-    }
+    std::vector<ClusterNeighbor>& list = own_neighbor_list(c);
     for (ClusterNeighbor& e : list) e.relative = (center_[e.index] - center_[c]).cast<float>();
   }
 }

@@ -19,6 +19,7 @@
 #include "environment/light_model.hpp"
 #include "environment/scene.hpp"
 #include "environment/sky_occlusion_kernel.hpp"
+#include "environment/sphere_cap.hpp"
 
 namespace fspm::environment {
 
@@ -129,12 +130,7 @@ class ClusterLightField {
   const Eigen::Vector3d& open_direction() const { return open_direction_; }
 
  private:
-  struct Cap {
-    Eigen::Vector3d axis;
-    double cos_a;
-    double sin_a;
-    double gamma;
-  };
+  using Cap = SphereCap;
   void obstacle_visibility(const Eigen::Vector3d& p, std::vector<float>& vis,
                            double& distance) const;
   void update_sky_light(std::uint32_t c);
@@ -180,6 +176,8 @@ class ClusterLightField {
 
   void gather_from_grid(std::uint32_t c, double& all);
   void add_occluder(std::uint32_t c, std::uint32_t j, const Eigen::Vector3d& d, double& all);
+  // c's own neighbour list, first copied from a shared one (share_list) that it may then update.
+  std::vector<ClusterNeighbor>& own_neighbor_list(std::uint32_t c);
   // Applies caps_ to vis_, each cap only over the rings of directions it can reach.
   void occlude_cap_rings(DirectionColumns<float> columns);
 

@@ -230,13 +230,7 @@ LightSample LightModel::evaluate(const Eigen::Vector3d& p, std::uint32_t ignore)
     const Eigen::Vector3d d = s.center - p;
     const double d2 = d.squaredNorm();
     if (d2 > reach2_[i]) continue;  // outside the shadow volume
-    const double r2 = s.radius_m * s.radius_m;
-    if (d2 <= r2) {
-      all *= s.translucency;  // every ray from inside crosses the cluster
-      continue;
-    }
-    const double dist = std::sqrt(d2);
-    caps.push_back({d / dist, std::sqrt(d2 - r2) / dist, s.radius_m / dist, s.translucency});
+    add_sphere_occluder(d, d2, s.radius_m, s.translucency, all, caps);
   }
   bool boxes = false;
   for (std::size_t i = 0; i < scene_.boxes.size() && !boxes; ++i) boxes = box_relevant(i, p);

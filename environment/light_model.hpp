@@ -34,6 +34,7 @@
 
 #include "environment/hemisphere.hpp"
 #include "environment/scene.hpp"
+#include "environment/sphere_cap.hpp"
 
 namespace fspm::environment {
 
@@ -64,12 +65,7 @@ class LightModel {
   std::size_t index_entries() const { return cell_items_.size(); }
 
  private:
-  struct Cap {
-    Eigen::Vector3d axis;
-    double cos_a;
-    double sin_a;
-    double gamma;
-  };
+  using Cap = SphereCap;
   struct BoxSky;
   struct Region;
   struct FineSky;
