@@ -9,4 +9,11 @@ namespace fspm {
 // a no-op for small ranges and on other systems.
 void advise_huge_pages(const void* data, std::size_t bytes);
 
+// advise_huge_pages for the allocated capacity of each column (a std::vector or alike).
+template <typename... Columns>
+void advise_huge_page_columns(const Columns&... columns) {
+  (advise_huge_pages(columns.data(), columns.capacity() * sizeof(typename Columns::value_type)),
+   ...);
+}
+
 }  // namespace fspm

@@ -1,68 +1,30 @@
 #include "fspm/line_tree.hpp"
 
 #include "fspm/attribute_names.hpp"
+#include "fspm/columns.hpp"
 #include "fspm/huge_pages.hpp"
 
 namespace fspm {
 
 void LineTree::reserve(std::size_t n) {
-  parent_.reserve(n);
-  start_.reserve(n);
-  direction_.reserve(n);
-  length_.reserve(n);
-  radius_.reserve(n);
-  birth_time_.reserve(n);
-  physiological_age_.reserve(n);
-  order_.reserve(n);
-  kind_.reserve(n);
+  reserve_columns(n, parent_, start_, direction_, length_, radius_, birth_time_, physiological_age_,
+                  order_, kind_);
   if (has_dead_) dead_.reserve(n);
 }
 
-namespace {
-
-template <typename C>
-void advise(const C& column) {
-  advise_huge_pages(column.data(), column.capacity() * sizeof(typename C::value_type));
-}
-
-}  // namespace
-
 void LineTree::advise_huge_pages() {
-  advise(parent_);
-  advise(start_);
-  advise(direction_);
-  advise(length_);
-  advise(radius_);
-  advise(birth_time_);
-  advise(physiological_age_);
-  advise(order_);
-  advise(kind_);
-  advise(dead_);
+  advise_huge_page_columns(parent_, start_, direction_, length_, radius_, birth_time_,
+                           physiological_age_, order_, kind_, dead_);
 }
 
 void LineTree::clear() {
-  parent_.clear();
-  start_.clear();
-  direction_.clear();
-  length_.clear();
-  radius_.clear();
-  birth_time_.clear();
-  physiological_age_.clear();
-  order_.clear();
-  kind_.clear();
-  dead_.clear();
+  clear_columns(parent_, start_, direction_, length_, radius_, birth_time_, physiological_age_,
+                order_, kind_, dead_);
 }
 
 void LineTree::resize_for_overwrite(std::size_t n) {
-  parent_.resize(n);
-  start_.resize(n);
-  direction_.resize(n);
-  length_.resize(n);
-  radius_.resize(n);
-  birth_time_.resize(n);
-  physiological_age_.resize(n);
-  order_.resize(n);
-  kind_.resize(n);
+  resize_columns(n, parent_, start_, direction_, length_, radius_, birth_time_, physiological_age_,
+                 order_, kind_);
   if (has_dead_) dead_.resize(n);
 }
 

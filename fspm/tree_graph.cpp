@@ -4,6 +4,7 @@
 #include <bit>
 #include <cstring>
 
+#include "fspm/columns.hpp"
 #include "fspm/error.hpp"
 #include "fspm/huge_pages.hpp"
 
@@ -49,99 +50,37 @@ NodeId TreeGraph::add_node(NodeId parent, const NodeData& d) {
                      " does not exist");
   }
   if (size() >= kNoNode - 1) throw ValueError("tree graph is full (2^32 - 2 nodes)");
-  parent_.push_back(parent);
-  first_child_.push_back(kNoNode);
-  last_child_.push_back(kNoNode);
-  next_sibling_.push_back(kNoNode);
-  if (parent != kNoNode) {
-    if (last_child_[parent] == kNoNode) {
-      first_child_[parent] = id;
-    } else {
-      next_sibling_[last_child_[parent]] = id;
-    }
-    last_child_[parent] = id;
-  }
-  start_.push_back(d.start);
-  end_.push_back(d.end);
+  // What add_node_unchecked takes as given: a length (negative: the segment's) and a direction
+  // (zero or not a number: the segment's, +z for a point).
+  NodeData derived = d;
   const Eigen::Vector3d seg = d.end - d.start;
   const double seg_len = seg.norm();
-  length_.push_back(d.length < 0.0 ? seg_len : d.length);
-  if (d.direction.squaredNorm() > 0.0) {
-    direction_.push_back(d.direction);
-  } else if (seg_len > 0.0) {
-    direction_.push_back(seg / seg_len);
-  } else {
-    direction_.push_back(Eigen::Vector3d::UnitZ());
+  if (d.length < 0.0) derived.length = seg_len;
+  if (!(d.direction.squaredNorm() > 0.0)) {
+    derived.direction = seg_len > 0.0 ? Eigen::Vector3d(seg / seg_len) : Eigen::Vector3d::UnitZ();
   }
-  radius_.push_back(d.radius);
-  birth_time_.push_back(d.birth_time);
-  physiological_age_.push_back(d.physiological_age);
-  order_.push_back(d.order);
-  kind_.push_back(d.kind);
-  for (Attribute& a : attributes_) a.values.push_back(a.default_value);
-  return id;
+  return add_node_unchecked(parent, derived);
 }
 
 void TreeGraph::reserve(std::size_t n) {
-  parent_.reserve(n);
-  first_child_.reserve(n);
-  last_child_.reserve(n);
-  next_sibling_.reserve(n);
-  start_.reserve(n);
-  end_.reserve(n);
-  direction_.reserve(n);
-  length_.reserve(n);
-  radius_.reserve(n);
-  birth_time_.reserve(n);
-  physiological_age_.reserve(n);
-  order_.reserve(n);
-  kind_.reserve(n);
+  reserve_columns(n, parent_, first_child_, last_child_, next_sibling_, start_, end_, direction_,
+                  length_, radius_, birth_time_, physiological_age_, order_, kind_);
   for (Attribute& a : attributes_) a.values.reserve(n);
 }
 
 void TreeGraph::clear() { *this = TreeGraph(); }
 
 void TreeGraph::clear_keep_capacity() {
-  parent_.clear();
-  first_child_.clear();
-  last_child_.clear();
-  next_sibling_.clear();
-  start_.clear();
-  end_.clear();
-  direction_.clear();
-  length_.clear();
-  radius_.clear();
-  birth_time_.clear();
-  physiological_age_.clear();
-  order_.clear();
-  kind_.clear();
+  clear_columns(parent_, first_child_, last_child_, next_sibling_, start_, end_, direction_,
+                length_, radius_, birth_time_, physiological_age_, order_, kind_);
   attributes_.clear();
 }
 
-namespace {
-
-template <typename T>
-void advise_huge(const std::vector<T>& v) {
-  advise_huge_pages(v.data(), v.capacity() * sizeof(T));
-}
-
-}  // namespace
-
 void TreeGraph::advise_huge_pages() {
-  advise_huge(parent_);
-  advise_huge(first_child_);
-  advise_huge(last_child_);
-  advise_huge(next_sibling_);
-  advise_huge(start_);
-  advise_huge(end_);
-  advise_huge(direction_);
-  advise_huge(length_);
-  advise_huge(radius_);
-  advise_huge(birth_time_);
-  advise_huge(physiological_age_);
-  advise_huge(order_);
-  advise_huge(kind_);
-  for (const Attribute& a : attributes_) advise_huge(a.values);
+  advise_huge_page_columns(parent_, first_child_, last_child_, next_sibling_, start_, end_,
+                           direction_, length_, radius_, birth_time_, physiological_age_, order_,
+                           kind_);
+  for (const Attribute& a : attributes_) advise_huge_page_columns(a.values);
 }
 
 NodeData TreeGraph::data(NodeId n) const {
