@@ -4,7 +4,10 @@
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <random>
 
+#include "crown/billboard_cloud.hpp"
+#include "crown/cubemap.hpp"
 #include "crown/image_io.hpp"
 #include "fspm/atomic_file.hpp"
 #include "fspm/error.hpp"
@@ -15,6 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 constexpr const char* kFormatKey = "fspm_crown_cubemaps";
+constexpr std::uint64_t kBillboardSeed = 1;
 
 // A cubemap strip (6N x N) of `channels` channels, or ValueError naming the file.
 crown::Raster read_strip(const std::string& path, int size, int channels) {
@@ -103,6 +107,9 @@ graphics::ReliefCrown read_relief_crown(const std::string& mesh_path) {
       c.rgb[3 * i + k] = static_cast<std::uint8_t>(std::lround(255.0f * v));
     }
   }
+  // Argudo 5.2's billboards for close views, the same for every reading (a fixed seed).
+  std::mt19937_64 rng(kBillboardSeed);
+  c.billboards_m = crown::billboard_centres(crown::cubemap_from_strip(radius), d.centre_m, rng);
   graphics::validate(c);
   return c;
 }

@@ -20,7 +20,8 @@ void write_crown_cubemaps(const std::string& path, const Eigen::Vector3f& centre
                           const std::string& color_path, const std::string& radius_path);
 
 // The crown of the mesh `mesh_path` as a relief crown, placed where the mesh is (identity): its
-// description, then both cubemaps. Throws IoError naming a missing file ("draw it with fspm crown
+// description, then both cubemaps, and billboard centres for close views (Argudo 5.2, from the
+// radius cubemap with a fixed seed). Throws IoError naming a missing file ("draw it with fspm crown
 // first"), ParseError or ValueError naming the description or a cubemap of the wrong size.
 graphics::ReliefCrown read_relief_crown(const std::string& mesh_path);
 

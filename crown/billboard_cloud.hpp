@@ -13,8 +13,17 @@ namespace fspm::crown {
 
 std::vector<Eigen::Vector3f> blue_noise_ball(std::mt19937_64& rng);
 
+// Argudo 5.2's drawing order: the first `fixed` points stay first (they are always drawn); after
+// them each point is the one of those left whose summed distance to the points placed after the
+// fixed ones is largest, so that any prefix covers the crown evenly and a distant crown drawn
+// with few billboards is not lopsided. Ties keep the input order; at the first free position
+// (an empty sum) the first point left is taken. Returns the points reordered.
+std::vector<Eigen::Vector3f> progressive_order(std::vector<Eigen::Vector3f> points,
+                                               std::size_t fixed);
+
 // The ball scaled to the crown's largest radius around `centre`, keeping the points inside the
-// crown (closer to the centre than the radius cubemap in their direction).
+// crown (closer to the centre than the radius cubemap in their direction), in progressive_order
+// with the level-1 octree points (at most 8) fixed.
 std::vector<Eigen::Vector3f> billboard_centres(const Cubemap& radius, const Eigen::Vector3f& centre,
                                                std::mt19937_64& rng);
 

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+
+#include "fspm/error.hpp"
 
 namespace fspm::crown {
 
@@ -67,6 +70,24 @@ Raster cubemap_strip(const Cubemap& cubemap) {
       for (int x = 0; x < n; ++x) {
         for (int k = 0; k < c; ++k)
           out.at(f * n + x, y, k) = cubemap.faces[static_cast<std::size_t>(f)].at(x, y, k);
+      }
+    }
+  }
+  return out;
+}
+
+Cubemap cubemap_from_strip(const Raster& strip) {
+  const int n = strip.height;
+  if (n < 1 || strip.width != kCubeFaces * n) {
+    throw ValueError("expected a cubemap strip of 6N x N pixels, got " +
+                     std::to_string(strip.width) + " x " + std::to_string(strip.height));
+  }
+  Cubemap out(n, strip.channels);
+  for (int f = 0; f < kCubeFaces; ++f) {
+    for (int y = 0; y < n; ++y) {
+      for (int x = 0; x < n; ++x) {
+        for (int k = 0; k < strip.channels; ++k)
+          out.faces[static_cast<std::size_t>(f)].at(x, y, k) = strip.at(f * n + x, y, k);
       }
     }
   }

@@ -34,5 +34,7 @@ CubeTexel direction_texel(const Eigen::Vector3f& direction, int size);
 
 // The six faces side by side (6N x N), in face order, as one image file.
 Raster cubemap_strip(const Cubemap& cubemap);
+// The faces of such a strip (6N x N; throws ValueError for another shape).
+Cubemap cubemap_from_strip(const Raster& strip);
 
 }  // namespace fspm::crown

@@ -57,6 +57,17 @@ void validate(const ReliefCrown& crown) {
       throw ValueError("relief crown: expected finite, invertible placements");
     }
   }
+  for (const Eigen::Vector3f& b : crown.billboards_m) {
+    if (!b.allFinite()) throw ValueError("relief crown: expected finite billboard centres");
+  }
+}
+
+float billboard_count(float radius_px, std::size_t available) {
+  if (!(radius_px >= kBillboardFromPx) || available == 0) return 0.0f;
+  const float all = static_cast<float>(available);
+  const float share =
+      std::min(1.0f, (radius_px * radius_px) / (kAllBillboardsPx * kAllBillboardsPx));
+  return std::min(all, std::max(kFewestBillboards, share * all));
 }
 
 float relief_radius_m(const ReliefCrown& crown, const Eigen::Vector3f& direction) {

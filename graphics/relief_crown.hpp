@@ -6,6 +6,12 @@
 // eye marches through the crown's bounding sphere and stops at the first point p with
 // |p - centre| <= R(p - centre); the colour is the colour cubemap's in that direction. The viewer
 // draws it so (graphics/viewer.hpp); the lookup here is the one its shader uses.
+//
+// Close up the relief looks smooth, so a crown with billboard centres is drawn near the camera
+// as Argudo's detailed crown (5.2): a square of leaves facing the camera at each centre, cropped
+// to the crown by the radius cubemap, as many of them (in their order) as the crown's size on the
+// screen asks for, the last few fading in; and both forms are shaded by his three terms (5.3):
+// height in the crown, depth below its surface, and the sun's angle.
 #include <Eigen/Core>
 #include <cstdint>
 #include <vector>
@@ -17,6 +23,9 @@ struct ReliefCrown {
   std::vector<float> radius_m;                         // 6N x N, row-major strip
   std::vector<std::uint8_t> rgb;                       // 6N x N x 3, the same strip
   Eigen::Vector3f centre_m = Eigen::Vector3f::Zero();  // in the crown's own frame
+  // Billboard centres of the detailed crown in the crown's frame, in drawing order
+  // (crown/billboard_cloud.hpp: every prefix covers the crown); empty: always ray cast.
+  std::vector<Eigen::Vector3f> billboards_m;
   // World from the crown's frame, one per placed copy: rotation times uniform scale, translation.
   std::vector<Eigen::Matrix4f> placements{Eigen::Matrix4f::Identity()};
 
@@ -26,11 +35,26 @@ struct ReliefCrown {
 
 // Throws ValueError unless face_size >= 1, both strips hold 6N x N texels (three bytes each for
 // the colour), every radius is finite and >= 0 with at least one above 0, and every placement is
-// finite with an invertible rotation-and-scale.
+// finite with an invertible rotation-and-scale, and the billboard centres are finite.
 void validate(const ReliefCrown& crown);
 
 // R(d) for a direction d (not zero): the strip sampled bilinearly within d's face, clamped half a
 // texel from its edges, as the viewer's shader does.
 float relief_radius_m(const ReliefCrown& crown, const Eigen::Vector3f& direction);
+
+// Argudo 5.2: a crown whose radius appears `radius_px` pixels on the screen is ray cast below
+// kBillboardFromPx and drawn with billboards above it, all of them from kAllBillboardsPx on and
+// in between a share growing with the crown's area on the screen, never fewer than
+// kFewestBillboards; fewer billboards are drawn larger, keeping their summed area. The count is
+// fractional: the last kBillboardFade drawn fade in.
+inline constexpr float kBillboardFromPx = 140.0f;
+inline constexpr float kAllBillboardsPx = 320.0f;
+inline constexpr float kFewestBillboards = 16.0f;
+inline constexpr float kBillboardFade = 12.0f;
+// 0 (ray cast) or the fractional number of billboards to draw, at most `available`.
+float billboard_count(float radius_px, std::size_t available);
+// Side of a billboard's square as a share of the crown's largest radius: 320 centres in the
+// ball are about 0.24 R apart, so squares of 0.5 R overlap into a closed crown.
+inline constexpr float kBillboardSide = 0.5f;
 
 }  // namespace fspm::graphics

@@ -944,8 +944,10 @@ void draw_frame(const GpuScene& gpu, const GpuStep& g, const Targets& t, const F
   set_shadow_uniforms(p, shadows);
   for (const GpuMesh& m : g.meshes) draw(m, Part::kOpaque);
   if (gpu.relief) {
-    glUseProgram(gpu.relief->program());
-    set_shadow_uniforms(gpu.relief->program(), shadows);
+    for (const GLuint rp : gpu.relief->programs()) {
+      glUseProgram(rp);
+      set_shadow_uniforms(rp, shadows);
+    }
     gpu.relief->draw(glm::value_ptr(f.mvp), glm::value_ptr(f.eye), glm::value_ptr(f.sun),
                      glm::value_ptr(f.light_mvp));
     glUseProgram(p);  // the blended soup below is drawn by the scene program

@@ -4,8 +4,12 @@
 // (back faces, so the eye may be inside it) with a fragment shader that marches the ray from the
 // eye through the bounding sphere to the first point inside the radius cubemap, shades it with the
 // sun like the scene shader (shadows included), and writes that point's depth; the same march from
-// the sun writes the crowns' depth moments into the variance shadow map, so they cast shadows. For
+// the sun writes the crowns' depth moments into the variance shadow map, so they cast shadows. A
+// crown with billboard centres that is large on the screen is drawn instead as Argudo's detailed
+// crown (5.2): instanced squares of leaves facing the eye, cropped to the radius cubemap; its
+// shadow is still the relief's. Both forms are shaded by Argudo 5.3's three terms. For
 // the viewer's own use (viewer_glfw.cpp); needs the viewer's OpenGL context current while it lives.
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,8 +27,9 @@ class ReliefCrownRenderer {
   ReliefCrownRenderer(const ReliefCrownRenderer&) = delete;
   ReliefCrownRenderer& operator=(const ReliefCrownRenderer&) = delete;
 
-  // The program, for the caller to set the shadow uniforms of `shadow_glsl` on.
-  unsigned program() const;
+  // The programs (relief, billboards), for the caller to set the shadow uniforms of
+  // `shadow_glsl` on.
+  std::array<unsigned, 2> programs() const;
   // The camera pass. Column-major 4 x 4 matrices, the eye and the unit direction to the sun
   // (world); the sun's matrix places each point in the shadow map.
   void draw(const float* view_projection, const float* eye, const float* sun,
@@ -33,9 +38,16 @@ class ReliefCrownRenderer {
   void draw_moments(const float* light_mvp, const float* sun) const;
 
  private:
+  // Per placement of every crown, per_placement(crown, model) says whether to draw its cube (and
+  // sets the placement's uniforms), or how many billboards to draw (0: none).
   template <typename PerPlacement>
   void draw_cubes(const float* view_projection, const float* sun,
                   const PerPlacement& per_placement) const;
+  template <typename PerPlacement>
+  void draw_billboards(const float* view_projection, const float* sun,
+                       const PerPlacement& per_placement) const;
+  void bind_crown(unsigned program, const void* crown) const;
+  void set_frame_uniforms(unsigned program, const float* view_projection, const float* sun) const;
   struct Gpu;
   std::unique_ptr<Gpu> gpu_;
 };

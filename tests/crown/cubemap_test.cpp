@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <Eigen/Geometry>
 #include <functional>
 #include <limits>
@@ -12,6 +14,7 @@
 #include "crown/color_cubemap.hpp"
 #include "crown/radius_cubemap.hpp"
 #include "crown/texture_synthesis.hpp"
+#include "fspm/error.hpp"
 
 namespace fspm::crown {
 namespace {
@@ -151,6 +154,56 @@ TEST(BillboardCloud, AboutThreeHundredPointsInTheUnitBall) {
   EXPECT_GT(points.size(), 260u);
   EXPECT_LT(points.size(), 350u);
   for (const auto& p : points) EXPECT_LE(p.norm(), 1.0f);
+}
+
+// Face f of the strip is columns f N .. f N + N - 1 (the layout docs/crown.md describes).
+TEST(Cubemap, StripFacesSideBySide) {
+  const int n = 3;
+  Raster strip(6 * n, n, 1);
+  for (int x = 0; x < 6 * n; ++x) {
+    for (int y = 0; y < n; ++y) strip.at(x, y) = static_cast<float>(100 * (x / n) + 10 * y + x % n);
+  }
+  const Cubemap c = cubemap_from_strip(strip);
+  ASSERT_EQ(c.size, n);
+  for (int f = 0; f < 6; ++f) {
+    EXPECT_EQ(c.faces[f].at(2, 1), 100.0f * f + 12.0f);
+  }
+  EXPECT_THROW(cubemap_from_strip(Raster(5 * n, n, 1)), ValueError);
+}
+
+// Argudo 5.2's inequality, checked for every position against every later point by brute force:
+// sum_{j=M}^{i-1} dist(p_i, p_j) >= sum_{j=M}^{i-1} dist(p_k, p_j) for all k > i.
+TEST(BillboardCloud, ProgressiveOrderPutsTheFarthestNext) {
+  std::mt19937_64 rng(5);
+  const std::vector<Eigen::Vector3f> ball = blue_noise_ball(rng);
+  const std::size_t fixed = 8;
+  const std::vector<Eigen::Vector3f> order = progressive_order(ball, fixed);
+  ASSERT_EQ(order.size(), ball.size());
+  for (std::size_t i = 0; i < fixed; ++i) EXPECT_EQ(order[i], ball[i]);
+  // A permutation: every input point once.
+  std::vector<bool> used(ball.size(), false);
+  for (const auto& p : order) {
+    const auto it = std::find(ball.begin(), ball.end(), p);
+    ASSERT_NE(it, ball.end());
+    used[static_cast<std::size_t>(it - ball.begin())] = true;
+  }
+  EXPECT_EQ(std::count(used.begin(), used.end(), true), static_cast<long>(ball.size()));
+  const auto summed = [&](std::size_t point, std::size_t placed) {
+    double s = 0.0;
+    for (std::size_t j = fixed; j < placed; ++j) s += (order[point] - order[j]).norm();
+    return s;
+  };
+  for (std::size_t i = fixed + 1; i < order.size(); ++i) {
+    const double mine = summed(i, i);
+    for (std::size_t k = i + 1; k < order.size(); ++k) {
+      ASSERT_GE(mine, summed(k, i) - 1e-4) << "position " << i << ", later point " << k;
+    }
+  }
+  // The point of it: the first sixteen free points spread through the ball (their centroid
+  // near the centre), where the blue-noise order fills the octree cell by cell.
+  Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
+  for (std::size_t i = fixed; i < fixed + 16; ++i) centroid += order[i] / 16.0f;
+  EXPECT_LT(centroid.norm(), 0.25f);
 }
 
 }  // namespace

@@ -151,10 +151,10 @@ class ReliefView : public ::testing::Test {
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
 
-  Image shot(bool relief, bool shadows) {
+  Image shot(bool relief, bool shadows, int width = 240, int height = 180) {
     ViewerOptions o;
-    o.width = 240;
-    o.height = 180;
+    o.width = width;
+    o.height = height;
     o.shadows = shadows;
     o.screenshot = (dir_ / "shot.png").string();
     TriangleMesh mesh = trunk_;
@@ -216,6 +216,80 @@ TEST_F(ReliefView, CastsTheShadowOfItsSurface) {
   ASSERT_GT(either, 300u);
   EXPECT_GT(iou, 0.8) << either << " pixels in either shadow";
   std::printf("shadow IoU %.3f of %zu\n", iou, either);
+}
+
+// Billboard centres for the lopsided crown: jittered points of a grid through its bounding cube,
+// kept inside the crown.
+std::vector<Eigen::Vector3f> lopsided_billboards(const ReliefCrown& crown) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> jitter(-0.07f, 0.07f);
+  std::vector<Eigen::Vector3f> out;
+  const float r = crown.max_radius_m();
+  for (int i = -6; i <= 6; ++i) {
+    for (int j = -6; j <= 6; ++j) {
+      for (int k = -6; k <= 6; ++k) {
+        const Eigen::Vector3f q =
+            r *
+            Eigen::Vector3f(i / 6.0f + jitter(rng), j / 6.0f + jitter(rng), k / 6.0f + jitter(rng));
+        if (q.norm() > 0.0f && q.norm() < lopsided_radius(q.normalized())) {
+          out.push_back(crown.centre_m + q);
+        }
+      }
+    }
+  }
+  return out;
+}
+
+// The viewer's starting camera at 1024 x 768 sees the crown about 190 pixels in radius: the
+// detailed crown of Argudo 5.2. Every leaf it draws lies inside the crown (cropped by the radius
+// cubemap, so inside the ray-cast silhouette), the leaves fill most of that silhouette, and they
+// show as leaves: the picture differs from the relief's.
+TEST_F(ReliefView, BillboardsNearTheCameraAreLeavesCroppedToTheCrown) {
+  const std::vector<bool> relief = red_pixels(shot(true, false, 1024, 768));
+  crown_.billboards_m = lopsided_billboards(crown_);
+  ASSERT_GT(crown_.billboards_m.size(), 200u);
+  const std::vector<bool> leaves = red_pixels(shot(true, false, 1024, 768));
+  std::size_t in_relief = 0, leaf = 0, outside = 0;
+  for (std::size_t i = 0; i < relief.size(); ++i) {
+    in_relief += relief[i];
+    leaf += leaves[i];
+    // A leaf pixel outside the relief's silhouette, not even beside its edge.
+    const std::size_t x = i % 1024, y = i / 1024;
+    if (leaves[i] && !relief[i] && x > 0 && x + 1 < 1024 && y > 0 && y + 1 < 768 &&
+        !relief[i - 1] && !relief[i + 1] && !relief[i - 1024] && !relief[i + 1024]) {
+      ++outside;
+    }
+  }
+  ASSERT_GT(in_relief, 30000u);
+  EXPECT_LT(static_cast<double>(outside), 0.002 * static_cast<double>(leaf));
+  EXPECT_GT(static_cast<double>(leaf), 0.5 * static_cast<double>(in_relief));
+  EXPECT_LT(static_cast<double>(leaf),
+            0.99 * static_cast<double>(in_relief));  // gaps between leaves
+  std::printf("leaves cover %.3f of the crown, %zu of %zu outside\n",
+              static_cast<double>(leaf) / static_cast<double>(in_relief), outside, leaf);
+}
+
+// Small on the screen (240 x 180: about 45 pixels in radius), the same crown is ray cast, whether
+// or not it has billboards.
+TEST_F(ReliefView, DistantCrownsAreRayCastEvenWithBillboards) {
+  const Image plain = shot(true, true);
+  crown_.billboards_m = lopsided_billboards(crown_);
+  const Image with_billboards = shot(true, true);
+  ASSERT_EQ(plain.rgba.size(), with_billboards.rgba.size());
+  EXPECT_TRUE(plain.rgba == with_billboards.rgba);
+}
+
+TEST(ReliefCrown, BillboardCountGrowsWithTheCrownOnTheScreen) {
+  EXPECT_EQ(billboard_count(kBillboardFromPx - 1.0f, 300), 0.0f);  // ray cast
+  const float least = kBillboardFromPx / kAllBillboardsPx;
+  EXPECT_NEAR(billboard_count(kBillboardFromPx, 300), 300.0f * least * least, 1e-3f);
+  EXPECT_EQ(billboard_count(kBillboardFromPx, 50), kFewestBillboards);  // never fewer
+  EXPECT_EQ(billboard_count(kAllBillboardsPx, 300), 300.0f);
+  EXPECT_EQ(billboard_count(10.0f * kAllBillboardsPx, 300), 300.0f);
+  // In between, the share of the crown's area on the screen.
+  const float r = 0.8f * kAllBillboardsPx;
+  EXPECT_NEAR(billboard_count(r, 300), 300.0f * 0.64f, 1e-3f);
+  EXPECT_EQ(billboard_count(kAllBillboardsPx, 0), 0.0f);
 }
 
 }  // namespace
