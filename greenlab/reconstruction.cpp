@@ -1065,19 +1065,20 @@ void reconstruct_lines_into(const CompressedTreeGraph& graph, const Reconstructi
     make_room(n);
     const Eigen::Matrix3f& rot = item.rotation;
     const Eigen::Vector3f& shift = item.translation;
-    parent[base] = item.parent;
-    for (std::uint32_t k = 1; k < n; ++k) parent[base + k] = base + protos.parent[first + k];
+    // One pass per record: prototypes are short (about ten records), so separate copies per
+    // column would spend more on starting loops than on copying.
     for (std::uint32_t k = 0; k < n; ++k) {
-      start[base + k] = rot * protos.start[first + k] + shift;
-      direction[base + k] = rot * protos.direction[first + k];
-    }
-    std::copy_n(protos.length.data() + first, n, length + base);
-    std::copy_n(protos.radius.data() + first, n, radius + base);
-    std::copy_n(protos.birth.data() + first, n, birth + base);
-    std::copy_n(protos.age.data() + first, n, age + base);
-    std::copy_n(protos.kind.data() + first, n, kind + base);
-    for (std::uint32_t k = 0; k < n; ++k) {
-      order[base + k] = static_cast<std::uint16_t>(protos.order[first + k] + item.order);
+      const std::uint32_t from = first + k;
+      const NodeId i = base + k;
+      parent[i] = k == 0 ? item.parent : base + protos.parent[from];
+      start[i] = rot * protos.start[from] + shift;
+      direction[i] = rot * protos.direction[from];
+      length[i] = protos.length[from];
+      radius[i] = protos.radius[from];
+      birth[i] = protos.birth[from];
+      age[i] = protos.age[from];
+      kind[i] = protos.kind[from];
+      order[i] = static_cast<std::uint16_t>(protos.order[from] + item.order);
     }
     if (dead) std::copy_n(protos.dead.data() + first, n, dead + base);
     cursor += n;
