@@ -73,11 +73,11 @@ float surface_radius(vec3 q) { return texture(radius_map, strip_uv(q)).r; }
 // Argudo 5.3's three terms for a point q of the crown (from its centre) whose surface lies
 // surface_r away in its direction: the lower (the more crown above it) and the deeper below the
 // surface, the more occluded; then Lambert's cosine with the shadow factor s. The weights are
-// ours (Argudo gives none): the bottom keeps 70 %, the centre 65 %.
+// ours (Argudo gives none): the bottom keeps 80 %, the centre 75 %.
 vec3 crown_shade(vec3 albedo, vec3 q, float surface_r, vec3 n, float s) {
   float height = clamp(0.5 + 0.5 * q.z / bound, 0.0, 1.0);
   float depth = clamp(length(q) / max(surface_r, 1e-6 * bound), 0.0, 1.0);
-  float occlusion = (0.7 + 0.3 * height) * (0.65 + 0.35 * depth);
+  float occlusion = (0.8 + 0.2 * height) * (0.75 + 0.25 * depth);
   vec3 c = albedo * occlusion * (0.35 + 0.65 * max(dot(n, sun), 0.0) * s);
   return pow(c, vec3(1.0 / 1.2));
 }
@@ -230,9 +230,12 @@ void main() {
   if (length(q) > surface_r) discard;  // Argudo 5.2: cropped to the crown
   vec3 leaf = v_centre + v_half * (leaf_centre.x * v_right + leaf_centre.y * v_up) - centre;
   vec3 albedo = texture(color_map, strip_uv(dot(leaf, leaf) > 0.0 ? leaf : q)).rgb * variation;
-  vec3 n = normalize(mat3(model) * (dot(q, q) > 0.0 ? q : vec3(0.0, 0.0, 1.0)));
-  vec4 world = model * vec4(v_local, 1.0);
-  frag = vec4(crown_shade(albedo, q, surface_r, n, lit(light_mvp * world)), 1.0);
+  vec3 radial = dot(q, q) > 0.0 ? normalize(q) : vec3(0.0, 0.0, 1.0);
+  vec3 n = normalize(mat3(model) * radial);
+  // The shadow of the crown's surface point in the leaf's direction: the relief's own shadow in
+  // the map would put every inner leaf in the dark, where Argudo's depth term already shades it.
+  vec4 surface = model * vec4(centre + 1.02 * surface_r * radial, 1.0);
+  frag = vec4(crown_shade(albedo, q, surface_r, n, lit(light_mvp * surface)), 1.0);
 }
 )";
 

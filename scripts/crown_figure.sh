@@ -6,15 +6,7 @@
 # copied to DIR (examples/crown holds them for the tests and the benchmark).
 # Usage: scripts/crown_figure.sh FSPM_BINARY OUTPUT.png
 set -euo pipefail
-if [[ $# -lt 2 ]]; then
-  echo "usage: $0 FSPM_BINARY OUTPUT.png" >&2
-  exit 2
-fi
-fspm=$1
-out=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-font=${FONT:-/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf}
+source "$(dirname "$0")/figure_common.sh"
 
 "$fspm" grow --preset A --years 20 -o "$work/tree.treeb"
 view=(--leaves --size 256x256 --ortho-height 8)

@@ -4,15 +4,9 @@
 # the scanned points, the main skeleton, the skeleton with the cluster hulls, and the decoded tree.
 # Usage: scripts/scan_figure.sh FSPM_BINARY OUTPUT.png [TREE]
 set -euo pipefail
-if [[ $# -lt 2 ]]; then
-  echo "usage: $0 FSPM_BINARY OUTPUT.png [TREE]" >&2
-  exit 2
-fi
-fspm=$1
-out=$2
+figure_usage_tail=" [TREE]"
+source "$(dirname "$0")/figure_common.sh"
 tree=${3:-$(dirname "$0")/../examples/trees/open_a12.treeb}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 
 "$fspm" scan "$tree" -o "$work/scan.ply" --seed 1
 # The trunk-circle fit overestimates d_root on a tree branching near the ground (docs/scans.md),

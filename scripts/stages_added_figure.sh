@@ -5,15 +5,8 @@
 # picture spans 6.2 m of height).
 # Usage: scripts/stages_added_figure.sh FSPM_BINARY OUTPUT.png
 set -euo pipefail
-if [[ $# -lt 2 ]]; then
-  echo "usage: $0 FSPM_BINARY OUTPUT.png" >&2
-  exit 2
-fi
-fspm=$1
-out=$2
+source "$(dirname "$0")/figure_common.sh"
 here=$(cd "$(dirname "$0")" && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 
 "$fspm" grow --preset A --years 20 -o "$work/a20.treeb"
 "$fspm" tree convert "$work/a20.treeb" "$work/a20.tree"
