@@ -1,8 +1,8 @@
 #pragma once
 // Shared helpers of the Python bindings: read-only numpy views of C++ columns, numpy arrays that
-// take over a C++ vector without copying, (N, 3) point arrays as spans of Eigen vectors, and the
-// keyword-argument constructors of the parameter structs. Each bind_*() adds one family of
-// functions to the module.
+// take over a C++ vector without copying, (N, 3) point arrays as spans of Eigen vectors, lists of
+// dicts, and the keyword-argument constructors of the parameter structs. Each bind_*() adds one
+// family of functions to the module.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
@@ -72,6 +72,18 @@ py::array_t<S> vector_rows(const std::vector<Eigen::Matrix<S, 3, 1>>& v) {
   auto a = out.template mutable_unchecked<2>();
   for (std::size_t i = 0; i < v.size(); ++i) {
     for (int k = 0; k < 3; ++k) a(static_cast<py::ssize_t>(i), k) = v[i][k];
+  }
+  return out;
+}
+
+// A list of one dict per element of `items`, each filled by `fill(dict, element)`.
+template <typename Range, typename Fill>
+py::list dict_list(const Range& items, Fill fill) {
+  py::list out;
+  for (const auto& item : items) {
+    py::dict d;
+    fill(d, item);
+    out.append(d);
   }
   return out;
 }

@@ -245,16 +245,12 @@ void bind_mesh_writers(py::module_& m) {
           frames = gr::write_pvd(tree, options.value_or(gr::MeshOptions{}),
                                  ages ? *ages : gr::default_ages(tree), path);
         }
-        py::list out;
-        for (const auto& f : frames) {
-          py::dict d;
+        return dict_list(frames, [](py::dict& d, const gr::PvdFrame& f) {
           d["age"] = f.age;
           d["file"] = f.vtp_path;
           d["vertices"] = f.vertices;
           d["triangles"] = f.triangles;
-          out.append(d);
-        }
-        return out;
+        });
       },
       py::arg("tree"), py::arg("path"), py::arg("ages") = py::none(),
       py::arg("options") = py::none(),

@@ -64,16 +64,12 @@ void bind_cluster_model(py::module_& m) {
       .def_property_readonly(
           "clusters",
           [](const ClusterModel& c) {
-            py::list out;
-            for (const scans::ClusterHull& h : c.clusters) {
-              py::dict d;
+            return dict_list(c.clusters, [](py::dict& d, const scans::ClusterHull& h) {
               d["seed_node"] = h.seed_node;
               d["point_count"] = h.point_count;
               d["vertices"] = vector_rows(h.vertices);
               d["triangles"] = triangle_rows(h.triangles);
-              out.append(d);
-            }
-            return out;
+            });
           },
           "One dict per leaf cluster: seed_node (skeleton node id it hangs at), point_count, "
           "vertices (N, 3) in m and triangles (M, 3) of its alpha-shape hull");
@@ -97,16 +93,13 @@ void bind_point_encoding(py::module_& m) {
   m.def(
       "species_presets",
       [] {
-        py::list out;
-        for (const scans::SpeciesParameters& s : scans::species_presets()) {
-          py::dict d;
-          d["name"] = s.name;
-          d["beta"] = s.beta;
-          d["gamma"] = s.gamma;
-          d["f_s"] = s.f_s;
-          out.append(d);
-        }
-        return out;
+        return dict_list(scans::species_presets(),
+                         [](py::dict& d, const scans::SpeciesParameters& s) {
+                           d["name"] = s.name;
+                           d["beta"] = s.beta;
+                           d["gamma"] = s.gamma;
+                           d["f_s"] = s.f_s;
+                         });
       },
       "The species parameters of Pirk Table 3.1 (name, beta, gamma, f_s), in its order");
   m.def(
