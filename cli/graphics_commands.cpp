@@ -1057,10 +1057,7 @@ void add_lod_options(CLI::App* command, bool& lod, double& distance_m) {
       ->check(positive_number(1e9));
 }
 
-constexpr const char* kTreeFormats = "tree, treeb, nwk or mtg (default: from the extension)";
-
 void add_mesh_command(CLI::App& app) {
-  const std::string formats = kTreeFormats;
   auto mesh = std::make_shared<MeshCommand>();
   CLI::App* m = app.add_subcommand(kMeshCommand.name, kMeshCommand.description);
   m->add_option(
@@ -1071,7 +1068,7 @@ void add_mesh_command(CLI::App& app) {
   m->add_option("-o,--output", mesh->out,
                 "Output: .obj (+.mtl), .ply, .vtp, .pvd or .glb (.glb keeps the instancing)")
       ->required();
-  m->add_option("--format", mesh->format, "Input format: " + formats);
+  add_input_format_option(m, mesh->format);
   m->add_flag("--leaves", mesh->leaves, "Mesh leaf nodes as quads, leaf clusters as foliage");
   add_foliage_options(m, mesh->foliage, mesh->seed);
   m->add_option("--ages", mesh->ages,
@@ -1106,7 +1103,6 @@ void add_mesh_command(CLI::App& app) {
 }
 
 void add_render_command(CLI::App& app) {
-  const std::string formats = kTreeFormats;
   auto render = std::make_shared<RenderCommand>();
   CLI::App* r = app.add_subcommand(kRenderCommand.name, kRenderCommand.description);
   r->add_option("TREE", render->tree,
@@ -1117,7 +1113,7 @@ void add_render_command(CLI::App& app) {
       ->required();
   add_lsystem_draw_options(r, render->lsystem);
   r->add_option("-o,--output", render->out, "Image: .png, .tif or .exr")->required();
-  r->add_option("--format", render->format, "Input format: " + formats);
+  add_input_format_option(r, render->format);
   r->add_option("--color-by", render->color_by,
                 "Colour by a vertex attribute (age, birth_time, order, physiological_age or a "
                 "tree attribute) with a scalar bar");
@@ -1150,7 +1146,6 @@ void add_render_command(CLI::App& app) {
 }
 
 void add_view_command(CLI::App& app) {
-  const std::string formats = kTreeFormats;
   auto view = std::make_shared<ViewCommand>();
   CLI::App* v = app.add_subcommand(kViewCommand.name, kViewCommand.description);
   v->add_option(
@@ -1158,7 +1153,7 @@ void add_view_command(CLI::App& app) {
        "Tree files (.tree, .treeb, .nwk, .mtg), compressed plants (.ctree, plant .toml), "
        "scenes (.json) or L-systems (.l), placed side by side; or one .pvd growth sequence")
       ->required();
-  v->add_option("--format", view->format, "Input format: " + formats);
+  add_input_format_option(v, view->format);
   v->add_option("--ages", view->ages,
                 "Growth steps shown with [ and ]: plant ages of compressed graphs (default: each "
                 "cycle), latest birth times of trees")

@@ -112,6 +112,10 @@ void refuse_overwriting_input(const std::string& output,
 CLI::Validator number_in(double low, double high) { return range_check(low, high, true); }
 CLI::Validator positive_number(double high) { return range_check(0.0, high, false); }
 
+void add_input_format_option(CLI::App* command, std::string& format) {
+  command->add_option("--format", format, std::string("Input format: ") + kTreeFormats);
+}
+
 void print_json(const nlohmann::json& document) { std::cout << document.dump(2) << '\n'; }
 
 void use_checked_standard_output() {

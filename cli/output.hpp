@@ -5,8 +5,9 @@
 #include <string>
 
 namespace CLI {
+class App;
 class Validator;
-}
+}  // namespace CLI
 
 namespace fspm::cli {
 
@@ -30,6 +31,11 @@ CLI::Validator number_in(double low, double high);
 // Seeds are 64-bit; this is the largest double below 2^63.
 inline constexpr double kMaxSeed = 9223372036854774784.0;
 CLI::Validator positive_number(double high);
+
+// The tree file formats a --format option takes.
+inline constexpr const char* kTreeFormats = "tree, treeb, nwk or mtg (default: from the extension)";
+// --format of a command that reads tree files.
+void add_input_format_option(CLI::App* command, std::string& format);
 
 // Verbosity from -v/-q: 0 quiet, 1 normal, 2 verbose. Logs go to stderr through spdlog.
 void set_verbosity(int level);

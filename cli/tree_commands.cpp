@@ -112,12 +112,12 @@ void run_convert(const ConvertOptions& o) {
 void add_tree_commands(CLI::App& app) {
   CLI::App* tree = app.add_subcommand("tree", "Inspect and convert tree graph files");
   tree->require_subcommand(1);
-  const std::string formats = "tree, treeb, nwk or mtg (default: from the extension)";
+  const std::string formats = kTreeFormats;
 
   auto info = std::make_shared<InfoOptions>();
   CLI::App* i = tree->add_subcommand("info", "Print the summary of a tree file");
   i->add_option("FILE", info->file, "Tree file (.tree, .treeb, .nwk, .mtg)")->required();
-  i->add_option("--format", info->format, "Input format: " + formats);
+  add_input_format_option(i, info->format);
   i->add_flag("--json", info->json, "Machine-readable JSON on stdout");
   i->callback([info] { run_info(*info); });
 
