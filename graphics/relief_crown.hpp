@@ -41,6 +41,24 @@ void validate(const ReliefCrown& crown);
 // R(d) for a direction d (not zero): the strip sampled bilinearly within d's face, clamped half a
 // texel from its edges, as the viewer's shader does.
 float relief_radius_m(const ReliefCrown& crown, const Eigen::Vector3f& direction);
+// The colour cubemap in direction d (not zero), bilinear as the radius, each channel in [0, 1].
+Eigen::Vector3f relief_color(const ReliefCrown& crown, const Eigen::Vector3f& direction);
+
+// The viewer's march on the CPU (for offscreen renders): the ray origin + t dir (crown frame,
+// dir a unit vector) through the crown's bounding sphere (radius 1.01 max_radius_m()) in
+// kReliefSteps equal steps from where it enters, then 16 bisections of the step in which it first
+// meets |p - centre| <= R(p - centre). True and t of that point, or false when the ray misses.
+inline constexpr int kReliefSteps = 96;
+bool relief_ray_hit(const ReliefCrown& crown, const Eigen::Vector3f& origin,
+                    const Eigen::Vector3f& dir, float& t);
+
+// Argudo 5.3's shading of a crown point q (from the centre, crown frame, z up) whose surface lies
+// surface_r away in its direction, with outward normal n and the unit direction to the sun (both
+// world), as the viewer's shader does without shadows: occlusion by height and depth times
+// (0.35 + 0.65 max(n . sun, 0)), then the viewer's gamma (1 / 1.2). Channels in [0, 1].
+Eigen::Vector3f relief_shade(const Eigen::Vector3f& albedo, const Eigen::Vector3f& q,
+                             float surface_r, float bound, const Eigen::Vector3f& n,
+                             const Eigen::Vector3f& sun);
 
 // Argudo 5.2: a crown whose radius appears `radius_px` pixels on the screen is ray cast below
 // kBillboardFromPx and drawn with billboards above it, all of them from kAllBillboardsPx on and

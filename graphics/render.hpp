@@ -12,6 +12,7 @@
 #include "graphics/image.hpp"
 #include "graphics/instance_lod.hpp"
 #include "graphics/instanced_mesh.hpp"
+#include "graphics/relief_crown.hpp"
 #include "graphics/triangle_mesh.hpp"
 
 namespace fspm::graphics {
@@ -38,6 +39,10 @@ struct RenderOptions {
   // bounds. Figures at one common scale give every tree a box of the same height from the ground,
   // so the ground lies on the same image row in each.
   std::optional<Eigen::AlignedBox3f> frame;
+  // Crowns drawn by relief-mapped ray casting of their cubemaps (relief_crown.hpp, Argudo 5.1)
+  // into the rendered picture (relief_composite.hpp), lit by the key light without shadows; they
+  // take part in the framing unless `frame` is given.
+  std::vector<ReliefCrown> relief_crowns;
 };
 
 // The height in metres a parallel projection along `view` needs to show all of the box [lo, hi]

@@ -36,12 +36,14 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <span>
 #include <sstream>
 #include <vector>
 
 #include "fspm/error.hpp"
 #include "graphics/instance_lod.hpp"
+#include "graphics/relief_composite.hpp"
 #include "graphics/render.hpp"
 #include "graphics/vtk_window_image.hpp"
 #include "graphics/x_display.hpp"
@@ -322,11 +324,57 @@ std::array<double, 2> add_ground(vtkRenderer* renderer, const Eigen::Vector3f& l
   return depth;
 }
 
+// The relief crowns ray cast into the rendered picture against its depth buffer, lit from the
+// light kit's key light (elevation 50 degrees, azimuth 10 degrees from the camera).
+void add_relief_crowns(vtkRenderWindow* window, vtkRenderer* renderer, const RenderOptions& options,
+                       Image& image) {
+  const int w = options.width, h = options.height;
+  std::vector<float> depth(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+  window->GetZbufferData(0, 0, w - 1, h - 1, depth.data());
+  vtkCamera* camera = renderer->GetActiveCamera();
+  vtkMatrix4x4* m = camera->GetCompositeProjectionTransformMatrix(
+      static_cast<double>(w) / static_cast<double>(h), -1.0, 1.0);
+  PictureCamera pc;
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c) pc.view_projection(r, c) = m->GetElement(r, c);
+  }
+  double position[3], focal[3], up[3];
+  camera->GetPosition(position);
+  camera->GetFocalPoint(focal);
+  camera->GetViewUp(up);
+  const Eigen::Vector3d back = (Eigen::Vector3d(position) - Eigen::Vector3d(focal)).normalized();
+  const Eigen::Vector3d view_up = Eigen::Vector3d(up).normalized();
+  const Eigen::Vector3d right = view_up.cross(back).normalized();
+  const double elevation = 50.0 * std::numbers::pi / 180.0,
+               azimuth = 10.0 * std::numbers::pi / 180.0;
+  pc.sun = (std::cos(elevation) * (std::cos(azimuth) * back + std::sin(azimuth) * right) +
+            std::sin(elevation) * view_up)
+               .normalized()
+               .cast<float>();
+  composite_relief_crowns(options.relief_crowns, pc, depth, image);
+}
+
+// The box [lo, hi] grown to hold every placed relief crown's bounding sphere.
+void frame_relief_crowns(const std::vector<ReliefCrown>& crowns, Eigen::Vector3f& lo,
+                         Eigen::Vector3f& hi) {
+  for (const ReliefCrown& c : crowns) {
+    const float bound = c.max_radius_m();
+    for (const Eigen::Matrix4f& m : c.placements) {
+      const float scale = std::cbrt(std::abs(m.block<3, 3>(0, 0).determinant()));
+      const Eigen::Vector3f centre = (m * c.centre_m.homogeneous()).head<3>();
+      const Eigen::Vector3f reach = Eigen::Vector3f::Constant(scale * bound);
+      lo = lo.cwiseMin(centre - reach);
+      hi = hi.cwiseMax(centre + reach);
+    }
+  }
+}
+
 // Sets up the renderer, lets `add_actors` fill it, adds the ground, lights and camera framing
 // [lo, hi], renders off screen and reads the image back.
 template <typename AddActors>
 Image render_with(const RenderOptions& options, Eigen::Vector3f lo, Eigen::Vector3f hi,
                   AddActors&& add_actors) {
+  if (!options.frame) frame_relief_crowns(options.relief_crowns, lo, hi);
   if (options.width < 1 || options.height < 1 || options.width > 16384 || options.height > 16384) {
     throw ValueError("image size must be 1..16384 pixels on each side");
   }
@@ -389,7 +437,9 @@ Image render_with(const RenderOptions& options, Eigen::Vector3f lo, Eigen::Vecto
   window->AddRenderer(renderer);
   window->Render();
 
-  return window_image(window);
+  Image image = window_image(window);
+  if (!options.relief_crowns.empty()) add_relief_crowns(window, renderer, options, image);
+  return image;
 }
 
 // Stone: the obstacle colour, flat faces, some ambient light so walls turned away from the key

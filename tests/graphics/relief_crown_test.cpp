@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -218,6 +219,56 @@ TEST_F(ReliefView, CastsTheShadowOfItsSurface) {
   std::printf("shadow IoU %.3f of %zu\n", iou, either);
 }
 
+// The offscreen VTK render ray casts the crown into its picture (relief_composite.hpp): the same
+// pixels as the crown's triangles, in the same frame, hidden behind nearer geometry.
+TEST_F(ReliefView, OffscreenRendersRayCastTheCrown) {
+  if (!render_available()) GTEST_SKIP() << "built without VTK";
+  RenderOptions o;
+  o.width = 320;
+  o.height = 240;
+  o.view = View::kFront;
+  const float r = crown_.max_radius_m();
+  o.frame = Eigen::AlignedBox3f(crown_.centre_m.array() - r, crown_.centre_m.array() + r);
+  o.frame->extend(Eigen::Vector3f::Zero());
+  TriangleMesh with_crown = trunk_;
+  with_crown.append(lopsided_mesh(crown_.centre_m));
+  // Crown pixels: those that differ from the picture without the crown (the two forms are lit
+  // differently, so their colours are not compared).
+  const Image bare = render_mesh(trunk_, o);
+  const auto covered = [&](const Image& image) {
+    std::vector<bool> out;
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+      int d = 0;
+      for (int k = 0; k < 3; ++k) d += std::abs(image.rgba[i + k] - bare.rgba[i + k]);
+      out.push_back(d > 30);
+    }
+    return out;
+  };
+  const std::vector<bool> mesh = covered(render_mesh(with_crown, o));
+  o.relief_crowns = {crown_};
+  const std::vector<bool> relief = covered(render_mesh(trunk_, o));
+  std::size_t either = 0;
+  const double iou = intersection_over_union(mesh, relief, either);
+  ASSERT_GT(either, 3000u);
+  EXPECT_GT(iou, 0.97) << either << " pixels in either";
+  std::printf("offscreen IoU %.3f of %zu\n", iou, either);
+  // A wall in front of the crown hides it.
+  TriangleMesh wall = trunk_;
+  const auto v = static_cast<std::uint32_t>(wall.positions.size());
+  const Eigen::Vector3f c = crown_.centre_m;
+  for (const auto& [x, z] : {std::pair{-3.0f, -1.0f}, {3.0f, -1.0f}, {3.0f, 4.0f}, {-3.0f, 4.0f}}) {
+    wall.positions.push_back(c + Eigen::Vector3f(x, -2.0f * r, z));
+    wall.normals.push_back(-Eigen::Vector3f::UnitY());
+    wall.uvs.emplace_back(0.0f, 0.0f);
+    for (auto& a : wall.attributes) a.values.push_back(0.0f);
+  }
+  wall.triangles.push_back({v, v + 1, v + 2});
+  wall.triangles.push_back({v, v + 2, v + 3});
+  wall.materials.insert(wall.materials.end(), 2, Material::kObstacle);
+  const std::vector<bool> hidden = red_pixels(render_mesh(wall, o));
+  EXPECT_EQ(std::count(hidden.begin(), hidden.end(), true), 0);
+}
+
 // Billboard centres for the lopsided crown: jittered points of a grid through its bounding cube,
 // kept inside the crown.
 std::vector<Eigen::Vector3f> lopsided_billboards(const ReliefCrown& crown) {
@@ -277,6 +328,30 @@ TEST_F(ReliefView, DistantCrownsAreRayCastEvenWithBillboards) {
   const Image with_billboards = shot(true, true);
   ASSERT_EQ(plain.rgba.size(), with_billboards.rgba.size());
   EXPECT_TRUE(plain.rgba == with_billboards.rgba);
+}
+
+// The CPU march against the closed form for a sphere: a crown of radius 1 everywhere is entered
+// at t = -b - sqrt(b^2 - |o - c|^2 + 1).
+TEST(ReliefCrown, CpuMarchMeetsTheSphereWhereTheClosedFormDoes) {
+  const ReliefCrown c = crown_of(16, [](const Eigen::Vector3f&) { return 1.0f; });
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  int hits = 0;
+  for (int k = 0; k < 200; ++k) {
+    const Eigen::Vector3f origin = c.centre_m + Eigen::Vector3f(3.0f, u(rng), u(rng));
+    const Eigen::Vector3f target = c.centre_m + 0.8f * Eigen::Vector3f(u(rng), u(rng), u(rng));
+    const Eigen::Vector3f dir = (target - origin).normalized();
+    const Eigen::Vector3f oc = origin - c.centre_m;
+    const float b = oc.dot(dir), disc = b * b - oc.squaredNorm() + 1.0f;
+    float t = 0.0f;
+    ASSERT_EQ(relief_ray_hit(c, origin, dir, t), disc > 0.0f);
+    if (disc <= 0.0f) continue;
+    EXPECT_NEAR(t, -b - std::sqrt(disc), 1e-4f);
+    ++hits;
+  }
+  EXPECT_GT(hits, 150);
+  float t = 0.0f;
+  EXPECT_FALSE(relief_ray_hit(c, c.centre_m + Eigen::Vector3f(3, 0, 0), {0, 0, 1}, t));
 }
 
 TEST(ReliefCrown, BillboardCountGrowsWithTheCrownOnTheScreen) {
