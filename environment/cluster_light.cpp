@@ -25,16 +25,6 @@ double box_distance(const Box& b, const Eigen::Vector3d& p) {
 
 }  // namespace
 
-double cluster_shadow_reach2(double r, double g, double significance) {
-  // See LightModel: a sphere removes at most 3 (1 - g)(1 - cos alpha) of the light.
-  if (g >= 1.0) return -1.0;
-  if (significance <= 0.0) return kInf;
-  const double q = significance / (3.0 * (1.0 - g));
-  if (q >= 1.0) return -1.0;
-  const double cos_min = 1.0 - q;
-  return r * r / (1.0 - cos_min * cos_min);
-}
-
 ClusterLightField::ClusterLightField(int directions, double significance,
                                      const Eigen::Vector3d& brightest)
     : dirs_(directions), significance_(significance) {
@@ -69,7 +59,7 @@ void ClusterLightField::set_clusters(std::span<const Eigen::Vector3d> centers,
   max_reach_ = 0.0;
   max_radius_ = 0.0;
   for (std::size_t c = 0; c < n; ++c) {
-    reach2_[c] = cluster_shadow_reach2(radius_[c], gamma_[c], significance_);
+    reach2_[c] = shadow_reach2(radius_[c], gamma_[c], significance_);
     reach_[c] = reach2_[c] >= 0.0 ? std::sqrt(reach2_[c]) : 0.0;
     if (std::isfinite(reach2_[c])) max_reach_ = std::max(max_reach_, reach_[c]);
     max_radius_ = std::max(max_radius_, radius_[c]);

@@ -189,8 +189,4 @@ class ClusterLightField {
   std::vector<std::uint32_t> scratch_fill_;
 };
 
-// Shadow-volume radius squared of a sphere (radius r, translucency g) for a significance (as in
-// LightModel); negative when it never matters.
-double cluster_shadow_reach2(double r, double g, double significance);
-
 }  // namespace fspm::environment

@@ -12,8 +12,14 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// Squared shadow-volume radius of an occluder with bounding radius r and translucency g: the
-// distance beyond which it removes less than `significance` of the light (see header).
+// The scene, once its sky is checked: the direction set is built from it before the body runs.
+const Scene& with_checked_sky(const Scene& scene) {
+  validate(scene.sky);
+  return scene;
+}
+
+}  // namespace
+
 double shadow_reach2(double r, double g, double significance) {
   if (g >= 1.0) return -1.0;
   if (significance <= 0.0) return kInf;
@@ -23,14 +29,6 @@ double shadow_reach2(double r, double g, double significance) {
   const double sin2_min = 1.0 - cos_min * cos_min;
   return r * r / sin2_min;
 }
-
-// The scene, once its sky is checked: the direction set is built from it before the body runs.
-const Scene& with_checked_sky(const Scene& scene) {
-  validate(scene.sky);
-  return scene;
-}
-
-}  // namespace
 
 LightModel::LightModel(const Scene& scene)
     : scene_(with_checked_sky(scene)), dirs_(scene.sky.directions) {

@@ -126,4 +126,9 @@ class LightModel {
   std::vector<std::uint32_t> cell_start_, cell_items_, all_spheres_;
 };
 
+// Squared shadow-volume radius of an occluder with bounding radius r and translucency g (see
+// above): the distance beyond which it removes less than `significance` of the light; infinite
+// for no significance, negative when it never matters.
+double shadow_reach2(double r, double g, double significance);
+
 }  // namespace fspm::environment
