@@ -102,6 +102,7 @@ struct RenderCommand {
   double lod_distance_m = 0.0;
   LsystemDrawArguments lsystem;
   GraphLodArguments graph_lod;
+  bool ray_cast = false;
   bool json = false;
 };
 
@@ -622,6 +623,65 @@ Eigen::AlignedBox3f frame_of(const std::string& path, const graphics::MeshOption
   return {mesh.bbox_min(), mesh.bbox_max()};
 }
 
+#ifdef FSPM_HAVE_CROWN
+// The crowns of a scene from fspm crown, each with the placements of its copies.
+std::vector<graphics::ReliefCrown> scene_relief_crowns(const std::string& path) {
+  std::optional<graphics::TriangleMesh> terrain;
+  const graphics::SceneFile plants =
+      graphics::scene_plants(read_landscape_scene(path, terrain).plants);
+  std::vector<graphics::ReliefCrown> crowns;
+  for (std::size_t s = 0; s < plants.sources.size(); ++s) {
+    if (input_kind(plants.sources[s].path) != InputKind::kMesh) continue;
+    graphics::ReliefCrown crown = read_relief_crown(plants.sources[s].path);
+    crown.placements.clear();
+    for (const auto& inst : plants.instances) {
+      if (inst.source != s) continue;
+      Eigen::Matrix4f m = Eigen::Matrix4f::Identity();
+      m.block<3, 3>(0, 0) = inst.linear().cast<float>();
+      m.block<3, 1>(0, 3) = inst.position.cast<float>();
+      crown.placements.push_back(m);
+    }
+    crowns.push_back(std::move(crown));
+  }
+  if (crowns.empty()) {
+    throw ValueError("--ray-cast: the scene places no crown from fspm crown", path);
+  }
+  return crowns;
+}
+#endif
+
+// What --ray-cast draws for one crown file from fspm crown or one scene: the crowns, drawn by
+// relief-mapped ray casting of their cubemaps (Argudo 5.1), and everything else as meshes (the
+// crowns' trunks, the scene's other plants, obstacles and terrain).
+struct RayCastInput {
+  std::vector<graphics::ReliefCrown> crowns;
+  graphics::InstancedMesh meshes;
+};
+
+RayCastInput load_ray_cast_input(const std::vector<std::string>& paths,
+                                 const graphics::MeshOptions& mesh_options) {
+  const InputKind kind = paths.size() == 1 ? input_kind(paths[0]) : InputKind::kTree;
+  if (kind != InputKind::kMesh && kind != InputKind::kScene) {
+    throw ValueError(
+        "--ray-cast draws the crowns of one crown file from fspm crown (its .glb or "
+        ".obj) or of one scene");
+  }
+#ifdef FSPM_HAVE_CROWN
+  RayCastInput in;
+  if (kind == InputKind::kMesh) {
+    in.crowns = {read_relief_crown(paths[0])};
+    in.meshes = graphics::InstancedMesh::single(without_crown(read_placed_mesh(paths[0])));
+  } else {
+    in.crowns = scene_relief_crowns(paths[0]);
+    in.meshes = load_scene(paths[0], mesh_options, true, {}, true);
+  }
+  return in;
+#else
+  (void)mesh_options;
+  throw ValueError("fspm was built without the crown module (OpenImageIO): no --ray-cast");
+#endif
+}
+
 void run_render(const RenderCommand& c) {
   refuse_overwriting_input(c.out, {c.tree, c.obstacles, c.frame});
   const auto t0 = std::chrono::steady_clock::now();
@@ -645,13 +705,21 @@ void run_render(const RenderCommand& c) {
     throw ValueError("--wind-time poses the tree as it is: no --max-order or --merge-collinear");
   }
   if (c.lod) {
+    if (c.ray_cast) throw ValueError("--ray-cast takes no --lod, --wind-time or --color-by");
     if (lsystem) throw ValueError("--lod does not apply to L-system files (.l)", c.tree);
     run_lod_render(c, mesh_options, options, t0);
     return;
   }
   nlohmann::json lsystem_summary;
   graphics::InstancedMesh mesh;
-  if (c.wind_time_s >= 0.0) {
+  if (c.ray_cast) {
+    if (c.wind_time_s >= 0.0 || !c.color_by.empty()) {
+      throw ValueError("--ray-cast takes no --lod, --wind-time or --color-by");
+    }
+    RayCastInput in = load_ray_cast_input({c.tree}, mesh_options);
+    options.relief_crowns = std::move(in.crowns);
+    mesh = std::move(in.meshes);
+  } else if (c.wind_time_s >= 0.0) {
     mesh = wind_frame(c, mesh_options, options);
   } else if (lsystem) {
     const LsystemDrawing drawing =
@@ -918,59 +986,18 @@ void run_wind_view(const ViewCommand& c, graphics::ViewerOptions options,
   if (c.json) print_view_json(c, steps, stats, t0);
 }
 
-#ifdef FSPM_HAVE_CROWN
-// The crowns of a scene from fspm crown, each with the placements of its copies.
-std::vector<graphics::ReliefCrown> scene_relief_crowns(const std::string& path) {
-  std::optional<graphics::TriangleMesh> terrain;
-  const graphics::SceneFile plants =
-      graphics::scene_plants(read_landscape_scene(path, terrain).plants);
-  std::vector<graphics::ReliefCrown> crowns;
-  for (std::size_t s = 0; s < plants.sources.size(); ++s) {
-    if (input_kind(plants.sources[s].path) != InputKind::kMesh) continue;
-    graphics::ReliefCrown crown = read_relief_crown(plants.sources[s].path);
-    crown.placements.clear();
-    for (const auto& inst : plants.instances) {
-      if (inst.source != s) continue;
-      Eigen::Matrix4f m = Eigen::Matrix4f::Identity();
-      m.block<3, 3>(0, 0) = inst.linear().cast<float>();
-      m.block<3, 1>(0, 3) = inst.position.cast<float>();
-      crown.placements.push_back(m);
-    }
-    crowns.push_back(std::move(crown));
-  }
-  if (crowns.empty()) {
-    throw ValueError("--ray-cast: the scene places no crown from fspm crown", path);
-  }
-  return crowns;
-}
-#endif
-
 // fspm view CROWN|SCENE --ray-cast: crowns from fspm crown drawn by relief-mapped ray casting of
 // their cubemaps (Argudo 5.1) in place of their triangles; trunks and everything else stay meshes.
 void run_ray_cast_view(const ViewCommand& c, graphics::ViewerOptions options,
                        std::chrono::steady_clock::time_point t0) {
-  const InputKind kind = c.trees.size() == 1 ? input_kind(c.trees[0]) : InputKind::kTree;
-  if (kind != InputKind::kMesh && kind != InputKind::kScene) {
-    throw ValueError(
-        "--ray-cast draws the crowns of one crown file from fspm crown (its .glb or "
-        ".obj) or of one scene");
-  }
   if (!c.ages.empty() || c.stages > 0 || c.lod || c.wind) {
     throw ValueError("--ray-cast takes no --ages, --stages, --lod or --wind");
   }
-#ifdef FSPM_HAVE_CROWN
-  options.relief_crowns = kind == InputKind::kMesh
-                              ? std::vector<graphics::ReliefCrown>{read_relief_crown(c.trees[0])}
-                              : scene_relief_crowns(c.trees[0]);
-#else
-  throw ValueError("fspm was built without the crown module (OpenImageIO): no --ray-cast");
-#endif
   graphics::MeshOptions mesh_options;
   set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
-  const std::vector<graphics::InstancedMesh> steps{
-      kind == InputKind::kMesh
-          ? graphics::InstancedMesh::single(without_crown(read_placed_mesh(c.trees[0])))
-          : load_scene(c.trees[0], mesh_options, true, {}, true)};
+  RayCastInput in = load_ray_cast_input(c.trees, mesh_options);
+  options.relief_crowns = std::move(in.crowns);
+  const std::vector<graphics::InstancedMesh> steps{std::move(in.meshes)};
   if (!c.screenshot.empty()) rerun_under_xvfb_if_needed();
   const std::vector<double> ages{std::numeric_limits<double>::infinity()};
   const graphics::ViewerStats stats = graphics::run_instanced_viewer(steps, ages, options);
@@ -1141,6 +1168,9 @@ void add_render_command(CLI::App& app) {
   add_wind_options(r, render->wind, false);
   add_lod_options(r, render->lod, render->lod_distance_m);
   add_graph_lod_options(r, render->graph_lod);
+  r->add_flag("--ray-cast", render->ray_cast,
+              "Draw the crowns from fspm crown (a crown's .glb or .obj, or a scene placing them) "
+              "by relief-mapped ray casting of their cubemaps (Argudo 5.1) instead of triangles");
   r->add_flag("--json", render->json, "Machine-readable JSON on stdout");
   r->callback([render] { run_render(*render); });
 }

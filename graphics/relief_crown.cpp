@@ -58,6 +58,19 @@ float ReliefCrown::max_radius_m() const {
   return radius_m.empty() ? 0.0f : *std::max_element(radius_m.begin(), radius_m.end());
 }
 
+Eigen::AlignedBox3f ReliefCrown::placed_bounds() const {
+  Eigen::AlignedBox3f box;
+  const float r = max_radius_m();
+  for (const Eigen::Matrix4f& m : placements) {
+    for (int k = 0; k < 8; ++k) {
+      const Eigen::Vector3f corner =
+          centre_m + r * Eigen::Vector3f(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+      box.extend((m * corner.homogeneous()).head<3>());
+    }
+  }
+  return box;
+}
+
 void validate(const ReliefCrown& crown) {
   const auto n = static_cast<std::size_t>(std::max(crown.face_size, 0));
   if (crown.face_size < 1) throw ValueError("relief crown: expected a cubemap face size >= 1");

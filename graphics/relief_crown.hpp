@@ -13,6 +13,7 @@
 // screen asks for, the last few fading in; and both forms are shaded by his three terms (5.3):
 // height in the crown, depth below its surface, and the sun's angle.
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <vector>
 
@@ -31,6 +32,8 @@ struct ReliefCrown {
 
   // The largest radius: the bounding sphere the rays march through.
   float max_radius_m() const;
+  // The world box around every placed copy's cube about that sphere (how pictures frame it).
+  Eigen::AlignedBox3f placed_bounds() const;
 };
 
 // Throws ValueError unless face_size >= 1, both strips hold 6N x N texels (three bytes each for

@@ -354,18 +354,14 @@ void add_relief_crowns(vtkRenderWindow* window, vtkRenderer* renderer, const Ren
   composite_relief_crowns(options.relief_crowns, pc, depth, image);
 }
 
-// The box [lo, hi] grown to hold every placed relief crown's bounding sphere.
+// The box [lo, hi] grown to hold every placed relief crown, framed as the viewer frames it.
 void frame_relief_crowns(const std::vector<ReliefCrown>& crowns, Eigen::Vector3f& lo,
                          Eigen::Vector3f& hi) {
   for (const ReliefCrown& c : crowns) {
-    const float bound = c.max_radius_m();
-    for (const Eigen::Matrix4f& m : c.placements) {
-      const float scale = std::cbrt(std::abs(m.block<3, 3>(0, 0).determinant()));
-      const Eigen::Vector3f centre = (m * c.centre_m.homogeneous()).head<3>();
-      const Eigen::Vector3f reach = Eigen::Vector3f::Constant(scale * bound);
-      lo = lo.cwiseMin(centre - reach);
-      hi = hi.cwiseMax(centre + reach);
-    }
+    const Eigen::AlignedBox3f box = c.placed_bounds();
+    if (box.isEmpty()) continue;
+    lo = lo.cwiseMin(box.min());
+    hi = hi.cwiseMax(box.max());
   }
 }
 

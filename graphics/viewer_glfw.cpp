@@ -635,16 +635,10 @@ void measure_values(const std::vector<StepRef>& steps, const std::string& color_
 // The corners of each placed copy's cube around the crown's bounding sphere.
 void relief_bounds(const ReliefCrown& crown, glm::vec3& lo, glm::vec3& hi) {
   validate(crown);
-  const float r = crown.max_radius_m();
-  for (const Eigen::Matrix4f& m : crown.placements) {
-    for (int k = 0; k < 8; ++k) {
-      const Eigen::Vector3f corner =
-          crown.centre_m + r * Eigen::Vector3f(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
-      const Eigen::Vector3f w = (m * corner.homogeneous()).head<3>();
-      lo = glm::min(lo, glm::vec3(w.x(), w.y(), w.z()));
-      hi = glm::max(hi, glm::vec3(w.x(), w.y(), w.z()));
-    }
-  }
+  const Eigen::AlignedBox3f box = crown.placed_bounds();
+  if (box.isEmpty()) return;
+  lo = glm::min(lo, glm::vec3(box.min().x(), box.min().y(), box.min().z()));
+  hi = glm::max(hi, glm::vec3(box.max().x(), box.max().y(), box.max().z()));
 }
 
 // Step 1: the arguments checked before any window opens; the bounds of every step and the range

@@ -226,33 +226,38 @@ TEST_F(ReliefView, OffscreenRendersRayCastTheCrown) {
   RenderOptions o;
   o.width = 320;
   o.height = 240;
-  o.view = View::kFront;
   const float r = crown_.max_radius_m();
   o.frame = Eigen::AlignedBox3f(crown_.centre_m.array() - r, crown_.centre_m.array() + r);
   o.frame->extend(Eigen::Vector3f::Zero());
   TriangleMesh with_crown = trunk_;
   with_crown.append(lopsided_mesh(crown_.centre_m));
-  // Crown pixels: those that differ from the picture without the crown (the two forms are lit
-  // differently, so their colours are not compared).
-  const Image bare = render_mesh(trunk_, o);
-  const auto covered = [&](const Image& image) {
-    std::vector<bool> out;
-    for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
-      int d = 0;
-      for (int k = 0; k < 3; ++k) d += std::abs(image.rgba[i + k] - bare.rgba[i + k]);
-      out.push_back(d > 30);
-    }
-    return out;
-  };
-  const std::vector<bool> mesh = covered(render_mesh(with_crown, o));
-  o.relief_crowns = {crown_};
-  const std::vector<bool> relief = covered(render_mesh(trunk_, o));
-  std::size_t either = 0;
-  const double iou = intersection_over_union(mesh, relief, either);
-  ASSERT_GT(either, 3000u);
-  EXPECT_GT(iou, 0.97) << either << " pixels in either";
-  std::printf("offscreen IoU %.3f of %zu\n", iou, either);
+  // Every view, so that a crown turned or mirrored in the ray cast would show.
+  for (const View view : {View::kFront, View::kSide, View::kTop, View::kIso}) {
+    o.view = view;
+    o.relief_crowns.clear();
+    // Crown pixels: those that differ from the picture without the crown (the two forms are lit
+    // differently, so their colours are not compared).
+    const Image bare = render_mesh(trunk_, o);
+    const auto covered = [&](const Image& image) {
+      std::vector<bool> out;
+      for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+        int d = 0;
+        for (int k = 0; k < 3; ++k) d += std::abs(image.rgba[i + k] - bare.rgba[i + k]);
+        out.push_back(d > 30);
+      }
+      return out;
+    };
+    const std::vector<bool> mesh = covered(render_mesh(with_crown, o));
+    o.relief_crowns = {crown_};
+    const std::vector<bool> relief = covered(render_mesh(trunk_, o));
+    std::size_t either = 0;
+    const double iou = intersection_over_union(mesh, relief, either);
+    ASSERT_GT(either, 3000u);
+    EXPECT_GT(iou, 0.97) << either << " pixels in either, view " << view_name(view);
+    std::printf("offscreen IoU %.3f of %zu\n", iou, either);
+  }
   // A wall in front of the crown hides it.
+  o.view = View::kFront;
   TriangleMesh wall = trunk_;
   const auto v = static_cast<std::uint32_t>(wall.positions.size());
   const Eigen::Vector3f c = crown_.centre_m;
