@@ -14,6 +14,7 @@ struct Placed {
   const ReliefCrown* crown = nullptr;
   Eigen::Matrix4f model, inverse;
   Eigen::Vector3f world_centre;
+  float bound = 0.0f;  // of the bounding sphere, crown frame
   float world_bound = 0.0f;
 };
 
@@ -24,7 +25,8 @@ std::vector<Placed> placements(const std::vector<ReliefCrown>& crowns) {
     const float bound = 1.01f * c.max_radius_m();
     for (const Eigen::Matrix4f& m : c.placements) {
       const float scale = std::cbrt(std::abs(m.block<3, 3>(0, 0).determinant()));
-      out.push_back({&c, m, m.inverse(), (m * c.centre_m.homogeneous()).head<3>(), scale * bound});
+      out.push_back(
+          {&c, m, m.inverse(), (m * c.centre_m.homogeneous()).head<3>(), bound, scale * bound});
     }
   }
   return out;
@@ -80,7 +82,7 @@ std::size_t composite_relief_crowns(const std::vector<ReliefCrown>& crowns,
         const Eigen::Vector3f o = (p.inverse * near.homogeneous()).head<3>();
         const Eigen::Vector3f d = ((p.inverse * far.homogeneous()).head<3>() - o).normalized();
         float t = 0.0f;
-        if (!relief_ray_hit(*p.crown, o, d, t)) continue;
+        if (!relief_ray_hit(*p.crown, p.bound, o, d, t)) continue;
         const Eigen::Vector3f local = o + t * d;
         const Eigen::Vector3f world = (p.model * local.homogeneous()).head<3>();
         const Eigen::Vector4d clip = camera.view_projection * world.cast<double>().homogeneous();
@@ -90,10 +92,9 @@ std::size_t composite_relief_crowns(const std::vector<ReliefCrown>& crowns,
         hit = true;
         const ReliefCrown& c = *p.crown;
         const Eigen::Vector3f q = local - c.centre_m;
-        const float bound = 1.01f * c.max_radius_m();
         const Eigen::Vector3f n =
-            (p.model.block<3, 3>(0, 0) * crown_normal(c, q, bound)).normalized();
-        colour = relief_shade(relief_color(c, q), q, relief_radius_m(c, q), bound, n, camera.sun);
+            (p.model.block<3, 3>(0, 0) * crown_normal(c, q, p.bound)).normalized();
+        colour = relief_shade(relief_color(c, q), q, relief_radius_m(c, q), p.bound, n, camera.sun);
       }
       if (!hit) continue;
       std::uint8_t* px = image.pixel(x, row);

@@ -112,9 +112,8 @@ Eigen::Vector3f relief_color(const ReliefCrown& crown, const Eigen::Vector3f& di
   return sample_strip<3>(crown.rgb, crown.face_size, direction) / 255.0f;
 }
 
-bool relief_ray_hit(const ReliefCrown& crown, const Eigen::Vector3f& origin,
+bool relief_ray_hit(const ReliefCrown& crown, float bound, const Eigen::Vector3f& origin,
                     const Eigen::Vector3f& dir, float& t) {
-  const float bound = 1.01f * crown.max_radius_m();
   const Eigen::Vector3f oc = origin - crown.centre_m;
   const float b = oc.dot(dir);
   const float disc = b * b - (oc.squaredNorm() - bound * bound);

@@ -48,11 +48,12 @@ float relief_radius_m(const ReliefCrown& crown, const Eigen::Vector3f& direction
 Eigen::Vector3f relief_color(const ReliefCrown& crown, const Eigen::Vector3f& direction);
 
 // The viewer's march on the CPU (for offscreen renders): the ray origin + t dir (crown frame,
-// dir a unit vector) through the crown's bounding sphere (radius 1.01 max_radius_m()) in
-// kReliefSteps equal steps from where it enters, then 16 bisections of the step in which it first
-// meets |p - centre| <= R(p - centre). True and t of that point, or false when the ray misses.
+// dir a unit vector) through the crown's bounding sphere of radius `bound_m` (1.01
+// max_radius_m(), which the caller computes once) in kReliefSteps equal steps from where it
+// enters, then 16 bisections of the step in which it first meets |p - centre| <= R(p - centre).
+// True and t of that point, or false when the ray misses.
 inline constexpr int kReliefSteps = 96;
-bool relief_ray_hit(const ReliefCrown& crown, const Eigen::Vector3f& origin,
+bool relief_ray_hit(const ReliefCrown& crown, float bound_m, const Eigen::Vector3f& origin,
                     const Eigen::Vector3f& dir, float& t);
 
 // Argudo 5.3's shading of a crown point q (from the centre, crown frame, z up) whose surface lies
