@@ -1084,6 +1084,13 @@ void add_lod_options(CLI::App* command, bool& lod, double& distance_m) {
       ->check(positive_number(1e9));
 }
 
+void add_ray_cast_flag(CLI::App* command, bool& ray_cast) {
+  command->add_flag(
+      "--ray-cast", ray_cast,
+      "Draw the crowns from fspm crown (a crown's .glb or .obj, or a scene placing them) by "
+      "relief-mapped ray casting of their cubemaps (Argudo 5.1) instead of triangles");
+}
+
 void add_mesh_command(CLI::App& app) {
   auto mesh = std::make_shared<MeshCommand>();
   CLI::App* m = app.add_subcommand(kMeshCommand.name, kMeshCommand.description);
@@ -1168,9 +1175,7 @@ void add_render_command(CLI::App& app) {
   add_wind_options(r, render->wind, false);
   add_lod_options(r, render->lod, render->lod_distance_m);
   add_graph_lod_options(r, render->graph_lod);
-  r->add_flag("--ray-cast", render->ray_cast,
-              "Draw the crowns from fspm crown (a crown's .glb or .obj, or a scene placing them) "
-              "by relief-mapped ray casting of their cubemaps (Argudo 5.1) instead of triangles");
+  add_ray_cast_flag(r, render->ray_cast);
   r->add_flag("--json", render->json, "Machine-readable JSON on stdout");
   r->callback([render] { run_render(*render); });
 }
@@ -1218,10 +1223,7 @@ void add_view_command(CLI::App& app) {
        {"--wind-amplitude", "--wind-frequency", "--wind-direction", "--wind-period"}) {
     v->get_option(name)->needs(wind);
   }
-  v->add_flag(
-      "--ray-cast", view->ray_cast,
-      "Draw the crowns from fspm crown (a crown's .glb or .obj, or a scene placing them) by "
-      "relief-mapped ray casting of their cubemaps (Argudo 5.1) instead of triangles");
+  add_ray_cast_flag(v, view->ray_cast);
   add_lod_options(v, view->lod, view->lod_distance_m);
   add_lsystem_draw_options(v, view->lsystem);
   add_graph_lod_options(v, view->graph_lod);

@@ -90,6 +90,7 @@ class Engine {
   void prune_subtree(TreeRun& r, NodeId s);
   void prune_blocked(TreeRun& r, int step);
   void mark_dirty(std::uint32_t c);
+  void mark_evaluated(std::uint32_t c);
   void note_drift(std::uint32_t c, std::uint32_t j, const ClusterNeighbor& e);
   void release_vanished_shade();
   void check_moved();
@@ -622,14 +623,7 @@ void Engine::refresh() {
   // from its own neighbour list.
   if (dirty_list_.size() * kBatchShare >= field_.size()) {
     field_.evaluate_batch(dirty_list_, relist_);
-    for (const std::uint32_t c : dirty_list_) {
-      dirty_[c] = 0;
-      relist_[c] = 0;
-      eval_q_[c] = anchor_rotation(c);
-      lost_[c] = 0.0;
-      eval_path_[c] = path_[c];
-      eval_all_path_[c] = all_path_;
-    }
+    for (const std::uint32_t c : dirty_list_) mark_evaluated(c);
     dirty_list_.clear();
     return;
   }
@@ -638,13 +632,19 @@ void Engine::refresh() {
     dirty_[c] = 0;
     if (!field_.alive(c)) continue;
     field_.evaluate(c, relist_[c] != 0);
-    relist_[c] = 0;
-    eval_q_[c] = anchor_rotation(c);
-    lost_[c] = 0.0;
-    eval_path_[c] = path_[c];
-    eval_all_path_[c] = all_path_;
+    mark_evaluated(c);
   }
   dirty_list_.clear();
+}
+
+// Cluster c's light was just evaluated: nothing is due, and the drift and turn bounds restart.
+void Engine::mark_evaluated(std::uint32_t c) {
+  dirty_[c] = 0;
+  relist_[c] = 0;
+  eval_q_[c] = anchor_rotation(c);
+  lost_[c] = 0.0;
+  eval_path_[c] = path_[c];
+  eval_all_path_[c] = all_path_;
 }
 
 std::vector<AdaptationResult> Engine::run() {

@@ -46,6 +46,10 @@ class ReliefCrownRenderer {
   template <typename PerPlacement>
   void draw_billboards(const float* view_projection, const float* sun,
                        const PerPlacement& per_placement) const;
+  // Binds each crown that use(crown) accepts, sets each of its placements' model matrix on the
+  // program and calls draw(crown, model).
+  template <typename Use, typename Draw>
+  void each_placement(unsigned program, const Use& use, const Draw& draw) const;
   void bind_crown(unsigned program, const void* crown) const;
   void set_frame_uniforms(unsigned program, const float* view_projection, const float* sun) const;
   struct Gpu;

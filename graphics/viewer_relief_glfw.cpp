@@ -449,6 +449,18 @@ void ReliefCrownRenderer::set_frame_uniforms(unsigned p, const float* view_proje
   glUniform1i(glGetUniformLocation(p, "color_map"), 2);
 }
 
+template <typename Use, typename Draw>
+void ReliefCrownRenderer::each_placement(unsigned p, const Use& use, const Draw& draw) const {
+  for (const GpuCrown& g : gpu_->crowns) {
+    if (!use(g)) continue;
+    bind_crown(p, &g);
+    for (const Eigen::Matrix4f& model : g.placements) {
+      glUniformMatrix4fv(glGetUniformLocation(p, "model"), 1, GL_FALSE, model.data());
+      draw(g, model);
+    }
+  }
+}
+
 template <typename PerPlacement>
 void ReliefCrownRenderer::draw_cubes(const float* view_projection, const float* sun,
                                      const PerPlacement& per_placement) const {
@@ -458,13 +470,11 @@ void ReliefCrownRenderer::draw_cubes(const float* view_projection, const float* 
   glEnable(GL_CULL_FACE);
   glCullFace(GL_FRONT);  // back faces: the cube is drawn even with the eye inside it
   glBindVertexArray(gpu_->vao);
-  for (const GpuCrown& g : gpu_->crowns) {
-    bind_crown(p, &g);
-    for (const Eigen::Matrix4f& model : g.placements) {
-      glUniformMatrix4fv(glGetUniformLocation(p, "model"), 1, GL_FALSE, model.data());
-      if (per_placement(g, model)) glDrawElements(GL_TRIANGLES, 36, GL_UNSIGNED_INT, nullptr);
-    }
-  }
+  each_placement(
+      p, [](const GpuCrown&) { return true; },
+      [&](const GpuCrown& g, const Eigen::Matrix4f& model) {
+        if (per_placement(g, model)) glDrawElements(GL_TRIANGLES, 36, GL_UNSIGNED_INT, nullptr);
+      });
   glBindVertexArray(0);
   glDisable(GL_CULL_FACE);
   glActiveTexture(GL_TEXTURE0);
@@ -477,20 +487,19 @@ void ReliefCrownRenderer::draw_billboards(const float* view_projection, const fl
   glUseProgram(p);
   set_frame_uniforms(p, view_projection, sun);
   glUniform1f(glGetUniformLocation(p, "fade"), kBillboardFade);
-  for (const GpuCrown& g : gpu_->crowns) {
-    if (g.billboards == 0) continue;
-    bind_crown(p, &g);
+  const auto use = [&](const GpuCrown& g) {
+    if (g.billboards == 0) return false;
     glUniform1f(glGetUniformLocation(p, "half_side"), 0.5f * kBillboardSide * g.largest_m);
+    glUniform1f(glGetUniformLocation(p, "available"), static_cast<float>(g.billboards));
     glBindVertexArray(g.billboard_vao);
-    for (const Eigen::Matrix4f& model : g.placements) {
-      glUniformMatrix4fv(glGetUniformLocation(p, "model"), 1, GL_FALSE, model.data());
-      const float drawn = per_placement(g, model);
-      if (drawn <= 0.0f) continue;
-      glUniform1f(glGetUniformLocation(p, "drawn"), drawn);
-      glUniform1f(glGetUniformLocation(p, "available"), static_cast<float>(g.billboards));
-      glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(std::ceil(drawn)));
-    }
-  }
+    return true;
+  };
+  each_placement(p, use, [&](const GpuCrown& g, const Eigen::Matrix4f& model) {
+    const float drawn = per_placement(g, model);
+    if (drawn <= 0.0f) return;
+    glUniform1f(glGetUniformLocation(p, "drawn"), drawn);
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(std::ceil(drawn)));
+  });
   glBindVertexArray(0);
   glActiveTexture(GL_TEXTURE0);
 }

@@ -627,11 +627,7 @@ TreeGraph reconstruct_geometry(const CompressedTreeGraph& graph,
   }
   if (!lod) instanced = instanced_tree_of(graph, o);
   TreeGraph tree = expand_instanced_tree(instanced, static_cast<std::size_t>(kMaxExplicitMetamers));
-  for (const OrganKind k : tree.kinds()) {
-    st.metamers += k == OrganKind::kInternode ? 1 : 0;
-    st.leaves += k == OrganKind::kLeaf ? 1 : 0;
-    st.flowers += k == OrganKind::kFlower ? 1 : 0;
-  }
+  count_kinds(tree, st);
   return tree;
 }
 
