@@ -37,6 +37,7 @@
 #include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
 #include "fspm/instanced_lod.hpp"
+#include "fspm/scene_description.hpp"
 #include "fspm/scene_reader.hpp"
 #include "fspm/tree_file.hpp"
 #include "graphics/foliage.hpp"
@@ -538,7 +539,16 @@ void write_single_mesh(const MeshCommand& c, InputKind kind, const graphics::Mes
   j.update(instancing_json(mesh));
 }
 
-void run_mesh(const MeshCommand& c) {
+// The folder fspm crown wrote (OUT/ holding crown.glb) stands for its crown, as in scene files.
+std::string resolve_crown_folder(const std::string& path) {
+  const std::filesystem::path crown = std::filesystem::path(path) / kCrownMeshName;
+  const bool folder =
+      std::filesystem::is_directory(path) && std::filesystem::is_regular_file(crown);
+  return folder ? crown.string() : path;
+}
+
+void run_mesh(MeshCommand c) {
+  c.tree = resolve_crown_folder(c.tree);
   refuse_overwriting_input(c.out, {c.tree, c.obstacles});
   const auto t0 = std::chrono::steady_clock::now();
   const graphics::MeshFormat format = graphics::mesh_format_for(c.out);
@@ -682,7 +692,8 @@ RayCastInput load_ray_cast_input(const std::vector<std::string>& paths,
 #endif
 }
 
-void run_render(const RenderCommand& c) {
+void run_render(RenderCommand c) {
+  c.tree = resolve_crown_folder(c.tree);
   refuse_overwriting_input(c.out, {c.tree, c.obstacles, c.frame});
   const auto t0 = std::chrono::steady_clock::now();
   graphics::RenderOptions options;
@@ -1004,19 +1015,9 @@ void run_ray_cast_view(const ViewCommand& c, graphics::ViewerOptions options,
   if (c.json) print_view_json(c, steps, stats, t0);
 }
 
-// The folder fspm crown wrote (OUT/ holding crown.glb) stands for its crown, as in scene files.
-void resolve_crown_folders(std::vector<std::string>& paths) {
-  for (std::string& path : paths) {
-    const std::filesystem::path crown = std::filesystem::path(path) / "crown.glb";
-    if (std::filesystem::is_directory(path) && std::filesystem::is_regular_file(crown)) {
-      path = crown.string();
-    }
-  }
-}
-
 void run_view(ViewCommand c) {
   const auto t0 = std::chrono::steady_clock::now();
-  resolve_crown_folders(c.trees);
+  for (std::string& path : c.trees) path = resolve_crown_folder(path);
   if (!graphics::viewer_available()) {
     throw ValueError("fspm was built without the viewer (FSPM_WITH_VIEWER=OFF)");
   }

@@ -16,6 +16,10 @@ namespace fspm {
 // Largest number of sky directions of the light integral (scene files, the library's check).
 inline constexpr int kMaxSkyDirections = 1 << 20;
 
+// The crown mesh fspm crown writes in its output directory; a scene's "crown" and the graphics
+// commands take the directory for it.
+inline constexpr const char* kCrownMeshName = "crown.glb";
+
 // Where the brightest sky direction comes from (one of them at most).
 enum class SkySource { kDefault, kBrightest, kSun, kNoonSun };
 

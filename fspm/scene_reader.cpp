@@ -75,7 +75,7 @@ std::string crown_mesh_path(const JsonFields& f, const json& p, const std::strin
   };
   if (!std::filesystem::exists(file, ec)) fail("does not exist");
   if (std::filesystem::is_directory(file, ec)) {
-    file /= "crown.glb";
+    file /= kCrownMeshName;
     if (!std::filesystem::is_regular_file(file, ec)) fail("does not exist");
   }
   std::string ext = file.extension().string();

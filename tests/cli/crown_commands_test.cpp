@@ -129,7 +129,9 @@ TEST(CrownCli, RenderRayCastsTheCrownFromItsCubemaps) {
   if (r.err.find("without OpenImageIO") != std::string::npos) GTEST_SKIP() << r.err;
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string mesh = (dir / "oak" / "crown.glb").string();
-  r = run_fspm("render " + mesh + " --ray-cast --view front --size 160x120 --json -o " +
+  // The folder fspm crown wrote stands for its crown, as in view and scene files.
+  r = run_fspm("render " + (dir / "oak").string() +
+               " --ray-cast --view front --size 160x120 --json -o " +
                (dir / "relief.png").string());
   if (r.err.find("without VTK") != std::string::npos) GTEST_SKIP() << r.err;
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -144,6 +146,8 @@ TEST(CrownCli, RenderRayCastsTheCrownFromItsCubemaps) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out)["triangles"], 0);
   EXPECT_GT(foliage_pixels(graphics::read_image((dir / "scene.png").string())), 160u * 120u / 30);
+  r = run_fspm("mesh " + (dir / "oak").string() + " -o " + (dir / "crown.obj").string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
   r = run_fspm("render " + mesh + " --ray-cast --lod -o " + (dir / "x.png").string());
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("--ray-cast takes no"), std::string::npos) << r.err;
