@@ -51,7 +51,8 @@ class ReliefCrownRenderer {
   template <typename Use, typename Draw>
   void each_placement(unsigned program, const Use& use, const Draw& draw) const;
   void bind_crown(unsigned program, const void* crown) const;
-  void set_frame_uniforms(unsigned program, const float* view_projection, const float* sun) const;
+  // Uses the program and sets what every crown of a pass shares.
+  void begin_pass(unsigned program, const float* view_projection, const float* sun) const;
   struct Gpu;
   std::unique_ptr<Gpu> gpu_;
 };

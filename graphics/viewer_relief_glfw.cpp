@@ -441,8 +441,9 @@ void ReliefCrownRenderer::bind_crown(unsigned p, const void* crown) const {
   glUniform1f(glGetUniformLocation(p, "face_size"), g.face_size);
 }
 
-void ReliefCrownRenderer::set_frame_uniforms(unsigned p, const float* view_projection,
-                                             const float* sun) const {
+void ReliefCrownRenderer::begin_pass(unsigned p, const float* view_projection,
+                                     const float* sun) const {
+  glUseProgram(p);
   glUniformMatrix4fv(glGetUniformLocation(p, "view_projection"), 1, GL_FALSE, view_projection);
   glUniform3fv(glGetUniformLocation(p, "sun"), 1, sun);
   glUniform1i(glGetUniformLocation(p, "radius_map"), 1);
@@ -465,8 +466,7 @@ template <typename PerPlacement>
 void ReliefCrownRenderer::draw_cubes(const float* view_projection, const float* sun,
                                      const PerPlacement& per_placement) const {
   const GLuint p = gpu_->program;
-  glUseProgram(p);
-  set_frame_uniforms(p, view_projection, sun);
+  begin_pass(p, view_projection, sun);
   glEnable(GL_CULL_FACE);
   glCullFace(GL_FRONT);  // back faces: the cube is drawn even with the eye inside it
   glBindVertexArray(gpu_->vao);
@@ -484,8 +484,7 @@ template <typename PerPlacement>
 void ReliefCrownRenderer::draw_billboards(const float* view_projection, const float* sun,
                                           const PerPlacement& per_placement) const {
   const GLuint p = gpu_->billboard_program;
-  glUseProgram(p);
-  set_frame_uniforms(p, view_projection, sun);
+  begin_pass(p, view_projection, sun);
   glUniform1f(glGetUniformLocation(p, "fade"), kBillboardFade);
   const auto use = [&](const GpuCrown& g) {
     if (g.billboards == 0) return false;
