@@ -64,6 +64,15 @@ std::size_t foliage_pixels(const graphics::Image& image) {
   return n;
 }
 
+// A scene placing the crown fspm crown wrote to dir/oak twice, once turned and halved: by its
+// folder and by its mesh.
+void write_two_crown_scene(const std::filesystem::path& dir) {
+  testing::write_text(dir / "scene.json",
+                      R"({"fspm_scene": 2, "plants": [{"crown": "oak/", "position": [-6, 0, 0]},
+                          {"crown": "oak/crown.glb", "position": [5, 2, 0], "rotation_deg": 90,
+                           "scale": 0.5}]})");
+}
+
 // fspm view CROWN --ray-cast ray casts the crown from its cubemaps (Argudo 5.1), found through the
 // description fspm crown writes beside the mesh; without that description it says what is
 // missing, and it refuses anything but one crown mesh.
@@ -93,10 +102,7 @@ TEST(CrownCli, ViewerRayCastsTheCrownFromItsCubemaps) {
   EXPECT_EQ(nlohmann::json::parse(r.out)["triangles"], made["triangles"]);
   EXPECT_GT(foliage_pixels(graphics::read_image((dir / "mesh.png").string())), 160u * 120u / 20);
   // A scene placing the crown twice, once turned and halved: both ray cast, nothing meshed.
-  testing::write_text(dir / "scene.json",
-                      R"({"fspm_scene": 2, "plants": [{"crown": "oak/", "position": [-6, 0, 0]},
-                          {"crown": "oak/crown.glb", "position": [5, 2, 0], "rotation_deg": 90,
-                           "scale": 0.5}]})");
+  write_two_crown_scene(dir);
   r = run_fspm("view " + (dir / "scene.json").string() +
                " --ray-cast --no-panel --size 160x120 --json --screenshot " +
                (dir / "scene.png").string());
@@ -137,10 +143,7 @@ TEST(CrownCli, RenderRayCastsTheCrownFromItsCubemaps) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out)["triangles"], 0);  // no trunk: the crown is ray cast
   EXPECT_GT(foliage_pixels(graphics::read_image((dir / "relief.png").string())), 160u * 120u / 20);
-  testing::write_text(dir / "scene.json",
-                      R"({"fspm_scene": 2, "plants": [{"crown": "oak/", "position": [-6, 0, 0]},
-                          {"crown": "oak/crown.glb", "position": [5, 2, 0], "rotation_deg": 90,
-                           "scale": 0.5}]})");
+  write_two_crown_scene(dir);
   r = run_fspm("render " + (dir / "scene.json").string() +
                " --ray-cast --view front --size 160x120 --json -o " + (dir / "scene.png").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
