@@ -16,15 +16,6 @@ namespace {
 
 constexpr double kPi = 3.141592653589793;
 
-// Placed bounding sphere of a plant: the largest stretch of the linear part scales the radius.
-BoundingSphere placed_sphere(const LodPlant& plant, const PartPlacement& p) {
-  const Eigen::Matrix3d linear = p.linear.cast<double>();
-  BoundingSphere s;
-  s.center = linear * plant.sphere.center + p.translation.cast<double>();
-  s.radius = plant.sphere.radius * linear.colwise().norm().maxCoeff();
-  return s;
-}
-
 // The index of the smallest share not below `fraction` (shares strictly decreasing from 1).
 std::size_t share_for(const std::vector<double>& shares, double fraction) {
   std::size_t k = 0;
@@ -36,8 +27,10 @@ std::size_t share_for(const std::vector<double>& shares, double fraction) {
 
 void validate(const LodOptions& o) {
   if (!(o.max_distance_m > 0.0) || !std::isfinite(o.max_distance_m) ||
-      !(o.prune_distance_m > 0.0) || !std::isfinite(o.prune_distance_m)) {
-    throw ValueError("level-of-detail distances must be positive and finite");
+      !(o.prune_distance_m > 0.0) || !std::isfinite(o.prune_distance_m) ||
+      !(o.impostor_distance_m >= 0.0) || !std::isfinite(o.impostor_distance_m)) {
+    throw ValueError(
+        "level-of-detail distances must be positive and finite (the impostor distance may be 0)");
   }
   if (!(o.jitter >= 0.0 && o.jitter < 1.0)) {
     throw ValueError("level-of-detail jitter must lie in [0, 1)");
@@ -91,6 +84,14 @@ std::uint32_t LodScene::mesh_index(std::size_t plant, std::size_t resolution,
   return static_cast<std::uint32_t>(index + share);
 }
 
+BoundingSphere placed_sphere(const LodPlant& plant, const PartPlacement& p) {
+  const Eigen::Matrix3d linear = p.linear.cast<double>();
+  BoundingSphere s;
+  s.center = linear * plant.sphere.center + p.translation.cast<double>();
+  s.radius = plant.sphere.radius * linear.colwise().norm().maxCoeff();
+  return s;
+}
+
 double lod_jitter(std::size_t instance) {
   // splitmix64's finaliser (Steele, Lea and Flood 2014) of the index.
   std::uint64_t z = static_cast<std::uint64_t>(instance) + 0x9E3779B97F4A7C15ULL;
@@ -115,6 +116,7 @@ std::vector<InstanceLod> select_lod(const LodScene& scene, const Eigen::Vector3d
     spheres.push_back(placed_sphere(scene.plants[p.part], p));
     largest_area = std::max(largest_area, kPi * spheres.back().radius * spheres.back().radius);
   }
+  const double largest_radius = std::sqrt(largest_area / kPi);
   std::vector<InstanceLod> out(spheres.size());
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     const BoundingSphere& s = spheres[i];
@@ -124,6 +126,10 @@ std::vector<InstanceLod> select_lod(const LodScene& scene, const Eigen::Vector3d
     lod.visible = !plant.variants.empty() && !sphere_outside(frustum, s.center, s.radius);
     if (!lod.visible) continue;
     const double d = lod.distance_m * (1.0 + options.jitter * lod_jitter(i));
+    // Impostors from the distance at which the plant looks as large as the largest one at
+    // impostor_distance_m (the same projected size, so the same texture resolution suffices).
+    lod.impostor = options.impostor_distance_m > 0.0 && largest_radius > 0.0 &&
+                   d > options.impostor_distance_m * s.radius / largest_radius;
     const auto resolutions = static_cast<double>(plant.variants.size());
     // Expression 2 with the projected size of the plant (its bounding disc) as the face area
     // and L_max the number of resolutions: level k and above selects resolution R - 1 - k.
@@ -142,7 +148,7 @@ std::vector<MeshInstance> lod_instances(const LodScene& scene,
                                         const std::vector<InstanceLod>& choice) {
   std::vector<MeshInstance> out;
   for (std::size_t i = 0; i < choice.size() && i < scene.placements.size(); ++i) {
-    if (!choice[i].visible) continue;
+    if (!choice[i].visible || choice[i].impostor) continue;
     const PartPlacement& p = scene.placements[i];
     MeshInstance inst;
     inst.mesh = scene.mesh_index(p.part, choice[i].resolution, choice[i].share);

@@ -30,7 +30,10 @@ struct LodOptions {
   // in [-0.5, 0.5) hashed from i (lod_jitter).
   double jitter = 0.25;
   // Shares of the leaves prebuilt per resolution, from 1 down (strictly decreasing, in (0, 1]).
-  std::vector<double> leaf_fractions = {1.0, 0.5, 0.25, 0.125};
+  std::vector<double> leaf_fractions = {1.0, 0.5, 0.25, 0.125};  // Impostors (impostor.hpp): a plant as large as the largest of the scene is drawn as one
+  // textured quad beyond this distance, a smaller one from proportionally nearer (the same
+  // projected size); jittered as the switch distances. 0: never (renders without impostors).
+  double impostor_distance_m = 0.0;
 };
 
 // Throws ValueError for non-positive distances, a jitter outside [0, 1) or bad leaf fractions.
@@ -60,11 +63,16 @@ struct LodScene {
   std::uint32_t mesh_index(std::size_t plant, std::size_t resolution, std::size_t share) const;
 };
 
+// The bounding sphere of a plant placed by `placement`: its centre placed, its radius scaled by
+// the largest stretch of the placement's linear part.
+BoundingSphere placed_sphere(const LodPlant& plant, const PartPlacement& placement);
+
 // h(i) in [-0.5, 0.5): a hash of the instance index (splitmix64), no generator state.
 double lod_jitter(std::size_t instance);
 
 struct InstanceLod {
   bool visible = false;
+  bool impostor = false;       // visible, drawn as an impostor (not among lod_instances)
   std::size_t resolution = 0;  // 0 finest
   std::size_t share = 0;       // index into leaf_fractions
   double distance_m = 0.0;     // eye to the placed bounding sphere's centre
@@ -76,8 +84,8 @@ std::vector<InstanceLod> select_lod(const LodScene& scene, const Eigen::Vector3d
                                     const Eigen::Matrix4d& view_projection,
                                     const LodOptions& options);
 
-// The instances to draw for a choice: a visible placement's chosen variant, then the fixed
-// instances, mesh indices as LodScene::meshes.
+// The meshes to draw for a choice: a visible placement's chosen variant (impostors left out:
+// they are quads, impostor.hpp), then the fixed instances, mesh indices as LodScene::meshes.
 std::vector<MeshInstance> lod_instances(const LodScene& scene,
                                         const std::vector<InstanceLod>& choice);
 

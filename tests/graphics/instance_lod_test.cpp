@@ -199,6 +199,40 @@ TEST(InstanceLod, JitterStaysWithinItsBandAndIsDeterministic) {
   EXPECT_NEAR(mean, 0.0, 0.03);
 }
 
+// Impostors: a plant as large as the largest switches at the impostor distance, one half as
+// large at half of it (the same projected size); impostors leave the mesh instances.
+TEST(InstanceLod, ImpostorsFromTheDistanceOfEqualProjectedSize) {
+  LodOptions o;
+  o.jitter = 0.0;
+  o.max_distance_m = 200.0;
+  o.impostor_distance_m = 30.0;
+  Row row = row_of_plants(o, 24, 0, 2.0);
+  for (std::size_t i = 1; i < row.x.size(); i += 2) {
+    row.scene.placements[i].linear = 0.5f * Eigen::Matrix3f::Identity();  // half as large
+  }
+  const Eigen::Vector3d eye(0.0, 0.0, 0.0);
+  const auto choice = select_lod(row.scene, eye, view_projection(eye), o);
+  const double r = row.scene.plants[0].sphere.radius;
+  std::size_t impostors = 0;
+  for (std::size_t i = 0; i < row.x.size(); ++i) {
+    const auto& p = row.scene.placements[i];
+    const double scale = p.linear(0, 0);
+    // The placed centre of the box's sphere: (x, 0, scale z_c).
+    const Eigen::Vector3d c(row.x[i], 0.0, scale * row.scene.plants[0].sphere.center.z());
+    EXPECT_NEAR(choice[i].distance_m, c.norm(), 1e-6);
+    EXPECT_EQ(choice[i].impostor, c.norm() > 30.0 * scale) << "x = " << row.x[i];
+    impostors += choice[i].impostor ? 1 : 0;
+  }
+  EXPECT_GT(impostors, 0u);
+  EXPECT_LT(impostors, row.x.size());
+  EXPECT_EQ(lod_instances(row.scene, choice).size(), row.x.size() - impostors);
+  EXPECT_GT(r, 0.0);
+  o.impostor_distance_m = 0.0;  // none
+  for (const InstanceLod& c : select_lod(row.scene, eye, view_projection(eye), o)) {
+    EXPECT_FALSE(c.impostor);
+  }
+}
+
 TEST(InstanceLod, RejectsBadOptions) {
   LodOptions o;
   o.leaf_fractions = {0.5, 0.25};
@@ -207,6 +241,9 @@ TEST(InstanceLod, RejectsBadOptions) {
   EXPECT_THROW(validate(o), ValueError);
   o = LodOptions{};
   o.jitter = 1.0;
+  EXPECT_THROW(validate(o), ValueError);
+  o = LodOptions{};
+  o.impostor_distance_m = -1.0;
   EXPECT_THROW(validate(o), ValueError);
   EXPECT_THROW(make_lod_plant({}, LodOptions{}, 1), ValueError);
 }
