@@ -123,6 +123,8 @@ struct ViewCommand {
   double pitch_deg = 20.0;
   bool lod = false;
   double lod_distance_m = 0.0;
+  bool no_impostors = false;
+  bool no_ground = false;
   int stages = 0;  // developmental stages per tree file (0: none)
   bool wind = false;
   WindArguments wind_args;
@@ -853,13 +855,16 @@ void run_lod_view(const ViewCommand& c, const graphics::ViewerOptions& options,
   set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
   const graphics::LodScene scene =
       load_lod_scene(c.trees[0], c.format, mesh_options, graphics::LodOptions{}, true, "");
-  const graphics::LodOptions lod = lod_options(scene, c.lod_distance_m);
+  graphics::LodOptions lod = lod_options(scene, c.lod_distance_m);
+  // Impostors where expression 2 would cull (the renders keep the coarsest mesh there).
+  lod.impostor_distance_m = c.no_impostors ? 0.0 : lod.max_distance_m;
   if (!c.screenshot.empty()) rerun_under_xvfb_if_needed();
   const graphics::ViewerStats stats = graphics::run_lod_viewer(scene, lod, options);
   if (c.json) {
     print_json({{"frames", stats.frames},
                 {"mean_frame_ms", stats.mean_frame_ms},
                 {"triangles", stats.triangles},
+                {"impostors", stats.impostors},
                 {"plants", scene.placements.size()},
                 {"lod_distance_m", lod.max_distance_m},
                 {"screenshot", c.screenshot},
@@ -875,6 +880,7 @@ graphics::ViewerOptions viewer_options(const ViewCommand& c) {
   options.frames = c.frames;
   options.shadows = !c.no_shadows;
   options.panel = !c.no_panel;
+  options.ground = !c.no_ground;
   options.pitch_deg = c.pitch_deg;
   return options;
 }
@@ -1226,6 +1232,11 @@ void add_view_command(CLI::App& app) {
   }
   add_ray_cast_flag(v, view->ray_cast);
   add_lod_options(v, view->lod, view->lod_distance_m);
+  v->add_flag("--no-impostors", view->no_impostors,
+              "With --lod: draw far plants as their coarsest mesh instead of impostors (one quad "
+              "showing the plant's image from the nearest of 24 directions) beyond the "
+              "--lod-distance");
+  v->add_flag("--no-ground", view->no_ground, "Leave out the ground plane");
   add_lsystem_draw_options(v, view->lsystem);
   add_graph_lod_options(v, view->graph_lod);
   v->add_flag("--json", view->json, "Machine-readable JSON on stdout (frame time)");

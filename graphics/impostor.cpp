@@ -25,11 +25,14 @@ void image_axes(const Eigen::Vector3d& toward, const Eigen::Vector3d& up,
 
 // Four corners of the quad of one instance seen from `toward` (unit, world frame).
 void append_quad(const LodScene& scene, std::size_t i, const ImpostorViews& views,
-                 const Eigen::Vector3d& toward, std::vector<ImpostorVertex>& out) {
+                 const Eigen::Vector3d& toward, const Eigen::Vector3d& sun,
+                 std::vector<ImpostorVertex>& out) {
   const PartPlacement& p = scene.placements[i];
   const BoundingSphere s = placed_sphere(scene.plants[p.part], p);
   const Eigen::Matrix3d linear = p.linear.cast<double>();
-  const int view = nearest_impostor_view(views, linear.inverse() * toward);
+  const Eigen::Matrix3d to_plant = linear.inverse();
+  const int view = nearest_impostor_view(views, to_plant * toward);
+  const Eigen::Vector3f sun_local = (to_plant * sun).normalized().cast<float>();
   const auto layer = static_cast<float>(p.part * static_cast<std::size_t>(impostor_view_count(views)) +
                                         static_cast<std::size_t>(view));
   Eigen::Vector3d right, up;
@@ -40,7 +43,9 @@ void append_quad(const LodScene& scene, std::size_t i, const ImpostorViews& view
     const Eigen::Vector3d x = s.center + s.radius * (c[0] * right + c[1] * up);
     out.push_back({{static_cast<float>(x.x()), static_cast<float>(x.y()), static_cast<float>(x.z())},
                    {0.5f * static_cast<float>(c[0] + 1), 0.5f * static_cast<float>(c[1] + 1)},
-                   layer});
+                   layer,
+                   {sun_local.x(), sun_local.y(), sun_local.z()},
+                   static_cast<float>(s.radius)});
   }
 }
 
@@ -84,7 +89,7 @@ int nearest_impostor_view(const ImpostorViews& views, const Eigen::Vector3d& dir
 
 void append_impostor_quads(const LodScene& scene, const std::vector<InstanceLod>& choice,
                            const ImpostorViews& views, const Eigen::Vector3d& eye_m,
-                           std::vector<ImpostorVertex>& out) {
+                           const Eigen::Vector3d& sun, std::vector<ImpostorVertex>& out) {
   for (std::size_t i = 0; i < choice.size() && i < scene.placements.size(); ++i) {
     if (!choice[i].visible || !choice[i].impostor) continue;
     const PartPlacement& p = scene.placements[i];
@@ -92,7 +97,7 @@ void append_impostor_quads(const LodScene& scene, const std::vector<InstanceLod>
     const Eigen::Vector3d toward = eye_m - center;
     append_quad(scene, i, views,
                 toward.norm() > 0.0 ? Eigen::Vector3d(toward.normalized()) : Eigen::Vector3d::UnitX(),
-                out);
+                sun, out);
   }
 }
 
@@ -101,7 +106,7 @@ void append_impostor_quads_toward(const LodScene& scene, const std::vector<Insta
                                   std::vector<ImpostorVertex>& out) {
   const Eigen::Vector3d unit = toward.normalized();
   for (std::size_t i = 0; i < choice.size() && i < scene.placements.size(); ++i) {
-    if (choice[i].visible && choice[i].impostor) append_quad(scene, i, views, unit, out);
+    if (choice[i].visible && choice[i].impostor) append_quad(scene, i, views, unit, unit, out);
   }
 }
 

@@ -36,21 +36,26 @@ Eigen::Vector3d impostor_view_direction(const ImpostorViews& views, int k);
 int nearest_impostor_view(const ImpostorViews& views, const Eigen::Vector3d& direction);
 
 // One corner of an impostor quad: world position, texture coordinates in the view's image
-// (0..1, origin at its bottom left) and the image's layer (plant * view count + view).
+// (0..1, origin at its bottom left), the image's layer (plant * view count + view), the unit
+// direction to the sun in the plant's frame (the views keep the plant's normals, so each
+// instance is lit as it is turned) and the placed bounding sphere's radius.
 struct ImpostorVertex {
   float position[3];
   float uv[2];
   float layer;
+  float sun_local[3];
+  float radius;
 };
 
 // The views' images: view k of a plant is the orthographic image, (2 r) wide and high, of the
 // plant's bounding sphere (centre c, radius r) seen from c + t * direction_k with the plant's +z
 // up in the image. The quad of an instance spans the same square around the placed centre,
 // facing `eye_m`, with the placed +z projected as its up. Appends four corners per impostor of
-// `choice` (counter-clockwise seen from the eye) to `out`.
+// `choice` (counter-clockwise seen from the eye) to `out`; `sun` is the unit direction to the
+// sun in the world.
 void append_impostor_quads(const LodScene& scene, const std::vector<InstanceLod>& choice,
                            const ImpostorViews& views, const Eigen::Vector3d& eye_m,
-                           std::vector<ImpostorVertex>& out);
+                           const Eigen::Vector3d& sun, std::vector<ImpostorVertex>& out);
 
 // The same quads facing the direction `toward` (unit, from the plants to a distant light) and
 // showing the views nearest to it: the impostors as the sun sees them, for the shadow map.

@@ -45,6 +45,8 @@ struct ViewerOptions {
   std::string screenshot;  // non-empty: render `frames` frames hidden, write this image, return
   int frames = 1;          // frames before the screenshot
   bool shadows = true;
+  // The ground plane under the scene to the horizon (without it, the sky's colour is behind).
+  bool ground = true;
   // The camera's starting elevation above the horizontal, looking at the scene's centre (a few
   // degrees: a low view along the ground).
   double pitch_deg = 20.0;
@@ -72,6 +74,7 @@ struct ViewerStats {
   int frames = 0;
   double mean_frame_ms = 0.0;  // CPU wall time per frame, glFinish included
   std::size_t triangles = 0;   // of the step shown last (with per-instance LOD: drawn last)
+  std::size_t impostors = 0;   // drawn in the last frame (two triangles each, in `triangles`)
   ViewerControls controls;     // as the last frame left them
 };
 

@@ -30,6 +30,7 @@
 #include "graphics/variance_shadow.hpp"
 #include "graphics/viewer.hpp"
 #include "graphics/viewer_panel.hpp"
+#include "graphics/viewer_impostors.hpp"
 #include "graphics/viewer_relief.hpp"
 #include "graphics/viewer_wind.hpp"
 
@@ -37,6 +38,7 @@ namespace fspm::graphics {
 namespace {
 
 constexpr int kShadowSize = 1024;
+constexpr int kImpostorResolution = 256;  // pixels on a side of each impostor view
 constexpr float kSky[3] = {0.80f, 0.87f, 0.96f};     // the background, cleared every frame
 constexpr float kGround[3] = {0.55f, 0.62f, 0.45f};  // before shading, as the renders' ground
 // Ground this many scene radii away is hazed by 1 - 1/e of kMaxHaze towards the sky colour.
@@ -704,6 +706,8 @@ struct GpuScene {
   GLuint ground_program = 0;
   GLuint ground_vao = 0;  // no attributes: the ground's triangle comes from gl_VertexID
   std::unique_ptr<ReliefCrownRenderer> relief;  // with ViewerOptions::relief_crowns
+  std::unique_ptr<ImpostorRenderer> impostors;   // level of detail with impostors
+  bool ground = true;                            // ViewerOptions::ground
 };
 
 GpuScene upload_scene(const std::vector<StepRef>& steps, const std::vector<StepRef>& coarse,
@@ -730,11 +734,27 @@ void release(GpuScene& g) {
     }
   }
   g.relief.reset();  // while the context is current
+  g.impostors.reset();
   glDeleteVertexArrays(1, &g.ground_vao);
   glDeleteProgram(g.ground_program);
   glDeleteProgram(g.shadow_program);
   glDeleteProgram(g.blur_program);
   glDeleteProgram(g.scene_program);
+}
+
+// Impostors of a level-of-detail scene's plants (when it has an impostor distance), their views
+// drawn from the finest meshes of the first step as uploaded, so in the colours shown.
+std::unique_ptr<ImpostorRenderer> make_impostors(GpuScene& gpu, const LodView& lod) {
+  if (lod.scene == nullptr || lod.options.impostor_distance_m <= 0.0) return nullptr;
+  GpuStep& g = gpu.steps.front();
+  const auto draw_plant = [&](std::size_t plant) {
+    GpuMesh& m = g.meshes[lod.scene->mesh_index(plant, 0, 0)];
+    if (m.vao == 0) return;
+    set_instances(m, {glm::mat4(1.0f)});
+    draw(m, Part::kOpaque);
+  };
+  return std::make_unique<ImpostorRenderer>(*lod.scene, ImpostorViews{}, kImpostorResolution,
+                                            draw_plant, kVsmGlsl);
 }
 
 // The variance shadow map (two RG32F moment textures: the moments pass writes the first, the
@@ -834,12 +854,14 @@ FrameMatrices frame_matrices(const State& state, const Scene& scene, int width, 
 }
 
 // Per-instance level of detail: the instances of every mesh of `g` chosen for this camera.
-void choose_instances(GpuStep& g, const LodView& lod, const FrameMatrices& f) {
+void choose_instances(GpuStep& g, const LodView& lod, const FrameMatrices& f,
+                      ImpostorRenderer* impostors) {
   const Eigen::Matrix4d vp =
       Eigen::Map<const Eigen::Matrix4f>(glm::value_ptr(f.mvp)).cast<double>();
   const Eigen::Vector3d eye(f.eye.x, f.eye.y, f.eye.z);
-  const std::vector<MeshInstance> instances =
-      lod_instances(*lod.scene, select_lod(*lod.scene, eye, vp, lod.options));
+  const std::vector<InstanceLod> choice = select_lod(*lod.scene, eye, vp, lod.options);
+  const std::vector<MeshInstance> instances = lod_instances(*lod.scene, choice);
+  if (impostors != nullptr) impostors->place(choice, glm::value_ptr(f.eye), glm::value_ptr(f.sun));
   std::vector<std::vector<glm::mat4>> models(g.meshes.size());
   for (const MeshInstance& inst : instances) models[inst.mesh].push_back(model_matrix(inst));
   for (std::size_t k = 0; k < g.meshes.size(); ++k) {
@@ -849,6 +871,7 @@ void choose_instances(GpuStep& g, const LodView& lod, const FrameMatrices& f) {
                                    [](const BlendedPart& p) { return !p.positions.empty(); });
   if (blended) place_blended(g, models);
   g.triangles = lod_triangle_count(*lod.scene, instances);
+  if (impostors != nullptr) g.triangles += 2 * impostors->quads();
 }
 
 // The uniforms of kVsmGlsl; the blurred moments are texture unit 0.
@@ -899,6 +922,7 @@ void draw_shadow_map(const GpuScene& gpu, const GpuStep& g, const Targets& t,
                      glm::value_ptr(f.light_mvp));
   for (const GpuMesh& m : g.meshes) draw(m);
   if (gpu.relief) gpu.relief->draw_moments(glm::value_ptr(f.light_mvp), glm::value_ptr(f.sun));
+  if (gpu.impostors) gpu.impostors->draw_moments(glm::value_ptr(f.light_mvp));
   glDisable(GL_DEPTH_TEST);
   glUseProgram(gpu.blur_program);
   glUniform1i(glGetUniformLocation(gpu.blur_program, "source"), 0);
@@ -927,7 +951,7 @@ void draw_frame(const GpuScene& gpu, const GpuStep& g, const Targets& t, const F
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, t.moments_tex[0]);
-  draw_ground(gpu, f, shadows);
+  if (gpu.ground) draw_ground(gpu, f, shadows);
   const GLuint p = gpu.scene_program;
   glUseProgram(p);
   glUniformMatrix4fv(glGetUniformLocation(p, "mvp"), 1, GL_FALSE, glm::value_ptr(f.mvp));
@@ -937,6 +961,12 @@ void draw_frame(const GpuScene& gpu, const GpuStep& g, const Targets& t, const F
   glUniform3fv(glGetUniformLocation(p, "eye"), 1, glm::value_ptr(f.eye));
   set_shadow_uniforms(p, shadows);
   for (const GpuMesh& m : g.meshes) draw(m, Part::kOpaque);
+  if (gpu.impostors) {
+    glUseProgram(gpu.impostors->program());
+    set_shadow_uniforms(gpu.impostors->program(), shadows);
+    gpu.impostors->draw(glm::value_ptr(f.mvp), glm::value_ptr(f.light_mvp));
+    glUseProgram(p);
+  }
   if (gpu.relief) {
     for (const GLuint rp : gpu.relief->programs()) {
       glUseProgram(rp);
@@ -1045,7 +1075,9 @@ const GpuStep& draw_controlled_frame(GLFWwindow* window, State& state, GpuScene&
   ViewerControls& c = state.controls;
   c.step = std::clamp(c.step, 0, state.steps - 1);
   if (c.color_by != x.scene.color_by) {
+    gpu.impostors.reset();
     recolor(gpu, x.scene, x.make, o, c.color_by);
+    gpu.impostors = make_impostors(gpu, x.lod);
     x.wind.vbo = 0;  // new buffers, new colours to keep
   }
   x.info.far = !gpu.coarse.empty() && state.camera.distance > c.lod_distance_m;
@@ -1055,7 +1087,7 @@ const GpuStep& draw_controlled_frame(GLFWwindow* window, State& state, GpuScene&
   const FrameMatrices f = frame_matrices(state, x.scene, fw, fh);
   if (x.lod.scene != nullptr) {
     x.lod.options.max_distance_m = c.lod_distance_m;
-    choose_instances(g, x.lod, f);
+    choose_instances(g, x.lod, f, gpu.impostors.get());
   }
   if (o.wind && !x.info.far) sway(g, x.wind, *o.wind, x.time_s, c.wind_strength);
   sort_blended(g.soup, f.eye);
@@ -1088,6 +1120,7 @@ ViewerStats run_frames(GLFWwindow* window, State& state, GpuScene& gpu, const Ta
     x.info.frame_ms = smooth_ms;
     ++stats.frames;
     stats.triangles = g.triangles;
+    stats.impostors = gpu.impostors ? gpu.impostors->quads() : 0;
     if (offscreen) {
       if (stats.frames >= o.frames) break;
       glfwPollEvents();
@@ -1166,6 +1199,8 @@ ViewerStats view(const StepMaker& make, const std::vector<double>& labels, const
   State state;
   GLFWwindow* window = open_window(o, x.scene, static_cast<int>(steps.size()), state);
   GpuScene gpu = upload_scene(steps, coarse_steps, o, x.scene);
+  gpu.impostors = make_impostors(gpu, lod);
+  gpu.ground = o.ground;
   Targets targets = make_targets(o);
   ViewerPanel panel(window, o.panel);
   state.panel = &panel;
