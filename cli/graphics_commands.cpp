@@ -858,8 +858,14 @@ void run_lod_view(const ViewCommand& c, const graphics::ViewerOptions& options,
   graphics::LodOptions lod = lod_options(scene, c.lod_distance_m);
   // Impostors where expression 2 would cull (the renders keep the coarsest mesh there).
   lod.impostor_distance_m = c.no_impostors ? 0.0 : lod.max_distance_m;
+  graphics::ViewerOptions with_terrain = options;
+  // A terrain is the ground: no plane under it.
+  if (input_kind(c.trees[0]) == InputKind::kScene &&
+      read_scene_description(c.trees[0]).terrain.has_value()) {
+    with_terrain.ground = false;
+  }
   if (!c.screenshot.empty()) rerun_under_xvfb_if_needed();
-  const graphics::ViewerStats stats = graphics::run_lod_viewer(scene, lod, options);
+  const graphics::ViewerStats stats = graphics::run_lod_viewer(scene, lod, with_terrain);
   if (c.json) {
     print_json({{"frames", stats.frames},
                 {"mean_frame_ms", stats.mean_frame_ms},

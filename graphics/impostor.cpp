@@ -24,17 +24,17 @@ void image_axes(const Eigen::Vector3d& toward, const Eigen::Vector3d& up,
 }
 
 // Four corners of the quad of one instance seen from `toward` (unit, world frame).
-void append_quad(const LodScene& scene, std::size_t i, const ImpostorViews& views,
-                 const Eigen::Vector3d& toward, const Eigen::Vector3d& sun,
-                 std::vector<ImpostorVertex>& out) {
+void append_quad(const LodScene& scene, std::size_t i,
+                 const std::vector<Eigen::Vector3d>& directions, const Eigen::Vector3d& toward,
+                 const Eigen::Vector3d& sun, std::vector<ImpostorVertex>& out) {
   const PartPlacement& p = scene.placements[i];
   const BoundingSphere s = placed_sphere(scene.plants[p.part], p);
   const Eigen::Matrix3d linear = p.linear.cast<double>();
   const Eigen::Matrix3d to_plant = linear.inverse();
-  const int view = nearest_impostor_view(views, to_plant * toward);
+  const int view = nearest_impostor_view(directions, to_plant * toward);
   const Eigen::Vector3f sun_local = (to_plant * sun).normalized().cast<float>();
-  const auto layer = static_cast<float>(p.part * static_cast<std::size_t>(impostor_view_count(views)) +
-                                        static_cast<std::size_t>(view));
+  const auto layer =
+      static_cast<float>(p.part * directions.size() + static_cast<std::size_t>(view));
   Eigen::Vector3d right, up;
   image_axes(toward, (linear * Eigen::Vector3d::UnitZ()).normalized(),
              (linear * Eigen::Vector3d::UnitX()).normalized(), right, up);
@@ -73,12 +73,25 @@ Eigen::Vector3d impostor_view_direction(const ImpostorViews& views, int k) {
           std::sin(elevation)};
 }
 
+std::vector<Eigen::Vector3d> impostor_view_directions(const ImpostorViews& views) {
+  std::vector<Eigen::Vector3d> out;
+  for (int k = 0; k < impostor_view_count(views); ++k) {
+    out.push_back(impostor_view_direction(views, k));
+  }
+  return out;
+}
+
 int nearest_impostor_view(const ImpostorViews& views, const Eigen::Vector3d& direction) {
+  return nearest_impostor_view(impostor_view_directions(views), direction);
+}
+
+int nearest_impostor_view(const std::vector<Eigen::Vector3d>& directions,
+                          const Eigen::Vector3d& direction) {
   int best = 0;
   double best_cos = -2.0;
   const Eigen::Vector3d d = direction.normalized();
-  for (int k = 0; k < impostor_view_count(views); ++k) {
-    const double c = impostor_view_direction(views, k).dot(d);
+  for (int k = 0; k < static_cast<int>(directions.size()); ++k) {
+    const double c = directions[static_cast<std::size_t>(k)].dot(d);
     if (c > best_cos) {
       best_cos = c;
       best = k;
@@ -90,12 +103,13 @@ int nearest_impostor_view(const ImpostorViews& views, const Eigen::Vector3d& dir
 void append_impostor_quads(const LodScene& scene, const std::vector<InstanceLod>& choice,
                            const ImpostorViews& views, const Eigen::Vector3d& eye_m,
                            const Eigen::Vector3d& sun, std::vector<ImpostorVertex>& out) {
+  const std::vector<Eigen::Vector3d> directions = impostor_view_directions(views);
   for (std::size_t i = 0; i < choice.size() && i < scene.placements.size(); ++i) {
     if (!choice[i].visible || !choice[i].impostor) continue;
     const PartPlacement& p = scene.placements[i];
     const Eigen::Vector3d center = placed_sphere(scene.plants[p.part], p).center;
     const Eigen::Vector3d toward = eye_m - center;
-    append_quad(scene, i, views,
+    append_quad(scene, i, directions,
                 toward.norm() > 0.0 ? Eigen::Vector3d(toward.normalized()) : Eigen::Vector3d::UnitX(),
                 sun, out);
   }
@@ -105,8 +119,9 @@ void append_impostor_quads_toward(const LodScene& scene, const std::vector<Insta
                                   const ImpostorViews& views, const Eigen::Vector3d& toward,
                                   std::vector<ImpostorVertex>& out) {
   const Eigen::Vector3d unit = toward.normalized();
+  const std::vector<Eigen::Vector3d> directions = impostor_view_directions(views);
   for (std::size_t i = 0; i < choice.size() && i < scene.placements.size(); ++i) {
-    if (choice[i].visible && choice[i].impostor) append_quad(scene, i, views, unit, unit, out);
+    if (choice[i].visible && choice[i].impostor) append_quad(scene, i, directions, unit, unit, out);
   }
 }
 

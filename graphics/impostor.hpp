@@ -32,7 +32,13 @@ int impostor_view_count(const ImpostorViews& views);
 // (elevation e, azimuth a), in the plant's frame.
 Eigen::Vector3d impostor_view_direction(const ImpostorViews& views, int k);
 
-// The view whose direction makes the smallest angle with `direction` (plant frame, non-zero).
+// Every view's direction, in order.
+std::vector<Eigen::Vector3d> impostor_view_directions(const ImpostorViews& views);
+
+// The view whose direction makes the smallest angle with `direction` (plant frame, non-zero),
+// among `directions` (impostor_view_directions, computed once for many instances).
+int nearest_impostor_view(const std::vector<Eigen::Vector3d>& directions,
+                          const Eigen::Vector3d& direction);
 int nearest_impostor_view(const ImpostorViews& views, const Eigen::Vector3d& direction);
 
 // One corner of an impostor quad: world position, texture coordinates in the view's image

@@ -245,6 +245,7 @@ struct GpuStep {
   std::vector<BlendedPart> blended;  // one per mesh
   BlendedSoup soup;
   std::size_t triangles = 0;  // of the explicit scene
+  std::uint64_t casters = 0;  // with per-instance LOD: a hash of the choice drawn (choice_hash)
 };
 
 struct Scene {
@@ -762,6 +763,10 @@ std::unique_ptr<ImpostorRenderer> make_impostors(GpuScene& gpu, const LodView& l
 // default framebuffer is undefined).
 struct Targets {
   std::array<GLuint, 2> moments_tex{}, moments_fbo{};
+  // What the shadow map holds: the step and its casters it was drawn for (none: draw it). The
+  // sun is fixed, so the map changes only with what casts shadows.
+  const GpuStep* shadow_step = nullptr;
+  std::uint64_t shadow_casters = 0;
   GLuint shadow_depth_rb = 0;                         // depth test of the moments pass
   GLuint target_fbo = 0, color_rb = 0, depth_rb = 0;  // 0: the window
 };
@@ -853,6 +858,18 @@ FrameMatrices frame_matrices(const State& state, const Scene& scene, int width, 
   return f;
 }
 
+// FNV-1a over what each instance's choice draws: equal hashes, equal shadow casters.
+std::uint64_t choice_hash(const std::vector<InstanceLod>& choice) {
+  std::uint64_t h = 1469598103934665603ULL;
+  const auto mix = [&](std::uint64_t v) { h = (h ^ v) * 1099511628211ULL; };
+  for (const InstanceLod& c : choice) {
+    mix(c.visible ? (c.impostor ? 2 : 1) : 0);
+    mix(c.resolution);
+    mix(c.share);
+  }
+  return h;
+}
+
 // Per-instance level of detail: the instances of every mesh of `g` chosen for this camera.
 void choose_instances(GpuStep& g, const LodView& lod, const FrameMatrices& f,
                       ImpostorRenderer* impostors) {
@@ -860,6 +877,7 @@ void choose_instances(GpuStep& g, const LodView& lod, const FrameMatrices& f,
       Eigen::Map<const Eigen::Matrix4f>(glm::value_ptr(f.mvp)).cast<double>();
   const Eigen::Vector3d eye(f.eye.x, f.eye.y, f.eye.z);
   const std::vector<InstanceLod> choice = select_lod(*lod.scene, eye, vp, lod.options);
+  g.casters = choice_hash(choice);
   const std::vector<MeshInstance> instances = lod_instances(*lod.scene, choice);
   if (impostors != nullptr) impostors->place(choice, glm::value_ptr(f.eye), glm::value_ptr(f.sun));
   std::vector<std::vector<glm::mat4>> models(g.meshes.size());
@@ -941,9 +959,13 @@ void draw_shadow_map(const GpuScene& gpu, const GpuStep& g, const Targets& t,
 // Step 5: the shadow map, then the scene: opaque geometry and the ground, then the crowns and
 // translucent obstacles blended over it back to front (sorted by sort_blended), without writing
 // depth.
-void draw_frame(const GpuScene& gpu, const GpuStep& g, const Targets& t, const FrameMatrices& f,
+void draw_frame(const GpuScene& gpu, const GpuStep& g, Targets& t, const FrameMatrices& f,
                 bool shadows) {
-  if (shadows) draw_shadow_map(gpu, g, t, f);
+  if (shadows && (t.shadow_step != &g || t.shadow_casters != g.casters)) {
+    draw_shadow_map(gpu, g, t, f);
+    t.shadow_step = &g;
+    t.shadow_casters = g.casters;
+  }
   glEnable(GL_DEPTH_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, t.target_fbo);
   glViewport(0, 0, f.width, f.height);
@@ -1071,12 +1093,13 @@ struct FrameContext {
 // One frame: the controls applied (colour, level of detail), the scene and the panel drawn.
 // Returns the step drawn.
 const GpuStep& draw_controlled_frame(GLFWwindow* window, State& state, GpuScene& gpu,
-                                     const Targets& t, FrameContext& x, const ViewerOptions& o) {
+                                     Targets& t, FrameContext& x, const ViewerOptions& o) {
   ViewerControls& c = state.controls;
   c.step = std::clamp(c.step, 0, state.steps - 1);
   if (c.color_by != x.scene.color_by) {
     gpu.impostors.reset();
     recolor(gpu, x.scene, x.make, o, c.color_by);
+    t.shadow_step = nullptr;  // new buffers
     gpu.impostors = make_impostors(gpu, x.lod);
     x.wind.vbo = 0;  // new buffers, new colours to keep
   }
@@ -1089,7 +1112,10 @@ const GpuStep& draw_controlled_frame(GLFWwindow* window, State& state, GpuScene&
     x.lod.options.max_distance_m = c.lod_distance_m;
     choose_instances(g, x.lod, f, gpu.impostors.get());
   }
-  if (o.wind && !x.info.far) sway(g, x.wind, *o.wind, x.time_s, c.wind_strength);
+  if (o.wind && !x.info.far) {
+    sway(g, x.wind, *o.wind, x.time_s, c.wind_strength);
+    t.shadow_step = nullptr;  // the casters moved
+  }
   sort_blended(g.soup, f.eye);
   draw_frame(gpu, g, t, f, c.shadows);
   x.info.triangles = g.triangles;
@@ -1098,7 +1124,7 @@ const GpuStep& draw_controlled_frame(GLFWwindow* window, State& state, GpuScene&
 }
 
 // Step 6: frames until the window closes (or `frames` frames for a screenshot), timed.
-ViewerStats run_frames(GLFWwindow* window, State& state, GpuScene& gpu, const Targets& t,
+ViewerStats run_frames(GLFWwindow* window, State& state, GpuScene& gpu, Targets& t,
                        FrameContext& x, const ViewerOptions& o) {
   const bool offscreen = !o.screenshot.empty();
   const std::vector<double>& labels = *x.labels;
