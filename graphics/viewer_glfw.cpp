@@ -1109,6 +1109,8 @@ const GpuStep& draw_controlled_frame(GLFWwindow* window, State& state, GpuScene&
   if (o.screenshot.empty()) glfwGetFramebufferSize(window, &fw, &fh);
   const FrameMatrices f = frame_matrices(state, x.scene, fw, fh);
   if (x.lod.scene != nullptr) {
+    // The panel's distance moves the impostors' with it.
+    x.lod.options.impostor_distance_m *= c.lod_distance_m / x.lod.options.max_distance_m;
     x.lod.options.max_distance_m = c.lod_distance_m;
     choose_instances(g, x.lod, f, gpu.impostors.get());
   }
@@ -1142,6 +1144,7 @@ ViewerStats run_frames(GLFWwindow* window, State& state, GpuScene& gpu, Targets&
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     total_ms += ms;
+    if (stats.frames == 0) stats.first_frame_ms = ms;
     smooth_ms = stats.frames == 0 ? ms : 0.9 * smooth_ms + 0.1 * ms;
     x.info.frame_ms = smooth_ms;
     ++stats.frames;

@@ -322,6 +322,7 @@ void ImpostorRenderer::place(const std::vector<InstanceLod>& choice, const float
     for (std::uint32_t q = 0; q < quads; ++q) {
       for (std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) indices.push_back(4 * q + i);
     }
+    glBindVertexArray(0);  // the element buffer binding belongs to the bound vertex array
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.ibo);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * 4),
                  indices.data(), GL_STATIC_DRAW);

@@ -80,7 +80,7 @@ TEST(Impostor, QuadFacesTheEyeAndSpansThePlacedSphere) {
   choice[1].visible = true;
   const Eigen::Vector3d eye(10, -50, 2);  // in front of the turned plant, looking along +y
   std::vector<ImpostorVertex> quads;
-  append_impostor_quads(scene, choice, ImpostorViews{}, eye, quads);
+  append_impostor_quads(scene, choice, ImpostorViews{}, eye, Eigen::Vector3d::UnitY(), quads);
   ASSERT_EQ(quads.size(), 4u);
   const Eigen::Vector3d center(10, 0, 2);  // turned and doubled: (0, 0, 2) + (10, 0, 0)
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
@@ -98,6 +98,10 @@ TEST(Impostor, QuadFacesTheEyeAndSpansThePlacedSphere) {
   // The eye lies along -y of the world, which the turn maps from -x of the plant: azimuth 180
   // degrees, elevation atan(0 / 50) = 0: view 4 of plant 0.
   EXPECT_EQ(quads[0].layer, 4.0f);
+  // The sun along +y of the world is along +x of the turned plant; the radius is the placed one.
+  EXPECT_NEAR(quads[0].sun_local[0], 1.0f, 1e-6f);
+  EXPECT_NEAR(quads[0].sun_local[1], 0.0f, 1e-6f);
+  EXPECT_FLOAT_EQ(quads[0].radius, 2.0f);
 }
 
 TEST(Impostor, QuadsTowardTheSunShowItsView) {
