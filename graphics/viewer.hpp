@@ -105,7 +105,8 @@ ViewerStats run_instanced_viewer(const std::vector<InstancedMesh>& steps,
 
 // A scene of many plants with level of detail per instance (instance_lod.hpp): every frame, the
 // plants outside the view are skipped and the others drawn at the resolution and leaf share
-// chosen for the camera. One step (no growth). Same errors as above, and ValueError for bad
+// chosen for the camera, or, beyond LodOptions::impostor_distance_m, as impostors
+// (viewer_impostors.hpp). One step (no growth). Same errors as above, and ValueError for bad
 // level-of-detail options.
 ViewerStats run_lod_viewer(const LodScene& scene, const LodOptions& lod_options,
                            const ViewerOptions& options);
