@@ -975,7 +975,7 @@ void print_view_json(const ViewCommand& c, const std::vector<graphics::Instanced
   }
   print_json({{"frames", stats.frames},
               {"mean_frame_ms", stats.mean_frame_ms},
-                {"first_frame_ms", stats.first_frame_ms},
+              {"first_frame_ms", stats.first_frame_ms},
               {"triangles", stats.triangles},
               {"steps", steps.size()},
               {"meshes", meshes},

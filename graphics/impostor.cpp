@@ -41,11 +41,12 @@ void append_quad(const LodScene& scene, std::size_t i,
   constexpr int kCorners[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
   for (const auto& c : kCorners) {
     const Eigen::Vector3d x = s.center + s.radius * (c[0] * right + c[1] * up);
-    out.push_back({{static_cast<float>(x.x()), static_cast<float>(x.y()), static_cast<float>(x.z())},
-                   {0.5f * static_cast<float>(c[0] + 1), 0.5f * static_cast<float>(c[1] + 1)},
-                   layer,
-                   {sun_local.x(), sun_local.y(), sun_local.z()},
-                   static_cast<float>(s.radius)});
+    out.push_back(
+        {{static_cast<float>(x.x()), static_cast<float>(x.y()), static_cast<float>(x.z())},
+         {0.5f * static_cast<float>(c[0] + 1), 0.5f * static_cast<float>(c[1] + 1)},
+         layer,
+         {sun_local.x(), sun_local.y(), sun_local.z()},
+         static_cast<float>(s.radius)});
   }
 }
 
@@ -66,8 +67,8 @@ int impostor_view_count(const ImpostorViews& views) {
 }
 
 Eigen::Vector3d impostor_view_direction(const ImpostorViews& views, int k) {
-  const double elevation = views.elevations_deg.at(static_cast<std::size_t>(k / views.azimuths)) *
-                           kPi / 180.0;
+  const double elevation =
+      views.elevations_deg.at(static_cast<std::size_t>(k / views.azimuths)) * kPi / 180.0;
   const double azimuth = 2.0 * kPi * (k % views.azimuths) / views.azimuths;
   return {std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
           std::sin(elevation)};
@@ -109,9 +110,10 @@ void append_impostor_quads(const LodScene& scene, const std::vector<InstanceLod>
     const PartPlacement& p = scene.placements[i];
     const Eigen::Vector3d center = placed_sphere(scene.plants[p.part], p).center;
     const Eigen::Vector3d toward = eye_m - center;
-    append_quad(scene, i, directions,
-                toward.norm() > 0.0 ? Eigen::Vector3d(toward.normalized()) : Eigen::Vector3d::UnitX(),
-                sun, out);
+    append_quad(
+        scene, i, directions,
+        toward.norm() > 0.0 ? Eigen::Vector3d(toward.normalized()) : Eigen::Vector3d::UnitX(), sun,
+        out);
   }
 }
 

@@ -30,7 +30,8 @@ struct LodOptions {
   // in [-0.5, 0.5) hashed from i (lod_jitter).
   double jitter = 0.25;
   // Shares of the leaves prebuilt per resolution, from 1 down (strictly decreasing, in (0, 1]).
-  std::vector<double> leaf_fractions = {1.0, 0.5, 0.25, 0.125};  // Impostors (impostor.hpp): a plant as large as the largest of the scene is drawn as one
+  std::vector<double> leaf_fractions = {1.0, 0.5, 0.25, 0.125};
+  // Impostors (impostor.hpp): a plant as large as the largest of the scene is drawn as one
   // textured quad beyond this distance, a smaller one from proportionally nearer (the same
   // projected size); jittered as the switch distances. 0: never (renders without impostors).
   double impostor_distance_m = 0.0;

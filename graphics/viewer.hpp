@@ -76,9 +76,9 @@ struct ViewerStats {
   // The first frame's: it draws the shadow map, which later frames reuse until the shadow
   // casters change (a new step, the wind, another level-of-detail choice), and compiles shaders.
   double first_frame_ms = 0.0;
-  std::size_t triangles = 0;   // of the step shown last (with per-instance LOD: drawn last)
-  std::size_t impostors = 0;   // drawn in the last frame (two triangles each, in `triangles`)
-  ViewerControls controls;     // as the last frame left them
+  std::size_t triangles = 0;  // of the step shown last (with per-instance LOD: drawn last)
+  std::size_t impostors = 0;  // drawn in the last frame (two triangles each, in `triangles`)
+  ViewerControls controls;    // as the last frame left them
 };
 
 // True when fspm was built with the viewer (FSPM_WITH_VIEWER).

@@ -29,8 +29,8 @@
 #include "graphics/translucent_sort.hpp"
 #include "graphics/variance_shadow.hpp"
 #include "graphics/viewer.hpp"
-#include "graphics/viewer_panel.hpp"
 #include "graphics/viewer_impostors.hpp"
+#include "graphics/viewer_panel.hpp"
 #include "graphics/viewer_relief.hpp"
 #include "graphics/viewer_wind.hpp"
 
@@ -38,7 +38,7 @@ namespace fspm::graphics {
 namespace {
 
 constexpr int kShadowSize = 1024;
-constexpr int kImpostorResolution = 256;  // pixels on a side of each impostor view
+constexpr int kImpostorResolution = 256;             // pixels on a side of each impostor view
 constexpr float kSky[3] = {0.80f, 0.87f, 0.96f};     // the background, cleared every frame
 constexpr float kGround[3] = {0.55f, 0.62f, 0.45f};  // before shading, as the renders' ground
 // Ground this many scene radii away is hazed by 1 - 1/e of kMaxHaze towards the sky colour.
@@ -707,8 +707,8 @@ struct GpuScene {
   GLuint ground_program = 0;
   GLuint ground_vao = 0;  // no attributes: the ground's triangle comes from gl_VertexID
   std::unique_ptr<ReliefCrownRenderer> relief;  // with ViewerOptions::relief_crowns
-  std::unique_ptr<ImpostorRenderer> impostors;   // level of detail with impostors
-  bool ground = true;                            // ViewerOptions::ground
+  std::unique_ptr<ImpostorRenderer> impostors;  // level of detail with impostors
+  bool ground = true;                           // ViewerOptions::ground
 };
 
 GpuScene upload_scene(const std::vector<StepRef>& steps, const std::vector<StepRef>& coarse,
@@ -1092,8 +1092,8 @@ struct FrameContext {
 
 // One frame: the controls applied (colour, level of detail), the scene and the panel drawn.
 // Returns the step drawn.
-const GpuStep& draw_controlled_frame(GLFWwindow* window, State& state, GpuScene& gpu,
-                                     Targets& t, FrameContext& x, const ViewerOptions& o) {
+const GpuStep& draw_controlled_frame(GLFWwindow* window, State& state, GpuScene& gpu, Targets& t,
+                                     FrameContext& x, const ViewerOptions& o) {
   ViewerControls& c = state.controls;
   c.step = std::clamp(c.step, 0, state.steps - 1);
   if (c.color_by != x.scene.color_by) {
@@ -1126,8 +1126,8 @@ const GpuStep& draw_controlled_frame(GLFWwindow* window, State& state, GpuScene&
 }
 
 // Step 6: frames until the window closes (or `frames` frames for a screenshot), timed.
-ViewerStats run_frames(GLFWwindow* window, State& state, GpuScene& gpu, Targets& t,
-                       FrameContext& x, const ViewerOptions& o) {
+ViewerStats run_frames(GLFWwindow* window, State& state, GpuScene& gpu, Targets& t, FrameContext& x,
+                       const ViewerOptions& o) {
   const bool offscreen = !o.screenshot.empty();
   const std::vector<double>& labels = *x.labels;
   ViewerStats stats;

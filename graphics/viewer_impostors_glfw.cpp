@@ -167,12 +167,11 @@ QuadBuffer make_quad_buffer(GLuint ibo) {
   glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ibo);
   constexpr GLsizei kStride = sizeof(ImpostorVertex);
-  const std::pair<GLint, std::size_t> attributes[] = {
-      {3, offsetof(ImpostorVertex, position)},
-      {2, offsetof(ImpostorVertex, uv)},
-      {1, offsetof(ImpostorVertex, layer)},
-      {3, offsetof(ImpostorVertex, sun_local)},
-      {1, offsetof(ImpostorVertex, radius)}};
+  const std::pair<GLint, std::size_t> attributes[] = {{3, offsetof(ImpostorVertex, position)},
+                                                      {2, offsetof(ImpostorVertex, uv)},
+                                                      {1, offsetof(ImpostorVertex, layer)},
+                                                      {3, offsetof(ImpostorVertex, sun_local)},
+                                                      {1, offsetof(ImpostorVertex, radius)}};
   for (GLuint a = 0; a < 5; ++a) {
     glEnableVertexAttribArray(a);
     glVertexAttribPointer(a, attributes[a].first, GL_FLOAT, GL_FALSE, kStride,

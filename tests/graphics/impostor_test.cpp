@@ -60,8 +60,9 @@ LodScene two_plants() {
   plant.sphere.radius = 1.0;
   scene.plants.push_back(plant);
   PartPlacement turned;
-  turned.linear = 2.0f * Eigen::AngleAxisf(static_cast<float>(kPi / 2), Eigen::Vector3f::UnitZ())
-                             .toRotationMatrix();
+  turned.linear =
+      2.0f *
+      Eigen::AngleAxisf(static_cast<float>(kPi / 2), Eigen::Vector3f::UnitZ()).toRotationMatrix();
   turned.translation = {10, 0, 0};
   PartPlacement plain;
   plain.translation = {-10, 0, 0};

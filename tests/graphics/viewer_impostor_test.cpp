@@ -60,8 +60,8 @@ TriangleMesh bound_specks() {
   for (const Eigen::Vector3f& p : {Eigen::Vector3f(-25, -25, 0), Eigen::Vector3f(25, 25, 0),
                                    Eigen::Vector3f(-25, 25, 12), Eigen::Vector3f(25, -25, 12)}) {
     const auto n = static_cast<std::uint32_t>(m.positions.size());
-    for (const Eigen::Vector3f& d : {Eigen::Vector3f(0, 0, 0), Eigen::Vector3f(1e-3f, 0, 0),
-                                     Eigen::Vector3f(0, 0, 1e-3f)}) {
+    for (const Eigen::Vector3f& d :
+         {Eigen::Vector3f(0, 0, 0), Eigen::Vector3f(1e-3f, 0, 0), Eigen::Vector3f(0, 0, 1e-3f)}) {
       m.positions.push_back(p + d);
       m.normals.push_back(Eigen::Vector3f::UnitY());
       m.uvs.push_back(Eigen::Vector2f::Zero());
@@ -94,7 +94,8 @@ LodScene grid_scene(double extra_deg, bool ground = false) {
   for (int i = 0; i < 16; ++i) {
     PartPlacement p;
     const double turn = (37.0 * i + extra_deg) * kPi / 180.0;
-    p.linear = Eigen::AngleAxisf(static_cast<float>(turn), Eigen::Vector3f::UnitZ()).toRotationMatrix();
+    p.linear =
+        Eigen::AngleAxisf(static_cast<float>(turn), Eigen::Vector3f::UnitZ()).toRotationMatrix();
     p.translation = Eigen::Vector3f(10.0f * static_cast<float>(i % 4) - 15.0f,
                                     10.0f * static_cast<float>(i / 4) - 15.0f, 0.0f);
     scene.placements.push_back(p);
@@ -221,9 +222,10 @@ TEST(ViewerImpostors, ShadowMapFollowsTheCasters) {
   const LodScene scene = grid_scene(0.0, true);
   const Shot impostors = view(scene, 1e-3, 1, dir / "impostors.png");
   const Shot meshes = view(scene, 0.0, 1, dir / "meshes.png");
-  const Shot switched = view(scene, 1e-3, 3, dir / "switched.png", [](int frame, ViewerControls& c) {
-    if (frame == 2) c.lod_distance_m = 1e6;
-  });
+  const Shot switched =
+      view(scene, 1e-3, 3, dir / "switched.png", [](int frame, ViewerControls& c) {
+        if (frame == 2) c.lod_distance_m = 1e6;
+      });
   EXPECT_EQ(impostors.stats.impostors, 16u);
   EXPECT_EQ(switched.stats.impostors, 0u);
   EXPECT_NE(impostors.image.rgba, meshes.image.rgba);  // the casters' shadows differ
