@@ -950,10 +950,10 @@ std::vector<ViewSource> read_view_sources(const ViewCommand& c, int size_px,
 }
 
 // The meshes of every age step, and a far level of detail: rings four times coarser, at most
-// six sides.
-void mesh_view_steps(const ViewCommand& c, const std::vector<ViewSource>& sources,
-                     std::vector<double>& ages, std::vector<graphics::InstancedMesh>& steps,
-                     std::vector<graphics::InstancedMesh>& far) {
+// six sides. Returns the far meshes' ring edge length.
+double mesh_view_steps(const ViewCommand& c, const std::vector<ViewSource>& sources,
+                       std::vector<double>& ages, std::vector<graphics::InstancedMesh>& steps,
+                       std::vector<graphics::InstancedMesh>& far) {
   if (ages.empty()) ages.push_back(std::numeric_limits<double>::infinity());
   std::sort(ages.begin(), ages.end());
   graphics::MeshOptions mesh_options;
@@ -964,6 +964,7 @@ void mesh_view_steps(const ViewCommand& c, const std::vector<ViewSource>& source
   coarse.max_sides = 6;
   coarse.min_sides = 3;
   far = view_steps(sources, c.format, ages, coarse);
+  return coarse.edge_length_m;
 }
 
 void print_view_json(const ViewCommand& c, const std::vector<graphics::InstancedMesh>& steps,
@@ -1063,7 +1064,7 @@ void run_view(ViewCommand c) {
     load_pvd_steps(c, steps, ages);
   } else {
     const auto sources = read_view_sources(c, std::max(options.width, options.height), ages);
-    mesh_view_steps(c, sources, ages, steps, far);
+    options.coarse_edge_m = mesh_view_steps(c, sources, ages, steps, far);
   }
   if (!c.color_by.empty()) {
     for (const auto& step : steps) {

@@ -53,6 +53,11 @@ struct ViewerOptions {
   // Distance-based level of detail: beyond this multiple of the starting camera distance the
   // coarse meshes (when given) are drawn instead.
   double lod_distance_factor = 1.5;
+  // The ring edge length of the coarse meshes (0: not known). When given, they are drawn from
+  // the nearer of that distance and the one at which the edge spans at most two pixels: there
+  // the coarse image differs from the fine one less than the fine one does from itself when the
+  // camera turns by half a pixel (a screen-space error bound, docs/graphics.md).
+  double coarse_edge_m = 0.0;
   // The controls panel in the window's top-left corner (drawn into screenshots too); fspm view
   // shows it unless --no-panel. Ignored when fspm was built without Dear ImGui.
   bool panel = false;

@@ -38,7 +38,8 @@ namespace fspm::graphics {
 namespace {
 
 constexpr int kShadowSize = 1024;
-constexpr int kImpostorResolution = 256;             // pixels on a side of each impostor view
+constexpr int kImpostorResolution = 256;  // pixels on a side of each impostor view
+constexpr double kCoarseEdgePixels = 2.0;  // ViewerOptions::coarse_edge_m
 constexpr float kSky[3] = {0.80f, 0.87f, 0.96f};     // the background, cleared every frame
 constexpr float kGround[3] = {0.55f, 0.62f, 0.45f};  // before shading, as the renders' ground
 // Ground this many scene radii away is hazed by 1 - 1/e of kMaxHaze towards the sky colour.
@@ -692,6 +693,12 @@ GLFWwindow* open_window(const ViewerOptions& o, const Scene& scene, int steps, S
   state.controls.shadows = o.shadows;
   state.controls.color_by = o.color_by;
   state.controls.lod_distance_m = o.lod_distance_factor * state.home.distance;
+  if (o.coarse_edge_m > 0.0) {
+    // Pixels per metre at distance d: H / (2 d tan(fov / 2)), the vertical field of view 40 deg.
+    const double two_pixels_m = o.coarse_edge_m * o.height /
+                                (2.0 * std::tan(glm::radians(20.0)) * kCoarseEdgePixels);
+    state.controls.lod_distance_m = std::min(state.controls.lod_distance_m, two_pixels_m);
+  }
   glfwSetWindowUserPointer(window, &state);
   glfwSetKeyCallback(window, on_key);
   glfwSetMouseButtonCallback(window, on_button);

@@ -227,5 +227,35 @@ TEST_F(ViewerBlending, CrownsAreTranslucentAndBlendedBackToFront) {
   EXPECT_GT(order_matters, 12.0);
 }
 
+// The coarse meshes take over where their ring edge spans at most two pixels: the small tree
+// (about 4 m across, seen from some 6 m at 240 pixels high, about 50 pixels per metre) keeps
+// its fine mesh with coarse edges of 0.2 m (10 pixels) and takes the coarse one with edges of
+// 1 mm (0.05 pixels); without an edge length the switch stays at 1.5 times the starting distance.
+TEST(Viewer, CoarseMeshesWhereTheirEdgesSpanTwoPixels) {
+  if (!viewer_available() || !render_available()) GTEST_SKIP() << "built without viewer/VTK";
+  if (!display_available()) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
+  const fs::path dir = fs::temp_directory_path() / ("fspm_coarse_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  MeshOptions fine;
+  fine.edge_length_m = 0.001;  // 16 sides everywhere
+  MeshOptions coarse = fine;
+  coarse.max_sides = coarse.min_sides = 3;
+  const TreeGraph tree = testing::small_tree();
+  const std::vector<TriangleMesh> steps = {mesh_tree(tree, fine)}, far = {mesh_tree(tree, coarse)};
+  ASSERT_GT(steps[0].triangle_count(), 2 * far[0].triangle_count());
+  ViewerOptions o;
+  o.width = 320;
+  o.height = 240;
+  o.screenshot = (dir / "shot.png").string();
+  const auto drawn = [&](double coarse_edge_m) {
+    o.coarse_edge_m = coarse_edge_m;
+    return run_viewer(steps, {0.0}, o, far).triangles;
+  };
+  EXPECT_EQ(drawn(0.0), steps[0].triangle_count());
+  EXPECT_EQ(drawn(0.2), steps[0].triangle_count());
+  EXPECT_EQ(drawn(0.001), far[0].triangle_count());
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace fspm::graphics
