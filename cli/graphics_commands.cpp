@@ -125,6 +125,10 @@ struct ViewCommand {
   double lod_distance_m = 0.0;
   bool no_impostors = false;
   bool no_ground = false;
+  int max_sides = 16;
+  double tessellate = 0.0;  // Reynolds' tessellation up to this level (0: none)
+  double tessellation_distance_m = 0.0;
+  bool tessellate_on_cpu = false;
   int stages = 0;  // developmental stages per tree file (0: none)
   bool wind = false;
   WindArguments wind_args;
@@ -889,6 +893,9 @@ graphics::ViewerOptions viewer_options(const ViewCommand& c) {
   options.panel = !c.no_panel;
   options.ground = !c.no_ground;
   options.pitch_deg = c.pitch_deg;
+  options.tessellation_max_level = c.tessellate;
+  options.tessellation_distance_m = c.tessellation_distance_m;
+  options.tessellation_on_cpu = c.tessellate_on_cpu;
   return options;
 }
 
@@ -958,10 +965,12 @@ double mesh_view_steps(const ViewCommand& c, const std::vector<ViewSource>& sour
   std::sort(ages.begin(), ages.end());
   graphics::MeshOptions mesh_options;
   set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
+  mesh_options.max_sides = c.max_sides;
+  mesh_options.min_sides = std::min(mesh_options.min_sides, c.max_sides);
   steps = view_steps(sources, c.format, ages, mesh_options);
   graphics::MeshOptions coarse = mesh_options;
   coarse.edge_length_m *= 4.0;
-  coarse.max_sides = 6;
+  coarse.max_sides = std::min(6, c.max_sides);
   coarse.min_sides = 3;
   far = view_steps(sources, c.format, ages, coarse);
   return coarse.edge_length_m;
@@ -975,6 +984,8 @@ void print_view_json(const ViewCommand& c, const std::vector<graphics::Instanced
     instances += step.instances.size();
   }
   print_json({{"frames", stats.frames},
+              {"tessellation", stats.tessellation},
+              {"cpu_tessellation_level", stats.cpu_tessellation_level},
               {"mean_frame_ms", stats.mean_frame_ms},
               {"first_frame_ms", stats.first_frame_ms},
               {"triangles", stats.triangles},
@@ -1246,6 +1257,24 @@ void add_view_command(CLI::App& app) {
               "showing the plant's image from the nearest of 24 directions) beyond the "
               "--lod-distance");
   v->add_flag("--no-ground", view->no_ground, "Leave out the ground plane");
+  v->add_option("--max-sides", view->max_sides,
+                "Most sides of a ring (4: Reynolds' coarse branch mesh, for --tessellate)")
+      ->check(CLI::Range(3, 256))
+      ->capture_default_str();
+  CLI::Option* tessellate =
+      v->add_option("--tessellate", view->tessellate,
+                    "Tessellate the opaque triangles up to level L (Reynolds' expression 2: finer "
+                    "near the camera and for larger triangles), new vertices on curved PN "
+                    "triangles; tessellation shaders where the context has them, else on the CPU")
+          ->check(CLI::Range(1.0, 64.0));
+  v->add_option("--tessellation-distance", view->tessellation_distance_m,
+                "D_max of expression 2 in m (default 4 times the starting camera distance)")
+      ->check(positive_number(1e9))
+      ->needs(tessellate);
+  v->add_flag("--tessellate-on-cpu", view->tessellate_on_cpu,
+              "Tessellate on the CPU even where tessellation shaders exist (one level for the "
+              "scene, from the starting camera distance)")
+      ->needs(tessellate);
   add_lsystem_draw_options(v, view->lsystem);
   add_graph_lod_options(v, view->graph_lod);
   v->add_flag("--json", view->json, "Machine-readable JSON on stdout (frame time)");

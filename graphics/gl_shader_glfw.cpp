@@ -34,20 +34,21 @@ GLuint compile(GLenum type, const std::string& source) {
 }  // namespace
 
 unsigned gl_program(const std::string& vertex_source, const std::string& fragment_source) {
-  const GLuint vs = compile(GL_VERTEX_SHADER, vertex_source);
-  GLuint fs = 0;
+  return gl_program({{GL_VERTEX_SHADER, vertex_source}, {GL_FRAGMENT_SHADER, fragment_source}});
+}
+
+unsigned gl_program(const std::vector<GlStage>& stages) {
+  std::vector<GLuint> shaders;
   try {
-    fs = compile(GL_FRAGMENT_SHADER, fragment_source);
+    for (const GlStage& stage : stages) shaders.push_back(compile(stage.type, stage.source));
   } catch (...) {
-    glDeleteShader(vs);
+    for (GLuint s : shaders) glDeleteShader(s);
     throw;
   }
   const GLuint p = glCreateProgram();
-  glAttachShader(p, vs);
-  glAttachShader(p, fs);
+  for (GLuint s : shaders) glAttachShader(p, s);
   glLinkProgram(p);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
+  for (GLuint s : shaders) glDeleteShader(s);
   GLint ok = 0;
   glGetProgramiv(p, GL_LINK_STATUS, &ok);
   if (!ok) fail_with_log("viewer shaders do not link: ", p, true);

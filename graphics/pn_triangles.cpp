@@ -43,8 +43,12 @@ PnTriangle pn_triangle(const std::array<Eigen::Vector3f, 3>& p,
   for (int k = 3; k < 9; ++k) e += t.b[static_cast<std::size_t>(k)] / 6.0f;
   const Eigen::Vector3f v = (p[0] + p[1] + p[2]) / 3.0f;
   t.b[9] = e + 0.5f * (e - v);  // b111
-  t.n = {n[0], n[1], n[2], edge_normal(p[0], p[1], n[0], n[1]),
-         edge_normal(p[1], p[2], n[1], n[2]), edge_normal(p[2], p[0], n[2], n[0])};
+  t.n = {n[0],
+         n[1],
+         n[2],
+         edge_normal(p[0], p[1], n[0], n[1]),
+         edge_normal(p[1], p[2], n[1], n[2]),
+         edge_normal(p[2], p[0], n[2], n[0])};
   return t;
 }
 

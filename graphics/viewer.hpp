@@ -67,6 +67,15 @@ struct ViewerOptions {
   // A tree in the wind (viewer_wind.hpp): the one step, posed every frame; the time is the
   // wall clock's, or frame / 24 s for a screenshot (so that it is reproducible).
   std::shared_ptr<const ViewerWind> wind;
+  // Reynolds' tessellation (2011, 3.3, expression 2) of the opaque triangles up to this level,
+  // the new vertices on each triangle's curved PN surface (pn_triangles.hpp): with tessellation
+  // shaders (OpenGL 4.0) per edge and triangle every frame (viewer_tessellation.hpp); where the
+  // context has none, or with tessellation_on_cpu, on the CPU once, one level for every mesh
+  // from the starting camera distance, (1 - d / D_max) L_max rounded up, at most
+  // kCpuTessellationTriangles triangles a mesh. 0: off.
+  double tessellation_max_level = 0.0;
+  double tessellation_distance_m = 0.0;  // D_max; 0: four times the starting camera distance
+  bool tessellation_on_cpu = false;
   // Crowns drawn by relief-mapped ray casting of their cubemaps (relief_crown.hpp, Argudo 5.1),
   // with the opaque geometry; they take part in the framing and in the shadows.
   std::vector<ReliefCrown> relief_crowns;
@@ -74,6 +83,9 @@ struct ViewerOptions {
   // which it may change as the panel would.
   std::function<void(int frame, ViewerControls& controls)> before_frame;
 };
+
+// The CPU path's budget: a mesh tessellated on the CPU keeps at most this many triangles.
+inline constexpr std::size_t kCpuTessellationTriangles = 4'000'000;
 
 struct ViewerStats {
   int frames = 0;
@@ -83,7 +95,10 @@ struct ViewerStats {
   double first_frame_ms = 0.0;
   std::size_t triangles = 0;  // of the step shown last (with per-instance LOD: drawn last)
   std::size_t impostors = 0;  // drawn in the last frame (two triangles each, in `triangles`)
-  ViewerControls controls;    // as the last frame left them
+  // The tessellation used: "gpu", "cpu" (with its level) or "" (none).
+  std::string tessellation;
+  int cpu_tessellation_level = 0;
+  ViewerControls controls;  // as the last frame left them
 };
 
 // True when fspm was built with the viewer (FSPM_WITH_VIEWER).

@@ -13,6 +13,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <deque>
 #include <functional>
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -26,20 +27,23 @@
 #include "fspm/error.hpp"
 #include "graphics/gl_shader.hpp"
 #include "graphics/image.hpp"
+#include "graphics/pn_triangles.hpp"
+#include "graphics/tessellation_level.hpp"
 #include "graphics/translucent_sort.hpp"
 #include "graphics/variance_shadow.hpp"
 #include "graphics/viewer.hpp"
 #include "graphics/viewer_impostors.hpp"
 #include "graphics/viewer_panel.hpp"
 #include "graphics/viewer_relief.hpp"
+#include "graphics/viewer_tessellation.hpp"
 #include "graphics/viewer_wind.hpp"
 
 namespace fspm::graphics {
 namespace {
 
 constexpr int kShadowSize = 1024;
-constexpr int kImpostorResolution = 256;  // pixels on a side of each impostor view
-constexpr double kCoarseEdgePixels = 2.0;  // ViewerOptions::coarse_edge_m
+constexpr int kImpostorResolution = 256;             // pixels on a side of each impostor view
+constexpr double kCoarseEdgePixels = 2.0;            // ViewerOptions::coarse_edge_m
 constexpr float kSky[3] = {0.80f, 0.87f, 0.96f};     // the background, cleared every frame
 constexpr float kGround[3] = {0.55f, 0.62f, 0.45f};  // before shading, as the renders' ground
 // Ground this many scene radii away is hazed by 1 - 1/e of kMaxHaze towards the sky colour.
@@ -521,12 +525,13 @@ GpuStep upload(const StepRef& step, const ViewerOptions& o, const Scene& scene) 
 // drawn from the step's sorted soup).
 enum class Part { kAll, kOpaque };
 
-void draw(const GpuMesh& g, Part part = Part::kAll) {
+// `mode`: GL_TRIANGLES, or GL_PATCHES of three vertices for the tessellation program.
+void draw(const GpuMesh& g, Part part = Part::kAll, GLenum mode = GL_TRIANGLES) {
   if (g.vao == 0 || g.instances == 0) return;
   const GLsizei end = part == Part::kOpaque ? g.opaque_indices : g.indices;
   if (end <= 0) return;
   glBindVertexArray(g.vao);
-  glDrawElementsInstanced(GL_TRIANGLES, end, GL_UNSIGNED_INT, nullptr, g.instances);
+  glDrawElementsInstanced(mode, end, GL_UNSIGNED_INT, nullptr, g.instances);
 }
 
 struct Camera {
@@ -695,8 +700,8 @@ GLFWwindow* open_window(const ViewerOptions& o, const Scene& scene, int steps, S
   state.controls.lod_distance_m = o.lod_distance_factor * state.home.distance;
   if (o.coarse_edge_m > 0.0) {
     // Pixels per metre at distance d: H / (2 d tan(fov / 2)), the vertical field of view 40 deg.
-    const double two_pixels_m = o.coarse_edge_m * o.height /
-                                (2.0 * std::tan(glm::radians(20.0)) * kCoarseEdgePixels);
+    const double two_pixels_m =
+        o.coarse_edge_m * o.height / (2.0 * std::tan(glm::radians(20.0)) * kCoarseEdgePixels);
     state.controls.lod_distance_m = std::min(state.controls.lod_distance_m, two_pixels_m);
   }
   glfwSetWindowUserPointer(window, &state);
@@ -707,7 +712,7 @@ GLFWwindow* open_window(const ViewerOptions& o, const Scene& scene, int steps, S
   return window;
 }
 
-// Step 3: shaders, every step's meshes and the ground on the GPU.
+// Step 3: shaders, every step's meshes and the ground on the GPU, into `g`.
 struct GpuScene {
   GLuint shadow_program = 0, blur_program = 0, scene_program = 0;
   std::vector<GpuStep> steps, coarse;
@@ -716,11 +721,13 @@ struct GpuScene {
   std::unique_ptr<ReliefCrownRenderer> relief;  // with ViewerOptions::relief_crowns
   std::unique_ptr<ImpostorRenderer> impostors;  // level of detail with impostors
   bool ground = true;                           // ViewerOptions::ground
+  // With tessellation shaders: the program and expression 2's limits (D_max, L_max).
+  GLuint tessellation_program = 0;
+  float tessellation_distance = 1.0f, max_level = 1.0f;
 };
 
-GpuScene upload_scene(const std::vector<StepRef>& steps, const std::vector<StepRef>& coarse,
-                      const ViewerOptions& o, const Scene& scene) {
-  GpuScene g;
+void upload_scene(GpuScene& g, const std::vector<StepRef>& steps,
+                  const std::vector<StepRef>& coarse, const ViewerOptions& o, const Scene& scene) {
   g.shadow_program = program(kShadowVs, kShadowFs);
   g.blur_program = program(kBlurVs, kBlurFs);
   g.scene_program = program(kSceneVs, kSceneFs, true);
@@ -731,7 +738,6 @@ GpuScene upload_scene(const std::vector<StepRef>& steps, const std::vector<StepR
   if (!o.relief_crowns.empty()) {
     g.relief = std::make_unique<ReliefCrownRenderer>(o.relief_crowns, kVsmGlsl);
   }
-  return g;
 }
 
 void release(GpuScene& g) {
@@ -748,6 +754,7 @@ void release(GpuScene& g) {
   glDeleteProgram(g.shadow_program);
   glDeleteProgram(g.blur_program);
   glDeleteProgram(g.scene_program);
+  if (g.tessellation_program != 0) glDeleteProgram(g.tessellation_program);
 }
 
 // Impostors of a level-of-detail scene's plants (when it has an impostor distance), their views
@@ -963,6 +970,25 @@ void draw_shadow_map(const GpuScene& gpu, const GpuStep& g, const Targets& t,
   }
 }
 
+// The opaque triangles as patches of the tessellation program (viewer_tessellation.hpp), with
+// the scene program's uniforms and expression 2's limits.
+void draw_tessellated(const GpuScene& gpu, const GpuStep& g, const FrameMatrices& f, bool shadows) {
+  const GLuint p = gpu.tessellation_program;
+  glUseProgram(p);
+  glUniformMatrix4fv(glGetUniformLocation(p, "mvp"), 1, GL_FALSE, glm::value_ptr(f.mvp));
+  glUniformMatrix4fv(glGetUniformLocation(p, "light_mvp"), 1, GL_FALSE,
+                     glm::value_ptr(f.light_mvp));
+  glUniform3fv(glGetUniformLocation(p, "sun"), 1, glm::value_ptr(f.sun));
+  glUniform3fv(glGetUniformLocation(p, "eye"), 1, glm::value_ptr(f.eye));
+  glUniform1f(glGetUniformLocation(p, "max_distance"), gpu.tessellation_distance);
+  glUniform1f(glGetUniformLocation(p, "max_level"), gpu.max_level);
+  glUniform1f(glGetUniformLocation(p, "pixels_per_radian"),
+              static_cast<float>(f.height) / (2.0f * std::tan(glm::radians(20.0f))));
+  set_shadow_uniforms(p, shadows);
+  glPatchParameteri(GL_PATCH_VERTICES, 3);
+  for (const GpuMesh& m : g.meshes) draw(m, Part::kOpaque, GL_PATCHES);
+}
+
 // Step 5: the shadow map, then the scene: opaque geometry and the ground, then the crowns and
 // translucent obstacles blended over it back to front (sorted by sort_blended), without writing
 // depth.
@@ -989,7 +1015,12 @@ void draw_frame(const GpuScene& gpu, const GpuStep& g, Targets& t, const FrameMa
   glUniform3fv(glGetUniformLocation(p, "sun"), 1, glm::value_ptr(f.sun));
   glUniform3fv(glGetUniformLocation(p, "eye"), 1, glm::value_ptr(f.eye));
   set_shadow_uniforms(p, shadows);
-  for (const GpuMesh& m : g.meshes) draw(m, Part::kOpaque);
+  if (gpu.tessellation_program != 0) {
+    draw_tessellated(gpu, g, f, shadows);
+    glUseProgram(p);
+  } else {
+    for (const GpuMesh& m : g.meshes) draw(m, Part::kOpaque);
+  }
   if (gpu.impostors) {
     glUseProgram(gpu.impostors->program());
     set_shadow_uniforms(gpu.impostors->program(), shadows);
@@ -1217,7 +1248,68 @@ std::vector<std::string> common_attributes(const std::vector<StepRef>& steps) {
   return names;
 }
 
-ViewerStats view(const StepMaker& make, const std::vector<double>& labels, const ViewerOptions& o,
+// The CPU path's one level: expression 2 at the starting camera distance for a triangle of the
+// largest area, (1 - d / D_max) L_max rounded up, lowered until no mesh exceeds
+// kCpuTessellationTriangles triangles.
+int cpu_tessellation_level(const std::vector<StepRef>& steps, const ViewerOptions& o,
+                           double max_distance_m, double home_distance_m) {
+  const double level =
+      tessellation_level(home_distance_m, 1.0, {max_distance_m, 1.0, o.tessellation_max_level});
+  int l = std::max(1, static_cast<int>(std::ceil(level)));
+  std::size_t largest = 1;
+  for (const StepRef& step : steps) {
+    for (const TriangleMesh* m : step.meshes) largest = std::max(largest, m->triangle_count());
+  }
+  while (l > 1 && largest * static_cast<std::size_t>(l * l) > kCpuTessellationTriangles) --l;
+  return l;
+}
+
+// `make` with every mesh of its steps tessellated on the CPU at `level`, the copies kept in
+// `store` (as long as the viewer runs).
+StepMaker tessellated_on_cpu(StepMaker make, int level,
+                             std::shared_ptr<std::deque<TriangleMesh>> store) {
+  return
+      [make = std::move(make), level, store](
+          const std::string& color_by, std::vector<StepRef>& steps, std::vector<StepRef>& coarse) {
+        make(color_by, steps, coarse);
+        store->clear();
+        for (auto* list : {&steps, &coarse}) {
+          for (StepRef& step : *list) {
+            for (const TriangleMesh*& m : step.meshes) {
+              store->push_back(tessellate_pn(*m, level));
+              m = &store->back();
+            }
+          }
+        }
+      };
+}
+
+// ViewerOptions::tessellation_max_level: the tessellation program when the context runs
+// tessellation shaders (and the CPU path is not asked for), else the CPU path's maker, which
+// remakes `steps`. Neither for a tree in the wind (posed on the CPU as meshed) or a
+// level-of-detail scene (whose meshes are chosen by index), nor without a level.
+void set_up_tessellation(const ViewerOptions& o, const LodView& lod, const State& state,
+                         StepMaker& make, std::vector<StepRef>& steps, std::vector<StepRef>& coarse,
+                         GpuScene& gpu, ViewerStats& stats) {
+  if (o.tessellation_max_level <= 0.0 || o.wind || lod.scene != nullptr) return;
+  const double max_distance =
+      o.tessellation_distance_m > 0.0 ? o.tessellation_distance_m : 4.0 * state.home.distance;
+  if (!o.tessellation_on_cpu && tessellation_shaders_available()) {
+    gpu.tessellation_program = tessellation_program(std::string(kVsmGlsl) + kSceneFs);
+    gpu.tessellation_distance = static_cast<float>(max_distance);
+    gpu.max_level = static_cast<float>(o.tessellation_max_level);
+    stats.tessellation = "gpu";
+    return;
+  }
+  const int level = cpu_tessellation_level(steps, o, max_distance, state.home.distance);
+  stats.tessellation = "cpu";
+  stats.cpu_tessellation_level = level;
+  if (level == 1) return;
+  make = tessellated_on_cpu(make, level, std::make_shared<std::deque<TriangleMesh>>());
+  make(o.color_by, steps, coarse);
+}
+
+ViewerStats view(StepMaker make, const std::vector<double>& labels, const ViewerOptions& o,
                  const LodView& lod = {}) {
   std::vector<StepRef> steps, coarse_steps;
   make(o.color_by, steps, coarse_steps);
@@ -1234,7 +1326,11 @@ ViewerStats view(const StepMaker& make, const std::vector<double>& labels, const
   GlfwSession session;
   State state;
   GLFWwindow* window = open_window(o, x.scene, static_cast<int>(steps.size()), state);
-  GpuScene gpu = upload_scene(steps, coarse_steps, o, x.scene);
+  ViewerStats tessellation;
+  GpuScene gpu;
+  set_up_tessellation(o, lod, state, make, steps, coarse_steps, gpu, tessellation);
+  x.make = make;
+  upload_scene(gpu, steps, coarse_steps, o, x.scene);
   gpu.impostors = make_impostors(gpu, lod);
   gpu.ground = o.ground;
   Targets targets = make_targets(o);
@@ -1254,7 +1350,9 @@ ViewerStats view(const StepMaker& make, const std::vector<double>& labels, const
     x.info.lod_min_m = 0.25 * state.home.distance;
     x.info.lod_max_m = 20.0 * state.home.distance;
   }
-  const ViewerStats stats = run_frames(window, state, gpu, targets, x, o);
+  ViewerStats stats = run_frames(window, state, gpu, targets, x, o);
+  stats.tessellation = tessellation.tessellation;
+  stats.cpu_tessellation_level = tessellation.cpu_tessellation_level;
   if (!o.screenshot.empty()) write_screenshot(o, targets);
   release(gpu);
   release(targets);

@@ -19,9 +19,9 @@ constexpr double kPi = 3.141592653589793;
 
 TEST(PnTriangle, FlatTriangleStaysFlat) {
   const Eigen::Vector3f z = Eigen::Vector3f::UnitZ();
-  const PnTriangle t = pn_triangle({Eigen::Vector3f(0, 0, 1), Eigen::Vector3f(2, 0, 1),
-                                    Eigen::Vector3f(0.5f, 1.5f, 1)},
-                                   {z, z, z});
+  const PnTriangle t = pn_triangle(
+      {Eigen::Vector3f(0, 0, 1), Eigen::Vector3f(2, 0, 1), Eigen::Vector3f(0.5f, 1.5f, 1)},
+      {z, z, z});
   for (const Eigen::Vector3f& w : {Eigen::Vector3f(1, 0, 0), Eigen::Vector3f(0.2f, 0.3f, 0.5f),
                                    Eigen::Vector3f(1 / 3.0f, 1 / 3.0f, 1 / 3.0f)}) {
     EXPECT_NEAR(pn_point(t, w).z(), 1.0f, 1e-6f);
@@ -29,9 +29,8 @@ TEST(PnTriangle, FlatTriangleStaysFlat) {
   }
   // A flat PN triangle is the linear one: the point at weights w is the weighted corners.
   const Eigen::Vector3f w(0.2f, 0.3f, 0.5f);
-  const Eigen::Vector3f linear =
-      0.2f * Eigen::Vector3f(0, 0, 1) + 0.3f * Eigen::Vector3f(2, 0, 1) +
-      0.5f * Eigen::Vector3f(0.5f, 1.5f, 1);
+  const Eigen::Vector3f linear = 0.2f * Eigen::Vector3f(0, 0, 1) + 0.3f * Eigen::Vector3f(2, 0, 1) +
+                                 0.5f * Eigen::Vector3f(0.5f, 1.5f, 1);
   EXPECT_NEAR((pn_point(t, w) - linear).norm(), 0.0f, 1e-5f);
 }
 
@@ -41,7 +40,8 @@ TEST(PnTriangle, EdgeMidpointOfACircularArcIsTheClosedForm) {
     const Eigen::Vector3f p0(1, 0, 0),
         p1(static_cast<float>(std::cos(t)), static_cast<float>(std::sin(t)), 0);
     const double expected = (5.0 - std::cos(t)) * std::cos(t / 2.0) / 4.0;
-    for (const Eigen::Vector3f& third : {Eigen::Vector3f(0, 0, 1), Eigen::Vector3f(0.6f, 0, 0.8f)}) {
+    for (const Eigen::Vector3f& third :
+         {Eigen::Vector3f(0, 0, 1), Eigen::Vector3f(0.6f, 0, 0.8f)}) {
       const PnTriangle pn = pn_triangle({p0, p1, third}, {p0, p1, third});
       const Eigen::Vector3f mid = pn_point(pn, Eigen::Vector3f(0.5f, 0.5f, 0.0f));
       EXPECT_NEAR(mid.norm(), expected, 1e-5) << degrees << " degrees";

@@ -257,5 +257,50 @@ TEST(Viewer, CoarseMeshesWhereTheirEdgesSpanTwoPixels) {
   fs::remove_all(dir);
 }
 
+// Reynolds' tessellation with curved PN triangles rounds a coarse branch: a trunk 0.5 m thick
+// meshed with 4 sides comes out closer to the same trunk meshed with 32 sides (the round one)
+// when tessellated, on the GPU or on the CPU, than as it is.
+TEST(Viewer, TessellationRoundsACoarseBranch) {
+  if (!viewer_available() || !render_available()) GTEST_SKIP() << "built without viewer/VTK";
+  if (!display_available()) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
+  const fs::path dir = fs::temp_directory_path() / ("fspm_tess_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  TreeGraph trunk;
+  testing::add(trunk, kNoNode, {0, 0, 0}, {0, 0, 3}, 0.5, 0, 0);
+  MeshOptions square, round;
+  square.min_sides = square.max_sides = 4;
+  round.min_sides = round.max_sides = 32;
+  const TriangleMesh coarse = mesh_tree(trunk, square), fine = mesh_tree(trunk, round);
+  ViewerOptions o;
+  o.width = 320;
+  o.height = 240;
+  o.frames = 2;
+  o.ground = false;
+  const auto shot = [&](const TriangleMesh& mesh, double level, bool on_cpu,
+                        const std::string& name) {
+    o.screenshot = (dir / name).string();
+    o.tessellation_max_level = level;
+    o.tessellation_on_cpu = on_cpu;
+    const ViewerStats stats = run_viewer({mesh}, {0.0}, o);
+    EXPECT_EQ(stats.tessellation, level > 0 ? (on_cpu ? "cpu" : "gpu") : "") << name;
+    return read_image(o.screenshot);
+  };
+  const auto psnr = [](const Image& a, const Image& b) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < a.rgba.size(); ++i) {
+      const double d = static_cast<double>(a.rgba[i]) - static_cast<double>(b.rgba[i]);
+      sum += d * d;
+    }
+    return 10.0 * std::log10(255.0 * 255.0 * static_cast<double>(a.rgba.size()) / sum);
+  };
+  const Image reference = shot(fine, 0.0, false, "round.png");
+  const double as_is = psnr(shot(coarse, 0.0, false, "square.png"), reference);
+  const double gpu = psnr(shot(coarse, 8.0, false, "gpu.png"), reference);
+  const double cpu = psnr(shot(coarse, 8.0, true, "cpu.png"), reference);
+  EXPECT_GT(gpu, as_is + 1.5) << gpu << " dB against " << as_is;
+  EXPECT_GT(cpu, as_is + 1.5) << cpu << " dB against " << as_is;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace fspm::graphics
