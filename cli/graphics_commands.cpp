@@ -125,6 +125,7 @@ struct ViewCommand {
   double lod_distance_m = 0.0;
   bool no_impostors = false;
   bool no_ground = false;
+  bool full_detail = false;  // no coarse meshes at any distance
   int max_sides = 16;
   double tessellate = 0.0;  // Reynolds' tessellation up to this level (0: none)
   double tessellation_distance_m = 0.0;
@@ -1076,6 +1077,10 @@ void run_view(ViewCommand c) {
   } else {
     const auto sources = read_view_sources(c, std::max(options.width, options.height), ages);
     options.coarse_edge_m = mesh_view_steps(c, sources, ages, steps, far);
+    if (c.full_detail) {
+      far.clear();
+      options.coarse_edge_m = 0.0;
+    }
   }
   if (!c.color_by.empty()) {
     for (const auto& step : steps) {
@@ -1257,6 +1262,9 @@ void add_view_command(CLI::App& app) {
               "showing the plant's image from the nearest of 24 directions) beyond the "
               "--lod-distance");
   v->add_flag("--no-ground", view->no_ground, "Leave out the ground plane");
+  v->add_flag("--full-detail", view->full_detail,
+              "Never draw the coarse meshes (by default they take over where their ring edges "
+              "span two pixels, or from 1.5 times the starting distance)");
   v->add_option("--max-sides", view->max_sides,
                 "Most sides of a ring (4: Reynolds' coarse branch mesh, for --tessellate)")
       ->check(CLI::Range(3, 256))
