@@ -970,21 +970,26 @@ void draw_shadow_map(const GpuScene& gpu, const GpuStep& g, const Targets& t,
   }
 }
 
-// The opaque triangles as patches of the tessellation program (viewer_tessellation.hpp), with
-// the scene program's uniforms and expression 2's limits.
-void draw_tessellated(const GpuScene& gpu, const GpuStep& g, const FrameMatrices& f, bool shadows) {
-  const GLuint p = gpu.tessellation_program;
+// Uses program p (the scene's or the tessellation's) and sets the scene shader's uniforms.
+void use_scene_program(GLuint p, const FrameMatrices& f, bool shadows) {
   glUseProgram(p);
   glUniformMatrix4fv(glGetUniformLocation(p, "mvp"), 1, GL_FALSE, glm::value_ptr(f.mvp));
   glUniformMatrix4fv(glGetUniformLocation(p, "light_mvp"), 1, GL_FALSE,
                      glm::value_ptr(f.light_mvp));
   glUniform3fv(glGetUniformLocation(p, "sun"), 1, glm::value_ptr(f.sun));
   glUniform3fv(glGetUniformLocation(p, "eye"), 1, glm::value_ptr(f.eye));
+  set_shadow_uniforms(p, shadows);
+}
+
+// The opaque triangles as patches of the tessellation program (viewer_tessellation.hpp), with
+// the scene program's uniforms and expression 2's limits.
+void draw_tessellated(const GpuScene& gpu, const GpuStep& g, const FrameMatrices& f, bool shadows) {
+  const GLuint p = gpu.tessellation_program;
+  use_scene_program(p, f, shadows);
   glUniform1f(glGetUniformLocation(p, "max_distance"), gpu.tessellation_distance);
   glUniform1f(glGetUniformLocation(p, "max_level"), gpu.max_level);
   glUniform1f(glGetUniformLocation(p, "pixels_per_radian"),
               static_cast<float>(f.height) / (2.0f * std::tan(glm::radians(20.0f))));
-  set_shadow_uniforms(p, shadows);
   glPatchParameteri(GL_PATCH_VERTICES, 3);
   for (const GpuMesh& m : g.meshes) draw(m, Part::kOpaque, GL_PATCHES);
 }
@@ -1008,13 +1013,7 @@ void draw_frame(const GpuScene& gpu, const GpuStep& g, Targets& t, const FrameMa
   glBindTexture(GL_TEXTURE_2D, t.moments_tex[0]);
   if (gpu.ground) draw_ground(gpu, f, shadows);
   const GLuint p = gpu.scene_program;
-  glUseProgram(p);
-  glUniformMatrix4fv(glGetUniformLocation(p, "mvp"), 1, GL_FALSE, glm::value_ptr(f.mvp));
-  glUniformMatrix4fv(glGetUniformLocation(p, "light_mvp"), 1, GL_FALSE,
-                     glm::value_ptr(f.light_mvp));
-  glUniform3fv(glGetUniformLocation(p, "sun"), 1, glm::value_ptr(f.sun));
-  glUniform3fv(glGetUniformLocation(p, "eye"), 1, glm::value_ptr(f.eye));
-  set_shadow_uniforms(p, shadows);
+  use_scene_program(p, f, shadows);
   if (gpu.tessellation_program != 0) {
     draw_tessellated(gpu, g, f, shadows);
     glUseProgram(p);

@@ -182,8 +182,9 @@ TEST(GraphicsCli, ViewerStepsThroughDevelopmentalStages) {
   auto r = run_fspm("mesh " + tree + " -o " + (dir / "whole.ply").string() + " --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto whole = nlohmann::json::parse(r.out)["triangles"].get<std::size_t>();
+  // --full-detail: at 160 x 120 pixels the coarse meshes would take over.
   r = run_fspm("view " + tree + " --stages 5 --screenshot " + (dir / "s.png").string() +
-               " --size 160x120 --json");
+               " --size 160x120 --full-detail --json");
   if (r.err.find("without the viewer") != std::string::npos ||
       r.err.find("without OpenImageIO") != std::string::npos) {
     GTEST_SKIP() << r.err;
