@@ -1257,24 +1257,31 @@ void add_view_command(CLI::App& app) {
   }
   add_ray_cast_flag(v, view->ray_cast);
   add_lod_options(v, view->lod, view->lod_distance_m);
+  CLI::Option* lod = v->get_option("--lod");
   v->add_flag("--no-impostors", view->no_impostors,
               "With --lod: draw far plants as their coarsest mesh instead of impostors (one quad "
               "showing the plant's image from the nearest of 24 directions) beyond the "
-              "--lod-distance");
+              "--lod-distance")
+      ->needs(lod);
   v->add_flag("--no-ground", view->no_ground, "Leave out the ground plane");
   v->add_flag("--full-detail", view->full_detail,
               "Never draw the coarse meshes (by default they take over where their ring edges "
-              "span two pixels, or from 1.5 times the starting distance)");
+              "span two pixels, or from 1.5 times the starting distance)")
+      ->excludes(lod);
   v->add_option("--max-sides", view->max_sides,
                 "Most sides of a ring (4: Reynolds' coarse branch mesh, for --tessellate)")
       ->check(CLI::Range(3, 256))
-      ->capture_default_str();
+      ->capture_default_str()
+      ->excludes(lod);
   CLI::Option* tessellate =
       v->add_option("--tessellate", view->tessellate,
                     "Tessellate the opaque triangles up to level L (Reynolds' expression 2: finer "
-                    "near the camera and for larger triangles), new vertices on curved PN "
-                    "triangles; tessellation shaders where the context has them, else on the CPU")
-          ->check(CLI::Range(1.0, 64.0));
+                    "near the camera and for edges longer on the screen), new vertices on curved "
+                    "PN triangles; tessellation shaders where the context has them, else on the "
+                    "CPU")
+          ->check(CLI::Range(1.0, 64.0))
+          ->excludes(lod)
+          ->excludes(v->get_option("--wind"));
   v->add_option("--tessellation-distance", view->tessellation_distance_m,
                 "D_max of expression 2 in m (default 4 times the starting camera distance)")
       ->check(positive_number(1e9))

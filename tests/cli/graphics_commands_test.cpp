@@ -174,6 +174,36 @@ TEST(GraphicsCli, ViewerScreenshot) {
   EXPECT_FALSE(std::filesystem::exists(dir / "w.png"));
 }
 
+// The viewer's level-of-detail and tessellation options: what they report, and the combinations
+// that mean nothing refused with exit 1 before any window opens.
+TEST(GraphicsCli, ViewerImpostorsAndTessellation) {
+  const auto dir = scratch_dir("view_impostors");
+  const std::string tree = std::string(FSPM_SOURCE_DIR) + "/examples/trees/open_a12.treeb";
+  auto r = run_fspm("view " + tree + " --tessellate 4 --tessellate-on-cpu --max-sides 4 " +
+                    "--screenshot " + (dir / "t.png").string() + " --size 160x120 --json");
+  if (r.err.find("without the viewer") != std::string::npos ||
+      r.err.find("without OpenImageIO") != std::string::npos) {
+    GTEST_SKIP() << r.err;
+  }
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["tessellation"], "cpu");
+  // (1 - d / D_max) L_max rounded up at the starting distance, D_max four times it: 3 of 4.
+  EXPECT_EQ(j["cpu_tessellation_level"], 3);
+  r = run_fspm("view " + tree + " --lod --lod-distance 0.001 --screenshot " +
+               (dir / "i.png").string() + " --size 160x120 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["impostors"], 1);
+  EXPECT_EQ(j["triangles"], 2);
+  for (const char* args : {"--no-impostors", "--lod --tessellate 4", "--lod --full-detail",
+                           "--lod --max-sides 4", "--wind --tessellate 2"}) {
+    r = run_fspm("view " + tree + " " + args + " --screenshot " + (dir / "x.png").string());
+    EXPECT_EQ(r.exit_code, 1) << args;
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.png")) << args;
+  }
+}
+
 // fspm view --stages N: N developmental stages (Pirk 5), the last one the given tree itself
 // (Pirk: t = 1 gives back the input), so its triangles are those fspm mesh makes of the file.
 TEST(GraphicsCli, ViewerStepsThroughDevelopmentalStages) {
