@@ -221,6 +221,7 @@ struct GpuMesh {
   GLuint vao = 0, vbo = 0, ibo = 0, instance_vbo = 0;
   GLsizei indices = 0;
   GLsizei opaque_indices = 0;  // the first ones; the rest are blended
+  GLsizei bark_indices = 0;    // the first opaque ones: closed tubes
   GLsizei instances = 0;
 };
 
@@ -447,15 +448,22 @@ GpuMesh upload(const TriangleMesh& mesh, const std::vector<glm::mat4>& models,
     const glm::vec4& c = colors[i];
     v.insert(v.end(), {p.x(), p.y(), p.z(), n.x(), n.y(), n.z(), c.r, c.g, c.b, c.a});
   }
-  std::vector<std::uint32_t> idx, translucent;
+  // Bark first (closed tubes: their back faces are culled), the other opaque triangles, then
+  // the blended ones.
+  std::vector<std::uint32_t> idx, other, translucent;
   idx.reserve(mesh.triangle_count() * 3);
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-    auto& to = is_blended(mesh.materials[t]) ? translucent : idx;
+    const Material m = mesh.materials[t];
+    auto& to = is_blended(m) ? translucent : (m == Material::kBark ? idx : other);
     to.insert(to.end(), mesh.triangles[t].begin(), mesh.triangles[t].end());
   }
+  const std::size_t bark = idx.size();
+  idx.insert(idx.end(), other.begin(), other.end());
   const std::size_t opaque = idx.size();
   idx.insert(idx.end(), translucent.begin(), translucent.end());
-  return upload_raw(v, idx, opaque, models);
+  GpuMesh g = upload_raw(v, idx, opaque, models);
+  g.bark_indices = static_cast<GLsizei>(bark);
+  return g;
 }
 
 // The blended triangles of every mesh placed by `models` (one list per mesh) into one soup on
@@ -531,7 +539,20 @@ void draw(const GpuMesh& g, Part part = Part::kAll, GLenum mode = GL_TRIANGLES) 
   const GLsizei end = part == Part::kOpaque ? g.opaque_indices : g.indices;
   if (end <= 0) return;
   glBindVertexArray(g.vao);
-  glDrawElementsInstanced(mode, end, GL_UNSIGNED_INT, nullptr, g.instances);
+  if (part == Part::kOpaque && g.bark_indices > 0) {
+    // The bark's tubes are closed and counter-clockwise seen from outside: their back faces
+    // are hidden, so they are culled before they are rasterized.
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    glDrawElementsInstanced(mode, g.bark_indices, GL_UNSIGNED_INT, nullptr, g.instances);
+    glDisable(GL_CULL_FACE);
+  }
+  const GLsizei first = part == Part::kOpaque ? g.bark_indices : 0;
+  if (end > first) {
+    glDrawElementsInstanced(mode, end - first, GL_UNSIGNED_INT,
+                            reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * 4),
+                            g.instances);
+  }
 }
 
 struct Camera {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "fspm/error.hpp"
@@ -121,6 +122,47 @@ TEST(TreeMesher, AttributesCarriedToVertices) {
   EXPECT_FLOAT_EQ(light[0], 0.0f);
   EXPECT_FLOAT_EQ(age[0], 4.5f);
   EXPECT_THROW(mesh.attribute("nope"), ValueError);
+}
+
+// The viewer culls the bark's back faces, which needs closed tubes wound counter-clockwise seen
+// from outside: every bark edge (by position) is shared by exactly two bark triangles, every
+// triangle's winding agrees with its vertex normals, and the enclosed volume (divergence
+// theorem) is that of the tubes, positive: sum over the chains of pi r^2 L with the rings'
+// inscribed polygons, so between 0.9 and 1.0 of it with 16 sides.
+TEST(TreeMesher, BarkTubesAreClosedAndWoundOutwards) {
+  constexpr double kPi = 3.141592653589793;
+  MeshOptions o;
+  o.min_sides = o.max_sides = 16;
+  const TriangleMesh m = mesh_tree(testing::small_tree(), o);
+  std::map<std::pair<std::array<long, 3>, std::array<long, 3>>, int> edges;
+  const auto key = [&](std::uint32_t v) {
+    const Eigen::Vector3f& p = m.positions[v];
+    return std::array<long, 3>{std::lround(p.x() * 1e5), std::lround(p.y() * 1e5),
+                               std::lround(p.z() * 1e5)};
+  };
+  double volume = 0.0;
+  for (std::size_t t = 0; t < m.triangle_count(); ++t) {
+    if (m.materials[t] != Material::kBark) continue;
+    const auto& tri = m.triangles[t];
+    const Eigen::Vector3f a = m.positions[tri[0]], b = m.positions[tri[1]], c = m.positions[tri[2]];
+    const Eigen::Vector3f n = (b - a).cross(c - a);
+    if (n.norm() < 1e-12f) continue;  // degenerate (a cap's centre on a zero-length side)
+    EXPECT_GT(n.dot(m.normals[tri[0]] + m.normals[tri[1]] + m.normals[tri[2]]), 0.0f) << t;
+    volume += a.dot(b.cross(c)) / 6.0;
+    for (int k = 0; k < 3; ++k) {
+      auto e = std::make_pair(key(tri[k]), key(tri[(k + 1) % 3]));
+      if (e.second < e.first) std::swap(e.first, e.second);
+      ++edges[e];
+    }
+  }
+  for (const auto& [edge, count] : edges) EXPECT_EQ(count, 2);
+  // small_tree: a trunk of three internodes of radius 0.05 (lengths 1, about 1.005 and 1.005),
+  // two branches of two internodes of radius 0.01 (lengths about 0.707 and 0.574).
+  const double trunk = kPi * 0.05 * 0.05 * (1.0 + 2.0 * std::sqrt(1.0 + 0.01));
+  const double branches =
+      2.0 * kPi * 0.01 * 0.01 * (std::sqrt(0.5) + std::sqrt(0.16 + 0.01 + 0.16));
+  EXPECT_GT(volume, 0.9 * (trunk + branches));
+  EXPECT_LT(volume, 1.0 * (trunk + branches));
 }
 
 TEST(TreeMesher, BirthTimeFilterKeepsOlderNodes) {
