@@ -121,6 +121,10 @@ struct ViewCommand {
   bool no_shadows = false;
   bool no_panel = false;
   double pitch_deg = 20.0;
+  double yaw_deg = -51.56620156177409;  // ViewerOptions::yaw_deg
+  std::vector<double> look_at;          // empty or X, Y, Z
+  double distance_m = 0.0;
+  int shadow_cascades = 0;
   bool lod = false;
   double lod_distance_m = 0.0;
   bool no_impostors = false;
@@ -875,6 +879,7 @@ void run_lod_view(const ViewCommand& c, const graphics::ViewerOptions& options,
     print_json({{"frames", stats.frames},
                 {"mean_frame_ms", stats.mean_frame_ms},
                 {"first_frame_ms", stats.first_frame_ms},
+                {"shadow_maps_drawn", stats.shadow_maps_drawn},
                 {"triangles", stats.triangles},
                 {"impostors", stats.impostors},
                 {"plants", scene.placements.size()},
@@ -894,6 +899,10 @@ graphics::ViewerOptions viewer_options(const ViewCommand& c) {
   options.panel = !c.no_panel;
   options.ground = !c.no_ground;
   options.pitch_deg = c.pitch_deg;
+  options.yaw_deg = c.yaw_deg;
+  if (!c.look_at.empty()) options.look_at = {c.look_at[0], c.look_at[1], c.look_at[2]};
+  options.camera_distance_m = c.distance_m;
+  options.shadow_cascades = c.shadow_cascades;
   options.tessellation_max_level = c.tessellate;
   options.tessellation_distance_m = c.tessellation_distance_m;
   options.tessellation_on_cpu = c.tessellate_on_cpu;
@@ -989,6 +998,7 @@ void print_view_json(const ViewCommand& c, const std::vector<graphics::Instanced
               {"cpu_tessellation_level", stats.cpu_tessellation_level},
               {"mean_frame_ms", stats.mean_frame_ms},
               {"first_frame_ms", stats.first_frame_ms},
+              {"shadow_maps_drawn", stats.shadow_maps_drawn},
               {"triangles", stats.triangles},
               {"steps", steps.size()},
               {"meshes", meshes},
@@ -1235,6 +1245,24 @@ void add_view_command(CLI::App& app) {
   v->add_option("--pitch-deg", view->pitch_deg,
                 "Starting camera elevation above the horizontal, degrees (a few: a low view)")
       ->check(CLI::Range(-89.0, 89.0))
+      ->capture_default_str();
+  v->add_option("--yaw-deg", view->yaw_deg,
+                "Starting camera azimuth, degrees counter-clockwise from +x (the eye's direction "
+                "from the point looked at)")
+      ->check(CLI::Range(-360.0, 360.0));
+  v->add_option("--look-at", view->look_at,
+                "Starting point looked at, X,Y,Z in m (default: the centre of the scene)")
+      ->delimiter(',')
+      ->expected(3);
+  v->add_option("--distance", view->distance_m,
+                "Starting camera distance from the point looked at, m (default: the whole scene "
+                "in view)")
+      ->check(positive_number(1e9));
+  v->add_option("--shadow-cascades", view->shadow_cascades,
+                "Cascaded shadow maps: N maps over slices of the view up to three camera "
+                "distances away, nearest first, before the one map of the whole scene (sharp "
+                "shadows near the camera over a landscape; redrawn whenever the camera moves)")
+      ->check(CLI::Range(0, 4))
       ->capture_default_str();
   v->add_option("--size", view->size, "Window WIDTHxHEIGHT")->capture_default_str();
   v->add_option("--screenshot", view->screenshot,

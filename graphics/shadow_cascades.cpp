@@ -11,8 +11,8 @@ namespace fspm::graphics {
 
 std::vector<double> cascade_splits(double near_m, double far_m, int count, double lambda) {
   if (!(near_m > 0.0) || !(far_m > near_m)) {
-    throw ValueError("cascade splits: expected 0 < near < far, got near " +
-                     std::to_string(near_m) + ", far " + std::to_string(far_m));
+    throw ValueError("cascade splits: expected 0 < near < far, got near " + std::to_string(near_m) +
+                     ", far " + std::to_string(far_m));
   }
   if (count < 1) throw ValueError("cascade splits: expected at least one cascade");
   if (!(lambda >= 0.0 && lambda <= 1.0)) {
@@ -41,7 +41,8 @@ std::vector<Eigen::Vector3d> frustum_slice_corners(const CascadeCamera& camera, 
   for (const double d : {near_m, far_m}) {
     const double h = d * tan_half, w = h * camera.aspect;
     for (const int sx : {-1, 1}) {
-      for (const int sy : {-1, 1}) corners.push_back(camera.eye + d * f + sx * w * right + sy * h * up);
+      for (const int sy : {-1, 1})
+        corners.push_back(camera.eye + d * f + sx * w * right + sy * h * up);
     }
   }
   return corners;
@@ -78,9 +79,8 @@ Eigen::Matrix4d light_matrix(const Eigen::Matrix3d& axes, const ShadowCascade& c
 }
 
 // One slice's cascade: the bounding sphere of its corners, its centre moved to whole texels.
-ShadowCascade fit_cascade(const std::vector<Eigen::Vector3d>& corners,
-                          const Eigen::Matrix3d& axes, double scene_depth_near_m,
-                          double scene_depth_far_m, int resolution) {
+ShadowCascade fit_cascade(const std::vector<Eigen::Vector3d>& corners, const Eigen::Matrix3d& axes,
+                          double scene_depth_near_m, double scene_depth_far_m, int resolution) {
   Eigen::Vector3d center = Eigen::Vector3d::Zero();
   for (const Eigen::Vector3d& p : corners) center += p;
   center /= static_cast<double>(corners.size());

@@ -58,9 +58,9 @@ struct ShadowCascade {
   // sun).
   Eigen::Matrix4d light_view_projection = Eigen::Matrix4d::Identity();
   double near_m = 0.0, far_m = 0.0;  // the slice, along the view direction
-  double radius_m = 0.0;      // of the slice's bounding sphere
-  double half_width_m = 0.0;  // of the map: r and kCascadeGuardTexels texels more
-  double texel_m = 0.0;       // 2 half_width_m / resolution
+  double radius_m = 0.0;             // of the slice's bounding sphere
+  double half_width_m = 0.0;         // of the map: r and kCascadeGuardTexels texels more
+  double texel_m = 0.0;              // 2 half_width_m / resolution
   // The light-space box: x, y of the map's centre, and the depths (along the sun) of its
   // nearest and farthest planes; light-space coordinates are sun_axes(sun)^T p.
   Eigen::Vector2d center_xy = Eigen::Vector2d::Zero();

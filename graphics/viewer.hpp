@@ -13,8 +13,10 @@
 // and sorted back to front from the eye whenever the camera moves (translucent_sort.hpp). With a
 // screenshot path it renders `frames` frames into an offscreen framebuffer, writes the image and
 // returns (tests run it under Xvfb with Mesa's software OpenGL).
+#include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,11 +47,23 @@ struct ViewerOptions {
   std::string screenshot;  // non-empty: render `frames` frames hidden, write this image, return
   int frames = 1;          // frames before the screenshot
   bool shadows = true;
+  // Cascaded shadow maps (shadow_cascades.hpp): this many maps (0 to 4) over slices of the view
+  // up to three camera distances away, nearest first, each 1024 texels on a side, before the one
+  // map of the whole scene. For landscapes, where one map gives each texel metres of ground;
+  // they are drawn again whenever the camera moves. 0: the whole scene's map alone.
+  int shadow_cascades = 0;
   // The ground plane under the scene to the horizon (without it, the sky's colour is behind).
   bool ground = true;
   // The camera's starting elevation above the horizontal, looking at the scene's centre (a few
   // degrees: a low view along the ground).
   double pitch_deg = 20.0;
+  // The camera's starting azimuth: the eye lies in this direction from the target, degrees
+  // counter-clockwise from +x (-0.9 rad).
+  double yaw_deg = -51.56620156177409;
+  // The point the camera starts looking at (default: the scene's centre) and its distance from
+  // it (0: 2.6 bounding radii, framing the scene).
+  std::optional<std::array<double, 3>> look_at;
+  double camera_distance_m = 0.0;
   // Distance-based level of detail: beyond this multiple of the starting camera distance the
   // coarse meshes (when given) are drawn instead.
   double lod_distance_factor = 1.5;
@@ -95,6 +109,9 @@ struct ViewerStats {
   double first_frame_ms = 0.0;
   std::size_t triangles = 0;  // of the step shown last (with per-instance LOD: drawn last)
   std::size_t impostors = 0;  // drawn in the last frame (two triangles each, in `triangles`)
+  // Shadow maps drawn over all frames, each layer counted (ViewerOptions::shadow_cascades + 1
+  // layers in the first frame with shadows, then those whose casters or cascade moved).
+  std::size_t shadow_maps_drawn = 0;
   // The tessellation used: "gpu", "cpu" (with its level) or "" (none).
   std::string tessellation;
   int cpu_tessellation_level = 0;

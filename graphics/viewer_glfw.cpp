@@ -28,13 +28,14 @@
 #include "graphics/gl_shader.hpp"
 #include "graphics/image.hpp"
 #include "graphics/pn_triangles.hpp"
+#include "graphics/shadow_cascades.hpp"
 #include "graphics/tessellation_level.hpp"
 #include "graphics/translucent_sort.hpp"
-#include "graphics/variance_shadow.hpp"
 #include "graphics/viewer.hpp"
 #include "graphics/viewer_impostors.hpp"
 #include "graphics/viewer_panel.hpp"
 #include "graphics/viewer_relief.hpp"
+#include "graphics/viewer_shadow_maps.hpp"
 #include "graphics/viewer_tessellation.hpp"
 #include "graphics/viewer_wind.hpp"
 
@@ -51,86 +52,20 @@ constexpr float kHazeRadii = 25.0f;
 // Even at the horizon the ground keeps half its own colour: the horizon stays a visible line.
 constexpr float kMaxHaze = 0.5f;
 
-// The moments pass: depth x and x^2 seen from the sun (Pirk eq. 6.10, one sample each), x^2 with
-// the depth's slope across the pixel added (Donnelly and Lauritzen's bias: a tilted surface covers
-// a range of depths within one texel). The light's projection is orthographic, so x is linear.
-const char* kShadowVs = R"(#version 330 core
-layout(location = 0) in vec3 position;
-layout(location = 3) in mat4 model;  // per instance
-uniform mat4 light_mvp;
-out float v_depth;
-void main() {
-  gl_Position = light_mvp * model * vec4(position, 1.0);
-  v_depth = gl_Position.z * 0.5 + 0.5;
-}
-)";
-const char* kShadowFs = R"(#version 330 core
-in float v_depth;
-out vec2 moments;
-void main() {
-  float dx = dFdx(v_depth), dy = dFdy(v_depth);
-  moments = vec2(v_depth, v_depth * v_depth + 0.25 * (dx * dx + dy * dy));
-}
-)";
-// The blur: one separable pass of a 5-tap binomial filter (1 4 6 4 1) / 16 along `step`, drawn as
-// one triangle covering the map. Blurring the moments is what softens the shadow's edge.
-const char* kBlurVs = R"(#version 330 core
-out vec2 v_uv;
-void main() {
-  vec2 ndc = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);
-  v_uv = ndc * 0.5 + 0.5;
-  gl_Position = vec4(ndc, 0.0, 1.0);
-}
-)";
-const char* kBlurFs = R"(#version 330 core
-in vec2 v_uv;
-uniform sampler2D source;
-uniform vec2 step;
-out vec2 moments;
-void main() {
-  moments = (6.0 * texture(source, v_uv).rg +
-             4.0 * (texture(source, v_uv - step).rg + texture(source, v_uv + step).rg) +
-             texture(source, v_uv - 2.0 * step).rg + texture(source, v_uv + 2.0 * step).rg) / 16.0;
-}
-)";
-// The light reaching a point from its position in the light's clip space: the Chebyshev bound of
-// the blurred moments (Pirk eq. 6.11-6.12, with (t - mu)^2), light bleeding reduced; points outside
-// the map are lit. Shared by the scene and the ground shaders (chebyshev_upper_bound and
-// variance_shadow_light in variance_shadow.cpp are its CPU twins).
-const char* kVsmGlsl = R"(
-uniform sampler2D shadow_map;
-uniform int shadows;
-uniform float min_variance;
-uniform float bleed;
-float lit(vec4 light_clip) {
-  if (shadows == 0) return 1.0;
-  vec3 p = light_clip.xyz / light_clip.w * 0.5 + 0.5;
-  if (p.z > 1.0 || p.x < 0.0 || p.x > 1.0 || p.y < 0.0 || p.y > 1.0) return 1.0;
-  vec2 m = texture(shadow_map, p.xy).rg;
-  if (p.z <= m.x) return 1.0;
-  float variance = max(m.y - m.x * m.x, min_variance);
-  float d = p.z - m.x;
-  float p_max = variance / (variance + d * d);
-  return clamp((p_max - bleed) / (1.0 - bleed), 0.0, 1.0);
-}
-)";
 const char* kSceneVs = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec4 color;  // alpha below 1: crowns and translucent obstacles
 layout(location = 3) in mat4 model;  // per instance: rotation times uniform scale, translation
 uniform mat4 mvp;
-uniform mat4 light_mvp;
 out vec3 v_normal;
 out vec4 v_color;
 out vec3 v_world;
-out vec4 v_light;
 void main() {
   vec4 world = model * vec4(position, 1.0);
   v_normal = mat3(model) * normal;  // uniform scale: no inverse transpose needed
   v_color = color;
   v_world = world.xyz;
-  v_light = light_mvp * world;
   gl_Position = mvp * world;
 }
 )";
@@ -138,7 +73,6 @@ const char* kSceneFs = R"(
 in vec3 v_normal;
 in vec4 v_color;
 in vec3 v_world;
-in vec4 v_light;
 uniform vec3 sun;
 uniform vec3 eye;
 out vec4 frag;
@@ -148,7 +82,7 @@ void main() {
   if (dot(n, v) < 0.0) n = -n;  // two-sided leaves
   float diffuse = max(dot(n, sun), 0.0);
   float specular = pow(max(dot(n, normalize(sun + v)), 0.0), 32.0) * 0.15;
-  float s = lit(v_light);
+  float s = lit(v_world);
   vec3 c = v_color.rgb * (0.35 + 0.65 * diffuse * s) + vec3(specular * s);
   frag = vec4(pow(c, vec3(1.0 / 1.2)), v_color.a);
 }
@@ -170,7 +104,6 @@ const char* kGroundFs = R"(
 in vec2 v_ndc;
 uniform mat4 mvp;
 uniform mat4 inverse_mvp;
-uniform mat4 light_mvp;
 uniform vec3 sun;
 uniform vec3 eye;
 uniform vec3 ground_color;
@@ -190,7 +123,7 @@ void main() {
   vec4 clip = mvp * vec4(world, 1.0);
   gl_FragDepth = clamp(clip.z / clip.w * 0.5 + 0.5, 0.0, 1.0);
   vec3 n = eye.z >= ground_z ? vec3(0.0, 0.0, 1.0) : vec3(0.0, 0.0, -1.0);
-  float s = lit(light_mvp * vec4(world, 1.0));
+  float s = lit(world);
   vec3 c = ground_color * (0.35 + 0.65 * max(dot(n, sun), 0.0) * s);
   c = pow(c, vec3(1.0 / 1.2));
   float haze = max_haze * (1.0 - exp(-length(world - eye) / haze_distance));
@@ -198,10 +131,11 @@ void main() {
 }
 )";
 
-// `fs` without its #version line when `with_vsm`: the version, then kVsmGlsl, then `fs`.
+// `fs` without its #version line when `with_vsm`: the version, then kShadowReceiverGlsl, then
+// `fs`.
 GLuint program(const char* vs, const char* fs, bool with_vsm = false) {
-  return gl_program(
-      vs, with_vsm ? std::string("#version 330 core\n") + kVsmGlsl + fs : std::string(fs));
+  return gl_program(vs, with_vsm ? std::string("#version 330 core\n") + kShadowReceiverGlsl + fs
+                                 : std::string(fs));
 }
 
 glm::vec3 colormap(float t) {  // blue -> cyan -> green -> yellow -> red, as the VTK renders
@@ -223,6 +157,8 @@ struct GpuMesh {
   GLsizei opaque_indices = 0;  // the first ones; the rest are blended
   GLsizei bark_indices = 0;    // the first opaque ones: closed tubes
   GLsizei instances = 0;
+  std::vector<glm::mat4> models;  // of the instances (set_instances), for the cascades' culling
+  glm::vec4 bound{0.0f};          // the mesh's bounding sphere: centre, radius
 };
 
 // Crown volumes and translucent obstacles are blended over the opaque geometry.
@@ -326,11 +262,35 @@ void bounds(const StepRef& step, glm::vec3& lo, glm::vec3& hi) {
   }
 }
 
-void set_instances(GpuMesh& g, const std::vector<glm::mat4>& models) {
+// The instances drawn by the next draw calls.
+void upload_instances(GpuMesh& g, const std::vector<glm::mat4>& models) {
   glBindBuffer(GL_ARRAY_BUFFER, g.instance_vbo);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(models.size() * sizeof(glm::mat4)),
                models.data(), GL_DYNAMIC_DRAW);
   g.instances = static_cast<GLsizei>(models.size());
+}
+
+// The mesh's instances.
+void set_instances(GpuMesh& g, const std::vector<glm::mat4>& models) {
+  g.models = models;
+  upload_instances(g, g.models);
+}
+
+// The bounding sphere (centre of the box, farthest vertex) of interleaved vertices whose first
+// three floats in every `stride` are the position.
+glm::vec4 bounding_sphere(const std::vector<float>& v, std::size_t stride) {
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  for (std::size_t i = 0; i + 2 < v.size(); i += stride) {
+    lo = glm::min(lo, glm::vec3(v[i], v[i + 1], v[i + 2]));
+    hi = glm::max(hi, glm::vec3(v[i], v[i + 1], v[i + 2]));
+  }
+  if (lo.x > hi.x) return glm::vec4(0.0f);
+  const glm::vec3 c = 0.5f * (lo + hi);
+  float r = 0.0f;
+  for (std::size_t i = 0; i + 2 < v.size(); i += stride) {
+    r = std::max(r, glm::length(glm::vec3(v[i], v[i + 1], v[i + 2]) - c));
+  }
+  return glm::vec4(c, r);
 }
 
 GpuMesh upload_raw(const std::vector<float>& v, const std::vector<std::uint32_t>& idx,
@@ -363,6 +323,7 @@ GpuMesh upload_raw(const std::vector<float>& v, const std::vector<std::uint32_t>
   glBindVertexArray(0);
   g.indices = static_cast<GLsizei>(idx.size());
   g.opaque_indices = static_cast<GLsizei>(opaque_indices);
+  g.bound = bounding_sphere(v, 10);
   return g;
 }
 
@@ -686,6 +647,13 @@ Scene check_and_measure(const std::vector<StepRef>& steps, const ViewerOptions& 
   }
   if (!o.screenshot.empty()) check_image_path(o.screenshot);
   if (o.width < 1 || o.height < 1 || o.frames < 1) throw ValueError("bad viewer size or frames");
+  if (o.shadow_cascades < 0 || o.shadow_cascades >= kMaxShadowLayers) {
+    throw ValueError("shadow cascades: expected 0 to " + std::to_string(kMaxShadowLayers - 1) +
+                     ", got " + std::to_string(o.shadow_cascades));
+  }
+  if (o.camera_distance_m < 0.0 || !std::isfinite(o.camera_distance_m)) {
+    throw ValueError("camera distance: expected a finite distance >= 0 m");
+  }
   Scene scene;
   scene.lo = glm::vec3(1e30f);
   scene.hi = glm::vec3(-1e30f);
@@ -711,8 +679,11 @@ GLFWwindow* open_window(const ViewerOptions& o, const Scene& scene, int steps, S
   glfwSwapInterval(offscreen ? 0 : 1);
   const float radius = std::max(0.5f * glm::length(scene.hi - scene.lo), 0.1f);
   state.camera.target = 0.5f * (scene.lo + scene.hi);
-  state.camera.distance = 2.6f * radius;
+  if (o.look_at) state.camera.target = glm::vec3((*o.look_at)[0], (*o.look_at)[1], (*o.look_at)[2]);
+  state.camera.distance =
+      o.camera_distance_m > 0.0 ? static_cast<float>(o.camera_distance_m) : 2.6f * radius;
   state.camera.pitch = static_cast<float>(glm::radians(o.pitch_deg));
+  state.camera.yaw = static_cast<float>(glm::radians(o.yaw_deg));
   state.home = state.camera;
   state.steps = steps;
   state.controls.step = state.steps - 1;
@@ -735,7 +706,7 @@ GLFWwindow* open_window(const ViewerOptions& o, const Scene& scene, int steps, S
 
 // Step 3: shaders, every step's meshes and the ground on the GPU, into `g`.
 struct GpuScene {
-  GLuint shadow_program = 0, blur_program = 0, scene_program = 0;
+  GLuint scene_program = 0;
   std::vector<GpuStep> steps, coarse;
   GLuint ground_program = 0;
   GLuint ground_vao = 0;  // no attributes: the ground's triangle comes from gl_VertexID
@@ -749,15 +720,13 @@ struct GpuScene {
 
 void upload_scene(GpuScene& g, const std::vector<StepRef>& steps,
                   const std::vector<StepRef>& coarse, const ViewerOptions& o, const Scene& scene) {
-  g.shadow_program = program(kShadowVs, kShadowFs);
-  g.blur_program = program(kBlurVs, kBlurFs);
   g.scene_program = program(kSceneVs, kSceneFs, true);
   for (const auto& step : steps) g.steps.push_back(upload(step, o, scene));
   for (const auto& step : coarse) g.coarse.push_back(upload(step, o, scene));
   g.ground_program = program(kGroundVs, kGroundFs, true);
   glGenVertexArrays(1, &g.ground_vao);
   if (!o.relief_crowns.empty()) {
-    g.relief = std::make_unique<ReliefCrownRenderer>(o.relief_crowns, kVsmGlsl);
+    g.relief = std::make_unique<ReliefCrownRenderer>(o.relief_crowns, kShadowReceiverGlsl);
   }
 }
 
@@ -772,8 +741,6 @@ void release(GpuScene& g) {
   g.impostors.reset();
   glDeleteVertexArrays(1, &g.ground_vao);
   glDeleteProgram(g.ground_program);
-  glDeleteProgram(g.shadow_program);
-  glDeleteProgram(g.blur_program);
   glDeleteProgram(g.scene_program);
   if (g.tessellation_program != 0) glDeleteProgram(g.tessellation_program);
 }
@@ -790,48 +757,29 @@ std::unique_ptr<ImpostorRenderer> make_impostors(GpuScene& gpu, const LodView& l
     draw(m, Part::kOpaque);
   };
   return std::make_unique<ImpostorRenderer>(*lod.scene, ImpostorViews{}, kImpostorResolution,
-                                            draw_plant, kVsmGlsl);
+                                            draw_plant, kShadowReceiverGlsl);
 }
 
-// The variance shadow map (two RG32F moment textures: the moments pass writes the first, the
-// blur goes to the second and back) and, for screenshots, the offscreen target (a hidden window's
-// default framebuffer is undefined).
+// The shadow maps (viewer_shadow_maps.hpp) and, for screenshots, the offscreen target (a hidden
+// window's default framebuffer is undefined).
 struct Targets {
-  std::array<GLuint, 2> moments_tex{}, moments_fbo{};
-  // What the shadow map holds: the step and its casters it was drawn for (none: draw it). The
-  // sun is fixed, so the map changes only with what casts shadows.
+  std::unique_ptr<ShadowMaps> shadow_maps;
+  // What the maps hold: the step and its casters they were drawn for (none: draw them), and each
+  // layer's matrix, with which the receivers look it up, and the frame it was drawn in. The sun
+  // is fixed, so the whole scene's map changes only with what casts shadows; a cascade's also
+  // when the camera moves it.
   const GpuStep* shadow_step = nullptr;
   std::uint64_t shadow_casters = 0;
-  GLuint shadow_depth_rb = 0;                         // depth test of the moments pass
+  std::array<glm::mat4, kMaxShadowLayers> drawn_mvps{};
+  std::array<std::size_t, kMaxShadowLayers> drawn_in_frame{};
+  std::size_t frame = 0;
+  std::size_t layers_drawn = 0;                       // ViewerStats::shadow_maps_drawn
   GLuint target_fbo = 0, color_rb = 0, depth_rb = 0;  // 0: the window
 };
 
 Targets make_targets(const ViewerOptions& o) {
   Targets t;
-  glGenTextures(2, t.moments_tex.data());
-  glGenFramebuffers(2, t.moments_fbo.data());
-  glGenRenderbuffers(1, &t.shadow_depth_rb);
-  glBindRenderbuffer(GL_RENDERBUFFER, t.shadow_depth_rb);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, kShadowSize, kShadowSize);
-  for (int k = 0; k < 2; ++k) {
-    glBindTexture(GL_TEXTURE_2D, t.moments_tex[k]);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, kShadowSize, kShadowSize, 0, GL_RG, GL_FLOAT, nullptr);
-    // Moments, unlike depths, may be interpolated: linear filtering is part of the filter.
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glBindFramebuffer(GL_FRAMEBUFFER, t.moments_fbo[k]);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t.moments_tex[k],
-                           0);
-    if (k == 0) {
-      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
-                                t.shadow_depth_rb);
-    }
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      throw IoError("cannot create the shadow map framebuffer");
-    }
-  }
+  t.shadow_maps = std::make_unique<ShadowMaps>(kShadowSize, o.shadow_cascades + 1);
   if (o.screenshot.empty()) return t;
   glGenFramebuffers(1, &t.target_fbo);
   glBindFramebuffer(GL_FRAMEBUFFER, t.target_fbo);
@@ -850,44 +798,81 @@ Targets make_targets(const ViewerOptions& o) {
 }
 
 void release(Targets& t) {
-  glDeleteFramebuffers(2, t.moments_fbo.data());
-  glDeleteTextures(2, t.moments_tex.data());
-  glDeleteRenderbuffers(1, &t.shadow_depth_rb);
+  t.shadow_maps.reset();  // while the context is current
   if (t.target_fbo == 0) return;
   glDeleteFramebuffers(1, &t.target_fbo);
   glDeleteRenderbuffers(1, &t.color_rb);
   glDeleteRenderbuffers(1, &t.depth_rb);
 }
 
-// Step 4: the matrices of one frame: the sun's orthographic view of the whole scene for the
-// shadow map, the camera's perspective.
+// Step 4: the matrices of one frame: the camera's perspective and the shadow maps' orthographic
+// views from the sun: the cascades of the camera's frustum (shadow_cascades.hpp), nearest first,
+// then the whole scene.
 struct FrameMatrices {
   glm::vec3 sun{0.0f}, eye{0.0f};
-  glm::mat4 light_mvp{1.0f}, mvp{1.0f};
+  glm::mat4 mvp{1.0f};
+  std::array<glm::mat4, kMaxShadowLayers> light_mvps{};
+  std::vector<ShadowCascade> cascades;
+  Eigen::Matrix3d sun_axes = Eigen::Matrix3d::Identity();
   int width = 0, height = 0;
   float ground_z = 0.0f, haze_distance = 1.0f;
 };
 
-FrameMatrices frame_matrices(const State& state, const Scene& scene, int width, int height) {
+// The cascades reach this many camera distances (eye to target) along the view; beyond, the
+// whole scene's map shades.
+constexpr double kCascadeReach = 3.0;
+// Zhang et al.'s blend of logarithmic and uniform splits: mostly logarithmic, so the nearest
+// cascade is a few metres deep at a tree's height, not the tenth of the view a uniform split
+// would give it.
+constexpr double kCascadeLambda = 0.75;
+
+glm::mat4 to_glm(const Eigen::Matrix4d& m) {
+  const Eigen::Matrix4f f = m.cast<float>();
+  return glm::make_mat4(f.data());
+}
+
+Eigen::Vector3d to_eigen(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+
+// The cascades of the camera's frustum from its near plane to kCascadeReach distances.
+void fit_cascades(FrameMatrices& f, const Camera& c, const Scene& scene, double far_m,
+                  int cascades) {
+  CascadeCamera camera;
+  camera.eye = to_eigen(f.eye);
+  camera.forward = to_eigen(c.target - f.eye).normalized();
+  camera.vertical_fov_rad = glm::radians(40.0);
+  camera.aspect = static_cast<double>(f.width) / std::max(f.height, 1);
+  const double near_m = 0.01 * c.distance;
+  const auto splits =
+      cascade_splits(near_m, std::min(far_m, kCascadeReach * c.distance), cascades, kCascadeLambda);
+  const Eigen::AlignedBox3d box(to_eigen(scene.lo), to_eigen(scene.hi));
+  f.cascades = fit_shadow_cascades(camera, splits, to_eigen(f.sun), box, kShadowSize);
+  for (int k = 0; k < cascades; ++k) f.light_mvps[k] = to_glm(f.cascades[k].light_view_projection);
+}
+
+FrameMatrices frame_matrices(const State& state, const Scene& scene, int width, int height,
+                             int cascades) {
   FrameMatrices f;
   f.width = width;
   f.height = height;
   const glm::vec3 center = 0.5f * (scene.lo + scene.hi);
   const float radius = std::max(0.5f * glm::length(scene.hi - scene.lo), 0.1f);
   f.sun = glm::normalize(glm::vec3(0.5f, -0.4f, 1.0f));
+  f.sun_axes = sun_axes(to_eigen(f.sun));
   const float scene_radius = radius * 2.2f;  // ground included
   const glm::mat4 light_view =
       glm::lookAt(center + f.sun * (2.0f * scene_radius), center, glm::vec3(0, 1, 0));
   const glm::mat4 light_proj = glm::ortho(-scene_radius, scene_radius, -scene_radius, scene_radius,
                                           0.01f * scene_radius, 4.0f * scene_radius);
-  f.light_mvp = light_proj * light_view;
+  f.light_mvps[cascades] = light_proj * light_view;
   const Camera& c = state.camera;
   f.eye = c.eye();
   const glm::mat4 view = glm::lookAt(f.eye, c.target, glm::vec3(0, 0, 1));
+  const float far_m = 10.0f * c.distance + radius * 4;
   const glm::mat4 proj =
       glm::perspective(glm::radians(40.0f), static_cast<float>(width) / std::max(height, 1),
-                       0.01f * c.distance, 10.0f * c.distance + radius * 4);
+                       0.01f * c.distance, far_m);
   f.mvp = proj * view;
+  if (cascades > 0) fit_cascades(f, c, scene, far_m, cascades);
   f.ground_z = scene.lo.z;
   f.haze_distance = kHazeRadii * radius;
   return f;
@@ -927,24 +912,19 @@ void choose_instances(GpuStep& g, const LodView& lod, const FrameMatrices& f,
   if (impostors != nullptr) g.triangles += 2 * impostors->quads();
 }
 
-// The uniforms of kVsmGlsl; the blurred moments are texture unit 0.
-void set_shadow_uniforms(GLuint p, bool shadows) {
-  glUniform1i(glGetUniformLocation(p, "shadows"), shadows ? 1 : 0);
-  glUniform1i(glGetUniformLocation(p, "shadow_map"), 0);
-  glUniform1f(glGetUniformLocation(p, "min_variance"), static_cast<float>(kVsmMinVariance));
-  glUniform1f(glGetUniformLocation(p, "bleed"), static_cast<float>(kVsmBleedReduction));
+// The uniforms of kShadowReceiverGlsl on program p (in use); the maps on texture unit 0.
+void set_shadow_uniforms(GLuint p, const Targets& t, bool shadows) {
+  t.shadow_maps->use_in(p, shadows, glm::value_ptr(t.drawn_mvps[0]));
 }
 
 // The ground to the horizon (kGroundFs), first after the clear; GL_LEQUAL lets the points beyond
 // the far plane, clamped to depth 1, pass against the cleared depth.
-void draw_ground(const GpuScene& gpu, const FrameMatrices& f, bool shadows) {
+void draw_ground(const GpuScene& gpu, const Targets& t, const FrameMatrices& f, bool shadows) {
   const GLuint p = gpu.ground_program;
   glUseProgram(p);
   glUniformMatrix4fv(glGetUniformLocation(p, "mvp"), 1, GL_FALSE, glm::value_ptr(f.mvp));
   const glm::mat4 inverse = glm::inverse(f.mvp);
   glUniformMatrix4fv(glGetUniformLocation(p, "inverse_mvp"), 1, GL_FALSE, glm::value_ptr(inverse));
-  glUniformMatrix4fv(glGetUniformLocation(p, "light_mvp"), 1, GL_FALSE,
-                     glm::value_ptr(f.light_mvp));
   glUniform3fv(glGetUniformLocation(p, "sun"), 1, glm::value_ptr(f.sun));
   glUniform3fv(glGetUniformLocation(p, "eye"), 1, glm::value_ptr(f.eye));
   glUniform3fv(glGetUniformLocation(p, "ground_color"), 1, kGround);
@@ -952,61 +932,82 @@ void draw_ground(const GpuScene& gpu, const FrameMatrices& f, bool shadows) {
   glUniform1f(glGetUniformLocation(p, "ground_z"), f.ground_z);
   glUniform1f(glGetUniformLocation(p, "haze_distance"), f.haze_distance);
   glUniform1f(glGetUniformLocation(p, "max_haze"), kMaxHaze);
-  set_shadow_uniforms(p, shadows);
+  set_shadow_uniforms(p, t, shadows);
   glDepthFunc(GL_LEQUAL);
   glBindVertexArray(gpu.ground_vao);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glDepthFunc(GL_LESS);
 }
 
-// The variance shadow map of step `g`: its depth moments from the sun into moments_tex[0]
-// (cleared to the far depth, moments (1, 1): nothing there shadows), then blurred along x into
-// moments_tex[1] and along y back into moments_tex[0]. The ground is not drawn: a plane under the
-// scene shadows nothing above it.
-void draw_shadow_map(const GpuScene& gpu, const GpuStep& g, const Targets& t,
-                     const FrameMatrices& f) {
-  glBindFramebuffer(GL_FRAMEBUFFER, t.moments_fbo[0]);
-  glViewport(0, 0, kShadowSize, kShadowSize);
-  glClearColor(1.0f, 1.0f, 0.0f, 0.0f);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glEnable(GL_DEPTH_TEST);
-  glUseProgram(gpu.shadow_program);
-  glUniformMatrix4fv(glGetUniformLocation(gpu.shadow_program, "light_mvp"), 1, GL_FALSE,
-                     glm::value_ptr(f.light_mvp));
-  for (const GpuMesh& m : g.meshes) draw(m);
-  if (gpu.relief) gpu.relief->draw_moments(glm::value_ptr(f.light_mvp), glm::value_ptr(f.sun));
-  if (gpu.impostors) gpu.impostors->draw_moments(glm::value_ptr(f.light_mvp));
-  glDisable(GL_DEPTH_TEST);
-  glUseProgram(gpu.blur_program);
-  glUniform1i(glGetUniformLocation(gpu.blur_program, "source"), 0);
-  glActiveTexture(GL_TEXTURE0);
-  glBindVertexArray(gpu.ground_vao);  // no attributes: the triangle comes from gl_VertexID
-  const float texel = 1.0f / kShadowSize;
-  for (int pass = 0; pass < 2; ++pass) {
-    glBindFramebuffer(GL_FRAMEBUFFER, t.moments_fbo[1 - pass]);
-    glBindTexture(GL_TEXTURE_2D, t.moments_tex[pass]);
-    glUniform2f(glGetUniformLocation(gpu.blur_program, "step"), pass == 0 ? texel : 0.0f,
-                pass == 0 ? 0.0f : texel);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+// The instances of `m` whose bounding spheres may cast a shadow into cascade `c` (casts_into).
+std::vector<glm::mat4> cascade_casters(const GpuMesh& m, const ShadowCascade& c,
+                                       const Eigen::Matrix3d& sun_axes) {
+  std::vector<glm::mat4> kept;
+  for (const glm::mat4& model : m.models) {
+    const glm::vec3 centre = glm::vec3(model * glm::vec4(glm::vec3(m.bound), 1.0f));
+    const float radius = m.bound.w * glm::length(glm::vec3(model[0]));  // uniform scale
+    if (casts_into(c, sun_axes, to_eigen(centre), radius)) kept.push_back(model);
   }
+  return kept;
+}
+
+// Layer k of the shadow maps for step `g`. A cascade's map draws only the instances that may
+// cast into it (a mesh with one instance is drawn whole: culling pays for many), then puts the
+// others back. The ground is not drawn: a plane under the scene shadows nothing above it.
+void draw_shadow_layer(const GpuScene& gpu, GpuStep& g, Targets& t, const FrameMatrices& f, int k) {
+  const bool cascade = k < static_cast<int>(f.cascades.size());
+  const float* light_mvp = glm::value_ptr(f.light_mvps[k]);
+  t.shadow_maps->draw_layer(k, light_mvp, [&](unsigned) {
+    for (GpuMesh& m : g.meshes) {
+      const bool cull = cascade && m.models.size() > 1;
+      if (cull) upload_instances(m, cascade_casters(m, f.cascades[k], f.sun_axes));
+      draw(m);
+      if (cull) upload_instances(m, m.models);
+    }
+    if (gpu.relief) gpu.relief->draw_moments(light_mvp, glm::value_ptr(f.sun));
+    if (gpu.impostors) gpu.impostors->draw_moments(light_mvp);
+  });
+  t.drawn_mvps[k] = f.light_mvps[k];
+  t.drawn_in_frame[k] = t.frame;
+  ++t.layers_drawn;
+}
+
+// The maps that no longer show this frame's casters: all of them for a new step or level-of-
+// detail choice. Else, of the cascades the camera moved away from this frame's slices, the one
+// drawn longest ago: one cascade a frame bounds the cost of a moving camera, and a cascade drawn
+// for an earlier camera is still a true shadow map of its own square, looked up with the matrix
+// it was drawn with (points outside it fall to the next map).
+void update_shadow_maps(const GpuScene& gpu, GpuStep& g, Targets& t, const FrameMatrices& f) {
+  ++t.frame;
+  if (t.shadow_step != &g || t.shadow_casters != g.casters) {
+    for (int k = 0; k < t.shadow_maps->layers(); ++k) draw_shadow_layer(gpu, g, t, f, k);
+    t.shadow_step = &g;
+    t.shadow_casters = g.casters;
+    return;
+  }
+  int stalest = -1;
+  for (int k = 0; k < static_cast<int>(f.cascades.size()); ++k) {
+    if (t.drawn_mvps[k] == f.light_mvps[k]) continue;
+    if (stalest < 0 || t.drawn_in_frame[k] < t.drawn_in_frame[stalest]) stalest = k;
+  }
+  if (stalest >= 0) draw_shadow_layer(gpu, g, t, f, stalest);
 }
 
 // Uses program p (the scene's or the tessellation's) and sets the scene shader's uniforms.
-void use_scene_program(GLuint p, const FrameMatrices& f, bool shadows) {
+void use_scene_program(GLuint p, const Targets& t, const FrameMatrices& f, bool shadows) {
   glUseProgram(p);
   glUniformMatrix4fv(glGetUniformLocation(p, "mvp"), 1, GL_FALSE, glm::value_ptr(f.mvp));
-  glUniformMatrix4fv(glGetUniformLocation(p, "light_mvp"), 1, GL_FALSE,
-                     glm::value_ptr(f.light_mvp));
   glUniform3fv(glGetUniformLocation(p, "sun"), 1, glm::value_ptr(f.sun));
   glUniform3fv(glGetUniformLocation(p, "eye"), 1, glm::value_ptr(f.eye));
-  set_shadow_uniforms(p, shadows);
+  set_shadow_uniforms(p, t, shadows);
 }
 
 // The opaque triangles as patches of the tessellation program (viewer_tessellation.hpp), with
 // the scene program's uniforms and expression 2's limits.
-void draw_tessellated(const GpuScene& gpu, const GpuStep& g, const FrameMatrices& f, bool shadows) {
+void draw_tessellated(const GpuScene& gpu, const GpuStep& g, const Targets& t,
+                      const FrameMatrices& f, bool shadows) {
   const GLuint p = gpu.tessellation_program;
-  use_scene_program(p, f, shadows);
+  use_scene_program(p, t, f, shadows);
   glUniform1f(glGetUniformLocation(p, "max_distance"), gpu.tessellation_distance);
   glUniform1f(glGetUniformLocation(p, "max_level"), gpu.max_level);
   glUniform1f(glGetUniformLocation(p, "pixels_per_radian"),
@@ -1018,42 +1019,34 @@ void draw_tessellated(const GpuScene& gpu, const GpuStep& g, const FrameMatrices
 // Step 5: the shadow map, then the scene: opaque geometry and the ground, then the crowns and
 // translucent obstacles blended over it back to front (sorted by sort_blended), without writing
 // depth.
-void draw_frame(const GpuScene& gpu, const GpuStep& g, Targets& t, const FrameMatrices& f,
-                bool shadows) {
-  if (shadows && (t.shadow_step != &g || t.shadow_casters != g.casters)) {
-    draw_shadow_map(gpu, g, t, f);
-    t.shadow_step = &g;
-    t.shadow_casters = g.casters;
-  }
+void draw_frame(const GpuScene& gpu, GpuStep& g, Targets& t, const FrameMatrices& f, bool shadows) {
+  if (shadows) update_shadow_maps(gpu, g, t, f);
   glEnable(GL_DEPTH_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, t.target_fbo);
   glViewport(0, 0, f.width, f.height);
   glClearColor(kSky[0], kSky[1], kSky[2], 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, t.moments_tex[0]);
-  if (gpu.ground) draw_ground(gpu, f, shadows);
+  if (gpu.ground) draw_ground(gpu, t, f, shadows);
   const GLuint p = gpu.scene_program;
-  use_scene_program(p, f, shadows);
+  use_scene_program(p, t, f, shadows);
   if (gpu.tessellation_program != 0) {
-    draw_tessellated(gpu, g, f, shadows);
+    draw_tessellated(gpu, g, t, f, shadows);
     glUseProgram(p);
   } else {
     for (const GpuMesh& m : g.meshes) draw(m, Part::kOpaque);
   }
   if (gpu.impostors) {
     glUseProgram(gpu.impostors->program());
-    set_shadow_uniforms(gpu.impostors->program(), shadows);
-    gpu.impostors->draw(glm::value_ptr(f.mvp), glm::value_ptr(f.light_mvp));
+    set_shadow_uniforms(gpu.impostors->program(), t, shadows);
+    gpu.impostors->draw(glm::value_ptr(f.mvp));
     glUseProgram(p);
   }
   if (gpu.relief) {
     for (const GLuint rp : gpu.relief->programs()) {
       glUseProgram(rp);
-      set_shadow_uniforms(rp, shadows);
+      set_shadow_uniforms(rp, t, shadows);
     }
-    gpu.relief->draw(glm::value_ptr(f.mvp), glm::value_ptr(f.eye), glm::value_ptr(f.sun),
-                     glm::value_ptr(f.light_mvp));
+    gpu.relief->draw(glm::value_ptr(f.mvp), glm::value_ptr(f.eye), glm::value_ptr(f.sun));
     glUseProgram(p);  // the blended soup below is drawn by the scene program
   }
   glEnable(GL_BLEND);
@@ -1165,7 +1158,7 @@ const GpuStep& draw_controlled_frame(GLFWwindow* window, State& state, GpuScene&
   GpuStep& g = x.info.far ? gpu.coarse[c.step] : gpu.steps[c.step];
   int fw = o.width, fh = o.height;
   if (o.screenshot.empty()) glfwGetFramebufferSize(window, &fw, &fh);
-  const FrameMatrices f = frame_matrices(state, x.scene, fw, fh);
+  const FrameMatrices f = frame_matrices(state, x.scene, fw, fh, o.shadow_cascades);
   if (x.lod.scene != nullptr) {
     // The panel's distance moves the impostors' with it.
     x.lod.options.impostor_distance_m *= c.lod_distance_m / x.lod.options.max_distance_m;
@@ -1226,6 +1219,7 @@ ViewerStats run_frames(GLFWwindow* window, State& state, GpuScene& gpu, Targets&
   }
   stats.mean_frame_ms = stats.frames > 0 ? total_ms / stats.frames : 0.0;
   stats.controls = state.controls;
+  stats.shadow_maps_drawn = t.layers_drawn;
   return stats;
 }
 
@@ -1315,7 +1309,7 @@ void set_up_tessellation(const ViewerOptions& o, const LodView& lod, const State
   const double max_distance =
       o.tessellation_distance_m > 0.0 ? o.tessellation_distance_m : 4.0 * state.home.distance;
   if (!o.tessellation_on_cpu && tessellation_shaders_available()) {
-    gpu.tessellation_program = tessellation_program(std::string(kVsmGlsl) + kSceneFs);
+    gpu.tessellation_program = tessellation_program(std::string(kShadowReceiverGlsl) + kSceneFs);
     gpu.tessellation_distance = static_cast<float>(max_distance);
     gpu.max_level = static_cast<float>(o.tessellation_max_level);
     stats.tessellation = "gpu";

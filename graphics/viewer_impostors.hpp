@@ -36,8 +36,9 @@ class ImpostorRenderer {
   // `sun` (world).
   void place(const std::vector<InstanceLod>& choice, const float* eye, const float* sun);
   std::size_t quads() const;
-  // The camera pass (column-major 4 x 4 matrices), alpha-tested, writing depth.
-  void draw(const float* view_projection, const float* light_mvp) const;
+  // The camera pass (a column-major 4 x 4 matrix), alpha-tested, writing depth; the shadow maps
+  // are those of the uniforms set on program().
+  void draw(const float* view_projection) const;
   // The moments pass of the variance shadow map.
   void draw_moments(const float* light_mvp) const;
 

@@ -101,7 +101,6 @@ in vec3 v_sun;
 in vec3 v_world;
 in float v_radius;
 uniform sampler2DArray normal_map;
-uniform mat4 light_mvp;
 uniform vec3 eye;
 uniform vec3 sun;
 out vec4 frag;
@@ -111,7 +110,7 @@ void main() {
   vec4 nd = texture(normal_map, v_uvl, kMipBias) / a.a;
   vec3 n = nd.rgb * 2.0 - 1.0;
   vec3 seen = v_world + normalize(eye - v_world) * (nd.a * 2.0 - 1.0) * v_radius;
-  float s = lit(light_mvp * vec4(seen + 0.05 * v_radius * sun, 1.0));
+  float s = lit(seen + 0.05 * v_radius * sun);
   vec3 c = a.rgb / a.a * (0.35 + 0.65 * max(dot(n, normalize(v_sun)), 0.0) * s);
   frag = vec4(pow(c, vec3(1.0 / 1.2)), 1.0);
 }
@@ -332,12 +331,11 @@ void ImpostorRenderer::place(const std::vector<InstanceLod>& choice, const float
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
-void ImpostorRenderer::draw(const float* view_projection, const float* light_mvp) const {
+void ImpostorRenderer::draw(const float* view_projection) const {
   const Gpu& g = *gpu_;
   const GLuint p = g.quad_program;
   glUseProgram(p);
   glUniformMatrix4fv(glGetUniformLocation(p, "view_projection"), 1, GL_FALSE, view_projection);
-  glUniformMatrix4fv(glGetUniformLocation(p, "light_mvp"), 1, GL_FALSE, light_mvp);
   glUniform3fv(glGetUniformLocation(p, "sun"), 1, sun_.data());
   glUniform3fv(glGetUniformLocation(p, "eye"), 1, eye_.data());
   glUniform1i(glGetUniformLocation(p, "albedo_map"), 1);

@@ -30,10 +30,9 @@ class ReliefCrownRenderer {
   // The programs (relief, billboards), for the caller to set the shadow uniforms of
   // `shadow_glsl` on.
   std::array<unsigned, 2> programs() const;
-  // The camera pass. Column-major 4 x 4 matrices, the eye and the unit direction to the sun
-  // (world); the sun's matrix places each point in the shadow map.
-  void draw(const float* view_projection, const float* eye, const float* sun,
-            const float* light_mvp) const;
+  // The camera pass. A column-major 4 x 4 matrix, the eye and the unit direction to the sun
+  // (world); the shadow maps are those of the uniforms set on programs().
+  void draw(const float* view_projection, const float* eye, const float* sun) const;
   // The moments pass of the variance shadow map: the crowns seen by the sun, orthographic.
   void draw_moments(const float* light_mvp, const float* sun) const;
 

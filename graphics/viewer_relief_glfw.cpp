@@ -87,7 +87,6 @@ vec3 crown_shade(vec3 albedo, vec3 q, float surface_r, vec3 n, float s) {
 const char* kReliefFs = R"(
 in vec3 v_local;
 uniform mat4 view_projection;  // the camera's, or the sun's in the moments pass
-uniform mat4 light_mvp;
 uniform mat4 model;
 uniform int moments_pass;  // 1: the sun's orthographic view, writing depth moments
 uniform vec3 eye_local;    // the eye in the crown's frame (camera pass)
@@ -144,7 +143,7 @@ void main() {
   vec3 n = normalize(mat3(model) * g);  // rotation times uniform scale
   vec3 q = p - centre;
   vec3 albedo = texture(color_map, strip_uv(q)).rgb;
-  frag = vec4(crown_shade(albedo, q, surface_radius(q), n, lit(light_mvp * world)), 1.0);
+  frag = vec4(crown_shade(albedo, q, surface_radius(q), n, lit(world.xyz)), 1.0);
 }
 )";
 
@@ -197,7 +196,6 @@ flat in vec3 v_centre;
 flat in vec3 v_right;
 flat in vec3 v_up;
 flat in float v_half;
-uniform mat4 light_mvp;
 uniform mat4 model;
 uniform float drawn;  // the fractional number of billboards drawn
 uniform float fade;   // the last `fade` of them fade in
@@ -235,7 +233,7 @@ void main() {
   // The shadow of the crown's surface point in the leaf's direction: the relief's own shadow in
   // the map would put every inner leaf in the dark, where Argudo's depth term already shades it.
   vec4 surface = model * vec4(centre + 1.02 * surface_r * radial, 1.0);
-  frag = vec4(crown_shade(albedo, q, surface_r, n, lit(light_mvp * surface)), 1.0);
+  frag = vec4(crown_shade(albedo, q, surface_r, n, lit(surface.xyz)), 1.0);
 }
 )";
 
@@ -381,15 +379,11 @@ std::array<unsigned, 2> ReliefCrownRenderer::programs() const {
   return {gpu_->program, gpu_->billboard_program};
 }
 
-void ReliefCrownRenderer::draw(const float* view_projection, const float* eye, const float* sun,
-                               const float* light_mvp) const {
+void ReliefCrownRenderer::draw(const float* view_projection, const float* eye,
+                               const float* sun) const {
   GLint viewport[4] = {0, 0, 0, 0};
   glGetIntegerv(GL_VIEWPORT, viewport);
   const Eigen::Map<const Eigen::Matrix4f> vp(view_projection);
-  for (const GLuint p : {gpu_->program, gpu_->billboard_program}) {
-    glUseProgram(p);
-    glUniformMatrix4fv(glGetUniformLocation(p, "light_mvp"), 1, GL_FALSE, light_mvp);
-  }
   glUseProgram(gpu_->program);
   glUniform1i(glGetUniformLocation(gpu_->program, "moments_pass"), 0);
   glUniform1i(glGetUniformLocation(gpu_->program, "steps"), kCameraSteps);

@@ -73,11 +73,9 @@ in vec3 e_world[];
 in vec3 e_normal[];
 in vec4 e_color[];
 uniform mat4 mvp;
-uniform mat4 light_mvp;
 out vec3 v_normal;
 out vec4 v_color;
 out vec3 v_world;
-out vec4 v_light;
 vec3 edge_point(vec3 pi, vec3 pj, vec3 ni) { return (2.0 * pi + pj - dot(pj - pi, ni) * ni) / 3.0; }
 vec3 edge_normal(vec3 pi, vec3 pj, vec3 ni, vec3 nj) {
   vec3 d = pj - pi;
@@ -103,7 +101,6 @@ void main() {
   v_normal = length(n) > 0.0 ? normalize(n) : n0;
   v_color = a * e_color[0] + b * e_color[1] + c * e_color[2];
   v_world = p;
-  v_light = light_mvp * vec4(p, 1.0);
   gl_Position = mvp * vec4(p, 1.0);
 }
 )";

@@ -116,5 +116,81 @@ TEST(ViewerShadow, GroundUnderTheTreeIsDarkerWithShadows) {
   fs::remove_all(dir);
 }
 
+// The pixel of world point `p` for a camera looking at `target` from `distance` m at `yaw` and
+// `pitch` (radians), as the viewer places it (viewer.hpp: vertical field of view 40 degrees).
+Eigen::Vector2d pixel_from(const Eigen::Vector3d& p, const Eigen::Vector3d& target, double distance,
+                           double yaw, double pitch, int width, int height) {
+  const double pi = 3.141592653589793;
+  const Eigen::Vector3d eye =
+      target + distance * Eigen::Vector3d(std::cos(pitch) * std::cos(yaw),
+                                          std::cos(pitch) * std::sin(yaw), std::sin(pitch));
+  const Eigen::Vector3d forward = (target - eye).normalized();
+  const Eigen::Vector3d right = forward.cross(Eigen::Vector3d::UnitZ()).normalized();
+  const Eigen::Vector3d up = right.cross(forward);
+  const Eigen::Vector3d v = p - eye;
+  const double t = std::tan(20.0 * pi / 180.0);
+  const double x_ndc = right.dot(v) / (forward.dot(v) * t * width / height);
+  const double y_ndc = up.dot(v) / (forward.dot(v) * t);
+  return {(x_ndc + 1.0) * 0.5 * width, (1.0 - y_ndc) * 0.5 * height};
+}
+
+// The T tree in a scene 800 m wide (unused vertices at +-400 m): the one map of the whole scene
+// gives each texel about 2.4 m of ground, so the bough, 0.12 m thick, casts next to nothing; with
+// three cascades the nearest map's texels are millimetres and its shadow is as dark as in a small
+// scene. The camera looks at the tree from 8 m; the shadow's place is found from the sun's
+// direction by hand, as above.
+TEST(ViewerShadow, CascadesResolveASmallTreesShadowInALargeScene) {
+  if (!viewer_available() || !render_available()) GTEST_SKIP() << "built without viewer/VTK";
+  if (!display_available()) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
+  const fs::path dir =
+      fs::temp_directory_path() / ("fspm_viewer_cascades_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  TriangleMesh mesh = mesh_tree(t_tree(), {});
+  TriangleMesh corners;
+  for (int k = 0; k < 4; ++k) {
+    corners.positions.emplace_back(k & 1 ? 400.0f : -400.0f, k & 2 ? 400.0f : -400.0f, 0.0f);
+    corners.normals.emplace_back(0, 0, 1);
+    corners.uvs.emplace_back(0, 0);
+  }
+  mesh.append(corners);
+  ViewerOptions o;
+  o.width = 400;
+  o.height = 300;
+  o.look_at = std::array<double, 3>{-0.5, -0.2, 0.8};
+  o.camera_distance_m = 8.0;
+  o.frames = 3;
+  const auto shoot = [&](int cascades, bool shadows, const std::string& name) {
+    o.shadow_cascades = cascades;
+    o.shadows = shadows;
+    o.screenshot = (dir / name).string();
+    const ViewerStats stats = run_viewer({mesh}, {0.0}, o);
+    return std::make_pair(read_image(o.screenshot), stats);
+  };
+  const auto [one_map, one_stats] = shoot(0, true, "one_map.png");
+  const auto [cascaded, cascaded_stats] = shoot(3, true, "cascaded.png");
+  const auto [off, off_stats] = shoot(3, false, "off.png");
+  // A still camera: every map is drawn in the first frame and reused by the next two.
+  EXPECT_EQ(one_stats.shadow_maps_drawn, 1u);
+  EXPECT_EQ(cascaded_stats.shadow_maps_drawn, 4u);
+  EXPECT_EQ(off_stats.shadow_maps_drawn, 0u);
+  const double pi = 3.141592653589793;
+  const Eigen::Vector3d target(-0.5, -0.2, 0.8);
+  for (const double y : {-0.9, -0.6}) {
+    const Eigen::Vector3d shade(-1.0, y + 0.8, 0.0);  // of (0, y, 2), 2 m up: -2 (0.5, -0.4)
+    const Eigen::Vector2d px =
+        pixel_from(shade, target, 8.0, -0.9, o.pitch_deg * pi / 180.0, o.width, o.height);
+    const int x = static_cast<int>(px.x()), r = static_cast<int>(px.y());
+    ASSERT_TRUE(x >= 0 && x < o.width && r >= 0 && r < o.height) << x << "," << r;
+    const auto* lit = off.pixel(x, r);
+    EXPECT_GT(lit[1], lit[2]);  // ground, not the tree in front of it
+    EXPECT_GT(lit[1], lit[0]);
+    // As in the small scene: well under 0.7 times as bright with the cascades; the one map
+    // leaves the ground nearly as lit (over 0.85 times).
+    EXPECT_LT(cascaded.pixel(x, r)[1], 0.7 * lit[1]) << x << "," << r;
+    EXPECT_GT(one_map.pixel(x, r)[1], 0.85 * lit[1]) << x << "," << r;
+  }
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace fspm::graphics
