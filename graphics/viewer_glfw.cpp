@@ -913,8 +913,8 @@ void choose_instances(GpuStep& g, const LodView& lod, const FrameMatrices& f,
 }
 
 // The uniforms of kShadowReceiverGlsl on program p (in use); the maps on texture unit 0.
-void set_shadow_uniforms(GLuint p, const Targets& t, bool shadows) {
-  t.shadow_maps->use_in(p, shadows, glm::value_ptr(t.drawn_mvps[0]));
+void set_shadow_uniforms(GLuint p, const Targets& t, const FrameMatrices& f, bool shadows) {
+  t.shadow_maps->use_in(p, shadows, glm::value_ptr(t.drawn_mvps[0]), glm::value_ptr(f.sun));
 }
 
 // The ground to the horizon (kGroundFs), first after the clear; GL_LEQUAL lets the points beyond
@@ -932,7 +932,7 @@ void draw_ground(const GpuScene& gpu, const Targets& t, const FrameMatrices& f, 
   glUniform1f(glGetUniformLocation(p, "ground_z"), f.ground_z);
   glUniform1f(glGetUniformLocation(p, "haze_distance"), f.haze_distance);
   glUniform1f(glGetUniformLocation(p, "max_haze"), kMaxHaze);
-  set_shadow_uniforms(p, t, shadows);
+  set_shadow_uniforms(p, t, f, shadows);
   glDepthFunc(GL_LEQUAL);
   glBindVertexArray(gpu.ground_vao);
   glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -999,7 +999,7 @@ void use_scene_program(GLuint p, const Targets& t, const FrameMatrices& f, bool 
   glUniformMatrix4fv(glGetUniformLocation(p, "mvp"), 1, GL_FALSE, glm::value_ptr(f.mvp));
   glUniform3fv(glGetUniformLocation(p, "sun"), 1, glm::value_ptr(f.sun));
   glUniform3fv(glGetUniformLocation(p, "eye"), 1, glm::value_ptr(f.eye));
-  set_shadow_uniforms(p, t, shadows);
+  set_shadow_uniforms(p, t, f, shadows);
 }
 
 // The opaque triangles as patches of the tessellation program (viewer_tessellation.hpp), with
@@ -1037,14 +1037,14 @@ void draw_frame(const GpuScene& gpu, GpuStep& g, Targets& t, const FrameMatrices
   }
   if (gpu.impostors) {
     glUseProgram(gpu.impostors->program());
-    set_shadow_uniforms(gpu.impostors->program(), t, shadows);
+    set_shadow_uniforms(gpu.impostors->program(), t, f, shadows);
     gpu.impostors->draw(glm::value_ptr(f.mvp));
     glUseProgram(p);
   }
   if (gpu.relief) {
     for (const GLuint rp : gpu.relief->programs()) {
       glUseProgram(rp);
-      set_shadow_uniforms(rp, t, shadows);
+      set_shadow_uniforms(rp, t, f, shadows);
     }
     gpu.relief->draw(glm::value_ptr(f.mvp), glm::value_ptr(f.eye), glm::value_ptr(f.sun));
     glUseProgram(p);  // the blended soup below is drawn by the scene program

@@ -34,9 +34,10 @@ class ShadowMaps {
                   const std::function<void(unsigned program)>& draw_casters);
 
   // Sets kShadowReceiverGlsl's uniforms on `program` (in use): shadows on or off, the layers'
-  // matrices (layers() of them, column-major, in layer order), and binds the maps to texture
-  // unit 0.
-  void use_in(unsigned program, bool shadows, const float* light_mvps) const;
+  // matrices (layers() of them, column-major, in layer order), each an orthographic view along
+  // the unit direction to the sun `sun` with the axes of sun_axes (shadow_cascades.hpp), and
+  // binds the maps to texture unit 0.
+  void use_in(unsigned program, bool shadows, const float* light_mvps, const float* sun) const;
 
  private:
   int resolution_ = 0, layers_ = 0;

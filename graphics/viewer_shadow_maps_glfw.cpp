@@ -6,6 +6,8 @@
 
 #include <GL/glcorearb.h>
 
+#include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
 #include <string>
 
 #include "fspm/error.hpp"
@@ -19,11 +21,15 @@ namespace fspm::graphics {
 // 6.11-6.12, with (t - mu)^2), light bleeding reduced. A point takes the first layer that holds
 // it at least `margin` (kCascadeGuardTexels - 1 texels: the blur's reach and the bilinear
 // lookup) inside its edge, the last layer (the whole scene) anywhere; points outside every map
-// are lit. chebyshev_upper_bound and variance_shadow_light in variance_shadow.cpp are its CPU
-// twins.
+// are lit. All layers look along the sun with the same axes (sun_axes), so a point is turned
+// into them once and each layer only scales and shifts it into its map (a full matrix per layer
+// costs a quarter of a landscape's frame in software). chebyshev_upper_bound and
+// variance_shadow_light in variance_shadow.cpp are its CPU twins.
 const char* const kShadowReceiverGlsl = R"(
 uniform sampler2DArray shadow_map;
-uniform mat4 light_mvps[5];
+uniform mat3 sun_view;  // world to the sun's axes
+uniform vec3 layer_scale[5];
+uniform vec3 layer_offset[5];  // sun's axes to layer k's map, [0, 1]^3: l * scale + offset
 uniform int shadow_layers;
 uniform int shadows;
 uniform float min_variance;
@@ -31,9 +37,9 @@ uniform float bleed;
 uniform float margin;
 float lit(vec3 world) {
   if (shadows == 0) return 1.0;
+  vec3 l = sun_view * world;
   for (int k = 0; k < shadow_layers; ++k) {
-    vec4 light_clip = light_mvps[k] * vec4(world, 1.0);
-    vec3 p = light_clip.xyz / light_clip.w * 0.5 + 0.5;
+    vec3 p = l * layer_scale[k] + layer_offset[k];
     float e = k == shadow_layers - 1 ? 0.0 : margin;
     if (p.x < e || p.x > 1.0 - e || p.y < e || p.y > 1.0 - e) continue;
     if (p.z > 1.0) return 1.0;
@@ -49,6 +55,16 @@ float lit(vec3 world) {
 )";
 
 namespace {
+
+// World to the sun's axes (sun_axes in shadow_cascades.hpp): the rows x, y, z = sun.
+glm::mat3 sun_view(const float* sun) {
+  const Eigen::Matrix3d a = sun_axes(Eigen::Vector3d(sun[0], sun[1], sun[2]));
+  glm::mat3 view;  // column-major: view[c][r] = a(c, r), the transpose of a
+  for (int c = 0; c < 3; ++c) {
+    for (int r = 0; r < 3; ++r) view[c][r] = static_cast<float>(a(c, r));
+  }
+  return view;
+}
 
 // The moments pass: depth x and x^2 seen from the sun (Pirk eq. 6.10, one sample each), x^2 with
 // the depth's slope across the pixel added (Donnelly and Lauritzen's bias: a tilted surface covers
@@ -182,10 +198,23 @@ void ShadowMaps::draw_layer(int k, const float* light_mvp,
   }
 }
 
-void ShadowMaps::use_in(unsigned program, bool shadows, const float* light_mvps) const {
+void ShadowMaps::use_in(unsigned program, bool shadows, const float* light_mvps,
+                        const float* sun) const {
+  const glm::mat3 axes = glm::transpose(sun_view(sun));  // columns x, y, z = sun
+  glm::vec3 scale[kMaxShadowLayers], offset[kMaxShadowLayers];
+  for (int k = 0; k < layers_; ++k) {
+    // The layer's matrix after the turn into the sun's axes is orthographic: diagonal and a
+    // translation. From clip space [-1, 1] to map coordinates [0, 1].
+    const glm::mat4 p = glm::make_mat4(light_mvps + 16 * k) * glm::mat4(axes);
+    scale[k] = 0.5f * glm::vec3(p[0][0], p[1][1], p[2][2]);
+    offset[k] = 0.5f * glm::vec3(p[3]) + 0.5f;
+  }
+  const glm::mat3 view = sun_view(sun);
   glUniform1i(glGetUniformLocation(program, "shadows"), shadows ? 1 : 0);
   glUniform1i(glGetUniformLocation(program, "shadow_map"), 0);
-  glUniformMatrix4fv(glGetUniformLocation(program, "light_mvps"), layers_, GL_FALSE, light_mvps);
+  glUniformMatrix3fv(glGetUniformLocation(program, "sun_view"), 1, GL_FALSE, glm::value_ptr(view));
+  glUniform3fv(glGetUniformLocation(program, "layer_scale"), layers_, glm::value_ptr(scale[0]));
+  glUniform3fv(glGetUniformLocation(program, "layer_offset"), layers_, glm::value_ptr(offset[0]));
   glUniform1i(glGetUniformLocation(program, "shadow_layers"), layers_);
   glUniform1f(glGetUniformLocation(program, "min_variance"), static_cast<float>(kVsmMinVariance));
   glUniform1f(glGetUniformLocation(program, "bleed"), static_cast<float>(kVsmBleedReduction));

@@ -204,6 +204,38 @@ TEST(GraphicsCli, ViewerImpostorsAndTessellation) {
   }
 }
 
+// fspm view --shadow-cascades N draws N cascades and the whole scene's map once for a still
+// camera; --look-at and --distance move the camera; out-of-range values are refused before any
+// window opens.
+TEST(GraphicsCli, ViewerShadowCascadesAndCameraPlacement) {
+  const auto dir = scratch_dir("view_cascades");
+  const std::string tree = std::string(FSPM_SOURCE_DIR) + "/examples/trees/open_a12.treeb";
+  auto r = run_fspm("view " + tree + " --shadow-cascades 3 --frames 3 --screenshot " +
+                    (dir / "c.png").string() + " --size 160x120 --json");
+  if (r.err.find("without the viewer") != std::string::npos ||
+      r.err.find("without OpenImageIO") != std::string::npos) {
+    GTEST_SKIP() << r.err;
+  }
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["shadow_maps_drawn"], 4);
+  r = run_fspm("view " + tree + " --screenshot " + (dir / "a.png").string() + " --size 160x120");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // Looking at a point 100 m away along +x, 5 m from it: the tree is out of the view.
+  r = run_fspm("view " + tree + " --look-at 100,0,0 --distance 5 --screenshot " +
+               (dir / "b.png").string() + " --size 160x120");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto bytes = [](const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_NE(bytes(dir / "a.png"), bytes(dir / "b.png"));
+  for (const char* args : {"--shadow-cascades 5", "--look-at 1,2", "--distance 0"}) {
+    r = run_fspm("view " + tree + " " + args + " --screenshot " + (dir / "x.png").string());
+    EXPECT_EQ(r.exit_code, 1) << args;
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.png")) << args;
+  }
+}
+
 // fspm view --stages N: N developmental stages (Pirk 5), the last one the given tree itself
 // (Pirk: t = 1 gives back the input), so its triangles are those fspm mesh makes of the file.
 TEST(GraphicsCli, ViewerStepsThroughDevelopmentalStages) {
