@@ -69,6 +69,7 @@ struct MeshCommand {
   std::vector<double> ages;
   double edge_length_m = 0.01;
   int max_sides = 16;
+  int axis_subdivisions = 1;
   std::string junctions = "separate";
   bool reynolds_width = false;
   std::string foliage = "leaves";
@@ -94,6 +95,7 @@ struct RenderCommand {
   std::uint64_t seed = 1;
   bool no_ground = false;
   double edge_length_m = 0.01;
+  int axis_subdivisions = 1;
   double ortho_height_m = 0.0;
   std::string frame;
   std::string obstacles;
@@ -131,6 +133,7 @@ struct ViewCommand {
   bool no_ground = false;
   bool full_detail = false;  // no coarse meshes at any distance
   int max_sides = 16;
+  int axis_subdivisions = 1;
   double tessellate = 0.0;  // Reynolds' tessellation up to this level (0: none)
   double tessellation_distance_m = 0.0;
   bool tessellate_on_cpu = false;
@@ -319,10 +322,12 @@ graphics::InstancedMesh load_instanced(const std::string& path, const std::strin
   return load_part(path, kind, format, -1.0, options, lod);
 }
 
-// --lod: the mesher options of the prebuilt resolutions, finest first: as given, rings four
-// times coarser with at most six sides, sixteen times coarser with three sides.
+// --lod: the mesher options of the prebuilt resolutions, finest first: as given (with its
+// B-spline rings, if any), rings four times coarser with at most six sides, sixteen times
+// coarser with three sides, both with straight internodes.
 std::vector<graphics::MeshOptions> lod_resolutions(const graphics::MeshOptions& finest) {
   graphics::MeshOptions middle = finest, coarse = finest;
+  middle.axis_subdivisions = coarse.axis_subdivisions = 1;
   middle.edge_length_m *= 4.0;
   middle.max_sides = std::min(middle.max_sides, 6);
   middle.min_sides = 3;
@@ -455,12 +460,22 @@ void check_skin_request(const MeshCommand& c, graphics::MeshFormat format, Input
   }
 }
 
+// --axis-subdivisions S of mesh, render and view (MeshOptions::axis_subdivisions).
+void add_axis_subdivisions_option(CLI::App* app, int& subdivisions) {
+  app->add_option("--axis-subdivisions", subdivisions,
+                  "Rings per internode along each axis, on a cubic B-spline through the joints "
+                  "(Pirk eq. 6.7): branches rounded at close range (separate junctions)")
+      ->check(CLI::Range(1, graphics::kMaxAxisSubdivisions))
+      ->capture_default_str();
+}
+
 // The mesh options of the mesh command's flags.
 graphics::MeshOptions mesh_options(const MeshCommand& c) {
   graphics::MeshOptions options;
   set_leaves(options, c.leaves, c.foliage, c.seed);
   options.edge_length_m = c.edge_length_m;
   options.max_sides = c.max_sides;
+  options.axis_subdivisions = c.axis_subdivisions;
   options.junctions = graphics::junction_mode_from_name(c.junctions);
   options.reynolds_width = c.reynolds_width;
   return options;
@@ -720,6 +735,7 @@ void run_render(RenderCommand c) {
   graphics::MeshOptions mesh_options;
   set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
   mesh_options.edge_length_m = c.edge_length_m;
+  mesh_options.axis_subdivisions = c.axis_subdivisions;
   const bool lsystem = input_kind(c.tree) == InputKind::kLsystem;
   check_lsystem_draw_arguments(c.lsystem, {c.tree});
   check_graph_lod(c.graph_lod, {c.tree}, c.lod);
@@ -862,6 +878,7 @@ void run_lod_view(const ViewCommand& c, const graphics::ViewerOptions& options,
   }
   graphics::MeshOptions mesh_options;
   set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
+  mesh_options.axis_subdivisions = c.axis_subdivisions;
   const graphics::LodScene scene =
       load_lod_scene(c.trees[0], c.format, mesh_options, graphics::LodOptions{}, true, "");
   graphics::LodOptions lod = lod_options(scene, c.lod_distance_m);
@@ -977,8 +994,10 @@ double mesh_view_steps(const ViewCommand& c, const std::vector<ViewSource>& sour
   set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
   mesh_options.max_sides = c.max_sides;
   mesh_options.min_sides = std::min(mesh_options.min_sides, c.max_sides);
+  mesh_options.axis_subdivisions = c.axis_subdivisions;
   steps = view_steps(sources, c.format, ages, mesh_options);
   graphics::MeshOptions coarse = mesh_options;
+  coarse.axis_subdivisions = 1;  // far away: straight internodes
   coarse.edge_length_m *= 4.0;
   coarse.max_sides = std::min(6, c.max_sides);
   coarse.min_sides = 3;
@@ -1154,6 +1173,7 @@ void add_mesh_command(CLI::App& app) {
                 "Target ring edge length in m (ring resolution from radius)")
       ->check(positive_number(1e6));
   m->add_option("--max-sides", mesh->max_sides, "Most sides of a ring")->check(CLI::Range(3, 256));
+  add_axis_subdivisions_option(m, mesh->axis_subdivisions);
   m->add_option("--junctions", mesh->junctions,
                 "separate (a closed tube per chain) or continuous (Reynolds: one surface through "
                 "branch points, bone weights per vertex)")
@@ -1198,6 +1218,7 @@ void add_render_command(CLI::App& app) {
   r->add_flag("--leaves", render->leaves, "Show leaves and leaf clusters");
   add_foliage_options(r, render->foliage, render->seed);
   r->add_flag("--no-ground", render->no_ground, "Leave out the ground plane");
+  add_axis_subdivisions_option(r, render->axis_subdivisions);
   r->add_option("--edge-length", render->edge_length_m, "Target ring edge length in m")
       ->check(positive_number(1e6));
   r->add_option("--ortho-height", render->ortho_height_m,
@@ -1296,6 +1317,7 @@ void add_view_command(CLI::App& app) {
               "Never draw the coarse meshes (by default they take over where their ring edges "
               "span two pixels, or from 1.5 times the starting distance)")
       ->excludes(lod);
+  add_axis_subdivisions_option(v, view->axis_subdivisions);
   v->add_option("--max-sides", view->max_sides,
                 "Most sides of a ring (4: Reynolds' coarse branch mesh, for --tessellate)")
       ->check(CLI::Range(3, 256))

@@ -2,7 +2,6 @@
 #include "graphics/bspline_refinement.hpp"
 
 #include <Eigen/Core>
-#include <algorithm>
 
 #include "fspm/error.hpp"
 
@@ -25,8 +24,14 @@ std::vector<Eigen::Vector3d> refine_chain(const std::vector<Eigen::Vector3d>& po
   if (subdivisions < 1) throw ValueError("B-spline refinement needs at least one subdivision");
   const std::size_t n = points.size();
   if (n < 2) return points;
-  auto at = [&](long i) {
-    return points[static_cast<std::size_t>(std::clamp<long>(i, 0, static_cast<long>(n) - 1))];
+  // Phantom points beyond the ends, the end points reflected through their neighbours
+  // (P_{-1} = 2 P_0 - P_1, P_n = 2 P_{n-1} - P_{n-2}): then S_0(0) = P_0 and S_{n-2}(1) = P_{n-1},
+  // so a refined chain still starts and ends where it meets the next ones.
+  const long last_index = static_cast<long>(n) - 1;
+  auto at = [&](long i) -> Eigen::Vector3d {
+    if (i < 0) return 2.0 * points[0] - points[1];
+    if (i > last_index) return 2.0 * points[n - 1] - points[n - 2];
+    return points[static_cast<std::size_t>(i)];
   };
   std::vector<Eigen::Vector3d> out;
   out.reserve((n - 1) * static_cast<std::size_t>(subdivisions) + 1);

@@ -4,8 +4,10 @@
 //   S_i(t) = [t^3 t^2 t 1] 1/6 [[-1 3 -3 1] [3 -6 3 0] [-3 0 3 0] [1 4 1 0]] [P_{i-1} P_i P_{i+1}
 //   P_{i+2}]
 // for t in [0, 1]. Only points of one chain are interpolated (not across the junction of two
-// chains); at the chain's ends the end points are repeated (P_{-1} = P_0, P_{n} = P_{n-1}).
-// The curve approximates rather than interpolates: S_i(0) = (P_{i-1} + 4 P_i + P_{i+1}) / 6.
+// chains: Pirk keeps "the overall structure of the graph"); beyond the chain's ends the end
+// points are reflected through their neighbours (P_{-1} = 2 P_0 - P_1), so the refined chain
+// starts and ends at the chain's own ends. Between them the curve approximates rather than
+// interpolates: S_i(0) = (P_{i-1} + 4 P_i + P_{i+1}) / 6.
 #include <Eigen/Core>
 #include <vector>
 

@@ -9,6 +9,7 @@
 #include "fspm/error.hpp"
 #include "fspm/memory_budget.hpp"
 #include "fspm/tree_traversal.hpp"
+#include "graphics/bspline_refinement.hpp"
 #include "graphics/parallel_transport.hpp"
 
 namespace fspm::graphics {
@@ -38,6 +39,15 @@ void validate(const MeshOptions& o) {
   if (o.leaf_bend_segments < 1) throw ValueError("leaf_bend_segments must be >= 1");
   if (std::isnan(o.max_birth_time)) throw ValueError("max_birth_time must be a number");
   if (o.leaves) validate_foliage(o.foliage);
+  if (o.axis_subdivisions < 1 || o.axis_subdivisions > kMaxAxisSubdivisions) {
+    throw ValueError("axis subdivisions must be 1 to " + std::to_string(kMaxAxisSubdivisions) +
+                     ", got " + std::to_string(o.axis_subdivisions));
+  }
+  if (o.axis_subdivisions > 1 && o.junctions == JunctionMode::kContinuous) {
+    throw ValueError(
+        "B-spline axis refinement needs separate junctions (continuous tubes keep "
+        "their joints for the laterals' holes)");
+  }
 }
 
 struct ChainPlan {
@@ -159,8 +169,9 @@ void plan_tubes(const TreeGraph& tree, const MeshOptions& options,
           options.camera_m ? (tree.start(base) - *options.camera_m).norm() : 0.0;
       cp.sides = sides_for_radius(tree.radius(base), options, distance);
       const auto s = static_cast<std::size_t>(cp.sides);
-      plan.counts.vertices += (cp.count + 1) * (s + 1) + (options.caps ? 2 * (s + 1) : 0);
-      plan.counts.triangles += 2 * cp.count * s + (options.caps ? 2 * s : 0);
+      const std::size_t walls = cp.count * static_cast<std::size_t>(options.axis_subdivisions);
+      plan.counts.vertices += (walls + 1) * (s + 1) + (options.caps ? 2 * (s + 1) : 0);
+      plan.counts.triangles += 2 * walls * s + (options.caps ? 2 * s : 0);
       ++plan.counts.tubes;
     }
     plan.chains.push_back(cp);
@@ -325,11 +336,11 @@ class BranchMeshWriter {
   }
 
  private:
-  void chain_frames(const NodeId* seg, std::size_t m, const ChainPlan& cp);
-  void write_rings(const NodeId* seg, std::size_t m, int s, const RingTable& table);
-  void write_walls(std::uint32_t first_ring, std::size_t m, int s);
-  void write_cap(const NodeId* seg, std::size_t m, int s, const RingTable& table,
-                 std::uint32_t first_ring, int end);
+  void ring_path(const NodeId* seg, std::size_t m);
+  void chain_frames(const ChainPlan& cp);
+  void write_rings(int s, const RingTable& table);
+  void write_walls(std::uint32_t first_ring, std::size_t walls, int s);
+  void write_cap(int s, const RingTable& table, std::uint32_t first_ring, int end);
 
   const TreeGraph& tree_;
   const MeshOptions& options_;
@@ -342,33 +353,69 @@ class BranchMeshWriter {
   std::vector<Eigen::Vector3d> tip_v_, tip_t_;
   std::vector<char> has_tip_;
   std::vector<RingTable> tables_;
+  // The chain being written: its joints, then its rings' centres, radii and nodes, tangents and
+  // transported normals.
+  std::vector<Eigen::Vector3d> joints_, centres_;
+  std::vector<double> radii_;
+  std::vector<NodeId> ring_nodes_;
   std::vector<Eigen::Vector3d> tangents_, normals_v_;
 };
 
 void BranchMeshWriter::write_chain(const NodeId* seg, const ChainPlan& cp) {
-  const std::size_t m = cp.count;
   const int s = cp.sides;
   const RingTable& table = ring_table(tables_, s);
-  chain_frames(seg, m, cp);
+  ring_path(seg, cp.count);
+  chain_frames(cp);
   const std::uint32_t first_ring = v_;
-  write_rings(seg, m, s, table);
-  write_walls(first_ring, m, s);
+  write_rings(s, table);
+  write_walls(first_ring, centres_.size() - 1, s);
   if (options_.caps) {
-    for (int end = 0; end < 2; ++end) write_cap(seg, m, s, table, first_ring, end);
+    for (int end = 0; end < 2; ++end) write_cap(s, table, first_ring, end);
   }
 }
 
-void BranchMeshWriter::chain_frames(const NodeId* seg, std::size_t m, const ChainPlan& cp) {
-  // Ring tangents: segment directions at the ends, bisectors at the joints.
+// One ring at every joint of the chain's m segments with the radius of the node that starts
+// there (the last node's at the tip); with axis_subdivisions s > 1, the joints refined by uniform
+// cubic B-splines into s rings per segment (Pirk eq. 6.7, bspline_refinement.hpp), the radii
+// interpolated linearly between the joints'.
+void BranchMeshWriter::ring_path(const NodeId* seg, std::size_t m) {
+  joints_.resize(m + 1);
+  std::vector<double>& joint_radii = radii_;
+  joint_radii.resize(m + 1);
+  for (std::size_t j = 0; j <= m; ++j) {
+    const NodeId node = seg[std::min(j, m - 1)];
+    joints_[j] = j < m ? tree_.start(node) : tree_.end(node);
+    joint_radii[j] = std::max(tree_.radius(node), options_.min_radius_m);
+  }
+  const auto s = static_cast<std::size_t>(options_.axis_subdivisions);
+  ring_nodes_.resize(m * s + 1);
+  for (std::size_t i = 0; i <= m * s; ++i) ring_nodes_[i] = seg[std::min(i / s, m - 1)];
+  if (s == 1) {
+    centres_ = joints_;
+    return;
+  }
+  centres_ = refine_chain(joints_, static_cast<int>(s));
+  std::vector<double> refined(m * s + 1);
+  for (std::size_t i = 0; i <= m * s; ++i) {
+    const std::size_t j = std::min(i / s, m - 1);
+    const double t = static_cast<double>(i - j * s) / static_cast<double>(s);
+    refined[i] = (1.0 - t) * joint_radii[j] + t * joint_radii[j + 1];
+  }
+  radii_ = std::move(refined);
+}
+
+void BranchMeshWriter::chain_frames(const ChainPlan& cp) {
+  // Ring tangents: the directions of the first and last pieces at the ends, bisectors between.
+  const std::size_t m = centres_.size() - 1;
   tangents_.resize(m + 1);
-  tangents_[0] = segment_vector(tree_, seg[0]).normalized();
+  tangents_[0] = (centres_[1] - centres_[0]).normalized();
   for (std::size_t j = 1; j < m; ++j) {
-    const Eigen::Vector3d a = segment_vector(tree_, seg[j - 1]).normalized();
-    const Eigen::Vector3d b = segment_vector(tree_, seg[j]).normalized();
+    const Eigen::Vector3d a = (centres_[j] - centres_[j - 1]).normalized();
+    const Eigen::Vector3d b = (centres_[j + 1] - centres_[j]).normalized();
     const Eigen::Vector3d bis = a + b;
     tangents_[j] = bis.norm() > 1e-9 ? bis.normalized() : b;
   }
-  tangents_[m] = segment_vector(tree_, seg[m - 1]).normalized();
+  tangents_[m] = (centres_[m] - centres_[m - 1]).normalized();
   Eigen::Vector3d v0;
   if (cp.attach != kNoNode && has_tip_[cp.attach]) {
     v0 = transport(tip_v_[cp.attach], tip_t_[cp.attach], tangents_[0]);
@@ -381,20 +428,15 @@ void BranchMeshWriter::chain_frames(const NodeId* seg, std::size_t m, const Chai
   has_tip_[cp.last] = 1;
 }
 
-void BranchMeshWriter::write_rings(const NodeId* seg, std::size_t m, int s,
-                                   const RingTable& table) {
-  const double base_radius = std::max(tree_.radius(seg[0]), options_.min_radius_m);
-  const double v_scale = 1.0 / (kTwoPi * base_radius);  // square texels on the bark
+void BranchMeshWriter::write_rings(int s, const RingTable& table) {
+  const double v_scale = 1.0 / (kTwoPi * radii_[0]);  // square texels on the bark
   double along = 0.0;
-  for (std::size_t j = 0; j <= m; ++j) {
-    const NodeId node = seg[std::min(j, m - 1)];
-    const Eigen::Vector3d center = j < m ? tree_.start(node) : tree_.end(node);
-    if (j > 0) along += segment_vector(tree_, seg[j - 1]).norm();
-    const double r = std::max(tree_.radius(node), options_.min_radius_m);
-    const Eigen::Vector3f c = center.cast<float>();
+  for (std::size_t j = 0; j < centres_.size(); ++j) {
+    if (j > 0) along += (centres_[j] - centres_[j - 1]).norm();
+    const Eigen::Vector3f c = centres_[j].cast<float>();
     const Eigen::Vector3f vv = normals_v_[j].cast<float>();
     const Eigen::Vector3f ww = tangents_[j].cross(normals_v_[j]).cast<float>();
-    const auto rf = static_cast<float>(r);
+    const auto rf = static_cast<float>(radii_[j]);
     const auto vcoord = static_cast<float>(along * v_scale);
     for (int k = 0; k <= s; ++k) {
       const Eigen::Vector3f dir = table.cos[k] * vv + table.sin[k] * ww;
@@ -402,14 +444,14 @@ void BranchMeshWriter::write_rings(const NodeId* seg, std::size_t m, int s,
       mesh_.normals[v_ + k] = dir;
       mesh_.uvs[v_ + k] = {static_cast<float>(k) / static_cast<float>(s), vcoord};
     }
-    attributes_.fill(node, v_, s + 1);
+    attributes_.fill(ring_nodes_[j], v_, s + 1);
     v_ += s + 1;
   }
 }
 
-void BranchMeshWriter::write_walls(std::uint32_t first_ring, std::size_t m, int s) {
+void BranchMeshWriter::write_walls(std::uint32_t first_ring, std::size_t walls, int s) {
   // Side walls: (a, b, d) and (a, d, c) face outwards for W = T x V.
-  for (std::size_t j = 0; j < m; ++j) {
+  for (std::size_t j = 0; j < walls; ++j) {
     const std::uint32_t r0 = first_ring + static_cast<std::uint32_t>(j * (s + 1));
     const std::uint32_t r1 = r0 + s + 1;
     for (int k = 0; k < s; ++k) {
@@ -420,13 +462,13 @@ void BranchMeshWriter::write_walls(std::uint32_t first_ring, std::size_t m, int 
   }
 }
 
-void BranchMeshWriter::write_cap(const NodeId* seg, std::size_t m, int s, const RingTable& table,
-                                 std::uint32_t first_ring, int end) {
+void BranchMeshWriter::write_cap(int s, const RingTable& table, std::uint32_t first_ring, int end) {
+  const std::size_t last = centres_.size() - 1;
   const std::uint32_t ring =
-      end == 0 ? first_ring : first_ring + static_cast<std::uint32_t>(m * (s + 1));
-  const NodeId node = end == 0 ? seg[0] : seg[m - 1];
-  const Eigen::Vector3d center = end == 0 ? tree_.start(node) : tree_.end(node);
-  const Eigen::Vector3f n = (end == 0 ? -tangents_[0] : tangents_[m]).cast<float>().normalized();
+      end == 0 ? first_ring : first_ring + static_cast<std::uint32_t>(last * (s + 1));
+  const NodeId node = end == 0 ? ring_nodes_.front() : ring_nodes_.back();
+  const Eigen::Vector3d center = end == 0 ? centres_.front() : centres_.back();
+  const Eigen::Vector3f n = (end == 0 ? -tangents_[0] : tangents_[last]).cast<float>().normalized();
   const std::uint32_t hub = v_;
   mesh_.positions[hub] = center.cast<float>();
   mesh_.normals[hub] = n;
@@ -488,6 +530,7 @@ void BranchMeshWriter::write_leaf(NodeId id) {
 }  // namespace
 
 MeshCounts count_mesh(const TreeGraph& tree, const MeshOptions& options) {
+  validate(options);
   if (options.junctions == JunctionMode::kContinuous) {
     const TriangleMesh mesh = mesh_tree_continuous(tree, options);
     const MeshCounts organs = make_plan(tree, options).counts;
@@ -497,6 +540,7 @@ MeshCounts count_mesh(const TreeGraph& tree, const MeshOptions& options) {
 }
 
 TriangleMesh mesh_tree(const TreeGraph& tree, const MeshOptions& options) {
+  validate(options);
   if (options.junctions == JunctionMode::kContinuous) return mesh_tree_continuous(tree, options);
   const Plan plan = make_plan(tree, options);
   check_memory(mesh_bytes(plan.counts, tree.attribute_names().size()),

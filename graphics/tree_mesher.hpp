@@ -34,6 +34,9 @@ std::string_view junction_mode_name(JunctionMode mode);
 // Inverse of junction_mode_name; throws ValueError naming both.
 JunctionMode junction_mode_from_name(std::string_view name);
 
+// The most rings per internode MeshOptions::axis_subdivisions may ask for.
+inline constexpr int kMaxAxisSubdivisions = 16;
+
 struct MeshOptions {
   JunctionMode junctions = JunctionMode::kSeparate;
   // Radius along each axis from Reynolds' expression 1, (1 / (3 t + 1) - 0.25) / 0.75 times the
@@ -53,6 +56,11 @@ struct MeshOptions {
   double lod_distance_m = 5.0;
   // Close every tube with a cap at its base and its tip.
   bool caps = true;
+  // Rings per internode along each chain's axis, refined by uniform cubic B-splines (Pirk
+  // 6.1.4, eq. 6.6-6.7; bspline_refinement.hpp): 1 keeps one ring at every joint (straight
+  // internodes); s > 1 rounds the axis through s rings per internode, the chain's ends kept in
+  // place. Separate junctions only.
+  int axis_subdivisions = 1;
 
   bool bark = true;  // internode tubes (false: leaves only)
   bool leaves = false;

@@ -204,6 +204,29 @@ TEST(GraphicsCli, ViewerImpostorsAndTessellation) {
   }
 }
 
+// fspm mesh --axis-subdivisions S: every internode's wall is cut into S pieces along a B-spline
+// (Pirk eq. 6.7), caps and leaves unchanged, so the triangles grow linearly in S:
+// T(3) - T(1) = 2 (T(2) - T(1)). Continuous junctions refuse it.
+TEST(GraphicsCli, MeshAxisSubdivisionsMultiplyTheWalls) {
+  const auto dir = scratch_dir("mesh_axis");
+  const std::string tree = std::string(FSPM_SOURCE_DIR) + "/examples/trees/open_a12.treeb";
+  std::vector<long> triangles;
+  for (int s = 1; s <= 3; ++s) {
+    const auto r = run_fspm("mesh " + tree + " --leaves --axis-subdivisions " + std::to_string(s) +
+                            " -o " + (dir / "t.ply").string() + " --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    triangles.push_back(nlohmann::json::parse(r.out)["triangles"].get<long>());
+  }
+  EXPECT_GT(triangles[1], triangles[0]);
+  EXPECT_EQ(triangles[2] - triangles[0], 2 * (triangles[1] - triangles[0]));
+  for (const char* args : {"--axis-subdivisions 2 --junctions continuous", "--axis-subdivisions 0",
+                           "--axis-subdivisions 17"}) {
+    const auto r = run_fspm("mesh " + tree + " " + args + " -o " + (dir / "x.ply").string());
+    EXPECT_EQ(r.exit_code, 1) << args;
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.ply")) << args;
+  }
+}
+
 // fspm view --shadow-cascades N draws N cascades and the whole scene's map once for a still
 // camera; --look-at and --distance move the camera; out-of-range values are refused before any
 // window opens.

@@ -66,9 +66,10 @@ TEST(BsplineRefinement, ChainIsContinuousAndKeepsLines) {
       {0, 0, 0}, {0, 0, 1}, {0.3, 0, 2}, {0.8, 0.2, 2.6}, {1.5, 0.2, 3.0}};
   const auto fine = refine_chain(chain, 4);
   ASSERT_EQ(fine.size(), 4u * 4u + 1u);
-  // Ends: the end point repeated, S_0(0) = (P0 + 4 P0 + P1) / 6, S_3(1) = (P3 + 4 P4 + P4) / 6.
-  EXPECT_TRUE(fine.front().isApprox((5 * chain[0] + chain[1]) / 6.0));
-  EXPECT_TRUE(fine.back().isApprox((chain[3] + 5 * chain[4]) / 6.0));
+  // Ends: with the reflected phantom points, S_0(0) = (2 P0 - P1 + 4 P0 + P1) / 6 = P0, and
+  // S_3(1) = P4: the chain still starts and ends where it did.
+  EXPECT_TRUE(fine.front().isApprox(chain[0]));
+  EXPECT_TRUE(fine.back().isApprox(chain[4]));
   // Joints: S_i(0) = (P_{i-1} + 4 P_i + P_{i+1}) / 6, where consecutive segments meet.
   for (int i = 1; i < 4; ++i) {
     EXPECT_TRUE(fine[4 * i].isApprox((chain[i - 1] + 4 * chain[i] + chain[i + 1]) / 6.0)) << i;

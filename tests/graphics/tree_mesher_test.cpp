@@ -165,6 +165,48 @@ TEST(TreeMesher, BarkTubesAreClosedAndWoundOutwards) {
   EXPECT_LT(volume, 1.0 * (trunk + branches));
 }
 
+// B-spline refinement of the axis (Pirk eq. 6.7): a chain of three internodes bent by 45 and 90
+// degrees, meshed with 4 rings per internode. Ring centres (the mean of a ring's distinct
+// vertices) against the closed forms of eq. 6.7: at the chain's ends the end points themselves
+// (reflected phantom points), at the inner joints (P_{i-1} + 4 P_i + P_{i+1}) / 6; the counts
+// follow; the turn between consecutive rings is spread over the rings, far below the joints'.
+TEST(TreeMesher, AxisSubdivisionsRoundTheChainThroughBSplineRings) {
+  TreeGraph t;
+  const std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {0, 0, 1}, {0.5, 0, 1.5}, {1.0, 0, 1.5}};
+  NodeId parent = kNoNode;
+  for (int i = 0; i < 3; ++i) parent = testing::add(t, parent, p[i], p[i + 1], 0.05, i, 0);
+  MeshOptions o;
+  o.min_sides = o.max_sides = 8;
+  o.axis_subdivisions = 4;
+  const TriangleMesh m = mesh_tree(t, o);
+  constexpr int kSides = 8, kRings = 3 * 4 + 1;
+  ASSERT_EQ(m.vertex_count(), static_cast<std::size_t>((kRings + 2) * (kSides + 1)));
+  ASSERT_EQ(m.triangle_count(), static_cast<std::size_t>(2 * 3 * 4 * kSides + 2 * kSides));
+  std::vector<Eigen::Vector3d> centres(kRings, Eigen::Vector3d::Zero());
+  for (int r = 0; r < kRings; ++r) {
+    for (int k = 0; k < kSides; ++k) centres[r] += m.positions[r * (kSides + 1) + k].cast<double>();
+    centres[r] /= kSides;
+  }
+  EXPECT_LT((centres.front() - p[0]).norm(), 1e-5);
+  EXPECT_LT((centres.back() - p[3]).norm(), 1e-5);
+  for (int i = 1; i <= 2; ++i) {
+    const Eigen::Vector3d joint = (p[i - 1] + 4.0 * p[i] + p[i + 1]) / 6.0;
+    EXPECT_LT((centres[4 * i] - joint).norm(), 1e-5) << i;
+  }
+  double largest_turn = 0.0;
+  for (int r = 1; r + 1 < kRings; ++r) {
+    const Eigen::Vector3d a = (centres[r] - centres[r - 1]).normalized();
+    const Eigen::Vector3d b = (centres[r + 1] - centres[r]).normalized();
+    largest_turn = std::max(largest_turn, std::acos(std::clamp(a.dot(b), -1.0, 1.0)));
+  }
+  EXPECT_LT(largest_turn, 0.5 * 0.7853981633974483);  // half the smaller joint's 45 degrees
+  o.axis_subdivisions = 0;
+  EXPECT_THROW(mesh_tree(t, o), ValueError);
+  o.axis_subdivisions = 2;
+  o.junctions = JunctionMode::kContinuous;
+  EXPECT_THROW(mesh_tree(t, o), ValueError);
+}
+
 TEST(TreeMesher, BirthTimeFilterKeepsOlderNodes) {
   const TreeGraph tree = small_tree();
   MeshOptions o;
