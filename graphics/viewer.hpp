@@ -7,12 +7,13 @@
 // (Dear ImGui, when fspm was built with it) shows and changes the growth step, shadows, the
 // level-of-detail distance, the wind's strength (for a tree in the wind, viewer_wind.hpp) and
 // the colour attribute, with the frame time and the triangles drawn. The ground is the plane
-// under the scene drawn to the horizon, hazing towards the sky's colour with distance (aerial perspective). Crown volumes (at
-// kCrownOpacity, as in renders) and translucent obstacles (at the opacity of their translucency)
-// are blended after the opaque geometry without writing depth, their triangles placed in the world
-// and sorted back to front from the eye whenever the camera moves (translucent_sort.hpp). With a
-// screenshot path it renders `frames` frames into an offscreen framebuffer, writes the image and
-// returns (tests run it under Xvfb with Mesa's software OpenGL).
+// under the scene drawn to the horizon, hazing towards the sky's colour with distance (aerial
+// perspective). Crown volumes (at kCrownOpacity, as in renders) and translucent obstacles (at
+// the opacity of their translucency) are blended after the opaque geometry without writing
+// depth, their triangles placed in the world and sorted back to front from the eye whenever the
+// camera moves (translucent_sort.hpp). With a screenshot path it renders `frames` frames into an
+// offscreen framebuffer, writes the image and returns (tests run it under Xvfb with Mesa's
+// software OpenGL).
 #include <array>
 #include <functional>
 #include <memory>
