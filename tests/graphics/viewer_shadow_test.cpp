@@ -28,15 +28,11 @@ TreeGraph t_tree() {
   return t;
 }
 
-// The pixel (column, row from the top) of world point `p` in the viewer's first frame: the camera
-// looks at the centre of the bounds from yaw -0.9 rad and `pitch_deg`, 2.6 bounding radii away,
-// with a vertical field of view of 40 degrees (viewer.hpp).
-Eigen::Vector2d pixel_of(const Eigen::Vector3d& p, const Eigen::Vector3d& lo,
-                         const Eigen::Vector3d& hi, double pitch_deg, int width, int height) {
+// The pixel of world point `p` for a camera looking at `target` from `distance` m at `yaw` and
+// `pitch` (radians), as the viewer places it (viewer.hpp: vertical field of view 40 degrees).
+Eigen::Vector2d pixel_from(const Eigen::Vector3d& p, const Eigen::Vector3d& target, double distance,
+                           double yaw, double pitch, int width, int height) {
   const double pi = 3.141592653589793;
-  const Eigen::Vector3d target = 0.5 * (lo + hi);
-  const double distance = 2.6 * std::max(0.5 * (hi - lo).norm(), 0.1);
-  const double yaw = -0.9, pitch = pitch_deg * pi / 180.0;
   const Eigen::Vector3d eye =
       target + distance * Eigen::Vector3d(std::cos(pitch) * std::cos(yaw),
                                           std::cos(pitch) * std::sin(yaw), std::sin(pitch));
@@ -48,6 +44,15 @@ Eigen::Vector2d pixel_of(const Eigen::Vector3d& p, const Eigen::Vector3d& lo,
   const double x_ndc = right.dot(v) / (forward.dot(v) * t * width / height);
   const double y_ndc = up.dot(v) / (forward.dot(v) * t);
   return {(x_ndc + 1.0) * 0.5 * width, (1.0 - y_ndc) * 0.5 * height};
+}
+
+// The pixel of world point `p` in the viewer's first frame: the camera looks at the centre of
+// the bounds from yaw -0.9 rad and `pitch_deg`, 2.6 bounding radii away.
+Eigen::Vector2d pixel_of(const Eigen::Vector3d& p, const Eigen::Vector3d& lo,
+                         const Eigen::Vector3d& hi, double pitch_deg, int width, int height) {
+  const double distance = 2.6 * std::max(0.5 * (hi - lo).norm(), 0.1);
+  return pixel_from(p, 0.5 * (lo + hi), distance, -0.9, pitch_deg * 3.141592653589793 / 180.0,
+                    width, height);
 }
 
 TEST(ViewerShadow, GroundUnderTheTreeIsDarkerWithShadows) {
@@ -114,24 +119,6 @@ TEST(ViewerShadow, GroundUnderTheTreeIsDarkerWithShadows) {
     for (int k = 0; k < 3; ++k) EXPECT_EQ(on.pixel(x, r)[k], off.pixel(x, r)[k]) << x << "," << r;
   }
   fs::remove_all(dir);
-}
-
-// The pixel of world point `p` for a camera looking at `target` from `distance` m at `yaw` and
-// `pitch` (radians), as the viewer places it (viewer.hpp: vertical field of view 40 degrees).
-Eigen::Vector2d pixel_from(const Eigen::Vector3d& p, const Eigen::Vector3d& target, double distance,
-                           double yaw, double pitch, int width, int height) {
-  const double pi = 3.141592653589793;
-  const Eigen::Vector3d eye =
-      target + distance * Eigen::Vector3d(std::cos(pitch) * std::cos(yaw),
-                                          std::cos(pitch) * std::sin(yaw), std::sin(pitch));
-  const Eigen::Vector3d forward = (target - eye).normalized();
-  const Eigen::Vector3d right = forward.cross(Eigen::Vector3d::UnitZ()).normalized();
-  const Eigen::Vector3d up = right.cross(forward);
-  const Eigen::Vector3d v = p - eye;
-  const double t = std::tan(20.0 * pi / 180.0);
-  const double x_ndc = right.dot(v) / (forward.dot(v) * t * width / height);
-  const double y_ndc = up.dot(v) / (forward.dot(v) * t);
-  return {(x_ndc + 1.0) * 0.5 * width, (1.0 - y_ndc) * 0.5 * height};
 }
 
 // The T tree in a scene 800 m wide (unused vertices at +-400 m): the one map of the whole scene
