@@ -48,6 +48,7 @@
 #include "graphics/mesh_writers.hpp"
 #include "graphics/render.hpp"
 #include "graphics/scene_file.hpp"
+#include "graphics/tessellation_level.hpp"
 #include "graphics/tree_mesher.hpp"
 #include "graphics/viewer.hpp"
 #include "graphics/viewer_wind.hpp"
@@ -366,6 +367,9 @@ graphics::LodScene load_lod_scene(const std::string& path, const std::string& fo
       resolutions.push_back(
           load_part(source.path, input_kind(source.path), f, source.age, o).flatten());
     }
+    // Reynolds 3.3: at the coarse switch, the key distance here, the highest level of branches
+    // is removed (the leaves stay).
+    resolutions.back() = graphics::without_highest_bark_orders(resolutions.back(), 1);
     finest.push_back(graphics::InstancedMesh::single(resolutions.front()));
     scene.plants.push_back(graphics::make_lod_plant(resolutions, lod, options.foliage_seed));
   }

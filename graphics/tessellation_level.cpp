@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "fspm/error.hpp"
 
@@ -48,6 +49,30 @@ std::vector<double> face_tessellation_levels(const TriangleMesh& mesh,
     levels[t] = tessellation_level((centroid - viewer_m).norm(), areas[t], limits);
   }
   return levels;
+}
+
+TriangleMesh without_highest_bark_orders(const TriangleMesh& mesh, int dropped) {
+  if (dropped < 0) throw ValueError("the branch orders to drop must be >= 0");
+  if (dropped == 0 || !mesh.has_attribute("order")) return mesh;
+  const std::span<const float> order = mesh.attribute("order");
+  const auto face_order = [&](std::size_t t) {
+    const auto& tri = mesh.triangles[t];
+    return std::max({order[tri[0]], order[tri[1]], order[tri[2]]});
+  };
+  float highest = 0.0f;
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    if (mesh.materials[t] == Material::kBark) highest = std::max(highest, face_order(t));
+  }
+  const float kept = std::max(0.0f, highest - static_cast<float>(dropped));
+  TriangleMesh out = mesh;
+  out.triangles.clear();
+  out.materials.clear();
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    if (mesh.materials[t] == Material::kBark && face_order(t) > kept) continue;
+    out.triangles.push_back(mesh.triangles[t]);
+    out.materials.push_back(mesh.materials[t]);
+  }
+  return out;
 }
 
 }  // namespace fspm::graphics

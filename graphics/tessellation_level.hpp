@@ -33,4 +33,12 @@ std::vector<double> face_tessellation_levels(const TriangleMesh& mesh,
                                              const Eigen::Vector3f& viewer_m,
                                              TessellationLimits limits);
 
+// Reynolds' face culling by branch level (3.3): "at key distances the highest visible level of
+// branches will be completely removed", the leaves hiding the change. `mesh` without the bark
+// triangles of its `dropped` highest branching orders (the vertex attribute "order" of the
+// mesher, absolute in flattened compressed plants); the trunk (order 0), the leaves and every
+// other material are kept, the vertices left as they are. A mesh without the attribute comes
+// back unchanged. Throws ValueError for dropped < 0.
+TriangleMesh without_highest_bark_orders(const TriangleMesh& mesh, int dropped);
+
 }  // namespace fspm::graphics

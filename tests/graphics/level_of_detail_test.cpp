@@ -12,6 +12,8 @@
 #include "graphics/frustum_culling.hpp"
 #include "graphics/stochastic_pruning.hpp"
 #include "graphics/tessellation_level.hpp"
+#include "graphics/tree_mesher.hpp"
+#include "tests/graphics/test_trees.hpp"
 
 namespace fspm::graphics {
 namespace {
@@ -59,6 +61,24 @@ TEST(BsplineRefinement, MatrixFormEqualsTheBasis) {
     const Eigen::Vector3d expected = b[0] * p[0] + b[1] * p[1] + b[2] * p[2] + b[3] * p[3];
     EXPECT_TRUE(cubic_bspline(p[0], p[1], p[2], p[3], t).isApprox(expected, 1e-12)) << t;
   }
+}
+
+// Reynolds 3.3: the highest branch level's bark left out, the leaves kept. small_tree has a trunk
+// of order 0 (three internodes, one tube) and two branches of order 1: without them the bark is
+// the trunk's tube alone, 2 * 3 * 8 walls and 2 * 8 cap triangles; the trunk is never dropped.
+TEST(BranchLevelCulling, HighestBarkOrdersGoTheTrunkAndLeavesStay) {
+  MeshOptions o;
+  o.min_sides = o.max_sides = 8;
+  o.leaves = true;
+  const TriangleMesh mesh = mesh_tree(testing::small_tree(), o);
+  const TriangleMesh one = without_highest_bark_orders(mesh, 1);
+  EXPECT_EQ(one.triangle_count(Material::kBark), 2u * 3u * 8u + 2u * 8u);
+  EXPECT_GT(mesh.triangle_count(Material::kBark), one.triangle_count(Material::kBark));
+  EXPECT_EQ(one.triangle_count(Material::kLeaf), mesh.triangle_count(Material::kLeaf));
+  EXPECT_GT(one.triangle_count(Material::kLeaf), 0u);
+  EXPECT_EQ(without_highest_bark_orders(mesh, 5).triangle_count(), one.triangle_count());
+  EXPECT_EQ(without_highest_bark_orders(mesh, 0).triangles, mesh.triangles);
+  EXPECT_THROW(without_highest_bark_orders(mesh, -1), ValueError);
 }
 
 TEST(BsplineRefinement, ChainIsContinuousAndKeepsLines) {
