@@ -85,8 +85,8 @@ BENCHMARK(BM_LandscapeViewerLodVsFull)
 void BM_LandscapeShadowCascades(benchmark::State& state) {
   const std::string close_up = kLandscape + " --lod --distance 60 --pitch-deg 25";
   for (auto _ : state) {
-    const Frames one = view_frames(close_up, 6);
-    const Frames cascaded = view_frames(close_up + " --shadow-cascades 3", 6);
+    const Frames one = view_frames(close_up, 11);
+    const Frames cascaded = view_frames(close_up + " --shadow-cascades 3", 11);
     if (one.steady_ms <= 0.0 || cascaded.steady_ms <= 0.0) {
       state.SkipWithError("fspm view failed (no OpenGL 3.3 under Xvfb?)");
       return;
