@@ -16,9 +16,9 @@ namespace fspm::graphics {
 bool tessellation_shaders_available();
 
 // The program: the viewer's vertex inputs (position 0, normal 1, colour 2, model matrix 3-6),
-// `fragment_source` (without a #version line; it reads v_normal, v_color, v_world, v_light) for
-// the fragments. Uniforms: mvp, light_mvp, eye, max_distance, max_level, pixels_per_radian (the
-// viewport's height over 2 tan(fov / 2)) and the fragment shader's. Throws IoError when it does not
+// `fragment_source` (without a #version line; it reads v_normal, v_color, v_world) for the
+// fragments. Uniforms: mvp, eye, max_distance, max_level, pixels_per_radian (the viewport's
+// height over 2 tan(fov / 2)) and the fragment shader's. Throws IoError when it does not
 // compile.
 unsigned tessellation_program(const std::string& fragment_source);
 
