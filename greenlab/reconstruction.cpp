@@ -1,5 +1,8 @@
 #include "greenlab/reconstruction.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -913,6 +916,13 @@ struct LineItem {
 };
 constexpr std::uint32_t kNoWalk = 0xFFFFFFFFu;
 
+// A prototype placed by the queue's item `item`, its records to be copied to [base, base + n).
+struct PlacedCopy {
+  std::uint32_t prototype;
+  NodeId base;
+  std::uint32_t item;
+};
+
 }  // namespace
 
 LineTree reconstruct_lines(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
@@ -997,6 +1007,9 @@ void reconstruct_lines_into(const CompressedTreeGraph& graph, const Reconstructi
   // growth animation frames then neither allocate nor fault it in again.
   thread_local std::vector<LineItem> queue;
   queue.clear();
+  // The prototypes placed, copied once the walk is done (below).
+  thread_local std::vector<PlacedCopy> copies;
+  copies.clear();
   std::vector<Frame> walk_frames{builder.root_frame()};
   queue.push_back(
       {graph.root(), kNoNode, 0, 0, Eigen::Matrix3f::Identity(), Eigen::Vector3f::Zero()});
@@ -1056,28 +1069,11 @@ void reconstruct_lines_into(const CompressedTreeGraph& graph, const Reconstructi
     }
     const LinePrototypes::Prototype& p = protos.prototypes[pi];
     add_stats(st, p.stats);
-    const std::uint32_t n = p.count;
-    const std::uint32_t first = p.first;
-    make_room(n);
+    make_room(p.count);
+    copies.push_back({pi, base, static_cast<std::uint32_t>(head)});
+    cursor += p.count;
     const Eigen::Matrix3f& rot = item.rotation;
     const Eigen::Vector3f& shift = item.translation;
-    // One pass per record: prototypes are short (about ten records), so separate copies per
-    // column would spend more on starting loops than on copying.
-    for (std::uint32_t k = 0; k < n; ++k) {
-      const std::uint32_t from = first + k;
-      const NodeId i = base + k;
-      parent[i] = k == 0 ? item.parent : base + protos.parent[from];
-      start[i] = rot * protos.start[from] + shift;
-      direction[i] = rot * protos.direction[from];
-      length[i] = protos.length[from];
-      radius[i] = protos.radius[from];
-      birth[i] = protos.birth[from];
-      age[i] = protos.age[from];
-      kind[i] = protos.kind[from];
-      order[i] = static_cast<std::uint16_t>(protos.order[from] + item.order);
-    }
-    if (dead) std::copy_n(protos.dead.data() + first, n, dead + base);
-    cursor += n;
     const auto child_order = static_cast<std::uint16_t>(item.order + 1);
     for (std::uint32_t c = 0; c < p.child_count; ++c) {
       const LinePrototypes::Child& child = protos.children[p.child_first + c];
@@ -1085,6 +1081,39 @@ void reconstruct_lines_into(const CompressedTreeGraph& graph, const Reconstructi
                        rot * child.rotation, rot * child.translation + shift});
     }
   }
+  // Every placed prototype's records into their own range [base, base + count): the ranges do
+  // not overlap, so they are written in parallel, the same records on any number of threads.
+  // (The thread_local lists are named through references: a worker naming them would see its
+  // own.)
+  columns();
+  const std::vector<LineItem>& items = queue;
+  const std::vector<PlacedCopy>& placed = copies;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, placed.size(), 1024),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t c = range.begin(); c != range.end(); ++c) {
+                        const PlacedCopy& copy = placed[c];
+                        const LineItem& item = items[copy.item];
+                        const LinePrototypes::Prototype& p = protos.prototypes[copy.prototype];
+                        // One pass per record: prototypes are short (about ten records), so
+                        // separate copies per column would spend more on starting loops than on
+                        // copying.
+                        for (std::uint32_t k = 0; k < p.count; ++k) {
+                          const std::uint32_t from = p.first + k;
+                          const NodeId i = copy.base + k;
+                          parent[i] = k == 0 ? item.parent : copy.base + protos.parent[from];
+                          start[i] = item.rotation * protos.start[from] + item.translation;
+                          direction[i] = item.rotation * protos.direction[from];
+                          length[i] = protos.length[from];
+                          radius[i] = protos.radius[from];
+                          birth[i] = protos.birth[from];
+                          age[i] = protos.age[from];
+                          kind[i] = protos.kind[from];
+                          order[i] = static_cast<std::uint16_t>(protos.order[from] + item.order);
+                        }
+                        if (dead)
+                          std::copy_n(protos.dead.data() + p.first, p.count, dead + copy.base);
+                      }
+                    });
   lines.resize_for_overwrite(cursor);
   if (stats) *stats = st;
 }
