@@ -35,6 +35,7 @@ struct ViewerWind;  // graphics/viewer_wind.hpp
 struct ViewerControls {
   int step = 0;  // the growth step shown, 0 .. steps - 1
   bool shadows = true;
+  int shadow_cascades = 0;  // ViewerOptions::shadow_cascades, 0 to 4
   // Coarse meshes (or, per plant, the coarsest resolution) from this camera distance on.
   double lod_distance_m = 0.0;
   std::string color_by;        // empty = bark and leaf colours

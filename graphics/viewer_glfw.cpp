@@ -688,6 +688,7 @@ GLFWwindow* open_window(const ViewerOptions& o, const Scene& scene, int steps, S
   state.steps = steps;
   state.controls.step = state.steps - 1;
   state.controls.shadows = o.shadows;
+  state.controls.shadow_cascades = o.shadow_cascades;
   state.controls.color_by = o.color_by;
   state.controls.lod_distance_m = o.lod_distance_factor * state.home.distance;
   if (o.coarse_edge_m > 0.0) {
@@ -1158,7 +1159,12 @@ const GpuStep& draw_controlled_frame(GLFWwindow* window, State& state, GpuScene&
   GpuStep& g = x.info.far ? gpu.coarse[c.step] : gpu.steps[c.step];
   int fw = o.width, fh = o.height;
   if (o.screenshot.empty()) glfwGetFramebufferSize(window, &fw, &fh);
-  const FrameMatrices f = frame_matrices(state, x.scene, fw, fh, o.shadow_cascades);
+  c.shadow_cascades = std::clamp(c.shadow_cascades, 0, kMaxShadowLayers - 1);
+  if (c.shadow_cascades + 1 != t.shadow_maps->layers()) {
+    t.shadow_maps = std::make_unique<ShadowMaps>(kShadowSize, c.shadow_cascades + 1);
+    t.shadow_step = nullptr;  // new maps
+  }
+  const FrameMatrices f = frame_matrices(state, x.scene, fw, fh, c.shadow_cascades);
   if (x.lod.scene != nullptr) {
     // The panel's distance moves the impostors' with it.
     x.lod.options.impostor_distance_m *= c.lod_distance_m / x.lod.options.max_distance_m;

@@ -88,6 +88,9 @@ void ViewerPanel::build(const PanelInfo& info, ViewerControls& c, int width, int
   ImGui::Begin("fspm view", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
   step_slider(info, c);
   ImGui::Checkbox("shadows", &c.shadows);
+  if (c.shadows) {
+    ImGui::SliderInt("cascades", &c.shadow_cascades, 0, 4, "%d", ImGuiSliderFlags_AlwaysClamp);
+  }
   if (info.lod_max_m > info.lod_min_m) {
     float d = static_cast<float>(c.lod_distance_m);
     ImGui::SliderFloat("LOD distance", &d, static_cast<float>(info.lod_min_m),

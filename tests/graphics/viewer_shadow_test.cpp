@@ -156,6 +156,16 @@ TEST(ViewerShadow, CascadesResolveASmallTreesShadowInALargeScene) {
   const auto [one_map, one_stats] = shoot(0, true, "one_map.png");
   const auto [cascaded, cascaded_stats] = shoot(3, true, "cascaded.png");
   const auto [off, off_stats] = shoot(3, false, "off.png");
+  // The panel's cascades slider, moved from 0 to 3 before the third frame: new maps, drawn then,
+  // and the picture of a viewer started with three cascades.
+  o.before_frame = [](int frame, ViewerControls& c) {
+    if (frame == 2) c.shadow_cascades = 3;
+  };
+  const auto [switched, switched_stats] = shoot(0, true, "switched.png");
+  o.before_frame = nullptr;
+  EXPECT_EQ(switched_stats.shadow_maps_drawn, 1u + 4u);
+  EXPECT_EQ(switched_stats.controls.shadow_cascades, 3);
+  EXPECT_EQ(switched.rgba, cascaded.rgba);
   // A still camera: every map is drawn in the first frame and reused by the next two.
   EXPECT_EQ(one_stats.shadow_maps_drawn, 1u);
   EXPECT_EQ(cascaded_stats.shadow_maps_drawn, 4u);
