@@ -4,15 +4,15 @@
 // (or left/right arrows), shadows from a sun with variance shadow maps (Pirk 6.2.3, eq.
 // 6.10-6.12; variance_shadow.hpp), cascaded on request (shadow_cascades.hpp), toggled with S;
 // R resets the view, Esc or Q quits; the frame time is shown in the title. A controls panel
-// (Dear ImGui, when fspm was built with it) shows and changes the growth step, shadows, the
-// level-of-detail distance, the wind's strength (for a tree in the wind, viewer_wind.hpp) and
-// the colour attribute, with the frame time and the triangles drawn. The ground is the plane
-// under the scene drawn to the horizon, hazing towards the sky's colour with distance (aerial
-// perspective). Crown volumes (at kCrownOpacity, as in renders) and translucent obstacles (at
-// the opacity of their translucency) are blended after the opaque geometry without writing
-// depth, their triangles placed in the world and sorted back to front from the eye whenever the
-// camera moves (translucent_sort.hpp). With a screenshot path it renders `frames` frames into an
-// offscreen framebuffer, writes the image and returns (tests run it under Xvfb with Mesa's
+// (Dear ImGui, when fspm was built with it) shows and changes the growth step, shadows and their
+// cascades, the level-of-detail distance, the wind's strength (for a tree in the wind,
+// viewer_wind.hpp) and the colour attribute, with the frame time and the triangles drawn. The
+// ground is the plane under the scene drawn to the horizon, hazing towards the sky's colour with
+// distance (aerial perspective). Crown volumes (at kCrownOpacity, as in renders) and translucent
+// obstacles (at the opacity of their translucency) are blended after the opaque geometry without
+// writing depth, their triangles placed in the world and sorted back to front from the eye whenever
+// the camera moves (translucent_sort.hpp). With a screenshot path it renders `frames` frames into
+// an offscreen framebuffer, writes the image and returns (tests run it under Xvfb with Mesa's
 // software OpenGL).
 #include <array>
 #include <functional>
