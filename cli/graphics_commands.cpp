@@ -1286,7 +1286,8 @@ void add_view_command(CLI::App& app) {
   v->add_option("--shadow-cascades", view->shadow_cascades,
                 "Cascaded shadow maps: N maps over slices of the view up to three camera "
                 "distances away, nearest first, before the one map of the whole scene (sharp "
-                "shadows near the camera over a landscape; redrawn whenever the camera moves)")
+                "shadows near the camera over a landscape; one redrawn a frame while the camera "
+                "moves; also on the panel)")
       ->check(CLI::Range(0, 4))
       ->capture_default_str();
   v->add_option("--size", view->size, "Window WIDTHxHEIGHT")->capture_default_str();

@@ -52,7 +52,8 @@ struct ViewerOptions {
   // Cascaded shadow maps (shadow_cascades.hpp): this many maps (0 to 4) over slices of the view
   // up to three camera distances away, nearest first, each 1024 texels on a side, before the one
   // map of the whole scene. For landscapes, where one map gives each texel metres of ground;
-  // they are drawn again whenever the camera moves. 0: the whole scene's map alone.
+  // while the camera moves, the cascade drawn longest ago is drawn again each frame. 0: the
+  // whole scene's map alone.
   int shadow_cascades = 0;
   // The ground plane under the scene to the horizon (without it, the sky's colour is behind).
   bool ground = true;
