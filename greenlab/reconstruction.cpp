@@ -2,6 +2,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -1088,32 +1089,36 @@ void reconstruct_lines_into(const CompressedTreeGraph& graph, const Reconstructi
   columns();
   const std::vector<LineItem>& items = queue;
   const std::vector<PlacedCopy>& placed = copies;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, placed.size(), 1024),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t c = range.begin(); c != range.end(); ++c) {
-                        const PlacedCopy& copy = placed[c];
-                        const LineItem& item = items[copy.item];
-                        const LinePrototypes::Prototype& p = protos.prototypes[copy.prototype];
-                        // One pass per record: prototypes are short (about ten records), so
-                        // separate copies per column would spend more on starting loops than on
-                        // copying.
-                        for (std::uint32_t k = 0; k < p.count; ++k) {
-                          const std::uint32_t from = p.first + k;
-                          const NodeId i = copy.base + k;
-                          parent[i] = k == 0 ? item.parent : copy.base + protos.parent[from];
-                          start[i] = item.rotation * protos.start[from] + item.translation;
-                          direction[i] = item.rotation * protos.direction[from];
-                          length[i] = protos.length[from];
-                          radius[i] = protos.radius[from];
-                          birth[i] = protos.birth[from];
-                          age[i] = protos.age[from];
-                          kind[i] = protos.kind[from];
-                          order[i] = static_cast<std::uint16_t>(protos.order[from] + item.order);
+  const auto copy_placed = [&](const PlacedCopy& copy) {
+    const LineItem& item = items[copy.item];
+    const LinePrototypes::Prototype& p = protos.prototypes[copy.prototype];
+    // One pass per record: prototypes are short (about ten records), so separate copies per
+    // column would spend more on starting loops than on copying.
+    for (std::uint32_t k = 0; k < p.count; ++k) {
+      const std::uint32_t from = p.first + k;
+      const NodeId i = copy.base + k;
+      parent[i] = k == 0 ? item.parent : copy.base + protos.parent[from];
+      start[i] = item.rotation * protos.start[from] + item.translation;
+      direction[i] = item.rotation * protos.direction[from];
+      length[i] = protos.length[from];
+      radius[i] = protos.radius[from];
+      birth[i] = protos.birth[from];
+      age[i] = protos.age[from];
+      kind[i] = protos.kind[from];
+      order[i] = static_cast<std::uint16_t>(protos.order[from] + item.order);
+    }
+    if (dead) std::copy_n(protos.dead.data() + p.first, p.count, dead + copy.base);
+  };
+  // Isolated: while it waits, this thread takes no unrelated task of an enclosing parallel loop,
+  // which could run another reconstruction here and reuse the thread_local lists under it.
+  tbb::this_task_arena::isolate([&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, placed.size(), 1024),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        for (std::size_t c = range.begin(); c != range.end(); ++c) {
+                          copy_placed(placed[c]);
                         }
-                        if (dead)
-                          std::copy_n(protos.dead.data() + p.first, p.count, dead + copy.base);
-                      }
-                    });
+                      });
+  });
   lines.resize_for_overwrite(cursor);
   if (stats) *stats = st;
 }

@@ -2,6 +2,8 @@
 // rigid transforms; the oracle is reconstruct(), which walks every axis of the plant. Both must
 // give the same records in the same order, equal up to single precision.
 #include <gtest/gtest.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -87,6 +89,26 @@ TEST(LineReconstruction, Table1TreeMixesWalkedAndCopiedAxes) {
   ASSERT_GT(tree.size(), 10000u);
   expect_same_plant(tree, lines, "table 1 tree at age 18");
   EXPECT_EQ(line_stats.components(), tree_stats.components());
+}
+
+// The placed prototypes are copied on every core: on one thread, and four at a time inside an
+// enclosing parallel loop (whose tasks a waiting thread must not take up: they would reuse its
+// lists), the lines are still the explicit tree's, record for record.
+TEST(LineReconstruction, SameRecordsOnAnyNumberOfThreads) {
+  const CompressedTreeGraph g = simulate_compressed(example("table1_tree.toml"));
+  const ReconstructionOptions options{.age = 22.0};
+  const TreeGraph tree = reconstruct(g, options);
+  ASSERT_GT(tree.size(), 50000u);
+  tbb::task_arena one_thread(1);
+  LineTree lines;
+  one_thread.execute([&] { lines = reconstruct_lines(g, options); });
+  expect_same_plant(tree, lines, "table 1 tree on one thread");
+  std::vector<LineTree> nested(4);
+  tbb::parallel_for(std::size_t{0}, nested.size(),
+                    [&](std::size_t k) { nested[k] = reconstruct_lines(g, options); });
+  for (std::size_t k = 0; k < nested.size(); ++k) {
+    expect_same_plant(tree, nested[k], "table 1 tree, nested run " + std::to_string(k));
+  }
 }
 
 TEST(LineReconstruction, SelfPruningWithAPruningPeriodKeepsTheDeadFlags) {
