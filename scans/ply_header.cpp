@@ -60,6 +60,27 @@ void set_format(PlyHeader& h, const std::vector<std::string_view>& f, const std:
   }
 }
 
+// An element with records but no properties would be read as endless empty records, and a
+// second element of the same name (two "vertex" elements) would be read as one: both rejected.
+void check_new_element(const PlyHeader& h, std::string_view name, const std::string& path,
+                       int line) {
+  for (const PlyElement& e : h.elements) {
+    if (e.name == name) {
+      throw ParseError("the element '" + std::string(name) + "' is declared twice", path, line);
+    }
+  }
+}
+
+void check_has_properties(const PlyHeader& h, const std::string& path, int line) {
+  if (h.elements.empty()) return;
+  const PlyElement& e = h.elements.back();
+  if (e.count > 0 && e.properties.empty()) {
+    throw ParseError("the element '" + e.name + "' has " + std::to_string(e.count) +
+                         " records but no 'property' line",
+                     path, line);
+  }
+}
+
 }  // namespace
 
 std::size_t ply_type_size(PlyType type) {
@@ -90,6 +111,7 @@ PlyHeader parse_ply_header(std::string_view data, const std::string& path) {
     const std::vector<std::string_view> f = split_fields(line);
     if (f.empty() || f[0] == "comment" || f[0] == "obj_info") continue;
     if (f[0] == "end_header") {
+      check_has_properties(h, path, lines.line_number());
       h.data_offset = lines.offset();
       h.data_line = lines.line_number() + 1;
       return h;
@@ -97,6 +119,8 @@ PlyHeader parse_ply_header(std::string_view data, const std::string& path) {
     if (f[0] == "format") {
       set_format(h, f, path, lines.line_number());
     } else if (f[0] == "element" && f.size() == 3) {
+      check_has_properties(h, path, lines.line_number());
+      check_new_element(h, f[1], path, lines.line_number());
       PlyElement e;
       e.name = std::string(f[1]);
       const auto r = std::from_chars(f[2].data(), f[2].data() + f[2].size(), e.count);

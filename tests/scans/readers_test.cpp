@@ -102,6 +102,39 @@ TEST(PlyReader, BadAsciiValueNamesTheLine) {
                ParseError);
 }
 
+// An element with records and no properties takes no bytes a record: read, it would append
+// empty vertices without end. Two elements of one name would be read as one.
+TEST(PlyReader, ElementsWithoutPropertiesOrDeclaredTwiceAreRejected) {
+  const std::string no_properties =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000000\n"
+      "element vertex 1\nproperty float x\nproperty float y\nproperty float z\nend_header\n";
+  try {
+    parse_ply_mesh(no_properties, "p.ply");
+    FAIL() << "expected a ParseError";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 4);
+    EXPECT_NE(std::string(e.what()).find("no 'property'"), std::string::npos) << e.what();
+  }
+  const std::string twice =
+      "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+      "property float z\nelement vertex 1\nproperty float x\nproperty float y\n"
+      "property float z\nend_header\n1 2 3\n4 5 6\n";
+  try {
+    parse_ply_points(twice, "t.ply");
+    FAIL() << "expected a ParseError";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 7);
+    EXPECT_NE(std::string(e.what()).find("declared twice"), std::string::npos) << e.what();
+  }
+  // An empty element (no records) needs no properties.
+  EXPECT_EQ(parse_ply_points("ply\nformat ascii 1.0\nelement camera 0\nelement vertex 1\n"
+                             "property float x\nproperty float y\nproperty float z\n"
+                             "end_header\n1 2 3\n",
+                             "c.ply")
+                .points.size(),
+            1u);
+}
+
 TEST(XyzReader, SpacesCommasCommentsAndHeader) {
   const PointSet a = parse_xyz_points("# scan\n1 2 3 0.5\n\n4\t5\t6\n", "a.xyz");
   ASSERT_EQ(a.points.size(), 2u);
