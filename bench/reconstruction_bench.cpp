@@ -40,16 +40,18 @@ const rc::SpeciesLibrary& library() {
   return lib;
 }
 
-void run(benchmark::State& state, bool flatten, bool lod) {
+void run(benchmark::State& state, bool flatten, bool lod, bool match_branch_length = true) {
   const fspm::scans::ClusterModel& m = model();
   rc::Decoding d;
   d.library = library();
   rc::DecodeMeshOptions options;
   if (lod) options.camera_m = Eigen::Vector3d(0.0, -60.0, 5.0);
+  rc::TextureOptions texture;
+  texture.match_branch_length = match_branch_length;
   std::size_t triangles = 0, instances = 0;
   for (auto _ : state) {
     std::mt19937_64 rng(1);
-    d.placements = rc::texture_clusters(m, d.library, {}, rng);
+    d.placements = rc::texture_clusters(m, d.library, texture, rng);
     const fspm::graphics::InstancedMesh mesh = rc::decoded_mesh(m, d, options);
     if (flatten) {
       const fspm::graphics::TriangleMesh flat = mesh.flatten();
@@ -115,12 +117,15 @@ void BM_FlattenThreeMillionTriangles(benchmark::State& state) {
 void BM_DecodeInstanced(benchmark::State& state) { run(state, false, false); }
 void BM_DecodeInstancedLod60m(benchmark::State& state) { run(state, false, true); }
 void BM_DecodeExplicitMesh(benchmark::State& state) { run(state, true, false); }
+// Pirk's texturing alone (fspm decode --docking-only), the peer of BM_DecodeInstanced.
+void BM_DecodeInstancedDockingOnly(benchmark::State& state) { run(state, false, false, false); }
 
 }  // namespace
 
 BENCHMARK(BM_DecodeInstanced)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DecodeInstancedLod60m)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DecodeExplicitMesh)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DecodeInstancedDockingOnly)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FlattenThreeMillionTriangles)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(5)

@@ -32,6 +32,7 @@ struct DecodeCommand {
   double prune_distance_m = 20.0;
   int branchlets = 8;
   std::uint64_t seed = 1;
+  bool docking_only = false;
   bool json = false;
 };
 
@@ -52,6 +53,12 @@ Eigen::Vector3d lod_camera(const scans::ClusterModel& model, double distance_m) 
   return box.center() - distance_m * Eigen::Vector3d::UnitY();
 }
 
+double scanned_branch_length_m(const scans::ClusterModel& model) {
+  double sum = 0.0;
+  for (const scans::ClusterHull& h : model.clusters) sum += h.branch_length_m;
+  return sum;
+}
+
 void run_decode(const DecodeCommand& o) {
   refuse_overwriting_input(o.output, {o.input});
   const bool mesh_output = is_mesh_path(o.output);
@@ -65,11 +72,14 @@ void run_decode(const DecodeCommand& o) {
   options.species = o.species;
   options.library.branchlets = o.branchlets;
   options.seed = o.seed;
+  options.texture.match_branch_length = !o.docking_only;
   const reconstruction::Decoding decoding = reconstruction::decode_clusters(model, options);
   nlohmann::json summary{{"clusters", model.clusters.size()},
                          {"library_patches", decoding.library.patches.size()},
                          {"instances", decoding.placements.size()},
-                         {"species", decoding.library.species}};
+                         {"species", decoding.library.species},
+                         {"branch_length_m", reconstruction::textured_branch_length_m(decoding)},
+                         {"scanned_branch_length_m", scanned_branch_length_m(model)}};
   const TreeGraph tree = reconstruction::decoded_tree(model, decoding);
   summary["nodes"] = tree.size();
   if (mesh_output) {
@@ -122,8 +132,12 @@ void add_decode_commands(CLI::App& app) {
   d->add_option("--seed", o->seed, "Seed of the patch choice, roll and leaf order")
       ->check(number_in(0, kMaxSeed))
       ->capture_default_str();
+  d->add_flag("--docking-only", o->docking_only,
+              "Texture each cluster only until its docking points are used up (Pirk 3.4), not on "
+              "to the branch length the scan showed in it");
   d->add_flag("--json", o->json,
-              "One JSON object on stdout: nodes, triangles, instances, seconds, ...");
+              "One JSON object on stdout: nodes, triangles, instances, branch_length_m, "
+              "scanned_branch_length_m, seconds, ...");
   d->callback([o] { run_decode(*o); });
 }
 

@@ -67,11 +67,13 @@ void bind_cluster_model(py::module_& m) {
             return dict_list(c.clusters, [](py::dict& d, const scans::ClusterHull& h) {
               d["seed_node"] = h.seed_node;
               d["point_count"] = h.point_count;
+              d["branch_length"] = h.branch_length_m;
               d["vertices"] = vector_rows(h.vertices);
               d["triangles"] = triangle_rows(h.triangles);
             });
           },
           "One dict per leaf cluster: seed_node (skeleton node id it hangs at), point_count, "
+          "branch_length (m of skeleton segments the scan showed in it; 0 from version 1 files), "
           "vertices (N, 3) in m and triangles (M, 3) of its alpha-shape hull");
 }
 

@@ -31,6 +31,9 @@ void validate(const TextureOptions& o) {
   }
 }
 
+// Further seeds drawn in a row that place nothing before a cluster is left short of its length.
+constexpr int kMaxSeedMisses = 16;
+
 struct Pending {
   Docking docking;
   std::uint32_t parent = kNoPlacement;
@@ -151,59 +154,123 @@ Docking seed_docking(const scans::ClusterModel& model, std::size_t cluster) {
   return d;
 }
 
+namespace {
+
+// The texturing of one cluster in progress: the placed patches and their branch length.
+struct ClusterTexture {
+  const scans::ClusterHull& hull;
+  const SpeciesLibrary& library;
+  const TextureOptions& options;
+  std::uint32_t cluster = 0;
+  std::vector<PlacedPatch> placed;
+  double branch_length_m = 0.0;
+};
+
+// Patch selection and fitting at one docking position (Pirk 3.4); the placed patch's docking
+// points inside the hull are queued. Nothing is placed where no patch fits.
+void dock(ClusterTexture& t, const Pending& p, std::deque<Pending>& queue, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> roll(0.0, 2.0 * std::numbers::pi);
+  std::vector<std::uint32_t> s_s = similar_patches(t.library, p.docking, t.options);
+  if (s_s.empty() && p.parent == kNoPlacement) {
+    for (std::uint32_t k = 0; k < t.library.patches.size(); ++k) s_s.push_back(k);
+  }
+  const std::vector<std::uint32_t> best =
+      best_fitting_patches(t.library, s_s, p.docking, t.options);
+  if (best.empty()) return;
+  const double roll_rad = roll(rng);
+  const std::uint32_t chosen = geometric_choice(t.hull, p, t.library, best, roll_rad, rng);
+  const Patch& patch = t.library.patches[chosen];
+  const double scale = fitted_scale(t.hull, p, patch);
+  if (!(scale > 0.0) ||
+      (p.parent != kNoPlacement && scale < t.options.min_scale_ratio * p.parent_scale)) {
+    return;
+  }
+  PlacedPatch pp;
+  pp.patch = chosen;
+  pp.cluster = t.cluster;
+  pp.parent = p.parent;
+  pp.docking = p.docking_index;
+  pp.rotation = docking_rotation(patch.direction, p.docking.direction, roll_rad);
+  pp.scale = scale;
+  pp.translation = p.docking.position;
+  pp.fit = patch_fit(patch.thickness, p.docking.thickness, patch.direction, p.docking.direction);
+  pp.depth = p.depth;
+  const auto index = static_cast<std::uint32_t>(t.placed.size());
+  t.placed.push_back(pp);
+  t.branch_length_m += scale * patch.internode_length_m;
+  if (p.depth >= t.options.max_depth) return;
+  for (std::uint32_t k = 0; k < patch.dockings.size(); ++k) {
+    const DockingPoint& dp = patch.dockings[k];
+    Pending next;
+    next.docking.position = pp.to_world(dp.position);
+    next.docking.direction = (pp.rotation * dp.direction).normalized();
+    next.docking.thickness = dp.thickness;
+    next.parent = index;
+    next.docking_index = k;
+    next.depth = p.depth + 1;
+    next.parent_scale = scale;
+    if (inside_hull(t.hull, next.docking.position)) queue.push_back(next);
+  }
+}
+
+// Docks from `start` and then from every docking point it opens, breadth first, until all are
+// used ("the cluster geometry is filled", Pirk 3.4), the cluster has its most patches, or the
+// placed branch length reaches `until_length_m`.
+void texture_from(ClusterTexture& t, const Pending& start, double until_length_m,
+                  std::mt19937_64& rng) {
+  std::deque<Pending> queue{start};
+  while (!queue.empty() && t.placed.size() < t.options.max_patches_per_cluster &&
+         t.branch_length_m < until_length_m) {
+    const Pending p = queue.front();
+    queue.pop_front();
+    dock(t, p, queue, rng);
+  }
+}
+
+// A point drawn uniformly inside the hull (rejection in its box); a hull vertex when 64 draws
+// all miss (a thin hull).
+Eigen::Vector3d point_inside(const scans::ClusterHull& hull, std::mt19937_64& rng) {
+  Eigen::Vector3d lo = hull.vertices[0], hi = hull.vertices[0];
+  for (const Eigen::Vector3d& v : hull.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int k = 0; k < 64; ++k) {
+    const Eigen::Vector3d q(lo.x() + u(rng) * (hi.x() - lo.x()),
+                            lo.y() + u(rng) * (hi.y() - lo.y()),
+                            lo.z() + u(rng) * (hi.z() - lo.z()));
+    if (inside_hull(hull, q)) return q;
+  }
+  std::uniform_int_distribution<std::size_t> pick(0, hull.vertices.size() - 1);
+  return hull.vertices[pick(rng)];
+}
+
+}  // namespace
+
 std::vector<PlacedPatch> texture_cluster(const scans::ClusterModel& model, std::size_t cluster,
                                          const SpeciesLibrary& library,
                                          const TextureOptions& options, std::mt19937_64& rng) {
   const scans::ClusterHull& hull = model.clusters[cluster];
-  std::vector<PlacedPatch> placed;
-  if (hull.triangles.empty()) return placed;
-  std::uniform_real_distribution<double> roll(0.0, 2.0 * std::numbers::pi);
-  std::deque<Pending> queue;
-  queue.push_back(Pending{seed_docking(model, cluster)});
-  while (!queue.empty() && placed.size() < options.max_patches_per_cluster) {
-    const Pending p = queue.front();
-    queue.pop_front();
-    std::vector<std::uint32_t> s_s = similar_patches(library, p.docking, options);
-    if (s_s.empty() && p.parent == kNoPlacement) {
-      for (std::uint32_t k = 0; k < library.patches.size(); ++k) s_s.push_back(k);
-    }
-    const std::vector<std::uint32_t> best = best_fitting_patches(library, s_s, p.docking, options);
-    if (best.empty()) continue;
-    const double roll_rad = roll(rng);
-    const std::uint32_t chosen = geometric_choice(hull, p, library, best, roll_rad, rng);
-    const Patch& patch = library.patches[chosen];
-    const double scale = fitted_scale(hull, p, patch);
-    if (!(scale > 0.0) ||
-        (p.parent != kNoPlacement && scale < options.min_scale_ratio * p.parent_scale)) {
-      continue;
-    }
-    PlacedPatch pp;
-    pp.patch = chosen;
-    pp.cluster = static_cast<std::uint32_t>(cluster);
-    pp.parent = p.parent;
-    pp.docking = p.docking_index;
-    pp.rotation = docking_rotation(patch.direction, p.docking.direction, roll_rad);
-    pp.scale = scale;
-    pp.translation = p.docking.position;
-    pp.fit = patch_fit(patch.thickness, p.docking.thickness, patch.direction, p.docking.direction);
-    pp.depth = p.depth;
-    const auto index = static_cast<std::uint32_t>(placed.size());
-    placed.push_back(pp);
-    if (p.depth >= options.max_depth) continue;
-    for (std::uint32_t k = 0; k < patch.dockings.size(); ++k) {
-      const DockingPoint& dp = patch.dockings[k];
-      Pending next;
-      next.docking.position = pp.to_world(dp.position);
-      next.docking.direction = (pp.rotation * dp.direction).normalized();
-      next.docking.thickness = dp.thickness;
-      next.parent = index;
-      next.docking_index = k;
-      next.depth = p.depth + 1;
-      next.parent_scale = scale;
-      if (inside_hull(hull, next.docking.position)) queue.push_back(next);
-    }
+  ClusterTexture t{hull, library, options, static_cast<std::uint32_t>(cluster), {}, 0.0};
+  if (hull.triangles.empty()) return t.placed;
+  const Pending seed{seed_docking(model, cluster)};
+  const bool match = options.match_branch_length && hull.branch_length_m > 0.0;
+  const double until_m = match ? hull.branch_length_m : std::numeric_limits<double>::infinity();
+  texture_from(t, seed, until_m, rng);
+  if (!match) return t.placed;
+  // Beyond Pirk: texturing ends at the branch length the scan showed in the cluster, breadth
+  // first, so a large cluster's finest docking points may stay empty. Where the docking points
+  // are used up before it (one branchlet's worth of patches per seed), further branchlets start
+  // at the seed point, each towards a point drawn inside the hull, until it is reached.
+  int misses = 0;
+  while (t.branch_length_m < hull.branch_length_m &&
+         t.placed.size() < options.max_patches_per_cluster && misses < kMaxSeedMisses) {
+    Pending extra = seed;
+    const Eigen::Vector3d to = point_inside(hull, rng) - seed.docking.position;
+    if (to.norm() > 1e-12) extra.docking.direction = to.normalized();
+    const std::size_t before = t.placed.size();
+    texture_from(t, extra, hull.branch_length_m, rng);
+    misses = t.placed.size() == before ? misses + 1 : 0;
   }
-  return placed;
+  return t.placed;
 }
 
 std::vector<PlacedPatch> texture_clusters(const scans::ClusterModel& model,

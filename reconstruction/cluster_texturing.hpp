@@ -30,6 +30,11 @@ struct TextureOptions {
   // A docking point so near the hull that its patch would shrink below this share of its
   // parent's scale stays empty.
   double min_scale_ratio = 0.25;
+  // Texture up to the cluster's branch length (ClusterHull::branch_length_m, the skeleton length
+  // the scan showed there): stop there, and once Pirk's texturing has used every docking point
+  // short of it, start further branchlets at the seed point. Clusters without one, or false:
+  // Pirk's texturing alone.
+  bool match_branch_length = true;
 };
 
 inline constexpr std::uint32_t kNoPlacement = std::numeric_limits<std::uint32_t>::max();
@@ -80,7 +85,11 @@ Docking seed_docking(const scans::ClusterModel& model, std::size_t cluster);
 
 // Textures one cluster (parents before children). A cluster without hull triangles, or whose
 // hull the seed's ray does not reach, gets no patches. At the seed point an empty S_s falls
-// back to the whole library; elsewhere it leaves the docking point empty.
+// back to the whole library; elsewhere it leaves the docking point empty. With
+// match_branch_length, texturing stops once the placed internodes (scale x
+// Patch::internode_length_m) are as long as the cluster's branch length, and further branchlets
+// start at the seed point, each towards a point drawn inside the hull, until they are, the
+// cluster has its most patches, or 16 seeds in a row place nothing.
 std::vector<PlacedPatch> texture_cluster(const scans::ClusterModel& model, std::size_t cluster,
                                          const SpeciesLibrary& library,
                                          const TextureOptions& options, std::mt19937_64& rng);

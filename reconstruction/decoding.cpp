@@ -19,6 +19,14 @@ Decoding decode_clusters(const scans::ClusterModel& model, const DecodeOptions& 
   return d;
 }
 
+double textured_branch_length_m(const Decoding& decoding) {
+  double sum = 0.0;
+  for (const PlacedPatch& p : decoding.placements) {
+    sum += p.scale * decoding.library.patches[p.patch].internode_length_m;
+  }
+  return sum;
+}
+
 namespace {
 
 NodeData copied(const TreeGraph& t, NodeId n) {

@@ -35,6 +35,10 @@ struct Decoding {
 // Throws ValueError for an unknown species, bad options or a cluster hanging at no skeleton node.
 Decoding decode_clusters(const scans::ClusterModel& model, const DecodeOptions& options = {});
 
+// Summed internode length of the placed patches (scale x Patch::internode_length_m), m: what
+// texturing put where the scan showed ClusterHull::branch_length_m.
+double textured_branch_length_m(const Decoding& decoding);
+
 // The skeleton (same node ids) followed by every placed patch transformed: a patch's base hangs
 // from its seed node or from the node of its parent patch the docking point belongs to; radii
 // and lengths scaled with the patch; branching orders continue the parent's.

@@ -148,6 +148,7 @@ Patch patch_of_axis(const TreeGraph& t, const std::vector<NodeId>& axis, double 
   }
   for (NodeId n = 0; n < p.geometry.size(); ++n) {
     p.length_m = std::max(p.length_m, p.geometry.end(n).dot(p.direction));
+    if (is_internode(p.geometry, n)) p.internode_length_m += p.geometry.length(n);
   }
   return p;
 }

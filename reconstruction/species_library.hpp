@@ -28,8 +28,9 @@ struct Patch {
   // kept, so `direction` is its vertical angle there.
   TreeGraph geometry;
   Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  // v_r: unit heading at the base
-  double thickness = 1.0;  // thickn_r: base radius relative to the branchlet's base radius
-  double length_m = 0.0;   // extent along `direction`: the largest end . direction
+  double thickness = 1.0;           // thickn_r: base radius relative to the branchlet's base radius
+  double length_m = 0.0;            // extent along `direction`: the largest end . direction
+  double internode_length_m = 0.0;  // summed lengths of its internodes
   std::size_t leaves = 0;
   std::uint32_t branchlet = 0;
   std::vector<DockingPoint> dockings;

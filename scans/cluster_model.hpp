@@ -14,6 +14,9 @@ namespace fspm::scans {
 struct ClusterHull {
   NodeId seed_node = kNoNode;     // node of the skeleton the cluster hangs at (p_i)
   std::uint32_t point_count = 0;  // points of the scan in the cluster
+  // Length of the skeleton segments that fell into the cluster (before the split): the branch
+  // length the scan showed there, which decoding textures up to. 0 when unknown (version 1 files).
+  double branch_length_m = 0.0;
   std::vector<Eigen::Vector3d> vertices;
   std::vector<std::array<std::uint32_t, 3>> triangles;
 };

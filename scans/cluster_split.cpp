@@ -46,6 +46,7 @@ ClusterSplit split_clusters(const PointSet& ps, const PointSkeleton& s, double f
   }
   for (NodeId u = 0; u < t.size(); ++u) {
     if (cluster_of[u] == UINT32_MAX) continue;
+    out.clusters[cluster_of[u]].branch_length_m += t.length(u);
     auto& pts = out.clusters[cluster_of[u]].points;
     pts.insert(pts.end(), s.members.begin() + s.first[u], s.members.begin() + s.first[u + 1]);
   }

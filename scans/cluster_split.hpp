@@ -16,6 +16,7 @@ namespace fspm::scans {
 struct PointCluster {
   NodeId seed_node = kNoNode;  // p_i: the main-skeleton node (id in main_skeleton)
   std::vector<std::uint32_t> points;
+  double branch_length_m = 0.0;  // summed segment lengths of its skeleton nodes
 };
 
 struct ClusterSplit {

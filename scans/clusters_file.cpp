@@ -27,6 +27,7 @@ void put_hull(ByteWriter& w, const ClusterHull& h) {
   for (const Eigen::Vector3d& v : h.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
   w.put(static_cast<std::uint32_t>(h.seed_node));
   w.put(h.point_count);
+  w.put(static_cast<float>(h.branch_length_m));
   put_vec(w, lo);
   put_vec(w, hi);
   w.put(static_cast<std::uint16_t>(h.vertices.size()));

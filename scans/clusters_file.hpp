@@ -9,7 +9,9 @@
 
 namespace fspm::scans {
 
-inline constexpr std::string_view kClustersMagic = "FSPMCLU1";
+inline constexpr std::string_view kClustersMagic = "FSPMCLU2";
+// Version 1 (no branch length per cluster) is still read.
+inline constexpr std::string_view kClustersMagicV1 = "FSPMCLU1";
 
 // Throws ValueError for a model the format cannot hold (more than 65535 vertices or triangles in
 // one hull, a species name over 255 bytes, an empty skeleton), IoError when writing fails.

@@ -48,12 +48,20 @@ void read_skeleton(ByteReader& r, ClusterModel& m) {
   }
 }
 
-ClusterHull read_hull(ByteReader& r, std::size_t nodes) {
+ClusterHull read_hull(ByteReader& r, std::size_t nodes, bool has_length) {
   ClusterHull h;
   const std::size_t at = r.offset();
   h.seed_node = r.get<std::uint32_t>("a cluster's seed node");
   if (h.seed_node >= nodes) r.fail("the seed node is not a skeleton node", at);
   h.point_count = r.get<std::uint32_t>("a cluster's point count");
+  if (has_length) {
+    const std::size_t length_at = r.offset();
+    const float length = r.get<float>("a cluster's branch length");
+    if (!(length >= 0.0f) || !std::isfinite(length)) {
+      r.fail("a negative or nan branch length", length_at);
+    }
+    h.branch_length_m = length;
+  }
   const Eigen::Vector3d lo = get_vector(r, "a cluster's box");
   const Eigen::Vector3d side = get_vector(r, "a cluster's box") - lo;
   const std::uint16_t vertices = r.get<std::uint16_t>("a cluster's vertex count");
@@ -79,9 +87,12 @@ ClusterHull read_hull(ByteReader& r, std::size_t nodes) {
 
 ClusterModel parse_clusters_bytes(std::string_view data, const std::string& path) {
   ByteReader r(data, path);
-  if (r.get_bytes(std::min(data.size(), kClustersMagic.size()), "the magic") != kClustersMagic) {
-    r.fail("not a .clusters file, expected it to start with FSPMCLU1", 0);
+  const std::string_view magic =
+      r.get_bytes(std::min(data.size(), kClustersMagic.size()), "the magic");
+  if (magic != kClustersMagic && magic != kClustersMagicV1) {
+    r.fail("not a .clusters file, expected it to start with FSPMCLU2 (or FSPMCLU1)", 0);
   }
+  const bool has_length = magic == kClustersMagic;
   ClusterModel m;
   const std::uint8_t name_length = r.get<std::uint8_t>("the species name length");
   m.species = std::string(r.get_bytes(name_length, "the species name"));
@@ -92,7 +103,7 @@ ClusterModel parse_clusters_bytes(std::string_view data, const std::string& path
   read_skeleton(r, m);
   const std::uint32_t clusters = r.get<std::uint32_t>("the cluster count");
   for (std::uint32_t k = 0; k < clusters; ++k)
-    m.clusters.push_back(read_hull(r, m.skeleton.size()));
+    m.clusters.push_back(read_hull(r, m.skeleton.size(), has_length));
   if (!r.at_end()) r.fail("unexpected data after the last cluster", r.offset());
   return m;
 }

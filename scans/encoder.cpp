@@ -34,7 +34,8 @@ std::vector<ClusterHull> hulls(const ThinnedPoints& thin, const std::vector<Poin
     std::uint32_t count = 0;
     for (std::uint32_t i : c.points) pts.push_back(ps.points[i]), count += thin.counts[i];
     AlphaHull h = alpha_hull(pts, options);
-    out.push_back({c.seed_node, count, std::move(h.vertices), std::move(h.triangles)});
+    out.push_back(
+        {c.seed_node, count, c.branch_length_m, std::move(h.vertices), std::move(h.triangles)});
   }
   return out;
 }

@@ -135,6 +135,46 @@ TEST(ClusterTexturing, EqualFitsGoToThePatchThatKeepsFillingTheHull) {
   }
 }
 
+// Past Pirk's texturing (3 patches, 2.5 + 2 x 0.707 m, see CountsFollowFromEquation33), further
+// branchlets start at the seed point until the cluster's branch length is reached; the last
+// patch may pass it by at most the longest patch the box admits from the seed point (its far
+// corner, |(1, 1, 2.5)| = 2.87 m). Without a branch length, or with match_branch_length off, the
+// result is Pirk's.
+TEST(ClusterTexturing, FurtherBranchletsUpToTheClustersBranchLength) {
+  scans::ClusterModel model = two_cluster_model();
+  model.clusters[0].branch_length_m = 10.0;
+  const SpeciesLibrary lib = hand_library();
+  const auto length_of = [&](const std::vector<PlacedPatch>& placed) {
+    double sum = 0.0;
+    for (const PlacedPatch& p : placed) sum += p.scale * lib.patches[p.patch].internode_length_m;
+    return sum;
+  };
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    std::mt19937_64 rng(seed);
+    const std::vector<PlacedPatch> placed = texture_cluster(model, 0, lib, {}, rng);
+    const double length = length_of(placed);
+    EXPECT_GE(length, 10.0) << seed;
+    EXPECT_LT(length, 10.0 + std::sqrt(1.0 + 1.0 + 2.5 * 2.5)) << seed;
+    std::size_t seeds = 0;
+    for (const PlacedPatch& p : placed) {
+      if (p.parent != kNoPlacement) continue;
+      ++seeds;
+      EXPECT_LT((p.translation - model.skeleton.end(1)).norm(), 1e-12);
+      const Eigen::Vector3d tip = p.to_world(lib.patches[p.patch].direction);
+      EXPECT_TRUE(
+          testing::inside_by_solid_angle(model.clusters[0], tip + 1e-6 * (p.translation - tip)))
+          << tip.transpose();
+    }
+    EXPECT_GT(seeds, 1u) << seed;
+  }
+  TextureOptions pirk_only;
+  pirk_only.match_branch_length = false;
+  std::mt19937_64 rng(1);
+  EXPECT_EQ(texture_cluster(model, 0, lib, pirk_only, rng).size(), 3u);
+  model.clusters[0].branch_length_m = 0.0;
+  EXPECT_EQ(texture_cluster(model, 0, lib, {}, rng).size(), 3u);
+}
+
 TEST(ClusterTexturing, SameSeedSameResult) {
   const SpeciesLibrary lib = make_species_library("default", {3, 5, 1});
   const scans::ClusterModel model = two_cluster_model();

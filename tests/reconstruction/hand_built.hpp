@@ -72,6 +72,7 @@ inline Patch straight_patch(const Eigen::Vector3d& direction, double thickness, 
   }
   p.leaves = static_cast<std::size_t>(leaves);
   p.length_m = 1.0;
+  p.internode_length_m = 1.0;
   return p;
 }
 

@@ -20,6 +20,7 @@ ClusterModel small_model() {
   ClusterHull h;
   h.seed_node = 1;
   h.point_count = 1234;
+  h.branch_length_m = 6.25;
   h.vertices = {{0, 0, 2}, {1, 0, 2}, {0, 1, 2}, {0, 0, 3}};
   h.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
   m.clusters.push_back(h);
@@ -30,8 +31,9 @@ TEST(ClustersFile, RoundTripWithinQuantization) {
   const ClusterModel m = small_model();
   const std::string bytes = clusters_bytes(m);
   // 8 magic + 1 + 4 name + 16 parameters + 4 + 12 root + 2 x 20 nodes + 4 + cluster
-  // (4 + 4 + 24 + 2 + 2 + 4 x 6 + 4 x 6).
-  EXPECT_EQ(bytes.size(), 8u + 1 + 4 + 16 + 4 + 12 + 40 + 4 + (36 + 48));
+  // (4 + 4 + 4 + 24 + 2 + 2 + 4 x 6 + 4 x 6).
+  EXPECT_EQ(bytes.size(), 8u + 1 + 4 + 16 + 4 + 12 + 40 + 4 + (40 + 48));
+  EXPECT_EQ(bytes.substr(0, 8), "FSPMCLU2");
   const ClusterModel r = parse_clusters_bytes(bytes, "m.clusters");
   EXPECT_EQ(r.species, "pine");
   EXPECT_FLOAT_EQ(static_cast<float>(r.f_s), 0.98f);
@@ -41,10 +43,26 @@ TEST(ClustersFile, RoundTripWithinQuantization) {
   EXPECT_NEAR(r.skeleton.radius(1), 0.05, 1e-7);
   ASSERT_EQ(r.clusters.size(), 1u);
   EXPECT_EQ(r.clusters[0].point_count, 1234u);
+  EXPECT_EQ(r.clusters[0].branch_length_m, 6.25);  // exact in binary32
   EXPECT_EQ(r.clusters[0].triangles, m.clusters[0].triangles);
   for (std::size_t k = 0; k < 4; ++k) {
     EXPECT_LT((r.clusters[0].vertices[k] - m.clusters[0].vertices[k]).norm(), 1.0 / 65535 * 2);
   }
+}
+
+// Version 1 had no branch length: the same bytes without those 4, read with length 0.
+TEST(ClustersFile, VersionOneIsReadWithoutBranchLengths) {
+  std::string bytes = clusters_bytes(small_model());
+  const std::size_t length_at = 8 + 1 + 4 + 16 + 4 + 12 + 40 + 4 + 8;
+  bytes.erase(length_at, 4);
+  bytes[7] = '1';
+  const ClusterModel r = parse_clusters_bytes(bytes, "v1.clusters");
+  ASSERT_EQ(r.clusters.size(), 1u);
+  EXPECT_EQ(r.clusters[0].point_count, 1234u);
+  EXPECT_EQ(r.clusters[0].branch_length_m, 0.0);
+  EXPECT_EQ(r.clusters[0].triangles, small_model().clusters[0].triangles);
+  bytes[7] = '3';
+  EXPECT_THROW(parse_clusters_bytes(bytes, "v3.clusters"), ParseError);
 }
 
 TEST(ClustersFile, DamageIsRefusedWithTheByteOffset) {

@@ -42,6 +42,25 @@ TEST(ScanValidation, RecoversTheMainSkeletonOfASyntheticTree) {
   EXPECT_LT(clusters_bytes(r.model).size(), 40000u);
 }
 
+// The skeleton nodes split between the main skeleton and the clusters: their lengths add up to
+// the full skeleton's.
+TEST(ScanValidation, ClusterBranchLengthsAreTheSkeletonSegmentsTheyTook) {
+  const Case c = scanned_tree(3);
+  const EncodeResult r = encode_point_set(c.scan);
+  ASSERT_GT(r.model.clusters.size(), 0u);
+  const auto length = [](const TreeGraph& t) {
+    double sum = 0.0;
+    for (NodeId n = 0; n < t.size(); ++n) sum += t.length(n);
+    return sum;
+  };
+  double clustered = 0.0;
+  for (const ClusterHull& h : r.model.clusters) {
+    EXPECT_GT(h.branch_length_m, 0.0);
+    clustered += h.branch_length_m;
+  }
+  EXPECT_NEAR(length(r.model.skeleton) + clustered, length(r.full_skeleton), 1e-9);
+}
+
 // Pirk eq. 3.2 and Fig. 3.11: a smaller f_s marks more edges as low-confidence, so more points
 // go to clusters; at f_s = 0.5 the trunk's own points (mean distance r = d/2) fail the test and
 // nearly the whole tree is one cluster.
