@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
 #include <unordered_map>
 
 namespace fspm::scans {
@@ -45,6 +46,34 @@ void collect_facets(const AlphaShape& shape, AlphaHull& hull) {
     if (n.dot(a - to_eigen(f.first->vertex(i)->point())) < 0.0) std::swap(tri[1], tri[2]);
     hull.triangles.push_back(tri);
   }
+}
+
+// CGAL's triangulation stores its cells in an order that differs from run to run (its spatial
+// sort draws from a shared random generator), so the facets come in another order each time.
+// Vertices sorted by their coordinates, triangles rotated to start at their smallest index and
+// sorted, make one hull one list, and the .clusters file and its decoding the same every run.
+void canonical_order(AlphaHull& hull) {
+  std::vector<std::uint32_t> order(hull.vertices.size());
+  for (std::uint32_t k = 0; k < order.size(); ++k) order[k] = k;
+  const auto less = [&](std::uint32_t a, std::uint32_t b) {
+    const Eigen::Vector3d& p = hull.vertices[a];
+    const Eigen::Vector3d& q = hull.vertices[b];
+    return std::tie(p.x(), p.y(), p.z()) < std::tie(q.x(), q.y(), q.z());
+  };
+  std::sort(order.begin(), order.end(), less);
+  std::vector<std::uint32_t> rank(order.size());
+  std::vector<Eigen::Vector3d> vertices(order.size());
+  for (std::uint32_t k = 0; k < order.size(); ++k) {
+    rank[order[k]] = k;
+    vertices[k] = hull.vertices[order[k]];
+  }
+  hull.vertices = std::move(vertices);
+  for (std::array<std::uint32_t, 3>& t : hull.triangles) {
+    for (std::uint32_t& i : t) i = rank[i];
+    // Rotating keeps the orientation.
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+  }
+  std::sort(hull.triangles.begin(), hull.triangles.end());
 }
 
 }  // namespace
@@ -85,6 +114,7 @@ AlphaHull alpha_hull(const std::vector<Eigen::Vector3d>& points, const AlphaHull
         hull.alpha = options.alpha_factor * *optimal;
         shape.set_alpha(hull.alpha);
         collect_facets(shape, hull);
+        canonical_order(hull);
         if (!hull.triangles.empty()) return hull;
       }
     }
