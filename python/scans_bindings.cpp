@@ -138,18 +138,22 @@ void bind_cluster_files(py::module_& m) {
   m.def(
       "decode_clusters",
       [](const scans::ClusterModel& model, const std::string& species, int branchlets,
-         std::uint64_t seed) {
+         std::uint64_t seed, bool docking_only) {
         reconstruction::DecodeOptions o;
         o.species = species;
         o.library.branchlets = branchlets;
         o.seed = seed;
+        o.texture.match_branch_length = !docking_only;
         py::gil_scoped_release release;
         return reconstruction::decoded_tree(model, reconstruction::decode_clusters(model, o));
       },
       py::arg("model"), py::arg("species") = "", py::arg("branchlets") = 8, py::arg("seed") = 1,
+      py::arg("docking_only") = false,
       "Decode a ClusterModel into a full Tree (Pirk 3.4): the skeleton (same node ids) followed "
       "by the patches of L-system branchlets that texture its clusters, chosen by eq. 3.3 and "
-      "fitted to the hulls; species '' uses the model's; the same seed gives the same tree");
+      "fitted to the hulls, up to each cluster's scanned branch_length (docking_only=True: until "
+      "the docking points are used up, Pirk's rule alone); species '' uses the model's; the same "
+      "seed gives the same tree");
   m.def(
       "simulate_scan",
       [](const TreeGraph& tree, std::uint64_t seed, int scanners, double density_per_m2,

@@ -123,5 +123,18 @@ def test_decoding_textures_the_clusters_below_the_skeleton():
     assert all(0 <= parents[k] < k for k in range(n, len(decoded)))
     again = fspm.decode_clusters(model, branchlets=3, seed=2)
     np.testing.assert_array_equal(decoded.ends, again.ends)
+    # Up to the scanned branch length; Pirk's rule alone stops short of it on this tree.
+    scanned = sum(c["branch_length"] for c in model.clusters)
+    assert scanned > 0
+
+    def twig_length(t):
+        lengths = np.linalg.norm(t.ends - t.starts, axis=1)
+        return lengths[n:][np.asarray(t.kinds)[n:] == 0].sum()  # 0: internode
+
+    pirk = fspm.decode_clusters(model, branchlets=3, seed=2, docking_only=True)
+    assert twig_length(pirk) < twig_length(decoded)
+    # Each cluster stops at the first patch that reaches its length, so it passes it by less
+    # than one patch (at most the hull's extent): a few metres over the whole tree.
+    assert 0.9 * scanned <= twig_length(decoded) <= 1.3 * scanned
     with pytest.raises(ValueError):
         fspm.decode_clusters(model, species="pinee")

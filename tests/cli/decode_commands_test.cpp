@@ -43,6 +43,19 @@ TEST(DecodeCli, TreeAndMeshesReportWhatTheyWrote) {
   EXPECT_EQ(t["nodes"].get<std::size_t>(), read_tree_file(tree).size());
   EXPECT_GT(t["instances"].get<std::size_t>(), 0u);
   EXPECT_GE(t["seconds"].get<double>(), 0.0);
+  // Textured up to the clusters' scanned branch length; each cluster stops at the first patch
+  // that reaches it, so passes it by less than one patch (at most the hull's extent).
+  const double scanned_m = t["scanned_branch_length_m"].get<double>();
+  EXPECT_GT(scanned_m, 0.0);
+  EXPECT_GE(t["branch_length_m"].get<double>(), 0.9 * scanned_m);
+  EXPECT_LE(t["branch_length_m"].get<double>(), 1.3 * scanned_m);
+  // Pirk's texturing alone ends when the docking points are used up, short of it on this tree.
+  r = run_fspm("decode " + model + " -o " + (dir / "pirk.tree").string() +
+               " --docking-only --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto pirk = nlohmann::json::parse(r.out);
+  EXPECT_LT(pirk["instances"].get<std::size_t>(), t["instances"].get<std::size_t>());
+  EXPECT_LT(pirk["branch_length_m"].get<double>(), 0.9 * scanned_m);
 
   const std::string glb = (dir / "decoded.glb").string();
   r = run_fspm("decode " + model + " -o " + glb + " --json");
