@@ -50,13 +50,19 @@ Eigen::Matrix3d docking_rotation(const Eigen::Vector3d& v_r, const Eigen::Vector
   return Eigen::AngleAxisd(roll_rad, v_d).toRotationMatrix() * align;
 }
 
-// Patch fitting: the scale at which the patch ends where the ray along the docking direction
-// leaves the hull (the last crossing from the seed point, which may lie outside the hull; the
-// first from a docking point inside it). 0 when the ray does not reach the hull.
-double fitted_scale(const scans::ClusterHull& hull, const Pending& p, const Patch& patch) {
+// How far the ray along the docking direction goes before it leaves the hull: the last crossing
+// from the seed point, which may lie outside the hull; the first from a docking point inside it.
+// 0 when the ray does not reach the hull. The same for every patch tried at the position.
+double hull_reach_m(const scans::ClusterHull& hull, const Pending& p) {
   const std::vector<double> ts = ray_hull_crossings(hull, p.docking.position, p.docking.direction);
-  if (ts.empty() || !(patch.length_m > 0.0)) return 0.0;
-  const double reach_m = p.parent == kNoPlacement ? ts.back() : ts.front();
+  if (ts.empty()) return 0.0;
+  return p.parent == kNoPlacement ? ts.back() : ts.front();
+}
+
+// Patch fitting: the scale at which the patch ends where the ray leaves the hull (`reach_m`),
+// never larger than its parent's. 0 when the ray does not reach the hull.
+double fitted_scale(double reach_m, const Pending& p, const Patch& patch) {
+  if (!(reach_m > 0.0) || !(patch.length_m > 0.0)) return 0.0;
   const double scale = reach_m / patch.length_m;
   return p.parent == kNoPlacement ? scale : std::min(scale, p.parent_scale);
 }
@@ -76,7 +82,7 @@ std::size_t dockings_inside(const scans::ClusterHull& hull, const Pending& p, co
 // local geometry of the cluster": the most docking points inside the hull once fitted, so that
 // texturing goes on until the cluster is filled (Figure 3.7) and patches without docking points
 // (which end it) are taken where nothing more fits. Ties are drawn with the generator.
-std::uint32_t geometric_choice(const scans::ClusterHull& hull, const Pending& p,
+std::uint32_t geometric_choice(const scans::ClusterHull& hull, const Pending& p, double reach_m,
                                const SpeciesLibrary& library,
                                const std::vector<std::uint32_t>& best, double roll_rad,
                                std::mt19937_64& rng) {
@@ -84,7 +90,7 @@ std::uint32_t geometric_choice(const scans::ClusterHull& hull, const Pending& p,
   std::size_t most_inside = 0;
   for (const std::uint32_t k : best) {
     const Patch& patch = library.patches[k];
-    const double scale = fitted_scale(hull, p, patch);
+    const double scale = fitted_scale(reach_m, p, patch);
     const std::size_t inside =
         scale > 0.0 ? dockings_inside(
                           hull, p, patch,
@@ -178,9 +184,10 @@ void dock(ClusterTexture& t, const Pending& p, std::deque<Pending>& queue, std::
       best_fitting_patches(t.library, s_s, p.docking, t.options);
   if (best.empty()) return;
   const double roll_rad = roll(rng);
-  const std::uint32_t chosen = geometric_choice(t.hull, p, t.library, best, roll_rad, rng);
+  const double reach_m = hull_reach_m(t.hull, p);
+  const std::uint32_t chosen = geometric_choice(t.hull, p, reach_m, t.library, best, roll_rad, rng);
   const Patch& patch = t.library.patches[chosen];
-  const double scale = fitted_scale(t.hull, p, patch);
+  const double scale = fitted_scale(reach_m, p, patch);
   if (!(scale > 0.0) ||
       (p.parent != kNoPlacement && scale < t.options.min_scale_ratio * p.parent_scale)) {
     return;
