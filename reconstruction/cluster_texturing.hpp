@@ -26,7 +26,7 @@ struct TextureOptions {
   // them is drawn with the seeded generator, so clusters of one tree are not textured alike.
   double fit_tolerance = 0.1;
   int max_depth = 8;  // docking generations after the seed's patch
-  std::size_t max_patches_per_cluster = 400;
+  std::size_t max_patches_per_cluster = 5000;
   // A docking point so near the hull that its patch would shrink below this share of its
   // parent's scale stays empty.
   double min_scale_ratio = 0.25;
