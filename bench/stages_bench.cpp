@@ -75,6 +75,23 @@ BENCHMARK(BM_Stage)
     ->Args({116, 100})
     ->Unit(benchmark::kMillisecond);
 
+// Peer in the same run: writing the given tree's nodes into a reused TreeGraph, node by node,
+// with nothing computed. A stage that writes its nodes as a TreeGraph cannot take less; the ratio
+// BM_Stage / this peer shows how much of a stage is the model rather than the writing.
+void BM_StageCopyPeer(benchmark::State& state) {
+  const TreeGraph& t = tree_for(static_cast<int>(state.range(0)));
+  TreeGraph out;
+  for (auto _ : state) {
+    out.clear_keep_capacity();
+    out.reserve(t.size());
+    for (fspm::NodeId i = 0; i < t.size(); ++i) out.add_node_unchecked(t.parent(i), t.data(i));
+    benchmark::DoNotOptimize(out.size());
+  }
+  counters(state, t);
+  state.counters["stage_nodes"] = static_cast<double>(out.size());
+}
+BENCHMARK(BM_StageCopyPeer)->Arg(43)->Unit(benchmark::kMillisecond);
+
 void BM_StagesAnalysis(benchmark::State& state) {
   const TreeGraph& t = tree_for(static_cast<int>(state.range(0)));
   for (auto _ : state) {

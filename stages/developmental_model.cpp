@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <span>
 
 #include "fspm/closest_name.hpp"
 #include "fspm/error.hpp"
@@ -31,6 +32,17 @@ double angle_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
 bool close(double a, double b, double tolerance) {
   const double scale = std::max(std::abs(a), std::abs(b));
   return scale == 0.0 || std::abs(a - b) <= tolerance * scale;
+}
+
+// r_u^(1/u) of eq. 5.8; inv_u = 0 stands for Murray's u = 2.5, the default, where the root
+// solves y^5 = r_u^2: one Newton step from a single-precision seed (relative error ~1e-7, after
+// the step ~1e-14) costs a fraction of std::pow.
+double pipe_root(double r_u, double inv_u) {
+  if (inv_u != 0.0) return std::pow(r_u, inv_u);
+  if (!(r_u >= 1e-30 && r_u <= 1e30)) return std::pow(r_u, 0.4);  // beyond float's normal range
+  const double y = std::pow(static_cast<float>(r_u), 0.4f);
+  const double y2 = y * y, y4 = y2 * y2;
+  return y - (y4 * y - r_u * r_u) / (5.0 * y4);
 }
 
 }  // namespace
@@ -303,11 +315,11 @@ void DevelopmentalModel::stage(double t, TreeGraph& out) const {
   grown.clear_keep_capacity();
   grown.reserve(tree_.size());
   place_nodes(t, grown);
-  // A branch made younger (5.4.1) is still growing at t = 1.
-  if (t < 1.0 || !chain_shift_.empty()) add_tip_leaves(grown);
   // Pirk 5.3.6: the branches shed later still count in the radii (eq. 5.8), so removing them
   // leaves the radii below unchanged.
   set_radii(grown);
+  // A branch made younger (5.4.1) is still growing at t = 1.
+  if (t < 1.0 || !chain_shift_.empty()) add_tip_leaves(grown);
   if (added_.copies > 0) remove_shed(t, grown, out);
 }
 
@@ -327,9 +339,9 @@ void DevelopmentalModel::remove_shed(double t, const TreeGraph& grown, TreeGraph
   for (NodeId i = added_.first_added; i < added_end_; ++i) {
     const bool copy_root = tree_.parent(i) < added_.first_added;
     const bool overlap = !added_.in_overlap.empty() && added_.in_overlap[i];
-    if (copy_root && state_[i].id != kNoNode &&
+    if (copy_root && stage_id_[i] != kNoNode &&
         added_.attach_height_m[i] < (overlap ? overlap_base_m : base_m)) {
-      kept_id_[state_[i].id] = 0;
+      kept_id_[stage_id_[i]] = 0;
     }
   }
   out.clear_keep_capacity();
@@ -348,22 +360,17 @@ void DevelopmentalModel::remove_shed(double t, const TreeGraph& grown, TreeGraph
 // organs of its chain's last edge (the leaves of the chain's tip in the given tree), placed as
 // they sit around that edge's end and turned with the tip.
 void DevelopmentalModel::add_tip_leaves(TreeGraph& out) const {
-  const std::size_t present = out.size();
-  tip_.assign(present, 1);
-  // Anything on an edge (a child edge or its own organs) makes it no tip for this purpose.
-  for (NodeId k = 1; k < present; ++k) tip_[out.parent(k)] = 0;
+  const std::size_t placed = out.size();
   // Stage nodes come in the given tree's order (place_nodes), so the organs are added in it.
-  for (NodeId k = 0; k < present; ++k) {
-    if (!tip_[k]) continue;
+  for (NodeId k = 0; k < placed; ++k) {
+    const std::uint32_t c = tip_chain_[k];
+    if (c == kNoChain) continue;
     const NodeId i = given_of_[k];
-    if (plan_[i].kind != OrganKind::kInternode) continue;
-    const std::uint32_t c = chain_[i];
-    if (chain_last_[c] == i) continue;  // the chain's own tip: its organs come when it is complete
-    const Eigen::Quaterniond q = state_[i].turned ? turn_[i] : Eigen::Quaterniond::Identity();
+    const Eigen::Quaterniond q = (flags_[i] & kTurned) ? turn_[i] : Eigen::Quaterniond::Identity();
     for (std::uint32_t o = tip_organ_start_[c]; o < tip_organ_start_[c + 1]; ++o) {
       NodeData d = tip_organs_[o];
-      d.order = static_cast<std::uint16_t>(level_[i] - 1);
-      d.birth_time = start_time_[i];
+      d.order = out.order(k);
+      d.birth_time = out.birth_time(k);
       d.start = out.end(k) + q * d.start;
       d.end = out.end(k) + q * d.end;
       d.direction = q * d.direction;
@@ -372,23 +379,36 @@ void DevelopmentalModel::add_tip_leaves(TreeGraph& out) const {
   }
 }
 
+// Eq. 5.5: the part of a lateral chain's turn still to come at its clock tc, about its base,
+// after the turn q of the nodes below. False when the node does not turn.
+bool DevelopmentalModel::bend(NodeId i, double tc, Eigen::Quaterniond& q) const {
+  const PlacePlan& a = plan_[i];
+  if (!a.chain_base || a.kind != OrganKind::kInternode) return false;
+  const BendPlan& b = bend_plan_[a.chain];
+  if (b.angle == 0.0 || !(tc < b.end)) return false;
+  const double span = std::max(b.end - a.start_time, 1e-12);
+  const double done = std::clamp((tc - a.start_time) / span, 0.0, 1.0);
+  q = q * Eigen::AngleAxisd(-(1.0 - done) * b.angle, b.axis);
+  return true;
+}
+
 // Forward, parents first: grown length, rotation (the bends of the chain bases above), position.
-// Reads one plan per node in id order (a stage streams through it; see build_plans()).
+// Reads one plan per node in id order (a stage streams through it; see build_plans()). Most
+// nodes of an early stage stop at their parent's flags, without reading their plan.
 void DevelopmentalModel::place_nodes(double t, TreeGraph& out) const {
   const std::size_t n = plan_.size();
-  state_.resize(n);
+  stage_id_.resize(n);
+  flags_.resize(n);
   turn_.resize(n);
   given_of_.resize(n);  // a stage holds each node of tree_ once at most
+  tip_chain_.resize(n);
+  const std::span<const NodeId> parents = tree_.parents();
   const bool shifted = !chain_shift_.empty();
   for (NodeId i = 0; i < n; ++i) {
-    // The parent first, from its own column: most nodes of an early stage stop here, without
-    // reading their plan.
-    const NodeId p = i == 0 ? kNoNode : tree_.parent(i);
-    NodeState& s = state_[i];
-    s.id = kNoNode;
-    s.complete = 0;
-    s.turned = 0;
-    if (p != kNoNode && !state_[p].complete) continue;  // absent or still growing
+    const NodeId p = i == 0 ? kNoNode : parents[i];
+    stage_id_[i] = kNoNode;
+    flags_[i] = 0;
+    if (p != kNoNode && !(flags_[p] & kComplete)) continue;  // absent or still growing
     const PlacePlan& a = plan_[i];
     const bool edge = a.kind == OrganKind::kInternode;
     double length = a.length;
@@ -400,38 +420,35 @@ void DevelopmentalModel::place_nodes(double t, TreeGraph& out) const {
       // At t = 1 every edge is complete (rounding must not leave one a hair short).
       if (tc < 1.0) length = std::min(reach, length);
     }
-    bool turned = p != kNoNode && state_[p].turned;
+    bool turned = p != kNoNode && (flags_[p] & kTurned);
     Eigen::Quaterniond q = turned ? turn_[p] : Eigen::Quaterniond::Identity();
-    if (edge && a.chain_base && bend_angle_[i] != 0.0 && tc < bend_end_[i]) {
-      // Eq. 5.5: the part of the turn still to come, about the base.
-      const double span = std::max(bend_end_[i] - a.start_time, 1e-12);
-      const double done = std::clamp((tc - a.start_time) / span, 0.0, 1.0);
-      q = q * Eigen::AngleAxisd(-(1.0 - done) * bend_angle_[i], bend_axis_[i]);
-      turned = true;
-    }
+    turned = bend(i, tc, q) || turned;
     if (turned) turn_[i] = q;  // read only under a turned node
     NodeData d;
     d.kind = a.kind;
     d.order = a.order;
-    d.birth_time = a.start_time;
-    if (shifted) d.birth_time -= birth_shift(i);
+    d.birth_time = shifted ? a.start_time - birth_shift(i) : a.start_time;
     d.physiological_age = a.age;
-    d.radius = a.radius;
     d.length = length;
-    const Eigen::Vector3d base = p == kNoNode ? root_start_ : state_[p].end;
+    const NodeId pk = p == kNoNode ? kNoNode : stage_id_[p];
+    const Eigen::Vector3d base = pk == kNoNode ? root_start_ : out.end(pk);
     d.direction = turned ? Eigen::Vector3d(q * a.heading) : a.heading;
-    d.start = base + (turned ? Eigen::Vector3d(q * a.offset) : a.offset);
+    d.start = base;
+    const SidePlan* side = a.side == kNoNode ? nullptr : &side_plan_[a.side];
+    if (side) d.start += turned ? Eigen::Vector3d(q * side->offset) : side->offset;
     if (edge) {
       d.end = d.start + length * d.direction;
     } else {
-      const Eigen::Vector3d span = tree_.end(i) - tree_.start(i);
-      d.end = d.start + (turned ? Eigen::Vector3d(q * span) : span);
+      d.radius = side->radius;
+      d.end = d.start + (turned ? Eigen::Vector3d(q * side->span) : side->span);
     }
-    s.end = d.end;  // the base of its children, without going through the stage's ids
-    s.id = out.add_node_unchecked(p == kNoNode ? kNoNode : state_[p].id, d);
-    given_of_[s.id] = i;
-    s.complete = !(length < a.length);
-    s.turned = turned;
+    const NodeId k = out.add_node_unchecked(pk, d);
+    stage_id_[i] = k;
+    given_of_[k] = i;
+    tip_chain_[k] = edge && !a.chain_last ? a.chain : kNoChain;
+    if (pk != kNoNode) tip_chain_[pk] = kNoChain;
+    flags_[i] =
+        static_cast<std::uint8_t>((length < a.length ? 0 : kComplete) | (turned ? kTurned : 0));
   }
 }
 
@@ -443,30 +460,31 @@ double DevelopmentalModel::birth_shift(NodeId i) const {
 
 // Backward, from the tips: radii by eq. 5.8 (r^u carried, so one root per inner edge). An edge
 // whose subtree is complete has its given radius, which eq. 5.8 gives back by construction of b.
+// Runs over the nodes place_nodes() put in `out` (stage ids follow the given tree's order).
 void DevelopmentalModel::set_radii(TreeGraph& out) const {
-  const double inv_u = 1.0 / params_.pipe_exponent;
+  const double inv_u = params_.pipe_exponent == 2.5 ? 0.0 : 1.0 / params_.pipe_exponent;
   below_.assign(out.size(), Below{});
-  for (NodeId i = static_cast<NodeId>(radius_plan_.size()); i-- > 0;) {
-    const NodeId k = state_[i].id;
+  for (NodeId k = static_cast<NodeId>(out.size()); k-- > 0;) {
+    const NodeId i = given_of_[k];
     const RadiusPlan& a = radius_plan_[i];
-    if (k == kNoNode || !a.edge) continue;
+    if (!a.edge) continue;
     const Below& b = below_[k];
-    const bool complete = state_[i].complete && b.complete_children == a.edge_children;
+    const bool complete = (flags_[i] & kComplete) && b.complete_children == a.edge_children;
     double r = a.radius, r_u = a.radius_pow;
     if (complete) {
       // the given radius
     } else if (b.has_child) {
       if (a.coefficient > 0.0) {
         r_u = b.sum / a.coefficient;
-        r = std::pow(r_u, inv_u);
+        r = pipe_root(r_u, inv_u);
       }
     } else if (a.coefficient > 0.0) {
       r = tip_radius_;  // a tip now that is not one in the given tree
       r_u = tip_radius_pow_;
     }
     out.set_radius(k, r);
-    if (i > 0) {
-      Below& up = below_[state_[a.parent].id];
+    if (k > 0) {
+      Below& up = below_[out.parent(k)];
       up.sum += r_u;
       up.has_child = 1;
       up.complete_children += complete ? 1u : 0u;
@@ -478,29 +496,35 @@ void DevelopmentalModel::set_radii(TreeGraph& out) const {
 // per node, so that place_nodes() and set_radii() each stream through one array.
 void DevelopmentalModel::build_plans() {
   const std::size_t n = tree_.size();
-  plan_.resize(n);
+  plan_.assign(n, PlacePlan{});
+  side_plan_.clear();
   radius_plan_.resize(n);
   root_start_ = tree_.start(0);
+  bend_plan_.assign(chain_rate_.size(), BendPlan{});
   for (NodeId i = 0; i < n; ++i) {
     const NodeId p = i == 0 ? kNoNode : tree_.parent(i);
     const bool edge = is_edge(tree_, i);
     PlacePlan& a = plan_[i];
-    a.offset = tree_.start(i) - (p == kNoNode ? tree_.start(0) : tree_.end(p));
+    const Eigen::Vector3d offset = tree_.start(i) - (p == kNoNode ? tree_.start(0) : tree_.end(p));
+    if (!edge || offset != Eigen::Vector3d::Zero()) {
+      a.side = static_cast<std::uint32_t>(side_plan_.size());
+      side_plan_.push_back({offset, tree_.end(i) - tree_.start(i), tree_.radius(i)});
+    }
     a.heading = edge ? heading_[i] : tree_.direction(i);
     a.length = tree_.length(i);
     a.chain_offset = offset_[i];
     a.start_time = start_time_[i];
-    a.radius = tree_.radius(i);
     a.chain = chain_[i];
     a.order = static_cast<std::uint16_t>(level_[i] - 1);
     a.age = tree_.physiological_age(i);
     a.kind = tree_.kind(i);
     a.chain_base = chain_base_[i];
+    a.chain_last = edge && chain_last_[a.chain] == i;
+    if (edge && a.chain_base) bend_plan_[a.chain] = {bend_axis_[i], bend_angle_[i], bend_end_[i]};
     RadiusPlan& r = radius_plan_[i];
     r.radius = tree_.radius(i);
     r.radius_pow = radius_pow_[i];
     r.coefficient = radius_coefficient_[i];
-    r.parent = p;
     r.edge_children = edge_children_[i];
     r.edge = edge;
   }

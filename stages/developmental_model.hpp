@@ -121,6 +121,7 @@ class DevelopmentalModel {
   void compute_bending();
   void compute_radius_coefficients();
   void place_nodes(double t, TreeGraph& out) const;
+  bool bend(NodeId i, double tc, Eigen::Quaterniond& q) const;
   void set_radii(TreeGraph& out) const;
   void add_tip_leaves(TreeGraph& out) const;
   void build_plans();
@@ -150,23 +151,36 @@ class DevelopmentalModel {
   std::vector<double> radius_pow_;            // r^u of the given tree
   std::vector<std::uint32_t> edge_children_;  // internode children in the given tree
   std::vector<Eigen::Vector3d> heading_;      // unit directions of the given tree
-  // What a stage reads per node, in one record (build_plans()).
-  struct PlacePlan {
-    Eigen::Vector3d offset;   // start minus the parent's end (0 at the root)
-    Eigen::Vector3d heading;  // unit heading of an internode, direction of an organ
-    double length = 0.0, chain_offset = 0.0, start_time = 0.0, radius = 0.0;
+  // What a stage reads per node, in one cache line (build_plans()); what only organs and nodes
+  // that do not start at their parent's end need is in a side record.
+  struct alignas(64) PlacePlan {
+    // What decides whether the node is present comes first.
     std::uint32_t chain = 0;
-    std::uint16_t order = 0, age = 1;
+    std::uint32_t side = kNoNode;  // index in side_plan_, kNoNode for none
     OrganKind kind = OrganKind::kInternode;
     std::uint8_t chain_base = 0;
+    std::uint16_t order = 0, age = 1;
+    std::uint8_t chain_last = 0;  // the last edge of its chain
+    double chain_offset = 0.0, length = 0.0, start_time = 0.0;
+    Eigen::Vector3d heading;  // unit heading of an internode, direction of an organ
+  };
+  struct SidePlan {
+    Eigen::Vector3d offset;  // start minus the parent's end
+    Eigen::Vector3d span;    // end minus start of an organ
+    double radius = 0.0;     // of an organ (set_radii gives the internodes theirs)
   };
   struct RadiusPlan {
     double radius = 0.0, radius_pow = 0.0, coefficient = 0.0;
-    NodeId parent = kNoNode;
     std::uint32_t edge_children = 0;
     std::uint8_t edge = 0;
   };
   std::vector<PlacePlan> plan_;
+  std::vector<SidePlan> side_plan_;
+  struct BendPlan {  // per chain, the bend of its base (eq. 5.5); angle 0 for none
+    Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
+    double angle = 0.0, end = 1.0;
+  };
+  std::vector<BendPlan> bend_plan_;
   std::vector<RadiusPlan> radius_plan_;
   // Per chain, the organs on its last edge in the given tree (5.3.7): their data with start and
   // end relative to that edge's end; chain c has tip_organs_[tip_organ_start_[c] ..
@@ -175,22 +189,21 @@ class DevelopmentalModel {
   std::vector<std::uint32_t> tip_organ_start_;
   Eigen::Vector3d root_start_ = Eigen::Vector3d::Zero();
   // Buffers of stage(), kept between calls (a slider computes stage after stage).
-  struct NodeState {
-    Eigen::Vector3d end;        // its end in the stage (when present)
-    NodeId id = kNoNode;        // id in the stage, kNoNode when absent
-    std::uint8_t complete = 0;  // grown to its full length
-    std::uint8_t turned = 0;    // turn_ holds its rotation
-  };
+  // Per node of tree_: its id in the stage (kNoNode when absent) and what its children read.
+  enum NodeFlag : std::uint8_t { kComplete = 1, kTurned = 2 };  // grown fully; turn_ holds q
   struct Below {  // per stage node: what its children give eq. 5.8
     double sum = 0.0;
     std::uint32_t complete_children = 0;
     std::uint8_t has_child = 0;
   };
-  mutable std::vector<NodeState> state_;
+  mutable std::vector<NodeId> stage_id_;
+  mutable std::vector<std::uint8_t> flags_;
   mutable std::vector<NodeId> given_of_;  // per stage node, the node of tree_ it stands for
   mutable std::vector<Eigen::Quaterniond> turn_;
   mutable std::vector<Below> below_;
-  mutable std::vector<std::uint8_t> tip_;
+  // Per stage node: its chain while it is an internode with nothing placed on it that is not its
+  // chain's last edge (it then carries its chain's tip organs, 5.3.7), else ~0.
+  mutable std::vector<std::uint32_t> tip_chain_;
   mutable TreeGraph grown_tree_;  // the stage with every added branch, before shedding
   mutable std::vector<NodeId> kept_id_;
 };

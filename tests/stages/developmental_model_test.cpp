@@ -138,6 +138,29 @@ TEST(DevelopmentalModel, RadiiFollowThePipeModelFromTheTips) {
   EXPECT_NEAR(late.radius(1), std::pow(std::pow(0.08, u) / b_mid, 1.0 / u), 1e-12);
 }
 
+// The root of eq. 5.8 to double precision at every scale of radius (millimetre twigs to a
+// giant's trunk, and beyond float's range), for the default u and for another.
+TEST(DevelopmentalModel, PipeModelRootHoldsAtEveryScale) {
+  for (const double u : {2.5, 2.0, 3.0}) {
+    for (const double scale : {1e-14, 1e-4, 1e-2, 1.0, 3.7, 1e3, 1e14}) {
+      TreeGraph t;
+      const NodeId root = edge(t, kNoNode, Eigen::Vector3d::UnitZ(), 1.0, 0.2 * scale);
+      const NodeId mid = edge(t, root, Eigen::Vector3d::UnitZ(), 1.0, 0.15 * scale);
+      edge(t, mid, Eigen::Vector3d::UnitZ(), 1.0, 0.08 * scale);
+      edge(t, root, at_angle(60), 1.0, 0.06 * scale);
+      StagesParams params;
+      params.pipe_exponent = u;
+      const DevelopmentalModel m(t, params);
+      const double b_root = (std::pow(0.15, u) + std::pow(0.06, u)) / std::pow(0.2, u);
+      const double tip = (0.08 + 0.06) / 2.0;
+      const double expected =
+          scale * std::pow((std::pow(tip, u) + std::pow(0.06, u)) / b_root, 1.0 / u);
+      const TreeGraph st = m.stage(0.55);
+      EXPECT_NEAR(st.radius(0) / expected, 1.0, 1e-13) << "u " << u << " scale " << scale;
+    }
+  }
+}
+
 TEST(DevelopmentalModel, ChildrenAlikeWithinFivePercentKeepTheLevel) {
   TreeGraph t;
   const NodeId root = edge(t, kNoNode, Eigen::Vector3d::UnitZ(), 1.0, 0.2);
