@@ -395,7 +395,7 @@ bool DevelopmentalModel::bend(NodeId i, double tc, Eigen::Quaterniond& q) const 
 // Forward, parents first: grown length, rotation (the bends of the chain bases above), position.
 // Reads one plan per node in id order (a stage streams through it; see build_plans()). Most
 // nodes of an early stage stop at their parent's flags, without reading their plan.
-void DevelopmentalModel::place_nodes(double t, TreeGraph& out) const {
+[[gnu::flatten]] void DevelopmentalModel::place_nodes(double t, TreeGraph& out) const {
   const std::size_t n = plan_.size();
   stage_id_.resize(n);
   flags_.resize(n);
