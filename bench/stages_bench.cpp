@@ -75,16 +75,40 @@ BENCHMARK(BM_Stage)
     ->Args({116, 100})
     ->Unit(benchmark::kMillisecond);
 
-// Peer in the same run: writing the given tree's nodes into a reused TreeGraph, node by node,
-// with nothing computed. A stage that writes its nodes as a TreeGraph cannot take less; the ratio
-// BM_Stage / this peer shows how much of a stage is the model rather than the writing.
+// A slider drawn from t = 0.01 to 1 in 100 steps, one stage each into the same tree graph: the
+// time per stage a user sees on average (most stages hold far fewer nodes than the last).
+void BM_StageSlider(benchmark::State& state) {
+  const TreeGraph& t = tree_for(static_cast<int>(state.range(0)));
+  const fspm::stages::DevelopmentalModel model(t);
+  constexpr int kSteps = 100;
+  TreeGraph out;
+  std::size_t nodes = 0;
+  for (auto _ : state) {
+    nodes = 0;
+    for (int s = 1; s <= kSteps; ++s) {
+      model.stage(static_cast<double>(s) / kSteps, out);
+      nodes += out.size();
+    }
+    benchmark::DoNotOptimize(nodes);
+  }
+  counters(state, t);
+  state.counters["mean_stage_nodes"] = static_cast<double>(nodes) / kSteps;
+  state.counters["stages"] = kSteps;  // the time shown is for all of them
+}
+BENCHMARK(BM_StageSlider)->Arg(43)->Unit(benchmark::kMillisecond);
+
+// Peer in the same run: writing the given tree's nodes into a reused TreeGraph, node by node
+// (TreeGraph::Appender, as a stage does), with nothing computed. A stage that writes its nodes as a
+// TreeGraph cannot take less; the ratio BM_Stage / this peer shows how much of a stage is the model
+// rather than the writing.
 void BM_StageCopyPeer(benchmark::State& state) {
   const TreeGraph& t = tree_for(static_cast<int>(state.range(0)));
   TreeGraph out;
   for (auto _ : state) {
     out.clear_keep_capacity();
-    out.reserve(t.size());
-    for (fspm::NodeId i = 0; i < t.size(); ++i) out.add_node_unchecked(t.parent(i), t.data(i));
+    TreeGraph::Appender append(out, t.size());
+    for (fspm::NodeId i = 0; i < t.size(); ++i) append.add(t.parent(i), t.data(i));
+    append.finish();
     benchmark::DoNotOptimize(out.size());
   }
   counters(state, t);

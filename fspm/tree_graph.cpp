@@ -68,6 +68,47 @@ void TreeGraph::reserve(std::size_t n) {
   for (Attribute& a : attributes_) a.values.reserve(n);
 }
 
+TreeGraph::Appender::Appender(TreeGraph& graph, std::size_t expected_nodes)
+    : graph_(&graph), next_(static_cast<NodeId>(graph.size())) {
+  open(graph.size() + std::max<std::size_t>(expected_nodes, 1));
+}
+
+void TreeGraph::Appender::open(std::size_t slots) {
+  TreeGraph& g = *graph_;
+  resize_columns(slots, g.parent_, g.first_child_, g.last_child_, g.next_sibling_, g.start_, g.end_,
+                 g.direction_, g.length_, g.radius_, g.birth_time_, g.physiological_age_, g.order_,
+                 g.kind_);
+  for (Attribute& a : g.attributes_) a.values.resize(slots, a.default_value);
+  parent_ = g.parent_.data();
+  first_child_ = g.first_child_.data();
+  last_child_ = g.last_child_.data();
+  next_sibling_ = g.next_sibling_.data();
+  start_ = g.start_.data();
+  end_point_ = g.end_.data();
+  direction_ = g.direction_.data();
+  length_ = g.length_.data();
+  radius_ = g.radius_.data();
+  birth_time_ = g.birth_time_.data();
+  physiological_age_ = g.physiological_age_.data();
+  order_ = g.order_.data();
+  kind_ = g.kind_.data();
+  end_ = static_cast<NodeId>(slots);
+  open_ = true;
+}
+
+void TreeGraph::Appender::grow() { open(2 * static_cast<std::size_t>(end_) + 1); }
+
+void TreeGraph::Appender::finish() {
+  if (!open_) return;
+  TreeGraph& g = *graph_;
+  resize_columns(next_, g.parent_, g.first_child_, g.last_child_, g.next_sibling_, g.start_, g.end_,
+                 g.direction_, g.length_, g.radius_, g.birth_time_, g.physiological_age_, g.order_,
+                 g.kind_);
+  for (Attribute& a : g.attributes_) a.values.resize(next_);
+  end_ = next_;  // a later add() opens the columns again
+  open_ = false;
+}
+
 void TreeGraph::clear() { *this = TreeGraph(); }
 
 void TreeGraph::clear_keep_capacity() {
@@ -220,8 +261,8 @@ NodeId TreeGraph::append_subtree(NodeId parent, const TreeGraph& other) {
 
 namespace {
 
-template <typename T>
-bool bitwise_equal(const std::vector<T>& a, const std::vector<T>& b) {
+template <typename T, typename Allocator>
+bool bitwise_equal(const std::vector<T, Allocator>& a, const std::vector<T, Allocator>& b) {
   return a.size() == b.size() &&
          (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
 }

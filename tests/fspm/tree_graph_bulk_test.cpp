@@ -1,4 +1,4 @@
-// The bulk-building additions to TreeGraph (add_node_unchecked, clear_keep_capacity,
+// The bulk-building additions to TreeGraph (add_node_unchecked, Appender, clear_keep_capacity,
 // advise_huge_pages) against the checked add_node path as the oracle.
 #include <gtest/gtest.h>
 
@@ -74,6 +74,55 @@ TEST(TreeGraphBulk, ClearKeepCapacityRebuildsLikeNew) {
   }
   EXPECT_TRUE(reused.identical(fresh));
   EXPECT_EQ(reused.capacity(), capacity);  // no reallocation: 3000 <= capacity
+}
+
+// The appender against add_node as the oracle: into an empty graph and after existing nodes,
+// with fewer, exactly as many and more nodes than it expected, attributes taking their defaults.
+TEST(TreeGraphBulk, AppenderEqualsCheckedAdd) {
+  const auto rows = random_rows(3000, 11);
+  for (const std::size_t expected : {std::size_t{0}, std::size_t{1}, std::size_t{700},
+                                     rows.size() - 1000, rows.size(), 5 * rows.size()}) {
+    TreeGraph checked, appended;
+    checked.add_attribute("light", 0.25);
+    appended.add_attribute("light", 0.25);
+    for (std::size_t r = 0; r < 1000; ++r) {  // existing nodes, added one by one
+      checked.add_node(rows[r].first, rows[r].second);
+      appended.add_node(rows[r].first, rows[r].second);
+    }
+    {
+      TreeGraph::Appender append(appended, expected);
+      for (std::size_t r = 1000; r < rows.size(); ++r) {
+        checked.add_node(rows[r].first, rows[r].second);
+        EXPECT_EQ(append.add(rows[r].first, rows[r].second), r);
+        EXPECT_EQ(appended.parent(static_cast<NodeId>(r)), rows[r].first);  // readable at once
+      }
+      EXPECT_EQ(append.size(), rows.size());
+    }  // finished here
+    EXPECT_TRUE(appended.identical(checked)) << expected;
+    EXPECT_EQ(appended.attribute("light")[2999], 0.25);
+  }
+}
+
+TEST(TreeGraphBulk, AppenderDropsUnusedSlotsAndAddsAgainAfterFinish) {
+  const auto rows = random_rows(300, 5);
+  TreeGraph checked, appended;
+  TreeGraph::Appender append(appended, 1000);
+  for (std::size_t r = 0; r < 100; ++r) {
+    append.add(rows[r].first, rows[r].second);
+    checked.add_node(rows[r].first, rows[r].second);
+  }
+  append.finish();
+  EXPECT_EQ(appended.size(), 100u);
+  EXPECT_TRUE(appended.identical(checked));
+  for (std::size_t r = 100; r < rows.size(); ++r) {
+    append.add(rows[r].first, rows[r].second);
+    checked.add_node(rows[r].first, rows[r].second);
+  }
+  append.finish();
+  EXPECT_TRUE(appended.identical(checked));
+  // An empty appender leaves the graph as it was.
+  { TreeGraph::Appender idle(appended, 50); }
+  EXPECT_TRUE(appended.identical(checked));
 }
 
 }  // namespace
