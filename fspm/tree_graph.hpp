@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "fspm/dcheck.hpp"
-#include "fspm/default_init_allocator.hpp"
+#include "fspm/uninitialized_allocator.hpp"
 
 namespace fspm {
 
@@ -267,10 +267,10 @@ class TreeGraph {
   };
   const Attribute* find_attribute(std::string_view name) const;
 
-  // Columns grow without zeros (DefaultInitAllocator): only Appender grows them by resize(),
+  // Columns grow without zeros (UninitializedAllocator): only Appender grows them by resize(),
   // and it writes every slot it keeps.
   template <typename T>
-  using Column = std::vector<T, DefaultInitAllocator<T>>;
+  using Column = std::vector<T, UninitializedAllocator<T>>;
   Column<NodeId> parent_, first_child_, last_child_, next_sibling_;
   Column<Eigen::Vector3d> start_, end_, direction_;
   Column<double> length_, radius_, birth_time_;
