@@ -312,8 +312,7 @@ TreeGraph DevelopmentalModel::stage(double t) const {
 void DevelopmentalModel::stage(double t, TreeGraph& out) const {
   t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0);
   TreeGraph& grown = added_.copies > 0 ? grown_tree_ : out;
-  grown.clear_keep_capacity();
-  grown.reserve(tree_.size());
+  grown.clear_keep_capacity();  // place_nodes() sizes its columns once (TreeGraph::Appender)
   place_nodes(t, grown);
   // Pirk 5.3.6: the branches shed later still count in the radii (eq. 5.8), so removing them
   // leaves the radii below unchanged.
@@ -394,7 +393,8 @@ bool DevelopmentalModel::bend(NodeId i, double tc, Eigen::Quaterniond& q) const 
 
 // Forward, parents first: grown length, rotation (the bends of the chain bases above), position.
 // Reads one plan per node in id order (a stage streams through it; see build_plans()). Most
-// nodes of an early stage stop at their parent's flags, without reading their plan.
+// nodes of an early stage stop at their parent's flags, without reading their plan. Flattened:
+// GCC would otherwise call the appender and the bend check out of line for every node.
 [[gnu::flatten]] void DevelopmentalModel::place_nodes(double t, TreeGraph& out) const {
   const std::size_t n = plan_.size();
   stage_id_.resize(n);
