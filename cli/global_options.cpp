@@ -1,12 +1,17 @@
 #include "cli/global_options.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <CLI/CLI.hpp>
 #include <memory>
 #include <string>
 
 #include "cli/output.hpp"
 #include "fspm/error.hpp"
+#include "fspm/length_unit.hpp"
 #include "fspm/memory_budget.hpp"
+#include "fspm/mtg_tree.hpp"
+#include "fspm/warning.hpp"
 
 namespace fspm::cli {
 namespace {
@@ -16,7 +21,36 @@ struct GlobalValues {
   bool quiet = false;
   bool json = false;
   std::string memory_limit;
+  // How MTG files are read, by every command that reads one (docs/formats.md, "MTG").
+  std::string length_unit;
+  std::string diameter_unit;
+  int mtg_scale = -1;
+  std::string plant;
 };
+
+MtgTreeOptions mtg_options(const GlobalValues& v) {
+  MtgTreeOptions o;
+  if (!v.length_unit.empty()) o.length_unit = length_unit_from_name(v.length_unit, "--length-unit");
+  if (!v.diameter_unit.empty()) {
+    o.diameter_unit = length_unit_from_name(v.diameter_unit, "--diameter-unit");
+  }
+  o.scale = v.mtg_scale;
+  o.plant = v.plant;
+  return o;
+}
+
+void add_mtg_options(CLI::App& app, GlobalValues& values) {
+  app.add_option("--length-unit", values.length_unit,
+                 "Unit of lengths and coordinates in MTG files: m, dm, cm or mm (default m)");
+  app.add_option("--diameter-unit", values.diameter_unit,
+                 "Unit of diameters and radii in MTG files: m, dm, cm or mm (default: the "
+                 "length unit)");
+  app.add_option("--mtg-scale", values.mtg_scale,
+                 "Scale of an MTG file whose entities become the tree's nodes (default: the "
+                 "finest with geometry)");
+  app.add_option("--plant", values.plant,
+                 "Keep one plant of a multi-plant MTG file: its label (P2) or number (2)");
+}
 
 // The command that runs: the deepest subcommand on the command line so far, and its words
 // ("tree info"); null when no command was named.
@@ -62,6 +96,7 @@ void add_global_options(CLI::App& app) {
   app.add_option("--memory-limit", values->memory_limit,
                  "Largest memory a command may plan to use: 512M, 2G ... (default: half of the "
                  "physical memory)");
+  add_mtg_options(app, *values);
   app.add_flag("--json", values->json,
                "Machine-readable JSON on stdout, for the commands that offer it (same as the "
                "command's own --json)");
@@ -71,9 +106,11 @@ void add_global_options(CLI::App& app) {
     if (!values->memory_limit.empty()) {
       set_memory_limit_bytes(parse_memory_size(values->memory_limit, "--memory-limit"));
     }
+    set_default_mtg_tree_options(mtg_options(*values));
     if (values->json) pass_json_to_command(app);
   });
   app.fallthrough();
+  set_warning_handler([](const std::string& message) { spdlog::warn("{}", message); });
   app.failure_message(failure_line);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// Options of the whole command line (-v, -q, --memory-limit, --json), accepted before the command
-// and after it, and the check every option of every command shares (no empty values).
+// Options of the whole command line (-v, -q, --memory-limit, --json, and how MTG files are read:
+// --length-unit, --diameter-unit, --mtg-scale, --plant), accepted before the command and after it,
+// and the check every option of every command shares (no empty values).
 namespace CLI {
 class App;
 }

@@ -11,6 +11,8 @@
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
 #include "fspm/attribute_names.hpp"
+#include "fspm/mtg_tree.hpp"
+#include "fspm/plant_frame.hpp"
 #include "fspm/tree_file.hpp"
 #include "fspm/tree_summary.hpp"
 #include "scans/grouped_mesh_skeleton.hpp"
@@ -59,6 +61,18 @@ nlohmann::json summary_json(const std::string& file, const TreeGraph& tree) {
                       {"bbox_max", {s.bbox_max.x(), s.bbox_max.y(), s.bbox_max.z()}},
                       {"attributes", tree.attribute_names()}};
   if (tree.has_attribute(kPrunedAttribute)) j["pruned"] = pruned_count(tree);
+  // A measured plant (MTG) whose file lacks part of its geometry: how much was inferred.
+  if (tree.has_attribute("inferred")) {
+    const auto inferred = tree.attribute("inferred");
+    std::size_t positions = 0, radii = 0;
+    for (double v : inferred) {
+      const auto bits = static_cast<unsigned>(v);
+      positions += (bits & kInferredPosition) != 0;
+      radii += (bits & kInferredRadius) != 0;
+    }
+    j["positions_inferred"] = positions;
+    j["radii_inferred"] = radii;
+  }
   return j;
 }
 
@@ -72,7 +86,7 @@ void run_info(const InfoOptions& o) {
   // Text for reading: lengths in metres to the centimetre, counts as they are.
   std::cout << o.file << '\n';
   for (const char* key : {"nodes", "internodes", "leaves", "flowers", "buds", "tips", "max_order",
-                          "max_depth", "pruned"}) {
+                          "max_depth", "pruned", "positions_inferred", "radii_inferred"}) {
     if (j.contains(key)) std::cout << "  " << key << ": " << j[key].dump() << '\n';
   }
   for (const char* key : {"height", "total_length", "crown_width", "crown_depth"}) {
@@ -93,6 +107,18 @@ void warn_of_dropped_names(const NamedTree& named, const ConvertOptions& o) {
                named_nodes, o.out);
 }
 
+// Where a converted tree came from, and in which units an MTG was read.
+std::string source_comment(const ConvertOptions& o, bool mesh) {
+  std::string comment = "converted by fspm from " + std::filesystem::path(o.in).filename().string();
+  if (!mesh && tree_format_for(o.in, o.from) == TreeFormat::kMtg) {
+    const MtgTreeOptions m = default_mtg_tree_options();
+    comment += fmt::format("; MTG lengths read in {}, diameters in {}, written in m",
+                           length_unit_name(m.length_unit),
+                           length_unit_name(m.diameter_unit.value_or(m.length_unit)));
+  }
+  return comment;
+}
+
 void run_convert(const ConvertOptions& o) {
   refuse_overwriting_input(o.out, {o.in});
   // A grouped mesh (one OBJ group or glTF node per branch) gives its skeleton (Reynolds et al.
@@ -102,7 +128,7 @@ void run_convert(const ConvertOptions& o) {
   const NamedTree named =
       mesh ? NamedTree{scans::grouped_mesh_skeleton(scans::read_mesh_file(o.in, o.from), o.in), {}}
            : read_named_tree_file(o.in, o.from);
-  write_named_tree_file(named, o.out, o.to);
+  write_named_tree_file(named, o.out, o.to, source_comment(o, mesh));
   warn_of_dropped_names(named, o);
   spdlog::info("wrote {} ({} nodes)", o.out, named.tree.size());
 }

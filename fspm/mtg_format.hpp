@@ -3,18 +3,13 @@
 //
 // Export: one plant `P1` at scale 1 decomposed into internodes `I`, leaves `L`, flowers `F` and
 // buds `B` at scale 2, with `<` for the successor on the same axis and `+` for branches.
-// Features: XX YY ZZ (node end), Length, Radius, BirthTime, Order, and every user attribute.
+// Features: XX YY ZZ (node end), Length, Radius, BirthTime, Order, Organ (leaf, flower, bud;
+// empty for an internode), and every user attribute except those an import derives from the
+// MTG itself (class, index, inferred, <S>_index).
 //
-// Import: the entities of the finest scale become the tree's nodes, whatever the coarser scales
-// (plants, growth units, axes) that decompose them; `<` and `+` give the topology, `^` refers to
-// the last entity of the same column and `/` to a component's complex. Symbols L, F and B are
-// leaves, flowers and buds, every other symbol an internode. Geometry from the features XX YY ZZ
-// (the entity's top), Length, Radius (or Diameter, TopDia: halved), BirthTime and Order; an
-// entity without coordinates is drawn by a turtle (continuing its predecessor, branches at 45
-// degrees, turned 137.5 degrees per node along the axis) with its Length or 1. Other numeric
-// features become attributes, and so do the label numbers: "index" (the node's own) and "<S>_index"
-// per coarser symbol S (U_index: the growth unit an internode belongs to). One tree per file: a
-// second finest-scale root is an error; plants without components give an empty tree.
+// Import (parse_mtg): read_mtg (fspm/mtg_reader.hpp) then mtg_to_tree (fspm/mtg_tree.hpp) with
+// the default options (set_default_mtg_tree_options): one scale of the multiscale graph, its
+// geometry measured or inferred, its features as attributes. docs/formats.md has the details.
 #include <iosfwd>
 #include <string>
 #include <string_view>

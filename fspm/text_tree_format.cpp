@@ -105,12 +105,17 @@ class Reader {
 
 }  // namespace
 
-void write_tree_text(const TreeGraph& tree, std::ostream& out) {
+void write_tree_text(const TreeGraph& tree, std::ostream& out, std::string_view comment) {
   const std::vector<std::string> names = tree.attribute_names();
   std::vector<std::span<const double>> columns;
   std::string buf;
   buf += kMagic;
   buf += ' ' + std::to_string(kTextTreeFormatVersion) + '\n';
+  if (!comment.empty()) {
+    buf += "# ";
+    for (char c : comment) buf += c == '\n' ? ' ' : c;
+    buf += '\n';
+  }
   buf += "nodes " + std::to_string(tree.size()) + '\n';
   for (const std::string& name : names) {
     if (!valid_attribute_name(name)) {

@@ -4,6 +4,7 @@
 // the shortest form that reads back to the identical double, so a round trip is bit-exact.
 #include <iosfwd>
 #include <string>
+#include <string_view>
 
 #include "fspm/tree_graph.hpp"
 
@@ -11,7 +12,9 @@ namespace fspm {
 
 inline constexpr int kTextTreeFormatVersion = 1;
 
-void write_tree_text(const TreeGraph& tree, std::ostream& out);
+// `comment` (where the tree came from: the file, its units) is written as a '#' line after the
+// magic line; readers skip it.
+void write_tree_text(const TreeGraph& tree, std::ostream& out, std::string_view comment = {});
 // `source` names the input in error messages (a file path or "<stdin>").
 TreeGraph read_tree_text(std::istream& in, const std::string& source);
 

@@ -69,14 +69,14 @@ TreeGraph read_tree_file(const std::string& path, std::string_view format) {
 namespace {
 
 void write_tree_format(const TreeGraph& tree, std::span<const std::string> names,
-                       const std::string& path, TreeFormat f) {
+                       const std::string& path, TreeFormat f, std::string_view comment) {
   require_finite_geometry(tree, path);
   write_file_atomically(
       path,
       [&](std::ostream& out) {
         switch (f) {
           case TreeFormat::kText:
-            write_tree_text(tree, out);
+            write_tree_text(tree, out, comment);
             break;
           case TreeFormat::kBinary:
             write_tree_binary(tree, out);
@@ -95,7 +95,7 @@ void write_tree_format(const TreeGraph& tree, std::span<const std::string> names
 }  // namespace
 
 void write_tree_file(const TreeGraph& tree, const std::string& path, std::string_view format) {
-  write_tree_format(tree, {}, path, tree_format_for(path, format));
+  write_tree_format(tree, {}, path, tree_format_for(path, format), {});
 }
 
 bool tree_format_keeps_names(TreeFormat format) { return format == TreeFormat::kNewick; }
@@ -108,12 +108,12 @@ NamedTree read_named_tree_file(const std::string& path, std::string_view format)
   return parse_newick_named(text, path);
 }
 
-void write_named_tree_file(const NamedTree& named, const std::string& path,
-                           std::string_view format) {
+void write_named_tree_file(const NamedTree& named, const std::string& path, std::string_view format,
+                           std::string_view comment) {
   const TreeFormat f = tree_format_for(path, format);
   const std::span<const std::string> names =
       tree_format_keeps_names(f) ? named.names : std::span<const std::string>{};
-  write_tree_format(named.tree, names, path, f);
+  write_tree_format(named.tree, names, path, f, comment);
 }
 
 }  // namespace fspm

@@ -27,8 +27,9 @@ bool tree_format_keeps_names(TreeFormat format);
 // The tree and its node names: from Newick, as parse_newick_named gives them; from the other
 // formats, which carry no names, an empty `names`.
 NamedTree read_named_tree_file(const std::string& path, std::string_view format = {});
-// Writes the names where the format carries them (Newick) and drops them otherwise.
+// Writes the names where the format carries them (Newick) and drops them otherwise; `comment`
+// (the tree's source and units) goes into formats that keep comments (.tree).
 void write_named_tree_file(const NamedTree& named, const std::string& path,
-                           std::string_view format = {});
+                           std::string_view format = {}, std::string_view comment = {});
 
 }  // namespace fspm

@@ -150,6 +150,7 @@ void Fields<C>::finish(C (*base)(py::dict& values)) {
 
 void bind_errors(py::module_& m);
 void bind_tree(py::module_& m);
+void bind_mtg(py::module_& m);
 void bind_distance(py::module_& m);
 void bind_greenlab(py::module_& m);
 void bind_experiments(py::module_& m);

@@ -11,6 +11,7 @@ PYBIND11_MODULE(_fspm, m) {
   python::bind_errors(m);
   python::bind_calibration(m);
   python::bind_tree(m);
+  python::bind_mtg(m);
   python::bind_distance(m);
   python::bind_greenlab(m);
   python::bind_experiments(m);

@@ -6,7 +6,7 @@ same messages as the command line; long computations release the GIL.
 
 Families (names follow the C++ API):
 
-* trees: ``read_tree``, ``write_tree``, ``parse_newick``, ``Tree.from_arrays``, ``distance``
+* trees: ``read_tree``, ``write_tree``, ``read_mtg`` (an ``Mtg``: ``to_dataframe``, ``to_tree``), ``parse_newick``, ``Tree.from_arrays``, ``distance``
 * L-systems: ``lsystem_derive``, ``lsystem_interpret``, ``lsystem_plant`` (a ``CompressedPlant``
   with turtle geometry)
 * GreenLab: ``greenlab_simulate``, ``greenlab_reconstruct``, ``greenlab_reconstruct_lines``
@@ -44,6 +44,7 @@ from ._fspm import (  # noqa: F401
     MannWhitneyResult,
     MemoryLimitError,
     MeshOptions,
+    Mtg,
     ParseError,
     PlantParams,
     Scene,
@@ -97,6 +98,7 @@ from ._fspm import (  # noqa: F401
     read_scene_file,
     read_targets_csv,
     read_tree,
+    read_mtg,
     remove_pruned,
     render_available,
     render_mesh,
@@ -159,6 +161,18 @@ def read_results(directory):
     except ImportError:
         return [dict(zip(columns, r)) for r in rows]
     return pandas.DataFrame(rows, columns=columns)
+
+
+def _mtg_to_dataframe(self, scale):
+    """The entities of one scale as a pandas DataFrame: one row an entity (vertex, label, symbol,
+    index, complex, parent, edge), one column a feature (numbers as floats, NaN where empty;
+    dates and text as strings)."""
+    import pandas
+
+    return pandas.DataFrame(self.columns(scale))
+
+
+Mtg.to_dataframe = _mtg_to_dataframe
 
 
 _xvfb = None

@@ -1,0 +1,206 @@
+#include "fspm/mtg_writer.hpp"
+
+#include <algorithm>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace fspm {
+namespace {
+
+// One line of the code: its column, code and the entity whose features it carries.
+struct CodeLine {
+  int column = 0;
+  std::string code;
+  MtgVertex vertex = kNoMtgVertex;
+  std::size_t observation = static_cast<std::size_t>(-1);
+};
+
+class MtgWriter {
+ public:
+  explicit MtgWriter(const Mtg& mtg) : mtg_(mtg), attached_(mtg.size()), observed_(mtg.size()) {
+    for (std::size_t k = 0; k < mtg.observations.size(); ++k) {
+      observed_[mtg.observations[k].vertex].push_back(k);
+    }
+  }
+
+  void write(std::ostream& out) {
+    attach_coarse_entities();
+    for (MtgVertex v = 1; v < mtg_.size(); ++v) {
+      if (mtg_.components(v).empty() && is_start(v)) walk(v);
+    }
+    write_header(out);
+    write_code(out);
+  }
+
+ private:
+  bool decomposed(MtgVertex v) const { return !mtg_.components(v).empty(); }
+
+  // The component of x that starts its decomposition: one whose parent is not in x.
+  MtgVertex first_component(MtgVertex x) const {
+    for (MtgVertex c : mtg_.components(x)) {
+      if (mtg_.parent(c) == kNoMtgVertex || mtg_.complex(mtg_.parent(c)) != x) return c;
+    }
+    return mtg_.components(x).front();
+  }
+  MtgVertex first_leaf(MtgVertex x) const {
+    while (decomposed(x)) x = first_component(x);
+    return x;
+  }
+  // The last entity without components along x's first axis (its successors inside x).
+  MtgVertex anchor(MtgVertex x) const {
+    MtgVertex w = first_leaf(x);
+    for (bool more = true; more;) {
+      more = false;
+      for (MtgVertex c : mtg_.children(w)) {
+        if (mtg_.edge(c) == MtgEdge::kSuccessor && mtg_.complex_at_scale(c, mtg_.scale(x)) == x) {
+          w = first_leaf(c);
+          more = true;
+          break;
+        }
+      }
+    }
+    return w;
+  }
+
+  // The complexes that a leaf entity starts (it is the first component of each), coarsest
+  // first, then the leaf itself.
+  std::vector<MtgVertex> chain(MtgVertex w) const {
+    std::vector<MtgVertex> c{w};
+    for (MtgVertex x = w; mtg_.complex(x) != Mtg::root() && mtg_.complex(x) != kNoMtgVertex;) {
+      const MtgVertex up = mtg_.complex(x);
+      if (first_component(up) != x) break;
+      c.push_back(up);
+      x = up;
+    }
+    std::reverse(c.begin(), c.end());
+    return c;
+  }
+
+  // A leaf that starts a plant, or a series whose top entity has no parent to be reached from.
+  bool is_start(MtgVertex w) const {
+    const std::vector<MtgVertex> c = chain(w);
+    return mtg_.parent(c.front()) == kNoMtgVertex && mtg_.complex(c.front()) == Mtg::root();
+  }
+
+  // Entities reached from a decomposed parent other than through the finest scale (coarse
+  // entities without components, complexes whose first leaf has no parent) are written after
+  // the parent's last leaf on its first axis.
+  void attach_coarse_entities() {
+    for (MtgVertex y = 1; y < mtg_.size(); ++y) {
+      const MtgVertex x = mtg_.parent(y);
+      if (x == kNoMtgVertex || !decomposed(x)) continue;
+      if (decomposed(y) && mtg_.parent(first_leaf(y)) != kNoMtgVertex) continue;
+      attached_[anchor(x)].push_back(y);
+    }
+  }
+
+  // The entities to write after leaf w: its children (or their first leaves), attached ones.
+  std::vector<MtgVertex> next_of(MtgVertex w) const {
+    std::vector<MtgVertex> next;
+    for (MtgVertex c : mtg_.children(w)) next.push_back(decomposed(c) ? first_leaf(c) : c);
+    for (MtgVertex y : attached_[w]) next.push_back(decomposed(y) ? first_leaf(y) : y);
+    return next;
+  }
+
+  struct Item {
+    MtgVertex leaf;
+    int column;
+    bool opening;  // the first line of a new column (no '^')
+    char tag;
+  };
+
+  void walk(MtgVertex start) {
+    std::vector<Item> stack{{start, 0, true, '/'}};
+    while (!stack.empty()) {
+      const Item it = stack.back();
+      stack.pop_back();
+      emit(it);
+      std::vector<MtgVertex> branches;
+      MtgVertex successor = kNoMtgVertex;
+      for (MtgVertex n : next_of(it.leaf)) {
+        const MtgVertex top = chain(n).front();
+        if (mtg_.edge(top) == MtgEdge::kSuccessor && successor == kNoMtgVertex) {
+          successor = n;
+        } else {
+          branches.push_back(n);
+        }
+      }
+      if (successor != kNoMtgVertex) stack.push_back({successor, it.column, false, '<'});
+      for (auto b = branches.rbegin(); b != branches.rend(); ++b) {
+        stack.push_back({*b, it.column + 1, true, '+'});
+      }
+    }
+  }
+
+  void emit(const Item& it) {
+    const std::vector<MtgVertex> c = chain(it.leaf);
+    for (std::size_t j = 0; j < c.size(); ++j) {
+      std::string code = (j == 0 && it.opening) ? "" : "^";
+      code += j == 0 ? it.tag : '/';
+      code += mtg_.label(c[j]);
+      lines_.push_back({it.column, std::move(code), c[j]});
+      for (std::size_t k : observed_[c[j]]) lines_.push_back({it.column, "*", c[j], k});
+      columns_ = std::max(columns_, it.column + 1);
+    }
+  }
+
+  void write_header(std::ostream& out) const {
+    out << "CODE:\t" << mtg_.code_form << "\n\nCLASSES:\nSYMBOL\tSCALE\tDECOMPOSITION\tINDEXATION"
+        << "\tDEFINITION\n";
+    for (const MtgClass& c : mtg_.classes) {
+      out << c.symbol << '\t' << c.scale << '\t' << c.decomposition << '\t' << c.indexation << '\t'
+          << c.definition << '\n';
+    }
+    out << "\nDESCRIPTION:\nLEFT\tRIGHT\tRELTYPE\tMAX\n";
+    for (const MtgRelationRule& r : mtg_.description) {
+      out << r.left << '\t';
+      for (std::size_t k = 0; k < r.right.size(); ++k) out << (k ? "," : "") << r.right[k];
+      out << '\t' << r.relation << '\t' << r.max << '\n';
+    }
+    out << "\nFEATURES:\nNAME\tTYPE\n";
+    for (const MtgFeature& f : mtg_.features()) {
+      out << f.name << '\t' << mtg_feature_type_name(f.type);
+      if (!f.argument.empty()) out << '\t' << f.argument;
+      out << '\n';
+    }
+  }
+
+  void write_code(std::ostream& out) const {
+    const int columns = std::max(columns_, 1);
+    out << "\nMTG:\nENTITY-CODE" << std::string(static_cast<std::size_t>(columns), '\t');
+    for (std::size_t f = 0; f < mtg_.features().size(); ++f) {
+      out << (f ? "\t" : "") << mtg_.features()[f].name;
+    }
+    out << '\n';
+    std::string line;
+    for (const CodeLine& l : lines_) {
+      line.assign(static_cast<std::size_t>(l.column), '\t');
+      line += l.code;
+      line.append(static_cast<std::size_t>(columns - l.column), '\t');
+      for (std::size_t f = 0; f < mtg_.features().size(); ++f) {
+        if (f) line += '\t';
+        if (l.observation != static_cast<std::size_t>(-1)) {
+          line += mtg_.observations[l.observation].values[f];
+        } else {
+          line += mtg_.feature_text(l.vertex, f);
+        }
+      }
+      while (!line.empty() && line.back() == '\t') line.pop_back();
+      line += '\n';
+      out << line;
+    }
+  }
+
+  const Mtg& mtg_;
+  std::vector<std::vector<MtgVertex>> attached_;
+  std::vector<std::vector<std::size_t>> observed_;
+  std::vector<CodeLine> lines_;
+  int columns_ = 0;
+};
+
+}  // namespace
+
+void write_mtg(const Mtg& mtg, std::ostream& out) { MtgWriter(mtg).write(out); }
+
+}  // namespace fspm
