@@ -65,6 +65,12 @@ class CodeReader {
   void read() {
     const std::size_t k = read_column_header();
     for (std::size_t i = k + 1; i < lines_.size(); ++i) read_line(lines_[i]);
+    if (tokens_.empty()) {
+      split_tabs(lines_[k].text, cells_);
+      fail("the MTG: table has no entity after its " + std::string(trim(cells_[0])) +
+               " header (is the file truncated?)",
+           lines_[k].number);
+    }
     close_open_branches();
     for (const Token& t : tokens_) edit(t);
     type_undeclared_features();
@@ -154,10 +160,10 @@ class CodeReader {
     std::size_t end = 0;
     while (end < code.size() && !is_blank(code[end])) ++end;
     code = code.substr(0, end);
-    const int column = static_cast<int>(code.data() - text.data()) + 1;
     const int indent = static_cast<int>(cell);
     const std::size_t row = store_row(line);
-    place_in_columns(code, indent, line, column);
+    place_in_columns(code, indent, line, static_cast<int>(code.data() - text.data()) + 1);
+    const int column = static_cast<int>(code.data() - text.data()) + 1;  // after a '^
     if (code.front() == '*') {
       if (code.size() > 1) {
         fail("entity code '" + std::string(code) +

@@ -90,17 +90,10 @@ class HeaderReader {
     throw ParseError(
         "no 'MTG:' section: expected an MTG coding file (CODE:, CLASSES:, DESCRIPTION:, "
         "FEATURES: and MTG: sections)",
-        file_, last_line_with_text());
+        file_, 1);
   }
 
  private:
-  int last_line_with_text() const {
-    for (auto it = lines_.rbegin(); it != lines_.rend(); ++it) {
-      if (!trim(it->text).empty()) return it->number;
-    }
-    return 1;
-  }
-
   std::size_t finish(std::size_t k) {
     if (mtg_.classes.size() <= 1) {
       warn(lines_[k],

@@ -18,7 +18,8 @@ struct CodeLine {
 
 class MtgWriter {
  public:
-  explicit MtgWriter(const Mtg& mtg) : mtg_(mtg), attached_(mtg.size()), observed_(mtg.size()) {
+  explicit MtgWriter(const Mtg& mtg)
+      : mtg_(mtg), attached_(mtg.size()), detached_(mtg.size()), observed_(mtg.size()) {
     for (std::size_t k = 0; k < mtg.observations.size(); ++k) {
       observed_[mtg.observations[k].vertex].push_back(k);
     }
@@ -83,15 +84,20 @@ class MtgWriter {
     return mtg_.parent(c.front()) == kNoMtgVertex && mtg_.complex(c.front()) == Mtg::root();
   }
 
-  // Entities reached from a decomposed parent other than through the finest scale (coarse
-  // entities without components, complexes whose first leaf has no parent) are written after
-  // the parent's last leaf on its first axis.
+  // Entities reached from a decomposed parent other than through the finest scale: coarse
+  // entities without components are written after the parent's last leaf on its first axis
+  // (the reader climbs from there to their scale); complexes whose first leaf has no parent
+  // after the parent itself, its components bracketed in the next column (so the reader is back
+  // at the parent's scale when it meets them).
   void attach_coarse_entities() {
     for (MtgVertex y = 1; y < mtg_.size(); ++y) {
       const MtgVertex x = mtg_.parent(y);
       if (x == kNoMtgVertex || !decomposed(x)) continue;
-      if (decomposed(y) && mtg_.parent(first_leaf(y)) != kNoMtgVertex) continue;
-      attached_[anchor(x)].push_back(y);
+      if (!decomposed(y)) {
+        attached_[anchor(x)].push_back(y);
+      } else if (mtg_.parent(first_leaf(y)) == kNoMtgVertex) {
+        detached_[x].push_back(y);
+      }
     }
   }
 
@@ -99,7 +105,7 @@ class MtgWriter {
   std::vector<MtgVertex> next_of(MtgVertex w) const {
     std::vector<MtgVertex> next;
     for (MtgVertex c : mtg_.children(w)) next.push_back(decomposed(c) ? first_leaf(c) : c);
-    for (MtgVertex y : attached_[w]) next.push_back(decomposed(y) ? first_leaf(y) : y);
+    for (MtgVertex y : attached_[w]) next.push_back(y);
     return next;
   }
 
@@ -108,14 +114,17 @@ class MtgWriter {
     int column;
     bool opening;  // the first line of a new column (no '^')
     char tag;
+    std::size_t from = 0;  // the first entity of the leaf's chain still to write
   };
+
+  static char tag_of(MtgEdge e) { return e == MtgEdge::kBranch ? '+' : '<'; }
 
   void walk(MtgVertex start) {
     std::vector<Item> stack{{start, 0, true, '/'}};
     while (!stack.empty()) {
       const Item it = stack.back();
       stack.pop_back();
-      emit(it);
+      if (!emit(it, stack)) continue;
       std::vector<MtgVertex> branches;
       MtgVertex successor = kNoMtgVertex;
       for (MtgVertex n : next_of(it.leaf)) {
@@ -133,16 +142,27 @@ class MtgWriter {
     }
   }
 
-  void emit(const Item& it) {
+  // Writes the chain of a leaf from it.from; false when a complex with detached followers split
+  // it (the rest and the followers are then on the stack).
+  bool emit(const Item& it, std::vector<Item>& stack) {
     const std::vector<MtgVertex> c = chain(it.leaf);
-    for (std::size_t j = 0; j < c.size(); ++j) {
-      std::string code = (j == 0 && it.opening) ? "" : "^";
-      code += j == 0 ? it.tag : '/';
+    for (std::size_t j = it.from; j < c.size(); ++j) {
+      std::string code = (j == it.from && it.opening) ? "" : "^";
+      code += j == it.from ? it.tag : '/';
       code += mtg_.label(c[j]);
       lines_.push_back({it.column, std::move(code), c[j]});
       for (std::size_t k : observed_[c[j]]) lines_.push_back({it.column, "*", c[j], k});
       columns_ = std::max(columns_, it.column + 1);
+      if (j + 1 < c.size() && !detached_[c[j]].empty()) {
+        const auto& d = detached_[c[j]];
+        for (auto y = d.rbegin(); y != d.rend(); ++y) {
+          stack.push_back({first_leaf(*y), it.column, false, tag_of(mtg_.edge(*y))});
+        }
+        stack.push_back({it.leaf, it.column + 1, true, '/', j + 1});
+        return false;
+      }
     }
+    return true;
   }
 
   void write_header(std::ostream& out) const {
@@ -193,7 +213,7 @@ class MtgWriter {
   }
 
   const Mtg& mtg_;
-  std::vector<std::vector<MtgVertex>> attached_;
+  std::vector<std::vector<MtgVertex>> attached_, detached_;
   std::vector<std::vector<std::size_t>> observed_;
   std::vector<CodeLine> lines_;
   int columns_ = 0;

@@ -1,7 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 
 #include "tests/cli/run_command.hpp"
 
@@ -65,10 +68,107 @@ TEST(TreeCli, GrownTreeSurvivesMtgExportAndImport) {
   }
   EXPECT_DOUBLE_EQ(a["height"].get<double>(), b["height"].get<double>());
   EXPECT_NEAR(a["total_length"].get<double>(), b["total_length"].get<double>(), 1e-9);
-  write_text(dir / "bad.mtg", "MTG:\nENTITY-CODE\t\tLength\n/P1\n^/I1\t\tten\n");
+  write_text(dir / "bad.mtg", "MTG:\nENTITY-CODE\t\tLength\n/P1\n\t^/I1\t\t1\n");
   r = run_fspm("tree info " + (dir / "bad.mtg").string());
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("bad.mtg:4"), std::string::npos) << r.err;
+}
+
+// OpenAlea's MTG files (tests/data/mtg/openalea) all convert to trees with nodes.
+TEST(TreeCli, EveryOpenAleaMtgConverts) {
+  const auto dir = scratch_dir("mtg_suite");
+  const std::filesystem::path suite = std::string(FSPM_SOURCE_DIR) + "/tests/data/mtg/openalea";
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(suite)) {
+    if (entry.path().extension() != ".mtg") continue;
+    ++files;
+    const std::string out = (dir / (entry.path().stem().string() + ".tree")).string();
+    const auto r = run_fspm("-q tree convert " + entry.path().string() + " " + out);
+    ASSERT_EQ(r.exit_code, 0) << entry.path() << "\n" << r.err;
+    const auto j = nlohmann::json::parse(run_fspm("tree info --json " + out).out);
+    EXPECT_GT(j["nodes"].get<int>(), 0) << entry.path();
+  }
+  EXPECT_EQ(files, 21);
+}
+
+// A tree digitised in centimetres with diameters in millimetres: read in metres it is hundreds of
+// metres tall and a warning names the option; with the units given its highest point stands
+// above its first digitised shoot (S or U, the finest scale) by the difference of their ZZ
+// coordinates (read here from the file) divided by 100.
+TEST(TreeCli, MtgUnitsGiveTheTreeItsRealSize) {
+  const auto dir = scratch_dir("mtg_units");
+  const std::string mtg =
+      std::string(FSPM_SOURCE_DIR) + "/tests/data/mtg/openalea/test8_boutdenoylum2.mtg";
+  auto r = run_fspm("tree convert " + mtg + " " + (dir / "m.tree").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("--length-unit cm"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--diameter-unit mm"), std::string::npos) << r.err;
+  r = run_fspm("tree convert " + mtg + " " + (dir / "cm.tree").string() +
+               " --length-unit cm --diameter-unit mm");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("--length-unit"), std::string::npos) << r.err;
+  EXPECT_NE(read_text(dir / "cm.tree").find("lengths read in cm, diameters in mm"),
+            std::string::npos);
+  // ZZ is the 3rd feature column after the code columns of the ENTITY-CODE header.
+  std::ifstream in(mtg);
+  std::string line;
+  double zfirst = 0.0, zmax = -1e300;
+  bool first = true;
+  std::size_t zz_cell = 0;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::size_t from = 0;
+    for (std::size_t tab; (tab = line.find('\t', from)) != std::string::npos; from = tab + 1) {
+      cells.push_back(line.substr(from, tab - from));
+    }
+    cells.push_back(line.substr(from));
+    if (cells[0] == "ENTITY-CODE") {
+      zz_cell = std::find(cells.begin(), cells.end(), "ZZ") - cells.begin();
+    } else if (zz_cell > 0 && zz_cell < cells.size() && !cells[zz_cell].empty() &&
+               cells[zz_cell].find_first_not_of(" \r") != std::string::npos) {
+      const double z = std::stod(cells[zz_cell]);
+      std::string cell;  // the code: the first non-empty cell
+      for (const std::string& c : cells) {
+        if (!c.empty()) {
+          cell = c;
+          break;
+        }
+      }
+      const bool shoot = std::regex_search(cell, std::regex("[/<+^][SU][0-9]"));
+      if (first && shoot) {
+        zfirst = z;
+        first = false;
+      }
+      zmax = std::max(zmax, z);
+    }
+  }
+  ASSERT_GT(zmax, zfirst);
+  const auto m =
+      nlohmann::json::parse(run_fspm("tree info --json " + (dir / "m.tree").string()).out);
+  const auto cm =
+      nlohmann::json::parse(run_fspm("tree info --json " + (dir / "cm.tree").string()).out);
+  EXPECT_NEAR(cm["height"].get<double>(), m["height"].get<double>() / 100.0, 1e-9);
+  // Height is measured from the root's base, one median shoot below its digitised top (a few
+  // centimetres).
+  EXPECT_NEAR(cm["height"].get<double>(), (zmax - zfirst) / 100.0, 0.1);
+}
+
+// A topology-only MTG (no coordinates, lengths or diameters) becomes a plant drawn by the plant
+// frame, every position and radius marked as inferred, and meshes into a non-empty surface.
+TEST(TreeCli, TopologyOnlyMtgIsDrawnAndSaysWhatWasInferred) {
+  const auto dir = scratch_dir("mtg_topology");
+  const std::string mtg = std::string(FSPM_SOURCE_DIR) + "/tests/data/mtg/openalea/mtg4.mtg";
+  auto r = run_fspm("tree info --json " + mtg);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["nodes"], 39);
+  EXPECT_EQ(j["positions_inferred"], 39);
+  EXPECT_EQ(j["radii_inferred"], 39);
+  EXPECT_GT(j["height"].get<double>(), 0.5);
+  EXPECT_GT(j["crown_width"].get<double>(), 0.1);
+  r = run_fspm("mesh " + mtg + " -o " + (dir / "m.obj").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(read_text(dir / "m.obj").find("\nf "), std::string::npos);
 }
 
 TEST(TreeCli, InfoJsonCountsNodes) {

@@ -70,6 +70,11 @@ const std::string kFull = "No space left on device";
 // 1e300 and nan as little-endian doubles, in printf's octal escapes.
 const std::string kHugeDouble = "\\234\\165\\000\\210\\074\\344\\067\\176";
 const std::string kNanDouble = "\\000\\000\\000\\000\\000\\000\\370\\177";
+// An MTG header: plants P (scale 1) of internodes E (scale 2); the code starts on line 9.
+constexpr const char* kMtgHeader =
+    "CODE:\tFORM-A\nCLASSES:\nSYMBOL\tSCALE\tDECOMPOSITION\tINDEXATION\tDEFINITION\n$"
+    "\t0\tFREE\tFREE\tIMPLICIT\nP\t1\tFREE\tFREE\tIMPLICIT\nE\t2\tFREE\tFREE\tIMPLICIT\nMTG:"
+    "\nENTITY-CODE\n";
 const std::string kSynthetic = "[experiment]\nname = \"s\"\n[model]\nkind = \"synthetic\"\n";
 
 std::vector<Case> output_cases() {
@@ -372,6 +377,42 @@ std::vector<Case> wrong_input_cases() {
        "tree convert {dir}/h.mtg {dir}/t.tree",
        1,
        "h.mtg:3: the MTG: table has no entity after its ENTITY-CODE header",
+       {"t.tree"}},
+      // What OpenAlea's reader cannot make sense of either: file:line:column and the code.
+      {"MtgCaretOpeningAColumn",
+       {{"h.mtg", std::string(kMtgHeader) + "/P1/E1\n\t^<E2\n"}},
+       {},
+       "tree convert {dir}/h.mtg {dir}/t.tree",
+       1,
+       "h.mtg:10:2: entity code '\\^<E2': '\\^' continues an entity of its own column",
+       {"t.tree"}},
+      {"MtgUndeclaredSymbol",
+       {{"h.mtg", std::string(kMtgHeader) + "/Q1/E1\n"}},
+       {},
+       "tree convert {dir}/h.mtg {dir}/t.tree",
+       1,
+       "h.mtg:9:1: entity code '/Q1/E1': symbol 'Q' is not declared in CLASSES",
+       {"t.tree"}},
+      {"MtgRangeCountingDown",
+       {{"h.mtg", std::string(kMtgHeader) + "/P1/E5<<E3\n"}},
+       {},
+       "tree convert {dir}/h.mtg {dir}/t.tree",
+       1,
+       "h.mtg:9:7: entity code '/P1/E5<<E3': a range from E5 to E3 must count up",
+       {"t.tree"}},
+      {"MtgColumnMatchingNone",
+       {{"h.mtg", std::string(kMtgHeader) + "/P1/E1\n\t\t+E2\n\t+E3\n"}},
+       {},
+       "tree convert {dir}/h.mtg {dir}/t.tree",
+       1,
+       "h.mtg:11:2: entity code '\\+E3' is in column 2, which matches no column",
+       {"t.tree"}},
+      {"MtgStarWithALabel",
+       {{"h.mtg", std::string(kMtgHeader) + "/P1/E1\n*E2\n"}},
+       {},
+       "tree convert {dir}/h.mtg {dir}/t.tree",
+       1,
+       "h.mtg:10:1: entity code '\\*E2': '\\*' repeats the entity above",
        {"t.tree"}},
       {"TreebWithTrailingGarbage",
        {},
