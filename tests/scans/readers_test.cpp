@@ -210,7 +210,7 @@ TEST(PointSetFile, ChoosesTheReaderByExtension) {
   EXPECT_EQ(read_point_set(xyz).points.at(0), Eigen::Vector3d(1, 2, 3));
   const std::string obj = temp_file("p.obj", "v 4 5 6\n");
   EXPECT_EQ(read_point_set(obj).points.at(0), Eigen::Vector3d(4, 5, 6));
-  EXPECT_THROW(read_point_set(temp_file("p.las", "")), ValueError);
+  EXPECT_THROW(read_point_set(temp_file("p.e57", "")), ValueError);
   EXPECT_THROW(read_point_set("/nonexistent/fspm_scan.ply"), IoError);
   std::filesystem::remove(xyz);
   std::filesystem::remove(obj);
