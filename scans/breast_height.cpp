@@ -1,0 +1,79 @@
+#include "scans/breast_height.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <unordered_map>
+
+namespace fspm::scans {
+namespace {
+
+std::uint32_t find(std::vector<std::uint32_t>& parent, std::uint32_t a) {
+  while (parent[a] != a) a = parent[a] = parent[parent[a]];
+  return a;
+}
+
+std::int64_t cell_key(std::int64_t x, std::int64_t y) { return (x << 32) ^ (y & 0xFFFFFFFF); }
+
+// Label of each slice point: its connected group of occupied grid cells.
+std::vector<std::uint32_t> stem_labels(const std::vector<Eigen::Vector2d>& xy, double link_m) {
+  std::unordered_map<std::int64_t, std::uint32_t> cells;
+  std::vector<std::uint32_t> cell_of(xy.size());
+  for (std::size_t i = 0; i < xy.size(); ++i) {
+    const auto cx = static_cast<std::int64_t>(std::floor(xy[i].x() / link_m));
+    const auto cy = static_cast<std::int64_t>(std::floor(xy[i].y() / link_m));
+    cell_of[i] =
+        cells.try_emplace(cell_key(cx, cy), static_cast<std::uint32_t>(cells.size())).first->second;
+  }
+  std::vector<std::uint32_t> parent(cells.size());
+  std::iota(parent.begin(), parent.end(), 0u);
+  for (const auto& [key, id] : cells) {
+    const std::int64_t cx = key >> 32;
+    const auto cy = static_cast<std::int64_t>(static_cast<std::int32_t>(key & 0xFFFFFFFF));
+    for (std::int64_t dx = -1; dx <= 1; ++dx) {
+      for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        const auto it = cells.find(cell_key(cx + dx, cy + dy));
+        if (it != cells.end()) parent[find(parent, id)] = find(parent, it->second);
+      }
+    }
+  }
+  for (std::uint32_t& c : cell_of) c = find(parent, c);
+  return cell_of;
+}
+
+}  // namespace
+
+BreastHeightStems breast_height_stems(const PointSet& ps, double ground_z,
+                                      const BreastHeightOptions& o) {
+  BreastHeightStems out;
+  std::vector<Eigen::Vector2d> xy;
+  for (const Eigen::Vector3d& p : ps.points) {
+    const double h = p.z() - ground_z;
+    if (h >= o.slice_low_m && h <= o.slice_high_m) xy.push_back(p.head<2>());
+  }
+  out.slice_points = xy.size();
+  if (xy.empty()) return out;
+  const std::vector<std::uint32_t> label = stem_labels(xy, o.link_m);
+  std::unordered_map<std::uint32_t, std::size_t> size;
+  for (std::uint32_t l : label) ++size[l];
+  std::uint32_t largest = label[0];
+  for (const auto& [l, n] : size) {
+    if (n > size[largest]) largest = l;
+  }
+  for (const auto& [l, n] : size) {
+    if (n >= o.min_points && 5 * n >= size[largest]) out.stem_points.push_back(n);
+  }
+  std::sort(out.stem_points.rbegin(), out.stem_points.rend());
+  if (size[largest] < o.min_points) return out;
+  std::vector<Eigen::Vector2d> stem;
+  for (std::size_t i = 0; i < xy.size(); ++i) {
+    if (label[i] == largest) stem.push_back(xy[i]);
+  }
+  out.circle = fit_circle_kasa(stem);
+  out.compact = out.circle && out.circle->rms_m <= 0.2 * out.circle->radius_m + 0.005 &&
+                2.0 * out.circle->radius_m <= o.max_diameter_m;
+  return out;
+}
+
+}  // namespace fspm::scans
