@@ -44,35 +44,40 @@ std::vector<std::uint32_t> stem_labels(const std::vector<Eigen::Vector2d>& xy, d
 
 }  // namespace
 
-BreastHeightStems breast_height_stems(const PointSet& ps, double ground_z,
-                                      const BreastHeightOptions& o) {
-  BreastHeightStems out;
+BreastHeightStem stem_slice(const PointSet& ps, const std::vector<char>& on_trunk, double ground_z,
+                            double low_m, double high_m, const BreastHeightOptions& o) {
+  BreastHeightStem out;
+  std::vector<Eigen::Vector2d> xy;
+  for (std::size_t i = 0; i < ps.points.size(); ++i) {
+    const double h = ps.points[i].z() - ground_z;
+    if (on_trunk[i] && h >= low_m && h <= high_m) {
+      xy.push_back(ps.points[i].head<2>());
+    }
+  }
+  out.slice_points = xy.size();
+  if (xy.size() < o.min_points) return out;
+  out.circle = fit_circle_kasa(xy);
+  out.compact = out.circle && out.circle->rms_m <= 0.2 * out.circle->radius_m + 0.005 &&
+                2.0 * out.circle->radius_m <= o.max_diameter_m;
+  return out;
+}
+
+std::vector<std::size_t> stems_at_base(const PointSet& ps, double ground_z,
+                                       const BreastHeightOptions& o) {
   std::vector<Eigen::Vector2d> xy;
   for (const Eigen::Vector3d& p : ps.points) {
     const double h = p.z() - ground_z;
-    if (h >= o.slice_low_m && h <= o.slice_high_m) xy.push_back(p.head<2>());
+    if (h >= o.base_low_m && h <= o.base_high_m) xy.push_back(p.head<2>());
   }
-  out.slice_points = xy.size();
-  if (xy.empty()) return out;
-  const std::vector<std::uint32_t> label = stem_labels(xy, o.link_m);
   std::unordered_map<std::uint32_t, std::size_t> size;
-  for (std::uint32_t l : label) ++size[l];
-  std::uint32_t largest = label[0];
+  for (std::uint32_t l : stem_labels(xy, o.link_m)) ++size[l];
+  std::size_t largest = 0;
+  for (const auto& [l, n] : size) largest = std::max(largest, n);
+  std::vector<std::size_t> out;
   for (const auto& [l, n] : size) {
-    if (n > size[largest]) largest = l;
+    if (n >= o.min_points && 5 * n >= largest) out.push_back(n);
   }
-  for (const auto& [l, n] : size) {
-    if (n >= o.min_points && 5 * n >= size[largest]) out.stem_points.push_back(n);
-  }
-  std::sort(out.stem_points.rbegin(), out.stem_points.rend());
-  if (size[largest] < o.min_points) return out;
-  std::vector<Eigen::Vector2d> stem;
-  for (std::size_t i = 0; i < xy.size(); ++i) {
-    if (label[i] == largest) stem.push_back(xy[i]);
-  }
-  out.circle = fit_circle_kasa(stem);
-  out.compact = out.circle && out.circle->rms_m <= 0.2 * out.circle->radius_m + 0.005 &&
-                2.0 * out.circle->radius_m <= o.max_diameter_m;
+  std::sort(out.rbegin(), out.rend());
   return out;
 }
 

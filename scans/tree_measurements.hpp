@@ -1,8 +1,8 @@
 #pragma once
 // Forest measurements of a scanned tree, as a quantitative structure model reports them (TreeQSM,
 // Raumonen et al. 2013), from its points and its skeleton:
-// - dbh_m: diameter of the circle fitted at breast height (scans/breast_height.hpp), unset when
-//   the slice has too few points or no compact stem;
+// - dbh_m: diameter of the circle fitted to the trunk points at breast height
+//   (scans/breast_height.hpp), unset when the slice has too few of them or no compact stem;
 // - height_m: highest minus lowest point;
 // - crown_base_m: height above the lowest point of the lowest fork on the trunk whose branch
 //   carries at least min_branch_length_m of skeleton;
@@ -12,10 +12,10 @@
 //   the skeleton (scans/qsm_cylinders.hpp); a branch is a chain of skeleton nodes of one order;
 // - points_explained_fraction: share of points within explained_tolerance_m of the surface of
 //   their nearest cylinder.
-// Warnings (text that says what was found and what to do) for too few points at breast height,
-// no compact stem there (no tree found: a wall, a hedge), several stems, and a diameter
-// implausible for the height. Projected coordinates are recentred internally; cylinders come back
-// in the input's coordinates.
+// Warnings (text that says what was found and what to do) for too few trunk points at breast
+// height, no compact stem there (no tree found: a wall, a hedge), several stems near the base,
+// and a diameter implausible for the height. Projected coordinates are recentred internally;
+// cylinders come back in the input's coordinates.
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,8 +44,8 @@ struct TreeMeasurements {
   std::vector<std::size_t> branches_per_order;
   std::vector<double> branch_length_per_order_m;
   double points_explained_fraction = 0.0;
-  std::size_t breast_height_points = 0;
-  std::size_t stems = 0;    // separated stems at breast height
+  std::size_t breast_height_points = 0;  // trunk points in the breast-height slice
+  std::size_t stems = 0;                 // separated stems near the base
   bool tree_found = false;  // a compact stem at breast height, or too few points to tell
   std::vector<std::string> warnings;
   std::vector<QsmCylinder> cylinders;

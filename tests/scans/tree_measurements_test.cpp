@@ -176,7 +176,7 @@ TEST(TreeMeasurements, TooFewPointsAtBreastHeightGiveNoDiameter) {
       measure_tree(ps, encode_point_set(ps, with_root_diameter()).full_skeleton);
   EXPECT_FALSE(m.dbh_m);
   EXPECT_LE(m.breast_height_points, 2u);
-  EXPECT_TRUE(has_warning(m, "points 1.2-1.4 m above the lowest point (at least 20"));
+  EXPECT_TRUE(has_warning(m, "trunk points 1.2-1.4 m above the lowest point (at least 20"));
   EXPECT_NEAR(m.height_m, 7.0 - 0.2, 0.1);  // from the lowest point at 0.2 m
 }
 
