@@ -9,6 +9,7 @@
 
 #include "fspm/error.hpp"
 #include "fspm/input_file.hpp"
+#include "fspm/memory_budget.hpp"
 #include "scans/byte_io.hpp"
 
 namespace fspm::scans {
@@ -154,6 +155,9 @@ LasHeader parse_las_header(std::string_view data, const std::string& path) {
 
 PointSet parse_las_points(std::string_view data, const std::string& path) {
   const LasHeader h = parse_las_header(data, path);
+  // The file's bytes are held while the points (3 doubles each) are filled.
+  check_memory(static_cast<double>(data.size()) + static_cast<double>(h.points) * 24.0,
+               "reading the LAS points", path);
   PointSet out;
   out.points.resize(h.points);
   const char* rec = data.data() + h.point_data_offset;
