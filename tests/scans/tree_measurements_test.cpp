@@ -35,6 +35,7 @@ TEST(CircleFit, StaysExactAtProjectedCoordinates) {
 
 struct Truth {
   double dbh_m = 0.0, height_m = 0.0, volume_m3 = 0.0, length_m = 0.0;
+  double crown_base_m = 1e9;  // the lowest fork of a main branch
 };
 
 // Closed forms on the synthetic tree: its internodes are cylinders.
@@ -43,6 +44,9 @@ Truth truth_of(const TreeGraph& t) {
   for (NodeId u = 0; u < t.size(); ++u) {
     out.volume_m3 += kPi * t.radius(u) * t.radius(u) * t.length(u);
     out.length_m += t.length(u);
+    if (t.order(u) == 1 && t.order(t.parent(u)) == 0) {
+      out.crown_base_m = std::min(out.crown_base_m, t.end(t.parent(u)).z());
+    }
     out.height_m = std::max(out.height_m, t.end(u).z());
     if (t.order(u) == 0 && t.start(u).z() <= 1.3 && t.end(u).z() > 1.3) {
       out.dbh_m = 2.0 * t.radius(u);
@@ -77,9 +81,7 @@ TEST(TreeMeasurements, SyntheticTreesWithinTheirKnownGeometry) {
       EXPECT_NEAR(m.height_m, truth.height_m, 0.02 * truth.height_m);
       EXPECT_NEAR(m.woody_volume_m3, truth.volume_m3, 0.15 * truth.volume_m3);
       ASSERT_TRUE(m.crown_base_m);
-      // The lowest main branch leaves the trunk at 40 % of its length (synthetic_tree.cpp).
-      EXPECT_GT(*m.crown_base_m, 0.3 * options.trunk_length_m);
-      EXPECT_LT(*m.crown_base_m, 0.7 * options.trunk_length_m);
+      EXPECT_NEAR(*m.crown_base_m, truth.crown_base_m, 0.15);
       EXPECT_GT(m.points_explained_fraction, 0.8);
       ASSERT_GE(m.branches_per_order.size(), 2u);
       EXPECT_EQ(m.branches_per_order[0], 1u);
