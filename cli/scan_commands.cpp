@@ -1,5 +1,6 @@
 // fspm encode | scan: trees from scans and meshes (Pirk sec. 3.3): a point set or tree model
 // encoded into the cluster-based representation, and simulated scans of known trees.
+#include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
@@ -86,7 +87,15 @@ void run_encode(const EncodeCommand& o) {
   const std::string bytes = scans::clusters_bytes(r.model);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const scans::TreeMeasurements m = scans::measure_tree(points, r.full_skeleton);
+  scans::TreeMeasurements m = scans::measure_tree(points, r.full_skeleton);
+  if (!o.root_diameter_m && !m.dbh_m && m.tree_found) {
+    // d_root of eq. 3.1 comes from a circle through the lowest trunk points, which a trunk
+    // without a breast-height diameter does not confirm (an airborne scan: a handful of points).
+    m.warnings.push_back(
+        fmt::format("the radii of eq. 3.1 scale with a root diameter of {:.3f} m fitted to the "
+                    "lowest points, unconfirmed at breast height; give --root-diameter",
+                    r.model.root_diameter_m));
+  }
   for (const std::string& w : m.warnings) spdlog::warn("{}: {}", o.input, w);
   nlohmann::json doc = {{"points", r.points},
                         {"skeleton_nodes", r.model.skeleton.size()},

@@ -39,6 +39,13 @@ TEST(ScanCli, ScanThenEncodeReportsWhatItWrote) {
   EXPECT_DOUBLE_EQ(j["beta"].get<double>(), 1.3);  // pine, Pirk Table 3.1
   EXPECT_DOUBLE_EQ(j["f_s"].get<double>(), 0.9);   // overridden
   EXPECT_GE(j["seconds"].get<double>(), 0.0);
+  // The example tree forks 0.15 m above the ground: no trunk at breast height, so no dbh, and
+  // the fitted root diameter of eq. 3.1 is flagged.
+  EXPECT_TRUE(j["dbh_m"].is_null());
+  const std::string warnings = j["warnings"].dump();
+  EXPECT_NE(warnings.find("forks below breast height"), std::string::npos) << warnings;
+  EXPECT_NE(warnings.find("give --root-diameter"), std::string::npos) << warnings;
+  EXPECT_NE(r.err.find("[warning]"), std::string::npos) << r.err;
 }
 
 // An MTG is a tree model like the others: scanned as the same tree in .treeb gives the same
