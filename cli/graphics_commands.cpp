@@ -1205,11 +1205,12 @@ void add_mesh_command(CLI::App& app) {
 void add_render_command(CLI::App& app) {
   auto render = std::make_shared<RenderCommand>();
   CLI::App* r = app.add_subcommand(kRenderCommand.name, kRenderCommand.description);
-  r->add_option("TREE", render->tree,
-                "Tree file (.tree, .treeb, .nwk, .mtg), compressed plant (.ctree, plant .toml), "
-                "scene (.json), L-system (.l, with the .v beside it), point set (.ply, .xyz, "
-                ".txt, .csv, .pcd: small spheres) or cluster-based tree (.clusters: skeleton and "
-                "translucent cluster hulls)")
+  r->add_option(
+       "TREE", render->tree,
+       "Tree file (.tree, .treeb, .nwk, .mtg), compressed plant (.ctree, plant .toml), "
+       "scene (.json), L-system (.l, with the .v beside it), point set (.ply, .xyz, "
+       ".txt, .csv, .pcd, .las: small spheres) or cluster-based tree (.clusters: skeleton and "
+       "translucent cluster hulls)")
       ->required();
   add_lsystem_draw_options(r, render->lsystem);
   r->add_option("-o,--output", render->out, "Image: .png, .tif or .exr")->required();

@@ -1,5 +1,6 @@
 // fspm encode | scan: trees from scans and meshes (Pirk sec. 3.3): a point set or tree model
 // encoded into the cluster-based representation, and simulated scans of known trees.
+#include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
@@ -15,10 +16,12 @@
 #include "fspm/error.hpp"
 #include "fspm/tree_file.hpp"
 #include "scans/clusters_file.hpp"
+#include "scans/cylinders_csv.hpp"
 #include "scans/encoder.hpp"
 #include "scans/point_set_file.hpp"
 #include "scans/point_set_writer.hpp"
 #include "scans/scan_simulator.hpp"
+#include "scans/tree_measurements.hpp"
 
 namespace fspm::cli {
 namespace {
@@ -29,6 +32,7 @@ struct EncodeCommand {
   std::string species = "default";
   std::optional<double> beta, gamma, f_s, root_diameter_m, bin_length_m;
   std::string skeleton;
+  std::string cylinders;
   int neighbours = 8;
   std::uint64_t seed = 1;
   bool json = false;
@@ -46,9 +50,29 @@ scans::PointSet load_input(const EncodeCommand& o) {
   return scans::simulate_scan(read_tree_file(o.input), scans::ScanOptions{}, rng);
 }
 
+nlohmann::json optional_json(const std::optional<double>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+
+nlohmann::json measurements_json(const scans::TreeMeasurements& m) {
+  return {{"dbh_m", optional_json(m.dbh_m)},
+          {"height_m", m.height_m},
+          {"crown_width_m", m.crown_width_m},
+          {"crown_base_m", optional_json(m.crown_base_m)},
+          {"woody_volume_m3", m.woody_volume_m3},
+          {"branches_per_order", m.branches_per_order},
+          {"branch_length_per_order_m", m.branch_length_per_order_m},
+          {"points_explained_fraction", m.points_explained_fraction},
+          {"breast_height_points", m.breast_height_points},
+          {"stems", m.stems},
+          {"cylinders", m.cylinders.size()},
+          {"warnings", m.warnings}};
+}
+
 void run_encode(const EncodeCommand& o) {
   refuse_overwriting_input(o.output, {o.input});
   refuse_overwriting_input(o.skeleton, {o.input});
+  refuse_overwriting_input(o.cylinders, {o.input});
   scans::EncodeOptions options;
   options.species = scans::species_by_name(o.species);
   if (o.beta) options.species.beta = *o.beta;
@@ -63,24 +87,40 @@ void run_encode(const EncodeCommand& o) {
   const std::string bytes = scans::clusters_bytes(r.model);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  scans::TreeMeasurements m = scans::measure_tree(points, r.full_skeleton);
+  if (!o.root_diameter_m && !m.dbh_m && m.tree_found) {
+    // d_root of eq. 3.1 comes from a circle through the lowest trunk points, which a trunk
+    // without a breast-height diameter does not confirm (an airborne scan: a handful of points).
+    m.warnings.push_back(
+        fmt::format("the radii of eq. 3.1 scale with a root diameter of {:.3f} m fitted to the "
+                    "lowest points, unconfirmed at breast height; give --root-diameter",
+                    r.model.root_diameter_m));
+  }
+  for (const std::string& w : m.warnings) spdlog::warn("{}: {}", o.input, w);
+  nlohmann::json doc = {{"points", r.points},
+                        {"skeleton_nodes", r.model.skeleton.size()},
+                        {"clusters", r.model.clusters.size()},
+                        {"bytes", bytes.size()},
+                        {"seconds", seconds},
+                        {"root_diameter_m", r.model.root_diameter_m},
+                        {"species", r.model.species},
+                        {"beta", r.model.beta},
+                        {"gamma", r.model.gamma},
+                        {"f_s", r.model.f_s},
+                        {"bridges", r.bridges},
+                        {"origin", {r.origin.x(), r.origin.y(), r.origin.z()}},
+                        {"output", o.output}};
+  doc.update(measurements_json(m));
+  if (!m.tree_found) {
+    if (o.json) print_json(doc);
+    throw ValueError("no tree found (" + m.warnings.front() + "); nothing written", o.input);
+  }
   scans::write_clusters_file(r.model, o.output);
   if (!o.skeleton.empty()) write_tree_file(r.model.skeleton, o.skeleton);
+  if (!o.cylinders.empty()) scans::write_cylinders_csv(m.cylinders, o.cylinders);
   spdlog::info("{}: {} points -> {} skeleton nodes, {} clusters, {} bytes -> {}", o.input, r.points,
                r.model.skeleton.size(), r.model.clusters.size(), bytes.size(), o.output);
-  if (o.json) {
-    print_json({{"points", r.points},
-                {"skeleton_nodes", r.model.skeleton.size()},
-                {"clusters", r.model.clusters.size()},
-                {"bytes", bytes.size()},
-                {"seconds", seconds},
-                {"root_diameter_m", r.model.root_diameter_m},
-                {"species", r.model.species},
-                {"beta", r.model.beta},
-                {"gamma", r.model.gamma},
-                {"f_s", r.model.f_s},
-                {"bridges", r.bridges},
-                {"output", o.output}});
-  }
+  if (o.json) print_json(doc);
 }
 
 void add_encode_command(CLI::App& app) {
@@ -90,7 +130,7 @@ void add_encode_command(CLI::App& app) {
       "Cluster-based representation of a scanned tree (Pirk sec. 3.3): skeleton, radii, "
       "leaf clusters");
   e->add_option("INPUT", o->input,
-                "Point set (.ply, .xyz, .txt, .csv, .pcd), mesh (.obj, .gltf, .glb: its "
+                "Point set (.ply, .xyz, .txt, .csv, .pcd, .las), mesh (.obj, .gltf, .glb: its "
                 "vertices) or tree model (.tree, .treeb, .nwk, .mtg: scanned from four positions "
                 "first)")
       ->required();
@@ -108,10 +148,15 @@ void add_encode_command(CLI::App& app) {
       ->check(positive_number(1000));
   e->add_option("--neighbours", o->neighbours, "k of the neighbour graph")->check(number_in(1, 64));
   e->add_option("--skeleton", o->skeleton, "Also write the main skeleton as a tree file");
+  e->add_option("--cylinders", o->cylinders,
+                "Also write the fitted cylinders as CSV with TreeQSM's columns (start, axis, "
+                "length, radius, parent, branch, order)");
   e->add_option("--seed", o->seed, "Seed of the simulated scan of a tree model")
       ->check(number_in(0, kMaxSeed));
   e->add_flag("--json", o->json,
-              "One JSON object on stdout: points, skeleton_nodes, clusters, bytes, seconds");
+              "One JSON object on stdout: points, skeleton_nodes, clusters, bytes, seconds, "
+              "and the measurements (dbh_m, height_m, crown_width_m, crown_base_m, "
+              "woody_volume_m3, ..., warnings)");
   e->callback([o] { run_encode(*o); });
 }
 

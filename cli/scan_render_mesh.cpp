@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 
 #include "cli/obstacle_mesh.hpp"
 #include "environment/occluders.hpp"
 #include "scans/clusters_file.hpp"
+#include "scans/point_origin.hpp"
 #include "scans/point_set_file.hpp"
 
 namespace fspm::cli {
@@ -26,6 +28,23 @@ double largest_extent_m(const scans::PointSet& set) {
     hi = hi.cwiseMax(p);
   }
   return (hi - lo).maxCoeff();
+}
+
+// Meshes hold floats: at projected coordinates (x ~ 5e5 m, y ~ 6e6 m) a float keeps decimetres
+// and the renderer's camera clips the scene away. A coordinate beyond kRenderGridM is drawn
+// relative to the multiple of kRenderGridM below the set's minimum: the same for the files of one
+// tree (a scan, its .clusters), so that --frame still matches them.
+constexpr double kRenderGridM = 1000.0;
+
+Eigen::Vector3d render_origin(const std::vector<Eigen::Vector3d>& points) {
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  if (points.empty()) return origin;
+  Eigen::Vector3d lo = points.front();
+  for (const Eigen::Vector3d& p : points) lo = lo.cwiseMin(p);
+  for (int c = 0; c < 3; ++c) {
+    if (std::abs(lo[c]) > kRenderGridM) origin[c] = kRenderGridM * std::floor(lo[c] / kRenderGridM);
+  }
+  return origin;
 }
 
 std::string lower_extension(const std::string& path) {
@@ -77,15 +96,25 @@ std::optional<graphics::TriangleMesh> load_scan_render_mesh(const std::string& p
                                                             const graphics::MeshOptions& options) {
   const std::string ext = lower_extension(path);
   if (ext == ".clusters") {
-    const scans::ClusterModel model = scans::read_clusters_file(path);
+    scans::ClusterModel model = scans::read_clusters_file(path);
     scans::PointSet nodes;
     for (const auto& hull : model.clusters) {
       nodes.points.insert(nodes.points.end(), hull.vertices.begin(), hull.vertices.end());
     }
+    std::vector<Eigen::Vector3d> all = nodes.points;
+    for (NodeId u = 0; u < model.skeleton.size(); ++u) all.push_back(model.skeleton.end(u));
+    const Eigen::Vector3d origin = render_origin(all);
+    scans::translate_tree(model.skeleton, -origin);
+    for (auto& hull : model.clusters) {
+      for (Eigen::Vector3d& v : hull.vertices) v -= origin;
+    }
     return mesh_cluster_model(model, options, kPointRadiusShare * largest_extent_m(nodes));
   }
-  if (ext == ".ply" || ext == ".xyz" || ext == ".txt" || ext == ".csv" || ext == ".pcd") {
-    const scans::PointSet points = scans::read_point_set(path);
+  if (ext == ".ply" || ext == ".xyz" || ext == ".txt" || ext == ".csv" || ext == ".pcd" ||
+      ext == ".las") {
+    scans::PointSet points = scans::read_point_set(path);
+    const Eigen::Vector3d origin = render_origin(points.points);
+    for (Eigen::Vector3d& p : points.points) p -= origin;
     return mesh_point_set(points, kPointRadiusShare * largest_extent_m(points));
   }
   return std::nullopt;

@@ -31,8 +31,10 @@ graphics::TriangleMesh mesh_cluster_model(const scans::ClusterModel& model,
                                           const graphics::MeshOptions& options,
                                           double point_radius_m);
 
-// For `fspm render`: the mesh of a point set (.ply, .xyz, .txt, .csv, .pcd) or of a .clusters
-// file, nullopt for any other extension. Throws the readers' errors.
+// For `fspm render`: the mesh of a point set (.ply, .xyz, .txt, .csv, .pcd, .las) or of a
+// .clusters file, nullopt for any other extension. Coordinates beyond 1 km are drawn relative to
+// the kilometre below the data's minimum (floats keep decimetres at projected coordinates). Throws
+// the readers' errors.
 std::optional<graphics::TriangleMesh> load_scan_render_mesh(const std::string& path,
                                                             const graphics::MeshOptions& options);
 

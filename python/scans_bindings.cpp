@@ -17,6 +17,7 @@
 #include "scans/point_set_file.hpp"
 #include "scans/scan_simulator.hpp"
 #include "scans/species.hpp"
+#include "scans/tree_measurements.hpp"
 
 namespace fspm::python {
 namespace {
@@ -89,7 +90,7 @@ void bind_point_encoding(py::module_& m) {
         return vector_rows(set.points);
       },
       py::arg("path"),
-      "The points of a point-set file (.ply ASCII or binary, .xyz/.txt/.csv, .pcd), or the "
+      "The points of a point-set file (.ply ASCII or binary, .xyz/.txt/.csv, .pcd, .las), or the "
       "vertices of a mesh (.obj, glTF 2.0 .gltf/.glb with node transforms applied), as an (N, 3) "
       "float64 array in the file's units (metres expected)");
   m.def(
@@ -177,12 +178,81 @@ void bind_cluster_files(py::module_& m) {
       "range noise in m; the same seed gives the same points");
 }
 
+py::object optional_value(const std::optional<double>& v) {
+  return v ? py::object(py::float_(*v)) : py::object(py::none());
+}
+
+// The cylinders as an (N, 12) array in the columns of fspm encode --cylinders.
+py::array_t<double> cylinder_rows(const std::vector<scans::QsmCylinder>& cylinders) {
+  py::array_t<double> out({static_cast<py::ssize_t>(cylinders.size()), py::ssize_t{12}});
+  auto a = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < cylinders.size(); ++i) {
+    const scans::QsmCylinder& c = cylinders[i];
+    const auto r = static_cast<py::ssize_t>(i);
+    for (int k = 0; k < 3; ++k) a(r, k) = c.start[k], a(r, 3 + k) = c.axis[k];
+    a(r, 6) = c.length_m;
+    a(r, 7) = c.radius_m;
+    a(r, 8) = static_cast<double>(c.parent + 1);
+    a(r, 9) = static_cast<double>(c.branch + 1);
+    a(r, 10) = c.order;
+    a(r, 11) = c.nested ? 1.0 : 0.0;
+  }
+  return out;
+}
+
+py::dict measurements_dict(const scans::TreeMeasurements& t) {
+  py::dict d;
+  d["dbh_m"] = optional_value(t.dbh_m);
+  d["height_m"] = t.height_m;
+  d["crown_width_m"] = t.crown_width_m;
+  d["crown_base_m"] = optional_value(t.crown_base_m);
+  d["woody_volume_m3"] = t.woody_volume_m3;
+  d["branches_per_order"] = t.branches_per_order;
+  d["branch_length_per_order_m"] = t.branch_length_per_order_m;
+  d["points_explained_fraction"] = t.points_explained_fraction;
+  d["breast_height_points"] = t.breast_height_points;
+  d["stems"] = t.stems;
+  d["tree_found"] = t.tree_found;
+  d["warnings"] = t.warnings;
+  d["cylinders"] = cylinder_rows(t.cylinders);
+  return d;
+}
+
+void bind_measurements(py::module_& m) {
+  m.def(
+      "measure_points",
+      [](const PointArray& points, const std::string& species,
+         std::optional<double> root_diameter) {
+        scans::PointSet set;
+        const auto span = as_points(points, "points");
+        set.points.assign(span.begin(), span.end());
+        scans::EncodeOptions o;
+        o.species = scans::species_by_name(species);
+        o.root_diameter_m = root_diameter;
+        scans::TreeMeasurements t;
+        {
+          py::gil_scoped_release release;
+          t = scans::measure_tree(set, scans::encode_point_set(set, o).full_skeleton);
+        }
+        return measurements_dict(t);
+      },
+      py::arg("points"), py::arg("species") = "default", py::arg("root_diameter") = py::none(),
+      "Measurements of a scanned tree as fspm encode --json reports them (docs/scans.md): "
+      "encodes the (N, 3) points (m, z up) and returns a dict with dbh_m (None without a "
+      "compact trunk at 1.2-1.4 m), height_m, crown_width_m, crown_base_m (None without a fork), "
+      "woody_volume_m3, branches_per_order, branch_length_per_order_m, "
+      "points_explained_fraction, breast_height_points, stems, tree_found, warnings and "
+      "cylinders, an (N, 12) array: start x y z, axis x y z, length, radius, parent, branch, "
+      "order (TreeQSM's columns, numbered from 1) and nested");
+}
+
 }  // namespace
 
 void bind_scans(py::module_& m) {
   bind_cluster_model(m);
   bind_point_encoding(m);
   bind_cluster_files(m);
+  bind_measurements(m);
 }
 
 }  // namespace fspm::python

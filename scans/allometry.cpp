@@ -1,10 +1,11 @@
 #include "scans/allometry.hpp"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "fspm/error.hpp"
+#include "scans/circle_fit.hpp"
 
 namespace fspm::scans {
 
@@ -61,17 +62,11 @@ double estimate_root_diameter_m(const PointSet& ps, const PointSkeleton& s, doub
     u = next;
   }
   if (pts.size() < 5) return 0.0;
-  // x^2 + y^2 + D x + E y + F = 0 in the least-squares sense.
-  Eigen::MatrixXd a(pts.size(), 3);
-  Eigen::VectorXd b(pts.size());
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    const Eigen::Vector3d& p = ps.points[pts[i]];
-    a.row(static_cast<Eigen::Index>(i)) << p.x(), p.y(), 1.0;
-    b[static_cast<Eigen::Index>(i)] = -(p.x() * p.x() + p.y() * p.y());
-  }
-  const Eigen::Vector3d c = a.colPivHouseholderQr().solve(b);
-  const double r2 = 0.25 * (c[0] * c[0] + c[1] * c[1]) - c[2];
-  return r2 > 0.0 && std::isfinite(r2) ? 2.0 * std::sqrt(r2) : 0.0;
+  std::vector<Eigen::Vector2d> xy;
+  xy.reserve(pts.size());
+  for (std::uint32_t i : pts) xy.push_back(ps.points[i].head<2>());
+  const std::optional<Circle> c = fit_circle_kasa(xy);
+  return c ? 2.0 * c->radius_m : 0.0;
 }
 
 }  // namespace fspm::scans

@@ -18,7 +18,8 @@ void put_vec(ByteWriter& w, const Eigen::Vector3d& v) {
   for (int c = 0; c < 3; ++c) w.put(static_cast<float>(v[c]));
 }
 
-void put_hull(ByteWriter& w, const ClusterHull& h) {
+void put_hull(ByteWriter& w, ClusterHull h, const Eigen::Vector3d& origin) {
+  for (Eigen::Vector3d& v : h.vertices) v -= origin;
   if (h.vertices.size() > 65535 || h.triangles.size() > 65535) {
     throw ValueError("a cluster hull has more than 65535 vertices or triangles");
   }
@@ -51,19 +52,26 @@ std::string clusters_bytes(const ClusterModel& m) {
   if (m.skeleton.empty()) throw ValueError("a cluster model needs at least the root node");
   if (m.species.size() > 255) throw ValueError("the species name is longer than 255 bytes");
   ByteWriter w;
-  w.put_bytes(kClustersMagic);
+  const Eigen::Vector3d& root = m.skeleton.start(0);
+  const bool far = root.cwiseAbs().maxCoeff() > kClustersOriginAfterM;
+  const Eigen::Vector3d origin =
+      far ? Eigen::Vector3d(root.array().floor().matrix()) : Eigen::Vector3d::Zero();
+  w.put_bytes(far ? kClustersMagicV3 : kClustersMagic);
+  if (far) {
+    for (int c = 0; c < 3; ++c) w.put(origin[c]);
+  }
   w.put(static_cast<std::uint8_t>(m.species.size()));
   w.put_bytes(m.species);
   for (double v : {m.beta, m.gamma, m.f_s, m.root_diameter_m}) w.put(static_cast<float>(v));
   w.put(static_cast<std::uint32_t>(m.skeleton.size()));
-  put_vec(w, m.skeleton.start(0));
+  put_vec(w, m.skeleton.start(0) - origin);
   for (NodeId u = 0; u < m.skeleton.size(); ++u) {
     w.put(m.skeleton.parent(u) == kNoNode ? kNoParent : m.skeleton.parent(u));
-    put_vec(w, m.skeleton.end(u));
+    put_vec(w, m.skeleton.end(u) - origin);
     w.put(static_cast<float>(m.skeleton.radius(u)));
   }
   w.put(static_cast<std::uint32_t>(m.clusters.size()));
-  for (const ClusterHull& h : m.clusters) put_hull(w, h);
+  for (const ClusterHull& h : m.clusters) put_hull(w, h, origin);
   return std::move(w.bytes());
 }
 

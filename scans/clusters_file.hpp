@@ -1,6 +1,7 @@
 #pragma once
 // The .clusters file: a compact little-endian binary form of a ClusterModel (layout in
-// docs/formats.md). Skeleton positions and radii are 32-bit floats; hull vertices are 16-bit
+// docs/formats.md). Skeleton positions and radii are 32-bit floats (relative to a double origin in
+// version 3); hull vertices are 16-bit
 // integers inside the hull's bounding box (error below 1/65535 of the box side). Writing is atomic.
 #include <string>
 #include <string_view>
@@ -10,6 +11,11 @@
 namespace fspm::scans {
 
 inline constexpr std::string_view kClustersMagic = "FSPMCLU2";
+// Version 3: version 2 with an origin (3 doubles) after the magic, all positions relative to it;
+// written when the root lies beyond kClustersOriginAfterM of zero (projected coordinates, where
+// a float would keep only decimetres).
+inline constexpr std::string_view kClustersMagicV3 = "FSPMCLU3";
+inline constexpr double kClustersOriginAfterM = 1000.0;
 // Version 1 (no branch length per cluster) is still read.
 inline constexpr std::string_view kClustersMagicV1 = "FSPMCLU1";
 

@@ -16,11 +16,11 @@ Eigen::Vector3d get_vector(ByteReader& r, const char* what) {
   return v;
 }
 
-void read_skeleton(ByteReader& r, ClusterModel& m) {
+void read_skeleton(ByteReader& r, ClusterModel& m, const Eigen::Vector3d& origin) {
   const std::size_t count_at = r.offset();
   const std::uint32_t n = r.get<std::uint32_t>("the skeleton node count");
   if (n == 0) r.fail("the skeleton has no node, expected at least the root", count_at);
-  const Eigen::Vector3d root_start = get_vector(r, "the root start");
+  const Eigen::Vector3d root_start = get_vector(r, "the root start") + origin;
   // Each node takes at least its parent, position and radius: a count the file cannot hold is
   // refused before anything is reserved for it.
   constexpr std::size_t kNodeBytes = 4 + 3 * 4 + 4;
@@ -40,7 +40,7 @@ void read_skeleton(ByteReader& r, ClusterModel& m) {
     }
     NodeData d;
     d.start = u == 0 ? root_start : m.skeleton.end(parent);
-    d.end = get_vector(r, "a skeleton node's position");
+    d.end = get_vector(r, "a skeleton node's position") + origin;
     const float radius = r.get<float>("a skeleton node's radius");
     if (!(radius >= 0.0f) || !std::isfinite(radius)) r.fail("a negative or nan radius", at + 16);
     d.radius = radius;
@@ -48,7 +48,8 @@ void read_skeleton(ByteReader& r, ClusterModel& m) {
   }
 }
 
-ClusterHull read_hull(ByteReader& r, std::size_t nodes, bool has_length) {
+ClusterHull read_hull(ByteReader& r, std::size_t nodes, bool has_length,
+                      const Eigen::Vector3d& origin) {
   ClusterHull h;
   const std::size_t at = r.offset();
   h.seed_node = r.get<std::uint32_t>("a cluster's seed node");
@@ -62,8 +63,9 @@ ClusterHull read_hull(ByteReader& r, std::size_t nodes, bool has_length) {
     }
     h.branch_length_m = length;
   }
-  const Eigen::Vector3d lo = get_vector(r, "a cluster's box");
-  const Eigen::Vector3d side = get_vector(r, "a cluster's box") - lo;
+  const Eigen::Vector3d box_lo = get_vector(r, "a cluster's box");
+  const Eigen::Vector3d side = get_vector(r, "a cluster's box") - box_lo;
+  const Eigen::Vector3d lo = box_lo + origin;
   const std::uint16_t vertices = r.get<std::uint16_t>("a cluster's vertex count");
   const std::uint16_t triangles = r.get<std::uint16_t>("a cluster's triangle count");
   for (std::uint16_t k = 0; k < vertices; ++k) {
@@ -89,10 +91,16 @@ ClusterModel parse_clusters_bytes(std::string_view data, const std::string& path
   ByteReader r(data, path);
   const std::string_view magic =
       r.get_bytes(std::min(data.size(), kClustersMagic.size()), "the magic");
-  if (magic != kClustersMagic && magic != kClustersMagicV1) {
-    r.fail("not a .clusters file, expected it to start with FSPMCLU2 (or FSPMCLU1)", 0);
+  if (magic != kClustersMagic && magic != kClustersMagicV1 && magic != kClustersMagicV3) {
+    r.fail("not a .clusters file, expected it to start with FSPMCLU2 (or FSPMCLU1, FSPMCLU3)", 0);
   }
-  const bool has_length = magic == kClustersMagic;
+  const bool has_length = magic != kClustersMagicV1;
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  if (magic == kClustersMagicV3) {
+    const std::size_t at = r.offset();
+    for (int c = 0; c < 3; ++c) origin[c] = r.get<double>("the origin");
+    if (!origin.allFinite()) r.fail("a nan or infinite origin", at);
+  }
   ClusterModel m;
   const std::uint8_t name_length = r.get<std::uint8_t>("the species name length");
   m.species = std::string(r.get_bytes(name_length, "the species name"));
@@ -100,10 +108,10 @@ ClusterModel parse_clusters_bytes(std::string_view data, const std::string& path
   m.gamma = r.get<float>("gamma");
   m.f_s = r.get<float>("f_s");
   m.root_diameter_m = r.get<float>("the root diameter");
-  read_skeleton(r, m);
+  read_skeleton(r, m, origin);
   const std::uint32_t clusters = r.get<std::uint32_t>("the cluster count");
   for (std::uint32_t k = 0; k < clusters; ++k)
-    m.clusters.push_back(read_hull(r, m.skeleton.size(), has_length));
+    m.clusters.push_back(read_hull(r, m.skeleton.size(), has_length, origin));
   if (!r.at_end()) r.fail("unexpected data after the last cluster", r.offset());
   return m;
 }

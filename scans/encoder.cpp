@@ -4,6 +4,7 @@
 #include "scans/allometry.hpp"
 #include "scans/cluster_split.hpp"
 #include "scans/neighbour_graph.hpp"
+#include "scans/point_origin.hpp"
 #include "scans/point_skeleton.hpp"
 #include "scans/shortest_path_tree.hpp"
 #include "scans/voxel_thinning.hpp"
@@ -53,9 +54,12 @@ ThinnedPoints thinned(const PointSet& input, double voxel_m) {
 
 }  // namespace
 
-EncodeResult encode_point_set(const PointSet& input, const EncodeOptions& o) {
+EncodeResult encode_point_set(const PointSet& absolute, const EncodeOptions& o) {
   check_options(o);
-  if (input.points.empty()) throw ValueError("the point set is empty");
+  if (absolute.points.empty()) throw ValueError("the point set is empty");
+  // Projected coordinates (x ~ 5e5 m, y ~ 6e6 m) are recentred: the results move back at the end.
+  const Eigen::Vector3d origin = point_set_origin(absolute);
+  const PointSet input = relative_to(absolute, origin);
   const ThinnedPoints thin = thinned(input, o.voxel_m);
   const PointSet& ps = thin.points;
   const std::uint32_t root = lowest_point(ps);
@@ -91,6 +95,12 @@ EncodeResult encode_point_set(const PointSet& input, const EncodeOptions& o) {
   r.model.clusters = hulls(thin, split.clusters, o.hull);
   r.model.skeleton = std::move(split.main_skeleton);
   r.full_skeleton = std::move(skeleton.tree);
+  r.origin = origin;
+  translate_tree(r.model.skeleton, origin);
+  translate_tree(r.full_skeleton, origin);
+  for (ClusterHull& h : r.model.clusters) {
+    for (Eigen::Vector3d& v : h.vertices) v += origin;
+  }
   return r;
 }
 

@@ -31,6 +31,9 @@ struct EncodeResult {
   std::size_t points = 0;
   std::size_t thinned_points = 0;  // after voxel thinning
   std::size_t bridges = 0;         // edges added to join pieces the neighbour graph left apart
+  // The encoder works on the points minus this origin (scans/point_origin.hpp); the skeletons and
+  // hulls above are moved back, in the input's coordinates.
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
 };
 
 // Throws ValueError for an empty point set, bad parameters, or when no root diameter is given

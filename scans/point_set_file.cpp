@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "fspm/error.hpp"
+#include "scans/las_reader.hpp"
 #include "scans/mesh_file.hpp"
 #include "scans/pcd_reader.hpp"
 #include "scans/ply_reader.hpp"
@@ -19,9 +20,10 @@ PointSet read_point_set(const std::string& path) {
   if (ext == ".ply") return read_ply_points(path);
   if (ext == ".xyz" || ext == ".txt" || ext == ".csv") return read_xyz_points(path);
   if (ext == ".pcd") return read_pcd_points(path);
+  if (ext == ".las" || ext == ".laz") return read_las_points(path);
   if (is_grouped_mesh_file(path)) return PointSet{read_mesh_file(path).vertices};
   throw ValueError("unknown point-set extension '" + ext +
-                       "', expected .ply, .xyz, .txt, .csv, .pcd, .obj, .gltf or .glb",
+                       "', expected .ply, .xyz, .txt, .csv, .pcd, .las, .obj, .gltf or .glb",
                    path);
 }
 

@@ -1,5 +1,6 @@
 #include "scans/point_set_writer.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <ostream>
 
@@ -12,13 +13,21 @@ namespace fspm::scans {
 void write_point_set(const PointSet& ps, const std::string& path) {
   const std::string ext = std::filesystem::path(path).extension().string();
   if (ext == ".ply") {
+    double largest = 0.0;
+    for (const Eigen::Vector3d& p : ps.points) largest = std::max(largest, p.cwiseAbs().maxCoeff());
+    const bool wide = largest > kPlyFloatLimitM;
     write_file_atomically(
         path,
         [&](std::ostream& out) {
+          const char* type = wide ? "double" : "float";
           out << "ply\nformat binary_little_endian 1.0\ncomment fspm point set\nelement vertex "
-              << ps.points.size()
-              << "\nproperty float x\nproperty float y\nproperty float z\nend_header\n";
+              << ps.points.size() << "\nproperty " << type << " x\nproperty " << type
+              << " y\nproperty " << type << " z\nend_header\n";
           for (const Eigen::Vector3d& p : ps.points) {
+            if (wide) {
+              out.write(reinterpret_cast<const char*>(p.data()), 3 * sizeof(double));
+              continue;
+            }
             const float xyz[3] = {static_cast<float>(p.x()), static_cast<float>(p.y()),
                                   static_cast<float>(p.z())};
             out.write(reinterpret_cast<const char*>(xyz), sizeof xyz);

@@ -78,6 +78,7 @@ from ._fspm import (  # noqa: F401
     mann_whitney_u_test,
     mean,
     mean_confidence_interval,
+    measure_points,
     memory_limit,
     mesh_tree,
     node_attribute_values,

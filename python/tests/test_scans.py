@@ -138,3 +138,38 @@ def test_decoding_textures_the_clusters_below_the_skeleton():
     assert 0.9 * scanned <= twig_length(decoded) <= 1.3 * scanned
     with pytest.raises(ValueError):
         fspm.decode_clusters(model, species="pinee")
+
+
+def test_a_cylinder_measures_to_its_diameter_height_and_volume():
+    m = fspm.measure_points(cylinder_points())
+    assert m["tree_found"] and m["warnings"] == []
+    # A bare trunk of radius 0.15 m and height 3 m: dbh 0.30 m, volume pi 0.15^2 3 = 0.212 m^3.
+    assert m["dbh_m"] == pytest.approx(0.30, rel=0.03)
+    assert m["height_m"] == pytest.approx(3.0, rel=0.02)
+    assert m["woody_volume_m3"] == pytest.approx(np.pi * 0.15**2 * 3.0, rel=0.15)
+    assert m["crown_base_m"] is None
+    assert m["cylinders"].shape[1] == 12
+    assert m["cylinders"][0, 8] == 0  # TreeQSM numbering: no parent for the first
+
+
+def test_projected_coordinates_measure_the_same():
+    near = fspm.measure_points(cylinder_points())
+    far = fspm.measure_points(cylinder_points() + np.array([500000.0, 5800000.0, 300.0]))
+    assert far["dbh_m"] == pytest.approx(near["dbh_m"], abs=1e-3)
+    assert far["cylinders"][0, 0] == pytest.approx(near["cylinders"][0, 0] + 500000.0, abs=1e-3)
+
+
+def test_las_files_are_read(tmp_path):
+    # LAS 1.2, point format 0 (20-byte records), written from ASPRS LAS 1.4 R15 table 3.
+    import struct
+    header = bytearray(227)
+    header[0:4] = b"LASF"
+    header[24:26] = bytes([1, 2])
+    struct.pack_into("<HI", header, 94, 227, 227)
+    struct.pack_into("<BHI", header, 104, 0, 20, 2)
+    struct.pack_into("<6d", header, 131, 0.01, 0.01, 0.01, 1000.0, 2000.0, 30.0)
+    records = struct.pack("<3i8x", 1, 2, 3) + struct.pack("<3i8x", -100, 0, 250)
+    path = tmp_path / "two.las"
+    path.write_bytes(bytes(header) + records)
+    assert fspm.read_points(str(path)) == pytest.approx(
+        np.array([[1000.01, 2000.02, 30.03], [999.0, 2000.0, 32.5]]))

@@ -1,9 +1,13 @@
 // fspm scan, fspm encode and fspm tree convert of a grouped OBJ or glTF, run as a user would.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 
 #include "fspm/tree_file.hpp"
 #include "tests/cli/run_command.hpp"
@@ -35,6 +39,13 @@ TEST(ScanCli, ScanThenEncodeReportsWhatItWrote) {
   EXPECT_DOUBLE_EQ(j["beta"].get<double>(), 1.3);  // pine, Pirk Table 3.1
   EXPECT_DOUBLE_EQ(j["f_s"].get<double>(), 0.9);   // overridden
   EXPECT_GE(j["seconds"].get<double>(), 0.0);
+  // The example tree forks 0.15 m above the ground: no trunk at breast height, so no dbh, and
+  // the fitted root diameter of eq. 3.1 is flagged.
+  EXPECT_TRUE(j["dbh_m"].is_null());
+  const std::string warnings = j["warnings"].dump();
+  EXPECT_NE(warnings.find("forks below breast height"), std::string::npos) << warnings;
+  EXPECT_NE(warnings.find("give --root-diameter"), std::string::npos) << warnings;
+  EXPECT_NE(r.err.find("[warning]"), std::string::npos) << r.err;
 }
 
 // An MTG is a tree model like the others: scanned as the same tree in .treeb gives the same
@@ -134,6 +145,93 @@ TEST(ScanCli, TreeConvertReadsAGroupedGlb) {
   EXPECT_EQ(t.parent(3), 0u);  // the branch hangs at the trunk point z = 1
   EXPECT_NEAR(t.radius(0), 0.125, 1e-6);
   EXPECT_NEAR(t.radius(4), 0.0625, 1e-6);
+}
+
+// A vertical cylinder of radius 0.15 m and height 3 m (a bare trunk) as a LAS 1.2 file of point
+// format 0 (ASPRS LAS 1.4 R15, table 3), millimetre scale, at projected coordinates.
+std::string cylinder_las() {
+  std::string s(227, '\0');
+  const auto put = [&s](std::size_t at, auto v) { std::memcpy(s.data() + at, &v, sizeof v); };
+  std::memcpy(s.data(), "LASF", 4);
+  put(24, std::uint8_t{1});
+  put(25, std::uint8_t{2});
+  put(94, std::uint16_t{227});
+  put(96, std::uint32_t{227});
+  put(105, std::uint16_t{20});
+  const double offset[3] = {500000.0, 5800000.0, 300.0};
+  for (int c = 0; c < 3; ++c) {
+    put(131 + 8 * static_cast<std::size_t>(c), 0.001);
+    put(155 + 8 * static_cast<std::size_t>(c), offset[c]);
+  }
+  std::uint32_t n = 0;
+  for (int ring = 0; ring < 150; ++ring) {
+    for (int k = 0; k < 48; ++k, ++n) {
+      const double a = 2.0 * std::numbers::pi * (k + 0.5 * (ring % 2)) / 48.0;
+      const std::int32_t xyz[3] = {static_cast<std::int32_t>(std::lround(150.0 * std::cos(a))),
+                                   static_cast<std::int32_t>(std::lround(150.0 * std::sin(a))),
+                                   20 * ring};
+      s.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+      s.append(8, '\0');
+    }
+  }
+  put(107, n);
+  return s;
+}
+
+// A LAS trunk at projected coordinates: measured as at the origin, outputs in its coordinates.
+TEST(ScanCli, EncodeMeasuresALasTrunkAtProjectedCoordinates) {
+  const auto dir = scratch_dir("scan_las");
+  const std::string las = (dir / "trunk.las").string();
+  std::ofstream(las, std::ios::binary) << cylinder_las();
+  const std::string csv = (dir / "cylinders.csv").string();
+  const auto r = run_fspm("encode " + las + " -o " + (dir / "t.clusters").string() +
+                          " --cylinders " + csv + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["points"], 7200);
+  EXPECT_NEAR(j["dbh_m"].get<double>(), 0.30, 0.30 * 0.03);
+  EXPECT_NEAR(j["height_m"].get<double>(), 2.98, 0.02 * 2.98);
+  EXPECT_NEAR(j["woody_volume_m3"].get<double>(), std::numbers::pi * 0.15 * 0.15 * 2.98,
+              0.15 * std::numbers::pi * 0.15 * 0.15 * 2.98);
+  EXPECT_EQ(j["origin"][1], 5799999.0);
+  EXPECT_TRUE(j["warnings"].empty()) << j["warnings"];
+  const std::string text = read_text(csv);
+  EXPECT_EQ(text.rfind("start_x,start_y,start_z,axis_x,axis_y,axis_z,length,radius,parent,", 0),
+            0u);
+  // One row per cylinder; the first starts at the trunk's foot, in the file's coordinates.
+  EXPECT_EQ(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')),
+            j["cylinders"].get<std::size_t>() + 1);
+  const std::string first = text.substr(text.find('\n') + 1);
+  EXPECT_NEAR(std::stod(first), 500000.0, 0.2);
+  std::filesystem::remove_all(dir);
+}
+
+// No tree: the walls of a house exit 1 with the warning and write nothing; .laz is refused.
+TEST(ScanCli, AHouseIsNoTreeAndLazIsRefused) {
+  const auto dir = scratch_dir("scan_house");
+  const std::string xyz = (dir / "house.xyz").string();
+  {
+    std::ofstream out(xyz);
+    for (int z = 0; z <= 60; ++z) {
+      for (int s = 0; s < 160; ++s) {
+        out << s * 0.05 << " 0 " << z * 0.05 << "\n" << s * 0.05 << " 6 " << z * 0.05 << "\n";
+        if (s < 120) out << "0 " << s * 0.05 << " " << z * 0.05 << "\n";
+        if (s < 120) out << "8 " << s * 0.05 << " " << z * 0.05 << "\n";
+      }
+    }
+  }
+  const std::string model = (dir / "house.clusters").string();
+  auto r = run_fspm("encode " + xyz + " --root-diameter 0.3 -o " + model + " --json");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("no vertical trunk found"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(model));
+  EXPECT_FALSE(nlohmann::json::parse(r.out)["warnings"].empty());
+  const std::string laz = (dir / "tree.laz").string();
+  std::ofstream(laz, std::ios::binary) << cylinder_las();
+  r = run_fspm("encode " + laz + " -o " + model);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("laszip"), std::string::npos) << r.err;
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

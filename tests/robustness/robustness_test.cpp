@@ -613,6 +613,24 @@ std::vector<Case> memory_cases() {
        1,
        "big.ply: reading the whole file needs about 2.3 MiB, above the memory limit of 1 MiB",
        {"c.clusters"}},
+      {"TruncatedLas",
+       {{"cut.las", std::string("LASF\0\0", 6)}},
+       {},
+       "encode {dir}/cut.las -o {dir}/c.clusters",
+       1,
+       "cut.las: the file ends inside the file source id, global encoding and GUID \\(6 bytes\\) "
+       "at byte 4",
+       {"c.clusters"}},
+      {"CompressedLasPointFormat",
+       {{"laz.las", "LASF" + std::string(20, '\0') + "\x01\x02" + std::string(68, '\0') + "\xe3" +
+                        std::string(1, '\0') + "\xe3" + std::string(7, '\0') + "\x83" +
+                        std::string(200, '\0')}},
+       {},
+       "encode {dir}/laz.las -o {dir}/c.clusters",
+       1,
+       "laz.las: the point data is compressed \\(LAZ, point format byte 131\\); decompress it "
+       "first",
+       {"c.clusters"}},
       {"ZeroMemoryLimit",
        {},
        {},

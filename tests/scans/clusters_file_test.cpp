@@ -61,8 +61,8 @@ TEST(ClustersFile, VersionOneIsReadWithoutBranchLengths) {
   EXPECT_EQ(r.clusters[0].point_count, 1234u);
   EXPECT_EQ(r.clusters[0].branch_length_m, 0.0);
   EXPECT_EQ(r.clusters[0].triangles, small_model().clusters[0].triangles);
-  bytes[7] = '3';
-  EXPECT_THROW(parse_clusters_bytes(bytes, "v3.clusters"), ParseError);
+  bytes[7] = '4';
+  EXPECT_THROW(parse_clusters_bytes(bytes, "v4.clusters"), ParseError);
 }
 
 TEST(ClustersFile, DamageIsRefusedWithTheByteOffset) {
@@ -90,6 +90,40 @@ TEST(ClustersFile, DamageIsRefusedWithTheByteOffset) {
     FAIL() << "expected a ParseError";
   } catch (const ParseError& e) {
     EXPECT_NE(e.message().find("node count 4294967295"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace fspm::scans
+
+namespace fspm::scans {
+namespace {
+
+// At projected coordinates a float keeps half a metre; version 3 stores a double origin and
+// floats relative to it, so positions come back to float precision at the origin (~1e-6 m).
+TEST(ClustersFile, ProjectedCoordinatesKeepMillimetresThroughTheOrigin) {
+  ClusterModel m = small_model();
+  const Eigen::Vector3d shift(500000.123, 5800000.456, 300.789);
+  ClusterModel far = m;
+  far.skeleton = TreeGraph();
+  for (NodeId u = 0; u < m.skeleton.size(); ++u) {
+    NodeData d;
+    d.start = m.skeleton.start(u) + shift;
+    d.end = m.skeleton.end(u) + shift;
+    d.radius = m.skeleton.radius(u);
+    far.skeleton.add_node(m.skeleton.parent(u), d);
+  }
+  for (Eigen::Vector3d& v : far.clusters[0].vertices) v += shift;
+  const std::string bytes = clusters_bytes(far);
+  EXPECT_EQ(bytes.substr(0, 8), "FSPMCLU3");
+  EXPECT_EQ(bytes.size(), clusters_bytes(m).size() + 24);
+  const ClusterModel r = parse_clusters_bytes(bytes, "far.clusters");
+  for (NodeId u = 0; u < m.skeleton.size(); ++u) {
+    EXPECT_LT((r.skeleton.end(u) - far.skeleton.end(u)).norm(), 1e-5);
+    EXPECT_LT((r.skeleton.start(u) - far.skeleton.start(u)).norm(), 1e-5);
+  }
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_LT((r.clusters[0].vertices[k] - far.clusters[0].vertices[k]).norm(), 1e-4);
   }
 }
 

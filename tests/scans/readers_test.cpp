@@ -5,12 +5,14 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "fspm/error.hpp"
 #include "scans/obj_reader.hpp"
 #include "scans/pcd_reader.hpp"
 #include "scans/ply_reader.hpp"
 #include "scans/point_set_file.hpp"
+#include "scans/point_set_writer.hpp"
 #include "scans/xyz_reader.hpp"
 
 namespace fspm::scans {
@@ -21,6 +23,11 @@ std::string temp_file(const std::string& name, const std::string& content) {
                     ("fspm_scans_" + std::to_string(::getpid()) + "_" + name);
   std::ofstream(path, std::ios::binary) << content;
   return path.string();
+}
+
+std::string read_text_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 template <class T>
@@ -205,12 +212,29 @@ TEST(ObjReader, GroupsFacesAndNegativeIndices) {
   }
 }
 
+// Written .ply keeps millimetres at projected coordinates (doubles there), floats near zero.
+TEST(PointSetFile, PlyWrittenAtProjectedCoordinatesKeepsMillimetres) {
+  const std::string far = temp_file("far.ply", "");
+  const std::string near = temp_file("near.ply", "");
+  PointSet ps;
+  ps.points = {{500000.001, 5800000.002, 300.003}, {500000.004, 5800000.005, 300.006}};
+  write_point_set(ps, far);
+  write_point_set({{{0.001, 0.002, 0.003}}}, near);
+  const PointSet back = read_point_set(far);
+  ASSERT_EQ(back.points.size(), 2u);
+  EXPECT_EQ(back.points[1], ps.points[1]);
+  EXPECT_NE(read_text_file(far).find("property double x"), std::string::npos);
+  EXPECT_NE(read_text_file(near).find("property float x"), std::string::npos);
+  std::filesystem::remove(far);
+  std::filesystem::remove(near);
+}
+
 TEST(PointSetFile, ChoosesTheReaderByExtension) {
   const std::string xyz = temp_file("p.xyz", "1 2 3\n");
   EXPECT_EQ(read_point_set(xyz).points.at(0), Eigen::Vector3d(1, 2, 3));
   const std::string obj = temp_file("p.obj", "v 4 5 6\n");
   EXPECT_EQ(read_point_set(obj).points.at(0), Eigen::Vector3d(4, 5, 6));
-  EXPECT_THROW(read_point_set(temp_file("p.las", "")), ValueError);
+  EXPECT_THROW(read_point_set(temp_file("p.e57", "")), ValueError);
   EXPECT_THROW(read_point_set("/nonexistent/fspm_scan.ply"), IoError);
   std::filesystem::remove(xyz);
   std::filesystem::remove(obj);

@@ -1,0 +1,132 @@
+#include "scans/tree_measurements.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <algorithm>
+#include <cmath>
+
+#include "fspm/error.hpp"
+#include "scans/allometry.hpp"
+#include "scans/point_origin.hpp"
+
+namespace fspm::scans {
+namespace {
+
+std::string metres(double v) { return fmt::format("{:.3f} m", v); }
+
+void measure_stem(const PointSet& ps, const std::vector<char>& on_trunk, double z0,
+                  const MeasureOptions& o, TreeMeasurements& m) {
+  const BreastHeightOptions& b = o.breast_height;
+  const std::vector<std::size_t> stems = stems_at_base(ps, z0, b);
+  m.stems = stems.size();
+  if (stems.size() > 1) {
+    m.warnings.push_back(fmt::format(
+        "{} separate stems {:.1f}-{:.1f} m above the lowest point (points: {}): several trees "
+        "or a stem forked below; the measurements take them as one tree; crop the cloud to one "
+        "tree",
+        stems.size(), b.base_low_m, b.base_high_m, fmt::join(stems, ", ")));
+  }
+  const BreastHeightStem s = stem_slice(ps, on_trunk, z0, b.slice_low_m, b.slice_high_m, b);
+  m.breast_height_points = s.slice_points;
+  const std::string slice = fmt::format("trunk points {:.1f}-{:.1f} m above the lowest point",
+                                        b.slice_low_m, b.slice_high_m);
+  if (s.slice_points < b.min_points) {
+    m.tree_found = true;  // nothing to judge the stem by (an airborne scan, a short plant)
+    m.warnings.push_back(fmt::format(
+        "only {} {} (at least {} needed): no trunk diameter; scan the stem or measure it",
+        s.slice_points, slice, b.min_points));
+    return;
+  }
+  if (!s.compact) {
+    const BreastHeightStem foot = stem_slice(ps, on_trunk, z0, b.stem_low_m, b.stem_high_m, b);
+    m.tree_found = foot.compact;
+    if (foot.compact) {
+      m.warnings.push_back(fmt::format(
+          "no single trunk at breast height: the {} {} do not lie on one circle, but a stem of "
+          "{} stands {:.1f}-{:.1f} m above the lowest point: the tree forks below breast height; "
+          "no dbh",
+          s.slice_points, slice, metres(2.0 * foot.circle->radius_m), b.stem_low_m, b.stem_high_m));
+    } else {
+      m.warnings.push_back(fmt::format(
+          "no vertical trunk found: the {} {} do not lie on a circle of at most {}, nor do those "
+          "{:.1f}-{:.1f} m above it (a wall, a hedge, a crown down to the ground?)",
+          s.slice_points, slice, metres(b.max_diameter_m), b.stem_low_m, b.stem_high_m));
+    }
+    return;
+  }
+  m.tree_found = true;
+  m.dbh_m = 2.0 * s.circle->radius_m;
+}
+
+void measure_crown(const PointSet& ps, const TreeGraph& t, double z0, const MeasureOptions& o,
+                   TreeMeasurements& m) {
+  const std::vector<double> l = subtree_lengths_m(t);
+  for (NodeId u = 0; u < t.size() && !m.crown_base_m; ++u) {
+    if (t.order(u) != 0) continue;
+    for (NodeId c : t.children(u)) {
+      if (t.order(c) > 0 && l[c] >= o.min_branch_length_m) m.crown_base_m = t.end(u).z() - z0;
+    }
+  }
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(INFINITY), hi = -lo;
+  const double from = z0 + m.crown_base_m.value_or(0.0);
+  for (const Eigen::Vector3d& p : ps.points) {
+    if (p.z() >= from) lo = lo.cwiseMin(p.head<2>()), hi = hi.cwiseMax(p.head<2>());
+  }
+  m.crown_width_m = lo.allFinite() ? 0.5 * ((hi - lo).x() + (hi - lo).y()) : 0.0;
+}
+
+// The cylinders and their numbers; returns which points belong to the trunk (their nearest
+// segment has order 0).
+std::vector<char> measure_cylinders(const PointSet& ps, const TreeGraph& t, const MeasureOptions& o,
+                                    TreeMeasurements& m) {
+  QsmCylinders q = fit_qsm_cylinders(ps, t);
+  std::vector<char> on_trunk(ps.points.size());
+  for (std::size_t i = 0; i < ps.points.size(); ++i) {
+    on_trunk[i] = q.cylinders[q.cylinder_of_point[i]].order == 0;
+  }
+  m.woody_volume_m3 = cylinders_volume_m3(q.cylinders);
+  std::size_t explained = 0;
+  for (double d : q.surface_distance_m) explained += d <= o.explained_tolerance_m;
+  m.points_explained_fraction = static_cast<double>(explained) / ps.points.size();
+  for (NodeId u = 0; u < t.size(); ++u) {
+    const std::size_t order = t.order(u);
+    if (m.branches_per_order.size() <= order) {
+      m.branches_per_order.resize(order + 1, 0);
+      m.branch_length_per_order_m.resize(order + 1, 0.0);
+    }
+    const NodeId p = t.parent(u);
+    if (p == kNoNode || t.order(p) != t.order(u)) ++m.branches_per_order[order];
+    m.branch_length_per_order_m[order] += t.length(u);
+  }
+  m.cylinders = std::move(q.cylinders);
+  return on_trunk;
+}
+
+}  // namespace
+
+TreeMeasurements measure_tree(const PointSet& absolute, const TreeGraph& skeleton,
+                              const MeasureOptions& o) {
+  if (absolute.points.empty()) throw ValueError("measuring a tree needs points");
+  if (skeleton.empty()) throw ValueError("measuring a tree needs a skeleton");
+  const Eigen::Vector3d origin = point_set_origin(absolute);
+  const PointSet ps = relative_to(absolute, origin);
+  TreeGraph t = skeleton;
+  translate_tree(t, -origin);
+  double z0 = ps.points[0].z(), z1 = z0;
+  for (const Eigen::Vector3d& p : ps.points) z0 = std::min(z0, p.z()), z1 = std::max(z1, p.z());
+  TreeMeasurements m;
+  m.height_m = z1 - z0;
+  const std::vector<char> on_trunk = measure_cylinders(ps, t, o, m);
+  measure_stem(ps, on_trunk, z0, o, m);
+  measure_crown(ps, t, z0, o, m);
+  for (QsmCylinder& c : m.cylinders) c.start += origin;
+  if (m.dbh_m && *m.dbh_m > o.max_dbh_per_height * m.height_m) {
+    m.warnings.push_back(fmt::format(
+        "a trunk diameter of {} is implausible for a height of {} (more than {:.0f} % of it): "
+        "check the breast-height slice for branches, leaves or other objects",
+        metres(*m.dbh_m), metres(m.height_m), 100.0 * o.max_dbh_per_height));
+  }
+  return m;
+}
+
+}  // namespace fspm::scans
