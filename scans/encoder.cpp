@@ -3,6 +3,7 @@
 #include "fspm/error.hpp"
 #include "scans/allometry.hpp"
 #include "scans/cluster_split.hpp"
+#include "scans/ground_filter.hpp"
 #include "scans/neighbour_graph.hpp"
 #include "scans/point_skeleton.hpp"
 #include "scans/shortest_path_tree.hpp"
@@ -51,14 +52,32 @@ ThinnedPoints thinned(const PointSet& input, double voxel_m) {
   return thin_to_voxels(input, voxel_m);
 }
 
+// The thinned points without the ground (scans/ground_filter.hpp), counts kept with them.
+ThinnedPoints without_ground(ThinnedPoints thin, std::size_t& removed) {
+  const std::vector<std::uint32_t> keep = above_ground(thin.points);
+  removed = thin.points.points.size() - keep.size();
+  if (keep.empty()) removed = 0;
+  if (removed == 0) return thin;
+  ThinnedPoints out;
+  out.points.points.reserve(keep.size());
+  out.counts.reserve(keep.size());
+  for (std::uint32_t i : keep) {
+    out.points.points.push_back(thin.points.points[i]);
+    out.counts.push_back(thin.counts[i]);
+  }
+  return out;
+}
+
 }  // namespace
 
 EncodeResult encode_point_set(const PointSet& input, const EncodeOptions& o) {
   check_options(o);
   if (input.points.empty()) throw ValueError("the point set is empty");
-  const ThinnedPoints thin = thinned(input, o.voxel_m);
+  std::size_t ground = 0;
+  const ThinnedPoints thin =
+      o.keep_ground ? thinned(input, o.voxel_m) : without_ground(thinned(input, o.voxel_m), ground);
   const PointSet& ps = thin.points;
-  const std::uint32_t root = lowest_point(ps);
+  const std::uint32_t root = trunk_base_point(ps);
   const NeighbourGraph graph = build_neighbour_graph(ps, o.neighbours, o.species.beta, root);
   const ShortestPathTree paths = shortest_path_tree(ps, graph, root);
   const double bin = o.bin_length_m > 0.0 ? o.bin_length_m : default_bin_length_m(paths);
@@ -81,7 +100,8 @@ EncodeResult encode_point_set(const PointSet& input, const EncodeOptions& o) {
   ClusterSplit split = split_clusters(ps, skeleton, o.species.f_s);
   EncodeResult r;
   r.points = input.points.size();
-  r.thinned_points = ps.points.size();
+  r.thinned_points = ps.points.size() + ground;
+  r.ground_points = ground;
   r.bridges = graph.bridges;
   r.model.species = o.species.name;
   r.model.beta = o.species.beta;
