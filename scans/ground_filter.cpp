@@ -19,8 +19,11 @@ Cell cell_of(const Eigen::Vector3d& p, double size) {
 }
 
 // z = c0 x + c1 y + c2 through the cell minima within 0.5 m of the current plane, three times,
-// from the horizontal plane through the lowest minimum.
-Eigen::Vector3d lower_envelope_plane(const std::vector<Eigen::Vector3d>& minima) {
+// from the horizontal plane through the lowest minimum. A plane is fitted only to at least
+// `min_cells` cells and kept only below a slope of 1:2: the few cells of a trunk's foot would
+// tilt it at random.
+Eigen::Vector3d lower_envelope_plane(const std::vector<Eigen::Vector3d>& minima,
+                                     std::size_t min_cells) {
   double lowest = std::numeric_limits<double>::infinity();
   for (const Eigen::Vector3d& m : minima) lowest = std::min(lowest, m.z());
   Eigen::Vector3d plane(0.0, 0.0, lowest);
@@ -31,14 +34,16 @@ Eigen::Vector3d lower_envelope_plane(const std::vector<Eigen::Vector3d>& minima)
         near.push_back(&m);
       }
     }
-    if (near.size() < 3) break;
+    if (near.size() < std::max<std::size_t>(min_cells, 3)) break;
     Eigen::MatrixXd a(near.size(), 3);
     Eigen::VectorXd b(near.size());
     for (std::size_t i = 0; i < near.size(); ++i) {
       a.row(static_cast<Eigen::Index>(i)) << near[i]->x(), near[i]->y(), 1.0;
       b(static_cast<Eigen::Index>(i)) = near[i]->z();
     }
-    plane = a.colPivHouseholderQr().solve(b);
+    const Eigen::Vector3d fit = a.colPivHouseholderQr().solve(b);
+    if (fit.head<2>().norm() > 0.5) break;
+    plane = fit;
   }
   return plane;
 }
@@ -56,7 +61,7 @@ std::vector<std::uint32_t> above_ground(const PointSet& ps, const GroundOptions&
   std::vector<std::uint32_t> all(ps.points.size());
   for (std::uint32_t i = 0; i < all.size(); ++i) all[i] = i;
   if (minima.empty()) return all;
-  const Eigen::Vector3d plane = lower_envelope_plane(minima);
+  const Eigen::Vector3d plane = lower_envelope_plane(minima, o.min_ground_cells);
   const auto height = [&plane](const Eigen::Vector3d& p) {
     return p.z() - (plane.x() * p.x() + plane.y() * p.y() + plane.z());
   };
