@@ -7,6 +7,7 @@
 #include "scans/neighbour_graph.hpp"
 #include "scans/point_skeleton.hpp"
 #include "scans/shortest_path_tree.hpp"
+#include "scans/tip_pruning.hpp"
 #include "scans/voxel_thinning.hpp"
 
 #include <algorithm>
@@ -110,6 +111,7 @@ EncodeResult encode_point_set(const PointSet& input, const EncodeOptions& o) {
   r.model.root_diameter_m = d_root;
   r.model.clusters = hulls(thin, split.clusters, o.hull);
   r.model.skeleton = std::move(split.main_skeleton);
+  r.branch_skeleton = without_short_tips(skeleton.tree, 4.0 * bin);
   r.full_skeleton = std::move(skeleton.tree);
   return r;
 }

@@ -31,6 +31,9 @@ struct EncodeOptions {
 struct EncodeResult {
   ClusterModel model;
   TreeGraph full_skeleton;  // every skeleton node, radii of eq. 3.1, before the cluster split
+  // The full skeleton without side tips shorter than four bins (scans/tip_pruning.hpp): the
+  // branches the scan shows, into the crown, where eq. 3.2 may have cut the main skeleton short.
+  TreeGraph branch_skeleton;
   std::size_t points = 0;
   std::size_t thinned_points = 0;  // after voxel thinning
   std::size_t ground_points = 0;   // thinned points removed as ground
