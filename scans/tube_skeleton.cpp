@@ -33,6 +33,28 @@ void reverse(RingPolyline& r) {
   std::reverse(r.radii_m.begin(), r.radii_m.end());
 }
 
+// A branch modelled from its parent's surface (its base ring beside the parent's axis) forks
+// where its axis, continued backwards, comes nearest to the parent's axis: the line from the
+// base ring against the direction of its first segment, sampled over three times the base's
+// distance from the parent's axis, refines the joint found from the base ring alone.
+void refine_fork(const RingPolyline& parent, const RingPolyline& child, Joint& j) {
+  const Eigen::Vector3d base = child.centres[0];
+  const Eigen::Vector3d back = (child.centres[0] - child.centres[1]).normalized();
+  if (j.distance_m < 0.25 * child.radii_m[0] || !back.allFinite()) return;
+  const double reach = 3.0 * j.distance_m;
+  constexpr int kSteps = 30;
+  Joint best = j;
+  double best_gap = j.distance_m;
+  for (int k = 1; k <= kSteps; ++k) {
+    Joint here = j;
+    here.distance_m = std::numeric_limits<double>::infinity();
+    nearest_on_axis(parent.centres, base + reach * k / kSteps * back, here);
+    if (here.distance_m < best_gap) best_gap = here.distance_m, best = here;
+  }
+  best.distance_m = j.distance_m;  // the join order stays that of the base ring
+  j = best;
+}
+
 // The thickest branch among those reaching within a tenth of the model's height of its lowest end.
 std::size_t trunk_of(const std::vector<RingPolyline>& b) {
   double low = std::numeric_limits<double>::infinity(), high = -low;
@@ -75,6 +97,7 @@ std::vector<std::size_t> join_branches(std::vector<RingPolyline>& axes, std::vec
       if (!joined[b] && (next == n || joint[b].distance_m < joint[next].distance_m)) next = b;
     }
     if (!joint[next].base_at_front) reverse(axes[next]);
+    refine_fork(axes[joint[next].parent], axes[next], joint[next]);
     joined[next] = true;
     order.push_back(next);
     newest = next;

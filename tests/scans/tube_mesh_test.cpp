@@ -243,6 +243,27 @@ TEST(TubeMeshSkeleton, OrderAndDirectionOfTubesDoNotMatter) {
   expect_skeleton(t, b, 3);
 }
 
+// A branch modelled from the trunk's surface, as SpeedTree and Xfrog start laterals: its first
+// ring lies 0.21 m along its axis from where that axis meets the trunk's (at 45 degrees to a trunk
+// of radius 0.15 m). The fork is that meeting point, not the trunk point nearest the first ring
+// (0.15 m higher).
+TEST(TubeMeshSkeleton, BranchFromTheParentsSurfaceForksOnTheAxis) {
+  const Eigen::Vector3d fork(0, 0, 1.5), d = Eigen::Vector3d(1, 0, 1).normalized();
+  const std::vector<Axis> axes{
+      straight({0, 0, 0}, {0, 0, 3.0}, 0.15, 0.1, 0.3),
+      straight(fork + 0.15 * std::sqrt(2.0) * d, fork + 1.2 * d, 0.05, 0.03, 0.2)};
+  const TreeGraph t = grouped_mesh_skeleton(parse_obj_mesh(obj_of(axes), "s.obj"), "s.obj");
+  NodeId first = kNoNode, tip = kNoNode;
+  for (NodeId i = 0; i < t.size(); ++i) {
+    if (t.order(i) == 1 && t.order(t.parent(i)) == 0) first = i;
+    if (t.order(i) == 1 && t.children(i).empty()) tip = i;
+  }
+  ASSERT_NE(first, kNoNode);
+  ASSERT_NE(tip, kNoNode);
+  EXPECT_LT((t.start(first) - fork).norm(), 0.05) << t.start(first).transpose();
+  EXPECT_LT((t.end(tip) - (fork + 1.2 * d)).norm(), 0.05) << t.end(tip).transpose();
+}
+
 // Tubes closed by caps (a polygon, or a fan of triangles around a centre vertex) and a flat leaf
 // card beside them: the same skeleton, the card counted as no tube.
 TEST(TubeMeshSkeleton, CapsAndLeafCards) {
