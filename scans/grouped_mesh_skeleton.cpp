@@ -148,6 +148,9 @@ std::optional<std::vector<RingPolyline>> tube_branches(const GroupedMesh& m,
 TreeGraph grouped_mesh_skeleton(const GroupedMesh& m, const std::string& path,
                                 std::size_t* not_tubes) {
   if (not_tubes != nullptr) *not_tubes = 0;
+  if (m.faces.empty()) {
+    throw ValueError("the mesh has no faces; a point set gives a skeleton with fspm encode", path);
+  }
   if (std::optional<std::vector<RingPolyline>> tubes = tube_branches(m, not_tubes)) {
     return tube_skeleton(*tubes, path);
   }

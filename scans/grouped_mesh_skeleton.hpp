@@ -22,8 +22,8 @@ std::string group_level_name(const std::string& group_name);
 // piece is a branch and the skeleton joins them by geometry (scans/tube_skeleton.hpp); pieces that
 // are no tube (leaf cards, flat polygons) are left out and counted in `not_tubes`. Otherwise
 // the faces are cross-sections as above.
-// Throws ValueError (naming `path`) when the first level has no group or more than one, or a
-// group has no face.
+// Throws ValueError (naming `path`) when the mesh has no face, the first level has no group or
+// more than one, or a group has no face.
 TreeGraph grouped_mesh_skeleton(const GroupedMesh& mesh, const std::string& path,
                                 std::size_t* not_tubes = nullptr);
 

@@ -11,6 +11,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "fspm/error.hpp"
 #include "scans/grouped_mesh_skeleton.hpp"
 #include "scans/mesh_file.hpp"
 #include "scans/ply_reader.hpp"
@@ -262,6 +263,18 @@ TEST(TubeMeshSkeleton, BranchFromTheParentsSurfaceForksOnTheAxis) {
   ASSERT_NE(tip, kNoNode);
   EXPECT_LT((t.start(first) - fork).norm(), 0.05) << t.start(first).transpose();
   EXPECT_LT((t.end(tip) - (fork + 1.2 * d)).norm(), 0.05) << t.end(tip).transpose();
+}
+
+TEST(TubeMeshSkeleton, APointSetIsNoMesh) {
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
+  try {
+    grouped_mesh_skeleton(parse_ply_mesh(ply, "p.ply"), "p.ply");
+    FAIL() << "no error";
+  } catch (const ValueError& e) {
+    EXPECT_NE(std::string(e.what()).find("fspm encode"), std::string::npos) << e.what();
+  }
 }
 
 // Tubes closed by caps (a polygon, or a fan of triangles around a centre vertex) and a flat leaf
