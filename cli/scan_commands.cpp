@@ -33,7 +33,9 @@ struct EncodeCommand {
   std::optional<double> beta, gamma, f_s, root_diameter_m, bin_length_m;
   std::string skeleton;
   std::string cylinders;
+  std::string branch_skeleton;
   int neighbours = 8;
+  bool keep_ground = false;
   std::uint64_t seed = 1;
   bool json = false;
 };
@@ -73,6 +75,7 @@ void run_encode(const EncodeCommand& o) {
   refuse_overwriting_input(o.output, {o.input});
   refuse_overwriting_input(o.skeleton, {o.input});
   refuse_overwriting_input(o.cylinders, {o.input});
+  refuse_overwriting_input(o.branch_skeleton, {o.input});
   scans::EncodeOptions options;
   options.species = scans::species_by_name(o.species);
   if (o.beta) options.species.beta = *o.beta;
@@ -81,6 +84,7 @@ void run_encode(const EncodeCommand& o) {
   options.root_diameter_m = o.root_diameter_m;
   options.bin_length_m = o.bin_length_m.value_or(0.0);
   options.neighbours = o.neighbours;
+  options.keep_ground = o.keep_ground;
   const scans::PointSet points = load_input(o);
   const auto t0 = std::chrono::steady_clock::now();
   const scans::EncodeResult r = scans::encode_point_set(points, options);
@@ -108,6 +112,8 @@ void run_encode(const EncodeCommand& o) {
                         {"gamma", r.model.gamma},
                         {"f_s", r.model.f_s},
                         {"bridges", r.bridges},
+                        {"ground_points", r.ground_points},
+                        {"branch_skeleton_nodes", r.branch_skeleton.size()},
                         {"origin", {r.origin.x(), r.origin.y(), r.origin.z()}},
                         {"output", o.output}};
   doc.update(measurements_json(m));
@@ -118,6 +124,7 @@ void run_encode(const EncodeCommand& o) {
   scans::write_clusters_file(r.model, o.output);
   if (!o.skeleton.empty()) write_tree_file(r.model.skeleton, o.skeleton);
   if (!o.cylinders.empty()) scans::write_cylinders_csv(m.cylinders, o.cylinders);
+  if (!o.branch_skeleton.empty()) write_tree_file(r.branch_skeleton, o.branch_skeleton);
   spdlog::info("{}: {} points -> {} skeleton nodes, {} clusters, {} bytes -> {}", o.input, r.points,
                r.model.skeleton.size(), r.model.clusters.size(), bytes.size(), o.output);
   if (o.json) print_json(doc);
@@ -151,6 +158,11 @@ void add_encode_command(CLI::App& app) {
   e->add_option("--cylinders", o->cylinders,
                 "Also write the fitted cylinders as CSV with TreeQSM's columns (start, axis, "
                 "length, radius, parent, branch, order)");
+  e->add_option("--branch-skeleton", o->branch_skeleton,
+                "Also write the skeleton of every branch the scan shows (before the cluster "
+                "split of eq. 3.2, short side tips removed) as a tree file");
+  e->add_flag("--keep-ground", o->keep_ground,
+              "Keep points near the cloud's lower envelope (default: removed as ground)");
   e->add_option("--seed", o->seed, "Seed of the simulated scan of a tree model")
       ->check(number_in(0, kMaxSeed));
   e->add_flag("--json", o->json,

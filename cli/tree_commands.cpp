@@ -119,15 +119,27 @@ std::string source_comment(const ConvertOptions& o, bool mesh) {
   return comment;
 }
 
+// The skeleton of a mesh: tubes of vertex rings, or one group of cross-sections per branch.
+TreeGraph mesh_skeleton_of(const ConvertOptions& o) {
+  std::size_t not_tubes = 0;
+  TreeGraph t = scans::grouped_mesh_skeleton(scans::read_mesh_file(o.in, o.from), o.in, &not_tubes);
+  if (not_tubes > 0) {
+    spdlog::warn(
+        "{}: {} mesh pieces are no tube of vertex rings (leaves, flat polygons) and are left "
+        "out of the skeleton; remove them from the mesh if they are branches",
+        o.in, not_tubes);
+  }
+  return t;
+}
+
 void run_convert(const ConvertOptions& o) {
   refuse_overwriting_input(o.out, {o.in});
-  // A grouped mesh (one OBJ group or glTF node per branch) gives its skeleton (Reynolds et al.
-  // 2011, 3.1).
-  const bool mesh = o.from == "obj" || o.from == "gltf" || o.from == "glb" ||
-                    (o.from.empty() && scans::is_grouped_mesh_file(o.in));
+  // A mesh of branch tubes, or one group (OBJ group or glTF node) per branch, gives its skeleton
+  // (Reynolds et al. 2011, 3.1).
+  const bool mesh = o.from == "obj" || o.from == "gltf" || o.from == "glb" || o.from == "ply" ||
+                    (o.from.empty() && scans::is_mesh_file(o.in));
   const NamedTree named =
-      mesh ? NamedTree{scans::grouped_mesh_skeleton(scans::read_mesh_file(o.in, o.from), o.in), {}}
-           : read_named_tree_file(o.in, o.from);
+      mesh ? NamedTree{mesh_skeleton_of(o), {}} : read_named_tree_file(o.in, o.from);
   write_named_tree_file(named, o.out, o.to, source_comment(o, mesh));
   warn_of_dropped_names(named, o);
   spdlog::info("wrote {} ({} nodes)", o.out, named.tree.size());
@@ -150,11 +162,11 @@ void add_tree_commands(CLI::App& app) {
   auto conv = std::make_shared<ConvertOptions>();
   CLI::App* c = tree->add_subcommand("convert", "Convert a tree file to another format");
   c->add_option("IN", conv->in,
-                "Input tree file (.tree, .treeb, .nwk, .mtg), or a mesh with one group per "
-                "branch (.obj groups, .gltf/.glb nodes; its skeleton)")
+                "Input tree file (.tree, .treeb, .nwk, .mtg), or a mesh of branch tubes (.obj, "
+                ".ply, .gltf, .glb) or with one group per branch (its skeleton)")
       ->required();
   c->add_option("OUT", conv->out, "Output tree file (.tree, .treeb, .nwk, .mtg)")->required();
-  c->add_option("--from", conv->from, "Input format: " + formats + ", or obj, gltf, glb");
+  c->add_option("--from", conv->from, "Input format: " + formats + ", or obj, ply, gltf, glb");
   c->add_option("--format,--to", conv->to, "Output format: " + formats);
   c->callback([conv] { run_convert(*conv); });
 }

@@ -3,10 +3,12 @@
 #include "fspm/error.hpp"
 #include "scans/allometry.hpp"
 #include "scans/cluster_split.hpp"
+#include "scans/ground_filter.hpp"
 #include "scans/neighbour_graph.hpp"
 #include "scans/point_origin.hpp"
 #include "scans/point_skeleton.hpp"
 #include "scans/shortest_path_tree.hpp"
+#include "scans/tip_pruning.hpp"
 #include "scans/voxel_thinning.hpp"
 
 #include <algorithm>
@@ -52,6 +54,22 @@ ThinnedPoints thinned(const PointSet& input, double voxel_m) {
   return thin_to_voxels(input, voxel_m);
 }
 
+// The thinned points without the ground (scans/ground_filter.hpp), counts kept with them.
+ThinnedPoints without_ground(ThinnedPoints thin, std::size_t& removed) {
+  const std::vector<std::uint32_t> keep = above_ground(thin.points);
+  removed = thin.points.points.size() - keep.size();
+  if (keep.empty()) removed = 0;
+  if (removed == 0) return thin;
+  ThinnedPoints out;
+  out.points.points.reserve(keep.size());
+  out.counts.reserve(keep.size());
+  for (std::uint32_t i : keep) {
+    out.points.points.push_back(thin.points.points[i]);
+    out.counts.push_back(thin.counts[i]);
+  }
+  return out;
+}
+
 }  // namespace
 
 EncodeResult encode_point_set(const PointSet& absolute, const EncodeOptions& o) {
@@ -60,9 +78,11 @@ EncodeResult encode_point_set(const PointSet& absolute, const EncodeOptions& o) 
   // Projected coordinates (x ~ 5e5 m, y ~ 6e6 m) are recentred: the results move back at the end.
   const Eigen::Vector3d origin = point_set_origin(absolute);
   const PointSet input = relative_to(absolute, origin);
-  const ThinnedPoints thin = thinned(input, o.voxel_m);
+  std::size_t ground = 0;
+  const ThinnedPoints thin =
+      o.keep_ground ? thinned(input, o.voxel_m) : without_ground(thinned(input, o.voxel_m), ground);
   const PointSet& ps = thin.points;
-  const std::uint32_t root = lowest_point(ps);
+  const std::uint32_t root = trunk_base_point(ps);
   const NeighbourGraph graph = build_neighbour_graph(ps, o.neighbours, o.species.beta, root);
   const ShortestPathTree paths = shortest_path_tree(ps, graph, root);
   const double bin = o.bin_length_m > 0.0 ? o.bin_length_m : default_bin_length_m(paths);
@@ -85,7 +105,8 @@ EncodeResult encode_point_set(const PointSet& absolute, const EncodeOptions& o) 
   ClusterSplit split = split_clusters(ps, skeleton, o.species.f_s);
   EncodeResult r;
   r.points = input.points.size();
-  r.thinned_points = ps.points.size();
+  r.thinned_points = ps.points.size() + ground;
+  r.ground_points = ground;
   r.bridges = graph.bridges;
   r.model.species = o.species.name;
   r.model.beta = o.species.beta;
@@ -94,10 +115,12 @@ EncodeResult encode_point_set(const PointSet& absolute, const EncodeOptions& o) 
   r.model.root_diameter_m = d_root;
   r.model.clusters = hulls(thin, split.clusters, o.hull);
   r.model.skeleton = std::move(split.main_skeleton);
+  r.branch_skeleton = without_short_tips(skeleton.tree, 4.0 * bin);
   r.full_skeleton = std::move(skeleton.tree);
   r.origin = origin;
   translate_tree(r.model.skeleton, origin);
   translate_tree(r.full_skeleton, origin);
+  translate_tree(r.branch_skeleton, origin);
   for (ClusterHull& h : r.model.clusters) {
     for (Eigen::Vector3d& v : h.vertices) v += origin;
   }

@@ -1,7 +1,7 @@
 #pragma once
-// Encoding a point set into the cluster-based representation (Pirk sec. 3.3): neighbour graph
-// with weights |u - v|^beta, shortest-path tree from the lowest point, skeleton nodes by path
-// length, radii of eq. 3.1, main skeleton and clusters by eq. 3.2, alpha-shape hulls.
+// Encoding a point set into the cluster-based representation (Pirk sec. 3.3): ground removed,
+// neighbour graph with weights |u - v|^beta, shortest-path tree from the trunk's base, skeleton
+// nodes by path length, radii of eq. 3.1, main skeleton and clusters by eq. 3.2, alpha-shape hulls.
 #include <optional>
 
 #include "scans/alpha_hull.hpp"
@@ -23,13 +23,20 @@ struct EncodeOptions {
   // (1.3 m) or a tenth of the point set's height, whichever is lower.
   double trunk_height_m = 0.0;
   AlphaHullOptions hull;
+  // Ground points (a band above the cloud's lower envelope, scans/ground_filter.hpp) are removed
+  // after thinning unless this is set; the root is the base of the trunk's column either way.
+  bool keep_ground = false;
 };
 
 struct EncodeResult {
   ClusterModel model;
   TreeGraph full_skeleton;  // every skeleton node, radii of eq. 3.1, before the cluster split
+  // The full skeleton without side tips shorter than four bins (scans/tip_pruning.hpp): the
+  // branches the scan shows, into the crown, where eq. 3.2 may have cut the main skeleton short.
+  TreeGraph branch_skeleton;
   std::size_t points = 0;
   std::size_t thinned_points = 0;  // after voxel thinning
+  std::size_t ground_points = 0;   // thinned points removed as ground
   std::size_t bridges = 0;         // edges added to join pieces the neighbour graph left apart
   // The encoder works on the points minus this origin (scans/point_origin.hpp); the skeletons and
   // hulls above are moved back, in the input's coordinates.

@@ -8,9 +8,11 @@
 #include <map>
 #include <numbers>
 #include <numeric>
+#include <optional>
 #include <set>
 
 #include "fspm/error.hpp"
+#include "scans/tube_skeleton.hpp"
 
 namespace fspm::scans {
 namespace {
@@ -120,7 +122,38 @@ std::string group_level_name(const std::string& name) {
   return name.substr(0, end);
 }
 
-TreeGraph grouped_mesh_skeleton(const GroupedMesh& m, const std::string& path) {
+std::optional<std::vector<RingPolyline>> tube_branches(const GroupedMesh& m,
+                                                       std::size_t* not_tubes) {
+  std::vector<RingPolyline> tubes;
+  std::size_t others = 0;
+  // Faces by group name: an OBJ file may return to a group with a second `g` line.
+  std::map<std::string, std::vector<std::size_t>> faces_of;
+  for (std::size_t f = 0; f < m.faces.size(); ++f)
+    faces_of[m.group_names[m.face_group[f]]].push_back(f);
+  for (const auto& [name, faces] : faces_of) {
+    for (const WeldedPatch& patch : connected_patches(m, faces)) {
+      std::optional<RingPolyline> r = tube_rings(patch);
+      if (r) {
+        tubes.push_back(std::move(*r));
+      } else {
+        ++others;
+      }
+    }
+  }
+  if (not_tubes != nullptr) *not_tubes = others;
+  if (tubes.empty()) return std::nullopt;
+  return tubes;
+}
+
+TreeGraph grouped_mesh_skeleton(const GroupedMesh& m, const std::string& path,
+                                std::size_t* not_tubes) {
+  if (not_tubes != nullptr) *not_tubes = 0;
+  if (m.faces.empty()) {
+    throw ValueError("the mesh has no faces; a point set gives a skeleton with fspm encode", path);
+  }
+  if (std::optional<std::vector<RingPolyline>> tubes = tube_branches(m, not_tubes)) {
+    return tube_skeleton(*tubes, path);
+  }
   std::vector<std::string> level_names;
   std::map<std::string, std::vector<std::uint32_t>> groups_of;  // level -> groups
   std::vector<bool> used(m.group_names.size(), false);

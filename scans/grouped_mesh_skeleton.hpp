@@ -17,8 +17,14 @@ namespace fspm::scans {
 // The level name of a group: its name without trailing digits.
 std::string group_level_name(const std::string& group_name);
 
-// Throws ValueError (naming `path`) when the first level has no group or more than one, or a
-// group has no face.
-TreeGraph grouped_mesh_skeleton(const GroupedMesh& mesh, const std::string& path);
+// Tubes first: when a piece of any group (faces connected through shared vertex positions) is a
+// tube of vertex rings (scans/tube_rings.hpp), as modelling programs export branches, every tube
+// piece is a branch and the skeleton joins them by geometry (scans/tube_skeleton.hpp); pieces that
+// are no tube (leaf cards, flat polygons) are left out and counted in `not_tubes`. Otherwise
+// the faces are cross-sections as above.
+// Throws ValueError (naming `path`) when the mesh has no face, the first level has no group or
+// more than one, or a group has no face.
+TreeGraph grouped_mesh_skeleton(const GroupedMesh& mesh, const std::string& path,
+                                std::size_t* not_tubes = nullptr);
 
 }  // namespace fspm::scans

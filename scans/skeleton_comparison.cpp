@@ -40,7 +40,65 @@ double mean_branch_point_error(const TreeGraph& truth, const TreeGraph& recovere
   return sum / static_cast<double>(a.size());
 }
 
+// The point half-way along the axis that starts at u (u and the children of its order after it).
+Eigen::Vector3d half_way(const TreeGraph& t, NodeId u) {
+  std::vector<NodeId> axis{u};
+  for (bool more = true; more;) {
+    more = false;
+    for (NodeId c : t.children(axis.back())) {
+      if (t.order(c) == t.order(u)) {
+        axis.push_back(c), more = true;
+        break;
+      }
+    }
+  }
+  double total = 0.0;
+  for (NodeId a : axis) total += (t.end(a) - t.start(a)).norm();
+  double left = 0.5 * total;
+  for (NodeId a : axis) {
+    const double len = (t.end(a) - t.start(a)).norm();
+    if (left <= len && len > 0.0) return t.start(a) + left / len * (t.end(a) - t.start(a));
+    left -= len;
+  }
+  return t.end(axis.back());
+}
+
+bool descends_from(const TreeGraph& t, NodeId w, NodeId v) {
+  for (NodeId a = t.parent(w); a != kNoNode; a = t.parent(a)) {
+    if (a == v) return true;
+  }
+  return false;
+}
+
+bool recovered_branch(const TreeGraph& truth, NodeId u, const TreeGraph& r, double tol) {
+  const Eigen::Vector3d fork = truth.start(u), half = half_way(truth, u);
+  for (NodeId v = 0; v < r.size(); ++v) {
+    if (r.child_count(v) < 2 || (r.end(v) - fork).norm() > tol) continue;
+    for (NodeId w = 0; w < r.size(); ++w) {
+      if (segment_distance(half, half, r.start(w), r.end(w)) <= tol && descends_from(r, w, v)) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 }  // namespace
+
+BranchRecovery branch_recovery(const TreeGraph& truth, const TreeGraph& recovered,
+                               double min_diameter_m, double tolerance_m) {
+  BranchRecovery b;
+  for (NodeId u = 0; u < truth.size(); ++u) {
+    const NodeId p = truth.parent(u);
+    if (p == kNoNode || truth.order(u) <= truth.order(p) ||
+        truth.kind(u) != OrganKind::kInternode || 2.0 * truth.radius(u) < min_diameter_m) {
+      continue;
+    }
+    ++b.branches;
+    if (recovered_branch(truth, u, recovered, tolerance_m)) ++b.recovered;
+  }
+  return b;
+}
 
 TreeGraph branching_structure(const TreeGraph& t) {
   TreeGraph out;

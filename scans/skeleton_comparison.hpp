@@ -28,4 +28,16 @@ TreeGraph main_skeleton(const TreeGraph& tree, double min_radius_m);
 
 SkeletonComparison compare_skeletons(const TreeGraph& truth, const TreeGraph& recovered);
 
+// Lateral branches of `truth` (nodes whose order exceeds their parent's) at least
+// min_diameter_m thick at their base; one is recovered when `recovered` has a branch point (a
+// node end with two or more children) within tolerance_m of its fork and, below that branch
+// point, a segment within tolerance_m of the point half-way along the branch's axis (the chain
+// of its order): the fork is found and the skeleton follows the branch from it.
+struct BranchRecovery {
+  std::size_t branches = 0;
+  std::size_t recovered = 0;
+};
+BranchRecovery branch_recovery(const TreeGraph& truth, const TreeGraph& recovered,
+                               double min_diameter_m, double tolerance_m);
+
 }  // namespace fspm::scans

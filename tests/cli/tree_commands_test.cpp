@@ -182,6 +182,26 @@ TEST(TreeCli, InfoJsonCountsNodes) {
   EXPECT_EQ(j["max_depth"], 3);
 }
 
+// The shipped Y of three tubes (rings, quads, no caps; its axes are written in its header): the
+// skeleton has the trunk from the ground and two order-1 branches ending at (0.8, 0, 3.2) and
+// (-0.6, 0.3, 3.0), so the bounding box and the counts are known in closed form.
+TEST(TreeCli, TubeMeshConvertsToItsSkeleton) {
+  const auto dir = scratch_dir("tubes");
+  const std::string obj = std::string(FSPM_SOURCE_DIR) + "/examples/trees/y_tubes.obj";
+  auto r = run_fspm("tree convert " + obj + " " + (dir / "y.tree").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_fspm("tree info --json " + (dir / "y.tree").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["tips"], 2);
+  EXPECT_EQ(j["max_order"], 1);
+  const double lo[3] = {-0.6, 0.0, 0.0}, hi[3] = {0.8, 0.3, 3.2};
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(j["bbox_min"][k].get<double>(), lo[k], 0.05) << k;
+    EXPECT_NEAR(j["bbox_max"][k].get<double>(), hi[k], 0.05) << k;
+  }
+}
+
 TEST(TreeCli, MalformedFileExitsOneWithFileAndLine) {
   const auto dir = scratch_dir("bad");
   const auto bad = dir / "bad.tree";
