@@ -453,8 +453,8 @@ class Grower {
       const NodeId id = out.tree.add_node(new_id[sh.last], d);
       out.tree.attribute("translucency")[id] = c.translucency;
     }
-    // Light at each cluster's centre (Pirk eq. 4.3 over the final clusters, its own left out):
-    // the shoots of the last cycle had no bud light.
+    // Light at each cluster's centre through the final clusters as turbid media (its own left
+    // out): the shoots of the last cycle had no bud light.
     record_leaf_light(out.tree, light_scene_settings());
     out.clusters = out.cluster_spheres.size();
     out.shed = shed_;

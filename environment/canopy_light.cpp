@@ -1,0 +1,146 @@
+#include "environment/canopy_light.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace fspm::environment {
+
+double cluster_extinction_per_m(const Sphere& cluster) {
+  if (cluster.translucency <= 0.0) return std::numeric_limits<double>::infinity();
+  return -std::log(cluster.translucency) / (2.0 * cluster.radius_m);
+}
+
+double cluster_leaf_area_m2(const Sphere& cluster) {
+  const double r = cluster.radius_m;
+  return cluster_extinction_per_m(cluster) / kSphericalLeafProjection * 4.0 / 3.0 *
+         std::numbers::pi * r * r * r;
+}
+
+CanopyLight::CanopyLight(const Scene& scene, std::span<const Sphere> clusters)
+    : obstacles_(scene), clusters_(clusters.begin(), clusters.end()), dirs_(scene.sky.directions) {
+  validate(scene.sky);
+  has_obstacles_ = !obstacles_.spheres.empty() || !obstacles_.boxes.empty() ||
+                   !obstacles_.meshes.empty() || obstacles_.ground.has_value();
+  mu_.reserve(clusters_.size());
+  reach2_.reserve(clusters_.size());
+  for (const Sphere& c : clusters_) {
+    mu_.push_back(cluster_extinction_per_m(c));
+    // A path through a sphere is at most its diameter, so a cluster removes at most (1 - gamma)
+    // of the light in its cap, as in eq. 4.3: the same shadow volume bounds it.
+    reach2_.push_back(shadow_reach2(c.radius_m, c.translucency, scene.sky.significance));
+  }
+  const Eigen::Vector3d& b = scene.sky.brightest;
+  weight_.resize(dirs_.size());
+  Eigen::Vector3d open = Eigen::Vector3d::Zero();
+  for (int i = 0; i < dirs_.size(); ++i) {
+    const double c = b.dot(dirs_.direction(i));
+    weight_[i] = c * c;
+    weight_sum_ += weight_[i];
+    open += weight_[i] * dirs_.direction(i);
+  }
+  if (open.norm() > 0.0) open_direction_ = open.normalized();
+}
+
+// Optical depth per direction: mu times the path from p to the sphere's far side inside every
+// cluster the ray crosses (from p itself when p lies inside).
+void CanopyLight::accumulate_depth(const Eigen::Vector3d& p, std::uint32_t ignore,
+                                   std::vector<double>& depth) const {
+  depth.assign(dirs_.size(), 0.0);
+  for (std::uint32_t j = 0; j < clusters_.size(); ++j) {
+    if (j == ignore || mu_[j] == 0.0) continue;
+    const Eigen::Vector3d v = clusters_[j].center - p;
+    const double r = clusters_[j].radius_m;
+    const double d2 = v.squaredNorm(), r2 = r * r;
+    if (d2 < r2) {
+      for (int i = 0; i < dirs_.size(); ++i) {
+        const double b = dirs_.direction(i).dot(v);
+        depth[i] += mu_[j] * (b + std::sqrt(r2 - d2 + b * b));
+      }
+      continue;
+    }
+    if (v.z() + r <= 0.0 || d2 > reach2_[j]) continue;
+    const double dist = std::sqrt(d2);
+    dirs_.for_each_in_cap(v / dist, std::sqrt(1.0 - r2 / d2), [&](int i) {
+      const double b = dirs_.direction(i).dot(v);
+      const double q = r2 - d2 + b * b;
+      if (b > 0.0 && q > 0.0) depth[i] += mu_[j] * 2.0 * std::sqrt(q);
+    });
+  }
+}
+
+// The obstacles as in eq. 4.3: each crossed once multiplies by its translucency.
+void CanopyLight::obstacle_visibility(const Eigen::Vector3d& p, std::vector<double>& vis) const {
+  vis.assign(dirs_.size(), 1.0);
+  if (!has_obstacles_) return;
+  const Scene& s = obstacles_;
+  for (int i = 0; i < dirs_.size(); ++i) {
+    const Eigen::Vector3d& d = dirs_.direction(i);
+    if (s.ground && p.z() < s.ground->height_m) vis[i] *= s.ground->translucency;
+    for (const Sphere& o : s.spheres) {
+      if (ray_hits_sphere(p, d, o.center, o.radius_m)) vis[i] *= o.translucency;
+    }
+    for (const Box& b : s.boxes) {
+      if (b.ray_entry(p, d) >= 0.0) vis[i] *= b.translucency;
+    }
+    for (const TriangleMesh& m : s.meshes) {
+      const int n = m.crossings(p, d);
+      if (n > 0) vis[i] *= std::pow(m.translucency, n);
+    }
+  }
+}
+
+LightSample CanopyLight::evaluate(const Eigen::Vector3d& p, std::uint32_t ignore) const {
+  thread_local std::vector<double> depth, vis;
+  accumulate_depth(p, ignore, depth);
+  obstacle_visibility(p, vis);
+  double sum = 0.0;
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();
+  for (int i = 0; i < dirs_.size(); ++i) {
+    const double w = weight_[i] * vis[i] * std::exp(-depth[i]);
+    sum += w;
+    moment += w * dirs_.direction(i);
+  }
+  LightSample out;
+  out.light = weight_sum_ > 0.0 ? sum / weight_sum_ : 0.0;
+  out.direction = moment.norm() > 0.0 ? moment.normalized() : open_direction_;
+  return out;
+}
+
+std::vector<LightSample> CanopyLight::evaluate_clusters() const {
+  std::vector<LightSample> out(clusters_.size());
+  for (std::uint32_t j = 0; j < clusters_.size(); ++j) {
+    out[j] = evaluate(cluster_light_point(clusters_[j]), j);
+  }
+  return out;
+}
+
+double CanopyLight::leaf_area_index_above(const Eigen::Vector3d& p, std::uint32_t ignore) const {
+  double lai = 0.0;
+  for (std::uint32_t j = 0; j < clusters_.size(); ++j) {
+    if (j == ignore || mu_[j] == 0.0) continue;
+    const Eigen::Vector3d& c = clusters_[j].center;
+    const double r = clusters_[j].radius_m;
+    const double h2 = (c.x() - p.x()) * (c.x() - p.x()) + (c.y() - p.y()) * (c.y() - p.y());
+    if (h2 >= r * r) continue;
+    const double half = std::sqrt(r * r - h2);
+    // The vertical chord is [c.z - half, c.z + half]; its part above p.
+    const double path = std::max(0.0, c.z() + half - std::max(p.z(), c.z() - half));
+    lai += mu_[j] / kSphericalLeafProjection * path;
+  }
+  return lai;
+}
+
+double CanopyLight::sky_leaf_area_index_above(const Eigen::Vector3d& p,
+                                              std::uint32_t ignore) const {
+  thread_local std::vector<double> depth;
+  accumulate_depth(p, ignore, depth);
+  double sum = 0.0;
+  for (int i = 0; i < dirs_.size(); ++i) {
+    sum += weight_[i] * depth[i] * dirs_.direction(i).z();
+  }
+  return weight_sum_ > 0.0 ? sum / weight_sum_ / kSphericalLeafProjection : 0.0;
+}
+
+}  // namespace fspm::environment
