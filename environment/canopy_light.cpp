@@ -110,8 +110,14 @@ LightSample CanopyLight::evaluate(const Eigen::Vector3d& p, std::uint32_t ignore
 
 std::vector<LightSample> CanopyLight::evaluate_clusters() const {
   std::vector<LightSample> out(clusters_.size());
+  for (std::uint32_t j = 0; j < clusters_.size(); ++j) out[j] = evaluate(clusters_[j].center);
+  return out;
+}
+
+std::vector<LightSample> CanopyLight::evaluate_cluster_tops() const {
+  std::vector<LightSample> out(clusters_.size());
   for (std::uint32_t j = 0; j < clusters_.size(); ++j) {
-    out[j] = evaluate(cluster_light_point(clusters_[j]), j);
+    out[j] = evaluate(cluster_top(clusters_[j]), j);
   }
   return out;
 }

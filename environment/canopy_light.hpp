@@ -34,11 +34,10 @@ inline constexpr double kSphericalLeafProjection = 0.5;
 double cluster_extinction_per_m(const Sphere& cluster);
 // Leaf area (m^2) of a cluster with spherical leaf angles: mu / G * 4/3 pi r^3.
 double cluster_leaf_area_m2(const Sphere& cluster);
-// Where a cluster's light is read: the top of its sphere, the part of the cluster that faces the
-// sky. Every ray of the upper hemisphere leaves the cluster's own sphere there at once, so its
-// own leaves cast no shade on the point, and the light is that of its sunlit leaves rather than of
-// its centre, which lies inside its neighbours in a dense crown.
-inline Eigen::Vector3d cluster_light_point(const Sphere& cluster) {
+// The top of a cluster's sphere, the part of the cluster that faces the sky: the light of its
+// best-lit leaves (every ray of the upper hemisphere leaves the cluster's own sphere there at
+// once).
+inline Eigen::Vector3d cluster_top(const Sphere& cluster) {
   return cluster.center + cluster.radius_m * Eigen::Vector3d::UnitZ();
 }
 
@@ -52,8 +51,13 @@ class CanopyLight {
   // Light at p relative to the open sky (cos^2 sky of eq. 4.3 over the stratified directions),
   // leaving out cluster `ignore` (an index into clusters), and its mean direction.
   LightSample evaluate(const Eigen::Vector3d& p, std::uint32_t ignore = kNoSphere) const;
-  // The same for every cluster at its light point (cluster_light_point), its own left out.
+  // The mean light of each cluster's leaves: the light at its centre with its own leaves shading
+  // it (a path of one radius in every direction). Over leaves spread uniformly in the sphere the
+  // light's mean is close to its value at the centre; checked against ray-traced leaves
+  // (tests/environment/light_yardstick_test.cpp, docs/environment.md).
   std::vector<LightSample> evaluate_clusters() const;
+  // The light of each cluster's best-lit leaves, at its top (cluster_top), its own left out.
+  std::vector<LightSample> evaluate_cluster_tops() const;
 
   // Cumulative leaf area index above p (m^2 of leaf per m^2 of ground): the leaf area density of
   // the clusters integrated along the vertical ray up from p, leaving out cluster `ignore`.

@@ -7,10 +7,11 @@
 namespace fspm::environment {
 
 // Leaf clusters are the tree's nodes of kind leaf: a sphere at the node's start with its radius
-// and the attribute "translucency" (1 when absent). Each cluster's "light" becomes the sky light
-// at its centre relative to the open sky (the cos^2 sky of Pirk eq. 4.3), the other clusters
-// shading it as turbid media by the path the ray travels inside them (CanopyLight,
-// canopy_light.hpp) and the scene's occluders by their translucency; its own cluster is left out.
+// and the attribute "translucency" (1 when absent). Each cluster's "light" becomes the mean sky
+// light of its leaves relative to the open sky (the cos^2 sky of Pirk eq. 4.3): the light at its
+// centre with every cluster, its own included, shading it as a turbid medium by the path the ray
+// travels inside it (CanopyLight::evaluate_clusters, canopy_light.hpp), and the scene's occluders
+// by their translucency.
 // Pruned leaves (attribute "pruned" != 0) shade nothing and get no value (nan). Internodes keep
 // their values (the attribute is added with nan, "no value", when missing).
 void record_leaf_light(TreeGraph& tree, const Scene& scene);

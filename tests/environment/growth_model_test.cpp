@@ -114,14 +114,13 @@ TEST(GrowthModel, InternodesWithoutABudHaveNoLight) {
 // attenuating by Beer-Lambert along the segment of the ray inside it, with the extinction that
 // makes a diametral chord transmit the cluster's translucency (canopy_light.hpp).
 double leaf_light_brute_force(const Eigen::Vector3d& p, std::span<const Sphere> spheres,
-                              std::size_t self, int directions) {
+                              int directions) {
   const HemisphereDirections dirs(directions);
   double sum = 0.0, open = 0.0;
   for (int i = 0; i < dirs.size(); ++i) {
     const Eigen::Vector3d& d = dirs.direction(i);
     double depth = 0.0;
     for (std::size_t j = 0; j < spheres.size(); ++j) {
-      if (j == self) continue;
       const Eigen::Vector3d oc = spheres[j].center - p;
       const double r = spheres[j].radius_m;
       const double b = oc.dot(d), disc = b * b - oc.squaredNorm() + r * r;
@@ -135,9 +134,9 @@ double leaf_light_brute_force(const Eigen::Vector3d& p, std::span<const Sphere> 
   return sum / open;
 }
 
-// Each cluster's light is read at the top of its sphere through the other clusters as turbid
-// media (record_leaf_light).
-TEST(GrowthModel, ClustersCarryTheLightAtTheirTops) {
+// Each cluster's light is the light at its centre through every cluster, its own included, as
+// turbid media (record_leaf_light).
+TEST(GrowthModel, ClustersCarryTheLightAtTheirCentres) {
   GrowthParams p = growth_preset("A");
   p.years = 8;
   const GrowthResult r = grow_tree(p);
@@ -149,9 +148,8 @@ TEST(GrowthModel, ClustersCarryTheLightAtTheirTops) {
   for (NodeId i = 0; i < t.size(); ++i) {
     if (t.kind(i) != OrganKind::kLeaf) continue;
     ASSERT_LT(k, r.cluster_spheres.size());
-    const Sphere& c = r.cluster_spheres[k];
-    const Eigen::Vector3d top = c.center + c.radius_m * Eigen::Vector3d::UnitZ();
-    const double expected = leaf_light_brute_force(top, r.cluster_spheres, k, p.light_directions);
+    const double expected =
+        leaf_light_brute_force(t.start(i), r.cluster_spheres, p.light_directions);
     EXPECT_NEAR(light[i], expected, 0.02) << "cluster " << k;
     lo = std::min(lo, light[i]);
     hi = std::max(hi, light[i]);
