@@ -71,24 +71,53 @@ void CanopyLight::accumulate_depth(const Eigen::Vector3d& p, std::uint32_t ignor
 }
 
 // The obstacles as in eq. 4.3: each crossed once multiplies by its translucency.
+double CanopyLight::obstacle_transmission(const Eigen::Vector3d& p,
+                                          const Eigen::Vector3d& d) const {
+  const Scene& s = obstacles_;
+  double t = 1.0;
+  if (s.ground && p.z() < s.ground->height_m) t *= s.ground->translucency;
+  for (const Sphere& o : s.spheres) {
+    if (ray_hits_sphere(p, d, o.center, o.radius_m)) t *= o.translucency;
+  }
+  for (const Box& b : s.boxes) {
+    if (b.ray_entry(p, d) >= 0.0) t *= b.translucency;
+  }
+  for (const TriangleMesh& m : s.meshes) {
+    const int n = m.crossings(p, d);
+    if (n > 0) t *= std::pow(m.translucency, n);
+  }
+  return t;
+}
+
 void CanopyLight::obstacle_visibility(const Eigen::Vector3d& p, std::vector<double>& vis) const {
   vis.assign(dirs_.size(), 1.0);
   if (!has_obstacles_) return;
-  const Scene& s = obstacles_;
-  for (int i = 0; i < dirs_.size(); ++i) {
-    const Eigen::Vector3d& d = dirs_.direction(i);
-    if (s.ground && p.z() < s.ground->height_m) vis[i] *= s.ground->translucency;
-    for (const Sphere& o : s.spheres) {
-      if (ray_hits_sphere(p, d, o.center, o.radius_m)) vis[i] *= o.translucency;
-    }
-    for (const Box& b : s.boxes) {
-      if (b.ray_entry(p, d) >= 0.0) vis[i] *= b.translucency;
-    }
-    for (const TriangleMesh& m : s.meshes) {
-      const int n = m.crossings(p, d);
-      if (n > 0) vis[i] *= std::pow(m.translucency, n);
-    }
+  for (int i = 0; i < dirs_.size(); ++i) vis[i] = obstacle_transmission(p, dirs_.direction(i));
+}
+
+void CanopyLight::transmission(const Eigen::Vector3d& p, std::uint32_t ignore,
+                               std::vector<double>& out) const {
+  thread_local std::vector<double> depth;
+  accumulate_depth(p, ignore, depth);
+  obstacle_visibility(p, out);
+  for (int i = 0; i < dirs_.size(); ++i) out[i] *= std::exp(-depth[i]);
+}
+
+double CanopyLight::transmission_along(const Eigen::Vector3d& p, const Eigen::Vector3d& d,
+                                       std::uint32_t ignore) const {
+  double depth = 0.0;
+  for (std::uint32_t j = 0; j < clusters_.size(); ++j) {
+    if (j == ignore || mu_[j] == 0.0) continue;
+    const Eigen::Vector3d v = clusters_[j].center - p;
+    const double r = clusters_[j].radius_m;
+    const double b = v.dot(d), q = b * b - v.squaredNorm() + r * r;
+    if (q <= 0.0) continue;
+    const double exit = b + std::sqrt(q);
+    if (exit <= 0.0) continue;
+    depth += mu_[j] * (exit - std::max(0.0, b - std::sqrt(q)));
   }
+  const double t = std::exp(-depth);
+  return has_obstacles_ ? t * obstacle_transmission(p, d) : t;
 }
 
 LightSample CanopyLight::evaluate(const Eigen::Vector3d& p, std::uint32_t ignore) const {

@@ -59,6 +59,12 @@ class CanopyLight {
   // The light of each cluster's best-lit leaves, at its top (cluster_top), its own left out.
   std::vector<LightSample> evaluate_cluster_tops() const;
 
+  // Transmission of the sky's light to p per direction of directions() (clusters by path length,
+  // obstacles by translucency), and along one unit direction d (the sun's), leaving out `ignore`.
+  void transmission(const Eigen::Vector3d& p, std::uint32_t ignore, std::vector<double>& out) const;
+  double transmission_along(const Eigen::Vector3d& p, const Eigen::Vector3d& d,
+                            std::uint32_t ignore = kNoSphere) const;
+
   // Cumulative leaf area index above p (m^2 of leaf per m^2 of ground): the leaf area density of
   // the clusters integrated along the vertical ray up from p, leaving out cluster `ignore`.
   double leaf_area_index_above(const Eigen::Vector3d& p, std::uint32_t ignore = kNoSphere) const;
@@ -77,6 +83,7 @@ class CanopyLight {
   void accumulate_depth(const Eigen::Vector3d& p, std::uint32_t ignore,
                         std::vector<double>& depth) const;
   void obstacle_visibility(const Eigen::Vector3d& p, std::vector<double>& vis) const;
+  double obstacle_transmission(const Eigen::Vector3d& p, const Eigen::Vector3d& d) const;
 
   Scene obstacles_;
   bool has_obstacles_ = false;

@@ -1,0 +1,102 @@
+#include "environment/daylight.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "fspm/error.hpp"
+
+namespace fspm::environment {
+
+void validate(const RealSky& sky) {
+  if (!(sky.first_hour >= 0.0 && sky.last_hour <= 24.0 && sky.first_hour < sky.last_hour)) {
+    throw ValueError("sky hours must satisfy 0 <= first < last <= 24, got " +
+                     std::to_string(sky.first_hour) + " to " + std::to_string(sky.last_hour));
+  }
+  if (!(sky.step_h > 0.0)) throw ValueError("sky time step must be > 0 hours");
+  if (!(sky.transmittance > 0.0 && sky.transmittance <= 1.0)) {
+    throw ValueError("sky transmittance must be in (0, 1], got " +
+                     std::to_string(sky.transmittance));
+  }
+  if (!std::isfinite(sky.global_W_m2)) throw ValueError("global radiation must be finite");
+  solar_position(sky.site, sky.date, 12.0);  // validates the site and the date
+}
+
+std::vector<SkyStep> sky_steps(const RealSky& sky) {
+  validate(sky);
+  const int doy = day_of_year(sky.date);
+  const int n = std::max(
+      1, static_cast<int>(std::ceil((sky.last_hour - sky.first_hour) / sky.step_h - 1e-9)));
+  const double dt = (sky.last_hour - sky.first_hour) / n;
+  std::vector<SkyStep> steps;
+  for (int k = 0; k < n; ++k) {
+    SkyStep s;
+    s.hour = sky.first_hour + (k + 0.5) * dt;
+    const SolarPosition sun = solar_position(sky.site, sky.date, s.hour);
+    s.sun = sun.direction();
+    s.sun_elevation_deg = sun.elevation_deg();
+    if (s.sun_elevation_deg > 0.0) {
+      const double global = sky.global_W_m2 >= 0.0
+                                ? sky.global_W_m2
+                                : clear_sky_global_W_m2(s.sun_elevation_deg, doy,
+                                                        sky.site.elevation_m, sky.transmittance);
+      s.radiation = split_global(global, s.sun_elevation_deg, doy);
+    }
+    steps.push_back(s);
+  }
+  return steps;
+}
+
+namespace {
+
+// Diffuse weights L(d_i) cos(theta_i), normalised to sum 1.
+std::vector<double> diffuse_weights(const HemisphereDirections& dirs, DiffuseSky sky,
+                                    const Eigen::Vector3d& sun) {
+  std::vector<double> w(dirs.size());
+  double sum = 0.0;
+  for (int i = 0; i < dirs.size(); ++i) {
+    const Eigen::Vector3d& d = dirs.direction(i);
+    w[i] = sky_radiance(sky, d, sun) * d.z();
+    sum += w[i];
+  }
+  for (double& v : w) v = sum > 0.0 ? v / sum : 0.0;
+  return w;
+}
+
+}  // namespace
+
+std::vector<DaylightSample> daylight_at(const CanopyLight& light, const RealSky& sky,
+                                        std::span<const Eigen::Vector3d> points,
+                                        std::span<const std::uint32_t> ignore) {
+  const std::vector<SkyStep> steps = sky_steps(sky);
+  const double dt_s = 3600.0 * (sky.last_hour - sky.first_hour) / steps.size();
+  std::vector<std::vector<double>> weights;
+  double open_mol = 0.0;
+  for (const SkyStep& s : steps) {
+    weights.push_back(diffuse_weights(light.directions(), sky.diffuse, s.sun));
+    open_mol += par_umol_m2_s(s.radiation.global_W_m2()) * dt_s * 1e-6;
+  }
+  std::vector<DaylightSample> out(points.size());
+  std::vector<double> t;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const std::uint32_t skip = ignore.empty() ? kNoSphere : ignore[k];
+    light.transmission(points[k], skip, t);
+    double mol = 0.0;
+    for (std::size_t j = 0; j < steps.size(); ++j) {
+      const SkyStep& s = steps[j];
+      if (s.radiation.global_W_m2() <= 0.0) continue;
+      double diffuse = 0.0;
+      for (std::size_t i = 0; i < t.size(); ++i) diffuse += weights[j][i] * t[i];
+      const double direct =
+          s.radiation.direct_W_m2 > 0.0 ? light.transmission_along(points[k], s.sun, skip) : 0.0;
+      const double e = s.radiation.direct_W_m2 * direct + s.radiation.diffuse_W_m2 * diffuse;
+      mol += par_umol_m2_s(e) * dt_s * 1e-6;
+    }
+    out[k].daily_par_mol_m2 = mol;
+    out[k].par_umol_m2_s = mol * 1e6 / (dt_s * steps.size());
+    out[k].open_fraction = open_mol > 0.0 ? mol / open_mol : 0.0;
+  }
+  return out;
+}
+
+}  // namespace fspm::environment

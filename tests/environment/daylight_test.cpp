@@ -1,0 +1,131 @@
+#include "environment/daylight.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "fspm/error.hpp"
+
+namespace fspm::environment {
+namespace {
+
+// The worked example of the NREL solar position algorithm (Reda and Andreas 2004, table A4.1 and
+// A5.1): Golden, Colorado, 17 October 2003, 12:30:30 local time (UTC - 7), 820 mbar, 11 C.
+TEST(SolarPosition, MatchesTheNrelWorkedExample) {
+  const Site golden{39.742476, -105.1786, 1830.14, -7.0};
+  const CalendarDate date{2003, 10, 17};
+  const SolarPosition s =
+      solar_position(golden, date, 12.0 + 30.0 / 60.0 + 30.0 / 3600.0, 820.0, 11.0);
+  EXPECT_NEAR(s.zenith_deg, 50.11162, 0.01);
+  EXPECT_NEAR(s.azimuth_deg, 194.34024, 0.01);
+  EXPECT_NEAR(s.declination_deg, -9.31434, 0.01);  // geocentric declination of the example
+  // Its sun transit, 11:46:08 local time: the sun due south (within 10 s of azimuth change).
+  const SolarPosition noon =
+      solar_position(golden, date, 11.0 + 46.0 / 60.0 + 8.0 / 3600.0, 820.0, 11.0);
+  EXPECT_NEAR(noon.azimuth_deg, 180.0, 0.06);
+  const Eigen::Vector3d d = s.direction();
+  EXPECT_NEAR(d.norm(), 1.0, 1e-12);
+  EXPECT_NEAR(std::acos(d.z()) * 180.0 / M_PI, 50.11162, 0.01);
+  EXPECT_LT(d.x(), 0.0);  // azimuth 194: a little west of south
+  EXPECT_LT(d.y(), 0.0);
+}
+
+TEST(SolarPosition, RejectsBadInput) {
+  EXPECT_THROW(solar_position({95.0, 0, 0, 0}, {2003, 1, 1}, 12.0), ValueError);
+  EXPECT_THROW(solar_position({45.0, 0, 0, 0}, {1900, 1, 1}, 12.0), ValueError);
+  EXPECT_THROW(solar_position({45.0, 0, 0, 0}, {2003, 13, 1}, 12.0), ValueError);
+  RealSky sky;
+  sky.first_hour = 14, sky.last_hour = 10;
+  EXPECT_THROW(validate(sky), ValueError);
+}
+
+// Spitters et al. (1986) eq. 20: all diffuse below Sg/S0 = 0.22, the quadratic between 0.22 and
+// 0.35; a split always sums to the global radiation.
+TEST(SkyRadiation, SpittersSplit) {
+  const int doy = 172;
+  const double s0 = extraterrestrial_horizontal_W_m2(60.0, doy);
+  EXPECT_NEAR(s0,
+              kSolarConstant_W_m2 * (1 + 0.033 * std::cos(2 * M_PI * doy / 365.0)) *
+                  std::sin(60.0 * M_PI / 180.0),
+              1e-9);
+  EXPECT_DOUBLE_EQ(spitters_diffuse_fraction(0.2 * s0, 60.0, doy), 1.0);
+  EXPECT_NEAR(spitters_diffuse_fraction(0.3 * s0, 60.0, doy), 1.0 - 6.4 * 0.08 * 0.08, 1e-12);
+  for (const double g : {10.0, 200.0, 500.0, 900.0}) {
+    const HorizontalRadiation r = split_global(g, 60.0, doy);
+    EXPECT_NEAR(r.direct_W_m2 + r.diffuse_W_m2, g, 1e-9);
+    EXPECT_GE(r.direct_W_m2, 0.0);
+  }
+  // A clear sky at noon in June at 45 N: 800-1000 W m-2, more at altitude.
+  const double g0 = clear_sky_global_W_m2(68.0, doy, 0.0);
+  EXPECT_GT(g0, 800.0);
+  EXPECT_LT(g0, 1000.0);
+  EXPECT_GT(clear_sky_global_W_m2(68.0, doy, 2000.0), g0);
+}
+
+RealSky summer_day() {
+  RealSky sky;
+  sky.site = {45.0, 7.0, 300.0, 1.0};
+  sky.date = {2024, 6, 21};
+  sky.first_hour = 8.0;
+  sky.last_hour = 16.0;
+  return sky;
+}
+
+// A horizontal unobstructed point receives direct + diffuse = the given global radiation: a
+// constant 500 W m-2 over 8 hours is 500 * 0.5 * 4.57 umol/J * 8 h = 32.904 mol m-2.
+TEST(Daylight, OpenPointUnderAConstantSky) {
+  RealSky sky = summer_day();
+  sky.global_W_m2 = 500.0;
+  const CanopyLight open(Scene{}, {});
+  const std::vector<Eigen::Vector3d> points{{0, 0, 0}, {3, 1, 2}};
+  const auto out = daylight_at(open, sky, points);
+  for (const DaylightSample& s : out) {
+    EXPECT_NEAR(s.par_umol_m2_s, 500.0 * 0.5 * 4.57, 1e-9);
+    EXPECT_NEAR(s.daily_par_mol_m2, 500.0 * 0.5 * 4.57 * 8 * 3600 * 1e-6, 1e-9);
+    EXPECT_NEAR(s.open_fraction, 1.0, 1e-12);
+  }
+  // The clear sky of the site: the open point gets the integral of the global radiation.
+  sky.global_W_m2 = -1.0;
+  double expected = 0.0;
+  for (const SkyStep& s : sky_steps(sky)) {
+    expected += par_umol_m2_s(clear_sky_global_W_m2(s.sun_elevation_deg, 173, 300.0)) * 3600 *
+                (8.0 / static_cast<double>(sky_steps(sky).size())) * 1e-6;
+  }
+  EXPECT_NEAR(daylight_at(open, sky, points)[0].daily_par_mol_m2, expected, 1e-9);
+  EXPECT_GT(expected, 15.0);  // a clear June day at 45 N: about 50 mol m-2 over 24 h
+}
+
+// Diffuse light alone (Sg / S0 < 0.22) under an opaque sphere at the zenith of a CIE overcast
+// sky, L = (1 + 2 cos theta) / 3: the sphere takes
+// [(1 - cos^2 a) / 2 + 2 (1 - cos^3 a) / 3] / (7 / 6) of the horizontal irradiance.
+TEST(Daylight, OvercastSkyUnderASphere) {
+  RealSky sky = summer_day();
+  sky.global_W_m2 = 50.0;
+  Scene scene;
+  scene.sky.directions = 16384;
+  scene.spheres.push_back({Eigen::Vector3d(0, 0, 2), 1.0, 0.0, true});
+  const CanopyLight light(scene, {});
+  const std::vector<Eigen::Vector3d> p{{0, 0, 0}};
+  const double ca = std::sqrt(0.75);
+  const double blocked = ((1 - ca * ca) / 2 + 2 * (1 - ca * ca * ca) / 3) / (7.0 / 6.0);
+  EXPECT_NEAR(daylight_at(light, sky, p)[0].open_fraction, 1.0 - blocked, 1e-2);
+  EXPECT_LT(blocked, 0.35);
+  EXPECT_GT(blocked, 0.25);
+}
+
+// The sun's beam through a cluster: Beer-Lambert along the chord the sun's ray crosses.
+TEST(Daylight, SunBeamThroughACluster) {
+  const std::vector<Sphere> clusters{{Eigen::Vector3d(0, 0, 3), 0.5, 0.2, false}};
+  const CanopyLight light(Scene{}, clusters);
+  EXPECT_NEAR(light.transmission_along({0, 0, 0}, Eigen::Vector3d::UnitZ()), 0.2, 1e-12);
+  EXPECT_NEAR(light.transmission_along({0, 0, 3}, Eigen::Vector3d::UnitZ()), std::sqrt(0.2), 1e-12);
+  EXPECT_EQ(light.transmission_along({0, 0, 4}, Eigen::Vector3d::UnitZ()), 1.0);
+  // A clear CIE sky is brightest near the sun and darker opposite it.
+  const Eigen::Vector3d sun = Eigen::Vector3d(1, 0, 1).normalized();
+  EXPECT_GT(sky_radiance(DiffuseSky::kClear, Eigen::Vector3d(0.9, 0, 0.8).normalized(), sun),
+            sky_radiance(DiffuseSky::kClear, Eigen::Vector3d(-0.9, 0, 0.8).normalized(), sun));
+}
+
+}  // namespace
+}  // namespace fspm::environment
