@@ -12,6 +12,8 @@
 
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
+#include "environment/canopy_light.hpp"
+#include "environment/daylight.hpp"
 #include "environment/growth_model.hpp"
 #include "environment/light_model.hpp"
 #include "environment/points_file.hpp"
@@ -30,12 +32,41 @@ struct LightOptions {
   std::string out;
   int directions = 0;
   bool json = false;
+  // A real sky (all optional; --latitude, --longitude and --date switch it on).
+  std::optional<double> latitude, longitude;
+  double elevation_m = 0.0, utc_offset_h = 0.0;
+  std::string date, hours = "0:24", diffuse = "overcast";
+  std::optional<double> global_W_m2;
+  double transmittance = 0.75;
 };
+
+// The real sky of the options, or none when no site and date were given.
+std::optional<environment::RealSky> real_sky(const LightOptions& o) {
+  const bool any = o.latitude || o.longitude || !o.date.empty();
+  if (!any) return std::nullopt;
+  if (!o.latitude || !o.longitude || o.date.empty()) {
+    throw ValueError("a real sky needs --latitude, --longitude and --date together");
+  }
+  environment::RealSky sky;
+  sky.site = {*o.latitude, *o.longitude, o.elevation_m, o.utc_offset_h};
+  sky.date = environment::parse_date(o.date);
+  environment::parse_hours(o.hours, sky);
+  sky.diffuse = environment::diffuse_sky_from_name(o.diffuse);
+  sky.transmittance = o.transmittance;
+  if (o.global_W_m2) {
+    if (*o.global_W_m2 < 0.0) throw ValueError("--global-radiation must be >= 0 W m-2");
+    sky.global_W_m2 = *o.global_W_m2;
+  }
+  environment::validate(sky);
+  return sky;
+}
 
 // `fspm light --json`: counts, the light's range and mean, and the samples themselves when they
 // are not written to a file.
 nlohmann::json light_json(const LightOptions& o, const std::vector<Eigen::Vector3d>& points,
-                          const std::vector<environment::LightSample>& samples, double seconds) {
+                          const std::vector<environment::LightSample>& samples,
+                          const std::vector<environment::DaylightSample>& daylight,
+                          double seconds) {
   double sum = 0.0, lo = 1.0, hi = 0.0;
   nlohmann::json rows = nlohmann::json::array();
   for (std::size_t k = 0; k < samples.size(); ++k) {
@@ -47,6 +78,10 @@ nlohmann::json light_json(const LightOptions& o, const std::vector<Eigen::Vector
       rows.push_back({{"point", {points[k].x(), points[k].y(), points[k].z()}},
                       {"light", s.light},
                       {"direction", {s.direction.x(), s.direction.y(), s.direction.z()}}});
+      if (k < daylight.size()) {
+        rows.back()["par_umol_m2_s"] = daylight[k].par_umol_m2_s;
+        rows.back()["daily_par_mol_m2"] = daylight[k].daily_par_mol_m2;
+      }
     }
   }
   nlohmann::json j = {{"scene", o.scene},
@@ -55,6 +90,12 @@ nlohmann::json light_json(const LightOptions& o, const std::vector<Eigen::Vector
                       {"min_light", samples.empty() ? 0.0 : lo},
                       {"max_light", samples.empty() ? 0.0 : hi},
                       {"seconds", seconds}};
+  if (!daylight.empty()) {
+    double par = 0.0, mol = 0.0;
+    for (const auto& d : daylight) par += d.par_umol_m2_s, mol += d.daily_par_mol_m2;
+    j["mean_par_umol_m2_s"] = par / daylight.size();
+    j["mean_daily_par_mol_m2"] = mol / daylight.size();
+  }
   if (o.out.empty()) {
     j["samples"] = std::move(rows);
   } else {
@@ -81,22 +122,26 @@ void run_light(const LightOptions& o) {
   refuse_overwriting_input(o.out, {o.scene, o.points});
   environment::Scene scene = environment::read_scene_file(o.scene);
   if (o.directions != 0) scene.sky.directions = o.directions;  // checked by the LightModel
+  const std::optional<environment::RealSky> sky = real_sky(o);
   const auto points = environment::read_points_csv(o.points);
   const auto t0 = std::chrono::steady_clock::now();
   const environment::LightModel model(scene);
   std::vector<environment::LightSample> samples(points.size());
   model.evaluate(points, samples);
+  std::vector<environment::DaylightSample> daylight;
+  if (sky) daylight = environment::daylight_at(environment::CanopyLight(scene, {}), *sky, points);
   const double seconds = seconds_since(t0);
   spdlog::debug("light: {} points in {:.3f} s", points.size(), seconds);
   if (!o.out.empty()) {
-    write_file_atomically(
-        o.out, [&](std::ostream& out) { environment::write_light_csv(out, points, samples); });
+    write_file_atomically(o.out, [&](std::ostream& out) {
+      environment::write_light_csv(out, points, samples, daylight);
+    });
     spdlog::info("wrote {} ({} points)", o.out, points.size());
   }
   if (o.json) {
-    print_json(light_json(o, points, samples, seconds));
+    print_json(light_json(o, points, samples, daylight, seconds));
   } else if (o.out.empty()) {
-    environment::write_light_csv(std::cout, points, samples);
+    environment::write_light_csv(std::cout, points, samples, daylight);
     std::cout.flush();
   }
 }
@@ -174,6 +219,25 @@ void add_environment_commands(CLI::App& app) {
   l->add_flag("--json", light->json,
               "One JSON object on stdout: points, mean/min/max light, seconds, and the samples "
               "unless -o writes them");
+  l->add_option("--latitude", light->latitude,
+                "Real sky: site latitude (degrees, north positive); with --longitude and --date "
+                "adds PAR columns par_umol_m2_s and daily_par_mol_m2");
+  l->add_option("--longitude", light->longitude,
+                "Real sky: site longitude (degrees, east positive)");
+  l->add_option("--elevation", light->elevation_m, "Real sky: site elevation (m, default 0)");
+  l->add_option("--utc-offset", light->utc_offset_h,
+                "Real sky: local clock time minus UTC (hours, default 0)");
+  l->add_option("--date", light->date, "Real sky: date YYYY-MM-DD (1950-2050)");
+  l->add_option("--hours", light->hours,
+                "Real sky: local hours FROM:TO integrated (default 0:24, the whole day)");
+  l->add_option("--diffuse-sky", light->diffuse,
+                "Real sky: diffuse radiance overcast (CIE standard overcast, default), clear "
+                "(CIE standard clear) or uniform");
+  l->add_option("--global-radiation", light->global_W_m2,
+                "Real sky: global radiation on a horizontal plane (W m-2) held while the sun is "
+                "up, split by Spitters et al. 1986 (default: the clear sky of the site and date)");
+  l->add_option("--transmittance", light->transmittance,
+                "Real sky: clear-sky atmospheric transmittance (default 0.75)");
   l->callback([light] { run_light(*light); });
 
   auto grow = std::make_shared<GrowOptions>();

@@ -1,12 +1,60 @@
 #include "environment/daylight.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <string>
 
 #include "fspm/error.hpp"
 
 namespace fspm::environment {
+
+namespace {
+
+double parse_number(std::string_view text, const char* what) {
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v)) {
+    throw ValueError(std::string("expected ") + what + ", got \"" + std::string(text) + "\"");
+  }
+  return v;
+}
+
+}  // namespace
+
+CalendarDate parse_date(std::string_view text) {
+  const auto bad = [&] {
+    return ValueError("expected a date YYYY-MM-DD, got \"" + std::string(text) + "\"");
+  };
+  if (text.size() != 10 || text[4] != '-' || text[7] != '-') throw bad();
+  CalendarDate d;
+  const auto field = [&](std::size_t at, std::size_t n, int& out) {
+    const auto [end, ec] = std::from_chars(text.data() + at, text.data() + at + n, out);
+    if (ec != std::errc() || end != text.data() + at + n) throw bad();
+  };
+  field(0, 4, d.year);
+  field(5, 2, d.month);
+  field(8, 2, d.day);
+  return d;
+}
+
+void parse_hours(std::string_view text, RealSky& sky) {
+  const std::size_t colon = text.find(':');
+  if (colon == std::string_view::npos) {
+    throw ValueError("expected hours FROM:TO (local time, e.g. 6:18), got \"" + std::string(text) +
+                     "\"");
+  }
+  sky.first_hour = parse_number(text.substr(0, colon), "the first hour (0-24)");
+  sky.last_hour = parse_number(text.substr(colon + 1), "the last hour (0-24)");
+}
+
+DiffuseSky diffuse_sky_from_name(std::string_view name) {
+  if (name == "overcast") return DiffuseSky::kStandardOvercast;
+  if (name == "clear") return DiffuseSky::kClear;
+  if (name == "uniform") return DiffuseSky::kUniform;
+  throw ValueError("unknown diffuse sky \"" + std::string(name) +
+                   "\", expected overcast, clear or uniform");
+}
 
 void validate(const RealSky& sky) {
   if (!(sky.first_hour >= 0.0 && sky.last_hour <= 24.0 && sky.first_hour < sky.last_hour)) {

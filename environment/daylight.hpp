@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "environment/canopy_light.hpp"
@@ -34,6 +35,13 @@ struct RealSky {
   // split by Spitters et al. (1986); negative: the clear sky of the site and date.
   double global_W_m2 = -1.0;
 };
+
+// "YYYY-MM-DD"; "FROM:TO" hours (local clock time, e.g. "6:18" or "5.5:20.25") into sky; a
+// diffuse sky's name ("overcast", "clear", "uniform"). Each throws ValueError saying what was
+// expected.
+CalendarDate parse_date(std::string_view text);
+void parse_hours(std::string_view text, RealSky& sky);
+DiffuseSky diffuse_sky_from_name(std::string_view name);
 
 // Throws ValueError for hours outside [0, 24], first > last, a step <= 0, a transmittance outside
 // (0, 1] or an invalid site or date.
