@@ -151,6 +151,88 @@ std::vector<LightSample> CanopyLight::evaluate_cluster_tops() const {
   return out;
 }
 
+void CanopyLight::transmission_along(std::span<const Eigen::Vector3d> points,
+                                     const Eigen::Vector3d& d,
+                                     std::span<const std::uint32_t> ignore,
+                                     std::span<double> out) const {
+  // Plane coordinates normal to d; cells of the largest cluster diameter.
+  const Eigen::Vector3d e1 = d.unitOrthogonal(), e2 = d.cross(e1);
+  double r_max = 0.0;
+  Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
+  for (const Sphere& c : clusters_) {
+    r_max = std::max(r_max, c.radius_m);
+    const Eigen::Vector2d q(c.center.dot(e1), c.center.dot(e2));
+    lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+  }
+  // The shadows reach r_max beyond the centres.
+  lo.array() -= r_max;
+  hi.array() += r_max;
+  if (clusters_.empty()) {
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      out[k] = has_obstacles_ ? obstacle_transmission(points[k], d) : 1.0;
+    }
+    return;
+  }
+  // At most 1024 cells a side, however far apart the clusters are.
+  const double cell = std::max({2.0 * r_max, (hi - lo).maxCoeff() / 1024.0, 1e-6});
+  const Eigen::Vector2i n = (((hi - lo) / cell).array().floor().cast<int>() + 1).max(1).matrix();
+  const auto cell_of = [&](double u, double v, int& i, int& j) {
+    i = static_cast<int>(std::floor((u - lo.x()) / cell));
+    j = static_cast<int>(std::floor((v - lo.y()) / cell));
+  };
+  // CSR of the cells each cluster's shadow square touches (two passes: count, fill).
+  std::vector<std::uint32_t> start(static_cast<std::size_t>(n.x()) * n.y() + 1, 0), items;
+  for (int pass = 0; pass < 2; ++pass) {
+    for (std::uint32_t k = 0; k < clusters_.size(); ++k) {
+      if (mu_[k] == 0.0) continue;
+      const Sphere& c = clusters_[k];
+      const double u = c.center.dot(e1), v = c.center.dot(e2);
+      int i0, j0, i1, j1;
+      cell_of(u - c.radius_m, v - c.radius_m, i0, j0);
+      cell_of(u + c.radius_m, v + c.radius_m, i1, j1);
+      for (int i = std::max(i0, 0); i <= std::min(i1, n.x() - 1); ++i) {
+        for (int j = std::max(j0, 0); j <= std::min(j1, n.y() - 1); ++j) {
+          const std::size_t at = static_cast<std::size_t>(i) * n.y() + j;
+          if (pass == 0) {
+            ++start[at + 1];
+          } else {
+            items[start[at]++] = k;
+          }
+        }
+      }
+    }
+    if (pass == 0) {
+      for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+      items.resize(start.back());
+    } else {
+      for (std::size_t c = start.size() - 1; c > 0; --c) start[c] = start[c - 1];
+      start[0] = 0;
+    }
+  }
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const Eigen::Vector3d& p = points[k];
+    const std::uint32_t skip = ignore.empty() ? kNoSphere : ignore[k];
+    int i, j;
+    cell_of(p.dot(e1), p.dot(e2), i, j);
+    double depth = 0.0;
+    if (i >= 0 && j >= 0 && i < n.x() && j < n.y()) {
+      const std::size_t at = static_cast<std::size_t>(i) * n.y() + j;
+      for (std::uint32_t m = start[at]; m < start[at + 1]; ++m) {
+        const std::uint32_t c = items[m];
+        if (c == skip) continue;
+        const Eigen::Vector3d v = clusters_[c].center - p;
+        const double r = clusters_[c].radius_m;
+        const double b = v.dot(d), q = b * b - v.squaredNorm() + r * r;
+        if (q <= 0.0) continue;
+        const double exit = b + std::sqrt(q);
+        if (exit <= 0.0) continue;
+        depth += mu_[c] * (exit - std::max(0.0, b - std::sqrt(q)));
+      }
+    }
+    out[k] = std::exp(-depth) * (has_obstacles_ ? obstacle_transmission(p, d) : 1.0);
+  }
+}
+
 double CanopyLight::leaf_area_index_above(const Eigen::Vector3d& p, std::uint32_t ignore) const {
   double lai = 0.0;
   for (std::uint32_t j = 0; j < clusters_.size(); ++j) {

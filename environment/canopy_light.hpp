@@ -64,6 +64,11 @@ class CanopyLight {
   void transmission(const Eigen::Vector3d& p, std::uint32_t ignore, std::vector<double>& out) const;
   double transmission_along(const Eigen::Vector3d& p, const Eigen::Vector3d& d,
                             std::uint32_t ignore = kNoSphere) const;
+  // transmission_along for many points and one direction (the sun's at one hour): the clusters
+  // are binned once by their shadow on the plane normal to d, so each point meets only the
+  // clusters whose shadow covers its own. ignore[k] (if given) is left out at point k.
+  void transmission_along(std::span<const Eigen::Vector3d> points, const Eigen::Vector3d& d,
+                          std::span<const std::uint32_t> ignore, std::span<double> out) const;
 
   // Cumulative leaf area index above p (m^2 of leaf per m^2 of ground): the leaf area density of
   // the clusters integrated along the vertical ray up from p, leaving out cluster `ignore`.

@@ -118,31 +118,40 @@ std::vector<DaylightSample> daylight_at(const CanopyLight& light, const RealSky&
                                         std::span<const std::uint32_t> ignore) {
   const std::vector<SkyStep> steps = sky_steps(sky);
   const double dt_s = 3600.0 * (sky.last_hour - sky.first_hour) / steps.size();
-  std::vector<std::vector<double>> weights;
   double open_mol = 0.0;
+  for (const SkyStep& s : steps) open_mol += par_umol_m2_s(s.radiation.global_W_m2()) * dt_s * 1e-6;
+  std::vector<double> mol(points.size(), 0.0);
+  // Diffuse light: each point's transmission per direction once, then every step's sky weights.
+  std::vector<std::vector<double>> weights;
+  std::vector<double> diffuse_w_m2;
   for (const SkyStep& s : steps) {
+    if (s.radiation.diffuse_W_m2 <= 0.0) continue;
     weights.push_back(diffuse_weights(light.directions(), sky.diffuse, s.sun));
-    open_mol += par_umol_m2_s(s.radiation.global_W_m2()) * dt_s * 1e-6;
+    diffuse_w_m2.push_back(s.radiation.diffuse_W_m2);
   }
-  std::vector<DaylightSample> out(points.size());
   std::vector<double> t;
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    const std::uint32_t skip = ignore.empty() ? kNoSphere : ignore[k];
-    light.transmission(points[k], skip, t);
-    double mol = 0.0;
-    for (std::size_t j = 0; j < steps.size(); ++j) {
-      const SkyStep& s = steps[j];
-      if (s.radiation.global_W_m2() <= 0.0) continue;
+  for (std::size_t k = 0; k < points.size() && !weights.empty(); ++k) {
+    light.transmission(points[k], ignore.empty() ? kNoSphere : ignore[k], t);
+    for (std::size_t j = 0; j < weights.size(); ++j) {
       double diffuse = 0.0;
       for (std::size_t i = 0; i < t.size(); ++i) diffuse += weights[j][i] * t[i];
-      const double direct =
-          s.radiation.direct_W_m2 > 0.0 ? light.transmission_along(points[k], s.sun, skip) : 0.0;
-      const double e = s.radiation.direct_W_m2 * direct + s.radiation.diffuse_W_m2 * diffuse;
-      mol += par_umol_m2_s(e) * dt_s * 1e-6;
+      mol[k] += par_umol_m2_s(diffuse_w_m2[j] * diffuse) * dt_s * 1e-6;
     }
-    out[k].daily_par_mol_m2 = mol;
-    out[k].par_umol_m2_s = mol * 1e6 / (dt_s * steps.size());
-    out[k].open_fraction = open_mol > 0.0 ? mol / open_mol : 0.0;
+  }
+  // The sun's beam: every point at once per step.
+  std::vector<double> beam(points.size());
+  for (const SkyStep& s : steps) {
+    if (s.radiation.direct_W_m2 <= 0.0) continue;
+    light.transmission_along(points, s.sun, ignore, beam);
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      mol[k] += par_umol_m2_s(s.radiation.direct_W_m2 * beam[k]) * dt_s * 1e-6;
+    }
+  }
+  std::vector<DaylightSample> out(points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    out[k].daily_par_mol_m2 = mol[k];
+    out[k].par_umol_m2_s = mol[k] * 1e6 / (dt_s * steps.size());
+    out[k].open_fraction = open_mol > 0.0 ? mol[k] / open_mol : 0.0;
   }
   return out;
 }

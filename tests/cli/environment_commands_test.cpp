@@ -65,6 +65,32 @@ TEST(EnvironmentCli, LightBadInputNamesFileAndPlace) {
   EXPECT_NE(r.err.find("points.csv:3"), std::string::npos) << r.err;
 }
 
+// A real sky: an open point under a held global radiation of 400 W m-2 from 9 to 15 h (the sun up
+// at 45 N in June) gets 400 * 0.5 * 4.57 umol m-2 s-1 and 6 h of it in mol m-2; a site without a
+// date is refused.
+TEST(EnvironmentCli, LightUnderARealSkyGivesPar) {
+  const auto dir = scratch_dir("light_real_sky");
+  write_text(dir / "scene.json", R"({"occluders": []})");
+  write_text(dir / "points.csv", "x,y,z\n0,0,0\n");
+  const std::string base = "light --scene " + (dir / "scene.json").string() + " --points " +
+                           (dir / "points.csv").string() + " --latitude 45 --longitude 7";
+  const auto r = run_fspm(base +
+                          " --utc-offset 1 --date 2024-06-21 --hours 9:15 --global-radiation 400 "
+                          "--json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const double par = 400.0 * 0.5 * 4.57;
+  EXPECT_NEAR(j["samples"][0]["par_umol_m2_s"].get<double>(), par, 1e-9);
+  EXPECT_NEAR(j["samples"][0]["daily_par_mol_m2"].get<double>(), par * 6 * 3600 * 1e-6, 1e-9);
+  const auto csv = run_fspm(base + " --utc-offset 1 --date 2024-06-21");
+  ASSERT_EQ(csv.exit_code, 0) << csv.err;
+  EXPECT_EQ(csv.out.substr(0, csv.out.find('\n')),
+            "x,y,z,light,dx,dy,dz,par_umol_m2_s,daily_par_mol_m2");
+  const auto bad = run_fspm(base);
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.err.find("--date"), std::string::npos) << bad.err;
+}
+
 TEST(EnvironmentCli, GrowPresetWritesTreeAndJson) {
   const auto dir = scratch_dir("grow");
   const auto tree = dir / "a.tree";

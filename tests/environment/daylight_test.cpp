@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "fspm/error.hpp"
@@ -125,6 +126,40 @@ TEST(Daylight, SunBeamThroughACluster) {
   const Eigen::Vector3d sun = Eigen::Vector3d(1, 0, 1).normalized();
   EXPECT_GT(sky_radiance(DiffuseSky::kClear, Eigen::Vector3d(0.9, 0, 0.8).normalized(), sun),
             sky_radiance(DiffuseSky::kClear, Eigen::Vector3d(-0.9, 0, 0.8).normalized(), sun));
+}
+
+// The sun's beam for many points at once (clusters binned by their shadow) equals the beam point
+// by point, on random crowns and sun directions.
+TEST(Daylight, BatchedSunBeamEqualsOnePointAtATime) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Sphere> clusters;
+  for (int i = 0; i < 300; ++i) {
+    const double r = 0.2 + 0.5 * u(rng);
+    clusters.push_back({Eigen::Vector3d(6 * u(rng), 6 * u(rng), 1 + 5 * u(rng)), r,
+                        cluster_translucency(r), false});
+  }
+  Scene scene;
+  scene.boxes.push_back(Box::wall({7, -5}, {7, 10}, 0.0, 3.0, 0.2));
+  const CanopyLight light(scene, clusters);
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::uint32_t> ignore;
+  for (int i = 0; i < 200; ++i) {
+    points.push_back({6 * u(rng), 6 * u(rng), 6 * u(rng)});
+    ignore.push_back(i % 3 == 0 ? static_cast<std::uint32_t>(i) : kNoSphere);
+  }
+  std::vector<double> beam(points.size());
+  int shaded = 0;
+  for (const Eigen::Vector3d& sun :
+       {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, -2, 1).normalized(),
+        Eigen::Vector3d(-3, 1, 0.4).normalized()}) {
+    light.transmission_along(points, sun, ignore, beam);
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      EXPECT_NEAR(beam[k], light.transmission_along(points[k], sun, ignore[k]), 1e-12) << k;
+      shaded += beam[k] < 0.99;
+    }
+  }
+  EXPECT_GT(shaded, 100);
 }
 
 }  // namespace
