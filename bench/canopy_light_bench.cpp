@@ -29,19 +29,20 @@ Scene leaf_sky() {
   return s;
 }
 
+// Arg: voxel size in cm (0: every cluster's sphere followed exactly).
 void BM_CanopyLeafLight30YearA(benchmark::State& state) {
   const GrowthResult& g = tree_a30();
   for (auto _ : state) {
-    const CanopyLight light(leaf_sky(), g.cluster_spheres);
+    const CanopyLight light(leaf_sky(), g.cluster_spheres, 0.01 * state.range(0));
     auto out = light.evaluate_clusters();
     benchmark::DoNotOptimize(out.data());
   }
   state.counters["clusters"] = static_cast<double>(g.cluster_spheres.size());
 }
-BENCHMARK(BM_CanopyLeafLight30YearA)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CanopyLeafLight30YearA)->Arg(0)->Arg(10)->Arg(15)->Unit(benchmark::kMillisecond);
 
 // A clear 21 June at 45 N, 0-24 h in 15-minute steps, PAR at every cluster's centre.
-void BM_CanopyDaylight30YearA(benchmark::State& state) {
+void BM_CanopyDaylight30YearA(benchmark::State& state) {  // arg: voxel size in cm
   const GrowthResult& g = tree_a30();
   RealSky sky;
   sky.site = {45.0, 7.0, 300.0, 1.0};
@@ -49,12 +50,12 @@ void BM_CanopyDaylight30YearA(benchmark::State& state) {
   std::vector<Eigen::Vector3d> centres;
   for (const Sphere& c : g.cluster_spheres) centres.push_back(c.center);
   for (auto _ : state) {
-    const CanopyLight light(leaf_sky(), g.cluster_spheres);
+    const CanopyLight light(leaf_sky(), g.cluster_spheres, 0.01 * state.range(0));
     auto out = daylight_at(light, sky, centres);
     benchmark::DoNotOptimize(out.data());
   }
   state.counters["clusters"] = static_cast<double>(g.cluster_spheres.size());
 }
-BENCHMARK(BM_CanopyDaylight30YearA)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CanopyDaylight30YearA)->Arg(0)->Arg(10)->Arg(15)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -18,8 +18,9 @@ double cluster_leaf_area_m2(const Sphere& cluster) {
          std::numbers::pi * r * r * r;
 }
 
-CanopyLight::CanopyLight(const Scene& scene, std::span<const Sphere> clusters)
+CanopyLight::CanopyLight(const Scene& scene, std::span<const Sphere> clusters, double voxel_m)
     : obstacles_(scene), clusters_(clusters.begin(), clusters.end()), dirs_(scene.sky.directions) {
+  if (voxel_m > 0.0) grid_.emplace(clusters, voxel_m);
   validate(scene.sky);
   has_obstacles_ = !obstacles_.spheres.empty() || !obstacles_.boxes.empty() ||
                    !obstacles_.meshes.empty() || obstacles_.ground.has_value();
@@ -48,6 +49,10 @@ CanopyLight::CanopyLight(const Scene& scene, std::span<const Sphere> clusters)
 void CanopyLight::accumulate_depth(const Eigen::Vector3d& p, std::uint32_t ignore,
                                    std::vector<double>& depth) const {
   depth.assign(dirs_.size(), 0.0);
+  if (grid_ && ignore == kNoSphere) {
+    for (int i = 0; i < dirs_.size(); ++i) depth[i] = grid_->optical_depth(p, dirs_.direction(i));
+    return;
+  }
   for (std::uint32_t j = 0; j < clusters_.size(); ++j) {
     if (j == ignore || mu_[j] == 0.0) continue;
     const Eigen::Vector3d v = clusters_[j].center - p;
@@ -105,6 +110,10 @@ void CanopyLight::transmission(const Eigen::Vector3d& p, std::uint32_t ignore,
 
 double CanopyLight::transmission_along(const Eigen::Vector3d& p, const Eigen::Vector3d& d,
                                        std::uint32_t ignore) const {
+  if (grid_ && ignore == kNoSphere) {
+    const double t = std::exp(-grid_->optical_depth(p, d));
+    return has_obstacles_ ? t * obstacle_transmission(p, d) : t;
+  }
   double depth = 0.0;
   for (std::uint32_t j = 0; j < clusters_.size(); ++j) {
     if (j == ignore || mu_[j] == 0.0) continue;
@@ -155,6 +164,10 @@ void CanopyLight::transmission_along(std::span<const Eigen::Vector3d> points,
                                      const Eigen::Vector3d& d,
                                      std::span<const std::uint32_t> ignore,
                                      std::span<double> out) const {
+  if (grid_ && ignore.empty()) {
+    for (std::size_t k = 0; k < points.size(); ++k) out[k] = transmission_along(points[k], d);
+    return;
+  }
   // Plane coordinates normal to d; cells of the largest cluster diameter.
   const Eigen::Vector3d e1 = d.unitOrthogonal(), e2 = d.cross(e1);
   double r_max = 0.0;

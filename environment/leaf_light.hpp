@@ -1,6 +1,8 @@
 #pragma once
 // The light of a tree's leaf clusters in a scene, as the attribute "light".
 
+#include <cstddef>
+
 #include "environment/scene.hpp"
 #include "fspm/tree_graph.hpp"
 
@@ -14,6 +16,10 @@ namespace fspm::environment {
 // by their translucency.
 // Pruned leaves (attribute "pruned" != 0) shade nothing and get no value (nan). Internodes keep
 // their values (the attribute is added with nan, "no value", when missing).
+// Crowns of more than kLeafLightVoxelsFrom clusters are evaluated through voxels of
+// kLeafLightVoxel_m (LeafAreaGrid).
+inline constexpr std::size_t kLeafLightVoxelsFrom = 1000;
+inline constexpr double kLeafLightVoxel_m = 0.1;
 void record_leaf_light(TreeGraph& tree, const Scene& scene);
 
 }  // namespace fspm::environment

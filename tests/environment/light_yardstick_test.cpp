@@ -275,6 +275,14 @@ TEST(LightYardstick, ClusterLightAgainstRayTracedLeaves) {
     for (std::uint32_t c = 0; c < n; ++c) {
       top[c] = canopy.evaluate(cluster_top(g.cluster_spheres[c]), c).light;
     }
+    // The same through voxels of 0.1 m (LeafAreaGrid).
+    t0 = std::chrono::steady_clock::now();
+    const CanopyLight voxels(Scene{}, g.cluster_spheres, 0.1);
+    std::vector<double> voxel_light(n);
+    for (std::uint32_t c = 0; c < n; ++c) {
+      voxel_light[c] = voxels.evaluate(g.cluster_spheres[c].center).light;
+    }
+    const double voxel_s = seconds_since(t0);
     // Shadow grid per cluster (the adaptation's `shadow_grid`): each cluster's bud at the end of
     // its shoot.
     t0 = std::chrono::steady_clock::now();
@@ -307,6 +315,7 @@ TEST(LightYardstick, ClusterLightAgainstRayTracedLeaves) {
     } rows[] = {{"eq. 4.3 at the centre", centre, eq43_s},
                 {"turbid medium, centre (leaf light)", mid, canopy_s},
                 {"turbid medium, top", top, canopy_s},
+                {"turbid medium, centre, 0.1 m voxels", voxel_light, voxel_s},
                 {"shadow grid per cluster", grid_light, grid_s}};
     Agreement best_old, leaf;
     for (const auto& row : rows) {
