@@ -15,7 +15,8 @@ bool is_live_leaf(const TreeGraph& tree, NodeId i, std::span<const double> prune
   return tree.kind(i) == OrganKind::kLeaf && (pruned.empty() || pruned[i] == 0.0);
 }
 
-// The live leaves of `tree` as spheres; `sphere_of` gets each node's sphere index.
+}  // namespace
+
 std::vector<Sphere> leaf_spheres(const TreeGraph& tree, std::vector<std::uint32_t>& sphere_of) {
   const std::span<const double> pruned = tree.has_attribute(kPrunedAttribute)
                                              ? tree.attribute(kPrunedAttribute)
@@ -31,8 +32,6 @@ std::vector<Sphere> leaf_spheres(const TreeGraph& tree, std::vector<std::uint32_
   }
   return spheres;
 }
-
-}  // namespace
 
 void record_leaf_light(TreeGraph& tree, const Scene& scene) {
   constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();

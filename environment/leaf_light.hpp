@@ -2,6 +2,8 @@
 // The light of a tree's leaf clusters in a scene, as the attribute "light".
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "environment/scene.hpp"
 #include "fspm/tree_graph.hpp"
@@ -16,6 +18,11 @@ namespace fspm::environment {
 // by their translucency.
 // Pruned leaves (attribute "pruned" != 0) shade nothing and get no value (nan). Internodes keep
 // their values (the attribute is added with nan, "no value", when missing).
+// The live leaf clusters of a tree (nodes of kind leaf, not pruned) as spheres: centre the node's
+// start, its radius, translucency the attribute "translucency" (1 when absent). sphere_of gets
+// each node's index among them (kNoSphere for the others).
+std::vector<Sphere> leaf_spheres(const TreeGraph& tree, std::vector<std::uint32_t>& sphere_of);
+
 // Crowns of more than kLeafLightVoxelsFrom clusters are evaluated through voxels of
 // kLeafLightVoxel_m (LeafAreaGrid).
 inline constexpr std::size_t kLeafLightVoxelsFrom = 1000;
