@@ -15,6 +15,7 @@
 #include "environment/canopy_light.hpp"
 #include "environment/daylight.hpp"
 #include "environment/growth_model.hpp"
+#include "environment/leaf_light.hpp"
 #include "environment/light_model.hpp"
 #include "environment/points_file.hpp"
 #include "environment/scene_file.hpp"
@@ -29,6 +30,7 @@ namespace {
 struct LightOptions {
   std::string scene;
   std::string points;
+  std::string tree;  // instead of points: the tree's leaf clusters
   std::string out;
   int directions = 0;
   bool json = false;
@@ -118,18 +120,48 @@ struct GrowOptions {
   bool json = false;
 };
 
+// The light of a tree's leaf clusters: the mean light of each cluster's leaves through the crown
+// as turbid media and the scene's obstacles (record_leaf_light), and its PAR under a real sky.
+void leaf_cluster_light(const LightOptions& o, const environment::Scene& scene,
+                        const std::optional<environment::RealSky>& sky,
+                        std::vector<Eigen::Vector3d>& points,
+                        std::vector<environment::LightSample>& samples,
+                        std::vector<environment::DaylightSample>& daylight) {
+  const TreeGraph tree = read_tree_file(o.tree);
+  std::vector<std::uint32_t> sphere_of;
+  const std::vector<environment::Sphere> clusters = environment::leaf_spheres(tree, sphere_of);
+  if (clusters.empty()) {
+    throw ValueError(o.tree + ": expected leaf clusters (leaf nodes, as fspm grow writes them)");
+  }
+  for (const environment::Sphere& c : clusters) points.push_back(c.center);
+  const double voxel_m =
+      clusters.size() > environment::kLeafLightVoxelsFrom ? environment::kLeafLightVoxel_m : 0.0;
+  const environment::CanopyLight light(scene, clusters, voxel_m);
+  samples = light.evaluate_clusters();
+  if (sky) daylight = environment::daylight_at(light, *sky, points);
+}
+
 void run_light(const LightOptions& o) {
-  refuse_overwriting_input(o.out, {o.scene, o.points});
+  if (o.points.empty() == o.tree.empty()) {
+    throw ValueError("fspm light needs either --points or --tree");
+  }
+  refuse_overwriting_input(o.out, {o.scene, o.points, o.tree});
   environment::Scene scene = environment::read_scene_file(o.scene);
   if (o.directions != 0) scene.sky.directions = o.directions;  // checked by the LightModel
   const std::optional<environment::RealSky> sky = real_sky(o);
-  const auto points = environment::read_points_csv(o.points);
-  const auto t0 = std::chrono::steady_clock::now();
-  const environment::LightModel model(scene);
-  std::vector<environment::LightSample> samples(points.size());
-  model.evaluate(points, samples);
+  std::vector<Eigen::Vector3d> points;
+  std::vector<environment::LightSample> samples;
   std::vector<environment::DaylightSample> daylight;
-  if (sky) daylight = environment::daylight_at(environment::CanopyLight(scene, {}), *sky, points);
+  const auto t0 = std::chrono::steady_clock::now();
+  if (!o.tree.empty()) {
+    leaf_cluster_light(o, scene, sky, points, samples, daylight);
+  } else {
+    points = environment::read_points_csv(o.points);
+    const environment::LightModel model(scene);
+    samples.resize(points.size());
+    model.evaluate(points, samples);
+    if (sky) daylight = environment::daylight_at(environment::CanopyLight(scene, {}), *sky, points);
+  }
   const double seconds = seconds_since(t0);
   spdlog::debug("light: {} points in {:.3f} s", points.size(), seconds);
   if (!o.out.empty()) {
@@ -212,7 +244,10 @@ void add_environment_commands(CLI::App& app) {
   CLI::App* l = app.add_subcommand(
       "light", "Sky light (Pirk eq. 4.3) and mean light direction at points of a scene");
   l->add_option("--scene", light->scene, "Scene file (JSON, see docs/formats.md)")->required();
-  l->add_option("--points", light->points, "Points (CSV with header x,y,z)")->required();
+  l->add_option("--points", light->points, "Points (CSV with header x,y,z)");
+  l->add_option("--tree", light->tree,
+                "Instead of --points: a tree file whose leaf clusters get the mean light of their "
+                "leaves through the crown (one row per cluster, at its centre)");
   l->add_option("--directions", light->directions,
                 "Stratified sky directions (default: the scene's sky.directions, 256)");
   l->add_option("-o,--output", light->out, "Output CSV x,y,z,light,dx,dy,dz (default: stdout)");

@@ -1,6 +1,7 @@
 // fspm light and fspm grow, run as a user would.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -89,6 +90,39 @@ TEST(EnvironmentCli, LightUnderARealSkyGivesPar) {
   const auto bad = run_fspm(base);
   EXPECT_EQ(bad.exit_code, 1);
   EXPECT_NE(bad.err.find("--date"), std::string::npos) << bad.err;
+}
+
+// A grown tree's leaf clusters under a held global radiation of 400 W m-2 from 9 to 15 h: one row
+// per cluster, each getting less than the open sky's 400 * 0.5 * 4.57 umol m-2 s-1 and more than
+// nothing, its daily PAR 6 h of its mean; --points and --tree together are refused.
+TEST(EnvironmentCli, LightOfATreesLeafClusters) {
+  const auto dir = scratch_dir("light_tree");
+  write_text(dir / "scene.json", R"({"occluders": []})");
+  const auto tree = dir / "t.tree";
+  ASSERT_EQ(run_fspm("grow --preset A --years 8 -o " + tree.string()).exit_code, 0);
+  const auto info = nlohmann::json::parse(run_fspm("tree info --json " + tree.string()).out);
+  const std::string base = "light --scene " + (dir / "scene.json").string();
+  const auto r = run_fspm(base + " --tree " + tree.string() +
+                          " --latitude 45 --longitude 7 --utc-offset 1 --date 2024-06-21 "
+                          "--hours 9:15 --global-radiation 400 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["points"], info["leaves"]);
+  const double open = 400.0 * 0.5 * 4.57;
+  double darkest = open;
+  for (const auto& s : j["samples"]) {
+    const double par = s["par_umol_m2_s"].get<double>();
+    EXPECT_GT(par, 0.0);
+    EXPECT_LT(par, open);
+    EXPECT_NEAR(s["daily_par_mol_m2"].get<double>(), par * 6 * 3600 * 1e-6, 1e-9);
+    darkest = std::min(darkest, par);
+  }
+  EXPECT_LT(darkest, 0.5 * open);  // the crown shades its inside
+  write_text(dir / "points.csv", "x,y,z\n0,0,0\n");
+  const auto both =
+      run_fspm(base + " --tree " + tree.string() + " --points " + (dir / "points.csv").string());
+  EXPECT_EQ(both.exit_code, 1);
+  EXPECT_NE(both.err.find("either --points or --tree"), std::string::npos) << both.err;
 }
 
 TEST(EnvironmentCli, GrowPresetWritesTreeAndJson) {
