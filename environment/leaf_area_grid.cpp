@@ -53,20 +53,44 @@ LeafAreaGrid::LeafAreaGrid(std::span<const Sphere> clusters, double voxel_m) : h
       }
     }
   }
+  // The coarse level: each block's mean coefficient (voxels beyond the grid count as empty).
+  coarse_.assign(block_full_.size(), 0.0f);
+  for (int z = 0; z < n_.z(); ++z) {
+    for (int y = 0; y < n_.y(); ++y) {
+      for (int x = 0; x < n_.x(); ++x) {
+        coarse_[block_index({x, y, z})] +=
+            kappa_[(static_cast<std::size_t>(z) * n_.y() + y) * n_.x() + x] /
+            static_cast<float>(kBlock * kBlock * kBlock);
+      }
+    }
+  }
 }
 
-double LeafAreaGrid::optical_depth(const Eigen::Vector3d& p, const Eigen::Vector3d& d,
-                                   double enough) const {
-  if (kappa_.empty()) return 0.0;
-  // Enter the grid's box (slab test).
-  const Eigen::Vector3d hi = lo_ + h_ * n_.cast<double>();
-  double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();
+namespace {
+
+// One level of voxels, read by march().
+struct Level {
+  Eigen::Vector3d lo;
+  Eigen::Vector3i n;
+  double h;
+  const float* kappa;
+  const std::uint8_t* block_full;  // nullptr: no empty-block jumps
+  Eigen::Vector3i blocks;
+  int block;
+};
+
+// Optical depth along p + t d for t in [t_from, t_to] through one level (3D DDA, Amanatides and
+// Woo 1987), stopping beyond `enough`.
+double march(const Level& g, const Eigen::Vector3d& p, const Eigen::Vector3d& d, double t_from,
+             double t_to, double enough) {
+  const Eigen::Vector3d hi = g.lo + g.h * g.n.cast<double>();
+  double t0 = t_from, t1 = t_to;
   for (int k = 0; k < 3; ++k) {
     if (d[k] == 0.0) {
-      if (p[k] < lo_[k] || p[k] > hi[k]) return 0.0;
+      if (p[k] < g.lo[k] || p[k] > hi[k]) return 0.0;
       continue;
     }
-    double a = (lo_[k] - p[k]) / d[k], b = (hi[k] - p[k]) / d[k];
+    double a = (g.lo[k] - p[k]) / d[k], b = (hi[k] - p[k]) / d[k];
     if (a > b) std::swap(a, b);
     t0 = std::max(t0, a), t1 = std::min(t1, b);
   }
@@ -77,15 +101,15 @@ double LeafAreaGrid::optical_depth(const Eigen::Vector3d& p, const Eigen::Vector
   const auto start_at = [&](double t) {
     const Eigen::Vector3d q = p + t * d;
     for (int k = 0; k < 3; ++k) {
-      v[k] = std::clamp(static_cast<int>(std::floor((q[k] - lo_[k]) / h_)), 0, n_[k] - 1);
+      v[k] = std::clamp(static_cast<int>(std::floor((q[k] - g.lo[k]) / g.h)), 0, g.n[k] - 1);
       if (d[k] > 0.0) {
         step[k] = 1;
-        t_max[k] = t + (lo_[k] + (v[k] + 1) * h_ - q[k]) / d[k];
-        t_delta[k] = h_ / d[k];
+        t_max[k] = t + (g.lo[k] + (v[k] + 1) * g.h - q[k]) / d[k];
+        t_delta[k] = g.h / d[k];
       } else if (d[k] < 0.0) {
         step[k] = -1;
-        t_max[k] = t + (lo_[k] + v[k] * h_ - q[k]) / d[k];
-        t_delta[k] = -h_ / d[k];
+        t_max[k] = t + (g.lo[k] + v[k] * g.h - q[k]) / d[k];
+        t_delta[k] = -g.h / d[k];
       } else {
         step[k] = 0;
         t_max[k] = t_delta[k] = std::numeric_limits<double>::infinity();
@@ -95,33 +119,49 @@ double LeafAreaGrid::optical_depth(const Eigen::Vector3d& p, const Eigen::Vector
   start_at(t0);
   double depth = 0.0, t = t0;
   while (true) {
-    const std::size_t b = block_index(v);
-    if (!block_full_[b]) {
-      // An empty block: jump to where the ray leaves it.
+    if (g.block_full != nullptr &&
+        !g.block_full[(static_cast<std::size_t>(v.z() / g.block) * g.blocks.y() + v.y() / g.block) *
+                          g.blocks.x() +
+                      v.x() / g.block]) {
+      // An empty block: jump to where the ray leaves it (always forward).
       double exit = t1;
       for (int k = 0; k < 3; ++k) {
         if (step[k] == 0) continue;
-        const int edge = (v[k] / kBlock + (step[k] > 0 ? 1 : 0)) * kBlock;
-        exit = std::min(exit, (lo_[k] + edge * h_ - p[k]) / d[k]);
+        const int edge = (v[k] / g.block + (step[k] > 0 ? 1 : 0)) * g.block;
+        exit = std::min(exit, (g.lo[k] + edge * g.h - p[k]) / d[k]);
       }
       if (exit >= t1) break;
-      t = exit;
-      start_at(t + 1e-9 * h_);
+      t = std::max(exit, t + 1e-6 * g.h);
+      start_at(t + 1e-9 * g.h);
       continue;
     }
     int axis = 0;
     if (t_max[1] < t_max[axis]) axis = 1;
     if (t_max[2] < t_max[axis]) axis = 2;
     const double t_next = std::min(t_max[axis], t1);
-    depth +=
-        kappa_[(static_cast<std::size_t>(v.z()) * n_.y() + v.y()) * n_.x() + v.x()] * (t_next - t);
+    depth += g.kappa[(static_cast<std::size_t>(v.z()) * g.n.y() + v.y()) * g.n.x() + v.x()] *
+             (t_next - t);
     if (t_next >= t1 || depth > enough) break;
     t = t_next;
     v[axis] += step[axis];
-    if (v[axis] < 0 || v[axis] >= n_[axis]) break;
+    if (v[axis] < 0 || v[axis] >= g.n[axis]) break;
     t_max[axis] += t_delta[axis];
   }
   return depth;
+}
+
+}  // namespace
+
+double LeafAreaGrid::optical_depth(const Eigen::Vector3d& p, const Eigen::Vector3d& d,
+                                   double enough) const {
+  if (kappa_.empty()) return 0.0;
+  // Fine voxels near p, their 4^3 means beyond kNear_m (a far leaf's exact place matters less).
+  const Level fine{lo_, n_, h_, kappa_.data(), block_full_.data(), blocks_, kBlock};
+  const double near = kNear_m;
+  double depth = march(fine, p, d, 0.0, near, enough);
+  if (depth > enough) return depth;
+  const Level coarse{lo_, blocks_, h_ * kBlock, coarse_.data(), nullptr, blocks_, kBlock};
+  return depth + march(coarse, p, d, near, std::numeric_limits<double>::infinity(), enough - depth);
 }
 
 }  // namespace fspm::environment

@@ -2,10 +2,11 @@
 // The crown's extinction coefficient in voxels: every leaf cluster (a turbid medium of extinction
 // mu = -ln(gamma) / (2 r), canopy_light.hpp) adds mu times the share of each voxel it fills
 // (2 x 2 x 2 samples per voxel), and a ray's optical depth is the sum of the coefficients times
-// the lengths of the voxels it crosses (3D DDA, Amanatides and Woo 1987). The cost of a ray is the
-// number of voxels it crosses, whatever the number of clusters, where following every cluster's
-// sphere costs each point all the clusters within its shadow reach (the voxel-based turbid-medium
-// approach of FSPM light models such as RATP, Sinoquet et al. 2001).
+// the lengths of the voxels it crosses (3D DDA, Amanatides and Woo 1987): within 1 m of its start
+// through the voxels, beyond it through the means of blocks of 4 x 4 x 4 voxels. The cost of a ray
+// is the number of voxels it crosses, whatever the number of clusters, where following every
+// cluster's sphere costs each point all the clusters within its shadow reach (the voxel-based
+// turbid-medium approach of FSPM light models such as RATP, Sinoquet et al. 2001).
 #include <Eigen/Core>
 #include <cstdint>
 #include <span>
@@ -36,6 +37,9 @@ class LeafAreaGrid {
   static constexpr int kBlock = 4;
   Eigen::Vector3i blocks_ = Eigen::Vector3i::Zero();
   std::vector<std::uint8_t> block_full_;
+  // Beyond kNear_m from the point a ray marches through the blocks' mean coefficients.
+  static constexpr double kNear_m = 1.0;
+  std::vector<float> coarse_;
   std::size_t block_index(const Eigen::Vector3i& v) const {
     return (static_cast<std::size_t>(v.z() / kBlock) * blocks_.y() + v.y() / kBlock) * blocks_.x() +
            v.x() / kBlock;
