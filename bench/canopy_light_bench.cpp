@@ -1,13 +1,17 @@
 // Light of every leaf cluster of a 30-year type-A tree (the default growth, about 3 000 clusters)
 // through the crown as turbid media: the relative sky light the growth model records, and the
-// PAR of a whole clear day at a site (goal: under 50 ms on one core).
+// PAR of a whole clear day at a site (goal: under 50 ms on one core); and the time of the
+// ray-traced yardstick (tests/environment/leaf_ray_tracer.hpp) beside the turbid medium's.
 #include <benchmark/benchmark.h>
 
+#include <chrono>
+#include <random>
 #include <vector>
 
 #include "environment/canopy_light.hpp"
 #include "environment/daylight.hpp"
 #include "environment/growth_model.hpp"
+#include "tests/environment/leaf_ray_tracer.hpp"
 
 namespace {
 
@@ -57,5 +61,36 @@ void BM_CanopyDaylight30YearA(benchmark::State& state) {  // arg: voxel size in 
   state.counters["clusters"] = static_cast<double>(g.cluster_spheres.size());
 }
 BENCHMARK(BM_CanopyDaylight30YearA)->Arg(0)->Arg(10)->Arg(15)->Unit(benchmark::kMillisecond);
+
+// The yardstick: ray tracing the leaves and wood of the 15-year type-A tree (16 leaves and 64 rays
+// per cluster), against the turbid medium's light for the same clusters (counter `ratio`).
+void BM_LightYardstick15YearA(benchmark::State& state) {
+  static const GrowthResult g = [] {
+    GrowthParams p = growth_preset("A");
+    p.years = 15;
+    return grow_tree(p);
+  }();
+  std::mt19937_64 rng(7);
+  std::vector<std::uint32_t> leaf_start;
+  std::vector<yardstick::Triangle> tris =
+      yardstick::leaf_triangles(g.cluster_spheres, rng, leaf_start);
+  yardstick::add_wood(g.tree, tris);
+  for (auto _ : state) {
+    const yardstick::Bvh bvh(tris);
+    auto out = yardstick::traced_light(bvh, tris, leaf_start, 16, 64, rng);
+    benchmark::DoNotOptimize(out.data());
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  constexpr int kRuns = 20;
+  for (int k = 0; k < kRuns; ++k) {
+    auto lit = CanopyLight(leaf_sky(), g.cluster_spheres).evaluate_clusters();
+    benchmark::DoNotOptimize(lit.data());
+  }
+  const double canopy_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / kRuns;
+  state.counters["clusters"] = static_cast<double>(g.cluster_spheres.size());
+  state.counters["canopy_ms"] = 1e3 * canopy_s;
+}
+BENCHMARK(BM_LightYardstick15YearA)->Unit(benchmark::kMillisecond);
 
 }  // namespace
