@@ -18,6 +18,7 @@
 #include "environment/leaf_light.hpp"
 #include "environment/light_model.hpp"
 #include "environment/points_file.hpp"
+#include "environment/radiation_file.hpp"
 #include "environment/scene_file.hpp"
 #include "fspm/atomic_file.hpp"
 #include "fspm/elapsed.hpp"
@@ -39,6 +40,7 @@ struct LightOptions {
   double elevation_m = 0.0, utc_offset_h = 0.0;
   std::string date, hours = "0:24", diffuse = "overcast";
   std::optional<double> global_W_m2;
+  std::string global_csv;
   double transmittance = 0.75;
 };
 
@@ -55,6 +57,11 @@ std::optional<environment::RealSky> real_sky(const LightOptions& o) {
   environment::parse_hours(o.hours, sky);
   sky.diffuse = environment::diffuse_sky_from_name(o.diffuse);
   sky.transmittance = o.transmittance;
+  if (o.global_W_m2 && !o.global_csv.empty()) {
+    throw ValueError("--global-radiation and --global-radiation-csv exclude each other");
+  }
+  if (!o.global_csv.empty())
+    sky.hourly_global_W_m2 = environment::read_hourly_global_csv(o.global_csv);
   if (o.global_W_m2) {
     if (*o.global_W_m2 < 0.0) throw ValueError("--global-radiation must be >= 0 W m-2");
     sky.global_W_m2 = *o.global_W_m2;
@@ -271,6 +278,9 @@ void add_environment_commands(CLI::App& app) {
   l->add_option("--global-radiation", light->global_W_m2,
                 "Real sky: global radiation on a horizontal plane (W m-2) held while the sun is "
                 "up, split by Spitters et al. 1986 (default: the clear sky of the site and date)");
+  l->add_option("--global-radiation-csv", light->global_csv,
+                "Real sky: measured hourly global radiation, CSV hour,global_W_m2 (local hours "
+                "0-23), split by Spitters et al. 1986");
   l->add_option("--transmittance", light->transmittance,
                 "Real sky: clear-sky atmospheric transmittance (default 0.75)");
   l->callback([light] { run_light(*light); });

@@ -67,6 +67,10 @@ void validate(const RealSky& sky) {
                      std::to_string(sky.transmittance));
   }
   if (!std::isfinite(sky.global_W_m2)) throw ValueError("global radiation must be finite");
+  if (!sky.hourly_global_W_m2.empty() && sky.hourly_global_W_m2.size() != 24) {
+    throw ValueError("hourly global radiation needs 24 values (hours 0-23), got " +
+                     std::to_string(sky.hourly_global_W_m2.size()));
+  }
   solar_position(sky.site, sky.date, 12.0);  // validates the site and the date
 }
 
@@ -84,10 +88,15 @@ std::vector<SkyStep> sky_steps(const RealSky& sky) {
     s.sun = sun.direction();
     s.sun_elevation_deg = sun.elevation_deg();
     if (s.sun_elevation_deg > 0.0) {
-      const double global = sky.global_W_m2 >= 0.0
-                                ? sky.global_W_m2
-                                : clear_sky_global_W_m2(s.sun_elevation_deg, doy,
-                                                        sky.site.elevation_m, sky.transmittance);
+      double global = 0.0;
+      if (!sky.hourly_global_W_m2.empty()) {
+        global = sky.hourly_global_W_m2[std::clamp(static_cast<int>(std::floor(s.hour)), 0, 23)];
+      } else if (sky.global_W_m2 >= 0.0) {
+        global = sky.global_W_m2;
+      } else {
+        global = clear_sky_global_W_m2(s.sun_elevation_deg, doy, sky.site.elevation_m,
+                                       sky.transmittance);
+      }
       s.radiation = split_global(global, s.sun_elevation_deg, doy);
     }
     steps.push_back(s);

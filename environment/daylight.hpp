@@ -34,6 +34,9 @@ struct RealSky {
   // Global radiation on a horizontal plane (W m-2) held over the hours while the sun is up,
   // split by Spitters et al. (1986); negative: the clear sky of the site and date.
   double global_W_m2 = -1.0;
+  // Measured hourly global radiation (W m-2, index = local hour 0-23, radiation_file.hpp); when
+  // given it replaces global_W_m2 and the clear sky, each step taking its hour's value.
+  std::vector<double> hourly_global_W_m2;
 };
 
 // "YYYY-MM-DD"; "FROM:TO" hours (local clock time, e.g. "6:18" or "5.5:20.25") into sky; a

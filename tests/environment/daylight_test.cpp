@@ -4,8 +4,10 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
+#include "environment/radiation_file.hpp"
 #include "fspm/error.hpp"
 
 namespace fspm::environment {
@@ -95,6 +97,33 @@ TEST(Daylight, OpenPointUnderAConstantSky) {
   }
   EXPECT_NEAR(daylight_at(open, sky, points)[0].daily_par_mol_m2, expected, 1e-9);
   EXPECT_GT(expected, 15.0);  // a clear June day at 45 N: about 50 mol m-2 over 24 h
+}
+
+// Measured hourly global radiation: 500 W m-2 in the hours 8-15 and none otherwise is the held
+// 500 W m-2 from 8 to 16 h; bad files name the line.
+TEST(Daylight, HourlyGlobalRadiationFromACsv) {
+  std::string csv = "# a sunny morning\nhour,global_W_m2\n";
+  for (int h = 0; h < 24; ++h) {
+    csv += std::to_string(h) + "," + (h >= 8 && h < 16 ? "500" : "0") + "\n";
+  }
+  RealSky sky = summer_day();
+  sky.first_hour = 0.0;
+  sky.last_hour = 24.0;
+  sky.hourly_global_W_m2 = parse_hourly_global_csv(csv, "day.csv");
+  const CanopyLight open(Scene{}, {});
+  const std::vector<Eigen::Vector3d> p{{0, 0, 0}};
+  EXPECT_NEAR(daylight_at(open, sky, p)[0].daily_par_mol_m2, 500.0 * 0.5 * 4.57 * 8 * 3600 * 1e-6,
+              1e-9);
+  try {
+    parse_hourly_global_csv("hour,global_W_m2\n3,100\n3,200\n", "day.csv");
+    FAIL() << "a repeated hour was accepted";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 3);
+    EXPECT_NE(std::string(e.what()).find("day.csv"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(parse_hourly_global_csv("hour,global_W_m2\n24,100\n"), ParseError);
+  EXPECT_THROW(parse_hourly_global_csv("hour,global_W_m2\n5,-1\n"), ParseError);
+  EXPECT_THROW(parse_hourly_global_csv("hour,W\n5,1\n"), ParseError);
 }
 
 // Diffuse light alone (Sg / S0 < 0.22) under an opaque sphere at the zenith of a CIE overcast
