@@ -38,7 +38,7 @@ struct LightOptions {
   // A real sky (all optional; --latitude, --longitude and --date switch it on).
   std::optional<double> latitude, longitude;
   double elevation_m = 0.0, utc_offset_h = 0.0;
-  std::string date, hours = "0:24", diffuse = "overcast";
+  std::string date, hours = "0:24", diffuse = "overcast", split = "spitters";
   std::optional<double> global_W_m2;
   std::string global_csv;
   double transmittance = 0.75;
@@ -56,6 +56,7 @@ std::optional<environment::RealSky> real_sky(const LightOptions& o) {
   sky.date = environment::parse_date(o.date);
   environment::parse_hours(o.hours, sky);
   sky.diffuse = environment::diffuse_sky_from_name(o.diffuse);
+  sky.split = environment::diffuse_split_from_name(o.split);
   sky.transmittance = o.transmittance;
   if (o.global_W_m2 && !o.global_csv.empty()) {
     throw ValueError("--global-radiation and --global-radiation-csv exclude each other");
@@ -277,10 +278,13 @@ void add_environment_commands(CLI::App& app) {
                 "(CIE standard clear) or uniform");
   l->add_option("--global-radiation", light->global_W_m2,
                 "Real sky: global radiation on a horizontal plane (W m-2) held while the sun is "
-                "up, split by Spitters et al. 1986 (default: the clear sky of the site and date)");
+                "up (default: the clear sky of the site and date)");
   l->add_option("--global-radiation-csv", light->global_csv,
                 "Real sky: measured hourly global radiation, CSV hour,global_W_m2 (local hours "
-                "0-23), split by Spitters et al. 1986");
+                "0-23)");
+  l->add_option("--split", light->split,
+                "Real sky: direct/diffuse split of the global radiation, spitters (Spitters et al. "
+                "1986, default) or erbs (Erbs et al. 1982)");
   l->add_option("--transmittance", light->transmittance,
                 "Real sky: clear-sky atmospheric transmittance (default 0.75)");
   l->callback([light] { run_light(*light); });

@@ -97,7 +97,7 @@ std::vector<SkyStep> sky_steps(const RealSky& sky) {
         global = clear_sky_global_W_m2(s.sun_elevation_deg, doy, sky.site.elevation_m,
                                        sky.transmittance);
       }
-      s.radiation = split_global(global, s.sun_elevation_deg, doy);
+      s.radiation = split_global(global, s.sun_elevation_deg, doy, sky.split);
     }
     steps.push_back(s);
   }

@@ -30,6 +30,7 @@ struct RealSky {
   double last_hour = 24.0;
   double step_h = 0.25;  // integration step (midpoint rule)
   DiffuseSky diffuse = DiffuseSky::kStandardOvercast;
+  DiffuseSplit split = DiffuseSplit::kSpitters;  // of the global radiation into direct and diffuse
   double transmittance = 0.75;  // clear-sky atmospheric transmittance (Campbell and Norman)
   // Global radiation on a horizontal plane (W m-2) held over the hours while the sun is up,
   // split by Spitters et al. (1986); negative: the clear sky of the site and date.

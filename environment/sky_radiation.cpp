@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
+
+#include "fspm/error.hpp"
 
 namespace fspm::environment {
 
@@ -41,9 +44,31 @@ double spitters_diffuse_fraction(double global_W_m2, double sun_elevation_deg, i
   return r;
 }
 
-HorizontalRadiation split_global(double global_W_m2, double sun_elevation_deg, int day_of_year) {
-  const double f =
-      std::clamp(spitters_diffuse_fraction(global_W_m2, sun_elevation_deg, day_of_year), 0.0, 1.0);
+double erbs_diffuse_fraction(double global_W_m2, double sun_elevation_deg, int day_of_year) {
+  const double s0 = extraterrestrial_horizontal_W_m2(sun_elevation_deg, day_of_year);
+  if (s0 <= 0.0 || global_W_m2 <= 0.0) return 1.0;
+  const double kt = global_W_m2 / s0;
+  if (kt <= 0.22) return 1.0 - 0.09 * kt;
+  if (kt <= 0.80) {
+    return 0.9511 - 0.1604 * kt + 4.388 * kt * kt - 16.638 * kt * kt * kt +
+           12.336 * kt * kt * kt * kt;
+  }
+  return 0.165;
+}
+
+DiffuseSplit diffuse_split_from_name(std::string_view name) {
+  if (name == "spitters") return DiffuseSplit::kSpitters;
+  if (name == "erbs") return DiffuseSplit::kErbs;
+  throw ValueError("unknown diffuse split \"" + std::string(name) +
+                   "\", expected spitters or erbs");
+}
+
+HorizontalRadiation split_global(double global_W_m2, double sun_elevation_deg, int day_of_year,
+                                 DiffuseSplit split) {
+  const double raw = split == DiffuseSplit::kErbs
+                         ? erbs_diffuse_fraction(global_W_m2, sun_elevation_deg, day_of_year)
+                         : spitters_diffuse_fraction(global_W_m2, sun_elevation_deg, day_of_year);
+  const double f = std::clamp(raw, 0.0, 1.0);
   HorizontalRadiation out;
   out.diffuse_W_m2 = f * global_W_m2;
   out.direct_W_m2 = global_W_m2 - out.diffuse_W_m2;

@@ -3,6 +3,7 @@
 // site's elevation and the sun, its split into direct and diffuse light, PAR in photon units, and
 // the distribution of the diffuse light over the sky (CIE standard skies).
 #include <Eigen/Core>
+#include <string_view>
 
 namespace fspm::environment {
 
@@ -33,8 +34,17 @@ double clear_sky_global_W_m2(double sun_elevation_deg, int day_of_year, double e
 // Diffuse share of hourly global radiation from the atmospheric transmission Sg / S0 and the sun's
 // elevation (Spitters et al. 1986, eq. 20). Global radiation of a sun below the horizon is diffuse.
 double spitters_diffuse_fraction(double global_W_m2, double sun_elevation_deg, int day_of_year);
-// Global radiation split by spitters_diffuse_fraction.
-HorizontalRadiation split_global(double global_W_m2, double sun_elevation_deg, int day_of_year);
+// Diffuse share of hourly global radiation from the clearness index kt = Sg / S0 (Erbs et al.
+// 1982): 1 - 0.09 kt up to 0.22, a quartic in kt up to 0.80, 0.165 above.
+double erbs_diffuse_fraction(double global_W_m2, double sun_elevation_deg, int day_of_year);
+
+enum class DiffuseSplit { kSpitters, kErbs };
+// Throws ValueError for a name other than "spitters" or "erbs".
+DiffuseSplit diffuse_split_from_name(std::string_view name);
+
+// Global radiation split into direct and diffuse (Spitters et al. 1986 unless told).
+HorizontalRadiation split_global(double global_W_m2, double sun_elevation_deg, int day_of_year,
+                                 DiffuseSplit split = DiffuseSplit::kSpitters);
 
 // Photosynthetic photon flux density (umol m-2 s-1) of a global shortwave irradiance (W m-2).
 inline double par_umol_m2_s(double global_W_m2) {

@@ -66,6 +66,23 @@ TEST(SkyRadiation, SpittersSplit) {
   EXPECT_GT(clear_sky_global_W_m2(68.0, doy, 2000.0), g0);
 }
 
+// Erbs et al. (1982): the three pieces meet at kt = 0.22 and 0.80 (the published coefficients
+// are rounded: within 1e-3), and every split sums to the global radiation.
+TEST(SkyRadiation, ErbsSplit) {
+  const int doy = 172;
+  const double s0 = extraterrestrial_horizontal_W_m2(50.0, doy);
+  const auto f = [&](double kt) { return erbs_diffuse_fraction(kt * s0, 50.0, doy); };
+  EXPECT_NEAR(f(0.22), f(0.22 + 1e-9), 1e-3);
+  EXPECT_NEAR(f(0.80), f(0.80 + 1e-9), 1e-3);
+  EXPECT_NEAR(f(0.1), 1.0 - 0.009, 1e-12);
+  EXPECT_DOUBLE_EQ(f(0.9), 0.165);
+  EXPECT_GT(f(0.3), f(0.6));  // clearer hours are less diffuse
+  const HorizontalRadiation r = split_global(0.6 * s0, 50.0, doy, DiffuseSplit::kErbs);
+  EXPECT_NEAR(r.direct_W_m2 + r.diffuse_W_m2, 0.6 * s0, 1e-9);
+  EXPECT_NEAR(r.diffuse_W_m2, f(0.6) * 0.6 * s0, 1e-9);
+  EXPECT_THROW(diffuse_split_from_name("liu"), ValueError);
+}
+
 RealSky summer_day() {
   RealSky sky;
   sky.site = {45.0, 7.0, 300.0, 1.0};
