@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <string>
 
 #include "tests/cli/run_command.hpp"
 
@@ -90,6 +91,20 @@ TEST(EnvironmentCli, LightUnderARealSkyGivesPar) {
   const auto bad = run_fspm(base);
   EXPECT_EQ(bad.exit_code, 1);
   EXPECT_NE(bad.err.find("--date"), std::string::npos) << bad.err;
+  // Measured hours: 400 W m-2 from 9 to 15 h in a CSV is the held value above, with either split.
+  std::string hours = "hour,global_W_m2\n";
+  for (int h = 9; h < 15; ++h) hours += std::to_string(h) + ",400\n";
+  write_text(dir / "day.csv", hours);
+  const auto m = run_fspm(base + " --utc-offset 1 --date 2024-06-21 --split erbs --json " +
+                          "--global-radiation-csv " + (dir / "day.csv").string());
+  ASSERT_EQ(m.exit_code, 0) << m.err;
+  EXPECT_NEAR(nlohmann::json::parse(m.out)["samples"][0]["daily_par_mol_m2"].get<double>(),
+              par * 6 * 3600 * 1e-6, 1e-9);
+  write_text(dir / "bad.csv", "hour,global_W_m2\n25,1\n");
+  const auto b =
+      run_fspm(base + " --date 2024-06-21 --global-radiation-csv " + (dir / "bad.csv").string());
+  EXPECT_EQ(b.exit_code, 1);
+  EXPECT_NE(b.err.find("bad.csv:2"), std::string::npos) << b.err;
 }
 
 // A grown tree's leaf clusters under a held global radiation of 400 W m-2 from 9 to 15 h: one row
