@@ -84,7 +84,14 @@ std::vector<Eigen::Vector3d> read_points_csv(const std::string& path) {
 
 void write_light_csv(std::ostream& out, std::span<const Eigen::Vector3d> points,
                      std::span<const LightSample> samples) {
-  out << "x,y,z,light,dx,dy,dz\n";
+  write_light_csv(out, points, samples, {});
+}
+
+void write_light_csv(std::ostream& out, std::span<const Eigen::Vector3d> points,
+                     std::span<const LightSample> samples,
+                     std::span<const DaylightSample> daylight) {
+  out << (daylight.empty() ? "x,y,z,light,dx,dy,dz\n"
+                           : "x,y,z,light,dx,dy,dz,par_umol_m2_s,daily_par_mol_m2\n");
   char buf[64];
   auto put = [&](double v, char sep) {
     const auto r = std::to_chars(buf, buf + sizeof buf, v);
@@ -92,13 +99,18 @@ void write_light_csv(std::ostream& out, std::span<const Eigen::Vector3d> points,
     out.put(sep);
   };
   for (std::size_t i = 0; i < points.size() && i < samples.size(); ++i) {
+    const bool par = i < daylight.size();
     put(points[i].x(), ',');
     put(points[i].y(), ',');
     put(points[i].z(), ',');
     put(samples[i].light, ',');
     put(samples[i].direction.x(), ',');
     put(samples[i].direction.y(), ',');
-    put(samples[i].direction.z(), '\n');
+    put(samples[i].direction.z(), par ? ',' : '\n');
+    if (par) {
+      put(daylight[i].par_umol_m2_s, ',');
+      put(daylight[i].daily_par_mol_m2, '\n');
+    }
   }
 }
 
