@@ -5,17 +5,10 @@
 
 #include "fspm/error.hpp"
 #include "fspm/input_file.hpp"
+#include "fspm/trim.hpp"
 
 namespace fspm::environment {
 namespace {
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) {
-    s.remove_suffix(1);
-  }
-  return s;
-}
 
 double number(std::string_view f, const char* what, const std::string& file, int line) {
   double v = 0.0;

@@ -7,6 +7,7 @@
 
 #include "fspm/error.hpp"
 #include "fspm/number_text.hpp"
+#include "fspm/trim.hpp"
 
 namespace fspm {
 namespace {
@@ -15,15 +16,8 @@ namespace {
 // typing slip (E1<<E1000000000) is an error rather than a billion entities.
 constexpr long kMaxRange = 1'000'000;
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 bool is_letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
-  while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
-  return s;
-}
 
 void split_tabs(std::string_view line, std::vector<std::string_view>& cells) {
   cells.clear();
