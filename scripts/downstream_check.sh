@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Installs a build of fspm into a scratch prefix and builds examples/downstream against it from
+# outside the source tree, once with find_package(fspm) and once with pkg-config, then runs both
+# and checks their numbers against values known without fspm. Exits non-zero on any failure.
+#   scripts/downstream_check.sh [BUILD_DIR]     (default: build)
+# With FSPM_PREFIX set, uses that installed tree instead of installing BUILD_DIR (the package
+# check points it at an unpacked .deb).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+build=${1:-build}
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+
+if [ -n "${FSPM_PREFIX:-}" ]; then
+  prefix=$FSPM_PREFIX
+else
+  prefix=$scratch/prefix
+  cmake --install "$build" --prefix "$prefix" > "$scratch/install.log" \
+    || { cat "$scratch/install.log"; exit 1; }
+fi
+# The example is copied out of the source tree so nothing can be found relative to it.
+cp -r examples/downstream "$scratch/src"
+cmake -S "$scratch/src" -B "$scratch/build" -DCMAKE_PREFIX_PATH="$prefix" > "$scratch/configure.log" 2>&1 \
+  || { cat "$scratch/configure.log"; exit 1; }
+grep "^-- fspm " "$scratch/configure.log"
+cmake --build "$scratch/build" > "$scratch/build.log" 2>&1 || { cat "$scratch/build.log"; exit 1; }
+
+libdir=$(dirname "$(find "$prefix" -name fspm.pc -path '*/pkgconfig/*' | head -n 1)")
+PKG_CONFIG_PATH="$libdir" ${CXX:-c++} -O1 "$scratch/src/main.cpp" -o "$scratch/by_pkg_config" \
+  $(PKG_CONFIG_PATH="$libdir" pkg-config --cflags --libs fspm)
+
+tree=$root/examples/trees/small.nwk
+plant=$root/examples/greenlab/leeuwenberg.toml
+for program in "$scratch/build/fspm_downstream" "$scratch/by_pkg_config"; do
+  "$program" "$tree" "$plant" > "$scratch/out.txt"
+  # small.nwk is ((1,2)3,(4,(5,6)7)8)9: nine nodes. Leeuwenberg's plant over 6 cycles: one growth
+  # unit of 4 metamers, each unit bearing 3 the next cycle: 4 (1 + 3 + ... + 3^5) = 1456. A tree's
+  # distance to itself is 0.
+  for expected in "read_nodes 9" "greenlab_metamers 1456" "distance_read_read 0"; do
+    grep -qx "$expected" "$scratch/out.txt" \
+      || { cat "$scratch/out.txt"; echo "downstream: expected '$expected' from $program"; exit 1; }
+  done
+  grep -q "^distance_grown_greenlab [0-9]" "$scratch/out.txt" \
+    || { cat "$scratch/out.txt"; echo "downstream: no distance from $program"; exit 1; }
+done
+cat "$scratch/out.txt"
+echo "downstream: find_package(fspm) and pkg-config builds run against $prefix"
