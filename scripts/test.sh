@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds everything and runs every test: formatting, the main build
-# (warnings as errors) with CTest, the installed C++ package used by examples/downstream, a clang AddressSanitizer + UndefinedBehaviorSanitizer build of
+# (warnings as errors) with CTest, the installed C++ package used by examples/downstream, the Debian package unpacked and checked, a clang AddressSanitizer + UndefinedBehaviorSanitizer build of
 # the core libraries with their tests and brief fuzzing, the Python tests when present, and the HTML
 # report checked in headless Chromium.
 # Exits non-zero on any failure; the output ends with the CTest summary of the main build.
@@ -52,6 +52,11 @@ cmake --build build -j "$jobs"
 
 echo "== installed C++ package: examples/downstream built against it (find_package, pkg-config)"
 scripts/downstream_check.sh build
+
+echo "== Debian package (scripts/package.sh), unpacked and checked (scripts/package_check.sh)"
+scripts/package.sh build > build/package.log 2>&1 || { cat build/package.log; exit 1; }
+tail -n 1 build/package.log
+scripts/package_check.sh "$(tail -n 1 build/package.log)"
 
 if [ -f build/python/fspm/__init__.py ]; then
   export PYTHONPATH="$root/build/python"
