@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds everything and runs every test: formatting, the main build
-# (warnings as errors) with CTest, the installed C++ package used by examples/downstream, the Debian package unpacked and checked, a clang AddressSanitizer + UndefinedBehaviorSanitizer build of
-# the core libraries with their tests and brief fuzzing, the Python tests when present, and the HTML
-# report checked in headless Chromium.
+# (warnings as errors) with CTest, the installed C++ package used by examples/downstream, the
+# Debian package unpacked and checked, a clang AddressSanitizer + UndefinedBehaviorSanitizer build
+# of the core libraries with their tests and brief fuzzing, the Python tests when present, and the
+# HTML report checked in headless Chromium.
 # Exits non-zero on any failure; the output ends with the CTest summary of the main build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
