@@ -19,6 +19,15 @@ else
   cmake --install "$build" --prefix "$prefix" > "$scratch/install.log" \
     || { cat "$scratch/install.log"; exit 1; }
 fi
+# Every installed header compiles from the installed tree alone (with the include flags of the
+# public dependencies): no public header includes an internal or uninstalled one.
+headers=$(find "$prefix" -path '*/include/fspm' -type d | head -n 1)
+(cd "$headers" && find . -name '*.hpp' | sed 's|^\./||' | sort | sed 's/.*/#include "&"/') > "$scratch/headers.cpp"
+echo 'int main() { return 0; }' >> "$scratch/headers.cpp"
+${CXX:-c++} -std=c++20 -fsyntax-only -I"$headers" $(pkg-config --cflags eigen3) "$scratch/headers.cpp" \
+  || { echo "downstream: the installed headers do not compile on their own"; exit 1; }
+echo "downstream: $(($(wc -l < "$scratch/headers.cpp") - 1)) installed headers compile from $headers"
+
 # The example is copied out of the source tree so nothing can be found relative to it.
 cp -r examples/downstream "$scratch/src"
 cmake -S "$scratch/src" -B "$scratch/build" -DCMAKE_PREFIX_PATH="$prefix" > "$scratch/configure.log" 2>&1 \
