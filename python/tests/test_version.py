@@ -26,3 +26,8 @@ def test_version_is_what_the_command_line_prints():
         pytest.skip(f"no command line beside the module ({exe})")
     out = subprocess.run([str(exe), "--version"], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == f"fspm {fspm.__version__}"
+
+
+def test_citation_names_the_project_version():
+    lines = (ROOT / "CITATION.cff").read_text().splitlines()
+    assert f"version: {project_version()}" in lines
