@@ -1,7 +1,12 @@
 include(GNUInstallDirs)
+if(FSPM_SHARED_LIBS)
+  # Installed executables and libraries find the fspm libraries beside them, wherever the tree is
+  # installed or unpacked.
+  set(CMAKE_INSTALL_RPATH "$ORIGIN/../${CMAKE_INSTALL_LIBDIR}")
+endif()
 
 # fspm_add_module(NAME DEPS target... PRIVATE_DEPS target... INTERNAL_HEADERS file...): one
-# library per module folder, built from every .cpp in it, with headers beside the sources and
+# library per module folder (static, or shared with FSPM_SHARED_LIBS), built from every .cpp in it, with headers beside the sources and
 # included from the repository root (#include "lsystem/parser.hpp"). The alias is fspm::NAME.
 # The library and its headers are installed (headers under include/fspm/<folder>/, so the same
 # #include lines work with -I<prefix>/include/fspm), except the INTERNAL_HEADERS: implementation
@@ -16,7 +21,19 @@ function(fspm_add_module name)
     set(sources ${CMAKE_CURRENT_BINARY_DIR}/fspm_${name}_empty.cpp)
     file(WRITE ${sources} "// empty module\n")
   endif()
-  add_library(fspm_${name} STATIC ${sources})
+  if(FSPM_SHARED_LIBS)
+    # Shared, with the SONAME of the minor version (0.y: a new minor version may break the ABI).
+    # No fspm_NAME_EXPORTS define (DEFINE_SYMBOL), so the objects are those of the static build and
+    # come from ccache; --no-undefined makes a dependency missing from DEPS a link error.
+    add_library(fspm_${name} SHARED ${sources})
+    set_target_properties(fspm_${name} PROPERTIES
+                          VERSION ${PROJECT_VERSION}
+                          SOVERSION ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR}
+                          DEFINE_SYMBOL "")
+    target_link_options(fspm_${name} PRIVATE -Wl,--no-undefined)
+  else()
+    add_library(fspm_${name} STATIC ${sources})
+  endif()
   target_include_directories(fspm_${name} PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
                                                  $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/fspm>)
   target_link_libraries(fspm_${name} PUBLIC ${ARG_DEPS}

@@ -42,6 +42,11 @@ set(FSPM_PYTHON_INSTALL_DIR lib/python3/dist-packages CACHE STRING
     "Where the Python module fspm is installed, relative to the prefix")
 if(TARGET _fspm)
   install(TARGETS _fspm LIBRARY DESTINATION ${FSPM_PYTHON_INSTALL_DIR}/fspm COMPONENT python)
+  if(FSPM_SHARED_LIBS)
+    file(RELATIVE_PATH python_to_lib /prefix/${FSPM_PYTHON_INSTALL_DIR}/fspm
+         /prefix/${CMAKE_INSTALL_LIBDIR})
+    set_target_properties(_fspm PROPERTIES INSTALL_RPATH "$ORIGIN/${python_to_lib}")
+  endif()
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/python/fspm/ DESTINATION ${FSPM_PYTHON_INSTALL_DIR}/fspm
           COMPONENT python FILES_MATCHING PATTERN "*.py" PATTERN "__pycache__" EXCLUDE)
 endif()
@@ -63,6 +68,12 @@ set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+if(FSPM_SHARED_LIBS)
+  # The package's own libraries: a shlibs file for packages built against them, and
+  # dpkg-shlibdeps finds them in the package.
+  set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS ON)
+  set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS ${CPACK_PACKAGING_INSTALL_PREFIX}/${CMAKE_INSTALL_LIBDIR})
+endif()
 # The Python module is built for one Python minor version and imports numpy.
 if(TARGET _fspm)
   math(EXPR python_next_minor "${Python_VERSION_MINOR} + 1")

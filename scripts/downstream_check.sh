@@ -36,8 +36,9 @@ grep "^-- fspm " "$scratch/configure.log"
 cmake --build "$scratch/build" > "$scratch/build.log" 2>&1 || { cat "$scratch/build.log"; exit 1; }
 
 libdir=$(dirname "$(find "$prefix" -name fspm.pc -path '*/pkgconfig/*' | head -n 1)")
+# The run path finds shared fspm libraries (a package build) outside the system's folders.
 PKG_CONFIG_PATH="$libdir" ${CXX:-c++} -O1 "$scratch/src/main.cpp" -o "$scratch/by_pkg_config" \
-  $(PKG_CONFIG_PATH="$libdir" pkg-config --cflags --libs fspm)
+  $(PKG_CONFIG_PATH="$libdir" pkg-config --cflags --libs fspm) -Wl,-rpath,"$(dirname "$libdir")"
 
 tree=$root/examples/trees/small.nwk
 plant=$root/examples/greenlab/leeuwenberg.toml

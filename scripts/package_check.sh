@@ -5,10 +5,10 @@
 # --version gives the package's version, fspm-full runs, `import fspm` works from the unpacked
 # dist-packages, and examples/downstream builds against the unpacked C++ package and gives the
 # known numbers (scripts/downstream_check.sh). Exits non-zero on any failure.
-#   scripts/package_check.sh [DEB]     (default: the one in build/packages)
+#   scripts/package_check.sh [DEB]     (default: the one in build-pkg/packages)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-deb=${1:-$(ls build/packages/fspm_*_amd64.deb | head -n 1)}
+deb=${1:-$(ls build-pkg/packages/fspm_*_amd64.deb | head -n 1)}
 deb=$(realpath "$deb")
 version=$(dpkg-deb --field "$deb" Version)
 scratch=$(mktemp -d)

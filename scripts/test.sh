@@ -54,10 +54,10 @@ cmake --build build -j "$jobs"
 echo "== installed C++ package: examples/downstream built against it (find_package, pkg-config)"
 scripts/downstream_check.sh build
 
-echo "== Debian package (scripts/package.sh), unpacked and checked (scripts/package_check.sh)"
-scripts/package.sh build > build/package.log 2>&1 || { cat build/package.log; exit 1; }
-tail -n 1 build/package.log
-scripts/package_check.sh "$(tail -n 1 build/package.log)"
+echo "== Debian package (scripts/package.sh: shared libraries, in build-pkg), unpacked and checked"
+scripts/package.sh build-pkg > build-pkg.package.log 2>&1 || { cat build-pkg.package.log; exit 1; }
+tail -n 1 build-pkg.package.log
+scripts/package_check.sh "$(tail -n 1 build-pkg.package.log)"
 
 if [ -f build/python/fspm/__init__.py ]; then
   export PYTHONPATH="$root/build/python"
