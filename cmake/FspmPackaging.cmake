@@ -37,8 +37,14 @@ configure_file(${PROJECT_SOURCE_DIR}/cmake/fspm.pc.in ${PROJECT_BINARY_DIR}/fspm
 install(FILES ${PROJECT_BINARY_DIR}/fspm.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
         COMPONENT dev)
 
-# The Python module, where Debian's python3 looks for packages of the system's prefix.
-set(FSPM_PYTHON_INSTALL_DIR lib/python3/dist-packages CACHE STRING
+# The Python module where Debian's python3 looks for it: lib/python3/dist-packages under /usr (the
+# Debian package), lib/python3.X/dist-packages under another prefix (/usr/local by default).
+if(CMAKE_INSTALL_PREFIX STREQUAL "/usr" OR NOT Python_VERSION_MINOR)
+  set(python_dir lib/python3/dist-packages)
+else()
+  set(python_dir lib/python${Python_VERSION_MAJOR}.${Python_VERSION_MINOR}/dist-packages)
+endif()
+set(FSPM_PYTHON_INSTALL_DIR ${python_dir} CACHE STRING
     "Where the Python module fspm is installed, relative to the prefix")
 if(TARGET _fspm)
   install(TARGETS _fspm LIBRARY DESTINATION ${FSPM_PYTHON_INSTALL_DIR}/fspm COMPONENT python)

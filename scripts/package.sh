@@ -14,7 +14,7 @@ export CCACHE_BASEDIR="$(pwd)" CCACHE_NOHASHDIR=true
 build=${1:-build-pkg}
 
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DFSPM_SHARED_LIBS=ON \
-  -DFSPM_BUILD_TESTS=OFF -DFSPM_BUILD_BENCH=OFF > "$build.log" 2>&1 || { cat "$build.log"; exit 1; }
+  -DFSPM_PYTHON_INSTALL_DIR=lib/python3/dist-packages -DFSPM_BUILD_TESTS=OFF -DFSPM_BUILD_BENCH=OFF > "$build.log" 2>&1 || { cat "$build.log"; exit 1; }
 cmake --build "$build" -j "$(nproc)"
 rm -f "$build"/packages/fspm_*.deb
 (cd "$build" && cpack -G DEB > cpack.log 2>&1) || { cat "$build/cpack.log"; exit 1; }
