@@ -30,6 +30,14 @@ install(FILES ${PROJECT_BINARY_DIR}/fspmConfig.cmake ${PROJECT_BINARY_DIR}/fspmC
 
 # pkg-config: the model libraries only (core, lsystem, greenlab, environment, stages); the others
 # link VTK, CGAL and assimp, which have no pkg-config files, and are used through find_package.
+# Static libraries need what they link privately too; shared ones only their headers' packages.
+if(FSPM_SHARED_LIBS)
+  set(FSPM_PC_REQUIRES "eigen3 nlohmann_json tomlplusplus")
+  set(FSPM_PC_EXTRA_LIBS "")
+else()
+  set(FSPM_PC_REQUIRES "eigen3 nlohmann_json tomlplusplus tbb libhwy libglog")
+  set(FSPM_PC_EXTRA_LIBS " -lceres")
+endif()
 # The prefix is found from the file's own place, so the file works wherever the tree is installed.
 file(RELATIVE_PATH FSPM_PC_TO_PREFIX /prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig /prefix)
 string(REGEX REPLACE "/$" "" FSPM_PC_TO_PREFIX "${FSPM_PC_TO_PREFIX}")
