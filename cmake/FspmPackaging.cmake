@@ -94,9 +94,13 @@ if(TARGET _fspm)
   set(CPACK_DEBIAN_PACKAGE_DEPENDS
       "python3 (>= ${Python_VERSION_MAJOR}.${Python_VERSION_MINOR}), python3 (<< ${Python_VERSION_MAJOR}.${python_next_minor}), python3-numpy")
 endif()
-# Building against the installed C++ package needs the headers of its dependencies.
+# Building against the installed C++ package needs a compiler and the headers its public headers
+# include (static libraries: also the packages they link).
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS
-    "cmake, g++, libeigen3-dev, libboost-graph-dev, nlohmann-json3-dev, libtomlplusplus-dev, libceres-dev, libtbb-dev, libhwy-dev")
+    "g++, cmake, pkg-config, libeigen3-dev, libboost-dev, nlohmann-json3-dev, libtomlplusplus-dev")
+if(NOT FSPM_SHARED_LIBS)
+  string(APPEND CPACK_DEBIAN_PACKAGE_SUGGESTS ", libceres-dev, libtbb-dev, libhwy-dev")
+endif()
 set(CPACK_DEBIAN_PACKAGE_DESCRIPTION
     "${PROJECT_DESCRIPTION}\n The fspm and fspm-full commands, the Python module fspm, the C++\n libraries with headers and CMake package (find_package(fspm)), docs and examples.")
 set(CPACK_OUTPUT_FILE_PREFIX ${PROJECT_BINARY_DIR}/packages)
