@@ -24,6 +24,7 @@ fi
 headers=$(find "$prefix" -path '*/include/fspm' -type d | head -n 1)
 (cd "$headers" && find . -name '*.hpp' | sed 's|^\./||' | sort | sed 's/.*/#include "&"/') > "$scratch/headers.cpp"
 echo 'int main() { return 0; }' >> "$scratch/headers.cpp"
+# shellcheck disable=SC2046  # pkg-config's flags are split into words on purpose
 ${CXX:-c++} -std=c++20 -fsyntax-only -I"$headers" $(pkg-config --cflags eigen3) "$scratch/headers.cpp" \
   || { echo "downstream: the installed headers do not compile on their own"; exit 1; }
 echo "downstream: $(($(wc -l < "$scratch/headers.cpp") - 1)) installed headers compile from $headers"
@@ -37,6 +38,7 @@ cmake --build "$scratch/build" > "$scratch/build.log" 2>&1 || { cat "$scratch/bu
 
 libdir=$(dirname "$(find "$prefix" -name fspm.pc -path '*/pkgconfig/*' | head -n 1)")
 # The run path finds shared fspm libraries (a package build) outside the system's folders.
+# shellcheck disable=SC2046  # pkg-config's flags are split into words on purpose
 PKG_CONFIG_PATH="$libdir" ${CXX:-c++} -O1 "$scratch/src/main.cpp" -o "$scratch/by_pkg_config" \
   $(PKG_CONFIG_PATH="$libdir" pkg-config --cflags --libs fspm) -Wl,-rpath,"$(dirname "$libdir")"
 

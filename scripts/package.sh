@@ -10,7 +10,8 @@
 # Check it with scripts/package_check.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-export CCACHE_BASEDIR="$(pwd)" CCACHE_NOHASHDIR=true
+CCACHE_BASEDIR=$(pwd)
+export CCACHE_BASEDIR CCACHE_NOHASHDIR=true
 build=${1:-build-pkg}
 
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DFSPM_SHARED_LIBS=ON \
