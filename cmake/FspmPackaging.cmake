@@ -2,10 +2,12 @@
 # module, found with find_package(fspm)), a pkg-config file for the model libraries, the Python
 # module, docs and examples, and CPack's Debian package (scripts/package.sh).
 #
-# The modules are static libraries (position-independent): the executables and the Python module
-# carry the code they use, and a downstream program links what it needs. A static library's
-# private dependencies are part of its link interface, so fspmConfig.cmake finds every package
-# the requested modules link (Ceres, TBB, Highway, VTK, ...), not only those in their headers.
+# The modules are static libraries (position-independent) by default: the executables and the
+# Python module carry the code they use, and `pip install .` needs nothing beside the extension.
+# A static library's private dependencies are part of its link interface, so fspmConfig.cmake
+# finds every package the requested modules link (Ceres, TBB, Highway, VTK, ...). With
+# FSPM_SHARED_LIBS (the Debian package) they are shared, and only their public dependencies are
+# needed downstream.
 include(CMakePackageConfigHelpers)
 
 set(FSPM_CMAKE_INSTALL_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/fspm)
