@@ -87,6 +87,7 @@ nlohmann::json summary_json(const std::string& file, const TreeGraph& tree) {
     const auto inferred = tree.attribute("inferred");
     std::size_t positions = 0, radii = 0;
     for (double v : inferred) {
+      if (!(v >= 0.0 && v < 8.0)) continue;  // not the bits of an MTG import
       const auto bits = static_cast<unsigned>(v);
       positions += (bits & kInferredPosition) != 0;
       radii += (bits & kInferredRadius) != 0;

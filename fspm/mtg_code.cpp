@@ -341,6 +341,14 @@ class CodeReader {
     if (t.kind == '[') {
       stack_.push_back(vid_);
     } else if (t.kind == ']') {
+      if (stack_.empty()) {
+        // A '+' at the left edge opens no branch in OpenAlea's reading, so a second one there
+        // closes one that was never opened (its reader fails on it too).
+        fail(
+            "a branch ('+' in the first column) closes here that no line opened; write the "
+            "branch one column to the right of its bearer",
+            t.line);
+      }
       vid_ = stack_.back();
       stack_.pop_back();
       current_ = vid_;
@@ -383,7 +391,7 @@ class CodeReader {
       pending_ = '/';
     }
     last_scale_ = new_scale;
-    while (new_scale < scale_) {
+    while (new_scale < scale_ && current_ != Mtg::root()) {
       --scale_;
       current_ = mtg_.complex(current_);
     }
@@ -442,7 +450,7 @@ class CodeReader {
     }
     ++scale_;
     const MtgVertex component = add(current_, class_id, t);
-    if (vid_scale == scale_ && pending_ != '/') {
+    if (vid_scale == scale_ && pending_ != '/' && mtg_.scale(component) == vid_scale) {
       mtg_.set_parent(component, vid_, pending_ == '+' ? MtgEdge::kBranch : MtgEdge::kSuccessor);
       vid_ = component;
       current_ = component;
@@ -488,6 +496,12 @@ class CodeReader {
 
   // A new vertex; vid_before_ keeps the vertex that was the finest before it (its parent).
   MtgVertex add(MtgVertex complex, std::size_t class_id, const Token& t) {
+    if (complex == kNoMtgVertex || complex >= mtg_.size()) {
+      fail(
+          "no entity of the scale above to be a component of (the code climbs above the "
+          "plants)",
+          t);
+    }
     vid_before_ = vid_;
     const MtgVertex v = mtg_.add_component(complex, class_id, t.index, t.line);
     if (t.row != std::string_view::npos) set_features(v, t.row, t.line);

@@ -142,6 +142,11 @@ class HeaderReader {
           file_, line.number, 1);
     }
     if (symbol == "$") return;  // the scale-0 class every MTG has
+    if (scale == 0) {
+      throw ParseError(
+          "CLASSES: only $ is of scale 0; '" + std::string(symbol) + "' needs a scale of 1 or more",
+          file_, line.number, 1);
+    }
     if (mtg_.class_index(symbol)) {
       throw ParseError("CLASSES: symbol '" + std::string(symbol) + "' declared twice", file_,
                        line.number, 1);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <initializer_list>
 #include <limits>
 #include <map>
@@ -57,6 +58,13 @@ Roles feature_roles(const Mtg& mtg) {
   r.order = find(mtg, {"Order"});
   r.organ = find(mtg, {"Organ"});
   return r;
+}
+
+// A length for a message, in whole metres ("1e+300" beyond what a long holds).
+std::string metres_text(double m) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.0f", m);
+  return text;
 }
 
 bool has_geometry(const Mtg& mtg, const Roles& r, MtgVertex v) {
@@ -362,13 +370,13 @@ void TreeBuilder::warn_of_units(const std::vector<FramedEntity>& f) const {
     if (!(x.inferred & kInferredRadius)) rmax = std::max(rmax, x.radius_m);
   }
   if (o_.length_unit == LengthUnit::kMetre && zmax - zmin > kImplausibleHeightM) {
-    warn(file_ + ": the plant is " + std::to_string(static_cast<long>(zmax - zmin)) +
+    warn(file_ + ": the plant is " + metres_text(zmax - zmin) +
          " m tall when its lengths are read in metres; if they are centimetres or millimetres, "
          "give --length-unit cm (or mm)");
   }
   if (o_.diameter_unit.value_or(o_.length_unit) == LengthUnit::kMetre &&
       rmax > kImplausibleRadiusM) {
-    warn(file_ + ": a radius of " + std::to_string(static_cast<long>(rmax)) +
+    warn(file_ + ": a radius of " + metres_text(rmax) +
          " m when diameters are read in metres; if they are millimetres, give --diameter-unit mm");
   }
 }
