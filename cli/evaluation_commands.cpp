@@ -169,7 +169,7 @@ void run_ttest(const TTestOptions& o) {
   for (const char* key : {"t", "df", "p", "mean_a", "mean_b", "sd_a", "sd_b", "n_a", "n_b",
                           "estimate", "confidence_interval", "cohens_d"}) {
     if (j[key].is_null()) continue;
-    std::cout << "  " << key << ": " << j[key].dump() << '\n';
+    std::cout << "  " << key << ": " << human_text(j[key]) << '\n';
   }
 }
 
@@ -189,7 +189,7 @@ void run_mann_whitney(const MannWhitneyOptions& o) {
     return;
   }
   for (const char* key : {"u", "p", "exact", "n_a", "n_b"}) {
-    std::cout << key << ": " << j[key].dump() << '\n';
+    std::cout << key << ": " << human_text(j[key]) << '\n';
   }
 }
 
@@ -206,7 +206,7 @@ void run_describe(const DescribeOptions& o) {
     return;
   }
   for (const char* key : {"n", "mean", "sd", "confidence_interval"}) {
-    std::cout << key << ": " << j[key].dump() << '\n';
+    std::cout << key << ": " << human_text(j[key]) << '\n';
   }
 }
 
