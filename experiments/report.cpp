@@ -16,10 +16,7 @@ namespace {
 std::string number(double v) {
   if (!std::isfinite(v)) return "-";
   // Four significant digits are plenty in a table; the database keeps the exact values.
-  std::ostringstream out;
-  out.precision(4);
-  out << v;
-  return out.str();
+  return format_significant(v);
 }
 
 std::string cell(const Moments& m) {

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "tests/cli/run_command.hpp"
 
@@ -47,6 +49,26 @@ TEST(EnvironmentCli, LightMatchesClosedFormAndKeepsRowOrder) {
                           (dir / "points.csv").string() + " --directions 64 -o " + out.string());
   ASSERT_EQ(w.exit_code, 0) << w.err;
   EXPECT_TRUE(std::filesystem::exists(out));
+}
+
+// The README's example: the scene is symmetric about the plane y = 0, so the light direction at a
+// point of that plane has dy = 0 exactly; the sum over sky directions leaves about 1e-18 of
+// rounding noise, written as 0.
+TEST(EnvironmentCli, LightDirectionNoiseIsWrittenAsZero) {
+  const std::string examples = std::string(FSPM_SOURCE_DIR) + "/examples/environment/";
+  const auto r = run_fspm("light --scene " + examples + "sphere_and_box_scene.json --points " +
+                          examples + "points.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream in(r.out);
+  std::string header, row;
+  std::getline(in, header);
+  std::getline(in, row);
+  ASSERT_TRUE(row.starts_with("0,0,0,")) << row;
+  std::vector<std::string> cells;
+  std::istringstream fields(row);
+  for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+  ASSERT_EQ(cells.size(), 7u) << row;
+  EXPECT_EQ(cells[5], "0") << row;
 }
 
 TEST(EnvironmentCli, LightBadInputNamesFileAndPlace) {
