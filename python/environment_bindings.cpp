@@ -9,6 +9,7 @@
 #include "environment/plastic_adaptation.hpp"
 #include "environment/scene_file.hpp"
 #include "environment/tree_analysis.hpp"
+#include "fspm/number_text.hpp"
 #include "python/bindings.hpp"
 
 namespace fspm::python {
@@ -453,7 +454,7 @@ void bind_growth_functions(py::module_& m) {
           "Final leaf clusters as rows x, y, z, radius, translucency")
       .def("__repr__", [](const env::GrowthResult& r) {
         return "<fspm.GrowthResult: " + std::to_string(r.internodes) + " internodes, " +
-               std::to_string(r.clusters) + " clusters, height " + std::to_string(r.height_m) +
+               std::to_string(r.clusters) + " clusters, height " + format_significant(r.height_m) +
                " m>";
       });
 
