@@ -353,6 +353,12 @@ void bind_growth_params(py::module_& m) {
            "Most metamers in one shoot, n = round(v) (integer >= 1; 5)")
       .add("min_shoot_vigour", &env::GrowthParams::min_shoot_vigour,
            "Buds with less vigour do not grow a shoot (>= 0; 0.5)")
+      .add("max_internodes", &env::GrowthParams::max_internodes,
+           "Growth stops with an error naming the parameters when the tree has more internodes "
+           "(integer >= 1; 1000000)")
+      .add("max_height_m", &env::GrowthParams::max_height_m,
+           "Growth stops with an error naming the parameters when the tree is taller (m, > 0 or "
+           "inf; 150)")
       .add("sky_light_fraction", &env::GrowthParams::sky_light_fraction,
            "Share of the open sky's light reaching the stand, scales every bud's Q ([0, 1], 1 = "
            "open site; 1)")

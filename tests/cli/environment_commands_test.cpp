@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -135,6 +136,27 @@ TEST(EnvironmentCli, GrowBadInput) {
   EXPECT_EQ(r.exit_code, 1);
   r = run_fspm("grow -o " + (dir / "t.tree").string());
   EXPECT_EQ(r.exit_code, 1);
+}
+
+// A parameter that makes the tree explode: one line naming where the parameters came from, the
+// size reached and the limit, before the light model runs out of voxels (tests/environment,
+// GrowthLimits, has the sizes).
+TEST(EnvironmentCli, ExplodingGrowthNamesTheParametersAndTheLimit) {
+  const auto dir = scratch_dir("grow_explode");
+  const std::string out = (dir / "t.tree").string();
+  auto r = run_fspm("grow --preset B --set apical_control=0.9 --years 30 -o " + out);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("preset B --set apical_control=0.9: growth stopped after year "),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("above max_height_m = 150 m"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("voxel"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  r = run_fspm("grow --preset A --years 10 --max-internodes 50 -o " + out);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("preset A: growth stopped after year "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("above max_internodes = 50;"), std::string::npos) << r.err;
+  EXPECT_NE(run_fspm("grow --preset A --max-internodes 0 -o " + out).exit_code, 0);
 }
 
 }  // namespace
