@@ -392,6 +392,7 @@ std::string report_markdown(const ex::ResultsDb& db, const ReportInputs& in, con
   if (figures) md += sweep_figures(*x, db.info(), in.runs, dir);
   md += ex::summary_tables_markdown(*x, in.runs);
   if (figures) md += tree_renders(*x, in.runs, dir);
+  md += ex::timings_markdown(db.info(), in.runs);  // last: for whoever plans the next sweep
   return md;
 }
 

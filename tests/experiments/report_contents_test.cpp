@@ -52,18 +52,17 @@ TEST(ReportTables, PlantMetricsAndTimingsInSeparateTables) {
   info.total_runs = 2;
   info.swept = {"years", "set"};
   info.metrics = {"height", "run_time"};
-  const std::string md =
-      markdown_report(info, {run(0, 10, "O", 2.0, 0.5), run(1, 20, "G", 4.0, 1.5)});
-  const auto plants = md.find("## Metrics per parameter point");
-  const auto timings = md.find("## Timings per parameter point");
-  ASSERT_NE(plants, std::string::npos) << md;
-  ASSERT_NE(timings, std::string::npos) << md;
-  const std::string plant_table = md.substr(plants, timings - plants);
-  EXPECT_NE(plant_table.find("height (m)"), std::string::npos) << plant_table;
-  EXPECT_EQ(plant_table.find("run_time"), std::string::npos) << plant_table;
-  const std::string timing_table = md.substr(timings, md.find("## Marginal") - timings);
-  EXPECT_NE(timing_table.find("| run_time (s) |"), std::string::npos) << timing_table;
-  EXPECT_EQ(timing_table.find("height"), std::string::npos) << timing_table;
+  const std::vector<RunRecord> runs{run(0, 10, "O", 2.0, 0.5), run(1, 20, "G", 4.0, 1.5)};
+  const std::string md = markdown_report(info, runs);
+  ASSERT_NE(md.find("## Metrics per parameter point"), std::string::npos) << md;
+  EXPECT_NE(md.find("height (m)"), std::string::npos) << md;
+  EXPECT_NE(md.find("## Marginal means over `years`"), std::string::npos) << md;
+  EXPECT_EQ(md.find("run_time"), std::string::npos) << "timings come last, apart\n" << md;
+  const std::string timing = timings_markdown(info, runs);
+  ASSERT_NE(timing.find("## Timings per parameter point"), std::string::npos) << timing;
+  EXPECT_NE(timing.find("| run_time (s) |"), std::string::npos) << timing;
+  EXPECT_NE(timing.find("### Timings over `years`"), std::string::npos) << timing;
+  EXPECT_EQ(timing.find("height"), std::string::npos) << timing;
   EXPECT_TRUE(is_timing_metric("grow_seconds"));
   EXPECT_FALSE(is_timing_metric("nodes"));
 }
