@@ -12,9 +12,13 @@
 
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
+#include "environment/canopy_light.hpp"
+#include "environment/daylight.hpp"
 #include "environment/growth_model.hpp"
+#include "environment/leaf_light.hpp"
 #include "environment/light_model.hpp"
 #include "environment/points_file.hpp"
+#include "environment/radiation_file.hpp"
 #include "environment/scene_file.hpp"
 #include "fspm/atomic_file.hpp"
 #include "fspm/elapsed.hpp"
@@ -27,15 +31,52 @@ namespace {
 struct LightOptions {
   std::string scene;
   std::string points;
+  std::string tree;  // instead of points: the tree's leaf clusters
   std::string out;
   int directions = 0;
   bool json = false;
+  // A real sky (all optional; --latitude, --longitude and --date switch it on).
+  std::optional<double> latitude, longitude;
+  double elevation_m = 0.0, utc_offset_h = 0.0;
+  std::string date, hours = "0:24", diffuse = "overcast", split = "spitters";
+  std::optional<double> global_W_m2;
+  std::string global_csv;
+  double transmittance = 0.75;
 };
+
+// The real sky of the options, or none when no site and date were given.
+std::optional<environment::RealSky> real_sky(const LightOptions& o) {
+  const bool any = o.latitude || o.longitude || !o.date.empty();
+  if (!any) return std::nullopt;
+  if (!o.latitude || !o.longitude || o.date.empty()) {
+    throw ValueError("a real sky needs --latitude, --longitude and --date together");
+  }
+  environment::RealSky sky;
+  sky.site = {*o.latitude, *o.longitude, o.elevation_m, o.utc_offset_h};
+  sky.date = environment::parse_date(o.date);
+  environment::parse_hours(o.hours, sky);
+  sky.diffuse = environment::diffuse_sky_from_name(o.diffuse);
+  sky.split = environment::diffuse_split_from_name(o.split);
+  sky.transmittance = o.transmittance;
+  if (o.global_W_m2 && !o.global_csv.empty()) {
+    throw ValueError("--global-radiation and --global-radiation-csv exclude each other");
+  }
+  if (!o.global_csv.empty())
+    sky.hourly_global_W_m2 = environment::read_hourly_global_csv(o.global_csv);
+  if (o.global_W_m2) {
+    if (*o.global_W_m2 < 0.0) throw ValueError("--global-radiation must be >= 0 W m-2");
+    sky.global_W_m2 = *o.global_W_m2;
+  }
+  environment::validate(sky);
+  return sky;
+}
 
 // `fspm light --json`: counts, the light's range and mean, and the samples themselves when they
 // are not written to a file.
 nlohmann::json light_json(const LightOptions& o, const std::vector<Eigen::Vector3d>& points,
-                          const std::vector<environment::LightSample>& samples, double seconds) {
+                          const std::vector<environment::LightSample>& samples,
+                          const std::vector<environment::DaylightSample>& daylight,
+                          double seconds) {
   double sum = 0.0, lo = 1.0, hi = 0.0;
   nlohmann::json rows = nlohmann::json::array();
   for (std::size_t k = 0; k < samples.size(); ++k) {
@@ -47,6 +88,10 @@ nlohmann::json light_json(const LightOptions& o, const std::vector<Eigen::Vector
       rows.push_back({{"point", {points[k].x(), points[k].y(), points[k].z()}},
                       {"light", s.light},
                       {"direction", {s.direction.x(), s.direction.y(), s.direction.z()}}});
+      if (k < daylight.size()) {
+        rows.back()["par_umol_m2_s"] = daylight[k].par_umol_m2_s;
+        rows.back()["daily_par_mol_m2"] = daylight[k].daily_par_mol_m2;
+      }
     }
   }
   nlohmann::json j = {{"scene", o.scene},
@@ -55,6 +100,12 @@ nlohmann::json light_json(const LightOptions& o, const std::vector<Eigen::Vector
                       {"min_light", samples.empty() ? 0.0 : lo},
                       {"max_light", samples.empty() ? 0.0 : hi},
                       {"seconds", seconds}};
+  if (!daylight.empty()) {
+    double par = 0.0, mol = 0.0;
+    for (const auto& d : daylight) par += d.par_umol_m2_s, mol += d.daily_par_mol_m2;
+    j["mean_par_umol_m2_s"] = par / daylight.size();
+    j["mean_daily_par_mol_m2"] = mol / daylight.size();
+  }
   if (o.out.empty()) {
     j["samples"] = std::move(rows);
   } else {
@@ -78,26 +129,60 @@ struct GrowOptions {
   bool json = false;
 };
 
+// The light of a tree's leaf clusters: the mean light of each cluster's leaves through the crown
+// as turbid media and the scene's obstacles (record_leaf_light), and its PAR under a real sky.
+void leaf_cluster_light(const LightOptions& o, const environment::Scene& scene,
+                        const std::optional<environment::RealSky>& sky,
+                        std::vector<Eigen::Vector3d>& points,
+                        std::vector<environment::LightSample>& samples,
+                        std::vector<environment::DaylightSample>& daylight) {
+  const TreeGraph tree = read_tree_file(o.tree);
+  std::vector<std::uint32_t> sphere_of;
+  const std::vector<environment::Sphere> clusters = environment::leaf_spheres(tree, sphere_of);
+  if (clusters.empty()) {
+    throw ValueError(o.tree + ": expected leaf clusters (leaf nodes, as fspm grow writes them)");
+  }
+  for (const environment::Sphere& c : clusters) points.push_back(c.center);
+  const double voxel_m =
+      clusters.size() > environment::kLeafLightVoxelsFrom ? environment::kLeafLightVoxel_m : 0.0;
+  const environment::CanopyLight light(scene, clusters, voxel_m);
+  samples = light.evaluate_clusters();
+  if (sky) daylight = environment::daylight_at(light, *sky, points);
+}
+
 void run_light(const LightOptions& o) {
-  refuse_overwriting_input(o.out, {o.scene, o.points});
+  if (o.points.empty() == o.tree.empty()) {
+    throw ValueError("fspm light needs either --points or --tree");
+  }
+  refuse_overwriting_input(o.out, {o.scene, o.points, o.tree});
   environment::Scene scene = environment::read_scene_file(o.scene);
   if (o.directions != 0) scene.sky.directions = o.directions;  // checked by the LightModel
-  const auto points = environment::read_points_csv(o.points);
+  const std::optional<environment::RealSky> sky = real_sky(o);
+  std::vector<Eigen::Vector3d> points;
+  std::vector<environment::LightSample> samples;
+  std::vector<environment::DaylightSample> daylight;
   const auto t0 = std::chrono::steady_clock::now();
-  const environment::LightModel model(scene);
-  std::vector<environment::LightSample> samples(points.size());
-  model.evaluate(points, samples);
+  if (!o.tree.empty()) {
+    leaf_cluster_light(o, scene, sky, points, samples, daylight);
+  } else {
+    points = environment::read_points_csv(o.points);
+    const environment::LightModel model(scene);
+    samples.resize(points.size());
+    model.evaluate(points, samples);
+    if (sky) daylight = environment::daylight_at(environment::CanopyLight(scene, {}), *sky, points);
+  }
   const double seconds = seconds_since(t0);
   spdlog::debug("light: {} points in {:.3f} s", points.size(), seconds);
   if (!o.out.empty()) {
-    write_file_atomically(
-        o.out, [&](std::ostream& out) { environment::write_light_csv(out, points, samples); });
+    write_file_atomically(o.out, [&](std::ostream& out) {
+      environment::write_light_csv(out, points, samples, daylight);
+    });
     spdlog::info("wrote {} ({} points)", o.out, points.size());
   }
   if (o.json) {
-    print_json(light_json(o, points, samples, seconds));
+    print_json(light_json(o, points, samples, daylight, seconds));
   } else if (o.out.empty()) {
-    environment::write_light_csv(std::cout, points, samples);
+    environment::write_light_csv(std::cout, points, samples, daylight);
     std::cout.flush();
   }
 }
@@ -177,13 +262,41 @@ void add_environment_commands(CLI::App& app) {
   CLI::App* l = app.add_subcommand(
       "light", "Sky light (Pirk eq. 4.3) and mean light direction at points of a scene");
   l->add_option("--scene", light->scene, "Scene file (JSON, see docs/formats.md)")->required();
-  l->add_option("--points", light->points, "Points (CSV with header x,y,z)")->required();
+  l->add_option("--points", light->points, "Points (CSV with header x,y,z)");
+  l->add_option("--tree", light->tree,
+                "Instead of --points: a tree file whose leaf clusters get the mean light of their "
+                "leaves through the crown (one row per cluster, at its centre)");
   l->add_option("--directions", light->directions,
                 "Stratified sky directions (default: the scene's sky.directions, 256)");
   l->add_option("-o,--output", light->out, "Output CSV x,y,z,light,dx,dy,dz (default: stdout)");
   l->add_flag("--json", light->json,
               "One JSON object on stdout: points, mean/min/max light, seconds, and the samples "
               "unless -o writes them");
+  l->add_option("--latitude", light->latitude,
+                "Real sky: site latitude (degrees, north positive); with --longitude and --date "
+                "adds PAR columns par_umol_m2_s and daily_par_mol_m2");
+  l->add_option("--longitude", light->longitude,
+                "Real sky: site longitude (degrees, east positive)");
+  l->add_option("--elevation", light->elevation_m, "Real sky: site elevation (m, default 0)");
+  l->add_option("--utc-offset", light->utc_offset_h,
+                "Real sky: local clock time minus UTC (hours, default 0)");
+  l->add_option("--date", light->date, "Real sky: date YYYY-MM-DD (1950-2050)");
+  l->add_option("--hours", light->hours,
+                "Real sky: local hours FROM:TO integrated (default 0:24, the whole day)");
+  l->add_option("--diffuse-sky", light->diffuse,
+                "Real sky: diffuse radiance overcast (CIE standard overcast, default), clear "
+                "(CIE standard clear) or uniform");
+  l->add_option("--global-radiation", light->global_W_m2,
+                "Real sky: global radiation on a horizontal plane (W m-2) held while the sun is "
+                "up (default: the clear sky of the site and date)");
+  l->add_option("--global-radiation-csv", light->global_csv,
+                "Real sky: measured hourly global radiation, CSV hour,global_W_m2 (local hours "
+                "0-23)");
+  l->add_option("--split", light->split,
+                "Real sky: direct/diffuse split of the global radiation, spitters (Spitters et al. "
+                "1986, default) or erbs (Erbs et al. 1982)");
+  l->add_option("--transmittance", light->transmittance,
+                "Real sky: clear-sky atmospheric transmittance (default 0.75)");
   l->callback([light] { run_light(*light); });
 
   auto grow = std::make_shared<GrowOptions>();

@@ -95,7 +95,7 @@ void add_global_options(CLI::App& app) {
   app.add_flag("-q,--quiet", values->quiet, "Only warnings and errors on stderr");
   app.add_option("--memory-limit", values->memory_limit,
                  "Largest memory a command may plan to use: 512M, 2G ... (default: half of the "
-                 "physical memory)");
+                 "physical memory, or of the ulimit or cgroup limit when lower)");
   add_mtg_options(app, *values);
   app.add_flag("--json", values->json,
                "Machine-readable JSON on stdout, for the commands that offer it (same as the "

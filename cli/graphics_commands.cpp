@@ -220,7 +220,8 @@ graphics::InstancedMesh mesh_compressed(const CompressedTreeGraph& graph, double
 // a compressed graph (< 0: as simulated) or, for a tree, the latest birth time kept.
 graphics::InstancedMesh load_part(const std::string& path, InputKind kind,
                                   const std::string& format, double age,
-                                  graphics::MeshOptions options, const LevelOfDetail& lod = {}) {
+                                  graphics::MeshOptions options, const LevelOfDetail& lod = {},
+                                  const MtgTreeOptions& mtg = default_mtg_tree_options()) {
   if (is_compressed(kind)) return mesh_compressed(load_compressed(path, kind), age, options, lod);
   if (kind == InputKind::kScene) throw ValueError("a scene cannot include another scene", path);
   if (kind == InputKind::kMesh) return graphics::InstancedMesh::single(read_placed_mesh(path));
@@ -234,7 +235,7 @@ graphics::InstancedMesh load_part(const std::string& path, InputKind kind,
         path);
   }
   if (age >= 0.0) options.max_birth_time = age;
-  TreeGraph tree = read_tree_file(path, format);
+  TreeGraph tree = read_tree_file(path, format, mtg);
   if (lod.active()) tree = reduce_tree(tree, lod);
   return graphics::InstancedMesh::single(graphics::mesh_tree(tree, options));
 }
@@ -267,7 +268,7 @@ graphics::InstancedMesh place_plants(const graphics::SceneFile& scene,
           graphics::InstancedMesh::single(without_crown(read_placed_mesh(source.path))));
       continue;
     }
-    parts.push_back(load_part(source.path, kind, "", source.age, options, lod));
+    parts.push_back(load_part(source.path, kind, "", source.age, options, lod, source.mtg));
   }
   std::vector<graphics::PartPlacement> placements;
   for (const auto& inst : scene.instances) {
@@ -354,7 +355,7 @@ graphics::LodScene load_lod_scene(const std::string& path, const std::string& fo
     description = read_landscape_scene(path, terrain);
     plants = graphics::scene_plants(description->plants);
   } else {
-    plants.sources.push_back({path, -1.0});
+    plants.sources.push_back({path, -1.0, default_mtg_tree_options()});
     plants.instances.emplace_back();
   }
   graphics::LodScene scene;
@@ -365,7 +366,8 @@ graphics::LodScene load_lod_scene(const std::string& path, const std::string& fo
       // A scene's plant files are read by their extension, as place_plants does.
       const std::string f = kind == InputKind::kScene ? std::string() : format;
       resolutions.push_back(
-          load_part(source.path, input_kind(source.path), f, source.age, o).flatten());
+          load_part(source.path, input_kind(source.path), f, source.age, o, {}, source.mtg)
+              .flatten());
     }
     // Reynolds 3.3: at the coarse switch, the key distance here, the highest level of branches
     // is removed (the leaves stay).

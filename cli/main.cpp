@@ -5,12 +5,14 @@
 
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <new>
 #include <string>
 
 #include "cli/commands.hpp"
 #include "cli/global_options.hpp"
 #include "cli/output.hpp"
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 
 int main(int argc, char** argv) {
   fspm::cli::use_checked_standard_output();
@@ -48,6 +50,13 @@ int main(int argc, char** argv) {
     fspm::cli::finish_standard_output();
   } catch (const fspm::Error& e) {
     std::cerr << "fspm: error: " << e.what() << '\n';
+    return 1;
+  } catch (const std::bad_alloc&) {
+    // An allocation the estimates missed failed below the limit: still the user's budget.
+    std::cerr << "fspm: error: out of memory below the memory limit of "
+              << fspm::memory_text(static_cast<double>(fspm::memory_limit_bytes()))
+              << " (--memory-limit): the machine or its limits gave less; give a lower "
+                 "--memory-limit or free memory\n";
     return 1;
   } catch (const std::exception& e) {
     const std::string what = e.what();

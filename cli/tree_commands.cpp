@@ -7,9 +7,13 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
+#include "environment/canopy_summary.hpp"
+#include "environment/leaf_light.hpp"
 #include "fspm/attribute_names.hpp"
 #include "fspm/mtg_tree.hpp"
 #include "fspm/plant_frame.hpp"
@@ -39,6 +43,23 @@ std::size_t pruned_count(const TreeGraph& tree) {
   const auto pruned = tree.attribute(kPrunedAttribute);
   return static_cast<std::size_t>(
       std::count_if(pruned.begin(), pruned.end(), [](double v) { return v != 0.0; }));
+}
+
+// The foliage of a tree with leaf clusters (leaf nodes and the attribute "translucency", as grown
+// and adapted trees keep them) under a beam from the zenith (environment/canopy_summary).
+std::optional<nlohmann::json> canopy_json(const TreeGraph& tree) {
+  if (!tree.has_attribute("translucency")) return std::nullopt;
+  std::vector<std::uint32_t> sphere_of;
+  const std::vector<environment::Sphere> clusters = environment::leaf_spheres(tree, sphere_of);
+  if (clusters.empty()) return std::nullopt;
+  const environment::CanopySummary c = environment::summarize_canopy(clusters);
+  return nlohmann::json{{"clusters", c.clusters},
+                        {"beam", "zenith"},
+                        {"leaf_area_m2", c.leaf_area_m2},
+                        {"sunlit_leaf_area_m2", c.sunlit_leaf_area_m2},
+                        {"shaded_leaf_area_m2", c.shaded_leaf_area_m2},
+                        {"silhouette_area_m2", c.silhouette_area_m2},
+                        {"star", c.star}};
 }
 
 nlohmann::json summary_json(const std::string& file, const TreeGraph& tree) {
@@ -73,6 +94,7 @@ nlohmann::json summary_json(const std::string& file, const TreeGraph& tree) {
     j["positions_inferred"] = positions;
     j["radii_inferred"] = radii;
   }
+  if (const auto canopy = canopy_json(tree)) j["canopy"] = *canopy;
   return j;
 }
 
@@ -94,6 +116,15 @@ void run_info(const InfoOptions& o) {
   }
   std::cout << "  branches_per_order: " << j["branches_per_order"].dump() << '\n';
   std::cout << "  attributes: " << j["attributes"].dump() << '\n';
+  if (j.contains("canopy")) {
+    const auto& c = j["canopy"];
+    std::cout << fmt::format(
+        "  canopy (beam from the zenith): {} clusters, leaf area {:.2f} m2, sunlit {:.2f} m2, "
+        "shaded {:.2f} m2, silhouette {:.2f} m2, STAR {:.3f}\n",
+        c["clusters"].get<std::size_t>(), c["leaf_area_m2"].get<double>(),
+        c["sunlit_leaf_area_m2"].get<double>(), c["shaded_leaf_area_m2"].get<double>(),
+        c["silhouette_area_m2"].get<double>(), c["star"].get<double>());
+  }
 }
 
 // Only Newick carries node names (taxon names, quoted labels); converting to another format says

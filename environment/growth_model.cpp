@@ -481,9 +481,12 @@ class Grower {
       const NodeId id = out.tree.add_node(new_id[sh.last], d);
       out.tree.attribute("translucency")[id] = c.translucency;
     }
-    // Light at each cluster's centre (Pirk eq. 4.3 over the final clusters, its own left out):
-    // the shoots of the last cycle had no bud light.
-    record_leaf_light(out.tree, light_scene_settings());
+    // The mean light of each cluster's leaves through the final clusters as turbid media (the
+    // shoots of the last cycle had no bud light). The cutoff is at most the sky's default: each
+    // cluster below it is ignored alone, and in a crown hundreds of them add up.
+    Scene leaf_scene = light_scene_settings();
+    leaf_scene.sky.significance = std::min(leaf_scene.sky.significance, Sky{}.significance);
+    record_leaf_light(out.tree, leaf_scene);
     out.clusters = out.cluster_spheres.size();
     out.shed = shed_;
     out.grown = grown_;

@@ -23,8 +23,8 @@ struct GrowthResult {
   // the leaf clusters as kind leaf nodes under the last internode of their shoot (start = end =
   // cluster centre, radius = cluster radius, attribute "translucency"). Internodes carry the
   // attribute "light" (the light their bud sensed in the last cycle; nan, "no value", for nodes
-  // that had no bud then); a cluster carries the light at its centre (Pirk eq. 4.3 over the
-  // final clusters, its own left out).
+  // that had no bud then); a cluster carries the light at its centre through the final clusters
+  // as turbid media, its own included: the mean light of its leaves (record_leaf_light).
   TreeGraph tree;
   std::size_t internodes = 0;
   std::size_t clusters = 0;

@@ -4,7 +4,7 @@
 #include <limits>
 #include <vector>
 
-#include "environment/light_model.hpp"
+#include "environment/canopy_light.hpp"
 #include "fspm/attribute_names.hpp"
 
 namespace fspm::environment {
@@ -15,34 +15,37 @@ bool is_live_leaf(const TreeGraph& tree, NodeId i, std::span<const double> prune
   return tree.kind(i) == OrganKind::kLeaf && (pruned.empty() || pruned[i] == 0.0);
 }
 
-// Appends the live leaves of `tree` to the scene's spheres; returns each node's sphere index.
-std::vector<std::uint32_t> add_leaf_spheres(const TreeGraph& tree, Scene& s) {
+}  // namespace
+
+std::vector<Sphere> leaf_spheres(const TreeGraph& tree, std::vector<std::uint32_t>& sphere_of) {
   const std::span<const double> pruned = tree.has_attribute(kPrunedAttribute)
                                              ? tree.attribute(kPrunedAttribute)
                                              : std::span<const double>{};
   const bool translucent = tree.has_attribute("translucency");
-  std::vector<std::uint32_t> sphere_of(tree.size(), kNoSphere);
+  std::vector<Sphere> spheres;
+  sphere_of.assign(tree.size(), kNoSphere);
   for (NodeId i = 0; i < tree.size(); ++i) {
     if (!is_live_leaf(tree, i, pruned)) continue;
-    sphere_of[i] = static_cast<std::uint32_t>(s.spheres.size());
+    sphere_of[i] = static_cast<std::uint32_t>(spheres.size());
     const double gamma = translucent ? tree.attribute("translucency")[i] : 1.0;
-    s.spheres.push_back({tree.start(i), tree.radius(i), gamma, false});
+    spheres.push_back({tree.start(i), tree.radius(i), gamma, false});
   }
-  return sphere_of;
+  return spheres;
 }
-
-}  // namespace
 
 void record_leaf_light(TreeGraph& tree, const Scene& scene) {
   constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
-  Scene s = scene;
-  const std::vector<std::uint32_t> sphere_of = add_leaf_spheres(tree, s);
-  const LightModel model(s);
+  std::vector<std::uint32_t> sphere_of;
+  const std::vector<Sphere> spheres = leaf_spheres(tree, sphere_of);
+  // Large crowns through voxels (as close to ray-traced leaves as the spheres, and faster beyond
+  // about a thousand clusters: docs/environment.md).
+  const double voxel_m = spheres.size() > kLeafLightVoxelsFrom ? kLeafLightVoxel_m : 0.0;
+  const std::vector<LightSample> lit = CanopyLight(scene, spheres, voxel_m).evaluate_clusters();
   tree.add_attribute(kLightAttribute, kNoValue);
   auto light = tree.attribute(kLightAttribute);
   for (NodeId i = 0; i < tree.size(); ++i) {
     if (sphere_of[i] != kNoSphere) {
-      light[i] = model.evaluate(tree.start(i), sphere_of[i]).light;
+      light[i] = lit[sphere_of[i]].light;
     } else if (tree.kind(i) == OrganKind::kLeaf) {
       light[i] = kNoValue;
     }

@@ -8,17 +8,10 @@
 
 #include "fspm/error.hpp"
 #include "fspm/input_file.hpp"
+#include "fspm/trim.hpp"
 
 namespace fspm::environment {
 namespace {
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) {
-    s.remove_suffix(1);
-  }
-  return s;
-}
 
 std::vector<std::string_view> split(std::string_view line) {
   std::vector<std::string_view> out;
@@ -92,7 +85,14 @@ double unit_component(double c) { return std::abs(c) < 1e-12 ? 0.0 : c; }
 
 void write_light_csv(std::ostream& out, std::span<const Eigen::Vector3d> points,
                      std::span<const LightSample> samples) {
-  out << "x,y,z,light,dx,dy,dz\n";
+  write_light_csv(out, points, samples, {});
+}
+
+void write_light_csv(std::ostream& out, std::span<const Eigen::Vector3d> points,
+                     std::span<const LightSample> samples,
+                     std::span<const DaylightSample> daylight) {
+  out << (daylight.empty() ? "x,y,z,light,dx,dy,dz\n"
+                           : "x,y,z,light,dx,dy,dz,par_umol_m2_s,daily_par_mol_m2\n");
   char buf[64];
   auto put = [&](double v, char sep) {
     const auto r = std::to_chars(buf, buf + sizeof buf, v);
@@ -100,13 +100,18 @@ void write_light_csv(std::ostream& out, std::span<const Eigen::Vector3d> points,
     out.put(sep);
   };
   for (std::size_t i = 0; i < points.size() && i < samples.size(); ++i) {
+    const bool par = i < daylight.size();
     put(points[i].x(), ',');
     put(points[i].y(), ',');
     put(points[i].z(), ',');
     put(samples[i].light, ',');
     put(unit_component(samples[i].direction.x()), ',');
     put(unit_component(samples[i].direction.y()), ',');
-    put(unit_component(samples[i].direction.z()), '\n');
+    put(unit_component(samples[i].direction.z()), par ? ',' : '\n');
+    if (par) {
+      put(daylight[i].par_umol_m2_s, ',');
+      put(daylight[i].daily_par_mol_m2, '\n');
+    }
   }
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// Point lists for `fspm light`: CSV with a header x,y,z; results as x,y,z,light,dx,dy,dz.
+// Point lists for `fspm light`: CSV with a header x,y,z; results as x,y,z,light,dx,dy,dz (and
+// the PAR of a real sky).
 #include <Eigen/Core>
 #include <iosfwd>
 #include <span>
@@ -7,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "environment/daylight.hpp"
 #include "environment/light_model.hpp"
 
 namespace fspm::environment {
@@ -18,5 +20,9 @@ std::vector<Eigen::Vector3d> read_points_csv(const std::string& path);
 
 void write_light_csv(std::ostream& out, std::span<const Eigen::Vector3d> points,
                      std::span<const LightSample> samples);
+// The same with the PAR of a real sky: x,y,z,light,dx,dy,dz,par_umol_m2_s,daily_par_mol_m2.
+void write_light_csv(std::ostream& out, std::span<const Eigen::Vector3d> points,
+                     std::span<const LightSample> samples,
+                     std::span<const DaylightSample> daylight);
 
 }  // namespace fspm::environment

@@ -1,7 +1,9 @@
 #include "fspm/memory_budget.hpp"
 
+#include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cctype>
 #include <charconv>
@@ -38,12 +40,33 @@ double unit_factor(const std::string& unit) {
 
 }  // namespace
 
-std::uint64_t default_memory_limit_bytes() {
+// The memory this process may really use: the physical memory, or less where a resource limit
+// (ulimit -v, -d) or the control group (a container, a batch job's cgroup) allows less.
+std::uint64_t usable_memory_bytes() {
   const long pages = ::sysconf(_SC_PHYS_PAGES);
   const long page_size = ::sysconf(_SC_PAGE_SIZE);
-  if (pages <= 0 || page_size <= 0) return kFallbackLimit;
-  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page_size) / 2;
+  std::uint64_t usable = pages > 0 && page_size > 0 ? static_cast<std::uint64_t>(pages) *
+                                                          static_cast<std::uint64_t>(page_size)
+                                                    : 2 * kFallbackLimit;
+  for (int resource : {RLIMIT_AS, RLIMIT_DATA}) {
+    struct rlimit r {};
+    if (::getrlimit(resource, &r) == 0 && r.rlim_cur != RLIM_INFINITY) {
+      usable = std::min<std::uint64_t>(usable, r.rlim_cur);
+    }
+  }
+  // cgroup v2, then v1; "max" or an absurd v1 value means no limit.
+  for (const char* path :
+       {"/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes"}) {
+    if (std::FILE* f = std::fopen(path, "r")) {
+      unsigned long long v = 0;
+      if (std::fscanf(f, "%llu", &v) == 1 && v > 0) usable = std::min<std::uint64_t>(usable, v);
+      std::fclose(f);
+    }
+  }
+  return usable;
 }
+
+std::uint64_t default_memory_limit_bytes() { return usable_memory_bytes() / 2; }
 
 std::uint64_t memory_limit_bytes() {
   const std::uint64_t set = g_limit.load(std::memory_order_relaxed);

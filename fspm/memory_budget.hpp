@@ -3,15 +3,18 @@
 // (L-system strings, reconstructed trees, meshes, edit-distance tables, sampled experiment
 // plans) estimates its bytes first and calls check_memory(), so an impossible request fails at
 // once with a message naming the estimate and the limit, instead of swapping or being killed.
-// The limit defaults to half of the machine's physical memory; the command line sets it with
-// --memory-limit and Python with fspm.set_memory_limit().
+// The limit defaults to half of the memory the process may use (the physical memory, or less under
+// a resource limit or a control group); the command line sets it with --memory-limit and Python
+// with fspm.set_memory_limit().
 #include <cstdint>
 #include <string>
 #include <string_view>
 
 namespace fspm {
 
-// Half of the physical memory (sysconf), or 4 GiB when the system does not say.
+// Half of the memory the process may use: the physical memory (sysconf), or the address-space or
+// data-segment resource limit (ulimit -v, -d), or the cgroup's memory.max, whichever is least;
+// 4 GiB when the system says nothing.
 std::uint64_t default_memory_limit_bytes();
 
 // The current limit in bytes (default_memory_limit_bytes() until set).

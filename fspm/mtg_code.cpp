@@ -7,6 +7,7 @@
 
 #include "fspm/error.hpp"
 #include "fspm/number_text.hpp"
+#include "fspm/trim.hpp"
 
 namespace fspm {
 namespace {
@@ -15,15 +16,8 @@ namespace {
 // typing slip (E1<<E1000000000) is an error rather than a billion entities.
 constexpr long kMaxRange = 1'000'000;
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 bool is_letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
-  while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
-  return s;
-}
 
 void split_tabs(std::string_view line, std::vector<std::string_view>& cells) {
   cells.clear();
@@ -185,10 +179,13 @@ class CodeReader {
       rows_.push_back(v);
     }
     if (columns_.empty()) rows_.emplace_back();
-    for (std::size_t c = cells_.size(); c-- > columns_end();) {
+    for (std::size_t c = cells_.size(); !extra_reported_ && c-- > columns_end();) {
       if (!trim(cells_[c]).empty() && trim(cells_[c]).front() != '#') {
-        warn("a value beyond the last feature column is ignored", line.number);
-        break;
+        extra_reported_ = true;
+        warn(
+            "a value beyond the last feature column is ignored (later such values are not "
+            "reported)",
+            line.number);
       }
     }
     return row;
@@ -266,7 +263,8 @@ class CodeReader {
 
   // "/P1/A1/U1<<U5+E2": relation, symbol (letters), index (digits), for each entity.
   void parse_code(std::string_view code, int line, int column, std::size_t row) {
-    std::size_t p = 0;
+    std::size_t p = skip_to_relation(code, line, column);
+    if (p == code.size()) return;
     const std::size_t first = tokens_.size();
     while (p < code.size()) {
       Token t;
@@ -288,6 +286,28 @@ class CodeReader {
     }
     if (tokens_.size() == first) fail("empty entity code", line, column);
     tokens_.back().row = row;
+  }
+
+  // Text before a code's first relation ("f", "j^<HT", "^^/T" in real files) is not an entity:
+  // OpenAlea's reader appends it to the entity before, and so ignores it; so does this reader,
+  // with a warning. Returns where the first entity starts (code.size(): none on this line).
+  std::size_t skip_to_relation(std::string_view code, int line, int column) {
+    if (code.front() == '/' || code.front() == '<' || code.front() == '+') return 0;
+    if (code.front() == '(') {
+      fail("entity code '" + std::string(code) +
+               "': aliases ('(name)' prefixes) are not supported: write the entity's code",
+           line, column);
+    }
+    const std::size_t p = std::min(code.find_first_of("/<+"), code.size());
+    if (!junk_reported_) {
+      junk_reported_ = true;
+      warn("entity code '" + std::string(code) + "': '" + std::string(code.substr(0, p)) +
+               "' is not a relation and label" +
+               (p == code.size() ? ": the line is ignored" : ": ignored") +
+               ", as OpenAlea's reader ignores it (later such codes are not reported)",
+           line);
+    }
+    return p;
   }
 
   std::size_t parse_relation(std::string_view code, std::size_t p, Token& t) const {
@@ -549,6 +569,8 @@ class CodeReader {
   std::vector<Fallback> fallback_;
   std::vector<bool> reported_;
   bool scale_mismatch_reported_ = false;
+  bool junk_reported_ = false;
+  bool extra_reported_ = false;
   int last_scale_ = -1;  // the scale of the entity before (after a '/' climb: the complex's)
   std::vector<std::size_t> undeclared_;
   std::string undeclared_names_;

@@ -128,10 +128,14 @@ void write_mtg(const TreeGraph& tree, std::ostream& out) {
 namespace fspm {
 
 TreeGraph parse_mtg(std::string_view text, const std::string& file) {
+  return parse_mtg(text, file, default_mtg_tree_options());
+}
+
+TreeGraph parse_mtg(std::string_view text, const std::string& file, const MtgTreeOptions& options) {
   std::vector<std::string> warnings;
   const Mtg mtg = read_mtg(text, file, &warnings);
   for (const std::string& w : warnings) warn(w);
-  return mtg_to_tree(mtg, default_mtg_tree_options(), nullptr, file);
+  return mtg_to_tree(mtg, options, nullptr, file);
 }
 
 }  // namespace fspm

@@ -14,6 +14,7 @@
 #include <string>
 #include <string_view>
 
+#include "fspm/mtg_tree.hpp"
 #include "fspm/tree_graph.hpp"
 
 namespace fspm {
@@ -22,5 +23,6 @@ void write_mtg(const TreeGraph& tree, std::ostream& out);
 
 // Throws ParseError naming `file`, the line and what was expected.
 TreeGraph parse_mtg(std::string_view text, const std::string& file = "<mtg>");
+TreeGraph parse_mtg(std::string_view text, const std::string& file, const MtgTreeOptions& options);
 
 }  // namespace fspm

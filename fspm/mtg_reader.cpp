@@ -7,17 +7,10 @@
 #include "fspm/error.hpp"
 #include "fspm/input_file.hpp"
 #include "fspm/mtg_code.hpp"
+#include "fspm/trim.hpp"
 
 namespace fspm {
 namespace {
-
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
-  while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
-  return s;
-}
 
 // Whitespace-separated words of a header row (after its comment is cut).
 std::vector<std::string_view> words(std::string_view s) {

@@ -11,6 +11,8 @@
 #include <variant>
 #include <vector>
 
+#include "fspm/length_unit.hpp"
+
 namespace fspm {
 
 // Largest number of sky directions of the light integral (scene files, the library's check).
@@ -89,6 +91,8 @@ struct ScenePlant {
   Eigen::Vector3d rotation_deg = Eigen::Vector3d::Zero();
   double scale = 1.0;
   std::optional<double> age;  // plant age of a compressed graph; unset: as simulated
+  // Units of an MTG plant file ("length_unit", "diameter_unit"); unset: the command's options.
+  std::optional<LengthUnit> length_unit, diameter_unit;
 };
 
 // A terrain from a heightfield image (Argudo 2014, 6.1): pixel (i, j), row 0 at the top (north),

@@ -91,7 +91,9 @@ ScenePlant read_plant(const JsonFields& f, const json& p, const std::string& pat
                       const std::filesystem::path& base) {
   if (!p.is_object())
     f.fail(path, "a plant object with file or crown, position, rotation_deg, scale, age", &p);
-  f.check_keys(p, path, {"file", "crown", "position", "rotation_deg", "scale", "age"});
+  f.check_keys(p, path,
+               {"file", "crown", "position", "rotation_deg", "scale", "age", "length_unit",
+                "diameter_unit"});
   ScenePlant plant;
   if (p.contains("crown")) {
     if (p.contains("file")) f.fail(path, "either file or crown, not both", &p);
@@ -113,6 +115,12 @@ ScenePlant read_plant(const JsonFields& f, const json& p, const std::string& pat
   }
   plant.scale = f.optional_number(p, path, "scale", 1e-9, 1e9, "a scale > 0").value_or(1.0);
   plant.age = f.optional_number(p, path, "age", 0, 1e9, "an age >= 0");
+  for (const auto& [key, unit] : {std::pair{"length_unit", &plant.length_unit},
+                                  std::pair{"diameter_unit", &plant.diameter_unit}}) {
+    if (p.contains(key)) {
+      *unit = length_unit_from_name(f.text(p, path, key, "m, dm, cm or mm"), path + "/" + key);
+    }
+  }
   return plant;
 }
 

@@ -80,6 +80,8 @@ json plant_json(const ScenePlant& p, const std::string& directory) {
             {"rotation_deg", array<3>(p.rotation_deg)},
             {"scale", p.scale}};
   if (p.age) o["age"] = *p.age;
+  if (p.length_unit) o["length_unit"] = std::string(length_unit_name(*p.length_unit));
+  if (p.diameter_unit) o["diameter_unit"] = std::string(length_unit_name(*p.diameter_unit));
   return o;
 }
 

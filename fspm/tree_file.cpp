@@ -60,6 +60,15 @@ TreeGraph read_tree_stream(std::istream& in, TreeFormat f, const std::string& pa
 
 }  // namespace
 
+TreeGraph read_tree_file(const std::string& path, std::string_view format,
+                         const MtgTreeOptions& mtg) {
+  const auto in = open_input_file(path, kMaxTreeFileBytes);
+  const TreeFormat f = tree_format_for(path, format);
+  if (f != TreeFormat::kMtg) return read_tree_stream(*in, f, path);
+  const std::string text{std::istreambuf_iterator<char>(*in), {}};
+  return parse_mtg(text, path, mtg);
+}
+
 TreeGraph read_tree_file(const std::string& path, std::string_view format) {
   // The path first: a directory or a missing file is not "an unknown format".
   const auto in = open_input_file(path, kMaxTreeFileBytes);

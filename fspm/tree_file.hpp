@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "fspm/mtg_tree.hpp"
 #include "fspm/newick_format.hpp"
 #include "fspm/tree_graph.hpp"
 
@@ -20,6 +21,10 @@ TreeFormat tree_format_for(const std::string& path, std::string_view name = {});
 std::string_view tree_format_name(TreeFormat format);
 
 TreeGraph read_tree_file(const std::string& path, std::string_view format = {});
+// read_tree_file with the options of an MTG file (its units, scale, plant) rather than the
+// process's defaults (set_default_mtg_tree_options).
+TreeGraph read_tree_file(const std::string& path, std::string_view format,
+                         const MtgTreeOptions& mtg);
 void write_tree_file(const TreeGraph& tree, const std::string& path, std::string_view format = {});
 
 // Whether the format carries node names (taxon names, quoted labels): Newick only.

@@ -42,6 +42,7 @@
 #include <vector>
 
 #include "fspm/error.hpp"
+#include "graphics/attribute_title.hpp"
 #include "graphics/instance_lod.hpp"
 #include "graphics/relief_composite.hpp"
 #include "graphics/render.hpp"
@@ -610,7 +611,8 @@ vtkActor* add_colored_actor(vtkRenderer* renderer, const TriangleMesh& mesh,
   if (!bar || !options.scalar_bar) return actor;
   vtkNew<vtkScalarBarActor> scalar_bar;
   scalar_bar->SetLookupTable(lut);
-  scalar_bar->SetTitle(options.color_by.c_str());
+  const std::string title = attribute_title(options.color_by);
+  scalar_bar->SetTitle(title.c_str());
   scalar_bar->SetNumberOfLabels(5);
   if (has_nan(mesh.attribute(options.color_by))) {
     scalar_bar->SetNanAnnotation("no value");

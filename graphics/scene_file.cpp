@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <map>
 #include <numbers>
+#include <tuple>
 
 #include "fspm/scene_reader.hpp"
 
@@ -26,11 +27,21 @@ bool is_scene_path(const std::string& path) { return fspm::is_scene_path(path); 
 
 SceneFile scene_plants(const std::vector<ScenePlant>& plants) {
   SceneFile scene;
-  std::map<std::pair<std::string, double>, std::size_t> source_index;
+  std::map<std::tuple<std::string, double, int, int>, std::size_t> source_index;
+  const MtgTreeOptions defaults = default_mtg_tree_options();
   for (const ScenePlant& plant : plants) {
-    const auto key = std::make_pair(plant.file, plant.age.value_or(-1.0));
+    const auto unit_key = [](const std::optional<LengthUnit>& u) {
+      return u ? static_cast<int>(*u) : -1;
+    };
+    const auto key = std::make_tuple(plant.file, plant.age.value_or(-1.0),
+                                     unit_key(plant.length_unit), unit_key(plant.diameter_unit));
     auto [it, added] = source_index.emplace(key, scene.sources.size());
-    if (added) scene.sources.push_back({key.first, key.second});
+    if (added) {
+      MtgTreeOptions mtg = defaults;
+      if (plant.length_unit) mtg.length_unit = *plant.length_unit;
+      if (plant.diameter_unit) mtg.diameter_unit = *plant.diameter_unit;
+      scene.sources.push_back({plant.file, plant.age.value_or(-1.0), mtg});
+    }
     SceneInstance inst;
     inst.source = it->second;
     inst.position = plant.position;

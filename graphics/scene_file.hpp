@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "fspm/mtg_tree.hpp"
 #include "fspm/scene_description.hpp"
 
 namespace fspm::graphics {
@@ -23,8 +24,9 @@ struct SceneInstance {
 };
 
 struct SceneSource {
-  std::string path;   // resolved
-  double age = -1.0;  // plant age for compressed graphs (< 0: as simulated)
+  std::string path;    // resolved
+  double age = -1.0;   // plant age for compressed graphs (< 0: as simulated)
+  MtgTreeOptions mtg;  // how an MTG plant file is read: the command's options, the plant's units
 };
 
 struct SceneFile {

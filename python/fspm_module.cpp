@@ -7,6 +7,8 @@
 
 PYBIND11_MODULE(_fspm, m) {
   m.doc() = "fspm core bindings";
+  // The version of project(fspm VERSION ...), the one `fspm --version` prints.
+  m.attr("__version__") = FSPM_VERSION;
   namespace python = fspm::python;
   python::bind_errors(m);
   python::bind_calibration(m);

@@ -181,7 +181,8 @@ void bind_tree_functions(py::module_& m) {
       },
       py::arg("limit"),
       "Limit the memory fspm may plan to use, in bytes or as text ('512M', '2G'); None restores "
-      "the default (half of the physical memory). Requests above it raise MemoryLimitError, a "
+      "the default (half of the physical memory, or of the ulimit or cgroup limit). Requests above "
+      "it raise MemoryLimitError, a "
       "MemoryError, before anything is allocated");
   m.def(
       "memory_limit", [] { return fspm::memory_limit_bytes(); },

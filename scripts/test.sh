@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds everything and runs every test: formatting, the main build
-# (warnings as errors) with CTest, a clang AddressSanitizer + UndefinedBehaviorSanitizer build of
-# the core libraries with their tests and brief fuzzing, the Python tests when present, and the HTML
-# report checked in headless Chromium.
+# (warnings as errors) with CTest, the installed C++ package used by examples/downstream, the
+# Debian package unpacked and checked, a clang AddressSanitizer + UndefinedBehaviorSanitizer build
+# of the core libraries with their tests and brief fuzzing, the Python tests when present, and the
+# HTML report checked in headless Chromium.
 # Exits non-zero on any failure; the output ends with the CTest summary of the main build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -49,6 +50,14 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release > build.log 2>&1 \
   || { cat build.log; exit 1; }
 grep -E "^-- fspm:" build.log || true
 cmake --build build -j "$jobs"
+
+echo "== installed C++ package: examples/downstream built against it (find_package, pkg-config)"
+scripts/downstream_check.sh build
+
+echo "== Debian package (scripts/package.sh: shared libraries, in build-pkg), unpacked and checked"
+scripts/package.sh build-pkg > build-pkg.package.log 2>&1 || { cat build-pkg.package.log; exit 1; }
+tail -n 1 build-pkg.package.log
+scripts/package_check.sh "$(tail -n 1 build-pkg.package.log)"
 
 if [ -f build/python/fspm/__init__.py ]; then
   export PYTHONPATH="$root/build/python"

@@ -28,6 +28,7 @@ except ImportError as missing:
         "fspm needs numpy: install it (Debian: apt install python3-numpy; pip: pip install numpy)"
     ) from missing
 
+from ._fspm import __version__  # noqa: F401  (project(fspm VERSION) in CMakeLists.txt)
 from ._fspm import (  # noqa: F401
     AdaptationResult,
     AnalysisParams,

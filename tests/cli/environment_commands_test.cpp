@@ -1,6 +1,7 @@
 // fspm light and fspm grow, run as a user would.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -86,6 +87,79 @@ TEST(EnvironmentCli, LightBadInputNamesFileAndPlace) {
                (dir / "points.csv").string());
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("points.csv:3"), std::string::npos) << r.err;
+}
+
+// A real sky: an open point under a held global radiation of 400 W m-2 from 9 to 15 h (the sun up
+// at 45 N in June) gets 400 * 0.5 * 4.57 umol m-2 s-1 and 6 h of it in mol m-2; a site without a
+// date is refused.
+TEST(EnvironmentCli, LightUnderARealSkyGivesPar) {
+  const auto dir = scratch_dir("light_real_sky");
+  write_text(dir / "scene.json", R"({"occluders": []})");
+  write_text(dir / "points.csv", "x,y,z\n0,0,0\n");
+  const std::string base = "light --scene " + (dir / "scene.json").string() + " --points " +
+                           (dir / "points.csv").string() + " --latitude 45 --longitude 7";
+  const auto r = run_fspm(base +
+                          " --utc-offset 1 --date 2024-06-21 --hours 9:15 --global-radiation 400 "
+                          "--json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const double par = 400.0 * 0.5 * 4.57;
+  EXPECT_NEAR(j["samples"][0]["par_umol_m2_s"].get<double>(), par, 1e-9);
+  EXPECT_NEAR(j["samples"][0]["daily_par_mol_m2"].get<double>(), par * 6 * 3600 * 1e-6, 1e-9);
+  const auto csv = run_fspm(base + " --utc-offset 1 --date 2024-06-21");
+  ASSERT_EQ(csv.exit_code, 0) << csv.err;
+  EXPECT_EQ(csv.out.substr(0, csv.out.find('\n')),
+            "x,y,z,light,dx,dy,dz,par_umol_m2_s,daily_par_mol_m2");
+  const auto bad = run_fspm(base);
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.err.find("--date"), std::string::npos) << bad.err;
+  // Measured hours: 400 W m-2 from 9 to 15 h in a CSV is the held value above, with either split.
+  std::string hours = "hour,global_W_m2\n";
+  for (int h = 9; h < 15; ++h) hours += std::to_string(h) + ",400\n";
+  write_text(dir / "day.csv", hours);
+  const auto m = run_fspm(base + " --utc-offset 1 --date 2024-06-21 --split erbs --json " +
+                          "--global-radiation-csv " + (dir / "day.csv").string());
+  ASSERT_EQ(m.exit_code, 0) << m.err;
+  EXPECT_NEAR(nlohmann::json::parse(m.out)["samples"][0]["daily_par_mol_m2"].get<double>(),
+              par * 6 * 3600 * 1e-6, 1e-9);
+  write_text(dir / "bad.csv", "hour,global_W_m2\n25,1\n");
+  const auto b =
+      run_fspm(base + " --date 2024-06-21 --global-radiation-csv " + (dir / "bad.csv").string());
+  EXPECT_EQ(b.exit_code, 1);
+  EXPECT_NE(b.err.find("bad.csv:2"), std::string::npos) << b.err;
+}
+
+// A grown tree's leaf clusters under a held global radiation of 400 W m-2 from 9 to 15 h: one row
+// per cluster, each getting less than the open sky's 400 * 0.5 * 4.57 umol m-2 s-1 and more than
+// nothing, its daily PAR 6 h of its mean; --points and --tree together are refused.
+TEST(EnvironmentCli, LightOfATreesLeafClusters) {
+  const auto dir = scratch_dir("light_tree");
+  write_text(dir / "scene.json", R"({"occluders": []})");
+  const auto tree = dir / "t.tree";
+  ASSERT_EQ(run_fspm("grow --preset A --years 8 -o " + tree.string()).exit_code, 0);
+  const auto info = nlohmann::json::parse(run_fspm("tree info --json " + tree.string()).out);
+  const std::string base = "light --scene " + (dir / "scene.json").string();
+  const auto r = run_fspm(base + " --tree " + tree.string() +
+                          " --latitude 45 --longitude 7 --utc-offset 1 --date 2024-06-21 "
+                          "--hours 9:15 --global-radiation 400 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["points"], info["leaves"]);
+  const double open = 400.0 * 0.5 * 4.57;
+  double darkest = open;
+  for (const auto& s : j["samples"]) {
+    const double par = s["par_umol_m2_s"].get<double>();
+    EXPECT_GT(par, 0.0);
+    EXPECT_LT(par, open);
+    EXPECT_NEAR(s["daily_par_mol_m2"].get<double>(), par * 6 * 3600 * 1e-6, 1e-9);
+    darkest = std::min(darkest, par);
+  }
+  EXPECT_LT(darkest, 0.5 * open);  // the crown shades its inside
+  write_text(dir / "points.csv", "x,y,z\n0,0,0\n");
+  const auto both =
+      run_fspm(base + " --tree " + tree.string() + " --points " + (dir / "points.csv").string());
+  EXPECT_EQ(both.exit_code, 1);
+  EXPECT_NE(both.err.find("either --points or --tree"), std::string::npos) << both.err;
 }
 
 TEST(EnvironmentCli, GrowPresetWritesTreeAndJson) {

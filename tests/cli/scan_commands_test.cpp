@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -207,6 +208,53 @@ TEST(ScanCli, EncodeMeasuresALasTrunkAtProjectedCoordinates) {
 }
 
 // No tree: the walls of a house exit 1 with the warning and write nothing; .laz is refused.
+// The bounding box a LAS 1.2 header records (max x, min x, max y, min y, max z, min z as
+// doubles at byte 179), written by the scan's producer.
+std::array<double, 6> las_header_bounds(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::array<char, 227> header{};
+  in.read(header.data(), header.size());
+  std::array<double, 6> b{};
+  std::memcpy(b.data(), header.data() + 179, sizeof(b));
+  return b;
+}
+
+// Real airborne clouds (AHN4, examples/scans) at projected coordinates: their height is the
+// header's z range, they have no stem points at breast height (no DBH, a warning, exit 0), and
+// the branch skeleton spans the crown the header bounds.
+TEST(ScanCli, AirborneCloudsOfStreetTreesAreMeasuredWithoutADbh) {
+  const auto dir = scratch_dir("ahn4");
+  for (const char* name : {"ahn4_tree_121913_487434", "ahn4_tree_121922_487459"}) {
+    SCOPED_TRACE(name);
+    const std::string las = std::string(FSPM_SOURCE_DIR) + "/examples/scans/" + name + ".las";
+    const auto b = las_header_bounds(las);  // max x, min x, max y, min y, max z, min z
+    const std::string branches = (dir / (std::string(name) + ".tree")).string();
+    const auto r = run_fspm("encode " + las + " -o " + (dir / "t.clusters").string() +
+                            " --branch-skeleton " + branches + " --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_NEAR(j["height_m"].get<double>(), b[4] - b[5], 0.01);
+    EXPECT_TRUE(j["dbh_m"].is_null());
+    EXPECT_NE(r.err.find("trunk points 1.2-1.4 m above the lowest point"), std::string::npos)
+        << r.err;
+    EXPECT_NEAR(j["origin"][0].get<double>(), std::floor(b[1]), 1.0);
+    EXPECT_NEAR(j["origin"][1].get<double>(), std::floor(b[3]), 1.0);
+    const TreeGraph t = read_tree_file(branches);
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    for (NodeId n = 0; n < t.size(); ++n) {
+      for (int k = 0; k < 3; ++k) {
+        lo[k] = std::min({lo[k], t.start(n)[k], t.end(n)[k]});
+        hi[k] = std::max({hi[k], t.start(n)[k], t.end(n)[k]});
+      }
+    }
+    const double want_lo[3] = {b[1], b[3], b[5]}, want_hi[3] = {b[0], b[2], b[4]};
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(lo[k], want_lo[k], 0.7) << k;
+      EXPECT_NEAR(hi[k], want_hi[k], 0.7) << k;
+    }
+  }
+}
+
 TEST(ScanCli, AHouseIsNoTreeAndLazIsRefused) {
   const auto dir = scratch_dir("scan_house");
   const std::string xyz = (dir / "house.xyz").string();

@@ -2,6 +2,7 @@
 // it, and fspm scene upgrade rewrites the earlier layouts.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -56,6 +57,49 @@ TEST(SceneCli, RenderOfAScenePlantBesideAWallShowsTheWall) {
   // The wall covers the lower part of the framed tree: an eighth of the picture or more in stone.
   EXPECT_LT(stone_pixels(graphics::read_image((dir / "open.png").string())), 100u);
   EXPECT_GT(stone_pixels(graphics::read_image((dir / "walled.png").string())), 200u * 160u / 8);
+}
+
+// The height of a mesh: the z extent of its OBJ vertices.
+double obj_height(const std::string& obj) {
+  std::istringstream in(obj);
+  std::string line;
+  double lo = 1e300, hi = -1e300;
+  while (std::getline(in, line)) {
+    if (line.rfind("v ", 0) != 0) continue;
+    std::istringstream v(line.substr(2));
+    double x = 0, y = 0, z = 0;
+    v >> x >> y >> z;
+    lo = std::min(lo, z);
+    hi = std::max(hi, z);
+  }
+  return hi - lo;
+}
+
+// A measured plant (MTG) in a scene carries its units: the same plant read in centimetres and
+// millimetres is a hundredth of its size read in metres, and `scene upgrade` keeps the units.
+TEST(SceneCli, MtgPlantOfASceneIsReadInItsUnits) {
+  const auto dir = scratch_dir("scene_mtg_units");
+  const std::string mtg = std::string(FSPM_SOURCE_DIR) + "/examples/mtg/boutdenoylum2.mtg";
+  write_text(dir / "cm.json", R"({"fspm_scene": 2, "plants": [{"file": ")" + mtg +
+                                  R"(", "length_unit": "cm", "diameter_unit": "mm"}]})");
+  write_text(dir / "m.json", R"({"fspm_scene": 2, "plants": [{"file": ")" + mtg + R"("}]})");
+  auto r = run_fspm("-q mesh " + (dir / "cm.json").string() + " -o " + (dir / "cm.obj").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("--length-unit"), std::string::npos) << r.err;
+  r = run_fspm("mesh " + (dir / "m.json").string() + " -o " + (dir / "m.obj").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("--length-unit cm"), std::string::npos) << r.err;
+  const double cm = obj_height(read_text(dir / "cm.obj"));
+  const double m = obj_height(read_text(dir / "m.obj"));
+  EXPECT_GT(cm, 1.0);
+  EXPECT_LT(cm, 10.0);
+  // Radii scale by 1/1000 and lengths by 1/100, so the heights agree to the trunk's thickness.
+  EXPECT_NEAR(cm, m / 100.0, 0.2);
+  r = run_fspm("scene upgrade " + (dir / "cm.json").string() + " -o " + (dir / "up.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto up = nlohmann::json::parse(read_text(dir / "up.json"));
+  EXPECT_EQ(up["plants"][0]["length_unit"], "cm");
+  EXPECT_EQ(up["plants"][0]["diameter_unit"], "mm");
 }
 
 TEST(SceneCli, RenderOfAGrowthSceneWithoutPlantsDrawsItsObstacles) {

@@ -202,6 +202,29 @@ TEST(TreeCli, TubeMeshConvertsToItsSkeleton) {
   }
 }
 
+// A grown tree's leaf clusters: the canopy summary adds up (sunlit + shaded = leaf area, sunlit =
+// silhouette / 0.5) and the crown shades itself (STAR below the 0.5 of leaves in the open); a
+// tree without clusters has none.
+TEST(TreeCli, InfoJsonReportsTheCanopy) {
+  const std::string open = std::string(FSPM_SOURCE_DIR) + "/examples/trees/open_a12.treeb";
+  const auto r = run_fspm("tree info --json " + open);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto c = nlohmann::json::parse(r.out)["canopy"];
+  ASSERT_TRUE(c.is_object()) << r.out;
+  EXPECT_GT(c["clusters"].get<int>(), 10);
+  const double area = c["leaf_area_m2"].get<double>();
+  EXPECT_NEAR(c["sunlit_leaf_area_m2"].get<double>() + c["shaded_leaf_area_m2"].get<double>(), area,
+              1e-9 * area);
+  EXPECT_NEAR(c["sunlit_leaf_area_m2"].get<double>(), c["silhouette_area_m2"].get<double>() / 0.5,
+              1e-9 * area);
+  EXPECT_GT(c["star"].get<double>(), 0.0);
+  EXPECT_LT(c["star"].get<double>(), 0.5);
+  const auto dir = scratch_dir("info_canopy");
+  write_text(dir / "x.nwk", "((1,2)3,4)5;\n");
+  EXPECT_FALSE(nlohmann::json::parse(run_fspm("tree info --json " + (dir / "x.nwk").string()).out)
+                   .contains("canopy"));
+}
+
 TEST(TreeCli, MalformedFileExitsOneWithFileAndLine) {
   const auto dir = scratch_dir("bad");
   const auto bad = dir / "bad.tree";

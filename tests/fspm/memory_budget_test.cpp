@@ -2,6 +2,7 @@
 #include "fspm/memory_budget.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <limits>
@@ -39,11 +40,16 @@ TEST(MemoryBudget, RejectsWhatIsNotAPositiveSize) {
   }
 }
 
-TEST(MemoryBudget, DefaultIsHalfOfThePhysicalMemory) {
+// Half of the physical memory at most (less under a ulimit or cgroup limit: the robustness
+// catalogue's DoublingModulesUnderAnAddressSpaceLimit runs fspm under one).
+TEST(MemoryBudget, DefaultIsAtMostHalfOfThePhysicalMemory) {
   LimitGuard guard;
   set_memory_limit_bytes(0);
   EXPECT_EQ(memory_limit_bytes(), default_memory_limit_bytes());
   EXPECT_GT(default_memory_limit_bytes(), 0u);
+  const auto physical = static_cast<std::uint64_t>(::sysconf(_SC_PHYS_PAGES)) *
+                        static_cast<std::uint64_t>(::sysconf(_SC_PAGE_SIZE));
+  EXPECT_LE(default_memory_limit_bytes(), physical / 2);
   set_memory_limit_bytes(12345);
   EXPECT_EQ(memory_limit_bytes(), 12345u);
 }

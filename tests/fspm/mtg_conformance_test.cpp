@@ -105,6 +105,41 @@ std::map<int, int> scale_counts(const Mtg& mtg) {
   return counts;
 }
 
+// Two files of the strawberry study of the openalea/strawberry repository (CeCILL-C): entities per
+// scale as OpenAlea's reader gives them.
+TEST(MtgConformance, StrawberryFilesReadWithOpenAleasEntityCounts) {
+  const std::string dir = std::string(FSPM_SOURCE_DIR) + "/tests/data/mtg/strawberry/";
+  const std::map<std::string, std::map<int, int>> counts{
+      {"figure0_paper.mtg", {{1, 1}, {2, 30}, {3, 59}}},
+      {"Reine_des_Vallees.mtg", {{1, 10}, {2, 118}, {3, 233}}}};
+  for (const auto& [name, want] : counts) {
+    SCOPED_TRACE(name);
+    const std::string text = read_text_input_file(dir + name);
+    EXPECT_EQ(scale_counts(read_mtg(text, name)), want);
+    EXPECT_EQ(count_labels(text), want);
+  }
+}
+
+// Text before a code's first relation, as real files have it ("^f", "j^<E3"), is ignored as
+// OpenAlea's reader ignores it: E3 follows E2 and bears E4 (OpenAlea: the same four entities,
+// parents and relations), with a warning.
+TEST(MtgConformance, TextBeforeTheFirstRelationIsIgnoredWithAWarning) {
+  const std::string text =
+      "CODE:\tFORM-A\nCLASSES:\nSYMBOL\tSCALE\tDECOMPOSITION\tINDEXATION\tDEFINITION\n"
+      "$\t0\tFREE\tFREE\tIMPLICIT\nP\t1\tFREE\tFREE\tIMPLICIT\nE\t2\tFREE\tFREE\tIMPLICIT\n"
+      "MTG:\nENTITY-CODE\n/P1/E1\n^<E2\n^f\nj^<E3\n\t+E4\n";
+  std::vector<std::string> warnings;
+  const Mtg g = read_mtg(text, "junk.mtg", &warnings);
+  ASSERT_EQ(g.size(), 6u);  // $, P1, E1 ... E4
+  EXPECT_EQ(g.label(4), "E3");
+  EXPECT_EQ(g.parent(4), 3u);
+  EXPECT_EQ(g.edge(4), MtgEdge::kSuccessor);
+  EXPECT_EQ(g.parent(5), 4u);
+  EXPECT_EQ(g.edge(5), MtgEdge::kBranch);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("junk.mtg:11: entity code 'f'"), std::string::npos) << warnings[0];
+}
+
 TEST(MtgConformance, EveryOpenAleaFileReadsWithOpenAleasEntityCounts) {
   std::size_t files = 0;
   for (const auto& entry : std::filesystem::directory_iterator(data_dir())) {

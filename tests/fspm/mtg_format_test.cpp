@@ -172,7 +172,7 @@ TEST(MtgRead, MistakesNameTheLine) {
   EXPECT_EQ(line_of("MTG:\nENTITY-CODE\t\tLength\n/P1\n^*I1\t\t1\n"), 4);
   EXPECT_EQ(line_of("MTG:\nENTITY-CODE\t\tLength\n/P1\n\t\t\n\t^<I2\t1\n"), 5);
   EXPECT_EQ(line_of("MTG:\nENTITY-CODE\t\n<I1\n"), 3);
-  EXPECT_EQ(line_of("MTG:\nENTITY-CODE\nTOPO\n"), 3);  // a second header, no code
+  EXPECT_EQ(line_of("MTG:\nENTITY-CODE\nTOPO\n"), 2);  // a second header, no entity
   // Readable with a warning, as OpenAlea reads them: a value not of its type, an extra value.
   EXPECT_EQ(line_of("MTG:\nENTITY-CODE\t\tLength\n/P1\n^/I1\t\tten\n"), -1);
   EXPECT_EQ(line_of("MTG:\nENTITY-CODE\t\tLength\n/P1/I1\t\t1\t7\n"), -1);

@@ -517,7 +517,21 @@ std::vector<Case> memory_cases() {
   // 206.1 MiB.
   const std::string star = "(" + repeat("1,", 2999) + "1);";
   const std::string limit = "above the memory limit of (1|100) MiB \\(--memory-limit\\)";
+  // Twenty parameters per module, doubling at every step: the string outgrows any machine.
+  const std::string wide = "A(" + repeat("1,", 19) + "1)";
+  const std::string params = "A(a,b,c,d,e,f,g,h,i,j,k,l,m,n,o,p,q,r,s,t)";
   return {
+      // Under an address-space limit far below half the machine's memory the default budget
+      // follows the limit: a clean error, not std::bad_alloc.
+      {"DoublingModulesUnderAnAddressSpaceLimit",
+       {{"w.l", "derivation length: 40\nAxiom: " + wide + "\n" + params + " --> " + params +
+                    params + "\n"}},
+       {},
+       "lsystem derive {dir}/w.l --json",
+       1,
+       "above the memory limit of [0-9.]+ MiB \\(--memory-limit\\)",
+       {},
+       "ulimit -v 1500000; "},
       {"LsystemStringOverTheMemoryLimit",
        {{"g.l", "derivation length: 40\n" + doubling}},
        {},
