@@ -125,6 +125,7 @@ struct GrowOptions {
   int years = -1;
   std::int64_t seed = -1;
   std::vector<std::string> settings;  // --set NAME=VALUE
+  std::int64_t max_internodes = -1;   // -1: from the parameters (1 000 000 by default)
   bool json = false;
 };
 
@@ -214,6 +215,7 @@ environment::GrowthParams grow_params(const GrowOptions& o) {
   }
   if (o.years >= 0) params.years = o.years;
   if (o.seed >= 0) params.seed = static_cast<std::uint64_t>(o.seed);
+  if (o.max_internodes > 0) params.max_internodes = static_cast<std::size_t>(o.max_internodes);
   return params;
 }
 
@@ -227,7 +229,15 @@ void run_grow(const GrowOptions& o) {
   if (!o.scene.empty()) scene = environment::read_scene_file(o.scene);
   tree_format_for(o.out, o.format);  // fail on a bad output name before growing
   const auto t0 = std::chrono::steady_clock::now();
-  const environment::GrowthResult r = environment::grow_tree(params, scene);
+  environment::GrowthResult r;
+  try {
+    r = environment::grow_tree(params, scene);
+  } catch (const environment::GrowthLimitError& e) {
+    // The library names the parameters' values; the command line knows where they came from.
+    std::string source = o.preset.empty() ? o.params : "preset " + o.preset;
+    for (const std::string& s : o.settings) source += " --set " + s;
+    throw environment::GrowthLimitError(source + ": " + e.message());
+  }
   const double seconds = seconds_since(t0);
   write_tree_file(r.tree, o.out, o.format);
   if (o.json) {
@@ -306,6 +316,10 @@ void add_environment_commands(CLI::App& app) {
   g->add_option("--set", grow->settings,
                 "NAME=VALUE: any parameter of docs/environment.md over the preset or PARAMS "
                 "(repeatable), e.g. --set apical_control=0.6");
+  g->add_option("--max-internodes", grow->max_internodes,
+                "Stop with a message when the tree has more internodes than this (default: "
+                "max_internodes of the parameters, 1000000)")
+      ->check(number_in(1, 9e18));
   g->add_option("-o,--output", grow->out, "Output tree file (.tree, .treeb, .nwk, .mtg)")
       ->required();
   g->add_option("--format", grow->format, "Output format (default: from the extension)");

@@ -15,6 +15,7 @@
 #include "fspm/error.hpp"
 #include "fspm/newick_format.hpp"
 #include "fspm/number_column.hpp"
+#include "fspm/number_text.hpp"
 #include "fspm/statistics.hpp"
 #include "fspm/tree_file.hpp"
 
@@ -94,6 +95,9 @@ void run_distance(const DistanceOptions& o) {
   const EditDistanceResult r = constrained_edit_distance(a, b, opt);
   if (o.json) {
     nlohmann::json j{{"distance", r.distance},
+                     {"normalized_distance", r.normalized},
+                     {"deletion_cost_a", r.deletion_cost_a},
+                     {"insertion_cost_b", r.insertion_cost_b},
                      {"nodes_a", r.nodes_a},
                      {"nodes_b", r.nodes_b},
                      {"cost", std::string(edit_cost_kind_name(o.cost))},
@@ -107,7 +111,11 @@ void run_distance(const DistanceOptions& o) {
     print_json(j);
     return;
   }
-  std::cout << "distance: " << nlohmann::json(r.distance).dump() << '\n'
+  // The normalized distance gives the raw one a scale: 0 identical, 1 nothing in common.
+  std::cout << "distance: " << format_significant(r.distance) << '\n'
+            << "normalized_distance: " << format_significant(r.normalized)
+            << " (of deleting A and inserting B, "
+            << format_significant(r.deletion_cost_a + r.insertion_cost_b) << ")\n"
             << "nodes_a: " << r.nodes_a << '\n'
             << "nodes_b: " << r.nodes_b << '\n';
   if (o.mapping) {
@@ -169,7 +177,7 @@ void run_ttest(const TTestOptions& o) {
   for (const char* key : {"t", "df", "p", "mean_a", "mean_b", "sd_a", "sd_b", "n_a", "n_b",
                           "estimate", "confidence_interval", "cohens_d"}) {
     if (j[key].is_null()) continue;
-    std::cout << "  " << key << ": " << j[key].dump() << '\n';
+    std::cout << "  " << key << ": " << human_text(j[key]) << '\n';
   }
 }
 
@@ -189,7 +197,7 @@ void run_mann_whitney(const MannWhitneyOptions& o) {
     return;
   }
   for (const char* key : {"u", "p", "exact", "n_a", "n_b"}) {
-    std::cout << key << ": " << j[key].dump() << '\n';
+    std::cout << key << ": " << human_text(j[key]) << '\n';
   }
 }
 
@@ -206,7 +214,7 @@ void run_describe(const DescribeOptions& o) {
     return;
   }
   for (const char* key : {"n", "mean", "sd", "confidence_interval"}) {
-    std::cout << key << ": " << j[key].dump() << '\n';
+    std::cout << key << ": " << human_text(j[key]) << '\n';
   }
 }
 

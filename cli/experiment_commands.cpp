@@ -28,6 +28,7 @@
 #include "experiments/model_factory.hpp"
 #include "experiments/mpi_runner.hpp"
 #include "experiments/report.hpp"
+#include "experiments/report_findings.hpp"
 #include "experiments/report_intro.hpp"
 #include "experiments/results_export.hpp"
 #include "experiments/run_plan.hpp"
@@ -35,6 +36,7 @@
 #include "experiments/slurm_script.hpp"
 #include "fspm/atomic_file.hpp"
 #include "fspm/error.hpp"
+#include "fspm/number_text.hpp"
 #include "graphics/render.hpp"
 
 namespace fspm::cli {
@@ -158,10 +160,11 @@ ex::ComparisonResults compare_runs(const std::string& dir, std::size_t jobs, boo
   }
   if (quiet) return c;
   std::cout << (fs::path(dir) / ex::kPairsFile).string() << ": " << c.pairs.size()
-            << " pairs compared in " << c.seconds << " s\n";
+            << " pairs compared in " << format_significant(c.seconds) << " s\n";
   for (const ex::TTestRow& t : c.tests) {
-    std::cout << "t-test " << t.a << " vs " << t.b << " (" << t.group << "): t = " << t.t
-              << ", df = " << t.df << ", p = " << t.p
+    std::cout << "t-test " << t.a << " vs " << t.b << " (" << t.group << ", "
+              << ex::distance_scale_name(t.scale) << " distance): t = " << format_significant(t.t)
+              << ", df = " << format_significant(t.df) << ", p = " << format_significant(t.p)
               << (t.significant() ? " (significant)" : " (not significant)") << '\n';
   }
   return c;
@@ -176,6 +179,7 @@ nlohmann::json comparisons_json(const std::string& dir, const ex::ComparisonResu
                      {"group", t.group},
                      {"test", t.welch ? "welch" : "student"},
                      {"alternative", std::string(alternative_name(t.alternative))},
+                     {"distance", std::string(ex::distance_scale_name(t.scale))},
                      {"t", t.t},
                      {"df", t.df},
                      {"p", t.p},
@@ -369,22 +373,26 @@ ReportInputs read_report_inputs(const ex::ResultsDb& db, const std::string& dir)
 std::string report_markdown(const ex::ResultsDb& db, const ReportInputs& in, const std::string& dir,
                             bool figures, bool html) {
   const ex::Experiment* x = in.x ? &*in.x : nullptr;
-  std::string md = ex::markdown_report(db.info(), in.runs, x ? ex::report_introduction(*x) : "");
+  // What was found first (findings, comparisons and their plots), then the metrics per point,
+  // the timings last.
+  std::string opening = x ? ex::report_introduction(*x) : "";
+  if (x != nullptr && in.comparisons) {
+    opening += ex::findings_markdown(*x, in.comparisons->tests);
+    opening += ex::comparisons_markdown(*x, *in.comparisons);
+    if (html) opening += html_comparisons_markdown();
+    if (figures) opening += comparison_figures(*x, *in.comparisons, dir);
+    opening += "\n";
+  } else if (x != nullptr && !x->comparisons.empty()) {
+    opening += "The comparisons have not been computed yet: run `fspm compare " + dir + "`.\n\n";
+  }
+  std::string md = ex::markdown_report(db.info(), in.runs, opening);
   md += in.note;
   if (x == nullptr) return md;
   if (html) md += html_sweeps_markdown(db.info(), in.runs);
   if (figures) md += sweep_figures(*x, db.info(), in.runs, dir);
   md += ex::summary_tables_markdown(*x, in.runs);
-  if (in.comparisons) {
-    md += "\n" + ex::comparisons_markdown(*x, *in.comparisons);
-    const std::string overview = ex::ttest_overview(*x, in.comparisons->tests);
-    if (!overview.empty()) md += "\n" + overview;
-    if (html) md += html_comparisons_markdown();
-    if (figures) md += comparison_figures(*x, *in.comparisons, dir);
-  } else if (!x->comparisons.empty()) {
-    md += "\nThe comparisons have not been computed yet: run `fspm compare " + dir + "`.\n";
-  }
   if (figures) md += tree_renders(*x, in.runs, dir);
+  md += ex::timings_markdown(db.info(), in.runs);  // last: for whoever plans the next sweep
   return md;
 }
 

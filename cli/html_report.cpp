@@ -107,12 +107,13 @@ fs::path write_html_report(const HtmlReportInput& in) {
   const fs::path report_dir = fs::path(in.dir) / "report";
   copy_report_web(report_dir / "lib");
   std::string markdown = in.markdown;
-  json data = {
-      {"title", "Experiment " + in.info->name},
-      {"swept", in.info->swept},
-      {"runs", html_runs_json(*in.info, *in.runs)},
-      {"comparisons", json::array()},
-      {"pairs", html_pairs_json(in.comparisons ? *in.comparisons : ex::ComparisonResults{})}};
+  json data = {{"title", "Experiment " + in.info->name},
+               {"swept", in.info->swept},
+               {"runs", html_runs_json(*in.info, *in.runs)},
+               {"comparisons", json::array()},
+               {"pairs", html_pairs_json(in.comparisons ? *in.comparisons : ex::ComparisonResults{},
+                                         in.experiment ? in.experiment->distance.tested
+                                                       : ex::DistanceScale::kNormalized)}};
   std::optional<ex::ModelKind> kind;
   if (in.experiment != nullptr) {
     kind = in.experiment->model_kind;

@@ -58,8 +58,10 @@ json html_metrics_json(const ex::ExperimentInfo& info, std::optional<ex::ModelKi
   return out;
 }
 
-json html_pairs_json(const ex::ComparisonResults& results) {
-  json out = {{"comparison", json::array()},
+json html_pairs_json(const ex::ComparisonResults& results, ex::DistanceScale scale) {
+  json out = {{"scale", std::string(ex::distance_scale_name(scale))},
+              {"raw_distance", json::array()},
+              {"comparison", json::array()},
               {"group", json::array()},
               {"run_a", json::array()},
               {"run_b", json::array()},
@@ -69,7 +71,8 @@ json html_pairs_json(const ex::ComparisonResults& results) {
     out["group"].push_back(p.group);
     out["run_a"].push_back(p.run_a);
     out["run_b"].push_back(p.run_b);
-    out["distance"].push_back(number_or_null(p.distance));
+    out["distance"].push_back(number_or_null(p.value(scale)));
+    out["raw_distance"].push_back(number_or_null(p.distance));
   }
   return out;
 }

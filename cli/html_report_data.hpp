@@ -24,6 +24,9 @@ nlohmann::json html_metrics_json(const experiments::ExperimentInfo& info,
                                  std::optional<experiments::ModelKind> model_kind);
 
 // {"comparison": [..], "group": [..], "run_a": [..], "run_b": [..], "distance": [..]}.
-nlohmann::json html_pairs_json(const experiments::ComparisonResults& results);
+// "distance" holds the distance the t-tests compare (`scale`, the experiment's distance.tested),
+// "raw_distance" the raw one.
+nlohmann::json html_pairs_json(const experiments::ComparisonResults& results,
+                               experiments::DistanceScale scale);
 
 }  // namespace fspm::cli

@@ -118,6 +118,17 @@ void add_input_format_option(CLI::App* command, std::string& format) {
 
 void print_json(const nlohmann::json& document) { std::cout << document.dump(2) << '\n'; }
 
+std::string human_text(const nlohmann::json& value) {
+  if (value.is_number_float()) return format_significant(value.get<double>());
+  if (!value.is_array()) return value.dump();
+  std::string out = "[";
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    if (i > 0) out += ", ";
+    out += human_text(value[i]);
+  }
+  return out + "]";
+}
+
 void use_checked_standard_output() {
   // Never destroyed: std::cout is flushed once more after main returns.
   static auto* buffer = new StandardOutputBuffer();

@@ -14,6 +14,11 @@ namespace fspm::cli {
 // Prints one JSON document on stdout (pretty, newline-terminated).
 void print_json(const nlohmann::json& document);
 
+// A JSON value as people read it: floating-point numbers to four significant digits
+// (format_significant), arrays as "[a, b]", integers, booleans and strings as JSON writes them.
+// The --json form of the same command keeps every digit.
+std::string human_text(const nlohmann::json& value);
+
 // Routes std::cout through a buffer that remembers the system's reason of a failed write; then
 // finish_standard_output() flushes and throws IoError naming "standard output" and that reason
 // ("No space left on device", "Bad file descriptor") when any write failed. Both are called

@@ -146,7 +146,9 @@ std::string sweep_figures(const ex::Experiment& x, const ex::ExperimentInfo& inf
 std::string comparison_figures(const ex::Experiment& x, const ex::ComparisonResults& c,
                                const std::string& dir) {
   std::map<std::string, std::map<std::string, std::vector<double>>> by_group;
-  for (const ex::PairDistance& p : c.pairs) by_group[p.group][p.comparison].push_back(p.distance);
+  for (const ex::PairDistance& p : c.pairs) {
+    by_group[p.group][p.comparison].push_back(p.value(x.distance.tested));
+  }
   std::string md =
       "\n### Figures\n\nOne box plot per group: the box spans the middle half of the distances "
       "(first to third quartile) with a line at the median, the whiskers reach the smallest and "
@@ -167,7 +169,8 @@ std::string comparison_figures(const ex::Experiment& x, const ex::ComparisonResu
       const std::string file = "figures/comparisons_" + std::to_string(index++) + ".png";
       graphics::ChartOptions options;
       options.title = group;
-      options.y_label = "edit distance";
+      options.y_label = x.distance.tested == ex::DistanceScale::kRaw ? "edit distance"
+                                                                     : "normalized edit distance";
       options.width = 640;
       options.height = 420;
       graphics::write_box_plot(names, values, options, (fs::path(dir) / file).string());

@@ -106,14 +106,14 @@ void run_info(const InfoOptions& o) {
     print_json(j);
     return;
   }
-  // Text for reading: lengths in metres to the centimetre, counts as they are.
+  // Text for reading: lengths in metres to four significant digits, counts as they are.
   std::cout << o.file << '\n';
   for (const char* key : {"nodes", "internodes", "leaves", "flowers", "buds", "tips", "max_order",
                           "max_depth", "pruned", "positions_inferred", "radii_inferred"}) {
     if (j.contains(key)) std::cout << "  " << key << ": " << j[key].dump() << '\n';
   }
   for (const char* key : {"height", "total_length", "crown_width", "crown_depth"}) {
-    std::cout << "  " << key << ": " << fmt::format("{:.2f}", j[key].get<double>()) << " m\n";
+    std::cout << "  " << key << ": " << human_text(j[key]) << " m\n";
   }
   std::cout << "  branches_per_order: " << j["branches_per_order"].dump() << '\n';
   std::cout << "  attributes: " << j["attributes"].dump() << '\n';

@@ -15,6 +15,7 @@
 #include "fspm/attribute_names.hpp"
 #include "fspm/error.hpp"
 #include "fspm/memory_budget.hpp"
+#include "fspm/number_text.hpp"
 
 namespace fspm::environment {
 namespace {
@@ -76,6 +77,7 @@ class Grower {
     shoots_.push_back({0, 0, 0, -1, true});
     grown_ = 1;
     for (int year = 1; year <= p_.years; ++year) cycle(year);
+    check_size_limits(p_.years);
     return finish();
   }
 
@@ -124,6 +126,7 @@ class Grower {
   }
 
   void cycle(int year) {
+    check_size_limits(year - 1);
     expire_lateral_buds(year);
     sense_light(year);
     accumulate_light(year);
@@ -138,6 +141,31 @@ class Grower {
       if (ms_[k].terminal_bud && v_terminal_[k] >= vmin) grow_shoot(k, true, v_terminal_[k], year);
       if (ms_[k].lateral_bud && v_lateral_[k] >= vmin) grow_shoot(k, false, v_lateral_[k], year);
     }
+  }
+
+  // Stops a tree that explodes before its light model does (a shadow grid over hundreds of metres
+  // runs out of voxels with a message about voxels, not about the parameters).
+  // `year`: the cycles grown so far.
+  void check_size_limits(int year) const {
+    std::size_t internodes = 0;
+    double height_m = 0.0;
+    for (const Metamer& m : ms_) {
+      if (!m.alive) continue;
+      ++internodes;
+      height_m = std::max(height_m, m.end.z() - base_.z());
+    }
+    const bool too_many = internodes > p_.max_internodes;
+    if (!too_many && !(height_m > p_.max_height_m)) return;
+    const auto g = [](double v) { return format_significant(v); };
+    // Short enough to stay whole under kMaxErrorMessageLength with the command line's prefix.
+    throw GrowthLimitError("growth stopped after year " + std::to_string(year) + " of " +
+                           std::to_string(p_.years) + ": " + std::to_string(internodes) +
+                           " internodes, " + g(height_m) + " m tall, above " +
+                           (too_many ? "max_internodes = " + std::to_string(p_.max_internodes)
+                                     : "max_height_m = " + g(p_.max_height_m) + " m") +
+                           "; the parameters make the tree explode (alpha " + g(p_.alpha) +
+                           ", apical_control " + g(p_.apical_control) +
+                           "): change them or raise the limit (--max-internodes, max_height_m)");
   }
 
   // The metamers this cycle's shoots will add (the count grow_shoot gives each), checked against

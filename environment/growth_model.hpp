@@ -13,6 +13,7 @@
 
 #include "environment/growth_params.hpp"
 #include "environment/scene.hpp"
+#include "fspm/error.hpp"
 #include "fspm/tree_graph.hpp"
 
 namespace fspm::environment {
@@ -31,6 +32,13 @@ struct GrowthResult {
   std::size_t grown = 0;  // internodes created over the whole run (shed ones included)
   double height_m = 0.0;
   std::vector<Sphere> cluster_spheres;  // the final leaf clusters, for the light model
+};
+
+// Growth stopped by GrowthParams::max_internodes or max_height_m: the message gives the year, the
+// size reached, the limit and the vigour parameters that drove it.
+class GrowthLimitError : public ValueError {
+ public:
+  using ValueError::ValueError;
 };
 
 // Grows a tree at `base` (the first internode points up) in `scene` (its occluders shade and

@@ -190,6 +190,9 @@ void validate(const GrowthParams& p) {
   check(p.internode_length_m > 0 && std::isfinite(p.internode_length_m), "internode_length_m",
         "a positive length");
   check(p.max_shoot_metamers >= 1, "max_shoot_metamers", "an integer >= 1");
+  check(p.max_internodes >= 1, "max_internodes", "an integer >= 1");
+  check(p.max_height_m > 0 && !std::isnan(p.max_height_m), "max_height_m",
+        "a positive length or inf");
   check(p.min_shoot_vigour >= 0 && std::isfinite(p.min_shoot_vigour), "min_shoot_vigour",
         "a non-negative number");
   check(p.light_half_saturation > 0 && !std::isnan(p.light_half_saturation),
@@ -263,6 +266,16 @@ GrowthParams parse_growth_params(std::string_view text, const std::string& file_
       {"apical_control", {real(p.apical_control, 0, 1), "a number in [0, 1]"}},
       {"internode_length_m", {real(p.internode_length_m, 1e-12, kBig), "a positive length"}},
       {"max_shoot_metamers", {integer(p.max_shoot_metamers, 1, 1000), "an integer in [1, 1000]"}},
+      {"max_internodes",
+       {integer(p.max_internodes, 1, std::numeric_limits<long long>::max()), "an integer >= 1"}},
+      {"max_height_m",
+       {[&p](const toml::node& n) {
+          const auto v = n.value<double>();
+          if (!v || std::isnan(*v) || !(*v > 0)) return false;
+          p.max_height_m = *v;
+          return true;
+        },
+        "a positive length or inf"}},
       {"branching_angle_deg", {real(p.branching_angle_deg, -180, 180), "an angle in [-180, 180]"}},
       {"phyllotaxy_deg", {real(p.phyllotaxy_deg, -360, 360), "an angle in [-360, 360]"}},
       {"perturbation_deg", {real(p.perturbation_deg, 0, 90), "an angle in [0, 90]"}},

@@ -2,6 +2,7 @@
 // Parameters of the self-organizing growth model (Palubicki et al. 2009 as used by Pirk 4.5.4),
 // read from TOML (docs/environment.md) or taken from Pirk's tree types A, B and C.
 #include <Eigen/Core>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -37,6 +38,11 @@ struct GrowthParams {
   double internode_length_m = 0.15;
   int max_shoot_metamers = 5;
   double min_shoot_vigour = 0.5;
+  // Guards against parameters that make the tree explode (GrowthLimitError): growth stops when
+  // the tree has more internodes than this, or is taller than max_height_m (the tallest trees
+  // measured are about 116 m; a taller tree here means the vigour runs away).
+  std::size_t max_internodes = 1'000'000;
+  double max_height_m = 150.0;
   double branching_angle_deg = 40.0;
   double phyllotaxy_deg = 137.5;
   double perturbation_deg = 4.0;

@@ -75,6 +75,14 @@ std::vector<Eigen::Vector3d> read_points_csv(const std::string& path) {
   return parse_points_csv(read_text_input_file(path), path);
 }
 
+namespace {
+
+// A component of a unit vector below 1e-12 in magnitude is the rounding noise of a sum of terms
+// that cancel (a direction in the x-z plane gets dy = -3.2e-18): written as the 0 it is.
+double unit_component(double c) { return std::abs(c) < 1e-12 ? 0.0 : c; }
+
+}  // namespace
+
 void write_light_csv(std::ostream& out, std::span<const Eigen::Vector3d> points,
                      std::span<const LightSample> samples) {
   write_light_csv(out, points, samples, {});
@@ -97,9 +105,9 @@ void write_light_csv(std::ostream& out, std::span<const Eigen::Vector3d> points,
     put(points[i].y(), ',');
     put(points[i].z(), ',');
     put(samples[i].light, ',');
-    put(samples[i].direction.x(), ',');
-    put(samples[i].direction.y(), ',');
-    put(samples[i].direction.z(), par ? ',' : '\n');
+    put(unit_component(samples[i].direction.x()), ',');
+    put(unit_component(samples[i].direction.y()), ',');
+    put(unit_component(samples[i].direction.z()), par ? ',' : '\n');
     if (par) {
       put(daylight[i].par_umol_m2_s, ',');
       put(daylight[i].daily_par_mol_m2, '\n');

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "experiments/parameter_set.hpp"
@@ -17,9 +18,21 @@ namespace fspm::experiments {
 // Runs whose parameters equal every given value (compared by their text, "20" matches 20).
 using RunFilter = ParameterSet;
 
+// Which distance the t-tests and the report's tables compare: the normalized one (0 identical,
+// 1 nothing in common; fspm/constrained_edit_distance.hpp), which does not grow with the size of
+// the trees, or the raw one (Pirk's Table 4.1).
+enum class DistanceScale { kNormalized, kRaw };
+inline constexpr DistanceScale kDistanceScales[] = {DistanceScale::kNormalized,
+                                                    DistanceScale::kRaw};
+// "normalized", "raw".
+inline std::string_view distance_scale_name(DistanceScale s) {
+  return s == DistanceScale::kRaw ? "raw" : "normalized";
+}
+
 // How two kept trees are compared (fspm distance's options).
 struct DistanceSpec {
   EditCostKind cost = EditCostKind::kStandardized;
+  DistanceScale tested = DistanceScale::kNormalized;
   std::vector<std::string> attributes;  // empty: the cost model's defaults
   std::optional<double> main_skeleton_radius_m;
 };

@@ -23,6 +23,7 @@
 #include "fspm/error.hpp"
 #include "fspm/input_file.hpp"
 #include "fspm/nesting_depth.hpp"
+#include "fspm/number_text.hpp"
 #include "fspm/statistics.hpp"
 #include "fspm/tree_file.hpp"
 
@@ -114,12 +115,10 @@ std::string csv_text(const std::string& s) {
   return out + "\"";
 }
 
-std::string number(double v, int precision = 6) {
+// A number in a table for people: four significant digits (pairs.csv has every digit).
+std::string number(double v) {
   if (!std::isfinite(v)) return "-";
-  std::ostringstream out;
-  out.precision(precision);
-  out << v;
-  return out.str();
+  return format_significant(v);
 }
 
 // Two significant digits down to 0.001 (p = 0.0016, p = 0.034, p = 0.27), below it p < 0.001.
@@ -199,6 +198,7 @@ ComparisonResults run_comparisons(const Experiment& x, const std::vector<RunReco
             read_tree_file((fs::path(out_dir) / *tree_file(*jobs_list[i].b)).string());
         const EditDistanceResult r = constrained_edit_distance(a, b, options);
         results.pairs[i].distance = r.distance;
+        results.pairs[i].normalized = r.normalized;
         results.pairs[i].nodes_a = r.nodes_a;
         results.pairs[i].nodes_b = r.nodes_b;
       } catch (const std::exception& e) {
@@ -218,7 +218,9 @@ std::vector<TTestRow> comparison_ttests(const Experiment& x, const std::vector<P
                                         std::vector<std::string>* notes) {
   // distances[comparison][group]
   std::map<std::string, std::map<std::string, std::vector<double>>> distances;
-  for (const PairDistance& p : pairs) distances[p.comparison][p.group].push_back(p.distance);
+  for (const PairDistance& p : pairs) {
+    distances[p.comparison][p.group].push_back(p.value(x.distance.tested));
+  }
   std::vector<TTestRow> rows;
   for (const TTestSpec& spec : x.ttests) {
     for (const auto& [group, a] : distances[spec.a]) {
@@ -227,9 +229,16 @@ std::vector<TTestRow> comparison_ttests(const Experiment& x, const std::vector<P
       const std::vector<double>& b = it->second;
       const Alternative alt = spec.alternative;
       TTestResult t;
+      TTestRow row;
       try {
         t = spec.welch ? welch_t_test(a, b, alt) : student_t_test(a, b, alt);
+        // The interval of the difference is two-sided whatever the test's alternative.
+        const TTestResult both = spec.welch ? welch_t_test(a, b) : student_t_test(a, b);
+        row.difference_low = both.confidence_interval.low;
+        row.difference_high = both.confidence_interval.high;
+        row.cohens_d = cohens_d(a, b);
       } catch (const ValueError& e) {
+        row.difference_low = row.difference_high = row.cohens_d = std::nan("");
         // Constant groups (zero standard error): t and p are undefined, not an error of the run.
         t.t = t.df = t.p = std::nan("");
         t.mean_a = mean(a);
@@ -243,10 +252,10 @@ std::vector<TTestRow> comparison_ttests(const Experiment& x, const std::vector<P
                            "): " + e.message());
         }
       }
-      TTestRow row;
       row.a = spec.a;
       row.b = spec.b;
       row.group = group;
+      row.scale = x.distance.tested;
       row.welch = spec.welch;
       row.alternative = spec.alternative;
       row.alpha = spec.alpha;
@@ -262,6 +271,12 @@ std::vector<TTestRow> comparison_ttests(const Experiment& x, const std::vector<P
       rows.push_back(row);
     }
   }
+  // Holm over the whole family: with 18 tests at alpha = 0.05, about one would come out
+  // significant by chance alone without it.
+  std::vector<double> p;
+  for (const TTestRow& r : rows) p.push_back(r.p);
+  const std::vector<double> holm = holm_adjusted(p);
+  for (std::size_t i = 0; i < rows.size(); ++i) rows[i].p_holm = holm[i];
   return rows;
 }
 
@@ -269,22 +284,25 @@ void write_comparisons(const ComparisonResults& results, const std::string& out_
   const fs::path dir(out_dir);
   write_file_atomically((dir / kPairsFile).string(), [&](std::ostream& out) {
     out.precision(17);
-    out << "comparison,group,run_a,run_b,seed_a,seed_b,distance,nodes_a,nodes_b\n";
+    out << "comparison,group,run_a,run_b,seed_a,seed_b,distance,normalized_distance,nodes_a,"
+           "nodes_b\n";
     for (const PairDistance& p : results.pairs) {
       out << csv_text(p.comparison) << ',' << csv_text(p.group) << ',' << p.run_a << ',' << p.run_b
-          << ',' << p.seed_a << ',' << p.seed_b << ',' << p.distance << ',' << p.nodes_a << ','
-          << p.nodes_b << '\n';
+          << ',' << p.seed_a << ',' << p.seed_b << ',' << p.distance << ',' << p.normalized << ','
+          << p.nodes_a << ',' << p.nodes_b << '\n';
     }
   });
   write_file_atomically((dir / kTTestsFile).string(), [&](std::ostream& out) {
     out.precision(17);
-    out << "a,b,group,test,alternative,t,df,p,alpha,significant,mean_a,sd_a,n_a,mean_b,sd_b,n_b\n";
+    out << "a,b,group,distance,test,alternative,t,df,p,alpha,significant,mean_a,sd_a,n_a,mean_b,sd_"
+           "b,n_b,p_holm,difference_low,difference_high,cohens_d\n";
     for (const TTestRow& t : results.tests) {
       out << csv_text(t.a) << ',' << csv_text(t.b) << ',' << csv_text(t.group) << ','
-          << (t.welch ? "welch" : "student") << ',' << alternative_name(t.alternative) << ',' << t.t
-          << ',' << t.df << ',' << t.p << ',' << t.alpha << ',' << (t.significant() ? 1 : 0) << ','
-          << t.mean_a << ',' << t.sd_a << ',' << t.n_a << ',' << t.mean_b << ',' << t.sd_b << ','
-          << t.n_b << '\n';
+          << distance_scale_name(t.scale) << ',' << (t.welch ? "welch" : "student") << ','
+          << alternative_name(t.alternative) << ',' << t.t << ',' << t.df << ',' << t.p << ','
+          << t.alpha << ',' << (t.significant() ? 1 : 0) << ',' << t.mean_a << ',' << t.sd_a << ','
+          << t.n_a << ',' << t.mean_b << ',' << t.sd_b << ',' << t.n_b << ',' << t.p_holm << ','
+          << t.difference_low << ',' << t.difference_high << ',' << t.cohens_d << '\n';
     }
   });
   json j;
@@ -297,6 +315,7 @@ void write_comparisons(const ComparisonResults& results, const std::string& out_
                           {"seed_a", p.seed_a},
                           {"seed_b", p.seed_b},
                           {"distance", p.distance},
+                          {"normalized_distance", p.normalized},
                           {"nodes_a", p.nodes_a},
                           {"nodes_b", p.nodes_b}});
   }
@@ -325,6 +344,7 @@ bool read_comparisons(const std::string& out_dir, ComparisonResults& results) {
       d.seed_a = p.at("seed_a").get<std::uint64_t>();
       d.seed_b = p.at("seed_b").get<std::uint64_t>();
       d.distance = p.at("distance").get<double>();
+      d.normalized = p.at("normalized_distance").get<double>();
       d.nodes_a = p.at("nodes_a").get<std::size_t>();
       d.nodes_b = p.at("nodes_b").get<std::size_t>();
       results.pairs.push_back(std::move(d));
@@ -332,7 +352,10 @@ bool read_comparisons(const std::string& out_dir, ComparisonResults& results) {
     results.notes = j.at("notes").get<std::vector<std::string>>();
     results.seconds = j.at("seconds").get<double>();
   } catch (const json::exception& e) {
-    throw ParseError(std::string("not a comparisons file: ") + e.what(), path.string());
+    throw ParseError(std::string("not a comparisons file of this fspm version (run `fspm compare` "
+                                 "on its directory again): ") +
+                         e.what(),
+                     path.string());
   }
   return true;
 }
@@ -352,11 +375,15 @@ ComparisonResults compare_results(const std::string& dir, std::size_t jobs) {
 std::string comparisons_markdown(const Experiment& x, const ComparisonResults& results) {
   std::ostringstream md;
   // distances[group][comparison]
-  std::map<std::string, std::map<std::string, std::vector<double>>> distances;
-  for (const PairDistance& p : results.pairs)
-    distances[p.group][p.comparison].push_back(p.distance);
-  md << "## Comparisons\n\nConstrained edit distance (" << edit_cost_kind_name(x.distance.cost)
-     << " costs";
+  std::map<std::string, std::map<std::string, std::vector<double>>> distances, raw;
+  for (const PairDistance& p : results.pairs) {
+    distances[p.group][p.comparison].push_back(p.value(x.distance.tested));
+    raw[p.group][p.comparison].push_back(p.distance);
+  }
+  const bool normalized = x.distance.tested == DistanceScale::kNormalized;
+  md << "## Comparisons\n\n"
+     << (normalized ? "Normalized constrained edit distance" : "Constrained edit distance") << " ("
+     << edit_cost_kind_name(x.distance.cost) << " costs";
   if (!x.distance.attributes.empty()) {
     md << " on";
     for (const std::string& a : x.distance.attributes) md << ' ' << a;
@@ -365,7 +392,14 @@ std::string comparisons_markdown(const Experiment& x, const ComparisonResults& r
     md << ", main skeleton: radius > " << number(*x.distance.main_skeleton_radius_m) << " m";
   }
   md << ") between pairs of runs, no run used twice within a comparison; per-pair values and "
-        "both runs' seeds in `pairs.csv`, tests in `ttests.csv`.\n\n";
+        "both runs' seeds in `pairs.csv`, tests in `ttests.csv`.";
+  if (normalized) {
+    md << " The normalized distance divides the distance by the cost of deleting all of one tree "
+          "and inserting all of the other: 0 for identical trees, 1 for trees with nothing in "
+          "common, whatever their size; the t-tests compare it (`tested = \"raw\"` in "
+          "`[distance]` tests the raw distance instead, whose mean is shown too).";
+  }
+  md << "\n\n";
   md << "| group | |";
   for (const ComparisonSpec& c : x.comparisons) md << ' ' << c.name << " |";
   md << "\n|---|---|";
@@ -383,11 +417,15 @@ std::string comparisons_markdown(const Experiment& x, const ComparisonResults& r
     };
     row("pairs",
         [](const std::string&, const std::vector<double>& v) { return std::to_string(v.size()); });
-    row("mean",
-        [](const std::string&, const std::vector<double>& v) { return number(mean(v), 5); });
+    row("mean", [](const std::string&, const std::vector<double>& v) { return number(mean(v)); });
     row("standard deviation", [](const std::string&, const std::vector<double>& v) {
-      return v.size() > 1 ? number(standard_deviation(v), 5) : std::string("-");
+      return v.size() > 1 ? number(standard_deviation(v)) : std::string("-");
     });
+    if (normalized) {
+      row("mean raw distance", [&](const std::string& name, const std::vector<double>&) {
+        return number(mean(raw[group][name]));
+      });
+    }
     row("p-value", [&](const std::string& name, const std::vector<double>&) {
       std::string cell;
       for (const TTestRow& t : results.tests) {
@@ -399,13 +437,19 @@ std::string comparisons_markdown(const Experiment& x, const ComparisonResults& r
     });
   }
   if (!results.tests.empty()) {
-    md << "\n### t-tests\n\n| group | a | b | test | t | df | p | significant at alpha |\n"
-          "|---|---|---|---|---|---|---|---|\n";
+    md << "\n### t-tests\n\nmean a - mean b with its 95 % confidence interval, Cohen's d, and p "
+          "before and after Holm's correction over all "
+       << results.tests.size()
+       << " tests (Holm 1979); significance is judged on the corrected p.\n\n"
+       << "| group | a | b | test | mean a - mean b [95 % CI] | Cohen's d | t | df | p | Holm p | "
+          "significant at alpha |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const TTestRow& t : results.tests) {
       md << "| " << t.group << " | " << t.a << " | " << t.b << " | "
          << (t.welch ? "Welch" : "Student") << ", " << alternative_name(t.alternative) << " | "
-         << number(t.t, 4) << " | " << number(t.df, 4) << " | " << p_text(t.p) << " | "
-         << (t.significant() ? "yes" : "no") << " (" << number(t.alpha) << ") |\n";
+         << number(t.mean_a - t.mean_b) << " [" << number(t.difference_low) << ", "
+         << number(t.difference_high) << "] | " << number(t.cohens_d) << " | " << number(t.t)
+         << " | " << number(t.df) << " | " << p_text(t.p) << " | " << p_text(t.p_holm) << " | "
+         << (t.significant_holm() ? "yes" : "no") << " (" << number(t.alpha) << ") |\n";
     }
   }
   md << notes_markdown(results.notes);

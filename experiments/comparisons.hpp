@@ -2,7 +2,9 @@
 // The comparisons of an experiment (comparison_spec.hpp) carried out on its finished runs: pairs
 // drawn without reuse (deterministically from the experiment seed), the constrained edit distance
 // of every pair from the kept trees, and t-tests between groups of distances (Pirk 4.5.4).
-// Results go to DIR/pairs.csv (one row per pair, with both runs' seeds), DIR/ttests.csv and
+// The t-tests compare the normalized distance unless the experiment's [distance] says
+// tested = "raw". Results go to DIR/pairs.csv (one row per pair, with both runs' seeds, the raw
+// and the normalized distance), DIR/ttests.csv and
 // DIR/comparisons.json (what `fspm report` reads).
 #include <cstddef>
 #include <cstdint>
@@ -25,19 +27,32 @@ struct PairDistance {
   std::size_t run_a = 0, run_b = 0;
   std::uint64_t seed_a = 0, seed_b = 0;
   double distance = 0.0;
+  double normalized = 0.0;  // distance / (cost of deleting all of A and inserting all of B)
   std::size_t nodes_a = 0, nodes_b = 0;  // nodes compared
+  // The value tests and tables compare.
+  double value(DistanceScale scale) const {
+    return scale == DistanceScale::kRaw ? distance : normalized;
+  }
 };
 
 struct TTestRow {
   std::string a, b;  // comparison names
   std::string group;
+  DistanceScale scale = DistanceScale::kNormalized;  // which distance was tested
   bool welch = false;
   Alternative alternative = Alternative::kTwoSided;
   double alpha = 0.05;
   double t = 0.0, df = 0.0, p = 1.0;
   double mean_a = 0.0, sd_a = 0.0, mean_b = 0.0, sd_b = 0.0;
   std::size_t n_a = 0, n_b = 0;
+  // Effect size: mean_a - mean_b with its two-sided 95 % confidence interval (of the test's kind,
+  // Student or Welch) and Cohen's d (pooled standard deviation); NaN where undefined.
+  double difference_low = 0.0, difference_high = 0.0;
+  double cohens_d = 0.0;
+  // p after Holm's correction over every t-test of the experiment (all groups: one family).
+  double p_holm = 1.0;
   bool significant() const { return p < alpha; }  // false for a NaN p
+  bool significant_holm() const { return p_holm < alpha; }
 };
 
 struct ComparisonResults {

@@ -319,9 +319,12 @@ Kind one_of(const Reader& r, const std::string& key, const toml::node& node, con
 void parse_distance(const Reader& r, const toml::table& root, Experiment& x) {
   const toml::table* d = r.table(root, "distance", false);
   if (d == nullptr) return;
-  r.only_keys("distance", *d, {"cost", "attributes", "main_skeleton_radius_m"});
+  r.only_keys("distance", *d, {"cost", "attributes", "main_skeleton_radius_m", "tested"});
   if (const toml::node* n = d->get("cost")) {
     x.distance.cost = one_of(r, "distance.cost", *n, kEditCostKinds, edit_cost_kind_name);
+  }
+  if (const toml::node* n = d->get("tested")) {
+    x.distance.tested = one_of(r, "distance.tested", *n, kDistanceScales, distance_scale_name);
   }
   if (const toml::node* n = d->get("attributes")) {
     x.distance.attributes = string_list(r, "distance.attributes", *n);

@@ -10,18 +10,13 @@
 #include "experiments/grow_set.hpp"
 #include "experiments/metrics.hpp"
 #include "experiments/model_factory.hpp"
+#include "fspm/number_text.hpp"
 #include "fspm/tree_file.hpp"
 
 namespace fspm::experiments {
 namespace {
 
-std::string number(double v) {
-  if (v == std::round(v) && std::abs(v) < 1e15) return std::to_string(static_cast<long long>(v));
-  std::ostringstream out;
-  out.precision(4);
-  out << v;
-  return out.str();
-}
+std::string number(double v) { return format_significant(v); }
 
 bool matches(const RunRecord& r, const RunFilter& where) {
   for (const auto& [name, value] : where) {

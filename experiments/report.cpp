@@ -16,10 +16,7 @@ namespace {
 std::string number(double v) {
   if (!std::isfinite(v)) return "-";
   // Four significant digits are plenty in a table; the database keeps the exact values.
-  std::ostringstream out;
-  out.precision(4);
-  out << v;
-  return out.str();
+  return format_significant(v);
 }
 
 std::string cell(const Moments& m) {
@@ -128,6 +125,32 @@ std::string metric_unit(const std::string& metric, std::optional<ModelKind> mode
   return unit;
 }
 
+namespace {
+
+// Per parameter point: its runs, swept values and the moments of every metric over its
+// successful runs.
+std::map<std::size_t, Point> point_statistics(const ExperimentInfo& info,
+                                              const std::vector<RunRecord>& runs) {
+  std::map<std::size_t, Point> points;
+  for (const RunRecord& r : runs) {
+    Point& p = points[r.point];
+    ++p.runs;
+    for (const std::string& name : info.swept) {
+      const auto it = r.parameters.find(name);
+      p.values[name] = it == r.parameters.end() ? "-" : parameter_text(it->second);
+    }
+    if (r.status != RunStatus::kOk) continue;
+    for (const std::string& metric : info.metrics) {
+      const auto it = r.metrics.find(metric);
+      if (it == r.metrics.end() || !std::isfinite(it->second)) continue;
+      p.metrics[metric].add(it->second);
+    }
+  }
+  return points;
+}
+
+}  // namespace
+
 std::string markdown_report(const ExperimentInfo& info, const std::vector<RunRecord>& runs,
                             const std::string& introduction) {
   std::ostringstream md;
@@ -146,45 +169,19 @@ std::string markdown_report(const ExperimentInfo& info, const std::vector<RunRec
   md << "| " << info.total_runs << " | " << runs.size() << " | " << ok << " | " << error << " | "
      << timeout << " | " << info.total_runs - std::min(info.total_runs, runs.size()) << " |\n\n";
 
-  std::map<std::size_t, Point> points;
-  for (const RunRecord& r : runs) {
-    Point& p = points[r.point];
-    ++p.runs;
-    for (const std::string& name : info.swept) {
-      const auto it = r.parameters.find(name);
-      p.values[name] = it == r.parameters.end() ? "-" : parameter_text(it->second);
-    }
-    if (r.status != RunStatus::kOk) continue;
-    for (const std::string& metric : info.metrics) {
-      const auto it = r.metrics.find(metric);
-      if (it == r.metrics.end() || !std::isfinite(it->second)) continue;
-      p.metrics[metric].add(it->second);
-    }
-  }
+  const std::map<std::size_t, Point> points = point_statistics(info, runs);
 
-  // What the plants did and how long the software took, in separate tables: a botanist reads
-  // the first, whoever plans the next sweep the second.
+  // What the plants did here; how long the software took in timings_markdown, at the end.
   const std::optional<ModelKind> kind = model_kind_of(info.experiment_text);
   const std::vector<std::string> biological = metrics_of_kind(info.metrics, false);
-  const std::vector<std::string> timings = metrics_of_kind(info.metrics, true);
   if (!biological.empty()) {
     md << "## Metrics per parameter point\n\nMean ± sample standard deviation over the successful "
           "replicates of each point.\n\n";
     point_table(md, info, points, biological, kind);
-  }
-  if (!timings.empty()) {
-    md << "\n## Timings per parameter point\n\nSeconds of computing time, mean ± sample standard "
-          "deviation over the successful replicates of each point.\n\n";
-    point_table(md, info, points, timings, kind);
-  }
-
-  for (const SweptParameter& parameter : sweep_summary(info, runs)) {
-    md << "\n## Marginal means over `" << escape(parameter.name)
-       << "`\n\nMean ± sample standard deviation over all successful runs with each value.\n\n";
-    if (!biological.empty()) marginal_table(md, parameter, biological, kind);
-    if (!timings.empty()) {
-      if (!biological.empty()) md << "\nTimings:\n\n";
-      marginal_table(md, parameter, timings, kind);
+    for (const SweptParameter& parameter : sweep_summary(info, runs)) {
+      md << "\n## Marginal means over `" << escape(parameter.name)
+         << "`\n\nMean ± sample standard deviation over all successful runs with each value.\n\n";
+      marginal_table(md, parameter, biological, kind);
     }
   }
 
@@ -195,6 +192,22 @@ std::string markdown_report(const ExperimentInfo& info, const std::vector<RunRec
       md << "| " << r.run << " | " << run_status_name(r.status) << " | " << escape(r.error)
          << " |\n";
     }
+  }
+  return md.str();
+}
+
+std::string timings_markdown(const ExperimentInfo& info, const std::vector<RunRecord>& runs) {
+  const std::vector<std::string> timings = metrics_of_kind(info.metrics, true);
+  if (timings.empty()) return {};
+  const std::optional<ModelKind> kind = model_kind_of(info.experiment_text);
+  std::ostringstream md;
+  md << "\n## Timings per parameter point\n\nSeconds of computing time, mean ± sample standard "
+        "deviation over the successful replicates of each point.\n\n";
+  point_table(md, info, point_statistics(info, runs), timings, kind);
+  for (const SweptParameter& parameter : sweep_summary(info, runs)) {
+    md << "\n### Timings over `" << escape(parameter.name)
+       << "`\n\nMean ± sample standard deviation over all successful runs with each value.\n\n";
+    marginal_table(md, parameter, timings, kind);
   }
   return md.str();
 }

@@ -22,8 +22,15 @@ std::string length_unit(std::optional<ModelKind> model_kind);
 // "length" written as the model's length unit; empty for an unknown metric.
 std::string metric_unit(const std::string& metric, std::optional<ModelKind> model_kind);
 
+// The title, `introduction`, run counts, the plant metrics per point and their marginal means,
+// and the failed runs. The timings (metrics in seconds) are left to timings_markdown, which a
+// report puts last: a botanist reads the plants first, whoever plans the next sweep the times.
 std::string markdown_report(const ExperimentInfo& info, const std::vector<RunRecord>& runs,
                             const std::string& introduction = "");
+
+// "## Timings": seconds of computing time per parameter point and their marginal means; empty
+// when no timing metric was recorded.
+std::string timings_markdown(const ExperimentInfo& info, const std::vector<RunRecord>& runs);
 
 // The experiment's [[table]]s: mean ± standard deviation of the listed metrics over the
 // successful runs matching `where`, one row per combination of the `by` values (Pirk Table 4.2

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "experiments/metrics.hpp"
+#include "experiments/scene_words.hpp"
 
 namespace fspm::experiments {
 namespace {
@@ -67,7 +68,11 @@ std::string names_text(const std::vector<std::string>& names) {
 
 void what_was_run(std::ostream& md, const Experiment& x) {
   md << "**What was run.** " << x.runs() << " runs of " << model_words(x);
-  if (!x.model_scene.empty()) md << ", in the scene `" << shown_path(x, x.model_scene) << "`";
+  if (!x.model_scene.empty()) {
+    md << ", in the scene `" << shown_path(x, x.model_scene) << "`";
+    const std::string words = scene_in_words(x.model_scene);
+    if (!words.empty()) md << " (" << words << ")";
+  }
   md << ": ";
   if (x.sweep.empty() && !x.sampling) {
     md << "one parameter point";
@@ -177,33 +182,6 @@ std::string report_introduction(const Experiment& x) {
   comparison_meanings(md, x);
   if (!x.about.empty()) md << x.about << (x.about.ends_with('\n') ? "\n" : "\n\n");
   return md.str();
-}
-
-std::string ttest_overview(const Experiment& x, const std::vector<TTestRow>& tests) {
-  std::ostringstream md;
-  for (const TTestSpec& spec : x.ttests) {
-    std::size_t groups = 0, significant = 0, a_larger = 0, undefined = 0;
-    for (const TTestRow& t : tests) {
-      if (t.a != spec.a || t.b != spec.b) continue;
-      ++groups;
-      if (std::isnan(t.p)) ++undefined;
-      if (!t.significant()) continue;
-      ++significant;
-      a_larger += t.mean_a > t.mean_b;
-    }
-    if (groups == 0) continue;
-    md << "- " << spec.a << " against " << spec.b << ": significantly different in " << significant
-       << " of " << groups << (groups == 1 ? " group" : " groups");
-    if (significant > 0) {
-      md << " (" << spec.a << " larger in " << a_larger << ", smaller in " << significant - a_larger
-         << ")";
-    }
-    md << ", not in " << groups - significant - undefined;
-    if (undefined > 0) md << ", undefined in " << undefined;
-    md << ".\n";
-  }
-  const std::string text = md.str();
-  return text.empty() ? text : "In short (p < alpha counts as different):\n\n" + text;
 }
 
 }  // namespace fspm::experiments

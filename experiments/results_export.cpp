@@ -32,6 +32,9 @@ std::string number_cell(double v) {
   return out;
 }
 
+// A number in text for people: four significant digits (export and --json keep every digit).
+std::string human(double v) { return std::isfinite(v) ? format_significant(v) : "-"; }
+
 struct Stats {
   std::size_t count = 0;
   double sum = 0.0;
@@ -130,7 +133,7 @@ std::string results_summary_text(const ExperimentInfo& info, const std::vector<R
   out << "status: " << s["status"]["ok"].get<std::size_t>() << " ok, "
       << s["status"]["error"].get<std::size_t>() << " error, "
       << s["status"]["timeout"].get<std::size_t>() << " timeout\n";
-  out << "model run time: " << number_cell(s["run_seconds"].get<double>()) << " s in total\n";
+  out << "model run time: " << human(s["run_seconds"].get<double>()) << " s in total\n";
   if (!info.swept.empty()) {
     out << "swept:";
     for (const std::string& name : info.swept) out << ' ' << name;
@@ -143,8 +146,8 @@ std::string results_summary_text(const ExperimentInfo& info, const std::vector<R
     if (m["count"].get<std::size_t>() == 0) {
       out << "-\n";
     } else {
-      out << number_cell(m["mean"].get<double>()) << " [" << number_cell(m["min"].get<double>())
-          << ", " << number_cell(m["max"].get<double>()) << "]\n";
+      out << human(m["mean"].get<double>()) << " [" << human(m["min"].get<double>()) << ", "
+          << human(m["max"].get<double>()) << "]\n";
     }
   }
   for (const json& e : s["first_errors"]) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <numeric>
 #include <string>
 
 #include "fspm/error.hpp"
@@ -402,6 +403,8 @@ EditDistanceResult compute(const TreeGraph& a, const TreeGraph& b, const EditCos
   EditDistanceResult result;
   result.nodes_a = n1;
   result.nodes_b = n2;
+  result.deletion_cost_a = std::accumulate(del.begin(), del.end(), 0.0);
+  result.insertion_cost_b = std::accumulate(ins.begin(), ins.end(), 0.0);
   check_memory(programme_bytes(A, n2, max_degree(B), options.solver, options.with_mapping),
                "the edit distance of trees of " + std::to_string(n1) + " and " +
                    std::to_string(n2) + " nodes");
@@ -453,10 +456,18 @@ EditDistanceResult compute(const TreeGraph& a, const TreeGraph& b, const EditCos
     result.distance = run_programme(A, B, del, ins, relabel, options.solver, tbp);
   }
   if (tbp) result.mapping = trace_mapping(A, B, tb);
+  result.normalized =
+      normalized_edit_distance(result.distance, result.deletion_cost_a, result.insertion_cost_b);
   return result;
 }
 
 }  // namespace
+
+double normalized_edit_distance(double distance, double deletion_cost_a, double insertion_cost_b) {
+  const double scale = deletion_cost_a + insertion_cost_b;
+  if (!(scale > 0.0)) return 0.0;
+  return std::clamp(distance / scale, 0.0, 1.0);
+}
 
 std::vector<NodeId> main_skeleton_nodes(const TreeGraph& tree, double min_radius_m) {
   std::vector<NodeId> nodes;

@@ -42,12 +42,26 @@ struct EditDistanceOptions {
 
 struct EditDistanceResult {
   double distance = 0.0;
+  // distance / (deletion_cost_a + insertion_cost_b), in [0, 1]; see normalized_edit_distance.
+  double normalized = 0.0;
+  // Cost of deleting every compared node of A, and of inserting every compared node of B: the
+  // cost of the empty mapping, the largest the distance can be.
+  double deletion_cost_a = 0.0;
+  double insertion_cost_b = 0.0;
   std::size_t nodes_a = 0;  // nodes compared (all, or the main skeleton)
   std::size_t nodes_b = 0;
   // Matched (node of A, node of B) pairs, by node id, sorted by the node of A; empty unless
   // with_mapping was set.
   std::vector<std::pair<NodeId, NodeId>> mapping;
 };
+
+// The distance on a scale from 0 (identical trees) to 1 (nothing in common): divided by the cost
+// of the empty mapping, deleting all of A and inserting all of B (one of the normalisations
+// Ferraro and Godin 2000 discuss). The distance never exceeds that cost: matching the two roots
+// and deleting and inserting the rest is a valid mapping that costs at most as much, because
+// relabel(a, b) <= delete(a) + insert(b). 0 when both costs are 0 (then so is the distance);
+// clamped to [0, 1] against rounding.
+double normalized_edit_distance(double distance, double deletion_cost_a, double insertion_cost_b);
 
 // Nodes of the main skeleton: radius > min_radius_m and every ancestor too (empty when the root
 // is below the threshold). In id order.

@@ -280,4 +280,21 @@ double cohens_d(std::span<const double> a, std::span<const double> b) {
   return (mean(a) - mean(b)) / std::sqrt(pooled);
 }
 
+std::vector<double> holm_adjusted(std::span<const double> p) {
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!std::isnan(p[i])) order.push_back(i);
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t x, std::size_t y) { return p[x] < p[y]; });
+  std::vector<double> adjusted(p.begin(), p.end());
+  const double m = static_cast<double>(order.size());
+  double running = 0.0;  // the step-down maximum keeps the adjusted p-values in order
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    running = std::max(running, std::min(1.0, (m - static_cast<double>(k)) * p[order[k]]));
+    adjusted[order[k]] = running;
+  }
+  return adjusted;
+}
+
 }  // namespace fspm

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <span>
 #include <string_view>
+#include <vector>
 
 namespace fspm {
 
@@ -71,5 +72,11 @@ MannWhitneyResult mann_whitney_u_test(std::span<const double> a, std::span<const
 
 // Cohen's d: (mean_a - mean_b) / pooled standard deviation (divisor n_a + n_b - 2).
 double cohens_d(std::span<const double> a, std::span<const double> b);
+
+// Holm's step-down adjustment of a family of p-values (Holm 1979): sorted ascending, the i-th
+// smallest (i from 0) becomes max over j <= i of min(1, (m - j) p_(j)), m the number of finite
+// p-values; rejecting where the adjusted p < alpha keeps the family-wise error rate at alpha.
+// Same order as the input; a NaN p stays NaN and is not counted in m (R's p.adjust "holm").
+std::vector<double> holm_adjusted(std::span<const double> p);
 
 }  // namespace fspm

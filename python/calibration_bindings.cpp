@@ -2,6 +2,7 @@
 // parameters by name, target data, least-squares fits with standard errors.
 #include <pybind11/stl.h>
 
+#include "fspm/number_text.hpp"
 #include "greenlab/calibration.hpp"
 #include "greenlab/plant_params.hpp"
 #include "python/bindings.hpp"
@@ -139,7 +140,7 @@ void bind_fit_result(py::module_& m) {
           "name -> (estimate, standard error)")
       .def("__repr__", [](const FR& r) {
         return "<fspm.FitResult: " + std::to_string(r.names.size()) + " parameters, cost " +
-               std::to_string(r.final_cost) + " after " + std::to_string(r.iterations) +
+               fspm::format_significant(r.final_cost) + " after " + std::to_string(r.iterations) +
                " iterations>";
       });
   m.def(

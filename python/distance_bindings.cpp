@@ -58,6 +58,9 @@ void bind_distance(py::module_& m) {
         }
         py::dict d;
         d["distance"] = r.distance;
+        d["normalized_distance"] = r.normalized;
+        d["deletion_cost_a"] = r.deletion_cost_a;
+        d["insertion_cost_b"] = r.insertion_cost_b;
         d["nodes_a"] = r.nodes_a;
         d["nodes_b"] = r.nodes_b;
         if (mapping) d["mapping"] = r.mapping;

@@ -9,6 +9,7 @@
 #include "environment/plastic_adaptation.hpp"
 #include "environment/scene_file.hpp"
 #include "environment/tree_analysis.hpp"
+#include "fspm/number_text.hpp"
 #include "python/bindings.hpp"
 
 namespace fspm::python {
@@ -352,6 +353,12 @@ void bind_growth_params(py::module_& m) {
            "Most metamers in one shoot, n = round(v) (integer >= 1; 5)")
       .add("min_shoot_vigour", &env::GrowthParams::min_shoot_vigour,
            "Buds with less vigour do not grow a shoot (>= 0; 0.5)")
+      .add("max_internodes", &env::GrowthParams::max_internodes,
+           "Growth stops with an error naming the parameters when the tree has more internodes "
+           "(integer >= 1; 1000000)")
+      .add("max_height_m", &env::GrowthParams::max_height_m,
+           "Growth stops with an error naming the parameters when the tree is taller (m, > 0 or "
+           "inf; 150)")
       .add("sky_light_fraction", &env::GrowthParams::sky_light_fraction,
            "Share of the open sky's light reaching the stand, scales every bud's Q ([0, 1], 1 = "
            "open site; 1)")
@@ -453,7 +460,7 @@ void bind_growth_functions(py::module_& m) {
           "Final leaf clusters as rows x, y, z, radius, translucency")
       .def("__repr__", [](const env::GrowthResult& r) {
         return "<fspm.GrowthResult: " + std::to_string(r.internodes) + " internodes, " +
-               std::to_string(r.clusters) + " clusters, height " + std::to_string(r.height_m) +
+               std::to_string(r.clusters) + " clusters, height " + format_significant(r.height_m) +
                " m>";
       });
 

@@ -39,15 +39,17 @@ void bind_errors(py::module_& m) {
   static PyObject* const io_error =
       new_exception(m, "IoError", "A file that cannot be opened, read or written (also an OSError)",
                     {error, PyExc_OSError});
+  // Named as Python's own exceptions, of which they are subclasses, so that the name in a
+  // traceback reads as the built-in one (fspm.FileNotFoundError, fspm.ValueError).
   static PyObject* const file_not_found = new_exception(
-      m, "FileNotFoundError_",
-      "An input file that does not exist (also an IoError, an OSError and a FileNotFoundError); "
-      "fspm.MissingFileError",
+      m, "FileNotFoundError",
+      "An input file that does not exist (also an IoError, an OSError and the built-in "
+      "FileNotFoundError); also named fspm.MissingFileError",
       {io_error, PyExc_FileNotFoundError});
   static PyObject* const value_error = new_exception(
-      m, "ValueError_",
-      "A parameter outside its valid range, an unknown name or an impossible request (also a "
-      "ValueError); fspm.ParameterError",
+      m, "ValueError",
+      "A parameter outside its valid range, an unknown name or an impossible request (also the "
+      "built-in ValueError); also named fspm.ParameterError",
       {error, PyExc_ValueError});
   static PyObject* const memory_error = new_exception(
       m, "MemoryLimitError",

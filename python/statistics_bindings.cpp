@@ -3,6 +3,7 @@
 // wilcox.test, so scipy.stats gives the same numbers).
 #include <pybind11/stl.h>
 
+#include "fspm/number_text.hpp"
 #include "fspm/statistics.hpp"
 #include "python/bindings.hpp"
 
@@ -63,9 +64,9 @@ void bind_test_results(py::module_& m) {
           },
           "Every field as a dict (confidence_interval as (low, high))")
       .def("__repr__", [](const TTestResult& r) {
-        return py::str("TTestResult(t={:.6g}, df={:.6g}, p={:.6g}, estimate={:.6g})")
-            .format(r.t, r.df, r.p, r.estimate)
-            .cast<std::string>();
+        return "TTestResult(t=" + format_significant(r.t) + ", df=" + format_significant(r.df) +
+               ", p=" + format_significant(r.p) + ", estimate=" + format_significant(r.estimate) +
+               ")";
       });
 
   py::class_<MannWhitneyResult>(m, "MannWhitneyResult", "A Mann-Whitney U test")
@@ -83,9 +84,8 @@ void bind_test_results(py::module_& m) {
           },
           "u, p and exact as a dict")
       .def("__repr__", [](const MannWhitneyResult& r) {
-        return py::str("MannWhitneyResult(u={:.6g}, p={:.6g}, exact={})")
-            .format(r.u, r.p, r.exact)
-            .cast<std::string>();
+        return "MannWhitneyResult(u=" + format_significant(r.u) + ", p=" + format_significant(r.p) +
+               ", exact=" + (r.exact ? "True" : "False") + ")";
       });
 }
 

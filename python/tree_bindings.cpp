@@ -5,6 +5,7 @@
 
 #include "fspm/memory_budget.hpp"
 #include "fspm/newick_format.hpp"
+#include "fspm/number_text.hpp"
 #include "fspm/tree_file.hpp"
 #include "fspm/tree_summary.hpp"
 #include "python/bindings.hpp"
@@ -162,6 +163,9 @@ void bind_tree_class(py::module_& m) {
 }
 
 void bind_tree_functions(py::module_& m) {
+  m.def("format_significant", &fspm::format_significant, py::arg("value"), py::arg("digits") = 4,
+        "A number as people read it, as the command line prints it: `digits` significant digits "
+        "(1 to 17), integer parts never cut, magnitudes below 1e-12 (rounding noise) as '0'");
   m.def(
       "set_memory_limit",
       [](std::optional<std::variant<std::uint64_t, std::string>> limit) {

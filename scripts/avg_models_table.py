@@ -51,9 +51,11 @@ def main():
         o, g, t = (size[k + (s,)] for s in ("O", "G", "T"))
         tg, to = tests[(k, "T-G")], tests[(k, "T-O")]
         tg_smaller = float(tg["mean_a"]) < float(tg["mean_b"])
+        # Raw distances run into the thousands, normalized ones lie in [0, 1].
+        d = (lambda v: f"{float(v):.3f}") if tg.get("distance") == "normalized" else (lambda v: f"{float(v):.0f}")
         print(f"| {k[0]} | {k[1]} | {k[2]}, {k[3]} y | {g / o:.2f} | {t / o:.2f} | "
-              f"{float(tg['mean_a']):.0f} | {float(tg['mean_b']):.0f} | {p_text(tg['p'], tg_smaller)} | "
-              f"{float(to['mean_a']):.0f} | {float(to['mean_b']):.0f} | {p_text(to['p'], False)} |")
+              f"{d(tg['mean_a'])} | {d(tg['mean_b'])} | {p_text(tg['p'], tg_smaller)} | "
+              f"{d(to['mean_a'])} | {d(to['mean_b'])} | {p_text(to['p'], False)} |")
 
 
 if __name__ == "__main__":

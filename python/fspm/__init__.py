@@ -66,6 +66,7 @@ from ._fspm import (  # noqa: F401
     encode_points,
     fit_gl1,
     fitted_toml,
+    format_significant,
     greenlab_reconstruct,
     greenlab_reconstruct_lines,
     greenlab_simulate,
@@ -125,8 +126,8 @@ from ._fspm import (  # noqa: F401
     write_pvd,
     write_tree,
     write_vtp,
-    ValueError_ as ParameterError,
-    FileNotFoundError_ as MissingFileError,
+    ValueError as ParameterError,
+    FileNotFoundError as MissingFileError,
 )
 
 # Crowns from photographs need OpenImageIO (built with the VTK option).
@@ -176,6 +177,79 @@ def _mtg_to_dataframe(self, scale):
 
 Mtg.to_dataframe = _mtg_to_dataframe
 
+
+def _human(value):
+    if isinstance(value, float):
+        return format_significant(value)
+    if isinstance(value, tuple):
+        return "(" + ", ".join(_human(v) for v in value) + ")"
+    if isinstance(value, list):
+        return "[" + ", ".join(_human(v) for v in value) + "]"
+    return repr(value)
+
+
+class Summary(dict):
+    """The main numbers of a result: a dict holding every digit, shown (repr, print) to four
+    significant digits as the command line prints them (``format_significant``)."""
+
+    def __repr__(self):
+        return "{" + ", ".join(f"{k!r}: {_human(v)}" for k, v in self.items()) + "}"
+
+    __str__ = __repr__
+
+
+def _tree_summary(self):
+    """Node counts, height (m) and total length (m) as a Summary."""
+    return Summary(_tree_summary_dict(self))
+
+
+_tree_summary_dict = Tree.summary
+Tree.summary = _tree_summary
+
+
+def _growth_summary(self):
+    """Internodes, leaf clusters, internodes shed and grown, height_m (m) as a Summary."""
+    return Summary(internodes=self.internodes, clusters=self.clusters, shed=self.shed,
+                   grown=self.grown, height_m=self.height_m)
+
+
+def _adaptation_summary(self):
+    """Nodes, pruned nodes, bent segments, surviving tips and their mean displacement (m) as a
+    Summary."""
+    return Summary(nodes=len(self.tree), pruned_nodes=self.pruned_nodes,
+                   bent_segments=self.bent_segments, tips=self.tips,
+                   mean_tip_displacement_m=self.mean_tip_displacement_m)
+
+
+def _analysis_summary(self):
+    """Skeleton nodes, clusters, skeleton radius, internode length and height path (m) as a
+    Summary."""
+    return Summary(skeleton_nodes=int(self.skeleton.sum()), clusters=len(self.clusters),
+                   skeleton_radius_m=self.skeleton_radius_m,
+                   internode_length_m=self.internode_length_m, height_path_m=self.height_path_m,
+                   max_age=self.max_age)
+
+
+def _fit_summary(self):
+    """Parameter name -> (estimate, standard error), the final cost and the iterations as a
+    Summary."""
+    s = Summary(self.to_dict())
+    s["final_cost"] = self.final_cost
+    s["iterations"] = self.iterations
+    return s
+
+
+def _dict_summary(self):
+    """Every field as a Summary (a dict shown to four significant digits)."""
+    return Summary(self.to_dict())
+
+
+GrowthResult.summary = _growth_summary
+AdaptationResult.summary = _adaptation_summary
+TreeAnalysis.summary = _analysis_summary
+FitResult.summary = _fit_summary
+TTestResult.summary = _dict_summary
+MannWhitneyResult.summary = _dict_summary
 
 _xvfb = None
 
@@ -240,6 +314,11 @@ def render(tree_or_mesh, path=None, *, width=1024, height=768, view="iso", color
         write_image(image, path)
     return image
 
+
+# fspm.FileNotFoundError and fspm.ValueError carry the built-in names (and are subclasses of the
+# built-ins, so `except FileNotFoundError:` catches them). Bound last: code above this line that
+# names the built-ins keeps meaning the built-ins.
+from ._fspm import FileNotFoundError, ValueError  # noqa: E402,F401,A004
 
 __all__ = sorted(
     [n for n in dir() if not n.startswith("_") and n not in ("annotations",)],

@@ -202,11 +202,11 @@
           const idx = P.comparison.map((x, i) => (x === c && P.group[i] === g ? i : -1)).filter((i) => i >= 0);
           return { type: 'box', name: `${c} (n = ${idx.length})`, y: idx.map((i) => P.distance[i]),
             boxpoints: 'all', jitter: 0.5, pointpos: 0, fillcolor: 'rgba(255,255,255,0)', marker: { size: 6, opacity: 0.75 },
-            hovertext: idx.map((i) => `pair of ${c}: distance ${fmt(P.distance[i])}<br>` +
+            hovertext: idx.map((i) => (P.scale === 'raw' ? `pair of ${c}: distance ${fmt(P.distance[i])}<br>` : `pair of ${c}: normalized distance ${fmt(P.distance[i])} (raw ${fmt(P.raw_distance[i])})<br>`) +
               `<b>A</b> ${runText(P.run_a[i])}<br><b>B</b> ${runText(P.run_b[i])}`),
             hoverinfo: 'text+name' };
         }).filter((t) => t.y.length > 0);
-        return plot(div, traces, { title: { text: g }, yaxis: { title: { text: 'edit distance' } } });
+        return plot(div, traces, { title: { text: g }, yaxis: { title: { text: P.scale === 'raw' ? 'edit distance' : 'normalized edit distance' } } });
       });
     }
   }

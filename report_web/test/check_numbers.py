@@ -19,8 +19,25 @@ from pathlib import Path
 
 
 def g4(v):
-    """A number as the report's tables print it: four significant digits (C++ precision 4)."""
-    return "%.4g" % v
+    """A number as the report's tables print it, as fspm::format_significant(v, 4) does: four
+    significant digits without trailing zeros, integer parts whole, an exponent below 1e-4 and
+    from 1e15, magnitudes below 1e-12 as 0."""
+    if math.isnan(v):
+        return "nan"
+    if math.isinf(v):
+        return "inf" if v > 0 else "-inf"
+    if abs(v) < 1e-12:
+        return "0"
+    if abs(v) < 1e-4 or abs(v) >= 1e15:
+        mantissa, exponent = ("%.3e" % v).split("e")
+        if "." in mantissa:
+            mantissa = mantissa.rstrip("0").rstrip(".")
+        return mantissa + "e" + exponent
+    decimals = max(0, 3 - math.floor(math.log10(abs(v))))
+    text = "%.*f" % (decimals, v)
+    if "." in text:
+        text = text.rstrip("0").rstrip(".")
+    return "0" if text == "-0" else text
 
 
 def moments_text(values):

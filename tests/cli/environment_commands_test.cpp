@@ -3,10 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "tests/cli/run_command.hpp"
 
@@ -49,6 +51,26 @@ TEST(EnvironmentCli, LightMatchesClosedFormAndKeepsRowOrder) {
                           (dir / "points.csv").string() + " --directions 64 -o " + out.string());
   ASSERT_EQ(w.exit_code, 0) << w.err;
   EXPECT_TRUE(std::filesystem::exists(out));
+}
+
+// The README's example: the scene is symmetric about the plane y = 0, so the light direction at a
+// point of that plane has dy = 0 exactly; the sum over sky directions leaves about 1e-18 of
+// rounding noise, written as 0.
+TEST(EnvironmentCli, LightDirectionNoiseIsWrittenAsZero) {
+  const std::string examples = std::string(FSPM_SOURCE_DIR) + "/examples/environment/";
+  const auto r = run_fspm("light --scene " + examples + "sphere_and_box_scene.json --points " +
+                          examples + "points.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream in(r.out);
+  std::string header, row;
+  std::getline(in, header);
+  std::getline(in, row);
+  ASSERT_TRUE(row.starts_with("0,0,0,")) << row;
+  std::vector<std::string> cells;
+  std::istringstream fields(row);
+  for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+  ASSERT_EQ(cells.size(), 7u) << row;
+  EXPECT_EQ(cells[5], "0") << row;
 }
 
 TEST(EnvironmentCli, LightBadInputNamesFileAndPlace) {
@@ -188,6 +210,27 @@ TEST(EnvironmentCli, GrowBadInput) {
   EXPECT_EQ(r.exit_code, 1);
   r = run_fspm("grow -o " + (dir / "t.tree").string());
   EXPECT_EQ(r.exit_code, 1);
+}
+
+// A parameter that makes the tree explode: one line naming where the parameters came from, the
+// size reached and the limit, before the light model runs out of voxels (tests/environment,
+// GrowthLimits, has the sizes).
+TEST(EnvironmentCli, ExplodingGrowthNamesTheParametersAndTheLimit) {
+  const auto dir = scratch_dir("grow_explode");
+  const std::string out = (dir / "t.tree").string();
+  auto r = run_fspm("grow --preset B --set apical_control=0.9 --years 30 -o " + out);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("preset B --set apical_control=0.9: growth stopped after year "),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("above max_height_m = 150 m"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("voxel"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  r = run_fspm("grow --preset A --years 10 --max-internodes 50 -o " + out);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("preset A: growth stopped after year "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("above max_internodes = 50;"), std::string::npos) << r.err;
+  EXPECT_NE(run_fspm("grow --preset A --max-internodes 0 -o " + out).exit_code, 0);
 }
 
 }  // namespace

@@ -107,6 +107,37 @@ TEST(EvaluationCli, TTestOnSleepData) {
   EXPECT_EQ(run_fspm("stats ttest --welch --paired " + files).exit_code, 1);
 }
 
+// The text form rounds to four significant digits (R's values above, rounded by hand); --json
+// keeps every digit.
+TEST(EvaluationCli, TTestTextHasFourSignificantDigits) {
+  const auto dir = scratch_dir("ttest_text");
+  write_text(dir / "a.txt", "0.7\n-1.6\n-0.2\n-1.2\n-0.1\n3.4\n3.7\n0.8\n0.0\n2.0\n");
+  write_text(dir / "b.txt", "1.9\n0.8\n1.1\n0.1\n-0.1\n4.4\n5.5\n1.6\n4.6\n3.4\n");
+  const auto r =
+      run_fspm("stats ttest --paired " + (dir / "a.txt").string() + " " + (dir / "b.txt").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("  t: -4.062\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  p: 0.002833\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  mean_a: 0.75\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  mean_b: 2.33\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  df: 9\n"), std::string::npos) << r.out;
+}
+
+// Normalized: 203 / (1601 + 1602) by hand (tests/fspm/constrained_edit_distance_test.cpp).
+TEST(EvaluationCli, DistanceShowsTheNormalizedDistance) {
+  const std::string trees = "'(100,(200,300)1)1000;' '((100,200)2,300)1000;' --cost absolute";
+  auto r = run_fspm("distance " + trees + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_DOUBLE_EQ(j["normalized_distance"].get<double>(), 203.0 / 3203.0);
+  EXPECT_EQ(j["deletion_cost_a"], 1601.0);
+  EXPECT_EQ(j["insertion_cost_b"], 1602.0);
+  r = run_fspm("distance " + trees);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("distance: 203\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("normalized_distance: 0.06338 "), std::string::npos) << r.out;
+}
+
 TEST(EvaluationCli, TTestReadsCsvColumn) {
   const auto dir = scratch_dir("ttest_csv");
   write_text(dir / "a.csv",

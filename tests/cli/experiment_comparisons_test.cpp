@@ -13,7 +13,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // Chains of 2 and 6 internodes (synthetic model): with topological costs every 2-6 pair is 4
-// apart (delete or insert the surplus), every 2-2 pair 0.
+// apart (delete or insert the surplus), every 2-2 pair 0; normalized, 4 / (2 + 6) = 0.5 and 0.
 const char* kExperiment =
     "[experiment]\nname = \"chains\"\nseed = 3\nreplicates = 4\n[model]\nkind = \"synthetic\"\n"
     "[sweep]\nnodes = [2, 6]\n[distance]\ncost = \"topological\"\n"
@@ -35,11 +35,13 @@ TEST(ExperimentComparisons, RunComparesReportShowsAndCompareRecomputes) {
   while (std::getline(pairs, line)) {
     ++rows;
     const bool across = line.starts_with("2-6,");
-    // distance is the 7th column
+    // distance is the 7th column, the normalized distance the 8th
     std::istringstream cells(line);
     std::string cell;
     for (int i = 0; i < 7; ++i) std::getline(cells, cell, ',');
     EXPECT_EQ(std::stod(cell), across ? 4.0 : 0.0) << line;
+    std::getline(cells, cell, ',');
+    EXPECT_EQ(std::stod(cell), across ? 0.5 : 0.0) << line;
   }
   EXPECT_EQ(rows, 6);  // 4 pairs across sets, 2 within (4 runs of nodes = 2)
   fs::remove(dir / "out" / "pairs.csv");
@@ -50,15 +52,20 @@ TEST(ExperimentComparisons, RunComparesReportShowsAndCompareRecomputes) {
   ASSERT_EQ(report.exit_code, 0) << report.err;
   const std::string md = read_text(dir / "out" / "report.md");
   EXPECT_NE(md.find("## Comparisons"), std::string::npos) << md;
-  EXPECT_NE(md.find("| all | mean | 4 | 0 |"), std::string::npos) << md;
-  // --json: the closed-form distances (4 across, 0 within) in the t-test's means.
+  EXPECT_NE(md.find("| all | mean | 0.5 | 0 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| all | mean raw distance | 4 | 0 |"), std::string::npos) << md;
+  // The text of compare rounds and names the distance tested.
+  EXPECT_NE(cmp.out.find("t-test 2-6 vs 2-2 (all, normalized distance): t = "), std::string::npos)
+      << cmp.out;
+  // --json: the closed-form normalized distances (0.5 across, 0 within) in the t-test's means.
   const CommandResult json = run_fspm("compare " + out + " --json");
   ASSERT_EQ(json.exit_code, 0) << json.err;
   const auto j = nlohmann::json::parse(json.out);
   EXPECT_EQ(j["pairs"], 6);
   ASSERT_EQ(j["ttests"].size(), 1u);
   EXPECT_EQ(j["ttests"][0]["a"], "2-6");
-  EXPECT_EQ(j["ttests"][0]["mean_a"], 4.0);
+  EXPECT_EQ(j["ttests"][0]["distance"], "normalized");
+  EXPECT_EQ(j["ttests"][0]["mean_a"], 0.5);
   EXPECT_EQ(j["ttests"][0]["mean_b"], 0.0);
   EXPECT_EQ(j["ttests"][0]["n_a"], 4);
   const CommandResult rj = run_fspm("report " + out + " --no-figures --json");
@@ -115,10 +122,18 @@ TEST(ExperimentComparisons, ReportExplainsAndPlots) {
     EXPECT_NE(md.find("](" + file + ")"), std::string::npos) << metric << "\n" << md;
     EXPECT_EQ(read_text(dir / "out" / file).substr(1, 3), "PNG") << file;
   }
-  // Constant distances within each comparison: the t-test is significant (t infinite or p = 0)
-  // or undefined; either way the summary line counts the single group.
-  EXPECT_NE(md.find("- 2-6 against 2-2: significantly different in "), std::string::npos) << md;
-  EXPECT_NE(md.find(" of 1 group"), std::string::npos) << md;
+  // Constant distances within each comparison: the t-test is undefined; the findings say so
+  // for the single group, and a warning that 4 and 2 pairs are too few.
+  EXPECT_NE(md.find("In all, 2-6 is unlike 2-2 in 0 of 1 group and like it in 0; not testable "
+                    "in 1."),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("**Warning: some groups hold fewer than 20 pairs (the smallest 2).**"),
+            std::string::npos)
+      << md;
+  // Findings and comparisons first, then the metrics.
+  EXPECT_LT(md.find("## Findings"), md.find("## Comparisons")) << md;
+  EXPECT_LT(md.find("## Comparisons"), md.find("## Metrics per parameter point")) << md;
 }
 
 }  // namespace

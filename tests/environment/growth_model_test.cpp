@@ -6,7 +6,9 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <span>
+#include <string>
 
 #include "environment/hemisphere.hpp"
 #include "environment/light_model.hpp"
@@ -226,6 +228,56 @@ TEST(GrowthModel, PresetsDifferInTropisms) {
   EXPECT_GT(growth_preset("C").years, growth_preset("A").years);
   EXPECT_LT(growth_preset("C").pruning_factor, growth_preset("A").pruning_factor);
   EXPECT_THROW(growth_preset("D"), ValueError);
+}
+
+// Apical control 0.9 on type B sends the vigour up the main axes: the tree is 160 m tall after 10
+// years (1 237 internodes and 326 m after 12), where a real tree stops near 116 m. Growth stops
+// at max_height_m with a message naming the limit and the parameters, not the light model's.
+TEST(GrowthLimits, ExplodingTreeStopsAtMaxHeightNamingTheParameters) {
+  GrowthParams p = growth_preset("B");
+  p.apical_control = 0.9;
+  p.years = 30;
+  try {
+    grow_tree(p);
+    FAIL() << "no GrowthLimitError";
+  } catch (const GrowthLimitError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("growth stopped after year "), std::string::npos) << m;
+    EXPECT_NE(m.find(" of 30: "), std::string::npos) << m;
+    EXPECT_NE(m.find("above max_height_m = 150 m"), std::string::npos) << m;
+    EXPECT_NE(m.find("apical_control 0.9"), std::string::npos) << m;
+    EXPECT_NE(m.find("--max-internodes"), std::string::npos) << m;
+    EXPECT_EQ(m.find("voxel"), std::string::npos) << m;
+    EXPECT_LE(m.size(), kMaxErrorMessageLength - 40) << "room for the command line's prefix";
+  }
+  // Without the height limit the same tree runs into the internode limit instead.
+  p.max_height_m = std::numeric_limits<double>::infinity();
+  p.max_internodes = 500;
+  p.light_model = BudLightModel::kSky;  // no grid to outgrow
+  try {
+    grow_tree(p);
+    FAIL() << "no GrowthLimitError";
+  } catch (const GrowthLimitError& e) {
+    EXPECT_NE(std::string(e.what()).find("above max_internodes = 500"), std::string::npos)
+        << e.what();
+  }
+}
+
+// The limits stop only what exceeds them: a preset tree far below both grows as before.
+TEST(GrowthLimits, TreesBelowTheLimitsAreUntouched) {
+  GrowthParams p = growth_preset("A");
+  p.years = 10;
+  const GrowthResult free = grow_tree(p);
+  ASSERT_GT(free.internodes, 50u);
+  p.max_internodes = free.internodes;  // the final tree is checked too: equal passes
+  EXPECT_TRUE(grow_tree(p).tree.identical(free.tree));
+  p.max_internodes = free.internodes - 1;
+  EXPECT_THROW(grow_tree(p), GrowthLimitError);
+  p.max_internodes = 1'000'000;
+  p.max_height_m = free.height_m * 0.5;
+  EXPECT_THROW(grow_tree(p), GrowthLimitError);
+  EXPECT_THROW(parse_growth_params("max_internodes = 0\n", "p.toml"), ValueError);
+  EXPECT_EQ(parse_growth_params("max_internodes = 7\n", "p.toml").max_internodes, 7u);
 }
 
 TEST(GrowthParams, TomlOverridesPresetAndRejectsBadInput) {

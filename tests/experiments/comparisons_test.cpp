@@ -21,7 +21,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // Synthetic runs are chains of `nodes` internodes: with topological costs the distance between
-// chains of m and n nodes is |m - n| (delete or insert the surplus, match the rest in order).
+// chains of m and n nodes is |m - n| (delete or insert the surplus, match the rest in order), the
+// normalized distance |m - n| / (m + n) (deleting all of one and inserting all of the other).
 const char* kChains =
     "[experiment]\nname = \"chains\"\nseed = 5\nreplicates = 6\n"
     "[model]\nkind = \"synthetic\"\n"
@@ -73,6 +74,7 @@ TEST(Comparisons, PairsWithoutReuseWithinGroupsAndExactDistances) {
       EXPECT_EQ(nodes(b), 3);
     }
     EXPECT_DOUBLE_EQ(p.distance, std::abs(static_cast<double>(nodes(a) - nodes(b))));
+    EXPECT_DOUBLE_EQ(p.normalized, p.distance / static_cast<double>(nodes(a) + nodes(b)));
     const std::string key = p.comparison + "/" + p.group;
     EXPECT_TRUE(used[key].insert(p.run_a).second) << "run used twice in " << key;
     EXPECT_TRUE(used[key].insert(p.run_b).second) << "run used twice in " << key;
@@ -85,11 +87,13 @@ TEST(Comparisons, PairsWithoutReuseWithinGroupsAndExactDistances) {
   EXPECT_EQ(count["3-3/length=2"], 3u);
   EXPECT_EQ(c.notes.size(), 4u);  // 3-3 falls short twice; two undefined t-tests
 
-  // One t-test per group; the 3-5 distances are all 2, the 3-3 ones all 0: constant groups have
-  // no standard error, so t and p are undefined (NaN) and a note says so.
+  // One t-test per group, on the normalized distance by default; the 3-5 distances are all
+  // 2 / 8, the 3-3 ones all 0: constant groups have no standard error, so t and p are undefined
+  // (NaN) and a note says so.
   ASSERT_EQ(c.tests.size(), 2u);
   for (const TTestRow& t : c.tests) {
-    EXPECT_DOUBLE_EQ(t.mean_a, 2.0);
+    EXPECT_EQ(t.scale, DistanceScale::kNormalized);
+    EXPECT_DOUBLE_EQ(t.mean_a, 0.25);
     EXPECT_DOUBLE_EQ(t.mean_b, 0.0);
     EXPECT_EQ(t.n_a, 4u);
     EXPECT_EQ(t.n_b, 3u);
@@ -117,9 +121,13 @@ TEST(Comparisons, SameSeedSamePairsAndFilesRoundTrip) {
   std::ifstream csv(dir / "out" / kPairsFile);
   std::string header;
   std::getline(csv, header);
-  EXPECT_EQ(header, "comparison,group,run_a,run_b,seed_a,seed_b,distance,nodes_a,nodes_b");
+  EXPECT_EQ(header,
+            "comparison,group,run_a,run_b,seed_a,seed_b,distance,normalized_distance,nodes_a,"
+            "nodes_b");
+  EXPECT_DOUBLE_EQ(back.pairs[0].normalized, first.pairs[0].normalized);
   const std::string md = comparisons_markdown(x, back);
-  EXPECT_NE(md.find("| length=1 | mean | 2 | 0 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| length=1 | mean | 0.25 | 0 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| length=1 | mean raw distance | 2 | 0 |"), std::string::npos) << md;
   // p-values keep two significant digits down to 0.001.
   back.tests = comparison_ttests(x, back.pairs);
   ASSERT_FALSE(back.tests.empty());
@@ -129,6 +137,28 @@ TEST(Comparisons, SameSeedSamePairsAndFilesRoundTrip) {
     const std::string with_p = comparisons_markdown(x, back);
     EXPECT_NE(with_p.find(text), std::string::npos) << p << "\n" << with_p;
   }
+}
+
+// tested = "raw" in [distance]: the t-tests and the table compare the raw distance (2 and 0).
+TEST(Comparisons, RawDistanceIsTestedWhenAsked) {
+  const auto dir = testing::scratch("cmp_raw");
+  std::string text = kChains;
+  const std::string cost = "cost = \"topological\"\n";
+  text.replace(text.find(cost), cost.size(), cost + "tested = \"raw\"\n");
+  const Experiment x = parse_experiment(text, "chains.toml");
+  EXPECT_EQ(x.distance.tested, DistanceScale::kRaw);
+  const ComparisonResults c = run_comparisons(x, run_all(x, dir / "out"), (dir / "out").string());
+  ASSERT_EQ(c.tests.size(), 2u);
+  for (const TTestRow& t : c.tests) {
+    EXPECT_EQ(t.scale, DistanceScale::kRaw);
+    EXPECT_DOUBLE_EQ(t.mean_a, 2.0);
+    EXPECT_DOUBLE_EQ(t.mean_b, 0.0);
+  }
+  const std::string md = comparisons_markdown(x, c);
+  EXPECT_NE(md.find("| length=1 | mean | 2 | 0 |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("mean raw distance"), std::string::npos) << md;
+  text.replace(text.find("\"raw\""), 5, "\"rough\"");
+  EXPECT_THROW(parse_experiment(text, "chains.toml"), ValueError);
 }
 
 TEST(Comparisons, SummaryTableGroupsRuns) {

@@ -7,6 +7,7 @@
 
 #include "experiments/experiment.hpp"
 #include "experiments/report.hpp"
+#include "experiments/report_findings.hpp"
 #include "experiments/report_intro.hpp"
 #include "experiments/report_notes.hpp"
 #include "experiments/sweep_summary.hpp"
@@ -51,18 +52,17 @@ TEST(ReportTables, PlantMetricsAndTimingsInSeparateTables) {
   info.total_runs = 2;
   info.swept = {"years", "set"};
   info.metrics = {"height", "run_time"};
-  const std::string md =
-      markdown_report(info, {run(0, 10, "O", 2.0, 0.5), run(1, 20, "G", 4.0, 1.5)});
-  const auto plants = md.find("## Metrics per parameter point");
-  const auto timings = md.find("## Timings per parameter point");
-  ASSERT_NE(plants, std::string::npos) << md;
-  ASSERT_NE(timings, std::string::npos) << md;
-  const std::string plant_table = md.substr(plants, timings - plants);
-  EXPECT_NE(plant_table.find("height (m)"), std::string::npos) << plant_table;
-  EXPECT_EQ(plant_table.find("run_time"), std::string::npos) << plant_table;
-  const std::string timing_table = md.substr(timings, md.find("## Marginal") - timings);
-  EXPECT_NE(timing_table.find("| run_time (s) |"), std::string::npos) << timing_table;
-  EXPECT_EQ(timing_table.find("height"), std::string::npos) << timing_table;
+  const std::vector<RunRecord> runs{run(0, 10, "O", 2.0, 0.5), run(1, 20, "G", 4.0, 1.5)};
+  const std::string md = markdown_report(info, runs);
+  ASSERT_NE(md.find("## Metrics per parameter point"), std::string::npos) << md;
+  EXPECT_NE(md.find("height (m)"), std::string::npos) << md;
+  EXPECT_NE(md.find("## Marginal means over `years`"), std::string::npos) << md;
+  EXPECT_EQ(md.find("run_time"), std::string::npos) << "timings come last, apart\n" << md;
+  const std::string timing = timings_markdown(info, runs);
+  ASSERT_NE(timing.find("## Timings per parameter point"), std::string::npos) << timing;
+  EXPECT_NE(timing.find("| run_time (s) |"), std::string::npos) << timing;
+  EXPECT_NE(timing.find("### Timings over `years`"), std::string::npos) << timing;
+  EXPECT_EQ(timing.find("height"), std::string::npos) << timing;
   EXPECT_TRUE(is_timing_metric("grow_seconds"));
   EXPECT_FALSE(is_timing_metric("nodes"));
 }
@@ -187,23 +187,99 @@ TEST(ReportIntroduction, SaysWhatWasRunAndWhatTheSetsAndGroupsMean) {
   EXPECT_NE(md.find("Pirk found no difference."), std::string::npos) << md;
 }
 
-TEST(ReportIntroduction, TestOverviewCountsSignificantGroups) {
-  const Experiment x = parse_experiment(kGrowExperiment);
-  std::vector<TTestRow> tests(3);
-  const double p[] = {0.01, 0.2, 0.03};
-  const double mean_a[] = {5.0, 1.0, 1.0};
-  for (std::size_t i = 0; i < 3; ++i) {
-    tests[i].a = "T-G";
-    tests[i].b = "G-G";
-    tests[i].group = "years=" + std::to_string(i);
-    tests[i].p = p[i];
-    tests[i].mean_a = mean_a[i];
-    tests[i].mean_b = 2.0;
+// A synthetic result set with a known outcome. In both groups T-G has exactly the G-G values
+// (t = 0, p = 1: like); in years=10 the T-O pairs are the T-T values plus 0.3 (a shift of many
+// standard deviations: unlike, larger), in years=20 T-O equals T-T again (like).
+std::vector<PairDistance> synthetic_pairs(std::size_t n) {
+  std::vector<PairDistance> pairs;
+  const auto add = [&](const char* comparison, const char* group, double shift) {
+    for (std::size_t i = 0; i < n; ++i) {
+      PairDistance p;
+      p.comparison = comparison;
+      p.group = group;
+      p.normalized = 0.2 + 0.01 * static_cast<double>(i % 7) + shift;
+      p.distance = 100.0 * p.normalized;
+      pairs.push_back(p);
+    }
+  };
+  for (const char* group : {"years=10", "years=20"}) {
+    add("T-G", group, 0.0);
+    add("G-G", group, 0.0);
+    add("T-T", group, 0.0);
+    add("T-O", group, std::string(group) == "years=10" ? 0.3 : 0.0);
   }
-  EXPECT_NE(ttest_overview(x, tests).find("- T-G against G-G: significantly different in 2 of 3 "
-                                          "groups (T-G larger in 1, smaller in 1), not in 1."),
+  return pairs;
+}
+
+Experiment four_comparisons() {
+  std::string text = kGrowExperiment;
+  text +=
+      "[[comparison]]\nname = \"T-O\"\na = { set = \"T\" }\nb = { set = \"O\" }\n"
+      "within = [\"years\"]\n"
+      "[[comparison]]\nname = \"T-T\"\na = { set = \"T\" }\nb = { set = \"T\" }\n"
+      "within = [\"years\"]\n"
+      "[[ttest]]\na = \"T-O\"\nb = \"T-T\"\n";
+  return parse_experiment(text);
+}
+
+TEST(ReportFindings, SayWhichComparisonsAreLikeAndWhichUnlike) {
+  const Experiment x = four_comparisons();
+  const std::vector<TTestRow> tests = comparison_ttests(x, synthetic_pairs(25));
+  ASSERT_EQ(tests.size(), 4u);
+  const std::string md = findings_markdown(x, tests);
+  EXPECT_TRUE(md.starts_with("## Findings\n")) << md;
+  EXPECT_NE(md.find("normalized constrained edit distance"), std::string::npos) << md;
+  EXPECT_NE(md.find("Holm's correction over all 4 t-tests"), std::string::npos) << md;
+  EXPECT_EQ(md.find("Warning"), std::string::npos) << md;  // 25 pairs per group
+  // Identical samples: difference 0, d 0, p 1 and Holm p 1.
+  EXPECT_NE(md.find("- **years=10**: T-G is **like** G-G: mean 0.2276 against 0.2276, difference "
+                    "0 [95 % CI "),
             std::string::npos)
-      << ttest_overview(x, tests);
+      << md;
+  EXPECT_NE(md.find("Cohen's d 0, p = 1, Holm p = 1 (25 and 25 pairs)"), std::string::npos) << md;
+  // Shifted by 0.3: the difference is exactly 0.3.
+  EXPECT_NE(md.find("T-O is **unlike** T-T (larger): mean 0.5276 against 0.2276, difference 0.3 "),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("- **years=20**: T-G is **like** G-G"), std::string::npos) << md;
+  EXPECT_NE(md.find("In all, T-G is unlike G-G in 0 of 2 groups and like it in 2."),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("In all, T-O is unlike T-T in 1 of 2 groups (larger in 1, smaller in 0) and "
+                    "like it in 1."),
+            std::string::npos)
+      << md;
+  // Holm: the shifted test's p is tiny; every p_holm is at least its p.
+  for (const TTestRow& t : tests) EXPECT_GE(t.p_holm, t.p);
+}
+
+TEST(ReportFindings, WarnWhenAGroupHasFewerThanTwentyPairs) {
+  const Experiment x = four_comparisons();
+  const std::string md = findings_markdown(x, comparison_ttests(x, synthetic_pairs(19)));
+  EXPECT_NE(md.find("**Warning: some groups hold fewer than 20 pairs (the smallest 19).**"),
+            std::string::npos)
+      << md;
+  EXPECT_TRUE(findings_markdown(x, {}).empty());
+}
+
+TEST(ReportFindings, EffectSizesOfAKnownDifference) {
+  // a = {1, 2, 3}, b = {4, 5, 6}: difference -3, pooled sd 1, Cohen's d -3; Student's interval
+  // -3 -+ t(0.975, 4) sqrt(2 / 3) = -3 -+ 2.776445 * 0.816497 (R: t.test(var.equal = TRUE)).
+  Experiment x = four_comparisons();
+  std::vector<PairDistance> pairs;
+  for (double v : {1.0, 2.0, 3.0, 4.0, 5.0, 6.0}) {
+    PairDistance p;
+    p.comparison = v < 3.5 ? "T-G" : "G-G";
+    p.group = "all";
+    p.normalized = v;
+    pairs.push_back(p);
+  }
+  const std::vector<TTestRow> tests = comparison_ttests(x, pairs);
+  ASSERT_EQ(tests.size(), 1u);
+  EXPECT_DOUBLE_EQ(tests[0].cohens_d, -3.0);
+  EXPECT_NEAR(tests[0].difference_low, -3.0 - 2.776445 * 0.816497, 1e-5);
+  EXPECT_NEAR(tests[0].difference_high, -3.0 + 2.776445 * 0.816497, 1e-5);
+  EXPECT_DOUBLE_EQ(tests[0].p_holm, tests[0].p);  // a family of one
 }
 
 TEST(ReportIntroduction, OverriddenReplicatesSurviveTheStoredText) {

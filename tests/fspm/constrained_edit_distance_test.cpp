@@ -389,6 +389,86 @@ TEST(ConstrainedEditDistance, MainSkeletonComparesOnlyThickNodes) {
   EXPECT_EQ(main_skeleton_nodes(b, 0.1), (std::vector<NodeId>{0, 1}));
 }
 
+// ---- Normalized distance: distance / (delete all of A + insert all of B) ----------------------
+
+TEST(NormalizedEditDistance, IdenticalTreesAreZero) {
+  std::mt19937_64 rng(11);
+  const TreeGraph a = random_tree(rng, 9);
+  for (const EditCostKind kind : kEditCostKinds) {
+    EditDistanceOptions opt;
+    opt.cost = kind;
+    const auto r = constrained_edit_distance(a, a, opt);
+    EXPECT_EQ(r.distance, 0.0);
+    EXPECT_EQ(r.normalized, 0.0);
+    EXPECT_GT(r.deletion_cost_a + r.insertion_cost_b, 0.0);
+  }
+}
+
+// Relabelling costs exactly delete + insert for every pair: no mapping beats the empty one, so
+// the distance is the whole deletion and insertion cost and the normalized distance 1.
+class NothingInCommon final : public EditCostModel {
+ public:
+  double delete_cost(NodeId a) const override { return 1.0 + a; }
+  double insert_cost(NodeId b) const override { return 2.0 + 0.5 * b; }
+  double relabel_cost(NodeId a, NodeId b) const override { return delete_cost(a) + insert_cost(b); }
+};
+
+TEST(NormalizedEditDistance, NothingInCommonIsOne) {
+  std::mt19937_64 rng(12);
+  const TreeGraph a = random_tree(rng, 6), b = random_tree(rng, 8);
+  const auto r = constrained_edit_distance(a, b, NothingInCommon{});
+  EXPECT_DOUBLE_EQ(r.deletion_cost_a, 6.0 + 15.0);        // sum of 1 + a, a = 0..5
+  EXPECT_DOUBLE_EQ(r.insertion_cost_b, 16.0 + 0.5 * 28);  // sum of 2 + b / 2, b = 0..7
+  EXPECT_DOUBLE_EQ(r.distance, 51.0);
+  EXPECT_DOUBLE_EQ(r.normalized, 1.0);
+  // Against an empty tree everything is deleted: 1 as well; two empty trees are identical.
+  const TreeGraph empty;
+  EXPECT_EQ(constrained_edit_distance(a, empty).normalized, 1.0);
+  EXPECT_EQ(constrained_edit_distance(empty, empty).normalized, 0.0);
+}
+
+// Absolute costs on labels: A's labels all 0, so deleting A costs nothing and matching any node
+// of B costs its label, as inserting it does. The distance is B's label sum, the normalized
+// distance 1.
+TEST(NormalizedEditDistance, ZeroLabelsAgainstPositiveOnesIsOne) {
+  EditDistanceOptions opt;
+  opt.cost = EditCostKind::kAbsolute;
+  opt.attributes = {"label"};
+  const auto r = constrained_edit_distance(parse_newick("(0,0)0;"), parse_newick("(5,7)3;"), opt);
+  EXPECT_EQ(r.distance, 15.0);
+  EXPECT_EQ(r.normalized, 1.0);
+}
+
+// The hand cases above divided by hand: labels of A sum to 1601, of B to 1602 (absolute costs
+// have no unit cost), distance 203; topological, 2 against 5 + 7 nodes.
+TEST(NormalizedEditDistance, HandCases) {
+  EditDistanceOptions opt;
+  opt.cost = EditCostKind::kAbsolute;
+  opt.attributes = {"label"};
+  const auto r = constrained_edit_distance(parse_newick("(100,(200,300)1)1000;"),
+                                           parse_newick("((100,200)2,300)1000;"), opt);
+  EXPECT_EQ(r.deletion_cost_a, 1601.0);
+  EXPECT_EQ(r.insertion_cost_b, 1602.0);
+  EXPECT_DOUBLE_EQ(r.normalized, 203.0 / 3203.0);
+  const auto t = constrained_edit_distance(parse_newick_named("((A:1,B:2)C:0.5,D:1);").tree,
+                                           parse_newick_named("((A,B)C,(D,E)F);").tree);
+  EXPECT_DOUBLE_EQ(t.normalized, 2.0 / 12.0);
+  EXPECT_EQ(normalized_edit_distance(0.0, 0.0, 0.0), 0.0);
+}
+
+TEST(NormalizedEditDistance, StaysWithinZeroAndOneOnRandomTrees) {
+  std::mt19937_64 rng(13);
+  for (int k = 0; k < 50; ++k) {
+    const TreeGraph a = random_tree(rng, 1 + k % 9), b = random_tree(rng, 1 + (k * 7) % 11);
+    EditDistanceOptions opt;
+    opt.cost = kEditCostKinds[k % 3];
+    const auto r = constrained_edit_distance(a, b, opt);
+    EXPECT_GE(r.normalized, 0.0);
+    EXPECT_LE(r.normalized, 1.0);
+    EXPECT_LE(r.distance, r.deletion_cost_a + r.insertion_cost_b + 1e-9);
+  }
+}
+
 TEST(EditCostModel, StandardizedFollowsPirkEquations) {
   // Lengths 1, 2 (tree A) and 3, 6 (tree B): mean 3, sd sqrt((4+1+0+9)/3).
   TreeGraph a = tree_from_parents({-1, 0}), b = tree_from_parents({-1, 0});

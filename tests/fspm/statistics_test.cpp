@@ -137,3 +137,27 @@ TEST(Statistics, RejectsBadInput) {
 
 }  // namespace
 }  // namespace fspm
+
+namespace fspm {
+namespace {
+
+// Holm 1979 by hand: sorted p times m, m - 1, ..., 1, then the running maximum, capped at 1.
+TEST(Statistics, HolmAdjustmentByHand) {
+  const std::vector<double> p{0.01, 0.02, 0.03, 0.04, 0.05};
+  const std::vector<double> holm = holm_adjusted(p);
+  const std::vector<double> expected{0.05, 0.08, 0.09, 0.09, 0.09};  // 0.04 * 2 = 0.08 < 0.09
+  ASSERT_EQ(holm.size(), expected.size());
+  for (std::size_t i = 0; i < p.size(); ++i) EXPECT_NEAR(holm[i], expected[i], 1e-15) << i;
+  // Any order; NaN stays NaN outside the family (m = 3 here).
+  const std::vector<double> mixed =
+      holm_adjusted(std::vector<double>{0.5, std::nan(""), 0.01, 0.3});
+  EXPECT_NEAR(mixed[0], 0.6, 1e-15);
+  EXPECT_TRUE(std::isnan(mixed[1]));
+  EXPECT_NEAR(mixed[2], 0.03, 1e-15);
+  EXPECT_NEAR(mixed[3], 0.6, 1e-15);
+  EXPECT_EQ(holm_adjusted(std::vector<double>{0.6, 0.7}), (std::vector<double>{1.0, 1.0}));
+  EXPECT_TRUE(holm_adjusted(std::vector<double>{}).empty());
+}
+
+}  // namespace
+}  // namespace fspm
