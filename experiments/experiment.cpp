@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 #include "fspm/closest_name.hpp"
@@ -91,7 +92,10 @@ class Reader {
 
   double number(const std::string& key, const toml::node& node) const {
     if (!node.is_number()) fail(key, node, "expected a number");
-    const double v = node.value<double>().value();
+    // toml++ gives no double for an integer that a double does not hold exactly
+    // (3333333333333333338): take the nearest one.
+    const std::optional<double> d = node.value<double>();
+    const double v = d ? *d : static_cast<double>(node.value<std::int64_t>().value_or(0));
     if (!std::isfinite(v)) fail(key, node, "must be finite");
     return v;
   }
