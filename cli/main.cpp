@@ -21,7 +21,8 @@ int main(int argc, char** argv) {
   spdlog::set_pattern("%^[%l]%$ %v");
 
   CLI::App app{"fspm: functional-structural plant modelling", "fspm"};
-  app.set_version_flag("--version", std::string("fspm ") + FSPM_VERSION);
+  // "fspm 0.1.0", then the commit and the optional parts of this build, a line each.
+  app.set_version_flag("--version", std::string(FSPM_VERSION_TEXT));
   app.require_subcommand(1);
   // -v, -q, --memory-limit and --json, before the command or after it.
   fspm::cli::add_global_options(app);

@@ -31,6 +31,7 @@ for f in "$root"/usr/bin/* "$root"/usr/lib/python3/dist-packages/fspm/_fspm*.so;
 done
 
 printed=$("$root/usr/bin/fspm" --version)
+printed=${printed%%$'\n'*}  # the first line; the commit and features follow
 [ "$printed" = "fspm $version" ] \
   || { echo "package_check: fspm --version printed '$printed', the package is $version"; exit 1; }
 echo "fspm --version: $printed"

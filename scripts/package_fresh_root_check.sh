@@ -45,6 +45,7 @@ in_root apt-get install -y -qq "/tmp/$(basename "$deb")" > "$root/tmp/install.lo
 echo "installed with $(grep -c '^Setting up' "$root/tmp/install.log") packages set up"
 
 printed=$(in_root fspm --version)
+printed=${printed%%$'\n'*}  # the first line; the commit and features follow
 [ "$printed" = "fspm $version" ] || { echo "fresh_root_check: fspm --version printed '$printed'"; exit 1; }
 echo "fspm --version: $printed"
 in_root fspm-full --version > /dev/null

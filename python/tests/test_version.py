@@ -25,7 +25,11 @@ def test_version_is_what_the_command_line_prints():
         import pytest
         pytest.skip(f"no command line beside the module ({exe})")
     out = subprocess.run([str(exe), "--version"], capture_output=True, text=True, check=True)
-    assert out.stdout.strip() == f"fspm {fspm.__version__}"
+    lines = out.stdout.strip().splitlines()
+    assert lines[0] == f"fspm {fspm.__version__}"
+    # Then the commit the build was configured from and the optional parts it has.
+    assert re.fullmatch(r"commit ([0-9a-f]{12}|unknown)", lines[1])
+    assert lines[2].startswith("features:")
 
 
 def test_citation_names_the_project_version():

@@ -247,6 +247,9 @@ TEST(TreeCli, UsageErrorsExitOneAndHelpExitsZero) {
   const auto v = run_fspm("--version");
   EXPECT_EQ(v.exit_code, 0);
   EXPECT_NE(v.out.find("fspm "), std::string::npos);
+  // The commit the build was configured from and the optional parts of the build.
+  EXPECT_TRUE(std::regex_search(v.out, std::regex("\ncommit ([0-9a-f]{12}|unknown)\nfeatures:")))
+      << v.out;
   EXPECT_EQ(run_fspm("tree info").exit_code, 1);
   EXPECT_EQ(run_fspm("no-such-command").exit_code, 1);
   EXPECT_EQ(run_fspm("tree info /no/such/file.tree").exit_code, 1);
