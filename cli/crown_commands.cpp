@@ -16,7 +16,6 @@
 #include "cli/output.hpp"
 #include "crown/auto_mask.hpp"
 #include "crown/cubemap.hpp"
-#include "crown/gap_fill.hpp"
 #include "crown/image_io.hpp"
 #include "crown/preview.hpp"
 #include "crown/reconstruction.hpp"
@@ -210,15 +209,14 @@ void run_crown(const CrownCommand& c) {
   } else {
     mask = crown::read_mask(c.mask);
   }
-  // Sky seen through the foliage is no crown texture (crown/gap_fill.hpp).
-  const crown::Raster texture =
-      c.keep_gaps ? photo
-                  : crown::fill_gaps(photo, mask,
-                                     crown::foreground(photo, crown::AutoMaskOptions{}.threshold));
+  // Sky seen through the foliage is no crown texture (crown/gap_fill.hpp): the gaps are filled
+  // at the working resolution.
+  crown::Mask foliage;
+  if (!c.keep_gaps) foliage = crown::foreground(photo, crown::AutoMaskOptions{}.threshold);
   seconds["mask"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::mt19937_64 rng(c.seed);
-  const crown::CrownModel model =
-      crown::reconstruct_crown(texture, mask, crown_options(c, mask), rng);
+  const crown::CrownModel model = crown::reconstruct_crown(photo, mask, crown_options(c, mask), rng,
+                                                           c.keep_gaps ? nullptr : &foliage);
   for (const auto& [stage, s] : model.seconds) seconds[stage] = s;
   t0 = std::chrono::steady_clock::now();
   write_outputs(c, paths, model, mask);
@@ -237,6 +235,7 @@ void run_crown(const CrownCommand& c) {
                 {"crown_pixels", model.crown_pixels},
                 {"silhouette_pixels", model.silhouette_pixels},
                 {"metres_per_pixel", model.metres_per_pixel},
+                {"working_factor", model.working_factor},
                 {"vertices", model.mesh.vertex_count()},
                 {"triangles", model.mesh.triangle_count()},
                 {"volume_m3", model.volume_m3},

@@ -12,7 +12,6 @@
 
 #include "crown/auto_mask.hpp"
 #include "crown/cubemap.hpp"
-#include "crown/gap_fill.hpp"
 #include "crown/image_io.hpp"
 #include "crown/reconstruction.hpp"
 
@@ -24,14 +23,13 @@ crown::CrownModel reconstruct(const std::string& photo_path,
                               double depth_ratio, double relief, std::uint64_t seed) {
   const crown::Raster photo = crown::read_rgb(photo_path);
   const crown::Mask mask = mask_path ? crown::read_mask(*mask_path) : crown::auto_mask(photo, {});
-  const crown::Raster texture =
-      crown::fill_gaps(photo, mask, crown::foreground(photo, crown::AutoMaskOptions{}.threshold));
+  const crown::Mask foliage = crown::foreground(photo, crown::AutoMaskOptions{}.threshold);
   crown::CrownOptions options;
   options.height_m = height_m;
   options.depth_ratio = depth_ratio;
   options.relief_weight = relief;
   std::mt19937_64 rng(seed);
-  return crown::reconstruct_crown(texture, mask, options, rng);
+  return crown::reconstruct_crown(photo, mask, options, rng, &foliage);
 }
 
 // A cubemap as the (N, 6N, C) float32 strip of its faces side by side, as fspm crown writes it.
