@@ -34,8 +34,22 @@ Raster preview(const CrownMesh& mesh, PreviewView view, int width, int height,
   const Eigen::Vector3f toward_camera = view == PreviewView::kFront
                                             ? Eigen::Vector3f(0.0f, -1.0f, 0.0f)
                                             : Eigen::Vector3f(1.0f, 0.0f, 0.0f);
-  const Eigen::Vector3f light = (toward_camera + Eigen::Vector3f(0, 0, 0.6f)).normalized();
+  // Light from above, in front and from the upper left, as a sun would light a photograph: a
+  // light from the camera darkens every outline, so that a lobe standing in front of the crown
+  // reads as the rim of a hole.
+  const Eigen::Vector3f right = view == PreviewView::kFront ? Eigen::Vector3f(1.0f, 0.0f, 0.0f)
+                                                            : Eigen::Vector3f(0.0f, 1.0f, 0.0f);
+  const Eigen::Vector3f light =
+      (0.6f * toward_camera + Eigen::Vector3f(0, 0, 0.8f) - 0.5f * right).normalized();
   const std::vector<Eigen::Vector3f> normals = vertex_normals(mesh);
+  // Depth cue: the farthest surface a third darker than the nearest, so that what stands in front
+  // (a lobe seen from the side) reads as nearer, not as the rim of a hole.
+  double near = std::numeric_limits<double>::max(), far = -near;
+  for (const auto& p : mesh.positions) {
+    const double d = project(p, view, width, metres_per_pixel, ground_row).depth;
+    near = std::min(near, d), far = std::max(far, d);
+  }
+  const double depth_range = std::max(1e-9, far - near);
   for (const auto& tri : mesh.triangles) {
     Projected q[3];
     for (int k = 0; k < 3; ++k) {
@@ -65,7 +79,8 @@ Raster preview(const CrownMesh& mesh, PreviewView view, int width, int height,
             (w0 * normals[tri[0]] + w1 * normals[tri[1]] + w2 * normals[tri[2]]).normalized();
         const Eigen::Vector3f c =
             w0 * mesh.colors[tri[0]] + w1 * mesh.colors[tri[1]] + w2 * mesh.colors[tri[2]];
-        const float shade = 0.45f + 0.75f * std::max(0.0f, n.dot(light));
+        const auto cue = static_cast<float>(1.0 - 0.35 * (depth - near) / depth_range);
+        const float shade = cue * (0.45f + 0.75f * std::max(0.0f, n.dot(light)));
         for (int k = 0; k < 3; ++k) out.at(x, y, k) = std::min(1.0f, shade * c[k]);
       }
     }

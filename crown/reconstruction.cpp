@@ -75,8 +75,14 @@ Frame make_frame(const Mask& mask, const InflatedSheet& sheet, const CrownOption
 
 // Base mesh in metres with the relief: the photograph's on the front half (0 on the silhouette),
 // the height cubemap's on the back half (faded to 0 toward the silhouette).
-void compose(BaseMesh& base, const Frame& f, const Raster& photo, const Raster& relief,
-             const Cubemap& color, const Cubemap& height, double rho) {
+void compose(BaseMesh& base, const InflatedSheet& sheet, const Frame& f, const Raster& photo,
+             const Raster& relief, const Cubemap& color, const Cubemap& height, double rho) {
+  // Each vertex takes the photograph's colour and relief at its own pixel: silhouette vertices lie
+  // half a pixel out from their centres, where rounding would reach the sky beside the crown.
+  std::vector<std::size_t> pixel_of(sheet.positions.size(), 0);
+  for (std::size_t p = 0; p < sheet.vertex.size(); ++p) {
+    if (sheet.vertex[p] >= 0) pixel_of[static_cast<std::size_t>(sheet.vertex[p])] = p;
+  }
   float relief_max = 1e-6f;
   for (float v : relief.values) relief_max = std::max(relief_max, std::abs(v));
   // Argudo 4.6 displaces by rho (h - 1/2); h - mean(h) keeps the back's mean radius, so the relief
@@ -89,8 +95,9 @@ void compose(BaseMesh& base, const Frame& f, const Raster& photo, const Raster& 
   CrownMesh& mesh = base.mesh;
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
     Eigen::Vector3f& p = mesh.positions[v];
-    const int px = std::clamp(static_cast<int>(std::lround(p.x())), 0, photo.width - 1);
-    const int py = std::clamp(static_cast<int>(std::lround(p.y())), 0, photo.height - 1);
+    const std::size_t pixel = pixel_of[static_cast<std::size_t>(base.front_of_vertex[v])];
+    const int px = static_cast<int>(pixel % static_cast<std::size_t>(photo.width));
+    const int py = static_cast<int>(pixel / static_cast<std::size_t>(photo.width));
     double depth_px = std::abs(p.z()) * f.depth_scale;
     const float side = base.is_back[v] ? 1.0f : -1.0f;  // the photograph looks along +y
     const Eigen::Vector3f world(
@@ -144,7 +151,7 @@ CrownModel reconstruct_crown(const Raster& photo, const Mask& mask, const CrownO
   model.color = color_cubemap(texture, work.mask, size, options.quilt, rng);
   model.seconds.emplace_back("texture_synthesis", seconds_since(t0));
   const Cubemap height = height_cubemap(model.color, options.relief.levels);
-  compose(base, frame, texture, model.relief, model.color, height, options.relief_weight);
+  compose(base, sheet, frame, texture, model.relief, model.color, height, options.relief_weight);
   model.mesh = std::move(base.mesh);
   model.volume_m3 = enclosed_volume(model.mesh, 0, model.mesh.crown_triangles);
   if (model.volume_m3 < 0.0) {  // the image's rows run down: the mirror flips orientation
