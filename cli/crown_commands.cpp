@@ -176,19 +176,20 @@ void write_outputs(const CrownCommand& c, const OutputPaths& paths, const crown:
                                              model.metres_per_pixel, ground_row),
                       c.side_mask);
   }
-  if (!c.preview.empty()) {  // front and side side by side
-    crown::Raster both(2 * mask.width, mask.height, 3);
-    for (int v = 0; v < 2; ++v) {
-      const crown::Raster one = crown::preview(
-          model.mesh, v == 0 ? crown::PreviewView::kFront : crown::PreviewView::kSide, mask.width,
-          mask.height, model.metres_per_pixel, ground_row);
+  if (!c.preview.empty()) {  // front, side and top side by side
+    const crown::PreviewView views[3] = {crown::PreviewView::kFront, crown::PreviewView::kSide,
+                                         crown::PreviewView::kTop};
+    crown::Raster panels(3 * mask.width, mask.height, 3);
+    for (int v = 0; v < 3; ++v) {
+      const crown::Raster one = crown::preview(model.mesh, views[v], mask.width, mask.height,
+                                               model.metres_per_pixel, ground_row);
       for (int y = 0; y < mask.height; ++y) {
         for (int x = 0; x < mask.width; ++x) {
-          for (int k = 0; k < 3; ++k) both.at(v * mask.width + x, y, k) = one.at(x, y, k);
+          for (int k = 0; k < 3; ++k) panels.at(v * mask.width + x, y, k) = one.at(x, y, k);
         }
       }
     }
-    crown::write_raster(both, c.preview);
+    crown::write_raster(panels, c.preview);
   }
 }
 
@@ -290,8 +291,9 @@ void add_crown_commands(CLI::App& app) {
               "Also write about 300 blue-noise billboard centres inside the crown (Argudo 5.2)");
   c->add_option("--side-mask", cmd->side_mask,
                 "Also write the crown seen from the side (+x) as a mask at the photograph's scale");
-  c->add_option("--preview", cmd->preview,
-                "Also write a picture of the crown from the front and from the side (+x)");
+  c->add_option(
+      "--preview", cmd->preview,
+      "Also write a picture of the crown from the front, from the side (+x) and from above");
   c->add_flag("--keep-gaps", cmd->keep_gaps,
               "Keep sky seen through the foliage as crown texture (default: filled from the "
               "foliage around it)");
