@@ -16,7 +16,6 @@
 #include "cli/output.hpp"
 #include "crown/auto_mask.hpp"
 #include "crown/cubemap.hpp"
-#include "crown/gap_fill.hpp"
 #include "crown/image_io.hpp"
 #include "crown/preview.hpp"
 #include "crown/reconstruction.hpp"
@@ -177,19 +176,20 @@ void write_outputs(const CrownCommand& c, const OutputPaths& paths, const crown:
                                              model.metres_per_pixel, ground_row),
                       c.side_mask);
   }
-  if (!c.preview.empty()) {  // front and side side by side
-    crown::Raster both(2 * mask.width, mask.height, 3);
-    for (int v = 0; v < 2; ++v) {
-      const crown::Raster one = crown::preview(
-          model.mesh, v == 0 ? crown::PreviewView::kFront : crown::PreviewView::kSide, mask.width,
-          mask.height, model.metres_per_pixel, ground_row);
+  if (!c.preview.empty()) {  // front, side and top side by side
+    const crown::PreviewView views[3] = {crown::PreviewView::kFront, crown::PreviewView::kSide,
+                                         crown::PreviewView::kTop};
+    crown::Raster panels(3 * mask.width, mask.height, 3);
+    for (int v = 0; v < 3; ++v) {
+      const crown::Raster one = crown::preview(model.mesh, views[v], mask.width, mask.height,
+                                               model.metres_per_pixel, ground_row);
       for (int y = 0; y < mask.height; ++y) {
         for (int x = 0; x < mask.width; ++x) {
-          for (int k = 0; k < 3; ++k) both.at(v * mask.width + x, y, k) = one.at(x, y, k);
+          for (int k = 0; k < 3; ++k) panels.at(v * mask.width + x, y, k) = one.at(x, y, k);
         }
       }
     }
-    crown::write_raster(both, c.preview);
+    crown::write_raster(panels, c.preview);
   }
 }
 
@@ -210,15 +210,14 @@ void run_crown(const CrownCommand& c) {
   } else {
     mask = crown::read_mask(c.mask);
   }
-  // Sky seen through the foliage is no crown texture (crown/gap_fill.hpp).
-  const crown::Raster texture =
-      c.keep_gaps ? photo
-                  : crown::fill_gaps(photo, mask,
-                                     crown::foreground(photo, crown::AutoMaskOptions{}.threshold));
+  // Sky seen through the foliage is no crown texture (crown/gap_fill.hpp): the gaps are filled
+  // at the working resolution.
+  crown::Mask foliage;
+  if (!c.keep_gaps) foliage = crown::foreground(photo, crown::AutoMaskOptions{}.threshold);
   seconds["mask"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::mt19937_64 rng(c.seed);
-  const crown::CrownModel model =
-      crown::reconstruct_crown(texture, mask, crown_options(c, mask), rng);
+  const crown::CrownModel model = crown::reconstruct_crown(photo, mask, crown_options(c, mask), rng,
+                                                           c.keep_gaps ? nullptr : &foliage);
   for (const auto& [stage, s] : model.seconds) seconds[stage] = s;
   t0 = std::chrono::steady_clock::now();
   write_outputs(c, paths, model, mask);
@@ -237,6 +236,7 @@ void run_crown(const CrownCommand& c) {
                 {"crown_pixels", model.crown_pixels},
                 {"silhouette_pixels", model.silhouette_pixels},
                 {"metres_per_pixel", model.metres_per_pixel},
+                {"working_factor", model.working_factor},
                 {"vertices", model.mesh.vertex_count()},
                 {"triangles", model.mesh.triangle_count()},
                 {"volume_m3", model.volume_m3},
@@ -291,8 +291,9 @@ void add_crown_commands(CLI::App& app) {
               "Also write about 300 blue-noise billboard centres inside the crown (Argudo 5.2)");
   c->add_option("--side-mask", cmd->side_mask,
                 "Also write the crown seen from the side (+x) as a mask at the photograph's scale");
-  c->add_option("--preview", cmd->preview,
-                "Also write a picture of the crown from the front and from the side (+x)");
+  c->add_option(
+      "--preview", cmd->preview,
+      "Also write a picture of the crown from the front, from the side (+x) and from above");
   c->add_flag("--keep-gaps", cmd->keep_gaps,
               "Keep sky seen through the foliage as crown texture (default: filled from the "
               "foliage around it)");

@@ -6,29 +6,37 @@
 namespace fspm::crown {
 namespace {
 
-// Square-window min or max, separably (rows then columns).
+// Square-window max (dilation, `any`) or min, separably (rows then columns). Each pass keeps a
+// running count of the crown pixels in the window, so the cost is independent of the radius (the
+// automatic mask's closing of a 4000 x 3000 photograph has a radius of 60 pixels). Pixels past the
+// border count as background for a dilation and as crown for an erosion.
+void window_pass(const Mask& in, Mask& out, int radius, bool any, bool along_rows) {
+  const int lines = along_rows ? in.height : in.width;
+  const int length = along_rows ? in.width : in.height;
+  auto value = [&](int line, int i) {
+    if (i < 0 || i >= length) return !any;
+    return along_rows ? in.at(i, line) : in.at(line, i);
+  };
+  const int full = 2 * radius + 1;
+  for (int line = 0; line < lines; ++line) {
+    int count = 0;
+    for (int i = -radius; i <= radius; ++i) count += value(line, i);
+    for (int i = 0; i < length; ++i) {
+      const bool v = any ? count > 0 : count == full;
+      if (along_rows) {
+        out.set(i, line, v);
+      } else {
+        out.set(line, i, v);
+      }
+      count += value(line, i + radius + 1) - value(line, i - radius);
+    }
+  }
+}
+
 Mask window(const Mask& mask, int radius, bool any) {
   Mask rows(mask.width, mask.height), out(mask.width, mask.height);
-  for (int y = 0; y < mask.height; ++y) {
-    for (int x = 0; x < mask.width; ++x) {
-      bool v = !any;
-      for (int d = -radius; d <= radius; ++d) {
-        const bool s = mask.contains(x + d, y) ? mask.at(x + d, y) : !any;
-        v = any ? (v || s) : (v && s);
-      }
-      rows.set(x, y, v);
-    }
-  }
-  for (int y = 0; y < mask.height; ++y) {
-    for (int x = 0; x < mask.width; ++x) {
-      bool v = !any;
-      for (int d = -radius; d <= radius; ++d) {
-        const bool s = rows.contains(x, y + d) ? rows.at(x, y + d) : !any;
-        v = any ? (v || s) : (v && s);
-      }
-      out.set(x, y, v);
-    }
-  }
+  window_pass(mask, rows, radius, any, true);
+  window_pass(rows, out, radius, any, false);
   return out;
 }
 

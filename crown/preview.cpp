@@ -14,7 +14,10 @@ struct Projected {
   double depth;        // distance from the camera plane
 };
 
-Projected project(const Eigen::Vector3f& p, PreviewView view, int width, double s, double ground) {
+Projected project(const Eigen::Vector3f& p, PreviewView view, int width, int height, double s,
+                  double ground) {
+  if (view == PreviewView::kTop)
+    return {{0.5 * width + p.x() / s, 0.5 * height - p.y() / s}, -p.z()};
   const double right = view == PreviewView::kFront ? p.x() : p.y();
   const double depth = view == PreviewView::kFront ? p.y() : -p.x();
   return {{0.5 * width + right / s, ground + 1.0 - p.z() / s}, depth};
@@ -31,15 +34,30 @@ Raster preview(const CrownMesh& mesh, PreviewView view, int width, int height,
   Raster out(width, height, 3, 1.0f);
   std::vector<double> zbuf(static_cast<std::size_t>(width) * height,
                            std::numeric_limits<double>::max());
-  const Eigen::Vector3f toward_camera = view == PreviewView::kFront
-                                            ? Eigen::Vector3f(0.0f, -1.0f, 0.0f)
-                                            : Eigen::Vector3f(1.0f, 0.0f, 0.0f);
-  const Eigen::Vector3f light = (toward_camera + Eigen::Vector3f(0, 0, 0.6f)).normalized();
+  const Eigen::Vector3f toward_camera = view == PreviewView::kFront  ? Eigen::Vector3f(0, -1, 0)
+                                        : view == PreviewView::kSide ? Eigen::Vector3f(1, 0, 0)
+                                                                     : Eigen::Vector3f(0, 0, 1);
+  // Light from above, in front and from the upper left, as a sun would light a photograph: a
+  // light from the camera darkens every outline, so that a lobe standing in front of the crown
+  // reads as the rim of a hole.
+  const Eigen::Vector3f right =
+      view == PreviewView::kSide ? Eigen::Vector3f(0, 1, 0) : Eigen::Vector3f(1, 0, 0);
+  const Eigen::Vector3f up =
+      view == PreviewView::kTop ? Eigen::Vector3f(0, 1, 0) : Eigen::Vector3f(0, 0, 1);
+  const Eigen::Vector3f light = (0.6f * toward_camera + 0.8f * up - 0.5f * right).normalized();
   const std::vector<Eigen::Vector3f> normals = vertex_normals(mesh);
+  // Depth cue: the farthest surface a third darker than the nearest, so that what stands in front
+  // (a lobe seen from the side) reads as nearer, not as the rim of a hole.
+  double near = std::numeric_limits<double>::max(), far = -near;
+  for (const auto& p : mesh.positions) {
+    const double d = project(p, view, width, height, metres_per_pixel, ground_row).depth;
+    near = std::min(near, d), far = std::max(far, d);
+  }
+  const double depth_range = std::max(1e-9, far - near);
   for (const auto& tri : mesh.triangles) {
     Projected q[3];
     for (int k = 0; k < 3; ++k) {
-      q[k] = project(mesh.positions[tri[k]], view, width, metres_per_pixel, ground_row);
+      q[k] = project(mesh.positions[tri[k]], view, width, height, metres_per_pixel, ground_row);
     }
     const double area = edge(q[0].xy, q[1].xy, q[2].xy);
     if (area == 0.0) continue;
@@ -65,7 +83,8 @@ Raster preview(const CrownMesh& mesh, PreviewView view, int width, int height,
             (w0 * normals[tri[0]] + w1 * normals[tri[1]] + w2 * normals[tri[2]]).normalized();
         const Eigen::Vector3f c =
             w0 * mesh.colors[tri[0]] + w1 * mesh.colors[tri[1]] + w2 * mesh.colors[tri[2]];
-        const float shade = 0.45f + 0.75f * std::max(0.0f, n.dot(light));
+        const auto cue = static_cast<float>(1.0 - 0.35 * (depth - near) / depth_range);
+        const float shade = cue * (0.45f + 0.75f * std::max(0.0f, n.dot(light)));
         for (int k = 0; k < 3; ++k) out.at(x, y, k) = std::min(1.0f, shade * c[k]);
       }
     }

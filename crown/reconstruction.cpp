@@ -7,6 +7,7 @@
 #include "crown/base_mesh.hpp"
 #include "crown/billboard_cloud.hpp"
 #include "crown/color_cubemap.hpp"
+#include "crown/gap_fill.hpp"
 #include "crown/radius_cubemap.hpp"
 #include "crown/trunk.hpp"
 #include "fspm/error.hpp"
@@ -41,28 +42,29 @@ void check(const Raster& photo, const Mask& mask, const CrownOptions& o) {
     throw ValueError("the relief weight must be in [0, 2)");
   }
   if (o.cubemap_size < 0 || o.cubemap_size > 2048) throw ValueError("cubemap size must be 0..2048");
+  if (o.working_pixels < 16) throw ValueError("the working resolution must be >= 16 pixels");
   if (o.trunk_height_m < 0.0 || o.trunk_radius_m < 0.0) {
     throw ValueError("trunk height and radius must be >= 0");
   }
 }
 
+// The crown's extent is the base mesh's: its silhouette vertices lie on the mask's border, so the
+// crown spans `height_m` from its lowest to its highest point, as the mask's pixels do.
 Frame make_frame(const Mask& mask, const InflatedSheet& sheet, const CrownOptions& o) {
-  int x0 = mask.width, x1 = -1, y0 = mask.height, y1 = -1;
   double sum_x = 0.0, sum_y = 0.0, n = 0.0;
   for (int y = 0; y < mask.height; ++y) {
     for (int x = 0; x < mask.width; ++x) {
-      if (!mask.at(x, y)) continue;
-      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
-      sum_x += x, sum_y += y, n += 1.0;
+      if (mask.at(x, y)) sum_x += x, sum_y += y, n += 1.0;
     }
   }
+  Eigen::Vector3d lo = sheet.positions.front(), hi = lo;
+  for (const auto& p : sheet.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   Frame f;
-  f.metres_per_px = o.height_m / (y1 - y0 + 1);
+  f.metres_per_px = o.height_m / std::max(1.0, hi.y() - lo.y());
   f.centre_x_px = sum_x / n;
-  f.bottom_px = y1 + 0.5;
-  f.half_width_px = std::max(0.5, 0.5 * (x1 - x0));
-  double z_max = 0.0;
-  for (const auto& p : sheet.positions) z_max = std::max(z_max, p.z());
+  f.bottom_px = hi.y();
+  f.half_width_px = std::max(0.5, 0.5 * (hi.x() - lo.x()));
+  const double z_max = hi.z();
   f.depth_scale = z_max > 0.0 ? o.depth_ratio * f.half_width_px / z_max : 0.0;
   f.depth_max_px = z_max * f.depth_scale;
   f.base_z_m = o.trunk_height_m;
@@ -73,15 +75,29 @@ Frame make_frame(const Mask& mask, const InflatedSheet& sheet, const CrownOption
 
 // Base mesh in metres with the relief: the photograph's on the front half (0 on the silhouette),
 // the height cubemap's on the back half (faded to 0 toward the silhouette).
-void compose(BaseMesh& base, const Frame& f, const Raster& photo, const Raster& relief,
-             const Cubemap& color, const Cubemap& height, double rho) {
+void compose(BaseMesh& base, const InflatedSheet& sheet, const Frame& f, const Raster& photo,
+             const Raster& relief, const Cubemap& color, const Cubemap& height, double rho) {
+  // Each vertex takes the photograph's colour and relief at its own pixel: silhouette vertices lie
+  // half a pixel out from their centres, where rounding would reach the sky beside the crown.
+  std::vector<std::size_t> pixel_of(sheet.positions.size(), 0);
+  for (std::size_t p = 0; p < sheet.vertex.size(); ++p) {
+    if (sheet.vertex[p] >= 0) pixel_of[static_cast<std::size_t>(sheet.vertex[p])] = p;
+  }
   float relief_max = 1e-6f;
   for (float v : relief.values) relief_max = std::max(relief_max, std::abs(v));
+  // Argudo 4.6 displaces by rho (h - 1/2); h - mean(h) keeps the back's mean radius, so the relief
+  // adds detail without shrinking or swelling the crown (a uniform texture has h = 0 everywhere).
+  double height_sum = 0.0, height_count = 0.0;
+  for (const Raster& face : height.faces) {
+    for (float v : face.values) height_sum += v, height_count += 1.0;
+  }
+  const double height_mean = height_count > 0.0 ? height_sum / height_count : 0.5;
   CrownMesh& mesh = base.mesh;
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
     Eigen::Vector3f& p = mesh.positions[v];
-    const int px = std::clamp(static_cast<int>(std::lround(p.x())), 0, photo.width - 1);
-    const int py = std::clamp(static_cast<int>(std::lround(p.y())), 0, photo.height - 1);
+    const std::size_t pixel = pixel_of[static_cast<std::size_t>(base.front_of_vertex[v])];
+    const int px = static_cast<int>(pixel % static_cast<std::size_t>(photo.width));
+    const int py = static_cast<int>(pixel / static_cast<std::size_t>(photo.width));
     double depth_px = std::abs(p.z()) * f.depth_scale;
     const float side = base.is_back[v] ? 1.0f : -1.0f;  // the photograph looks along +y
     const Eigen::Vector3f world(
@@ -94,7 +110,7 @@ void compose(BaseMesh& base, const Frame& f, const Raster& photo, const Raster& 
     } else {
       const Eigen::Vector3f dir = world - f.centre_m;
       const float h = sample(height, dir);
-      depth_px += rho * f.half_width_px * (h - 0.5) *
+      depth_px += rho * f.half_width_px * (h - height_mean) *
                   std::min(1.0, depth_px / std::max(1e-9, f.depth_max_px));
       const CubeTexel t = direction_texel(dir, color.size);
       const Raster& face = color.faces[static_cast<std::size_t>(t.face)];
@@ -115,23 +131,27 @@ double seconds_since(std::chrono::steady_clock::time_point& t0) {
 }  // namespace
 
 CrownModel reconstruct_crown(const Raster& photo, const Mask& mask, const CrownOptions& options,
-                             std::mt19937_64& rng) {
+                             std::mt19937_64& rng, const Mask* foliage) {
   check(photo, mask, options);
   CrownModel model;
   auto t0 = std::chrono::steady_clock::now();
-  const InflatedSheet sheet = inflate(mask, options.inflation);
+  const WorkingImages work = working_images(photo, mask, foliage, options.working_pixels);
+  const Raster texture =
+      foliage != nullptr ? fill_gaps(work.photo, work.mask, work.foliage) : work.photo;
+  model.seconds.emplace_back("resample", seconds_since(t0));
+  const InflatedSheet sheet = inflate(work.mask, options.inflation, work.coverage);
   BaseMesh base = mirrored_mesh(sheet);
   model.seconds.emplace_back("base_mesh", seconds_since(t0));
-  model.relief = relief(photo, mask, options.relief);
+  model.relief = relief(texture, work.mask, options.relief);
   model.seconds.emplace_back("relief", seconds_since(t0));
-  const Frame frame = make_frame(mask, sheet, options);
+  const Frame frame = make_frame(work.mask, sheet, options);
   const int size = options.cubemap_size > 0
                        ? options.cubemap_size
                        : std::clamp(static_cast<int>(1.4 * frame.half_width_px), 32, 256);
-  model.color = color_cubemap(photo, mask, size, options.quilt, rng);
+  model.color = color_cubemap(texture, work.mask, size, options.quilt, rng);
   model.seconds.emplace_back("texture_synthesis", seconds_since(t0));
   const Cubemap height = height_cubemap(model.color, options.relief.levels);
-  compose(base, frame, photo, model.relief, model.color, height, options.relief_weight);
+  compose(base, sheet, frame, texture, model.relief, model.color, height, options.relief_weight);
   model.mesh = std::move(base.mesh);
   model.volume_m3 = enclosed_volume(model.mesh, 0, model.mesh.crown_triangles);
   if (model.volume_m3 < 0.0) {  // the image's rows run down: the mirror flips orientation
@@ -150,7 +170,8 @@ CrownModel reconstruct_crown(const Raster& photo, const Mask& mask, const CrownO
   model.crown_pixels = mask.count();
   model.silhouette_pixels = static_cast<std::size_t>(
       std::count(sheet.classes.begin(), sheet.classes.end(), PixelClass::kSilhouette));
-  model.metres_per_pixel = frame.metres_per_px;
+  model.metres_per_pixel = frame.metres_per_px / work.factor;
+  model.working_factor = work.factor;
   return model;
 }
 

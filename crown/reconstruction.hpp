@@ -13,6 +13,7 @@
 #include "crown/inflation.hpp"
 #include "crown/relief.hpp"
 #include "crown/texture_synthesis.hpp"
+#include "crown/working_resolution.hpp"
 
 namespace fspm::crown {
 
@@ -29,25 +30,31 @@ struct CrownOptions {
   double trunk_height_m = 0.0;  // from the ground to the crown's lowest point; 0: no trunk
   double trunk_radius_m = 0.0;  // 0: 2 % of the crown height
   bool billboards = false;
+  // The crown's bounding box is reduced to at most this many pixels on its longer side
+  // (crown/working_resolution.hpp); its border keeps the photograph's resolution.
+  int working_pixels = 512;
 };
 
 struct CrownModel {
   CrownMesh mesh;
   Cubemap color;   // RGB
   Cubemap radius;  // metres from `centre`
-  Raster relief;   // Poisson-pasted heightfield of the photograph
+  Raster relief;   // Poisson-pasted heightfield of the photograph, at the working resolution
   Eigen::Vector3f centre = Eigen::Vector3f::Zero();
   std::vector<Eigen::Vector3f> billboards;
   std::size_t crown_pixels = 0;
   std::size_t silhouette_pixels = 0;
-  double metres_per_pixel = 0.0;
+  double metres_per_pixel = 0.0;  // of the photograph
+  int working_factor = 1;         // photograph pixels per working pixel along each side
   double volume_m3 = 0.0;
   std::vector<std::pair<std::string, double>> seconds;  // per stage, in order
 };
 
-// Throws ValueError for a photograph and mask of different sizes, an empty mask, or options out
-// of range.
+// `foliage` (optional) marks the photograph's pixels that hold crown texture: the gaps between
+// them inside the crown are filled from the foliage around them (crown/gap_fill.hpp) at the
+// working resolution. Throws ValueError for a photograph and mask of different sizes, an empty
+// mask, or options out of range.
 CrownModel reconstruct_crown(const Raster& photo, const Mask& mask, const CrownOptions& options,
-                             std::mt19937_64& rng);
+                             std::mt19937_64& rng, const Mask* foliage = nullptr);
 
 }  // namespace fspm::crown

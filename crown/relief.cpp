@@ -22,7 +22,11 @@ Raster luminance_heightfield(const Raster& rgb, const Mask& mask, const ReliefOp
       hi = std::max(hi, lum.at(x, y));
     }
   }
-  const float range = hi > lo ? hi - lo : 1.0f;
+  // A crown of one colour has no relief: below an 8-bit step, differences are rounding of the
+  // blurs and synthesis, which normalizing would blow up to the full range.
+  constexpr float kFlat = 1e-3f;
+  const float range = hi - lo > kFlat ? hi - lo : 1.0f;
+  if (hi - lo <= kFlat) lo = hi;
   for (float& v : lum.values) v = std::clamp((v - lo) / range, 0.0f, 1.0f);
   Raster sum(lum.width, lum.height, 1);
   double sigma = options.first_sigma_px, total_weight = 0.0;

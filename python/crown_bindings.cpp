@@ -12,7 +12,6 @@
 
 #include "crown/auto_mask.hpp"
 #include "crown/cubemap.hpp"
-#include "crown/gap_fill.hpp"
 #include "crown/image_io.hpp"
 #include "crown/reconstruction.hpp"
 
@@ -24,14 +23,13 @@ crown::CrownModel reconstruct(const std::string& photo_path,
                               double depth_ratio, double relief, std::uint64_t seed) {
   const crown::Raster photo = crown::read_rgb(photo_path);
   const crown::Mask mask = mask_path ? crown::read_mask(*mask_path) : crown::auto_mask(photo, {});
-  const crown::Raster texture =
-      crown::fill_gaps(photo, mask, crown::foreground(photo, crown::AutoMaskOptions{}.threshold));
+  const crown::Mask foliage = crown::foreground(photo, crown::AutoMaskOptions{}.threshold);
   crown::CrownOptions options;
   options.height_m = height_m;
   options.depth_ratio = depth_ratio;
   options.relief_weight = relief;
   std::mt19937_64 rng(seed);
-  return crown::reconstruct_crown(texture, mask, options, rng);
+  return crown::reconstruct_crown(photo, mask, options, rng, &foliage);
 }
 
 // A cubemap as the (N, 6N, C) float32 strip of its faces side by side, as fspm crown writes it.
@@ -85,10 +83,12 @@ void bind_crown(py::module_& m) {
           "The crown's centre in m, [x, y, z]: the radii are measured from it")
       .def_readonly("volume_m3", &CrownModel::volume_m3, "Volume of the crown in m^3")
       .def_readonly("silhouette_pixels", &CrownModel::silhouette_pixels,
-                    "Pixels of the crown's silhouette S (8-connected)")
+                    "Pixels of the crown's silhouette S (8-connected), at the working resolution")
       .def_readonly("crown_pixels", &CrownModel::crown_pixels, "Pixels of the crown mask")
       .def_readonly("metres_per_pixel", &CrownModel::metres_per_pixel,
                     "Scale of the photograph, m per pixel")
+      .def_readonly("working_factor", &CrownModel::working_factor,
+                    "Photograph pixels per working pixel along each side (docs/crown.md)")
       .def_property_readonly(
           "seconds",
           [](const CrownModel& c) {
@@ -96,7 +96,8 @@ void bind_crown(py::module_& m) {
             for (const auto& [stage, s] : c.seconds) d[stage.c_str()] = s;
             return d;
           },
-          "Seconds per stage (base_mesh, relief, texture_synthesis, composition), a dict");
+          "Seconds per stage (resample, base_mesh, relief, texture_synthesis, composition), a "
+          "dict");
 
   m.def("reconstruct_crown", &reconstruct, py::arg("photo"), py::arg("mask") = py::none(),
         py::arg("height_m") = 10.0, py::arg("depth_ratio") = 1.0, py::arg("relief") = 0.15,

@@ -28,14 +28,14 @@ def test_a_disc_becomes_a_sphere(tmp_path):
     crown = fspm.reconstruct_crown(str(tmp_path / "photo.png"), str(tmp_path / "mask.png"),
                                    height_m=rows * 0.1, relief=0.0)
     assert crown.metres_per_pixel == pytest.approx(0.1)
-    # Silhouette pixel centres lie 39.5 pixels from the centre on average: a 3.95 m sphere.
-    sphere = 4.0 / 3.0 * math.pi * 3.95 ** 3
+    # The disc spans 80 pixels edge to edge, its silhouette placed on its border: a 4 m sphere.
+    sphere = 4.0 / 3.0 * math.pi * 4.0 ** 3
     assert crown.volume_m3 == pytest.approx(sphere, rel=0.05)
     v = crown.vertices
     assert v.shape[1] == 3 and crown.triangles.max() < len(v)
     centre = np.array([0.0, 0.0, (v[:, 2].max() + v[:, 2].min()) / 2])
     r = np.linalg.norm(v - centre, axis=1)
-    assert np.mean(np.abs(r - 3.95)) / 3.95 < 0.02
+    assert np.mean(np.abs(r - 4.0)) / 4.0 < 0.02
     assert set(crown.seconds) >= {"base_mesh", "relief", "texture_synthesis", "composition"}
     # The cubemaps as fspm crown writes them: the sphere's radius in every direction from its
     # centre, and the photograph's crown green.
@@ -43,7 +43,7 @@ def test_a_disc_becomes_a_sphere(tmp_path):
     n = radius.shape[0]
     assert radius.shape == (n, 6 * n, 1) and color.shape == (n, 6 * n, 3)
     assert np.allclose(crown.centre, centre, atol=0.1)
-    assert np.mean(np.abs(radius - 3.95)) / 3.95 < 0.02
+    assert np.mean(np.abs(radius - 4.0)) / 4.0 < 0.02
     mean = color.reshape(-1, 3).mean(axis=0)
     assert mean[1] > mean[0] and mean[1] > mean[2]
 

@@ -70,10 +70,10 @@ TEST(Inflation, StencilIsTheSquaredFivePointLaplacian) {
   }
 }
 
-// The disc of radius 100 has its silhouette pixel centres 199 pixels apart: the radius the
-// method sees (and the module's depth scaling uses) is 99.5.
+// The disc of radius 100 (pixel centres within 100 of its centre) spans 200 pixels edge to edge;
+// its silhouette pixel centres lie 99.5 from the centre on average and are moved to the border.
 TEST(Inflation, DiscBecomesSphere) {
-  const double r = 99.5;
+  const double r = 100.0;
   const InflatedSheet s = inflate(ellipse_mask(100.0, 100.0), {2.0, Connectivity::kEight});
   const auto [mean, worst] = ellipsoid_error(scaled(s, r), r, r, r);
   std::cout << "disc: mean radius error " << mean << ", worst " << worst << "\n";
@@ -83,6 +83,28 @@ TEST(Inflation, DiscBecomesSphere) {
   double zmax = 0.0;
   for (const auto& p : s.positions) zmax = std::max(zmax, p.z());
   EXPECT_NEAR(zmax, r, 0.05 * r);
+}
+
+// The border of the disc of radius 100 is the circle of radius 100 (the disc's pixels cover
+// pi 100^2 to 1e-4): silhouette vertices are placed on it, not at their centres 99.5 away.
+TEST(Inflation, SilhouetteLiesOnTheBorder) {
+  const Mask mask = ellipse_mask(100.0, 100.0);
+  const InflatedSheet s = inflate(mask, {2.0, Connectivity::kEight});
+  double sum = 0.0, centres = 0.0, worst = 0.0, n = 0.0;
+  for (std::size_t p = 0; p < s.classes.size(); ++p) {
+    if (s.classes[p] != PixelClass::kSilhouette) continue;
+    const Eigen::Vector3d& q = s.positions[static_cast<std::size_t>(s.vertex[p])];
+    const double d = std::hypot(q.x() - kCentre, q.y() - kCentre);
+    sum += d, n += 1.0, worst = std::max(worst, std::abs(d - 100.0));
+    centres +=
+        std::hypot(static_cast<double>(p % 256) - kCentre, static_cast<double>(p / 256) - kCentre);
+    EXPECT_EQ(q.z(), 0.0);
+  }
+  std::cout << "silhouette: mean distance " << sum / n << " (centres " << centres / n << "), worst "
+            << worst << "\n";
+  EXPECT_NEAR(sum / n, 100.0, 0.1);
+  EXPECT_LT(worst, 0.6);
+  EXPECT_LT(centres / n, 99.8);  // the centres themselves lie inside
 }
 
 TEST(Inflation, EllipseBecomesEllipsoidLikeCrown) {
@@ -109,7 +131,7 @@ TEST(Inflation, FourConnectedSilhouetteIsNoSphere) {
 }
 
 TEST(Inflation, MirroredMeshEnclosesTheSphereVolume) {
-  const double r = 99.5;
+  const double r = 100.0;
   const InflatedSheet s = inflate(ellipse_mask(100.0, 100.0), {2.0, Connectivity::kEight});
   BaseMesh base = mirrored_mesh(s);
   double zmax = 0.0;
@@ -159,9 +181,27 @@ TEST(Inflation, NestedDissectionSolveMatchesRasterOrderSolve) {
         if (c == PixelClass::kInner) {
           triplets.emplace_back(row_of[p], row_of[static_cast<std::size_t>(qy * w + qx)], m);
         } else if (c == PixelClass::kSilhouette) {
-          rhs.row(row_of[p]) -= m * Eigen::RowVector3d(qx, qy, 0.0);
+          // Fixed where inflate placed it (on the border, checked in SilhouetteLiesOnTheBorder).
+          const auto& fixed = sheet.positions[static_cast<std::size_t>(sheet.vertex[qy * w + qx])];
+          rhs.row(row_of[p]) -= m * fixed.transpose();
         } else {
-          rhs.row(row_of[p]) -= m * Eigen::RowVector3d(qx - 0.5 * dx, qy - 0.5 * dy, -k);
+          // Moved with the border as the silhouette pixels between p and q: p + d/2 for a
+          // straight step of two, p's two 4-neighbours toward a diagonal one.
+          Eigen::Vector2d shift = Eigen::Vector2d::Zero();
+          int ns = 0;
+          const std::vector<std::pair<int, int>> between =
+              dx == 0 || dy == 0 ? std::vector<std::pair<int, int>>{{x + dx / 2, y + dy / 2}}
+                                 : std::vector<std::pair<int, int>>{{x + dx, y}, {x, y + dy}};
+          for (const auto& [sx, sy] : between) {
+            const auto s = static_cast<std::size_t>(sy * w + sx);
+            if (classes[s] != PixelClass::kSilhouette) continue;
+            shift += sheet.positions[static_cast<std::size_t>(sheet.vertex[s])].head<2>() -
+                     Eigen::Vector2d(sx, sy);
+            ++ns;
+          }
+          if (ns > 0) shift /= ns;
+          rhs.row(row_of[p]) -=
+              m * Eigen::RowVector3d(qx - 0.5 * dx + shift.x(), qy - 0.5 * dy + shift.y(), -k);
         }
       }
     }
