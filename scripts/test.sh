@@ -73,6 +73,9 @@ if [ -f build/python/fspm/__init__.py ]; then
   done
 fi
 
+echo "== README.md and the docs pages' commands, run as written in a clean clone"
+/usr/bin/python3 scripts/readme_check.py --bin build/bin --timings build/readme_timings.json
+
 echo "== HTML report in headless Chromium (fspm report --html)"
 scripts/html_report_check.sh
 
