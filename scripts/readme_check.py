@@ -49,6 +49,8 @@ SKIPPED = [
      "by the graphics tests"),
     (r"^oiiotool frame_", "joins the frames of the skipped wind movie"),
     (r"^xvfb-run -a scripts/impostor_figure\.sh", "the figure script of a docs image (minutes)"),
+    (r"^xvfb-run -a fspm render examples/landscape/landscape\.json .*--size 1280x800",
+     "the README's landscape render, run there (a minute on 2 cores)"),
 ]
 
 # Claims: a command (regular expression), the text the pages must still contain, and a function
@@ -109,17 +111,26 @@ def blocks(page):
 
 
 def commands(lines, first):
-    """Shell lines joined at backslashes: (line number, command, comment)."""
-    out, pending, at = [], "", first
+    """Shell lines joined at backslashes and over a multi-line for/while/if: (line, command,
+    comment)."""
+    out, pending, at, compound = [], "", first, None
     for i, line in enumerate(lines):
-        if not pending:
+        if not pending and compound is None:
             at = first + i
         if line.endswith("\\"):
             pending += line[:-1] + " "
             continue
-        text = pending + line
+        code, comment = split_comment(pending + line)
         pending = ""
-        code, comment = split_comment(text)
+        if compound is not None:
+            compound = (compound[0] + "\n" + code, compound[1] or comment)
+            if re.match(r"^\s*(done|fi)\b", code):
+                out.append((at, compound[0], compound[1]))
+                compound = None
+            continue
+        if re.match(r"^(for|while|if) ", code) and not re.search(r"\b(done|fi)\b", code):
+            compound = (code, comment)
+            continue
         if code.strip():
             out.append((at, " ".join(code.split()), comment))
     return out
@@ -190,7 +201,8 @@ def main():
     os.symlink(binary, os.path.join(clone, "build", "bin"))
     if python:
         os.symlink(python, os.path.join(clone, "build", "python"))
-    env = dict(os.environ, PATH=binary + os.pathsep + os.environ.get("PATH", ""),
+    # python3 is Debian's (/usr/bin first), with numpy, as on the machines the README is for.
+    env = dict(os.environ, PATH=os.pathsep.join([binary, "/usr/bin", os.environ.get("PATH", "")]),
                HOME=os.path.join(scratch, "home"))
     if python:
         env["PYTHONPATH"] = python
