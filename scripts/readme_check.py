@@ -88,6 +88,8 @@ CLAIMS = [
      _int_after(r"(\d+) runs \("), 36),
     (r"run examples/experiments/wall_distance\.toml", "5 distances x 3 pruning strengths",
      _int_after(r"(\d+) runs \("), 15),
+    (r"report avg --html --single-file", "avg/report.html (one file)",
+     lambda _, cwd: os.path.getsize(os.path.join(cwd, "avg", "report.html")) < 20e6, True),
     (r"run experiments/adapted_vs_grown\.toml --replicates 4", "# 108 runs",
      _int_after(r"(\d+) runs \("), 108),
 ]

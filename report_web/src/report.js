@@ -242,10 +242,13 @@
   const glbWaiting = new Map();
   // Called by the trees/*.js files: a .glb, gzipped, in base64 (the browser's own
   // DecompressionStream inflates it).
+  // A single-file report (fspm report --single-file) carries its trees inline: they arrive
+  // before any view asks for them and wait here.
+  const glbEmbedded = new Map();
   window.fspmGlb = (name, base64) => {
-    const bytes = Uint8Array.from(atob(base64), (c) => c.charCodeAt(0));
     const w = glbWaiting.get(name);
-    if (!w) return;
+    if (!w) { glbEmbedded.set(name, base64); return; }
+    const bytes = Uint8Array.from(atob(base64), (c) => c.charCodeAt(0));
     const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream('gzip'));
     new Response(stream).arrayBuffer().then(w.resolve, w.reject);
   };
@@ -254,6 +257,12 @@
       let resolve, reject;
       const promise = new Promise((a, b) => { resolve = a; reject = b; });
       glbWaiting.set(name, { promise, resolve, reject });
+      if (glbEmbedded.has(name)) {
+        const base64 = glbEmbedded.get(name);
+        glbEmbedded.delete(name);
+        window.fspmGlb(name, base64);
+        return promise;
+      }
       const s = el('script', { src: `trees/${name}.js` });
       s.onerror = () => reject(new Error(`cannot load trees/${name}.js`));
       document.head.appendChild(s);
