@@ -42,16 +42,6 @@ std::string metric_label(const std::string& metric, ex::ModelKind model_kind) {
   return unit.empty() ? metric : metric + " (" + unit + ")";
 }
 
-// The swept parameter that is the plants' age ("years", "age"), when it has several values:
-// metrics grow with age, so a mean over ages says nothing about either (the report plots them per
-// age instead).
-const ex::SweptParameter* age_parameter(const std::vector<ex::SweptParameter>& summary) {
-  for (const ex::SweptParameter& p : summary) {
-    if ((p.name == "years" || p.name == "age") && p.values.size() >= 2) return &p;
-  }
-  return nullptr;
-}
-
 // The mean of `metric` over the successful runs with `parameter` = `value` and, when `age` is
 // given, age = `age_value`; n = 0 when none.
 ex::Moments moments_at(const std::vector<ex::RunRecord>& runs, const std::string& parameter,
@@ -166,7 +156,7 @@ std::string runs_per_value(const ex::SweptParameter& parameter, const std::strin
 std::string sweep_figures(const ex::Experiment& x, const ex::ExperimentInfo& info,
                           const std::vector<ex::RunRecord>& runs, const std::string& dir) {
   const std::vector<ex::SweptParameter> summary = ex::sweep_summary(info, runs);
-  const ex::SweptParameter* age = age_parameter(summary);
+  const ex::SweptParameter* age = ex::age_parameter(summary);
   std::string md;
   try {
     for (std::size_t p = 0; p < summary.size(); ++p) {
