@@ -258,6 +258,12 @@ void add_evaluation_commands(CLI::App& app) {
                   "The alternative hypothesis about mean(A) - mean(B)");
   tt->add_option("--level", t->level, "Confidence level of the interval")->capture_default_str();
   tt->add_flag("--json", t->json, "Machine-readable JSON on stdout");
+  tt->footer(
+      "Input: one number per line, the first line may be a header, e.g.\n"
+      "  dry_weight_g\n  4.17\n  5.58\n  ...\n"
+      "or a CSV file whose column --column names. Example (Dobson's plant weights):\n"
+      "  fspm stats ttest examples/stats/plant_growth_ctrl.csv "
+      "examples/stats/plant_growth_trt2.csv --welch");
   tt->callback([t] { run_ttest(*t); });
 
   auto m = std::make_shared<MannWhitneyOptions>();

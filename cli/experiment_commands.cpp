@@ -1,6 +1,7 @@
 // fspm run | results export | show | merge: parameter sweeps and their result databases.
 #include <unistd.h>
 
+#include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <atomic>
@@ -19,6 +20,7 @@
 #include "cli/commands.hpp"
 #include "cli/full_command_list.hpp"
 #include "cli/html_report.hpp"
+#include "cli/html_single_file.hpp"
 #include "cli/output.hpp"
 #include "cli/report_figures.hpp"
 #include "cli/run_file_writers.hpp"
@@ -89,6 +91,7 @@ struct ReportOptions {
   std::string output;
   bool no_figures = false;
   bool html = false;
+  bool single_file = false;
   bool json = false;
 };
 
@@ -405,7 +408,7 @@ void report_command(const ReportOptions& o) {
   const std::string path = o.output.empty() ? (fs::path(o.dir) / "report.md").string() : o.output;
   write_file_atomically(path, [&](std::ostream& out) { out << md; });
   std::string html_path;
-  if (o.html || (in.x && in.x->report_html)) {
+  if (o.html || o.single_file || (in.x && in.x->report_html)) {
     HtmlReportInput h;
     h.experiment = in.x ? &*in.x : nullptr;
     h.info = &db.info();
@@ -414,6 +417,13 @@ void report_command(const ReportOptions& o) {
     h.markdown = report_markdown(db, in, o.dir, false, true);
     h.dir = o.dir;
     html_path = write_html_report(h).string();
+    if (o.single_file) {
+      const fs::path single = fs::path(o.dir) / "report.html";
+      const std::uintmax_t bytes =
+          write_single_file_report(fs::path(html_path).parent_path(), single);
+      spdlog::info("{}: the HTML report in one file, {:.1f} MB", single.string(), bytes / 1e6);
+      html_path = single.string();
+    }
   }
   if (!o.json) {
     std::cout << path << '\n';
@@ -488,6 +498,9 @@ void add_experiment_commands(CLI::App& app) {
   rep->add_flag("--no-figures", report->no_figures, "Tables only (figures need an X display)");
   rep->add_flag("--html", report->html,
                 "Also an interactive HTML report, DIR/report/index.html (as [report] html = true)");
+  rep->add_flag("--single-file", report->single_file,
+                "Also DIR/report.html, the HTML report in one file with its "
+                "libraries, data and trees (glTF) inside, to send or archive (implies --html)");
   rep->add_flag("--json", report->json,
                 "One JSON object on stdout: report path, runs, and whether the experiment's "
                 "tables, figures and notes are in it");

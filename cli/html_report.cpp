@@ -90,15 +90,17 @@ std::string html_sweeps_markdown(const ex::ExperimentInfo& info,
   }
   if (!any || info.metrics.empty()) return {};
   return "\n## Metrics against the swept parameters\n\nFor each swept parameter and each metric: "
-         "every successful run as a point (hover for its run, seed and parameters), and the "
-         "mean over the runs with each value, the other parameters pooled (red line). The "
-         "marginal-means tables above give the numbers.\n\n<div class=\"fspm-sweeps\"></div>\n";
+         "every successful run as a grey point (hover for its run, seed and parameters), and the "
+         "mean over the runs with each value (diamonds), per age when the experiment sweeps "
+         "`years` or `age` (one colour per age, never pooled across ages), the other "
+         "parameters pooled. Text values (presets, sets) are categories: no line joins them. "
+         "The marginal-means tables above give the numbers.\n\n<div class=\"fspm-sweeps\"></div>\n";
 }
 
 std::string html_comparisons_markdown() {
   return "\n### Figures\n\nOne box plot per group: the box spans the middle half of the "
          "distances (first to third quartile) with a line at the median, the whiskers reach the "
-         "farthest distances within 1.5 times the box's height; every pair is a point (hover for "
+         "smallest and largest distance (as in report.md); every pair is a point (hover for "
          "both runs, their seeds and parameters); n is the number of pairs.\n\n"
          "<div class=\"fspm-boxplots\"></div>\n";
 }

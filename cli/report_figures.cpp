@@ -1,5 +1,7 @@
 #include "cli/report_figures.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -40,15 +42,73 @@ std::string metric_label(const std::string& metric, ex::ModelKind model_kind) {
   return unit.empty() ? metric : metric + " (" + unit + ")";
 }
 
+// The mean of `metric` over the successful runs with `parameter` = `value` and, when `age` is
+// given, age = `age_value`; n = 0 when none.
+ex::Moments moments_at(const std::vector<ex::RunRecord>& runs, const std::string& parameter,
+                       const std::string& value, const ex::SweptParameter* age,
+                       const std::string& age_value, const std::string& metric) {
+  ex::Moments m;
+  for (const ex::RunRecord& r : runs) {
+    if (r.status != ex::RunStatus::kOk) continue;
+    const auto it = r.parameters.find(parameter);
+    if (it == r.parameters.end() || ex::parameter_text(it->second) != value) continue;
+    if (age != nullptr) {
+      const auto a = r.parameters.find(age->name);
+      if (a == r.parameters.end() || ex::parameter_text(a->second) != age_value) continue;
+    }
+    const auto v = r.metrics.find(metric);
+    if (v != r.metrics.end() && std::isfinite(v->second)) m.add(v->second);
+  }
+  return m;
+}
+
+// The series of one chart: per age (one series each, when `age` is given), else the mean and
+// its ± sd band. A text parameter (presets A, B, C) is a category axis: dots, no lines.
+std::vector<graphics::ChartSeries> chart_series(const ex::SweptParameter& parameter,
+                                                const std::string& metric,
+                                                const std::vector<ex::RunRecord>& runs,
+                                                const ex::SweptParameter* age,
+                                                const std::vector<double>& xs) {
+  const bool line = parameter.numeric();
+  std::vector<graphics::ChartSeries> series;
+  if (age != nullptr) {
+    for (const ex::SweptValue& a : age->values) {
+      graphics::ChartSeries s{age->name + " = " + a.text, {}, {}, -1, false, true, true, line};
+      for (std::size_t i = 0; i < parameter.values.size(); ++i) {
+        const ex::Moments m =
+            moments_at(runs, parameter.name, parameter.values[i].text, age, a.text, metric);
+        if (m.n == 0) continue;
+        s.x.push_back(xs[i]);
+        s.y.push_back(m.mean);
+      }
+      if (!s.x.empty()) series.push_back(std::move(s));
+    }
+    return series;
+  }
+  graphics::ChartSeries mean{"mean", {}, {}, 0, false, true, false, line};
+  graphics::ChartSeries upper{
+      "mean + sd, at most the largest", {}, {}, 0, true, false, false, line};
+  graphics::ChartSeries lower{
+      "mean - sd, at least the smallest", {}, {}, 0, true, false, false, line};
+  for (std::size_t i = 0; i < parameter.values.size(); ++i) {
+    const auto it = parameter.values[i].metrics.find(metric);
+    if (it == parameter.values[i].metrics.end() || it->second.n == 0) continue;
+    mean.x.push_back(xs[i]);
+    mean.y.push_back(it->second.mean);
+    upper.x.push_back(xs[i]);
+    upper.y.push_back(it->second.upper_band());
+    lower.x.push_back(xs[i]);
+    lower.y.push_back(it->second.lower_band());
+  }
+  return {mean, upper, lower};
+}
+
 // The chart of one metric against one swept parameter; false when fewer than two values have
 // the metric.
 bool sweep_chart(const ex::SweptParameter& parameter, const std::string& metric,
+                 const std::vector<ex::RunRecord>& runs, const ex::SweptParameter* age,
                  ex::ModelKind model_kind, const std::string& x_label,
                  const std::string& png_path) {
-  // No legend (it would hide the top right corner): the report's text says which line is which.
-  graphics::ChartSeries mean{"mean", {}, {}, 0, false, true, false};
-  graphics::ChartSeries upper{"mean + sd, at most the largest", {}, {}, 0, true, false, false};
-  graphics::ChartSeries lower{"mean - sd, at least the smallest", {}, {}, 0, true, false, false};
   graphics::ChartOptions options;
   const bool numeric = parameter.numeric();
   // A tick per value when the values are few and short (a grid's 10, 20, 30), VTK's own ticks
@@ -57,29 +117,26 @@ bool sweep_chart(const ex::SweptParameter& parameter, const std::string& metric,
   for (const ex::SweptValue& v : parameter.values) {
     value_ticks = value_ticks && (!numeric || v.text.size() <= kMaxTickLabel);
   }
+  std::vector<double> xs;
   for (std::size_t i = 0; i < parameter.values.size(); ++i) {
     const ex::SweptValue& v = parameter.values[i];
-    const double x = numeric ? v.number : static_cast<double>(i);
+    xs.push_back(numeric ? v.number : static_cast<double>(i));
     if (value_ticks) {
-      options.x_ticks.push_back(x);
+      options.x_ticks.push_back(xs.back());
       options.x_tick_labels.push_back(v.text);
     }
-    const auto it = v.metrics.find(metric);
-    if (it == v.metrics.end() || it->second.n == 0) continue;
-    mean.x.push_back(x);
-    mean.y.push_back(it->second.mean);
-    upper.x.push_back(x);
-    upper.y.push_back(it->second.upper_band());
-    lower.x.push_back(x);
-    lower.y.push_back(it->second.lower_band());
   }
-  // A line needs two values (regrow_seconds, say, is only recorded for one set).
-  if (mean.x.size() < 2) return false;
+  if (&parameter == age) age = nullptr;  // against the age itself: the means over the rest
+  std::vector<graphics::ChartSeries> series = chart_series(parameter, metric, runs, age, xs);
+  std::size_t longest = 0;
+  for (const graphics::ChartSeries& s : series) longest = std::max(longest, s.x.size());
+  // Two values at least (regrow_seconds, say, is only recorded for one set).
+  if (series.empty() || longest < 2) return false;
   options.title = metric_label(metric, model_kind);
   options.x_label = x_label;
   options.width = 420;
   options.height = 300;
-  graphics::write_line_chart({mean, upper, lower}, options, png_path);
+  graphics::write_line_chart(series, options, png_path);
   return true;
 }
 
@@ -99,6 +156,7 @@ std::string runs_per_value(const ex::SweptParameter& parameter, const std::strin
 std::string sweep_figures(const ex::Experiment& x, const ex::ExperimentInfo& info,
                           const std::vector<ex::RunRecord>& runs, const std::string& dir) {
   const std::vector<ex::SweptParameter> summary = ex::sweep_summary(info, runs);
+  const ex::SweptParameter* age = ex::age_parameter(summary);
   std::string md;
   try {
     for (std::size_t p = 0; p < summary.size(); ++p) {
@@ -117,7 +175,7 @@ std::string sweep_figures(const ex::Experiment& x, const ex::ExperimentInfo& inf
           const std::string label =
               own == counts ? parameter.name : parameter.name + " (runs: " + own + ")";
           const std::string file = "figures/sweep-" + std::to_string(p) + "-" + metric + ".png";
-          if (!sweep_chart(parameter, metric, x.model_kind, label,
+          if (!sweep_chart(parameter, metric, runs, age, x.model_kind, label,
                            (fs::path(dir) / file).string())) {
             continue;
           }
@@ -135,11 +193,20 @@ std::string sweep_figures(const ex::Experiment& x, const ex::ExperimentInfo& inf
     return "\nNote: plots against the swept parameters left out: " + std::string(e.what()) + "\n";
   }
   if (md.empty()) return md;
-  return "\n## Metrics against the swept parameters\n\nFor each swept parameter and each value: "
-         "the mean of each metric over all successful runs with that value, the other "
-         "parameters pooled (solid line, dots), and the mean ± its sample standard deviation, "
-         "kept within the smallest and largest value (dashed). The marginal-means tables above "
-         "give the numbers.\n" +
+  const std::string pooled =
+      age == nullptr
+          ? "the mean of each metric over all successful runs with that value, the other "
+            "parameters pooled (solid, dots), and the mean ± its sample standard deviation, kept "
+            "within the smallest and largest value (dashed)"
+          : "the mean of each metric over the successful runs with that value at each `" +
+                age->name + "` (one colour per " + age->name +
+                ", the legend names them; never pooled across ages), the other parameters "
+                "pooled; against `" +
+                age->name + "` itself the mean over all runs and ± its standard deviation";
+  return "\n## Metrics against the swept parameters\n\nFor each swept parameter and each value: " +
+         pooled +
+         ". Text values (presets, sets) are categories: dots without lines between them. The "
+         "marginal-means tables above give the numbers.\n" +
          md;
 }
 

@@ -6,6 +6,8 @@
 
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
+#include "fspm/input_file.hpp"
+#include "fspm/json_fields.hpp"
 #include "fspm/scene_reader.hpp"
 #include "fspm/scene_writer.hpp"
 
@@ -18,20 +20,32 @@ struct UpgradeOptions {
   bool json = false;
 };
 
+// The layout the file is written in: "current", or the earlier one the reader accepted
+// (docs/formats.md, "Earlier layouts").
+std::string scene_layout(const std::string& path) {
+  const nlohmann::json doc = parse_json_text(read_text_input_file(path), path);
+  if (!doc.contains("fspm_scene")) return "occluders";
+  return doc.at("fspm_scene") == kSceneVersion ? "current" : "instances";
+}
+
 void run_upgrade(const UpgradeOptions& o) {
   refuse_overwriting_input(o.out, {o.input});
   const SceneDescription scene = read_scene_description(o.input);
+  const std::string layout = scene_layout(o.input);
   write_scene_description(scene, o.out);
   if (o.json) {
     print_json({{"file", o.input},
                 {"output", o.out},
+                {"layout", layout},
                 {"obstacles", scene.obstacles.size()},
                 {"ground", scene.ground.has_value()},
                 {"plants", scene.plants.size()}});
     return;
   }
-  spdlog::info("wrote {} ({} obstacles, {} plants{})", o.out, scene.obstacles.size(),
-               scene.plants.size(), scene.ground ? ", ground" : "");
+  spdlog::info("wrote {} ({} obstacles, {} plants{}){}", o.out, scene.obstacles.size(),
+               scene.plants.size(), scene.ground ? ", ground" : "",
+               layout == "current" ? "; the input was already in the current layout"
+                                   : "; upgraded from the earlier '" + layout + "' layout");
 }
 
 }  // namespace

@@ -252,7 +252,12 @@ class Reader {
     if (p.is_relative() && path_ != "<string>") p = fs::path(path_).parent_path() / p;
     std::error_code ec;
     if (!fs::is_regular_file(p, ec)) {
-      throw IoError(key + ": no such file '" + p.string() + "'", path_, line_of(node));
+      // Relative paths are the experiment file's, not the working directory's: say where it looked.
+      throw IoError(key + ": no such file '" + given + "' (looked for " +
+                        fs::absolute(p, ec).lexically_normal().string() +
+                        ": relative paths are read from the experiment file's folder; copy the "
+                        "file along or give an absolute path)",
+                    path_, line_of(node));
     }
     return p.lexically_normal().string();
   }

@@ -178,10 +178,27 @@ std::string markdown_report(const ExperimentInfo& info, const std::vector<RunRec
     md << "## Metrics per parameter point\n\nMean ± sample standard deviation over the successful "
           "replicates of each point.\n\n";
     point_table(md, info, points, biological, kind);
-    for (const SweptParameter& parameter : sweep_summary(info, runs)) {
-      md << "\n## Marginal means over `" << escape(parameter.name)
-         << "`\n\nMean ± sample standard deviation over all successful runs with each value.\n\n";
-      marginal_table(md, parameter, biological, kind);
+    const std::vector<SweptParameter> summary = sweep_summary(info, runs);
+    const SweptParameter* age = age_parameter(summary);
+    for (const SweptParameter& parameter : summary) {
+      md << "\n## Marginal means over `" << escape(parameter.name) << "`\n\n";
+      if (age == nullptr || &parameter == age) {
+        md << "Mean ± sample standard deviation over all successful runs with each value.\n\n";
+        marginal_table(md, parameter, biological, kind);
+        continue;
+      }
+      // Per age: the plants grow, so a mean over ages would describe none of them.
+      md << "Mean ± sample standard deviation over the successful runs with each value, one "
+            "table per `"
+         << escape(age->name) << "` (never pooled across ages).\n";
+      for (const SweptValue& a : age->values) {
+        for (const SweptParameter& at_age :
+             sweep_summary(info, runs_with(runs, age->name, a.text))) {
+          if (at_age.name != parameter.name) continue;
+          md << "\n### At " << escape(age->name) << " = " << escape(a.text) << "\n\n";
+          marginal_table(md, at_age, biological, kind);
+        }
+      }
     }
   }
 

@@ -60,6 +60,23 @@ std::vector<SweptParameter> sweep_summary(const ExperimentInfo& info,
   return out;
 }
 
+const SweptParameter* age_parameter(const std::vector<SweptParameter>& summary) {
+  for (const SweptParameter& p : summary) {
+    if ((p.name == "years" || p.name == "age") && p.values.size() >= 2) return &p;
+  }
+  return nullptr;
+}
+
+std::vector<RunRecord> runs_with(const std::vector<RunRecord>& runs, const std::string& parameter,
+                                 const std::string& value) {
+  std::vector<RunRecord> out;
+  for (const RunRecord& r : runs) {
+    const auto it = r.parameters.find(parameter);
+    if (it != r.parameters.end() && parameter_text(it->second) == value) out.push_back(r);
+  }
+  return out;
+}
+
 bool is_timing_metric(const std::string& metric) {
   const MetricInfo* info = find_metric(metric);
   return info != nullptr && info->unit == "s";

@@ -46,6 +46,15 @@ struct SweptParameter {
 std::vector<SweptParameter> sweep_summary(const ExperimentInfo& info,
                                           const std::vector<RunRecord>& runs);
 
+// The swept parameter that is the plants' age (`years` or `age`) when it has two values or more,
+// else null. Metrics grow with age, so a mean over several ages describes none of them: reports
+// give the other parameters' means per age.
+const SweptParameter* age_parameter(const std::vector<SweptParameter>& summary);
+
+// The runs whose `parameter` has the printed value `value`.
+std::vector<RunRecord> runs_with(const std::vector<RunRecord>& runs, const std::string& parameter,
+                                 const std::string& value);
+
 // True for the metrics that time the software (unit s: run_time, grow_seconds, ...), which the
 // report keeps apart from what the plants did.
 bool is_timing_metric(const std::string& metric);

@@ -19,6 +19,7 @@ struct ChartSeries {
   bool dashed = false;   // a dashed line (e.g. mean ± standard deviation around a mean)
   bool markers = false;  // a dot at every point
   bool legend = true;    // listed in the legend, which is drawn when it lists several series
+  bool line = true;      // false: dots only (values of a category axis are not a series)
 };
 
 struct ChartOptions {

@@ -142,14 +142,15 @@ Image line_chart_image(const std::vector<ChartSeries>& series, const ChartOption
         table->SetValue(static_cast<vtkIdType>(k), 0, s.x[k]);
         table->SetValue(static_cast<vtkIdType>(k), 1, s.y[k]);
       }
-      vtkPlot* line = chart->AddPlot(vtkChart::LINE);
+      vtkPlot* line = chart->AddPlot(s.line ? vtkChart::LINE : vtkChart::POINTS);
       line->SetInputData(table, 0, 1);
       const auto c = chart_color(s.color >= 0 ? static_cast<std::size_t>(s.color) : i);
       line->SetColor(c[0], c[1], c[2], 255);
       line->SetWidth(s.dashed ? 1.5 : 2.5);
       if (s.dashed) line->GetPen()->SetLineType(vtkPen::DASH_LINE);
       line->SetLegendVisibility(s.legend);
-      if (auto* points = vtkPlotPoints::SafeDownCast(line); points != nullptr && s.markers) {
+      if (auto* points = vtkPlotPoints::SafeDownCast(line);
+          points != nullptr && (s.markers || !s.line)) {
         points->SetMarkerStyle(vtkPlotPoints::CIRCLE);
         points->SetMarkerSize(8.0);
       }

@@ -131,8 +131,21 @@ vtkNew<vtkPolyData> to_polydata(const TriangleMesh& mesh, const std::string& col
   return poly;
 }
 
+// Degrees below the horizontal of the iso view of a wide, flat scene drawn on its ground: half
+// the 30-degree view angle would put the horizon at the top edge; 10 degrees leaves the top sixth
+// of the picture to the sky, so that a forest stands on a ground seen against a sky rather than
+// on a ground that fills the picture like a background.
+constexpr double kHorizonPitchDeg = 10.0;
+// Scenes whose horizontal extent is this many times their height are seen over the horizon.
+constexpr float kWideFlatRatio = 3.0f;
+
+bool wide_and_flat(const Eigen::Vector3f& lo, const Eigen::Vector3f& hi) {
+  const Eigen::Vector3f size = hi - lo;
+  return std::max(size.x(), size.y()) > kWideFlatRatio * std::max(size.z(), 1e-3f);
+}
+
 void place_camera(vtkRenderer* renderer, View view, const Eigen::Vector3f& lo,
-                  const Eigen::Vector3f& hi) {
+                  const Eigen::Vector3f& hi, bool horizon) {
   const Eigen::Vector3d center = (0.5f * (lo + hi)).cast<double>();
   Eigen::Vector3d dir = Eigen::Vector3d(1.0, -1.0, 0.8).normalized();  // focal point to eye
   Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
@@ -149,6 +162,12 @@ void place_camera(vtkRenderer* renderer, View view, const Eigen::Vector3f& lo,
       break;
     case View::kIso:
       dir = Eigen::Vector3d(1.0, -1.0, 0.8).normalized();
+      if (horizon) {
+        dir =
+            Eigen::Vector3d(1.0, -1.0,
+                            std::sqrt(2.0) * std::tan(kHorizonPitchDeg * 3.141592653589793 / 180.0))
+                .normalized();
+      }
       break;
   }
   vtkCamera* camera = renderer->GetActiveCamera();
@@ -397,7 +416,8 @@ Image render_with(const RenderOptions& options, Eigen::Vector3f lo, Eigen::Vecto
   lights->AddLightsToRenderer(renderer);
 
   // Frame the tree, not the ground plane around it.
-  place_camera(renderer, options.view, lo, hi);
+  place_camera(renderer, options.view, lo, hi,
+               options.ground && options.ortho_height_m <= 0.0 && wide_and_flat(lo, hi));
   double bounds[6] = {lo.x(), hi.x(), lo.y(), hi.y(), lo.z(), hi.z()};
   renderer->ResetCamera(bounds);
   renderer->GetActiveCamera()->Zoom(1.1);

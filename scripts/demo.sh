@@ -33,11 +33,11 @@ $fspm run experiments/adapted_vs_grown.toml --replicates 8 --out "$out/adapted_v
 # Figures need an X display (VTK); without one, xvfb-run provides it. --html: the interactive
 # report beside report.md (report/index.html).
 if [ -n "${DISPLAY:-}" ]; then
-  $fspm report "$out/adapted_vs_grown" --html
+  $fspm report "$out/adapted_vs_grown" --html --single-file
 elif command -v xvfb-run > /dev/null; then
-  xvfb-run -a $fspm report "$out/adapted_vs_grown" --html
+  xvfb-run -a $fspm report "$out/adapted_vs_grown" --html --single-file
 else
-  $fspm report "$out/adapted_vs_grown" --no-figures --html
+  $fspm report "$out/adapted_vs_grown" --no-figures --html --single-file
 fi
 
 echo "== parameter sweep: Honda's monopodial tree (ABOP fig. 2.6), 36 runs"

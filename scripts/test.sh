@@ -71,7 +71,14 @@ if [ -f build/python/fspm/__init__.py ]; then
       || { tail -n 60 build/nbconvert.log; echo "notebook $nb failed"; exit 1; }
     echo "executed $nb"
   done
+  # The quickstart shows its plots inline (and saves them): four figures embedded in the output.
+  /usr/bin/python3 -c "import json, sys; nb = json.load(open('build/notebooks/quickstart.ipynb'));
+n = sum('image/png' in o.get('data', {}) for c in nb['cells'] for o in c.get('outputs', []));
+sys.exit(0 if n >= 4 else f'quickstart.ipynb shows {n} plots inline, expected 4')"
 fi
+
+echo "== README.md and the docs pages' commands, run as written in a clean clone"
+/usr/bin/python3 scripts/readme_check.py --bin build/bin --timings build/readme_timings.json
 
 echo "== HTML report in headless Chromium (fspm report --html)"
 scripts/html_report_check.sh

@@ -154,6 +154,8 @@
   // line.
   function sweepPlots(host) {
     const ok = D.runs.status.map((s, i) => (s === 'ok' ? i : -1)).filter((i) => i >= 0);
+    const age = D.swept.find((p) => (p === 'years' || p === 'age') && new Set(ok.map((i) => D.runs.parameters[p][i])).size >= 2);
+    const ageValues = age ? [...new Set(ok.map((i) => D.runs.parameters[age][i]))].sort((a, b) => a - b) : [];
     for (const p of D.swept) {
       const values = D.runs.parameters[p];
       const distinct = [...new Set(ok.map((i) => values[i]))];
@@ -170,18 +172,27 @@
         const div = el('div', { class: 'fspm-plot fspm-sweep-plot', 'data-metric': m, 'data-parameter': p });
         grid.appendChild(div);
         lazy(div, () => {
-          const means = order.map((v) => {
-            const sel = pts.filter((i) => values[i] === v).map((i) => ys[i]);
-            return sel.length ? sel.reduce((a, b) => a + b, 0) / sel.length : null;
+          // Metrics grow with age: the means are per age, never pooled across ages; values of a
+          // text parameter (presets, sets) are categories, so no line joins them.
+          const ages = age && age !== p ? ageValues : [null];
+          const meanTraces = ages.map((a, k) => {
+            const means = order.map((v) => {
+              const sel = pts.filter((i) => values[i] === v && (a === null || D.runs.parameters[age][i] === a)).map((i) => ys[i]);
+              return sel.length ? sel.reduce((x, y) => x + y, 0) / sel.length : null;
+            });
+            const what = a === null ? `mean over ${p}` : `mean at ${age} = ${a}, ${p}`;
+            return { type: 'scatter', mode: numeric ? 'lines+markers' : 'markers', x: order, y: means,
+              name: a === null ? 'mean' : `${age} = ${a}`, marker: { size: 9, symbol: 'diamond' },
+              line: a === null ? { color: '#d62728' } : undefined,
+              hovertext: means.map((v, j) => `${what} = ${order[j]}: ${fmt(v)}`), hoverinfo: 'text' };
           });
           return plot(div, [
             { type: 'scatter', mode: 'markers', x: pts.map((i) => values[i]), y: pts.map((i) => ys[i]),
-              marker: { size: 5, opacity: 0.45, color: '#1f77b4' },
+              name: 'runs', showlegend: false, marker: { size: 5, opacity: 0.45, color: '#7f7f7f' },
               hovertext: pts.map((i) => `${runText(D.runs.run[i])}<br>${escapeHtml(m)} = ${fmt(ys[i])}`),
               hoverinfo: 'text' },
-            { type: 'scatter', mode: 'lines+markers', x: order, y: means, line: { color: '#d62728' },
-              hovertext: means.map((v, k) => `mean over ${p} = ${order[k]}: ${fmt(v)}`), hoverinfo: 'text' },
-          ], { title: { text: metricLabel(m) }, xaxis: { title: { text: p }, type: numeric ? 'linear' : 'category' },
+            ...meanTraces,
+          ], { title: { text: metricLabel(m) }, showlegend: ages.length > 1, legend: { orientation: 'h', y: -0.3 }, xaxis: { title: { text: p }, type: numeric ? 'linear' : 'category' },
             yaxis: { title: { text: metricInfo(m).unit || '' } } });
         });
       }
@@ -200,13 +211,19 @@
       lazy(div, () => {
         const traces = D.comparisons.map((c) => {
           const idx = P.comparison.map((x, i) => (x === c && P.group[i] === g ? i : -1)).filter((i) => i >= 0);
-          return { type: 'box', name: `${c} (n = ${idx.length})`, y: idx.map((i) => P.distance[i]),
-            boxpoints: 'all', jitter: 0.5, pointpos: 0, fillcolor: 'rgba(255,255,255,0)', marker: { size: 6, opacity: 0.75 },
+          const name = `${c} (n = ${idx.length})`;
+          // Whiskers at the smallest and largest distance, as in report.md's figures: Plotly
+          // draws them so for a box without points, and the points come as a second, lineless
+          // box on top of it (layout.boxmode 'overlay').
+          return [{ type: 'box', name, x: idx.map(() => name), y: idx.map((i) => P.distance[i]), boxpoints: false,
+            hoverinfo: 'skip', showlegend: false, marker: { color: '#1f77b4' } },
+          { type: 'box', name, x: idx.map(() => name), y: idx.map((i) => P.distance[i]), hoveron: 'points',
+            boxpoints: 'all', jitter: 0.5, pointpos: 0, fillcolor: 'rgba(255,255,255,0)', line: { width: 0 }, marker: { size: 6, opacity: 0.75, color: '#1f77b4' },
             hovertext: idx.map((i) => (P.scale === 'raw' ? `pair of ${c}: distance ${fmt(P.distance[i])}<br>` : `pair of ${c}: normalized distance ${fmt(P.distance[i])} (raw ${fmt(P.raw_distance[i])})<br>`) +
               `<b>A</b> ${runText(P.run_a[i])}<br><b>B</b> ${runText(P.run_b[i])}`),
-            hoverinfo: 'text+name' };
-        }).filter((t) => t.y.length > 0);
-        return plot(div, traces, { title: { text: g }, yaxis: { title: { text: P.scale === 'raw' ? 'edit distance' : 'normalized edit distance' } } });
+            hoverinfo: 'text+name', showlegend: false }];
+        }).flat().filter((t) => t.y.length > 0);
+        return plot(div, traces, { title: { text: g }, boxmode: 'overlay', yaxis: { title: { text: P.scale === 'raw' ? 'edit distance' : 'normalized edit distance' } } });
       });
     }
   }
@@ -225,10 +242,13 @@
   const glbWaiting = new Map();
   // Called by the trees/*.js files: a .glb, gzipped, in base64 (the browser's own
   // DecompressionStream inflates it).
+  // A single-file report (fspm report --single-file) carries its trees inline: they arrive
+  // before any view asks for them and wait here.
+  const glbEmbedded = new Map();
   window.fspmGlb = (name, base64) => {
-    const bytes = Uint8Array.from(atob(base64), (c) => c.charCodeAt(0));
     const w = glbWaiting.get(name);
-    if (!w) return;
+    if (!w) { glbEmbedded.set(name, base64); return; }
+    const bytes = Uint8Array.from(atob(base64), (c) => c.charCodeAt(0));
     const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream('gzip'));
     new Response(stream).arrayBuffer().then(w.resolve, w.reject);
   };
@@ -237,6 +257,12 @@
       let resolve, reject;
       const promise = new Promise((a, b) => { resolve = a; reject = b; });
       glbWaiting.set(name, { promise, resolve, reject });
+      if (glbEmbedded.has(name)) {
+        const base64 = glbEmbedded.get(name);
+        glbEmbedded.delete(name);
+        window.fspmGlb(name, base64);
+        return promise;
+      }
       const s = el('script', { src: `trees/${name}.js` });
       s.onerror = () => reject(new Error(`cannot load trees/${name}.js`));
       document.head.appendChild(s);

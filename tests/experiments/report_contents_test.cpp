@@ -67,6 +67,34 @@ TEST(ReportTables, PlantMetricsAndTimingsInSeparateTables) {
   EXPECT_FALSE(is_timing_metric("nodes"));
 }
 
+// With `years` swept, the means over another parameter are per age: set O at 10 years is the mean
+// of its two runs there (2 and 4 m: 3), never pooled with the 20-year runs (which would give 11).
+TEST(ReportTables, MarginalMeansOverOtherParametersArePerAge) {
+  ExperimentInfo info;
+  info.name = "t";
+  info.total_runs = 6;
+  info.swept = {"years", "set"};
+  info.metrics = {"height"};
+  const std::vector<RunRecord> runs{run(0, 10, "O", 2.0, 0.5),  run(1, 10, "O", 4.0, 0.5),
+                                    run(2, 20, "O", 18.0, 0.5), run(3, 20, "O", 20.0, 0.5),
+                                    run(4, 10, "G", 1.0, 0.5),  run(5, 20, "G", 9.0, 0.5)};
+  const std::string md = markdown_report(info, runs);
+  const std::size_t over_set = md.find("## Marginal means over `set`");
+  ASSERT_NE(over_set, std::string::npos) << md;
+  const std::string tables = md.substr(over_set);
+  const std::size_t at10 = tables.find("### At years = 10");
+  const std::size_t at20 = tables.find("### At years = 20");
+  ASSERT_NE(at10, std::string::npos) << tables;
+  ASSERT_NE(at20, std::string::npos) << tables;
+  const std::string young = tables.substr(at10, at20 - at10);
+  EXPECT_NE(young.find("| O | 3 ± 1.414 |"), std::string::npos) << young;
+  EXPECT_NE(young.find("| G | 1 |"), std::string::npos) << young;
+  EXPECT_NE(tables.substr(at20).find("| O | 19 ± 1.414 |"), std::string::npos) << tables;
+  EXPECT_EQ(tables.find("| O | 11"), std::string::npos) << "pooled across ages\n" << tables;
+  // Over `years` itself: one table, every run of each age.
+  EXPECT_EQ(md.substr(0, over_set).find("### At years"), std::string::npos) << md;
+}
+
 // The statistics behind each plot: one entry per swept value (numbers ascending, text in order of
 // first appearance) whose mean and sample standard deviation over the successful runs with that
 // value match a direct computation over the rows.

@@ -255,5 +255,48 @@ TEST(Render, GroundCoversTheFrameInEveryView) {
   }
 }
 
+// A wide, flat scene (a forest seen from afar: 40 m by 20 m, 2 m high) on its ground in the iso
+// view: the sky above the horizon across the top of the picture, the ground below it, each its own
+// colour. Before, the view looked down so steeply that the ground filled the picture.
+TEST(Render, WideSceneOnItsGroundShowsTheSkyAboveTheHorizon) {
+  if (!render_available()) GTEST_SKIP() << "built without VTK/OpenImageIO";
+  if (!display_available()) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
+  TriangleMesh stand;
+  for (int k = 0; k < 8; ++k) {
+    stand.positions.emplace_back(k & 1 ? 20.f : -20.f, k & 2 ? 10.f : -10.f, k & 4 ? 2.f : 0.f);
+    stand.normals.emplace_back(0, 0, 1);
+    stand.uvs.emplace_back(0, 0);
+  }
+  stand.triangles = {{0, 1, 3}, {0, 3, 2}, {4, 6, 7}, {4, 7, 5}, {0, 4, 5}, {0, 5, 1},
+                     {2, 3, 7}, {2, 7, 6}, {0, 2, 6}, {0, 6, 4}, {1, 5, 7}, {1, 7, 3}};
+  stand.materials.assign(12, Material::kLeaf);
+  RenderOptions o;
+  o.width = 320;
+  o.height = 240;
+  o.view = View::kIso;
+  const Image image = render_mesh(stand, o);
+  const auto sky = [&](int x, int y) {
+    const auto* p = image.pixel(x, y);
+    return p[2] > p[1] + 5 && p[2] > p[0] + 15;  // pale blue
+  };
+  const auto grass = [&](int x, int y) {
+    const auto* p = image.pixel(x, y);
+    return p[1] > p[2] + 15;
+  };
+  int top_sky = 0, bottom_grass = 0;
+  for (int x = 0; x < image.width; ++x) {
+    top_sky += sky(x, 2);
+    bottom_grass += grass(x, image.height - 3);
+  }
+  EXPECT_EQ(top_sky, image.width);
+  EXPECT_EQ(bottom_grass, image.width);
+  // The horizon: one row where sky meets ground, in the upper third of the picture.
+  int horizon = 0;
+  while (horizon < image.height && sky(0, horizon)) ++horizon;
+  EXPECT_GT(horizon, image.height / 20);
+  EXPECT_LT(horizon, image.height / 3);
+  EXPECT_TRUE(grass(0, horizon + 2));
+}
+
 }  // namespace
 }  // namespace fspm::graphics
