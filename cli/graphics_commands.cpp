@@ -654,6 +654,15 @@ graphics::InstancedMesh load_render_input(const std::string& path, const std::st
       return graphics::InstancedMesh::single(std::move(*scan));
     }
   }
+  if (input_kind(path) == InputKind::kTree) {
+    // A skeleton at projected coordinates (fspm encode --skeleton keeps the input's frame) is
+    // drawn relative to the kilometre below it, as its scan is: floats keep decimetres there and
+    // the camera lost the tree without the ground plane's bounds.
+    TreeGraph tree = read_tree_file(path, format, default_mtg_tree_options());
+    recentre_for_render(tree);
+    if (lod.active()) tree = reduce_tree(tree, lod);
+    return graphics::InstancedMesh::single(graphics::mesh_tree(tree, options));
+  }
   return load_instanced(path, format, options, true, lod);
 }
 

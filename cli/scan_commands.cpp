@@ -36,6 +36,8 @@ struct EncodeCommand {
   std::string branch_skeleton;
   int neighbours = 8;
   bool keep_ground = false;
+  bool pirk_split = false;
+  std::optional<double> main_branch_share;
   std::uint64_t seed = 1;
   bool json = false;
 };
@@ -71,6 +73,33 @@ nlohmann::json measurements_json(const scans::TreeMeasurements& m) {
           {"warnings", m.warnings}};
 }
 
+// Occlusion gaps the neighbour graph bridged, where (the middle of each bridge, in the input's
+// coordinates) and how long: the skeleton there rests on a guess.
+std::string gaps_warning(const scans::EncodeResult& r) {
+  constexpr std::size_t kListed = 5;
+  std::string where;
+  for (std::size_t k = 0; k < r.gaps.size() && k < kListed; ++k) {
+    const Eigen::Vector3d mid = 0.5 * (r.gaps[k].from + r.gaps[k].to);
+    where += fmt::format("{}({:.2f}, {:.2f}, {:.2f}) over {:.2f} m", k > 0 ? "; " : "", mid.x(),
+                         mid.y(), mid.z(), r.gaps[k].length_m);
+  }
+  if (r.gaps.size() > kListed) where += fmt::format("; and {} more", r.gaps.size() - kListed);
+  return fmt::format(
+      "{} occlusion gap{} (longer than {:.3f} m) bridged along the branch's direction or by the "
+      "shortest edge, at {}; check the skeleton there",
+      r.gaps.size(), r.gaps.size() == 1 ? "" : "s", r.gap_m, where);
+}
+
+nlohmann::json gaps_json(const scans::EncodeResult& r) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const scans::BridgedGap& g : r.gaps) {
+    out.push_back({{"from", {g.from.x(), g.from.y(), g.from.z()}},
+                   {"to", {g.to.x(), g.to.y(), g.to.z()}},
+                   {"length_m", g.length_m}});
+  }
+  return out;
+}
+
 void run_encode(const EncodeCommand& o) {
   refuse_overwriting_input(o.output, {o.input});
   refuse_overwriting_input(o.skeleton, {o.input});
@@ -85,6 +114,8 @@ void run_encode(const EncodeCommand& o) {
   options.bin_length_m = o.bin_length_m.value_or(0.0);
   options.neighbours = o.neighbours;
   options.keep_ground = o.keep_ground;
+  options.follow_main_axes = !o.pirk_split;
+  if (o.main_branch_share) options.main_branch_share = *o.main_branch_share;
   const scans::PointSet points = load_input(o);
   const auto t0 = std::chrono::steady_clock::now();
   const scans::EncodeResult r = scans::encode_point_set(points, options);
@@ -100,6 +131,7 @@ void run_encode(const EncodeCommand& o) {
                     "lowest points, unconfirmed at breast height; give --root-diameter",
                     r.model.root_diameter_m));
   }
+  if (!r.gaps.empty()) m.warnings.push_back(gaps_warning(r));
   for (const std::string& w : m.warnings) spdlog::warn("{}: {}", o.input, w);
   nlohmann::json doc = {{"points", r.points},
                         {"skeleton_nodes", r.model.skeleton.size()},
@@ -112,6 +144,7 @@ void run_encode(const EncodeCommand& o) {
                         {"gamma", r.model.gamma},
                         {"f_s", r.model.f_s},
                         {"bridges", r.bridges},
+                        {"gaps", gaps_json(r)},
                         {"ground_points", r.ground_points},
                         {"branch_skeleton_nodes", r.branch_skeleton.size()},
                         {"origin", {r.origin.x(), r.origin.y(), r.origin.z()}},
@@ -163,6 +196,13 @@ void add_encode_command(CLI::App& app) {
                 "split of eq. 3.2, short side tips removed) as a tree file");
   e->add_flag("--keep-ground", o->keep_ground,
               "Keep points near the cloud's lower envelope (default: removed as ground)");
+  e->add_flag("--pirk-split", o->pirk_split,
+              "Main skeleton by eq. 3.2 alone, as Pirk (default: the trunk to the top and the "
+              "main limbs to their tips, eq. 3.2 for the smaller branches)");
+  e->add_option("--main-branch-share", o->main_branch_share,
+                "Share of the skeleton's length a limb must carry to stay in the main skeleton "
+                "without passing eq. 3.2 (default 0.05)")
+      ->check(number_in(0, 1));
   e->add_option("--seed", o->seed, "Seed of the simulated scan of a tree model")
       ->check(number_in(0, kMaxSeed));
   e->add_flag("--json", o->json,

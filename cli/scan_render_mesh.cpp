@@ -92,6 +92,15 @@ graphics::TriangleMesh mesh_cluster_model(const scans::ClusterModel& model,
   return mesh;
 }
 
+Eigen::Vector3d recentre_for_render(TreeGraph& tree) {
+  std::vector<Eigen::Vector3d> all;
+  all.reserve(2 * tree.size());
+  for (NodeId u = 0; u < tree.size(); ++u) all.push_back(tree.start(u)), all.push_back(tree.end(u));
+  const Eigen::Vector3d origin = render_origin(all);
+  if (!origin.isZero()) scans::translate_tree(tree, -origin);
+  return origin;
+}
+
 std::optional<graphics::TriangleMesh> load_scan_render_mesh(const std::string& path,
                                                             const graphics::MeshOptions& options) {
   const std::string ext = lower_extension(path);

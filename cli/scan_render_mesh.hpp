@@ -38,4 +38,9 @@ graphics::TriangleMesh mesh_cluster_model(const scans::ClusterModel& model,
 std::optional<graphics::TriangleMesh> load_scan_render_mesh(const std::string& path,
                                                             const graphics::MeshOptions& options);
 
+// A tree (a skeleton from fspm encode) moved by the same rule as the point sets above, so that it
+// is framed wherever it lies and matches the scan it came from under --frame. Returns the offset
+// subtracted (zero within 1 km of the origin).
+Eigen::Vector3d recentre_for_render(TreeGraph& tree);
+
 }  // namespace fspm::cli

@@ -29,6 +29,9 @@ void validate(const TextureOptions& o) {
   if (!(o.min_scale_ratio >= 0.0 && o.min_scale_ratio <= 1.0)) {
     throw ValueError("the smallest scale ratio of a docked patch must be within [0, 1]");
   }
+  if (!(o.max_scale > 0.0)) {
+    throw ValueError("the largest patch scale must be positive");
+  }
 }
 
 // Further seeds drawn in a row that place nothing before a cluster is left short of its length.
@@ -60,10 +63,11 @@ double hull_reach_m(const scans::ClusterHull& hull, const Pending& p) {
 }
 
 // Patch fitting: the scale at which the patch ends where the ray leaves the hull (`reach_m`),
-// never larger than its parent's. 0 when the ray does not reach the hull.
-double fitted_scale(double reach_m, const Pending& p, const Patch& patch) {
+// never larger than its parent's nor than max_scale (the species' sizes). 0 when the ray does not
+// reach the hull.
+double fitted_scale(double reach_m, const Pending& p, const Patch& patch, double max_scale) {
   if (!(reach_m > 0.0) || !(patch.length_m > 0.0)) return 0.0;
-  const double scale = reach_m / patch.length_m;
+  const double scale = std::min(reach_m / patch.length_m, max_scale);
   return p.parent == kNoPlacement ? scale : std::min(scale, p.parent_scale);
 }
 
@@ -85,12 +89,12 @@ std::size_t dockings_inside(const scans::ClusterHull& hull, const Pending& p, co
 std::uint32_t geometric_choice(const scans::ClusterHull& hull, const Pending& p, double reach_m,
                                const SpeciesLibrary& library,
                                const std::vector<std::uint32_t>& best, double roll_rad,
-                               std::mt19937_64& rng) {
+                               double max_scale, std::mt19937_64& rng) {
   std::vector<std::uint32_t> most;
   std::size_t most_inside = 0;
   for (const std::uint32_t k : best) {
     const Patch& patch = library.patches[k];
-    const double scale = fitted_scale(reach_m, p, patch);
+    const double scale = fitted_scale(reach_m, p, patch, max_scale);
     const std::size_t inside =
         scale > 0.0 ? dockings_inside(
                           hull, p, patch,
@@ -170,6 +174,10 @@ struct ClusterTexture {
   std::uint32_t cluster = 0;
   std::vector<PlacedPatch> placed;
   double branch_length_m = 0.0;
+  // The branch length to texture up to (infinite: Pirk's texturing alone). A patch that would
+  // pass it by more than it falls short without the patch is not placed, so that many small
+  // clusters do not each overshoot by most of a patch.
+  double until_m = std::numeric_limits<double>::infinity();
 };
 
 // Patch selection and fitting at one docking position (Pirk 3.4); the placed patch's docking
@@ -185,13 +193,16 @@ void dock(ClusterTexture& t, const Pending& p, std::deque<Pending>& queue, std::
   if (best.empty()) return;
   const double roll_rad = roll(rng);
   const double reach_m = hull_reach_m(t.hull, p);
-  const std::uint32_t chosen = geometric_choice(t.hull, p, reach_m, t.library, best, roll_rad, rng);
+  const std::uint32_t chosen =
+      geometric_choice(t.hull, p, reach_m, t.library, best, roll_rad, t.options.max_scale, rng);
   const Patch& patch = t.library.patches[chosen];
-  const double scale = fitted_scale(reach_m, p, patch);
+  const double scale = fitted_scale(reach_m, p, patch, t.options.max_scale);
   if (!(scale > 0.0) ||
       (p.parent != kNoPlacement && scale < t.options.min_scale_ratio * p.parent_scale)) {
     return;
   }
+  const double after_m = t.branch_length_m + scale * patch.internode_length_m;
+  if (after_m - t.until_m > t.until_m - t.branch_length_m) return;
   PlacedPatch pp;
   pp.patch = chosen;
   pp.cluster = t.cluster;
@@ -261,6 +272,7 @@ std::vector<PlacedPatch> texture_cluster(const scans::ClusterModel& model, std::
   const Pending seed{seed_docking(model, cluster)};
   const bool match = options.match_branch_length && hull.branch_length_m > 0.0;
   const double until_m = match ? hull.branch_length_m : std::numeric_limits<double>::infinity();
+  t.until_m = until_m;
   texture_from(t, seed, until_m, rng);
   if (!match) return t.placed;
   // Beyond Pirk: texturing ends at the branch length the scan showed in the cluster, breadth

@@ -30,6 +30,9 @@ struct TextureOptions {
   // A docking point so near the hull that its patch would shrink below this share of its
   // parent's scale stays empty.
   double min_scale_ratio = 0.25;
+  // Patches are scaled to the hull but never beyond this (1: the library's size, the species'
+  // own leaves and internodes, species_sizes); a large hull takes more patches, not larger ones.
+  double max_scale = 1.0;
   // Texture up to the cluster's branch length (ClusterHull::branch_length_m, the skeleton length
   // the scan showed there): stop there, and once Pirk's texturing has used every docking point
   // short of it, start further branchlets at the seed point. Clusters without one, or false:

@@ -13,9 +13,12 @@ namespace fspm::reconstruction {
 namespace {
 
 // The habit of a species' shoots, filled into one grammar.
+// The first internode of every branchlet (the axiom's A(0.5, ...)), m; later ones are shorter.
+constexpr double kFirstInternodeM = 0.5;
+
 struct BranchletShape {
   double angle_deg = 35.0;       // lateral branching angle
-  double leaf_length = 0.18;     // leaf blade length, in units of the first internode (0.5)
+  double leaf_length = 0.18;     // leaf blade length, m (the first internode is 0.5 m)
   double leaf_angle_deg = 55.0;  // leaf insertion angle
   double droop_deg = 0.0;        // extra downward pitch of laterals
   double elasticity = 0.0;       // tropism toward -z (ABOP 2.2)
@@ -40,6 +43,11 @@ std::string number(double x) { return std::to_string(x); }
 
 }  // namespace
 
+SpeciesSizes species_sizes(std::string_view species) {
+  (void)scans::species_by_name(species);  // ValueError naming the presets
+  return {shape_for(species).leaf_length, kFirstInternodeM};
+}
+
 std::string branchlet_lsystem(std::string_view species) {
   (void)scans::species_by_name(species);  // ValueError naming the presets
   const BranchletShape s = shape_for(species);
@@ -50,7 +58,9 @@ std::string branchlet_lsystem(std::string_view species) {
   // A: the branchlet's main axis, B: its laterals; each internode carries two leaves and turns by
   // the golden angle, laterals appear with the given probabilities (ABOP 1.7).
   return "Lsystem: 1\n"
-         "Axiom: A(0.5,0.05)\n"
+         "Axiom: A(" +
+         number(kFirstInternodeM) +
+         ",0.05)\n"
          "A(l,w) --> !(w)F(l)" +
          leaves + "/(137.5)" + lateral +
          "B(l*0.8,w*0.6)]A(l*0.9,w*0.85) : 0.8\n"

@@ -47,6 +47,18 @@ struct LibraryOptions {
   std::uint64_t seed = 1;
 };
 
+// The sizes of a species' shoots, in metres: the branchlets of the library are derived at this
+// size (their first internode is the longest, the leaf blades all of one length), and texturing
+// never enlarges a patch beyond it (TextureOptions::max_scale), so a decoded tree's leaves and
+// patch internodes stay the species' own, whatever the size of the cluster hull.
+struct SpeciesSizes {
+  double leaf_length_m = 0.0;
+  double internode_length_m = 0.0;
+};
+
+// Throws ValueError for an unknown species.
+SpeciesSizes species_sizes(std::string_view species);
+
 // Source of the branchlet L-system of a species of Pirk Table 3.1 ("default" too): one stochastic
 // grammar whose branching angle, leaf size, droop and tropism follow the species' habit (pine:
 // wide-angled needle shoots, willow: hanging shoots with narrow leaves, palm: fronds). Throws

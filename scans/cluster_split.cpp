@@ -1,8 +1,10 @@
 #include "scans/cluster_split.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 
 #include "fspm/error.hpp"
+#include "scans/allometry.hpp"
 
 namespace fspm::scans {
 
@@ -20,9 +22,43 @@ double mean_point_distance_m(const PointSet& ps, const PointSkeleton& s, NodeId 
   return count > 0 ? sum / count : 0.0;
 }
 
-ClusterSplit split_clusters(const PointSet& ps, const PointSkeleton& s, double f_s) {
-  if (!(f_s > 0.0)) throw ValueError("f_s must be positive");
+namespace {
+
+// The child of each node that continues its axis: of the children carrying at least half the
+// largest sibling's subtree length, the one whose segment turns least from the parent's. A branch
+// is followed to its own tip rather than into a twig a little longer than its remaining part;
+// short false forks (a split ring of points) are too small to compete.
+std::vector<std::uint8_t> continues_axis(const TreeGraph& t, const std::vector<double>& l) {
+  std::vector<std::uint8_t> out(t.size(), 0);
+  for (NodeId u = 0; u < t.size(); ++u) {
+    double largest = 0.0;
+    for (NodeId c : t.children(u)) largest = std::max(largest, l[c]);
+    NodeId best = kNoNode;
+    double best_cos = -2.0;
+    for (NodeId c : t.children(u)) {
+      if (l[c] < 0.5 * largest) continue;
+      const double cos =
+          t.length(u) > 0.0 && t.length(c) > 0.0
+              ? (t.end(u) - t.start(u)).normalized().dot((t.end(c) - t.start(c)).normalized())
+              : (l[c] == largest ? 1.0 : 0.0);
+      if (cos > best_cos) best_cos = cos, best = c;
+    }
+    if (best != kNoNode) out[best] = 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+ClusterSplit split_clusters(const PointSet& ps, const PointSkeleton& s, const SplitOptions& o) {
+  if (!(o.f_s > 0.0)) throw ValueError("f_s must be positive");
+  if (!(o.main_branch_share >= 0.0)) throw ValueError("the main branch share must not be negative");
   const TreeGraph& t = s.tree;
+  const std::vector<double> l = subtree_lengths_m(t);
+  const std::vector<std::uint8_t> axis = continues_axis(t, l);
+  const auto on_main_axis = [&](NodeId u) {
+    return o.follow_main_axes && (axis[u] != 0 || l[u] >= o.main_branch_share * l[0]);
+  };
   ClusterSplit out;
   out.main_of.assign(t.size(), kNoNode);
   std::vector<std::uint32_t> cluster_of(t.size(), UINT32_MAX);
@@ -30,8 +66,8 @@ ClusterSplit split_clusters(const PointSet& ps, const PointSkeleton& s, double f
   for (NodeId u = 0; u < t.size(); ++u) {
     const NodeId p = t.parent(u);
     const double diameter = 2.0 * t.radius(u);
-    const bool confident = mean_point_distance_m(ps, s, u) <= f_s * diameter;  // eq. 3.2
-    if (p == kNoNode || (out.main_of[p] != kNoNode && confident)) {
+    const bool confident = mean_point_distance_m(ps, s, u) <= o.f_s * diameter;  // eq. 3.2
+    if (p == kNoNode || (out.main_of[p] != kNoNode && (confident || on_main_axis(u)))) {
       NodeData d = t.data(u);
       out.main_of[u] = out.main_skeleton.add_node(p == kNoNode ? kNoNode : out.main_of[p], d);
     } else if (out.main_of[p] != kNoNode) {

@@ -102,12 +102,18 @@ EncodeResult encode_point_set(const PointSet& absolute, const EncodeOptions& o) 
         "through them); give the root diameter (--root-diameter)");
   }
   set_allometric_radii(skeleton.tree, d_root, o.species.gamma);
-  ClusterSplit split = split_clusters(ps, skeleton, o.species.f_s);
+  ClusterSplit split =
+      split_clusters(ps, skeleton, {o.species.f_s, o.follow_main_axes, o.main_branch_share});
   EncodeResult r;
   r.points = input.points.size();
   r.thinned_points = ps.points.size() + ground;
   r.ground_points = ground;
   r.bridges = graph.bridges;
+  r.gap_m = graph.gap_m;
+  for (const auto& [a, b] : graph.bridge_edges) {
+    const double len = (ps.points[a] - ps.points[b]).norm();
+    if (len > graph.gap_m) r.gaps.push_back({ps.points[a] + origin, ps.points[b] + origin, len});
+  }
   r.model.species = o.species.name;
   r.model.beta = o.species.beta;
   r.model.gamma = o.species.gamma;

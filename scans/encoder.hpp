@@ -26,6 +26,19 @@ struct EncodeOptions {
   // Ground points (a band above the cloud's lower envelope, scans/ground_filter.hpp) are removed
   // after thinning unless this is set; the root is the base of the trunk's column either way.
   bool keep_ground = false;
+  // The main skeleton follows the trunk to the top and the limbs carrying main_branch_share of the
+  // skeleton's length to their tips, eq. 3.2 deciding for the rest (scans/cluster_split.hpp);
+  // false: eq. 3.2 alone, as Pirk.
+  bool follow_main_axes = true;
+  double main_branch_share = 0.05;
+};
+
+// An occlusion gap the neighbour graph bridged (scans/neighbour_graph.hpp): a bridge longer than
+// NeighbourGraph::gap_m, its ends in the input's coordinates.
+struct BridgedGap {
+  Eigen::Vector3d from = Eigen::Vector3d::Zero();  // in the piece beyond the gap
+  Eigen::Vector3d to = Eigen::Vector3d::Zero();    // in the tree
+  double length_m = 0.0;
 };
 
 struct EncodeResult {
@@ -38,6 +51,8 @@ struct EncodeResult {
   std::size_t thinned_points = 0;  // after voxel thinning
   std::size_t ground_points = 0;   // thinned points removed as ground
   std::size_t bridges = 0;         // edges added to join pieces the neighbour graph left apart
+  std::vector<BridgedGap> gaps;    // the bridges longer than gap_m
+  double gap_m = 0.0;              // NeighbourGraph::gap_m
   // The encoder works on the points minus this origin (scans/point_origin.hpp); the skeletons and
   // hulls above are moved back, in the input's coordinates.
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();

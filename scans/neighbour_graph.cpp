@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "fspm/error.hpp"
+#include "scans/directed_bridge.hpp"
 #include "scans/point_kd_tree.hpp"
 
 namespace fspm::scans {
@@ -42,10 +43,10 @@ std::vector<std::uint32_t> nearest_neighbours(const PointSet& ps, const PointKdT
 // Shortest edges joining every other piece to the piece of `root`: for each piece, the point
 // whose nearest root-piece point is nearest. A piece's points are first searched among their
 // 16 nearest neighbours in `all`; only pieces with no hit there search a tree of the root piece.
-std::vector<std::pair<std::uint32_t, std::uint32_t>> bridges(const PointSet& ps,
-                                                             const PointKdTree& all,
-                                                             DisjointSets& sets,
-                                                             std::uint32_t root) {
+// A piece whose shortest edge is longer than `gap_m` (an occlusion gap) is joined along its own
+// axis instead, when it has one (scans/directed_bridge.hpp).
+std::vector<Bridge> bridges(const PointSet& ps, const PointKdTree& all, DisjointSets& sets,
+                            std::uint32_t root, double gap_m) {
   const std::uint32_t root_set = sets.find(root);
   std::vector<std::uint32_t> main;
   std::vector<std::uint32_t> other;
@@ -53,8 +54,8 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> bridges(const PointSet& ps,
     (sets.find(i) == root_set ? main : other).push_back(i);
   }
   if (other.empty()) return {};
-  using Best = std::pair<double, std::pair<std::uint32_t, std::uint32_t>>;
-  std::vector<Best> best(ps.points.size(), {std::numeric_limits<double>::infinity(), {0, 0}});
+  using Best = std::pair<double, Bridge>;
+  std::vector<Best> best(ps.points.size(), {std::numeric_limits<double>::infinity(), {}});
   constexpr std::size_t kProbe = 16;
   std::uint32_t idx[kProbe];
   double d2[kProbe];
@@ -68,29 +69,52 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> bridges(const PointSet& ps,
     }
   }
   std::vector<std::uint32_t> unresolved;
+  bool gaps = false;
   for (std::uint32_t i : other) {
-    if (!std::isfinite(best[sets.find(i)].first)) unresolved.push_back(i);
+    const double d2_best = best[sets.find(i)].first;
+    if (!std::isfinite(d2_best)) unresolved.push_back(i);
+    gaps = gaps || !(d2_best <= gap_m * gap_m);
   }
-  if (!unresolved.empty()) {
-    PointCloudAdaptor adaptor{&ps.points, &main};
-    PointKdTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-    tree.buildIndex();
-    std::vector<Best> far(ps.points.size(), {std::numeric_limits<double>::infinity(), {0, 0}});
-    for (std::uint32_t i : unresolved) {
-      std::uint32_t j = 0;
-      double dist = 0.0;
-      tree.knnSearch(ps.points[i].data(), 1, &j, &dist);
-      Best& b = far[sets.find(i)];
-      if (dist < b.first) b = {dist, {i, main[j]}};
+  if (!gaps) {
+    std::vector<Bridge> out;
+    for (const Best& b : best) {
+      if (std::isfinite(b.first)) out.push_back(b.second);
     }
-    for (std::size_t s = 0; s < far.size(); ++s)
-      best[s] = std::isfinite(far[s].first) ? far[s] : best[s];
+    return out;
   }
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
-  for (const Best& b : best) {
-    if (std::isfinite(b.first)) out.push_back(b.second);
+  PointCloudAdaptor adaptor{&ps.points, &main};
+  PointKdTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  tree.buildIndex();
+  for (std::uint32_t i : unresolved) {  // whole pieces without a root-piece point near them
+    std::uint32_t j = 0;
+    double dist = 0.0;
+    tree.knnSearch(ps.points[i].data(), 1, &j, &dist);
+    Best& b = best[sets.find(i)];
+    if (dist < b.first) b = {dist, {i, main[j]}};
+  }
+  std::vector<std::vector<std::uint32_t>> pieces(ps.points.size());
+  for (std::uint32_t i : other) {
+    if (best[sets.find(i)].first > gap_m * gap_m) pieces[sets.find(i)].push_back(i);
+  }
+  std::vector<Bridge> out;
+  for (std::size_t s = 0; s < best.size(); ++s) {
+    if (!std::isfinite(best[s].first)) continue;
+    out.push_back(pieces[s].empty() ? best[s].second
+                                    : directed_bridge(ps, pieces[s], tree, main, best[s].second));
   }
   return out;
+}
+
+// The gap length: kGapSpacings times the median distance from a point to its k-th neighbour (the
+// longest edges of the graph where the scan is dense).
+double gap_length_m(const PointSet& ps, const std::vector<std::uint32_t>& knn, std::size_t k) {
+  std::vector<double> d;
+  d.reserve(ps.points.size());
+  for (std::size_t i = 0; i < ps.points.size(); ++i) {
+    d.push_back((ps.points[knn[i * k + k - 1]] - ps.points[i]).norm());
+  }
+  std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
+  return kGapSpacings * d[d.size() / 2];
 }
 
 }  // namespace
@@ -119,9 +143,12 @@ NeighbourGraph build_neighbour_graph(const PointSet& ps, int k, double beta, std
     }
   }
   NeighbourGraph g;
-  const auto joins = bridges(ps, tree, sets, root);
-  g.bridges = joins.size();
-  edges.insert(edges.end(), joins.begin(), joins.end());
+  g.gap_m = gap_length_m(ps, knn, kk);
+  for (const Bridge& b : bridges(ps, tree, sets, root, g.gap_m)) {
+    edges.emplace_back(b.from, b.to);
+    g.bridge_edges.emplace_back(b.from, b.to);
+  }
+  g.bridges = g.bridge_edges.size();
   g.offset.assign(n + 1, 0);
   for (const auto& [a, b] : edges) ++g.offset[a + 1], ++g.offset[b + 1];
   std::partial_sum(g.offset.begin(), g.offset.end(), g.offset.begin());

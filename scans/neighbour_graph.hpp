@@ -2,8 +2,11 @@
 // The neighbour graph of a point set (Pirk sec. 3.3.1, after Livny et al. 2010): every point is
 // joined to its k nearest neighbours, and each edge (u, v) weighs |u - v|^beta. Pieces the scan
 // left disconnected (occlusion gaps) are bridged to the piece holding the lowest point by the
-// shortest edge between them, so the shortest-path tree reaches every point.
+// shortest edge between them, so the shortest-path tree reaches every point; a piece beyond a gap
+// longer than a few point spacings is joined along its own axis when it has one
+// (scans/directed_bridge.hpp).
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "scans/point_set.hpp"
@@ -17,7 +20,13 @@ struct NeighbourGraph {
   std::vector<std::uint32_t> target;
   std::vector<float> weight;
   std::size_t bridges = 0;  // edges added to join disconnected pieces
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> bridge_edges;  // (piece, tree) points
+  // Bridges longer than this are occlusion gaps: kGapSpacings times the median distance from a
+  // point to its k-th neighbour.
+  double gap_m = 0.0;
 };
+
+inline constexpr double kGapSpacings = 4.0;
 
 // k nearest neighbours (k >= 1) joined both ways, weights |u - v|^beta; `root` is the point the
 // other pieces are bridged towards. Throws ValueError when points is empty.

@@ -133,8 +133,8 @@ def test_decoding_textures_the_clusters_below_the_skeleton():
 
     pirk = fspm.decode_clusters(model, branchlets=3, seed=2, docking_only=True)
     assert twig_length(pirk) < twig_length(decoded)
-    # Each cluster stops at the first patch that reaches its length, so it passes it by less
-    # than one patch (at most the hull's extent): a few metres over the whole tree.
+    # Each cluster ends within half a patch of its length (patches are at most the species'
+    # size): a few metres over the whole tree.
     assert 0.9 * scanned <= twig_length(decoded) <= 1.3 * scanned
     with pytest.raises(ValueError):
         fspm.decode_clusters(model, species="pinee")

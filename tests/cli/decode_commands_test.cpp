@@ -43,8 +43,8 @@ TEST(DecodeCli, TreeAndMeshesReportWhatTheyWrote) {
   EXPECT_EQ(t["nodes"].get<std::size_t>(), read_tree_file(tree).size());
   EXPECT_GT(t["instances"].get<std::size_t>(), 0u);
   EXPECT_GE(t["seconds"].get<double>(), 0.0);
-  // Textured up to the clusters' scanned branch length; each cluster stops at the first patch
-  // that reaches it, so passes it by less than one patch (at most the hull's extent).
+  // Textured up to the clusters' scanned branch length; each cluster ends within half a patch of
+  // it (patches are at most the species' size, 2-3 m of internodes).
   const double scanned_m = t["scanned_branch_length_m"].get<double>();
   EXPECT_GT(scanned_m, 0.0);
   EXPECT_GE(t["branch_length_m"].get<double>(), 0.9 * scanned_m);
@@ -54,7 +54,6 @@ TEST(DecodeCli, TreeAndMeshesReportWhatTheyWrote) {
                " --docking-only --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto pirk = nlohmann::json::parse(r.out);
-  EXPECT_LT(pirk["instances"].get<std::size_t>(), t["instances"].get<std::size_t>());
   EXPECT_LT(pirk["branch_length_m"].get<double>(), 0.9 * scanned_m);
 
   const std::string glb = (dir / "decoded.glb").string();

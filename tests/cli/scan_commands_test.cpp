@@ -1,9 +1,13 @@
 // fspm scan, fspm encode and fspm tree convert of a grouped OBJ or glTF, run as a user would.
 #include <gtest/gtest.h>
+#include <spdlog/fmt/fmt.h>
+
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -253,6 +257,103 @@ TEST(ScanCli, AirborneCloudsOfStreetTreesAreMeasuredWithoutADbh) {
       EXPECT_NEAR(hi[k], want_hi[k], 0.7) << k;
     }
   }
+}
+
+// The bounds of a tree file's segments: lo[3], hi[3].
+std::array<std::array<double, 3>, 2> tree_bounds(const TreeGraph& t) {
+  std::array<std::array<double, 3>, 2> b{{{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}}};
+  for (NodeId n = 0; n < t.size(); ++n) {
+    for (int k = 0; k < 3; ++k) {
+      b[0][k] = std::min({b[0][k], t.start(n)[k], t.end(n)[k]});
+      b[1][k] = std::max({b[1][k], t.start(n)[k], t.end(n)[k]});
+    }
+  }
+  return b;
+}
+
+// The default main skeleton (--skeleton) of a real cloud follows the trunk and the limbs into the
+// crown: its top reaches 90 % of the cloud's height and it spans 85 % of the crown's width along x
+// and y, all from the LAS header's bounds. Pirk's split (--pirk-split) stops lower.
+TEST(ScanCli, DefaultSkeletonOfARealCloudReachesTheTopAndSpansTheCrown) {
+  const auto dir = scratch_dir("ahn4_main");
+  for (const char* name : {"ahn4_tree_121913_487434", "ahn4_tree_121922_487459"}) {
+    SCOPED_TRACE(name);
+    const std::string las = std::string(FSPM_SOURCE_DIR) + "/examples/scans/" + name + ".las";
+    const auto h = las_header_bounds(las);  // max x, min x, max y, min y, max z, min z
+    const std::string main = (dir / "main.tree").string();
+    const std::string pirk = (dir / "pirk.tree").string();
+    auto r =
+        run_fspm("encode " + las + " -o " + (dir / "t.clusters").string() + " --skeleton " + main);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    r = run_fspm("encode " + las + " -o " + (dir / "p.clusters").string() + " --pirk-split" +
+                 " --skeleton " + pirk);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto b = tree_bounds(read_tree_file(main));
+    EXPECT_GE(b[1][2] - h[5], 0.9 * (h[4] - h[5]));
+    EXPECT_GE(b[1][0] - b[0][0], 0.85 * (h[0] - h[1]));
+    EXPECT_GE(b[1][1] - b[0][1], 0.85 * (h[2] - h[3]));
+    EXPECT_LT(tree_bounds(read_tree_file(pirk))[1][2] - h[5], 0.9 * (h[4] - h[5]));
+  }
+}
+
+// Points on the cylinder of radius r around a -> b every step_m, without the stretch between the
+// shares gap_from and gap_to of its length, moved by `offset`, written to `out` in full precision.
+void write_cylinder(std::ofstream& out, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                    double r, double step_m, const Eigen::Vector3d& offset, double gap_from = 2.0,
+                    double gap_to = 2.0) {
+  const Eigen::Vector3d axis = (b - a).normalized();
+  const Eigen::Vector3d u = axis.unitOrthogonal(), v = axis.cross(u);
+  const double length = (b - a).norm();
+  const int around = std::max(6, static_cast<int>(2.0 * std::numbers::pi * r / step_m));
+  for (double s = 0.0; s <= length; s += step_m) {
+    if (s / length > gap_from && s / length < gap_to) continue;
+    for (int k = 0; k < around; ++k) {
+      const double t = 2.0 * std::numbers::pi * k / around;
+      const Eigen::Vector3d p = offset + a + s * axis + r * (std::cos(t) * u + std::sin(t) * v);
+      out << fmt::format("{:.4f} {:.4f} {:.4f}\n", p.x(), p.y(), p.z());
+    }
+  }
+}
+
+// A branch with a 0.6 m occlusion gap, at projected coordinates: the warning says how many gaps
+// were bridged and where, in the input's coordinates (the offset added back), and --json lists
+// the bridge's ends.
+TEST(ScanCli, BridgedGapsAreReportedWhereTheyAre) {
+  const auto dir = scratch_dir("scan_gaps");
+  const std::string xyz = (dir / "gap.xyz").string();
+  const Eigen::Vector3d offset(500000.0, 5800000.0, 300.0);
+  const Eigen::Vector3d a0(0, 0, 2), dir45 = Eigen::Vector3d(1, 0, 1).normalized();
+  {
+    std::ofstream out(xyz);
+    write_cylinder(out, {0, 0, 0}, {0, 0, 4}, 0.1, 0.02, offset);
+    write_cylinder(out, a0, a0 + 2.83 * dir45, 0.03, 0.01, offset, 1.0 / 2.83, 1.6 / 2.83);
+  }
+  const auto r = run_fspm("encode " + xyz + " --root-diameter 0.2 -o " +
+                          (dir / "gap.clusters").string() + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["gaps"].size(), 1u);
+  const Eigen::Vector3d near_end = offset + a0 + 1.0 * dir45, far_end = offset + a0 + 1.6 * dir45;
+  const auto at = [&](const char* key) {
+    const auto& p = j["gaps"][0][key];
+    return Eigen::Vector3d(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
+  };
+  EXPECT_LT((at("from") - far_end).norm(), 0.08);
+  EXPECT_LT((at("to") - near_end).norm(), 0.08);
+  const Eigen::Vector3d mid = 0.5 * (near_end + far_end);
+  EXPECT_NE(r.err.find("1 occlusion gap "), std::string::npos) << r.err;
+  const std::size_t at_pos = r.err.find(" at (");
+  ASSERT_NE(at_pos, std::string::npos) << r.err;
+  Eigen::Vector3d said;
+  ASSERT_EQ(
+      std::sscanf(r.err.c_str() + at_pos, " at (%lf, %lf, %lf)", &said.x(), &said.y(), &said.z()),
+      3)
+      << r.err;
+  EXPECT_LT((said - mid).norm(), 0.08) << r.err;
+  const auto& warnings = j["warnings"];
+  EXPECT_TRUE(std::any_of(warnings.begin(), warnings.end(), [](const auto& w) {
+    return w.template get<std::string>().find("occlusion gap") != std::string::npos;
+  }));
 }
 
 TEST(ScanCli, AHouseIsNoTreeAndLazIsRefused) {

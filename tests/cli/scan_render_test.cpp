@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "fspm/tree_file.hpp"
 #include "graphics/image.hpp"
 #include "tests/cli/run_command.hpp"
 
@@ -106,6 +107,42 @@ TEST(ScanRenderCli, ClustersDrawSkeletonAndHulls) {
                (dir / "missing.ply").string());
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+}
+
+// A skeleton at projected coordinates (as fspm encode --skeleton writes one for a GIS cloud) is
+// drawn without the ground as it is at the origin: the same tree, the same pixels.
+TEST(ScanRenderCli, TreeAtProjectedCoordinatesIsFramedWithoutGround) {
+  const auto dir = scratch_dir("scan_render_projected_tree");
+  const auto y_tree = [](const Eigen::Vector3d& at) {
+    TreeGraph t;
+    NodeData d;
+    d.radius = 0.15;
+    d.start = at, d.end = at + Eigen::Vector3d(0, 0, 3);
+    const NodeId trunk = t.add_node(kNoNode, d);
+    d.radius = 0.08, d.order = 1;
+    for (double side : {-1.0, 1.0}) {
+      d.start = at + Eigen::Vector3d(0, 0, 3), d.end = at + Eigen::Vector3d(1.5 * side, 0, 5);
+      t.add_node(trunk, d);
+    }
+    return t;
+  };
+  write_tree_file(y_tree(Eigen::Vector3d::Zero()), (dir / "origin.tree").string());
+  write_tree_file(y_tree({500123.4, 5800456.7, 312.3}), (dir / "projected.tree").string());
+  const std::string common = " --view front --size 200x200 --no-ground --json";
+  auto r = run_fspm("render " + (dir / "origin.tree").string() + " -o " +
+                    (dir / "origin.png").string() + common);
+  if (r.err.find("without VTK") != std::string::npos) GTEST_SKIP() << "built without VTK";
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_fspm("render " + (dir / "projected.tree").string() + " -o " +
+               (dir / "projected.png").string() + common);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const DarkPixels origin = dark_pixels(graphics::read_image((dir / "origin.png").string()));
+  const DarkPixels projected = dark_pixels(graphics::read_image((dir / "projected.png").string()));
+  // The Y, 3 m wide and 5 m high, fills a good part of the picture in both.
+  EXPECT_GT(origin.count, 1000u);
+  EXPECT_GT(projected.count, origin.count * 9 / 10);
+  EXPECT_LT(projected.count, origin.count * 11 / 10);
+  EXPECT_NEAR(projected.mean_x, origin.mean_x, 3.0);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@ namespace fspm::reconstruction {
 namespace {
 
 using testing::hand_library;
+using testing::hand_options;
 using testing::inside_by_solid_angle;
 using testing::two_cluster_model;
 
@@ -63,7 +64,8 @@ TEST(HullGeometry, CrossingsOfABox) {
 TEST(ClusterTexturing, CountsFollowFromEquation33) {
   const scans::ClusterModel model = two_cluster_model();
   std::mt19937_64 rng(5);
-  const std::vector<PlacedPatch> placed = texture_clusters(model, hand_library(), {}, rng);
+  const std::vector<PlacedPatch> placed =
+      texture_clusters(model, hand_library(), hand_options(), rng);
   ASSERT_EQ(placed.size(), 6u);
   for (std::size_t k = 0; k < placed.size(); ++k) {
     const PlacedPatch& p = placed[k];
@@ -87,7 +89,8 @@ TEST(ClusterTexturing, CountsFollowFromEquation33) {
 TEST(ClusterTexturing, DockingPointsLieOnTheSkeletonOrInsideTheHull) {
   const scans::ClusterModel model = two_cluster_model();
   std::mt19937_64 rng(11);
-  const std::vector<PlacedPatch> placed = texture_clusters(model, hand_library(), {}, rng);
+  const std::vector<PlacedPatch> placed =
+      texture_clusters(model, hand_library(), hand_options(), rng);
   ASSERT_FALSE(placed.empty());
   for (const PlacedPatch& p : placed) {
     const scans::ClusterHull& hull = model.clusters[p.cluster];
@@ -105,13 +108,13 @@ TEST(ClusterTexturing, DockingPointsLieOnTheSkeletonOrInsideTheHull) {
 }
 
 TEST(ClusterTexturing, DockingPointsTooNearTheHullStayEmpty) {
-  TextureOptions options;
+  TextureOptions options = hand_options();
   options.min_scale_ratio = 0.3;  // 0.707 < 0.3 * 2.5: the lateral patches are refused
   std::mt19937_64 rng(5);
   const std::vector<PlacedPatch> placed =
       texture_clusters(two_cluster_model(), hand_library(), options, rng);
   EXPECT_EQ(placed.size(), 2u);
-  options = {};
+  options = hand_options();
   options.max_depth = 0;  // only the seeds' patches
   EXPECT_EQ(texture_clusters(two_cluster_model(), hand_library(), options, rng).size(), 2u);
 }
@@ -128,7 +131,8 @@ TEST(ClusterTexturing, EqualFitsGoToThePatchThatKeepsFillingTheHull) {
   const auto copy = static_cast<std::uint32_t>(lib.patches.size() - 1);
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     std::mt19937_64 rng(seed);
-    const std::vector<PlacedPatch> placed = texture_cluster(two_cluster_model(), 0, lib, {}, rng);
+    const std::vector<PlacedPatch> placed =
+        texture_cluster(two_cluster_model(), 0, lib, hand_options(), rng);
     ASSERT_EQ(placed.size(), 3u) << seed;
     EXPECT_EQ(placed[0].patch, 0u) << seed;
     EXPECT_NE(placed[0].patch, copy);
@@ -136,10 +140,10 @@ TEST(ClusterTexturing, EqualFitsGoToThePatchThatKeepsFillingTheHull) {
 }
 
 // Past Pirk's texturing (3 patches, 2.5 + 2 x 0.707 m, see CountsFollowFromEquation33), further
-// branchlets start at the seed point until the cluster's branch length is reached; the last
-// patch may pass it by at most the longest patch the box admits from the seed point (its far
-// corner, |(1, 1, 2.5)| = 2.87 m). Without a branch length, or with match_branch_length off, the
-// result is Pirk's.
+// branchlets start at the seed point until the cluster's branch length is reached; a patch is
+// placed only while it brings the length nearer to it, so the length ends within half the longest
+// patch the box admits from the seed point (its far corner, |(1, 1, 2.5)| = 2.87 m) of it. Without
+// a branch length, or with match_branch_length off, the result is Pirk's.
 TEST(ClusterTexturing, FurtherBranchletsUpToTheClustersBranchLength) {
   scans::ClusterModel model = two_cluster_model();
   model.clusters[0].branch_length_m = 10.0;
@@ -151,10 +155,9 @@ TEST(ClusterTexturing, FurtherBranchletsUpToTheClustersBranchLength) {
   };
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     std::mt19937_64 rng(seed);
-    const std::vector<PlacedPatch> placed = texture_cluster(model, 0, lib, {}, rng);
+    const std::vector<PlacedPatch> placed = texture_cluster(model, 0, lib, hand_options(), rng);
     const double length = length_of(placed);
-    EXPECT_GE(length, 10.0) << seed;
-    EXPECT_LT(length, 10.0 + std::sqrt(1.0 + 1.0 + 2.5 * 2.5)) << seed;
+    EXPECT_NEAR(length, 10.0, 0.5 * std::sqrt(1.0 + 1.0 + 2.5 * 2.5)) << seed;
     std::size_t seeds = 0;
     for (const PlacedPatch& p : placed) {
       if (p.parent != kNoPlacement) continue;
@@ -167,12 +170,12 @@ TEST(ClusterTexturing, FurtherBranchletsUpToTheClustersBranchLength) {
     }
     EXPECT_GT(seeds, 1u) << seed;
   }
-  TextureOptions pirk_only;
+  TextureOptions pirk_only = hand_options();
   pirk_only.match_branch_length = false;
   std::mt19937_64 rng(1);
   EXPECT_EQ(texture_cluster(model, 0, lib, pirk_only, rng).size(), 3u);
   model.clusters[0].branch_length_m = 0.0;
-  EXPECT_EQ(texture_cluster(model, 0, lib, {}, rng).size(), 3u);
+  EXPECT_EQ(texture_cluster(model, 0, lib, hand_options(), rng).size(), 3u);
 }
 
 TEST(ClusterTexturing, SameSeedSameResult) {
@@ -199,7 +202,7 @@ TEST(ClusterTexturing, RefusesWhatItCannotTexture) {
   std::mt19937_64 rng(1);
   EXPECT_THROW(texture_clusters(model, SpeciesLibrary{}, {}, rng), ValueError);
   model.clusters[0].seed_node = 7;
-  EXPECT_THROW(texture_clusters(model, hand_library(), {}, rng), ValueError);
+  EXPECT_THROW(texture_clusters(model, hand_library(), hand_options(), rng), ValueError);
   TextureOptions bad;
   bad.max_thickness_ratio = 0.5;
   EXPECT_THROW(texture_clusters(two_cluster_model(), hand_library(), bad, rng), ValueError);

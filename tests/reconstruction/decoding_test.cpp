@@ -4,7 +4,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <random>
+#include <utility>
 
 #include "fspm/error.hpp"
 #include "reconstruction/decoding.hpp"
@@ -23,7 +25,7 @@ Decoding hand_decoding(std::uint64_t seed) {
   Decoding d;
   d.library = hand_library();
   std::mt19937_64 rng(seed);
-  d.placements = texture_clusters(two_cluster_model(), d.library, {}, rng);
+  d.placements = texture_clusters(two_cluster_model(), d.library, testing::hand_options(), rng);
   return d;
 }
 
@@ -126,9 +128,9 @@ double internode_length_m(const TreeGraph& t) {
 
 // A tree of known branch length (scans/synthetic_tree.hpp), scanned from four sides and encoded.
 // Decoding textures each cluster up to the branch length its skeleton segments had, so the decoded
-// tree is as long as the scan's skeleton (within 10 %: the last patch of a cluster may pass its
-// length), and that comes within 30 % of the true tree (the skeleton of a scanned surface runs
-// through the centroids of bins of points, not the branch axes).
+// tree is as long as the scan's skeleton (within 10 %: the last patch of a cluster may end half a
+// patch from its length), and that comes within 30 % of the true tree (the skeleton of a scanned
+// surface runs through the centroids of bins of points, not the branch axes).
 TEST(Decoding, RestoresTheBranchLengthOfAScannedTree) {
   const TreeGraph truth = scans::synthetic_tree();
   const double true_m = internode_length_m(truth);
@@ -154,6 +156,43 @@ TEST(Decoding, RestoresTheBranchLengthOfAScannedTree) {
     std::printf("true %.2f m, scanned %.2f m, decoded %.2f m\n", true_m, scanned_m, decoded_m);
     EXPECT_NEAR(decoded_m / scanned_m, 1.0, 0.1) << seed;
     EXPECT_NEAR(decoded_m / true_m, 1.0, 0.3) << seed;
+  }
+}
+
+// A cluster hull far larger than a branchlet (a 6 m box, as airborne crowns give): the patches
+// are not blown up to it. Every leaf and patch internode of the decoded tree is at most the
+// species' leaf and internode length (species_sizes); without the bound they grow several times.
+TEST(Decoding, LeavesAndInternodesKeepTheSpeciesSizes) {
+  scans::ClusterModel model;
+  NodeData d;
+  d.end = {0, 0, 2};
+  d.radius = 0.2;
+  model.skeleton.add_node(kNoNode, d);
+  model.clusters.push_back(testing::box_hull({-3, -3, 2.5}, {3, 3, 8.5}, 0));
+  model.clusters.back().branch_length_m = 60.0;
+  for (const char* species : {"default", "palm", "pine"}) {
+    model.species = species;
+    const SpeciesSizes sizes = species_sizes(species);
+    const auto longest = [&](const TextureOptions& texture) {
+      DecodeOptions options;
+      options.texture = texture;
+      const TreeGraph tree = decoded_tree(model, decode_clusters(model, options));
+      double leaf = 0.0, internode = 0.0;
+      for (NodeId n = model.skeleton.size(); n < tree.size(); ++n) {
+        (tree.kind(n) == OrganKind::kLeaf ? leaf : internode) =
+            std::max(tree.kind(n) == OrganKind::kLeaf ? leaf : internode, tree.length(n));
+      }
+      return std::pair{leaf, internode};
+    };
+    const auto [leaf, internode] = longest({});
+    EXPECT_GT(leaf, 0.5 * sizes.leaf_length_m) << species;
+    EXPECT_LE(leaf, sizes.leaf_length_m * (1.0 + 1e-9)) << species;
+    EXPECT_LE(internode, sizes.internode_length_m * (1.0 + 1e-9)) << species;
+    TextureOptions unbounded;
+    unbounded.max_scale = std::numeric_limits<double>::infinity();
+    const auto [big_leaf, big_internode] = longest(unbounded);
+    EXPECT_GT(big_leaf, 2.0 * sizes.leaf_length_m) << species;
+    EXPECT_GT(big_internode, 2.0 * sizes.internode_length_m) << species;
   }
 }
 

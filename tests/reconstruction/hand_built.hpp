@@ -7,10 +7,20 @@
 #include <cmath>
 #include <numbers>
 
+#include <limits>
+
+#include "reconstruction/cluster_texturing.hpp"
 #include "reconstruction/species_library.hpp"
 #include "scans/cluster_model.hpp"
 
 namespace fspm::reconstruction::testing {
+
+// The hand library has no unit: its patches scale to the hulls without the species' bound.
+inline TextureOptions hand_options() {
+  TextureOptions o;
+  o.max_scale = std::numeric_limits<double>::infinity();
+  return o;
+}
 
 // The 12 triangles of the box [lo, hi].
 inline scans::ClusterHull box_hull(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
