@@ -72,10 +72,24 @@ nlohmann::json measurements_json(const scans::TreeMeasurements& m) {
 }
 
 void run_encode(const EncodeCommand& o) {
+  // The file is always the binary cluster format: another extension would misname it.
+  if (std::filesystem::path(o.output).extension() != ".clusters") {
+    throw ValueError("-o: encode writes the cluster format, expected a .clusters file", o.output);
+  }
   refuse_overwriting_input(o.output, {o.input});
   refuse_overwriting_input(o.skeleton, {o.input});
   refuse_overwriting_input(o.cylinders, {o.input});
   refuse_overwriting_input(o.branch_skeleton, {o.input});
+  const std::pair<const std::string&, const char*> outputs[] = {
+      {o.output, "-o"},
+      {o.skeleton, "--skeleton"},
+      {o.cylinders, "--cylinders"},
+      {o.branch_skeleton, "--branch-skeleton"}};
+  for (std::size_t i = 0; i < std::size(outputs); ++i) {
+    for (std::size_t j = i + 1; j < std::size(outputs); ++j) {
+      refuse_same_output(outputs[i].first, outputs[i].second, outputs[j].first, outputs[j].second);
+    }
+  }
   scans::EncodeOptions options;
   options.species = scans::species_by_name(o.species);
   if (o.beta) options.species.beta = *o.beta;
