@@ -101,7 +101,14 @@ void run_encode(const EncodeCommand& o) {
   options.keep_ground = o.keep_ground;
   const scans::PointSet points = load_input(o);
   const auto t0 = std::chrono::steady_clock::now();
-  const scans::EncodeResult r = scans::encode_point_set(points, options);
+  const scans::EncodeResult r = [&] {
+    try {
+      return scans::encode_point_set(points, options);
+    } catch (const MemoryLimitError& e) {
+      if (!e.file().empty()) throw;
+      throw MemoryLimitError(e.message(), o.input);  // which input was too large
+    }
+  }();
   const std::string bytes = scans::clusters_bytes(r.model);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -251,7 +251,8 @@ void check_fixed_binary_size(const PlyHeader& h, std::string_view data, const st
   throw ParseError("the header declares " + declared_counts(h) + " (" +
                        std::to_string(static_cast<std::uint64_t>(expected)) +
                        " bytes of data), the file holds " + std::to_string(held) +
-                       " bytes after its header: a header count that does not match the data",
+                       " bytes after its header (to byte " + std::to_string(data.size()) +
+                       "): a header count that does not match the data",
                    path);
 }
 
