@@ -52,6 +52,7 @@ struct CrownCommand {
 // after its stem) or a directory (crown.glb and the rest inside).
 struct OutputPaths {
   std::string mesh, color, radius, cubemaps, relief, mask, billboards;
+  std::string created_dir;  // the output directory when this run created it
 };
 
 OutputPaths output_paths(const std::string& out) {
@@ -67,7 +68,8 @@ OutputPaths output_paths(const std::string& out) {
     throw IoError("cannot write: directory '" + must_exist.string() + "' does not exist", out);
   }
   std::error_code ec;
-  if (directory && !fs::create_directories(p, ec) && !fs::is_directory(p)) {
+  const bool created = directory && fs::create_directories(p, ec);
+  if (directory && !created && !fs::is_directory(p)) {
     throw IoError("cannot create the output directory: " +
                       (ec ? ec.message() : std::string("a file of that name exists")),
                   out);
@@ -84,6 +86,7 @@ OutputPaths output_paths(const std::string& out) {
   o.relief = beside("_relief.png");
   o.mask = beside("_mask.png");
   o.billboards = beside("_billboards.csv");
+  if (created) o.created_dir = p.string();
   return o;
 }
 
@@ -193,6 +196,10 @@ void write_outputs(const CrownCommand& c, const OutputPaths& paths, const crown:
   }
 }
 
+void make_crown(const CrownCommand& c, const OutputPaths& paths);
+
+// Every output or none (OutputTransaction): a failure on the way (a full disk, a photograph too
+// large) leaves no file, and no output directory this run created.
 void run_crown(const CrownCommand& c) {
   refuse_overwriting_input(c.out, {c.photo, c.mask});
   refuse_overwriting_input(c.side_mask, {c.photo, c.mask});
@@ -200,6 +207,17 @@ void run_crown(const CrownCommand& c) {
   if (!c.side_mask.empty()) crown::check_image_output(c.side_mask);
   if (!c.preview.empty()) crown::check_image_output(c.preview);
   const OutputPaths paths = output_paths(c.out);
+  try {
+    make_crown(c, paths);
+  } catch (...) {
+    std::error_code ec;
+    if (!paths.created_dir.empty()) std::filesystem::remove(paths.created_dir, ec);  // if empty
+    throw;
+  }
+}
+
+void make_crown(const CrownCommand& c, const OutputPaths& paths) {
+  OutputTransaction outputs;
   auto t0 = std::chrono::steady_clock::now();
   nlohmann::json seconds = nlohmann::json::object();
   const crown::Raster photo = crown::read_rgb(c.photo);
@@ -221,6 +239,7 @@ void run_crown(const CrownCommand& c) {
   for (const auto& [stage, s] : model.seconds) seconds[stage] = s;
   t0 = std::chrono::steady_clock::now();
   write_outputs(c, paths, model, mask);
+  outputs.commit();
   seconds["writing"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   nlohmann::json files = {{"mesh", paths.mesh},
                           {"color_cubemap", paths.color},

@@ -267,7 +267,8 @@ void add_environment_commands(CLI::App& app) {
                 "Instead of --points: a tree file whose leaf clusters get the mean light of their "
                 "leaves through the crown (one row per cluster, at its centre)");
   l->add_option("--directions", light->directions,
-                "Stratified sky directions (default: the scene's sky.directions, 256)");
+                "Stratified sky directions (default: the scene's sky.directions, 256)")
+      ->check(number_in(1, kMaxSkyDirections));
   l->add_option("-o,--output", light->out, "Output CSV x,y,z,light,dx,dy,dz (default: stdout)");
   l->add_flag("--json", light->json,
               "One JSON object on stdout: points, mean/min/max light, seconds, and the samples "

@@ -35,6 +35,7 @@
 #include "experiments/results_export.hpp"
 #include "experiments/run_plan.hpp"
 #include "experiments/runner.hpp"
+#include "experiments/shell_text.hpp"
 #include "experiments/slurm_script.hpp"
 #include "fspm/atomic_file.hpp"
 #include "fspm/error.hpp"
@@ -50,8 +51,12 @@ namespace ex = fspm::experiments;
 constexpr double kMaxJobs = 4096;
 
 std::atomic<bool> g_interrupted{false};
+// The signal that stopped the runs: the exit code is 128 + its number, as a shell reports a
+// process the signal killed (130 for SIGINT, 143 for SIGTERM).
+std::atomic<int> g_interrupt_signal{SIGINT};
 
 extern "C" void on_interrupt(int signal) {
+  g_interrupt_signal.store(signal);
   g_interrupted.store(true);
   // A second Ctrl-C kills at once.
   std::signal(signal, SIG_DFL);
@@ -124,7 +129,10 @@ std::pair<std::size_t, std::size_t> parse_shard(const std::string& text) {
   throw ValueError("--shard: expected I/N with 0 <= I < N (e.g. 0/4), not '" + text + "'");
 }
 
-std::string default_out(const ex::Experiment& x) { return x.name + "-results"; }
+// Named after the experiment, in the current folder whatever the name holds ("../x" too).
+std::string default_out(const ex::Experiment& x) {
+  return ex::file_stem_from_name(x.name) + "-results";
+}
 
 void emit_slurm(const RunOptions& o, const ex::Experiment& x) {
   ex::SlurmOptions s;
@@ -135,7 +143,7 @@ void emit_slurm(const RunOptions& o, const ex::Experiment& x) {
   s.shards = o.shards;
   s.cpus_per_task = o.jobs == 0 ? 1 : o.jobs;
   s.time_limit = o.slurm_time;
-  s.script_path = o.slurm_file.empty() ? x.name + ".slurm" : o.slurm_file;
+  s.script_path = o.slurm_file.empty() ? ex::file_stem_from_name(x.name) + ".slurm" : o.slurm_file;
   const std::string script = ex::slurm_script(s);
   write_file_atomically(s.script_path, [&](std::ostream& out) { out << script; });
   fs::permissions(s.script_path, fs::perms::owner_exec | fs::perms::group_exec,
@@ -144,7 +152,7 @@ void emit_slurm(const RunOptions& o, const ex::Experiment& x) {
     print_json({{"slurm_script", s.script_path}, {"shards", s.shards}, {"out", s.out_dir}});
   } else {
     std::cout << "wrote " << s.script_path << " (" << s.shards << " shards of " << x.runs()
-              << " runs); submit it with: sbatch " << s.script_path << '\n';
+              << " runs); submit it with: sbatch " << ex::shell_quote(s.script_path) << '\n';
   }
 }
 
@@ -310,7 +318,7 @@ void run_command(const RunOptions& o) {
     std::cerr << "fspm: interrupted; " << (s.shard_runs - s.already_done - s.ran)
               << " runs are missing, continue with --resume\n";
     std::cout.flush();
-    std::exit(130);
+    std::exit(128 + g_interrupt_signal.load());
   }
 }
 

@@ -33,6 +33,7 @@
 #include "cli/wind_skin.hpp"
 #include "cli/xvfb.hpp"
 #include "environment/scene_file.hpp"
+#include "fspm/atomic_file.hpp"
 #include "fspm/compressed_tree_graph.hpp"
 #include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
@@ -117,7 +118,7 @@ struct ViewCommand {
   std::string color_by;
   std::string screenshot;
   std::string size = "1280x800";
-  int frames = 1;
+  int frames = 0;  // 0: not given
   bool leaves = false;
   std::string foliage = "leaves";
   std::uint64_t seed = 1;
@@ -588,6 +589,8 @@ void run_mesh(MeshCommand c) {
   check_mesh_request(c, format, kind);
   const graphics::MeshOptions options = mesh_options(c);
   nlohmann::json j = {{"file", c.tree}, {"output", c.out}};
+  // The mesh and its companions (an .obj's .mtl, a .pvd's steps) all, or none of them.
+  OutputTransaction outputs;
   if (c.skin) {
     write_skinned_mesh(c, options, j);
   } else if (format == graphics::MeshFormat::kPvd) {
@@ -595,6 +598,7 @@ void run_mesh(MeshCommand c) {
   } else {
     write_single_mesh(c, kind, options, j);
   }
+  outputs.commit();
   j["seconds"] = seconds_since(t0);
   if (c.json) {
     print_json(j);
@@ -926,7 +930,9 @@ graphics::ViewerOptions viewer_options(const ViewCommand& c) {
   graphics::parse_size(c.size, options.width, options.height);
   options.color_by = c.color_by;
   options.screenshot = c.screenshot;
-  options.frames = c.frames;
+  // --frames: before the screenshot, or, without one, before the window closes by itself.
+  options.frames = c.frames > 0 ? c.frames : 1;
+  if (c.screenshot.empty()) options.close_after_frames = c.frames;
   options.shadows = !c.no_shadows;
   options.panel = !c.no_panel;
   options.ground = !c.no_ground;
@@ -1305,9 +1311,10 @@ void add_view_command(CLI::App& app) {
   v->add_option("--size", view->size, "Window WIDTHxHEIGHT")->capture_default_str();
   v->add_option("--screenshot", view->screenshot,
                 "Render hidden, write this image after --frames frames and exit");
-  v->add_option("--frames", view->frames, "Frames before the screenshot")
-      ->check(CLI::Range(1, 100000))
-      ->capture_default_str();
+  v->add_option("--frames", view->frames,
+                "Frames before the screenshot (default 1); without --screenshot, the window "
+                "closes after this many frames")
+      ->check(CLI::Range(1, 100000));
   v->add_option("--stages", view->stages,
                 "Developmental stages of each tree file (Pirk 5, as fspm stages): N stages from "
                 "t = 1/N to the given tree at t = 1, stepped with [ and ] and the panel's slider")

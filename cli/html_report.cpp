@@ -62,6 +62,7 @@ const char* const kIndexHtml = R"(<!DOCTYPE html>
 <title>@TITLE@</title>
 <link rel="stylesheet" href="lib/report.css">
 <script src="lib/marked.min.js"></script>
+<script src="lib/safe_markdown.js"></script>
 <script src="lib/plotly.min.js"></script>
 <script src="lib/three.min.js"></script>
 <script src="data.js"></script>

@@ -14,6 +14,7 @@
 #include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
 #include "fspm/instanced_tree.hpp"
+#include "fspm/saturating.hpp"
 #include "fspm/tree_file.hpp"
 #include "lsystem/derivation.hpp"
 #include "lsystem/parser.hpp"
@@ -106,10 +107,12 @@ void run_derive_compressed(const LsystemOptions& o, const lsystem::LSystem& sys)
     std::cout << text << '\n';
     return;
   }
-  std::cout << "steps: " << g.steps << '\n'
-            << "modules: " << (c.saturated ? "at least " : "") << c.modules << '\n';
-  std::cout << "symbols: " << symbols.dump() << (c.saturated ? " (counts stop at 2^64 - 1)" : "")
-            << '\n';
+  std::cout << "steps: " << g.steps << '\n' << "modules: " << count_text(c.modules) << '\n';
+  nlohmann::json shown = symbols;
+  for (auto& [name, count] : shown.items()) {
+    if (count.get<std::uint64_t>() == kSaturated) count = count_text(kSaturated);
+  }
+  std::cout << "symbols: " << shown.dump() << '\n';
   std::cout << "substructures: " << g.nodes.size() << " (" << graph_bytes << " bytes, "
             << compression << " times smaller than the string)\n";
 }

@@ -5,6 +5,7 @@
 
 #include "cli/lsystem_source.hpp"
 #include "fspm/error.hpp"
+#include "fspm/saturating.hpp"
 #include "graphics/instanced_mesh.hpp"
 #include "graphics/mesh_writers.hpp"
 #include "graphics/tree_mesher.hpp"
@@ -14,7 +15,7 @@ namespace fspm::cli {
 graphics::InstancedMesh mesh_lsystem(const LsystemDrawing& drawing,
                                      const graphics::MeshOptions& options) {
   if (drawing.occurrences > graphics::kMaxInstances) {
-    throw ValueError("the drawing places " + std::to_string(drawing.occurrences) +
+    throw ValueError("the drawing places " + count_text(drawing.occurrences) +
                      " substructures, more than " + std::to_string(graphics::kMaxInstances) +
                      " instances: draw substructures smaller than a length as one internode "
                      "(--detail)");

@@ -109,6 +109,23 @@ void refuse_overwriting_input(const std::string& output,
   }
 }
 
+void refuse_same_output(const std::string& first, std::string_view first_option,
+                        const std::string& second, std::string_view second_option) {
+  if (first.empty() || second.empty()) return;
+  namespace fs = std::filesystem;
+  std::error_code ec1;
+  std::error_code ec2;
+  const fs::path a = fs::weakly_canonical(fs::absolute(first), ec1);
+  const fs::path b = fs::weakly_canonical(fs::absolute(second), ec2);
+  std::error_code ec;
+  const bool same = (!ec1 && !ec2 && a == b) || (fs::equivalent(first, second, ec) && !ec);
+  if (!same) return;
+  throw ValueError(std::string(second_option) + " '" + second + "' and " +
+                       std::string(first_option) +
+                       " name the same file: one output would replace the other",
+                   first);
+}
+
 CLI::Validator number_in(double low, double high) { return range_check(low, high, true); }
 CLI::Validator positive_number(double high) { return range_check(0.0, high, false); }
 

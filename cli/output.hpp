@@ -30,6 +30,12 @@ void finish_standard_output();
 // `inputs`: the command would replace a file it reads. Empty names are skipped.
 void refuse_overwriting_input(const std::string& output, std::initializer_list<std::string> inputs);
 
+// Throws ValueError when the outputs `first` (of option `first_option`) and `second` (of
+// `second_option`) are, or resolve to, the same file, existing or not: one would replace the other.
+// Empty names are skipped.
+void refuse_same_output(const std::string& first, std::string_view first_option,
+                        const std::string& second, std::string_view second_option);
+
 // Checks of numeric options with short messages ("expected a number in [0, 1000], got '-1'"),
 // refusing nan and inf: in [low, high], or in (0, high] for positive_number.
 CLI::Validator number_in(double low, double high);

@@ -13,6 +13,7 @@
 
 #include "fspm/error.hpp"
 #include "fspm/input_file.hpp"
+#include "scans/gltf_reader.hpp"
 #include "scans/obj_reader.hpp"
 
 namespace fspm::cli {
@@ -113,7 +114,7 @@ void append_subtree(const aiScene& scene, const aiNode& node, const aiMatrix4x4&
 // A glTF mesh through assimp, node transforms applied, with its vertex colours and fspm's
 // material names (the format fspm crown and fspm mesh write).
 graphics::TriangleMesh read_gltf_triangles(const std::string& path) {
-  open_input_file(path);  // IoError for a missing, unreadable or implausibly large file
+  scans::check_gltf_input(path);
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(
       path, aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure);
@@ -145,7 +146,16 @@ bool is_placed_mesh_path(const std::string& path) {
 graphics::TriangleMesh read_placed_mesh(const std::string& path) {
   const std::string ext = extension(path);
   if (ext == ".glb" || ext == ".gltf") return read_gltf_triangles(path);
-  if (ext == ".obj") return obj_as_triangles(scans::read_obj_mesh(path));
+  if (ext == ".obj") {
+    const scans::GroupedMesh obj = scans::read_obj_mesh(path);
+    graphics::TriangleMesh mesh = obj_as_triangles(obj);
+    if (mesh.triangles.empty()) {
+      throw ParseError("no triangle in the OBJ file (" + std::to_string(obj.vertices.size()) +
+                           " vertices, no face of 3 or more)",
+                       path);
+    }
+    return mesh;
+  }
   throw ValueError("expected a .glb, .gltf or .obj mesh", path);
 }
 

@@ -15,9 +15,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // What index.html loads, and the libraries' licences.
-constexpr std::array<const char*, 6> kFiles = {"three.min.js",  "plotly.min.js",
-                                               "marked.min.js", "report.js",
-                                               "report.css",    "THIRD_PARTY_LICENSES.txt"};
+constexpr std::array<const char*, 7> kFiles = {
+    "three.min.js", "plotly.min.js", "marked.min.js",           "safe_markdown.js",
+    "report.js",    "report.css",    "THIRD_PARTY_LICENSES.txt"};
 
 }  // namespace
 

@@ -101,10 +101,24 @@ nlohmann::json gaps_json(const scans::EncodeResult& r) {
 }
 
 void run_encode(const EncodeCommand& o) {
+  // The file is always the binary cluster format: another extension would misname it.
+  if (std::filesystem::path(o.output).extension() != ".clusters") {
+    throw ValueError("-o: encode writes the cluster format, expected a .clusters file", o.output);
+  }
   refuse_overwriting_input(o.output, {o.input});
   refuse_overwriting_input(o.skeleton, {o.input});
   refuse_overwriting_input(o.cylinders, {o.input});
   refuse_overwriting_input(o.branch_skeleton, {o.input});
+  const std::pair<const std::string&, const char*> outputs[] = {
+      {o.output, "-o"},
+      {o.skeleton, "--skeleton"},
+      {o.cylinders, "--cylinders"},
+      {o.branch_skeleton, "--branch-skeleton"}};
+  for (std::size_t i = 0; i < std::size(outputs); ++i) {
+    for (std::size_t j = i + 1; j < std::size(outputs); ++j) {
+      refuse_same_output(outputs[i].first, outputs[i].second, outputs[j].first, outputs[j].second);
+    }
+  }
   scans::EncodeOptions options;
   options.species = scans::species_by_name(o.species);
   if (o.beta) options.species.beta = *o.beta;
@@ -118,7 +132,14 @@ void run_encode(const EncodeCommand& o) {
   if (o.main_branch_share) options.main_branch_share = *o.main_branch_share;
   const scans::PointSet points = load_input(o);
   const auto t0 = std::chrono::steady_clock::now();
-  const scans::EncodeResult r = scans::encode_point_set(points, options);
+  const scans::EncodeResult r = [&] {
+    try {
+      return scans::encode_point_set(points, options);
+    } catch (const MemoryLimitError& e) {
+      if (!e.file().empty()) throw;
+      throw MemoryLimitError(e.message(), o.input);  // which input was too large
+    }
+  }();
   const std::string bytes = scans::clusters_bytes(r.model);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

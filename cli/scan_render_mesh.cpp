@@ -7,6 +7,7 @@
 
 #include "cli/obstacle_mesh.hpp"
 #include "environment/occluders.hpp"
+#include "fspm/memory_budget.hpp"
 #include "scans/clusters_file.hpp"
 #include "scans/point_origin.hpp"
 #include "scans/point_set_file.hpp"
@@ -58,6 +59,15 @@ std::string lower_extension(const std::string& path) {
 
 graphics::TriangleMesh mesh_point_set(const scans::PointSet& points, double radius_m,
                                       graphics::Material material) {
+  // One sphere per point: the mesh and the renderer's copy of it grow with the point count.
+  graphics::TriangleMesh sphere;
+  append_sphere_mesh(Eigen::Vector3d::Zero(), 1.0, kPointSphereSegments, sphere);
+  const std::size_t n = points.points.size();
+  check_memory(2.0 * graphics::TriangleMesh::bytes_for(n * sphere.vertex_count(),
+                                                       n * sphere.triangle_count(), 0),
+               "drawing " + std::to_string(n) +
+                   " points as spheres (the mesh and the renderer's "
+                   "copy)");
   graphics::TriangleMesh mesh;
   for (const Eigen::Vector3d& p : points.points) {
     append_sphere_mesh(p, radius_m, kPointSphereSegments, mesh);

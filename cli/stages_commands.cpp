@@ -56,8 +56,13 @@ TreeGraph read_given_tree(const StagesOptions& o, nlohmann::json& info) {
   stages::MeshSkeletonParams params;
   params.join_distance_m = o.join_distance_m;
   if (o.uniform_laplacian) params.contraction.weights = stages::LaplacianWeights::kUniform;
-  stages::MeshSkeleton s =
-      stages::mesh_skeleton(stages::weld_branch_mesh(m.vertices, m.faces), params);
+  stages::MeshSkeleton s;
+  try {
+    s = stages::mesh_skeleton(stages::weld_branch_mesh(m.vertices, m.faces), params);
+  } catch (const ValueError& e) {
+    if (!e.file().empty()) throw;
+    throw ValueError(e.message(), o.tree);  // "the mesh has no triangle": which mesh
+  }
   info = {{"vertices", m.vertices.size()},          {"faces", m.faces.size()},
           {"contraction_iterations", s.iterations}, {"area_ratio", s.area_ratio},
           {"join_distance_m", s.join_distance_m},   {"skeleton_internodes", s.tree.size()},
@@ -168,6 +173,7 @@ stages::BranchEdits branch_edits(const StagesOptions& o) {
 void run_stages(const StagesOptions& o) {
   refuse_overwriting_input(o.output, {o.tree});
   if (!o.skeleton.empty()) refuse_overwriting_input(o.skeleton, {o.tree});
+  refuse_same_output(o.output, "-o", o.skeleton, "--skeleton");
   const std::vector<double> times = stage_times(o);
   nlohmann::json mesh_info;
   const TreeGraph tree = read_given_tree(o, mesh_info);

@@ -12,21 +12,20 @@
 
 #include "fspm/atomic_file.hpp"
 #include "fspm/error.hpp"
+#include "fspm/image_budget.hpp"
 
 namespace fspm::crown {
 namespace {
 
 // All channels of the first subimage as floats: 8-bit ones in [0, 1], float ones as stored.
 std::vector<float> read_pixels(const std::string& path, OIIO::ImageSpec& spec) {
-  if (!std::filesystem::is_regular_file(path)) {
-    throw IoError("cannot read image: no such file", path);
-  }
+  check_image_file(path);
   auto in = OIIO::ImageInput::open(path);
   if (!in) throw IoError("cannot read image: " + OIIO::geterror(), path);
   spec = in->spec();
-  if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1) {
-    throw IoError("image has no pixels", path);
-  }
+  // Our floats and the decoder's own buffer of the stored values.
+  check_image_size(path, spec.width, spec.height, spec.nchannels,
+                   sizeof(float) + static_cast<double>(spec.format.size()));
   std::vector<float> pixels(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
   if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data())) {
     throw IoError("cannot decode image: " + in->geterror(), path);

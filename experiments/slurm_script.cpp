@@ -2,23 +2,25 @@
 
 #include <fmt/format.h>
 
+#include "experiments/shell_text.hpp"
 #include "fspm/error.hpp"
 
 namespace fspm::experiments {
-namespace {
-
-// Single-quoted for the shell.
-std::string shell_quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-}  // namespace
 
 std::string slurm_script(const SlurmOptions& o) {
   if (o.shards == 0) throw ValueError("--shards must be at least 1");
   if (o.cpus_per_task == 0) throw ValueError("--jobs must be at least 1");
+  // sbatch reads its directives up to the line's end and honours only double quotes; the
+  // comments name the script and the folder, so neither may break a line.
+  for (const auto& [option, path] : {std::pair<const char*, const std::string&>{"--out", o.out_dir},
+                                     {"--slurm-file", o.script_path}}) {
+    if (path.find_first_of("\"\n\r") != std::string::npos) {
+      throw ValueError(std::string(option) +
+                       ": a Slurm script cannot name a path with a double quote or a line break "
+                       "in it, got '" +
+                       path + "'");
+    }
+  }
   return fmt::format(
       "#!/bin/bash\n"
       "# Written by `fspm run --emit-slurm`: runs the experiment as {shards} shards, one Slurm\n"
@@ -30,16 +32,16 @@ std::string slurm_script(const SlurmOptions& o) {
       "#SBATCH --cpus-per-task={cpus}\n"
       "#SBATCH --ntasks=1\n"
       "#SBATCH --time={time}\n"
-      "#SBATCH --output={out_raw}/slurm-%A_%a.out\n"
+      "#SBATCH --output=\"{out_raw}/slurm-%A_%a.out\"\n"
       "set -euo pipefail\n"
       "shard=\"${{SLURM_ARRAY_TASK_ID:?run this script with sbatch}}\"\n"
       "exec {fspm} run {experiment} --jobs \"${{SLURM_CPUS_PER_TASK:-{cpus}}}\" \\\n"
       "  --out {out}/shard-\"$shard\" --shard \"$shard\"/{shards} --resume\n",
       fmt::arg("shards", o.shards), fmt::arg("script", shell_quote(o.script_path)),
       fmt::arg("fspm", shell_quote(o.fspm_executable)), fmt::arg("out", shell_quote(o.out_dir)),
-      fmt::arg("out_raw", o.out_dir), fmt::arg("name", o.job_name), fmt::arg("last", o.shards - 1),
-      fmt::arg("cpus", o.cpus_per_task), fmt::arg("time", o.time_limit),
-      fmt::arg("experiment", shell_quote(o.experiment_file)));
+      fmt::arg("out_raw", o.out_dir), fmt::arg("name", file_stem_from_name(o.job_name)),
+      fmt::arg("last", o.shards - 1), fmt::arg("cpus", o.cpus_per_task),
+      fmt::arg("time", o.time_limit), fmt::arg("experiment", shell_quote(o.experiment_file)));
 }
 
 }  // namespace fspm::experiments

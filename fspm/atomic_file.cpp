@@ -64,11 +64,50 @@ void write_file_atomically(const std::string& path, const std::function<void(std
   const fs::path tmp = dir / name;
   try {
     write_stream(tmp, path, write, binary);
+    if (OutputTransaction* t = OutputTransaction::current()) {
+      t->add(tmp.string(), path);
+      return;
+    }
     fs::rename(tmp, target, ec);
     if (ec) throw IoError("cannot replace the file: " + ec.message(), path);
   } catch (...) {
     fs::remove(tmp, ec);
     throw;
+  }
+}
+
+namespace {
+thread_local OutputTransaction* t_current = nullptr;
+}  // namespace
+
+OutputTransaction::OutputTransaction() : outer_(t_current) { t_current = this; }
+
+OutputTransaction::~OutputTransaction() {
+  t_current = outer_;
+  if (committed_) return;
+  std::error_code ec;
+  for (const auto& [temporary, target] : pending_) fs::remove(temporary, ec);
+}
+
+OutputTransaction* OutputTransaction::current() { return t_current; }
+
+void OutputTransaction::add(std::string temporary, std::string target) {
+  pending_.emplace_back(std::move(temporary), std::move(target));
+}
+
+void OutputTransaction::commit() {
+  committed_ = true;
+  if (outer_ != nullptr) {
+    for (auto& p : pending_) outer_->add(std::move(p.first), std::move(p.second));
+    return;
+  }
+  for (std::size_t i = 0; i < pending_.size(); ++i) {
+    std::error_code ec;
+    fs::rename(pending_[i].first, pending_[i].second, ec);
+    if (ec) {
+      for (std::size_t j = i; j < pending_.size(); ++j) fs::remove(pending_[j].first, ec);
+      throw IoError("cannot replace the file: " + ec.message(), pending_[i].second);
+    }
   }
 }
 

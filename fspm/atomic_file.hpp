@@ -4,6 +4,8 @@
 #include <functional>
 #include <iosfwd>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace fspm {
 
@@ -13,5 +15,34 @@ namespace fspm {
 // directly. Throws IoError when the target is a directory or the directory is not writable.
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,
                            bool binary = false);
+
+// All of a command's outputs or none: while an OutputTransaction lives, write_file_atomically on
+// its thread leaves each output in its temporary file; commit() renames them all into place at
+// the end, and a transaction destroyed without commit() (an exception on the way: a full disk, a
+// later error) removes them, so a command that fails on its third file leaves neither the first
+// nor the second. Devices and pipes are still written in place. Transactions nest: the inner
+// one's files join the outer one's at its commit().
+class OutputTransaction {
+ public:
+  OutputTransaction();
+  ~OutputTransaction();
+  OutputTransaction(const OutputTransaction&) = delete;
+  OutputTransaction& operator=(const OutputTransaction&) = delete;
+
+  // Renames every temporary over its target, in the order written. Throws IoError (and removes
+  // the temporaries not renamed yet) when a rename fails.
+  void commit();
+
+  // Called by write_file_atomically: keeps `temporary` to be renamed to `target`.
+  void add(std::string temporary, std::string target);
+
+  // The thread's innermost open transaction, or nullptr.
+  static OutputTransaction* current();
+
+ private:
+  OutputTransaction* outer_;
+  std::vector<std::pair<std::string, std::string>> pending_;  // temporary, target
+  bool committed_ = false;
+};
 
 }  // namespace fspm

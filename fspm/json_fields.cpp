@@ -7,6 +7,7 @@
 
 #include "fspm/closest_name.hpp"
 #include "fspm/error.hpp"
+#include "fspm/json_duplicate_keys.hpp"
 #include "fspm/json_location.hpp"
 #include "fspm/nesting_depth.hpp"
 
@@ -17,7 +18,9 @@ using nlohmann::json;
 json parse_json_text(std::string_view text, const std::string& file_name) {
   check_json_depth(text, file_name);
   try {
-    return json::parse(text.begin(), text.end());
+    json document = json::parse(text.begin(), text.end());
+    check_json_duplicate_keys(text, file_name);
+    return document;
   } catch (const json::parse_error& e) {
     // Line and column of the byte the parser stopped at.
     int line = 1, column = 1;

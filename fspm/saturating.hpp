@@ -3,6 +3,7 @@
 // to carry out (ABOP Fig. 1.24a at n = 40 has about 10^28 modules).
 #include <cstdint>
 #include <limits>
+#include <string>
 
 namespace fspm {
 
@@ -15,6 +16,12 @@ constexpr std::uint64_t add_saturating(std::uint64_t a, std::uint64_t b) {
 constexpr std::uint64_t multiply_saturating(std::uint64_t a, std::uint64_t b) {
   if (a == 0 || b == 0) return 0;
   return a > kSaturated / b ? kSaturated : a * b;
+}
+
+// A count as people read it: its digits, or "more than 10^19" where it saturated (2^64 - 1 is
+// about 1.8 x 10^19), never the 18446744073709551615 of the saturation itself.
+inline std::string count_text(std::uint64_t n) {
+  return n == kSaturated ? "more than 10^19" : std::to_string(n);
 }
 
 }  // namespace fspm

@@ -4,20 +4,20 @@
 #include <filesystem>
 
 #include "fspm/error.hpp"
+#include "fspm/image_budget.hpp"
 #include "graphics/float_image.hpp"
 
 namespace fspm::graphics {
 
 FloatImage read_float_image(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) {
-    throw IoError("cannot read image: no such file", path);
-  }
+  check_image_file(path);
   auto in = OIIO::ImageInput::open(path);
   if (!in) throw IoError("cannot read image: " + OIIO::geterror(), path);
   const OIIO::ImageSpec& spec = in->spec();
-  if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1) {
-    throw IoError("image has no pixels", path);
-  }
+  // Channel 0 as floats, and the decoder's own buffer of every stored channel.
+  check_image_size(path, spec.width, spec.height, 1,
+                   sizeof(float) + static_cast<double>(spec.nchannels) *
+                                       static_cast<double>(spec.format.size()));
   FloatImage image;
   image.width = spec.width;
   image.height = spec.height;

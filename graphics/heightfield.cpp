@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 
 namespace fspm::graphics {
 namespace {
@@ -62,7 +63,15 @@ TriangleMesh heightfield_mesh(const Heightfield& terrain, int stride) {
   if (stride < 1) throw ValueError("the terrain stride must be at least 1");
   const std::vector<int> is = grid_lines(terrain.columns(), stride);
   const std::vector<int> js = grid_lines(terrain.rows(), stride);
+  const std::size_t vertices = is.size() * js.size();
+  const std::size_t triangles = 2 * (is.size() - 1) * (js.size() - 1);
+  check_memory(TriangleMesh::bytes_for(vertices, triangles, 0),
+               "the terrain mesh of " + std::to_string(is.size()) + " x " +
+                   std::to_string(js.size()) + " vertices (terrain.stride " +
+                   std::to_string(stride) + ")");
   TriangleMesh mesh;
+  mesh.positions.reserve(vertices);
+  mesh.triangles.reserve(triangles);
   const double s = terrain.metres_per_pixel();
   for (int j : js) {
     for (int i : is) {

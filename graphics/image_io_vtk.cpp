@@ -3,12 +3,14 @@
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <ostream>
 
 #include "fspm/atomic_file.hpp"
 #include "fspm/error.hpp"
+#include "fspm/image_budget.hpp"
 #include "graphics/image.hpp"
 
 namespace fspm::graphics {
@@ -70,9 +72,14 @@ void write_image(const Image& image, const std::string& path) {
 }
 
 Image read_image(const std::string& path) {
+  check_image_file(path);
   auto in = OIIO::ImageInput::open(path);
   if (!in) throw IoError("cannot read image: " + OIIO::geterror(), path);
   const OIIO::ImageSpec& spec = in->spec();
+  // The stored channels as bytes, the decoder's own buffer of them, and the RGBA copy.
+  check_image_size(
+      path, spec.width, spec.height, std::max(spec.nchannels, 1),
+      1.0 + static_cast<double>(spec.format.size()) + 4.0 / std::max(spec.nchannels, 1));
   Image image;
   image.width = spec.width;
   image.height = spec.height;

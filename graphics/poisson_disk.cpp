@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 
 namespace fspm::graphics {
 namespace {
@@ -16,9 +17,12 @@ class DartGrid {
       : cell_m_(o.min_distance_m / std::sqrt(2.0)), r2_(o.min_distance_m * o.min_distance_m) {
     nx_ = static_cast<long>(std::floor(o.width_m / cell_m_)) + 1;
     ny_ = static_cast<long>(std::floor(o.depth_m / cell_m_)) + 1;
-    if (static_cast<double>(nx_) * static_cast<double>(ny_) > static_cast<double>(1L << 28)) {
+    const double cells = static_cast<double>(nx_) * static_cast<double>(ny_);
+    if (cells > static_cast<double>(1L << 28)) {
       throw ValueError("the minimum distance is too small for the area (more than 2^28 cells)");
     }
+    check_memory(cells * sizeof(long), "the dart grid of " + std::to_string(nx_) + " x " +
+                                           std::to_string(ny_) + " cells");
     cells_.assign(static_cast<std::size_t>(nx_ * ny_), -1);
   }
 

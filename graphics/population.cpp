@@ -56,11 +56,22 @@ std::vector<ScenePlant> place_population(const ScenePopulation& population,
   o.depth_m = terrain.depth_m();
   o.min_distance_m = population.min_distance_m;
   o.max_count = population.count ? static_cast<std::size_t>(*population.count) : 0;
-  const std::vector<Eigen::Vector2d> sites =
-      poisson_disk_points(o, rng, [&](const Eigen::Vector2d& p) {
-        const PopulationClass* c = class_at(p);
-        return c ? c->density : 0.0;
-      });
+  std::vector<Eigen::Vector2d> sites;
+  try {
+    sites = poisson_disk_points(o, rng, [&](const Eigen::Vector2d& p) {
+      const PopulationClass* c = class_at(p);
+      return c ? c->density : 0.0;
+    });
+  } catch (const ValueError& e) {
+    // Which setting of the scene made the grid too large.
+    if (!e.file().empty()) throw;
+    throw ValueError("population.min_distance_m " + std::to_string(population.min_distance_m) +
+                     " m over a terrain of " + std::to_string(terrain.width_m()) + " x " +
+                     std::to_string(terrain.depth_m()) + " m: " + e.message());
+  } catch (const MemoryLimitError& e) {
+    throw MemoryLimitError("population.min_distance_m " +
+                           std::to_string(population.min_distance_m) + " m: " + e.message());
+  }
   std::vector<ScenePlant> plants;
   plants.reserve(sites.size());
   for (const Eigen::Vector2d& s : sites) {

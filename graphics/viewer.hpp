@@ -48,6 +48,9 @@ struct ViewerOptions {
   std::string color_by;    // per-vertex attribute; empty = bark and leaf colours
   std::string screenshot;  // non-empty: render `frames` frames hidden, write this image, return
   int frames = 1;          // frames before the screenshot
+  // Without a screenshot: the window closes after this many frames (0: when the user closes it),
+  // for scripted runs and tests of the window itself.
+  int close_after_frames = 0;
   bool shadows = true;
   // Cascaded shadow maps (shadow_cascades.hpp): this many maps (0 to 4) over slices of the view
   // up to three camera distances away, nearest first, each 1024 texels on a side, before the one

@@ -1182,7 +1182,8 @@ const GpuStep& draw_controlled_frame(GLFWwindow* window, State& state, GpuScene&
   return g;
 }
 
-// Step 6: frames until the window closes (or `frames` frames for a screenshot), timed.
+// Step 6: frames until the window closes (or `frames` frames for a screenshot, or
+// `close_after_frames` on screen), timed.
 ViewerStats run_frames(GLFWwindow* window, State& state, GpuScene& gpu, Targets& t, FrameContext& x,
                        const ViewerOptions& o) {
   const bool offscreen = !o.screenshot.empty();
@@ -1222,6 +1223,7 @@ ViewerStats run_frames(GLFWwindow* window, State& state, GpuScene& gpu, Targets&
     glfwSetWindowTitle(window, title);
     glfwSwapBuffers(window);
     glfwPollEvents();
+    if (o.close_after_frames > 0 && stats.frames >= o.close_after_frames) break;
   }
   stats.mean_frame_ms = stats.frames > 0 ? total_ms / stats.frames : 0.0;
   stats.controls = state.controls;

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 #include "fspm/saturating.hpp"
 
 namespace fspm::lsystem {
@@ -50,7 +51,8 @@ std::optional<std::string> group_obstacle(const ProductionGroup& group, const ch
 class Builder {
  public:
   Builder(const LSystem& system, const DeriveOptions& options, int variants)
-      : derivation_(system, options),
+      : file_(system.file),
+        derivation_(system, options),
         budget_(options.module_budget),
         variants_(static_cast<std::uint32_t>(std::max(variants, 0))) {}
 
@@ -100,8 +102,46 @@ class Builder {
     return static_cast<std::uint32_t>(derivation_.random()() % variants_);
   }
 
+  // Heap bytes of a string's characters, 0 while they fit in the string itself (libstdc++ keeps
+  // 15 characters inline), else its capacity and the allocator's header.
+  static double string_heap_bytes(const std::string& s) {
+    return s.capacity() > 15 ? static_cast<double>(s.capacity()) + 32.0 : 0.0;
+  }
+
+  // What the derivation holds, estimated from its containers: the graph, the memo (a hash node,
+  // a bucket and a key per entry, keys as long as the newest frame's) and the frames of the
+  // depth-first walk, one per step on the way down, each about as large as the newest (its key,
+  // parameters and successor string).
+  double held_bytes() const {
+    double key = 0.0;
+    double frame = sizeof(Frame);
+    if (depth_ > 0) {
+      const Frame& f = frames_[depth_ - 1];
+      key = string_heap_bytes(f.key);
+      frame += key + static_cast<double>(f.parameters.capacity() * sizeof(double)) +
+               static_cast<double>(f.successor.memory_bytes()) + 3 * 32.0;
+    }
+    constexpr double kMemoEntry = sizeof(std::pair<const std::string, std::uint32_t>) + 40.0;
+    return static_cast<double>(graph_.memory_bytes()) +
+           static_cast<double>(memo_.size()) * (kMemoEntry + key) +
+           static_cast<double>(frames_.size()) * frame +
+           static_cast<double>(pending_.capacity() * sizeof(std::uint32_t));
+  }
+
+  // Every kCheckEvery new substructures or frames, the memory held against the limit, so that a
+  // derivation a billion steps deep stops with a clean error long before it takes the machine.
+  void check_growth() {
+    constexpr std::size_t kCheckEvery = 1024;
+    if (++growth_ % kCheckEvery != 0) return;
+    check_memory(held_bytes(),
+                 "the substructure derivation (" + std::to_string(graph_.nodes.size()) +
+                     " substructures, " + std::to_string(depth_) + " steps deep)",
+                 file_);
+  }
+
   std::uint32_t add_node(SymbolId symbol, std::span<const double> parameters, int remaining,
                          std::span<const std::uint32_t> children) {
+    check_growth();
     if (graph_.nodes.size() >= budget_) {
       throw ValueError("the substructure graph grows past the budget of " +
                        std::to_string(budget_) +
@@ -165,7 +205,10 @@ class Builder {
   }
 
   Frame& push_frame() {
-    if (frames_.size() <= depth_) frames_.emplace_back();
+    if (frames_.size() <= depth_) {
+      check_growth();
+      frames_.emplace_back();
+    }
     return frames_[depth_++];
   }
 
@@ -194,6 +237,7 @@ class Builder {
     }
   }
 
+  std::string file_;  // the grammar's, for messages
   Derivation derivation_;
   std::size_t budget_;
   std::uint32_t variants_;  // 0: deterministic
@@ -204,6 +248,7 @@ class Builder {
   std::deque<Frame> frames_;
   std::size_t depth_ = 0;
   std::vector<std::uint32_t> pending_;  // children resolved so far, of every live frame
+  std::size_t growth_ = 0;              // substructures and frames added, for check_growth
 };
 
 }  // namespace

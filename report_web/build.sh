@@ -17,7 +17,7 @@ node_modules/.bin/esbuild src/three_entry.js --bundle --minify --format=iife \
 cp node_modules/plotly.js-cartesian-dist-min/plotly-cartesian.min.js "$out/plotly.min.js"
 node_modules/.bin/esbuild node_modules/marked/lib/marked.umd.js --minify --legal-comments=none \
   --log-level=warning --outfile="$out/marked.min.js"
-cp src/report.js src/report.css "$out/"
+cp src/safe_markdown.js src/report.js src/report.css "$out/"
 # The licences of what the report carries.
 {
   for p in three plotly.js-cartesian-dist-min marked; do

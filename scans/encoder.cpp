@@ -1,6 +1,7 @@
 #include "scans/encoder.hpp"
 
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 #include "scans/allometry.hpp"
 #include "scans/cluster_split.hpp"
 #include "scans/ground_filter.hpp"
@@ -75,6 +76,12 @@ ThinnedPoints without_ground(ThinnedPoints thin, std::size_t& removed) {
 EncodeResult encode_point_set(const PointSet& absolute, const EncodeOptions& o) {
   check_options(o);
   if (absolute.points.empty()) throw ValueError("the point set is empty");
+  // The recentred copy and the voxel thinning (a point and a count per occupied voxel, a hash
+  // entry while counting) hold up to three times the points at once.
+  const auto n = static_cast<double>(absolute.points.size());
+  check_memory(n * (3.0 * sizeof(Eigen::Vector3d) + 48.0),
+               "encoding " + std::to_string(absolute.points.size()) +
+                   " points (recentred copy and voxel thinning)");
   // Projected coordinates (x ~ 5e5 m, y ~ 6e6 m) are recentred: the results move back at the end.
   const Eigen::Vector3d origin = point_set_origin(absolute);
   const PointSet input = relative_to(absolute, origin);
@@ -82,6 +89,13 @@ EncodeResult encode_point_set(const PointSet& absolute, const EncodeOptions& o) 
   const ThinnedPoints thin =
       o.keep_ground ? thinned(input, o.voxel_m) : without_ground(thinned(input, o.voxel_m), ground);
   const PointSet& ps = thin.points;
+  // The neighbour graph (k edges of an index and a weight per point, both ways), its k-d tree,
+  // and the shortest-path tree and skeleton bins (a few numbers per point).
+  const auto m = static_cast<double>(ps.points.size());
+  check_memory(n * sizeof(Eigen::Vector3d) +
+                   m * (2.0 * o.neighbours * (sizeof(std::uint32_t) + sizeof(double)) + 96.0),
+               "the neighbour graph of " + std::to_string(ps.points.size()) + " points (" +
+                   std::to_string(o.neighbours) + " neighbours each)");
   const std::uint32_t root = trunk_base_point(ps);
   const NeighbourGraph graph = build_neighbour_graph(ps, o.neighbours, o.species.beta, root);
   const ShortestPathTree paths = shortest_path_tree(ps, graph, root);

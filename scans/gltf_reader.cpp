@@ -4,6 +4,11 @@
 #include <assimp/scene.h>
 
 #include <assimp/Importer.hpp>
+#include <cctype>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <regex>
 
 #include "fspm/error.hpp"
@@ -55,10 +60,51 @@ void append_subtree(const aiScene& scene, const aiNode& node, const aiMatrix4x4&
   }
 }
 
+// The 12-byte header of a binary glTF (glTF 2.0 spec, "GLB File Format Specification"): magic
+// "glTF", version 2, and the total length, which must be the file's size (a lying length would
+// have the decoder read past the data or ignore part of it).
+void check_glb_header(const std::string& path, std::uint64_t file_bytes) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char h[12] = {};
+  if (!in.read(reinterpret_cast<char*>(h), sizeof h)) {
+    throw ParseError(
+        "a GLB file of " + std::to_string(file_bytes) + " bytes, shorter than its 12-byte header",
+        path);
+  }
+  const auto u32 = [&](int at) {
+    return std::uint32_t{h[at]} | std::uint32_t{h[at + 1]} << 8 | std::uint32_t{h[at + 2]} << 16 |
+           std::uint32_t{h[at + 3]} << 24;
+  };
+  if (std::memcmp(h, "glTF", 4) != 0) {
+    throw ParseError("not a GLB file (it does not start with 'glTF')", path);
+  }
+  if (u32(8) != file_bytes) {
+    throw ParseError("the GLB header gives a length of " + std::to_string(u32(8)) +
+                         " bytes, the file has " + std::to_string(file_bytes),
+                     path);
+  }
+}
+
 }  // namespace
 
+// glTF is read from disk by its decoder, which opens the file again (and a .gltf its buffers
+// beside it): a pipe would be consumed by the first open and block the second forever. Checked
+// before anything opens it: opening a pipe blocks until a writer comes.
+void check_gltf_input(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (!ec && fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status)) {
+    throw IoError("not a regular file (a pipe or device), expected a glTF file on disk", path);
+  }
+  open_input_file(path).reset();  // IoError for a missing, unreadable or implausibly large file
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".glb") check_glb_header(path, std::filesystem::file_size(path));
+}
+
 GroupedMesh read_gltf_mesh(const std::string& path) {
-  open_input_file(path);  // IoError for a missing, unreadable or implausibly large file
+  check_gltf_input(path);
   Assimp::Importer importer;
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                               aiPrimitiveType_POINT | aiPrimitiveType_LINE);

@@ -16,4 +16,10 @@ namespace fspm::scans {
 // valid glTF or holds no triangle.
 GroupedMesh read_gltf_mesh(const std::string& path);
 
+// The checks read_gltf_mesh makes before its decoder opens the file, for other readers of glTF:
+// IoError "not a regular file" for a pipe or device (the decoder reopens the file, which would
+// block on a pipe), IoError for a missing or unreadable file, ParseError when a .glb's header
+// does not give the file's length.
+void check_gltf_input(const std::string& path);
+
 }  // namespace fspm::scans

@@ -30,13 +30,27 @@ bool is_grouped_mesh_file(std::string_view path) {
   return ext == ".obj" || ext == ".gltf" || ext == ".glb";
 }
 
-GroupedMesh read_mesh_file(const std::string& path, std::string_view format) {
-  const std::string ext = format.empty() ? lower_extension(path) : "." + std::string(format);
+namespace {
+
+GroupedMesh read_any_mesh(const std::string& path, const std::string& ext) {
   if (ext == ".obj") return read_obj_mesh(path);
   if (ext == ".ply") return read_ply_mesh(path);
   if (ext == ".gltf" || ext == ".glb") return read_gltf_mesh(path);
   throw ValueError("unknown mesh extension '" + ext + "', expected .obj, .ply, .gltf or .glb",
                    path);
+}
+
+}  // namespace
+
+GroupedMesh read_mesh_file(const std::string& path, std::string_view format) {
+  const std::string ext = format.empty() ? lower_extension(path) : "." + std::string(format);
+  GroupedMesh m = read_any_mesh(path, ext);
+  if (m.faces.empty()) {
+    throw ParseError(
+        "no triangle in the mesh (" + std::to_string(m.vertices.size()) + " vertices, no face)",
+        path);
+  }
+  return m;
 }
 
 }  // namespace fspm::scans

@@ -225,17 +225,55 @@ void read_element(const PlyElement& e, BinaryCursor& cur, const std::string& pat
   }
 }
 
+// "200000 vertex and 0 face": what the header declares, for messages about its counts.
+std::string declared_counts(const PlyHeader& h) {
+  std::string out;
+  for (const PlyElement& e : h.elements) {
+    out += (out.empty() ? "" : " and ") + std::to_string(e.count) + " " + e.name;
+  }
+  return out;
+}
+
+// The data of a header whose elements have fixed-size records only must be exactly as long as
+// the counts say: stray bytes shift every value after them, a short file lacks some.
+void check_fixed_binary_size(const PlyHeader& h, std::string_view data, const std::string& path) {
+  double expected = 0.0;
+  for (const PlyElement& e : h.elements) {
+    std::size_t stride = 0;
+    for (const PlyProperty& p : e.properties) {
+      if (p.is_list) return;  // the size is known only once read
+      stride += ply_type_size(p.type);
+    }
+    expected += static_cast<double>(e.count) * static_cast<double>(stride);
+  }
+  const std::size_t held = data.size() - std::min(h.data_offset, data.size());
+  if (expected == static_cast<double>(held)) return;
+  throw ParseError("the header declares " + declared_counts(h) + " (" +
+                       std::to_string(static_cast<std::uint64_t>(expected)) +
+                       " bytes of data), the file holds " + std::to_string(held) +
+                       " bytes after its header (to byte " + std::to_string(data.size()) +
+                       "): a header count that does not match the data",
+                   path);
+}
+
 // Faces of the "face" element, kept only when `faces` is given.
 void read_binary(const PlyHeader& h, std::string_view data, const std::string& path, PointSet& out,
                  std::vector<std::vector<std::uint32_t>>* faces) {
   const bool native =
       (h.format == PlyFormat::kBinaryBigEndian) == (std::endian::native == std::endian::big);
+  check_fixed_binary_size(h, data, path);
   std::size_t pos = h.data_offset;
   for (const PlyElement& e : h.elements) {
     if (native && read_bulk(e, data, pos, path, out, faces)) continue;
     BinaryCursor cur(data, pos, h.format == PlyFormat::kBinaryBigEndian, path);
     read_element(e, cur, path, out, faces);
     pos = cur.offset();
+  }
+  if (pos < data.size()) {
+    throw ParseError("the header declares " + declared_counts(h) + ", which end at byte " +
+                         std::to_string(pos) + " of " + std::to_string(data.size()) +
+                         ": a header count that does not match the data",
+                     path);
   }
 }
 
@@ -289,6 +327,14 @@ void read_ascii(const PlyHeader& h, std::string_view data, const std::string& pa
         xyz[c] = parse_coordinate(f[static_cast<std::size_t>(col[c])], path, line_no);
       }
       out.points.emplace_back(xyz[0], xyz[1], xyz[2]);
+    }
+  }
+  while (lines.next(line)) {
+    ++line_no;
+    if (!split_fields(line).empty()) {
+      throw ParseError("more lines than the header declares (" + declared_counts(h) +
+                           "): a header count that does not match the data",
+                       path, line_no);
     }
   }
 }

@@ -5,26 +5,43 @@
 #include <filesystem>
 
 #include "fspm/error.hpp"
+#include "scans/gltf_reader.hpp"
 #include "scans/las_reader.hpp"
 #include "scans/mesh_file.hpp"
+#include "scans/obj_reader.hpp"
 #include "scans/pcd_reader.hpp"
 #include "scans/ply_reader.hpp"
 #include "scans/xyz_reader.hpp"
 
 namespace fspm::scans {
 
-PointSet read_point_set(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+namespace {
+
+PointSet read_any_point_set(const std::string& path, const std::string& ext) {
   if (ext == ".ply") return read_ply_points(path);
   if (ext == ".xyz" || ext == ".txt" || ext == ".csv") return read_xyz_points(path);
   if (ext == ".pcd") return read_pcd_points(path);
   if (ext == ".las" || ext == ".laz") return read_las_points(path);
-  if (is_grouped_mesh_file(path)) return PointSet{read_mesh_file(path).vertices};
+  // The vertices of a mesh, faces or not.
+  if (ext == ".obj") return PointSet{read_obj_mesh(path).vertices};
+  if (ext == ".gltf" || ext == ".glb") return PointSet{read_gltf_mesh(path).vertices};
   throw ValueError("unknown point-set extension '" + ext +
                        "', expected .ply, .xyz, .txt, .csv, .pcd, .las, .obj, .gltf or .glb",
                    path);
+}
+
+}  // namespace
+
+PointSet read_point_set(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  PointSet points = read_any_point_set(path, ext);
+  if (points.points.empty()) {
+    throw ParseError("no point in the file (empty, a header only, or no line read as a point)",
+                     path);
+  }
+  return points;
 }
 
 }  // namespace fspm::scans

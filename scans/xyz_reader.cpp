@@ -41,10 +41,32 @@ std::array<std::size_t, 3> header_columns(const std::vector<std::string_view>& f
   return col;
 }
 
+// A header names columns: every field starts with a letter, '_' or a quote. A first line that
+// does not (a point whose separators a reader cannot see, such as Latin-1's no-break space) is
+// read as data, so a bad separator is an error naming the line rather than a lost first point.
+bool is_header(const std::vector<std::string_view>& fields) {
+  if (fields.empty() || parse_number(fields[0])) return false;
+  return std::all_of(fields.begin(), fields.end(), [](std::string_view f) {
+    const auto c = static_cast<unsigned char>(f[0]);
+    return std::isalpha(c) || c == '_' || c == '"' || c == '\'';
+  });
+}
+
+// The text without a UTF-8 byte-order mark (which spreadsheet programs write); UTF-16 text,
+// whose every other byte is NUL, is refused as such.
+std::string_view without_byte_order_mark(std::string_view text, const std::string& path) {
+  if (text.starts_with("\xEF\xBB\xBF")) return text.substr(3);
+  if (text.starts_with("\xFF\xFE") || text.starts_with("\xFE\xFF")) {
+    throw ParseError("UTF-16 text (a byte-order mark FF FE or FE FF), expected ASCII or UTF-8",
+                     path, 1);
+  }
+  return text;
+}
+
 }  // namespace
 
 PointSet parse_xyz_points(std::string_view text, const std::string& path) {
-  TextLines lines(text);
+  TextLines lines(without_byte_order_mark(text, path));
   std::string_view line;
   std::array<std::size_t, 3> col{0, 1, 2};
   bool first = true;
@@ -52,7 +74,7 @@ PointSet parse_xyz_points(std::string_view text, const std::string& path) {
   while (lines.next(line)) {
     if (is_comment(line)) continue;
     const std::vector<std::string_view> f = split_fields(line);
-    if (first && !f.empty() && !parse_number(f[0])) {
+    if (first && is_header(f)) {
       col = header_columns(f);
       first = false;
       continue;

@@ -46,18 +46,9 @@
   }
 
   // ---------- the Markdown report ----------
-  // Raw HTML in the Markdown is shown as text, except the placeholders fspm writes for the
-  // interactive parts.
+  // Rendered by safe_markdown.js: no raw HTML, no script, links and images limited to safe URLs.
   function renderMarkdown(target) {
-    marked.use({
-      renderer: {
-        html(token) {
-          const t = token.text || token.raw || '';
-          return /^<div class="fspm-[a-z]+"><\/div>\s*$/.test(t) ? t : escapeHtml(t);
-        },
-      },
-    });
-    target.innerHTML = marked.parse(D.markdown);
+    target.replaceChildren(window.fspmSafeMarkdown(D.markdown));
   }
 
   // The number a table cell starts with ("12.3 ± 1.2" -> 12.3), NaN for text.

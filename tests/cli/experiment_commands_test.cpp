@@ -189,6 +189,64 @@ TEST(ExperimentCommands, KillNineAndResumeGiveEveryRunOnce) {
   EXPECT_EQ(*runs.rbegin(), 299);
 }
 
+// SIGTERM and SIGINT stop a sweep cleanly with the shell's code of the signal: 128 + its number.
+TEST(ExperimentCommands, InterruptExitCodeNamesTheSignal) {
+  const fs::path dir = scratch_dir("exp_signal");
+  const std::string exp =
+      write_file(dir / "e.toml",
+                 "[experiment]\nname = \"k\"\n[model]\nkind = \"synthetic\"\n"
+                 "[parameters]\nsleep_ms = 20\n[sweep]\nnodes = { range = [1, 2001] }\n");
+  for (const auto& [signal, code] : {std::pair{SIGTERM, 143}, std::pair{SIGINT, 130}}) {
+    const std::string out = (dir / ("out" + std::to_string(signal))).string();
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      const int devnull = ::open("/dev/null", O_WRONLY);
+      ::dup2(devnull, 1);
+      ::dup2(devnull, 2);
+      ::execl(FSPM_EXE, FSPM_EXE, "run", exp.c_str(), "--jobs", "2", "--out", out.c_str(),
+              static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    // The handler is in place once the database exists (the sweep then needs 20 s).
+    const auto t0 = std::chrono::steady_clock::now();
+    while (!fs::exists(fs::path(out) / "results.sqlite") &&
+           std::chrono::steady_clock::now() - t0 < std::chrono::seconds(60)) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    ::kill(child, signal);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status)) << "signal " << signal << " killed fspm run";
+    EXPECT_EQ(WEXITSTATUS(status), code) << "signal " << signal;
+  }
+}
+
+// An experiment's name becomes file names in the current folder only, and the printed command
+// is quoted for the shell.
+TEST(ExperimentCommands, SlurmFilesNamedAfterTheExperimentStayInTheFolder) {
+  const fs::path dir = scratch_dir("exp_slurm_name");
+  fs::create_directories(dir / "work");
+  write_file(dir / "work" / "e.toml",
+             "[experiment]\nname = \"../escaped $(touch pwned)\"\n[model]\nkind = "
+             "\"synthetic\"\n");
+  const CommandResult r =
+      run_fspm("run e.toml --emit-slurm", "cd " + (dir / "work").string() + " && ");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "work" / "_._escaped___touch_pwned_.slurm")) << r.out;
+  std::size_t outside = 0;
+  for (const auto& e : fs::directory_iterator(dir)) outside += e.path().filename() != "work";
+  EXPECT_EQ(outside, 0u) << "a file was written outside the current folder";
+  EXPECT_NE(r.out.find("submit it with: sbatch '_._escaped___touch_pwned_.slurm'"),
+            std::string::npos)
+      << r.out;
+  std::ifstream in(dir / "work" / "_._escaped___touch_pwned_.slurm");
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(text.find("#SBATCH --job-name=_._escaped___touch_pwned_\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("/_._escaped___touch_pwned_-results'/shard-"), std::string::npos) << text;
+}
+
 TEST(ExperimentCommands, SlurmScriptRunsShardsThatMerge) {
   const fs::path dir = scratch_dir("exp_slurm");
   const std::string exp = write_file(

@@ -174,6 +174,18 @@ TEST(GraphicsCli, ViewerScreenshot) {
   EXPECT_FALSE(std::filesystem::exists(dir / "w.png"));
 }
 
+// --frames without --screenshot: the window opens (on a virtual X server here), draws that many
+// frames and closes by itself; a timeout stops a viewer that would wait for the user.
+TEST(GraphicsCli, ViewerClosesAfterItsFrames) {
+  const auto dir = scratch_dir("view_frames");
+  const std::string tree = write_small_tree(dir);
+  const auto r = run_fspm("view " + tree + " --frames 3 --size 160x120 --no-panel --json",
+                          "timeout 300 xvfb-run -a ");
+  if (r.err.find("without the viewer") != std::string::npos) GTEST_SKIP() << r.err;
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["frames"], 3);
+}
+
 // The viewer's level-of-detail and tessellation options: what they report, and the combinations
 // that mean nothing refused with exit 1 before any window opens.
 TEST(GraphicsCli, ViewerImpostorsAndTessellation) {

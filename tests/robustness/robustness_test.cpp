@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "tests/cli/run_command.hpp"
+#include "tests/robustness/measured_run.hpp"
 
 namespace fspm::testing {
 namespace {
@@ -19,7 +20,8 @@ namespace fs = std::filesystem;
 
 struct Case {
   std::string name;
-  // Written into the case's scratch directory; "@PATH" copies the file PATH.
+  // Written into the case's scratch directory ({dir} and {src} expanded); "@PATH" copies the
+  // file PATH.
   std::map<std::string, std::string> files;
   std::vector<std::string> setup;  // fspm commands that must succeed first
   std::string args;                // {dir}: scratch directory, {src}: source tree
@@ -27,10 +29,14 @@ struct Case {
   std::string message;                 // regex searched in stderr
   std::vector<std::string> untouched;  // files of {dir} that must not appear or change
   std::string shell_prefix;            // e.g. a lower file size limit; runs after the setup
+  // When not 0, the command's peak resident memory (getrusage) must stay below this many MiB:
+  // the request was refused before its memory was taken.
+  std::uint64_t max_rss_mib = 0;
 
   Case(std::string name_, std::map<std::string, std::string> files_,
        std::vector<std::string> setup_, std::string args_, int exit_code_, std::string message_,
-       std::vector<std::string> untouched_ = {}, std::string shell_prefix_ = {})
+       std::vector<std::string> untouched_ = {}, std::string shell_prefix_ = {},
+       std::uint64_t max_rss_mib_ = 0)
       : name(std::move(name_)),
         files(std::move(files_)),
         setup(std::move(setup_)),
@@ -38,7 +44,8 @@ struct Case {
         exit_code(exit_code_),
         message(std::move(message_)),
         untouched(std::move(untouched_)),
-        shell_prefix(std::move(shell_prefix_)) {}
+        shell_prefix(std::move(shell_prefix_)),
+        max_rss_mib(max_rss_mib_) {}
 };
 
 std::string repeat(const std::string& s, int n) {
@@ -158,6 +165,34 @@ std::vector<Case> output_cases() {
        1,
        "taken: cannot create the output directory",
        {"taken"}},
+      // Several outputs: all or none. The last one written goes to a full device; the others,
+      // already written to their temporaries, must not appear.
+      {"MeshAndItsMtlOnAFullDisk",
+       {},
+       {},
+       "mesh " + kExamples + "/trees/open_a12.treeb -o {dir}/m.obj",
+       1,
+       "m.obj: cannot write: " + kFull,
+       {"m.mtl"},
+       "ln -s /dev/full {dir}/m.obj; "},
+      {"CrownWithPreviewOnAFullDisk",
+       {},
+       {},
+       "crown " + kExamples + "/crown/tree_front.png -o {dir}/out --preview {dir}/p.png",
+       1,
+       "p.png: cannot write: " + kFull,
+       {"out", "out/crown.glb", "out/crown_color_cubemap.png", "out/crown_radius_cubemap.exr",
+        "out/crown_cubemaps.json", "out/crown_relief.png", "out/crown_mask.png"},
+       "ln -s /dev/full {dir}/p.png; "},
+      {"CrownMeshFileOnAFullDisk",
+       {},
+       {},
+       "crown " + kExamples + "/crown/tree_front.png -o {dir}/c.obj --side-mask {dir}/s.png",
+       1,
+       "s.png: cannot write: " + kFull,
+       {"c.obj", "c.mtl", "c_color_cubemap.png", "c_radius_cubemap.exr", "c_relief.png",
+        "c_mask.png"},
+       "ln -s /dev/full {dir}/s.png; "},
       {"TreeFileOverTheSizeLimit",
        {},
        {},
@@ -738,6 +773,338 @@ std::vector<Case> option_cases() {
   };
 }
 
+// CRC-32 of PNG chunks (ISO 3309, as in the PNG specification's annex D), bit by bit.
+std::uint32_t png_crc(const std::string& bytes) {
+  std::uint32_t crc = 0xffffffffu;
+  for (const char ch : bytes) {
+    crc ^= static_cast<unsigned char>(ch);
+    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+  }
+  return crc ^ 0xffffffffu;
+}
+
+std::string big_endian(std::uint32_t v) {
+  return {static_cast<char>(v >> 24), static_cast<char>(v >> 16), static_cast<char>(v >> 8),
+          static_cast<char>(v)};
+}
+
+std::string png_chunk(const std::string& type, const std::string& data) {
+  return big_endian(static_cast<std::uint32_t>(data.size())) + type + data +
+         big_endian(png_crc(type + data));
+}
+
+// A valid PNG of one RGB pixel whose header declares `width` x `height`: a few dozen bytes that
+// promise gigabytes.
+std::string lying_png(std::uint32_t width, std::uint32_t height) {
+  const std::string ihdr =
+      big_endian(width) + big_endian(height) + std::string("\x08\x02\0\0\0", 5);
+  // zlib: one stored block of the row's filter byte and three samples, then its Adler-32.
+  const std::string idat("\x78\x01\x01\x04\x00\xfb\xff\0\0\0\0\x00\x04\x00\x01", 15);
+  return std::string("\x89PNG\r\n\x1a\n", 8) + png_chunk("IHDR", ihdr) + png_chunk("IDAT", idat) +
+         png_chunk("IEND", "");
+}
+
+const std::string kPlyHeader =
+    "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty float x\n"
+    "property float y\nproperty float z\nend_header\n";
+
+// Input that is wrong in a way a reader could miss: refused, with the file (and line, key) named.
+std::vector<Case> named_input_cases() {
+  return {
+      {"LightWithZeroDirections",
+       {},
+       {},
+       "light --scene " + kScene + " --points " + kPoints + " --directions 0",
+       1,
+       "--directions: expected a number in \\[1, 1048576\\], got '0'"},
+      {"StagesSkeletonOverItsOutput",
+       {},
+       {},
+       "stages " + kExamples +
+           "/trees/open_a12.treeb --at 0.5 --skeleton {dir}/o.tree -o "
+           "{dir}/./o.tree",
+       1,
+       "o.tree: --skeleton '.*o.tree' and -o name the same file",
+       {"o.tree"}},
+      {"JsonSceneWithAKeyTwice",
+       {{"dup.json",
+         "{\n  \"sky\": { \"directions\": 64 },\n  \"sky\": { \"directions\": 8 }\n}\n"}},
+       {},
+       "light --scene {dir}/dup.json --points " + kPoints,
+       1,
+       "dup.json:3:3: duplicate key 'sky' \\(first given on line 2\\)"},
+      {"JsonKeyTwiceThroughAnEscape",
+       {{"dup.json", "{\"sky\": {\"directions\": 64, \"direction\\u0073\": 8}}"}},
+       {},
+       "light --scene {dir}/dup.json --points " + kPoints,
+       1,
+       "dup.json:1:28: duplicate key 'directions'"},
+      {"TomlWithAKeyTwice",
+       {{"dup.toml", "years = 3\nyears = 4\n"}},
+       {},
+       "grow {dir}/dup.toml -o {dir}/t.tree",
+       1,
+       "dup.toml:2:[0-9]+: .*cannot redefine existing .*'years'",
+       {"t.tree"}},
+      {"StrayBytesInABinaryPly",
+       {{"s.ply", kPlyHeader + std::string(24, '\0') + "junk"}},
+       {},
+       "encode {dir}/s.ply -o {dir}/c.clusters",
+       1,
+       "s.ply: the header declares 2 vertex \\(24 bytes of data\\), the file holds 28 bytes after "
+       "its header \\(to byte [0-9]+\\): a header count that does not match the data",
+       {"c.clusters"}},
+      {"BinaryPlyShorterThanItsHeader",
+       {{"s.ply", kPlyHeader + std::string(20, '\0')}},
+       {},
+       "encode {dir}/s.ply -o {dir}/c.clusters",
+       1,
+       "s.ply: the header declares 2 vertex \\(24 bytes of data\\), the file holds 20 bytes",
+       {"c.clusters"}},
+      {"AsciiPlyLongerThanItsHeader",
+       {{"a.ply",
+         "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+         "property float z\nend_header\n0 0 0\n1 1 1\n2 2 2\n"}},
+       {},
+       "encode {dir}/a.ply -o {dir}/c.clusters",
+       1,
+       "a.ply:9: more lines than the header declares \\(1 vertex\\)",
+       {"c.clusters"}},
+      // Bytes 8-11 of a GLB hold its total length, here 16 bytes short of the file's.
+      {"GlbWhoseHeaderLengthLies",
+       {},
+       {"mesh " + kTree + " -o {dir}/t.glb"},
+       "encode {dir}/t.glb -o {dir}/c.clusters",
+       1,
+       "t.glb: the GLB header gives a length of [0-9]+ bytes, the file has [0-9]+",
+       {"c.clusters"},
+       "printf 0123456789abcdef >> {dir}/t.glb; "},
+      {"EncodeToATextExtension",
+       {},
+       {},
+       "encode " + kExamples + "/trees/open_a12.treeb -o {dir}/o.txt",
+       1,
+       "o.txt: -o: encode writes the cluster format, expected a .clusters file",
+       {"o.txt"}},
+      {"CrownObjLinkedToAText",
+       {{"notes.txt", "just some notes\n"}},
+       {},
+       "mesh {dir}/c.obj -o {dir}/o.obj",
+       1,
+       "c.obj: no triangle in the OBJ file \\(0 vertices, no face of 3 or more\\)",
+       {"o.obj"},
+       "ln -s {dir}/notes.txt {dir}/c.obj; "},
+      {"HeaderOnlyPointFile",
+       {{"e.xyz", "x y z\n"}},
+       {},
+       "encode {dir}/e.xyz -o {dir}/c.clusters",
+       1,
+       "e.xyz: no point in the file",
+       {"c.clusters"}},
+      {"EmptyPlyPointFile",
+       {{"e.ply",
+         "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
+         "property float z\nend_header\n"}},
+       {},
+       "encode {dir}/e.ply -o {dir}/c.clusters",
+       1,
+       "e.ply: no point in the file",
+       {"c.clusters"}},
+      {"MeshWithoutFaceForStages",
+       {{"v.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"}},
+       {},
+       "stages {dir}/v.obj --at 0.5 -o {dir}/t.tree",
+       1,
+       "v.obj: no triangle in the mesh \\(3 vertices, no face\\)",
+       {"t.tree"}},
+      {"LatinOneSeparatorKeepsItsFirstPoint",
+       {{"l.xyz",
+         "1.0\xa0"
+         "2.0\xa0"
+         "3.0\n4 5 6\n"}},
+       {},
+       "encode {dir}/l.xyz -o {dir}/c.clusters",
+       1,
+       "l.xyz:1: expected at least 3 values \\(x y z\\), got 1",
+       {"c.clusters"}},
+  };
+}
+
+// Images are checked against a maximum size and the memory limit from their header, before a
+// byte of pixels is allocated: a 1 x 1 PNG declaring 20 000 x 20 000 costs nothing.
+std::vector<Case> image_cases() {
+  const std::string limit = "above the memory limit of 1 GiB \\(--memory-limit\\)";
+  return {
+      {"CrownPhotoDeclaringTwentyThousandSquared",
+       {{"big.png", lying_png(20000, 20000)}},
+       {},
+       "--memory-limit 1G crown {dir}/big.png -o {dir}/out",
+       1,
+       "big.png: the image header declares 20000 x 20000 pixels, more than the largest image "
+       "read \\(268435456 pixels, 16384 x 16384\\)",
+       {"out"},
+       {},
+       300},
+      {"CrownPhotoDeclaringTenThousandSquared",
+       {{"big.png", lying_png(10000, 10000)}},
+       {},
+       "--memory-limit 1G crown {dir}/big.png -o {dir}/out",
+       1,
+       "big.png: an image of 10000 x 10000 pixels and 3 channels needs about 1.4 GiB, " + limit,
+       {"out"},
+       {},
+       300},
+      {"CrownMaskDeclaringTenThousandSquared",
+       {{"big.png", lying_png(10000, 10000)}},
+       {},
+       "--memory-limit 1G crown " + kExamples +
+           "/crown/tree_front.png --mask {dir}/big.png -o "
+           "{dir}/out",
+       1,
+       "big.png: an image of 10000 x 10000 pixels and 3 channels needs about 1.4 GiB, " + limit,
+       {"out"},
+       {},
+       300},
+      {"HeightfieldDeclaringTwelveThousandSquared",
+       {{"h.png", lying_png(12000, 12000)},
+        {"t.json",
+         "{\"fspm_scene\": 2, \"terrain\": {\"heightfield\": \"{dir}/h.png\", "
+         "\"metres_per_pixel\": 1}}"}},
+       {},
+       "--memory-limit 256M mesh {dir}/t.json -o {dir}/t.glb",
+       1,
+       "h.png: an image of 12000 x 12000 pixels and 1 channel needs about [0-9.]+ MiB, above the "
+       "memory limit of 256 MiB \\(--memory-limit\\)",
+       {"t.glb"},
+       {},
+       300},
+      {"ImageBeyondTheLargestSize",
+       {{"wide.png", lying_png(1000000, 1000)}},
+       {},
+       "crown {dir}/wide.png -o {dir}/out",
+       1,
+       "wide.png: the image header declares 1000000 x 1000 pixels, more than the largest image "
+       "read \\(268435456 pixels, 16384 x 16384\\)",
+       {"out"},
+       {},
+       300},
+      {"CrownPhotoFromAFifo",
+       {},
+       {},
+       "crown {dir}/photo.png -o {dir}/out",
+       1,
+       "photo.png: not a regular file \\(a pipe, device or folder\\), expected an image file",
+       {"out"},
+       "mkfifo {dir}/photo.png; timeout 60 "},
+      // Nothing writes to the pipes: a reader that opened one would wait (here 60 s) for a writer.
+      {"GlbFromAFifo",
+       {},
+       {},
+       "encode {dir}/f.glb -o {dir}/c.clusters",
+       1,
+       "f.glb: not a regular file \\(a pipe or device\\), expected a glTF file on disk",
+       {"c.clusters"},
+       "mkfifo {dir}/f.glb; timeout 60 "},
+      {"GltfFromAFifoForTreeConvert",
+       {},
+       {},
+       "tree convert {dir}/f.gltf {dir}/t.tree",
+       1,
+       "f.gltf: not a regular file \\(a pipe or device\\), expected a glTF file on disk",
+       {"t.tree"},
+       "mkfifo {dir}/f.gltf; timeout 60 "},
+  };
+}
+
+// The one memory budget on the paths that grow with their input, each under a small limit with
+// the peak resident memory checked: the request is refused before its memory is taken.
+std::vector<Case> budget_cases() {
+  std::string cloud;
+  for (int i = 0; i < 100000; ++i) {
+    cloud += std::to_string(i % 317) + " " + std::to_string(i % 101) + " " +
+             std::to_string(i % 53) + "\n";
+  }
+  const std::string landscape = kExamples + "/landscape";
+  const std::string terrain = "{\"fspm_scene\": 2, \"terrain\": {\"heightfield\": \"" + landscape +
+                              "/hills.png\", \"metres_per_pixel\": 6, \"height_scale_m\": 150}";
+  return {
+      // ABOP Fig. 1.24a derived a billion steps deep: the walk down takes a frame per step.
+      {"CompressedDerivationBillionSteps",
+       {},
+       {},
+       "--memory-limit 64M lsystem derive " + kExamples +
+           "/lsystems/abop_1_24a.l --compressed --steps 1000000000",
+       1,
+       "abop_1_24a.l: the substructure derivation \\([0-9]+ substructures, [0-9]+ steps deep\\) "
+       "needs about [0-9.]+ MiB, above the memory limit of 64 MiB \\(--memory-limit\\)",
+       {},
+       {},
+       400},
+      // Branching at every step, and parameters that never repeat, so no substructure is shared.
+      {"DeepBranchingOverTheMemoryLimit",
+       {{"b.l", "derivation length: 40\nAxiom: A\nA --> F[+A][-A]\n"}},
+       {},
+       "--memory-limit 16M lsystem interpret {dir}/b.l -o {dir}/t.tree",
+       1,
+       "b.l: the L-system string at derivation step [0-9]+ needs about [0-9.]+ MiB, above the "
+       "memory limit of 16 MiB \\(--memory-limit\\)",
+       {"t.tree"},
+       {},
+       300},
+      {"UnsharedSubstructuresOverTheMemoryLimit",
+       {{"p.l", "derivation length: 60\nAxiom: A(1)\nA(x) --> F(x)[+A(x+1)][-A(x*2)]\n"}},
+       {},
+       "--memory-limit 16M lsystem derive {dir}/p.l --compressed",
+       1,
+       "p.l: the substructure derivation \\([0-9]+ substructures, [0-9]+ steps deep\\) needs "
+       "about [0-9.]+ MiB, above the memory limit of 16 MiB \\(--memory-limit\\)",
+       {},
+       {},
+       300},
+      {"PointCloudRenderOverTheMemoryLimit",
+       {{"cloud.xyz", cloud}},
+       {},
+       "--memory-limit 64M render {dir}/cloud.xyz -o {dir}/cloud.png",
+       1,
+       "drawing 100000 points as spheres \\(the mesh and the renderer's copy\\) needs about "
+       "[0-9.]+ MiB, above the memory limit of 64 MiB \\(--memory-limit\\)",
+       {"cloud.png"},
+       {},
+       400},
+      {"EncodeOverTheMemoryLimit",
+       {{"cloud.xyz", cloud}},
+       {},
+       "--memory-limit 8M encode {dir}/cloud.xyz -o {dir}/c.clusters",
+       1,
+       "cloud.xyz: encoding 100000 points \\(recentred copy and voxel thinning\\) needs about "
+       "[0-9.]+ MiB, above the memory limit of 8 MiB \\(--memory-limit\\)",
+       {"c.clusters"},
+       {},
+       300},
+      {"TerrainMeshOverTheMemoryLimit",
+       {{"t.json", terrain + "}"}},
+       {},
+       "--memory-limit 512K mesh {dir}/t.json -o {dir}/t.glb",
+       1,
+       "the terrain mesh of 129 x 129 vertices \\(terrain.stride 1\\) needs about [0-9.]+ KiB, "
+       "above the memory limit of 512 KiB \\(--memory-limit\\)",
+       {"t.glb"},
+       {},
+       400},
+      {"PopulationDistanceTooSmallNamesItsKey",
+       {{"p.json", terrain +
+                       ", \"population\": {\"min_distance_m\": 0.0001, \"classes\": "
+                       "[{\"value\": 255, \"density\": 1, \"plants\": [{\"file\": \"" +
+                       kTree + "\", \"probability\": 1}]}]}}"}},
+       {},
+       "mesh {dir}/p.json -o {dir}/p.glb",
+       1,
+       "population.min_distance_m 0.000100 m over a terrain of 768.0+ x 768.0+ m: the minimum "
+       "distance is too small for the area",
+       {"p.glb"}},
+  };
+}
+
 // Test names in ctest and failure reports show the case's name, not its bytes.
 void PrintTo(const Case& c, std::ostream* out) { *out << c.name; }
 
@@ -750,7 +1117,7 @@ TEST_P(Robustness, FailsCleanly) {
     if (text.starts_with("@")) {
       fs::copy_file(expand(text.substr(1), dir), dir / name);
     } else {
-      write_text(dir / name, text);
+      write_text(dir / name, expand(text, dir));
     }
   }
   for (const std::string& setup : c.setup) {
@@ -761,7 +1128,18 @@ TEST_P(Robustness, FailsCleanly) {
   for (const std::string& name : c.untouched) {
     before[name] = fs::exists(dir / name) ? read_text(dir / name) : "<absent>";
   }
-  const CommandResult r = run_fspm(expand(c.args, dir), expand(c.shell_prefix, dir));
+  CommandResult r;
+  if (c.max_rss_mib > 0) {
+    const MeasuredRun m =
+        run_measured(expand(c.shell_prefix, dir) + "exec " + FSPM_EXE + " " + expand(c.args, dir),
+                     dir.string() + ".err");
+    fs::remove(dir.string() + ".err");
+    r.exit_code = m.exit_code;
+    r.err = m.err;
+    EXPECT_LT(m.peak_rss_kib, c.max_rss_mib * 1024) << "peak resident memory in KiB";
+  } else {
+    r = run_fspm(expand(c.args, dir), expand(c.shell_prefix, dir));
+  }
   EXPECT_EQ(r.exit_code, c.exit_code) << r.err;
   EXPECT_TRUE(std::regex_search(r.err, std::regex(expand(c.message, dir)))) << r.err;
   // One line, short even when the input is huge.
@@ -846,6 +1224,10 @@ INSTANTIATE_TEST_SUITE_P(WrongInput, Robustness, ::testing::ValuesIn(wrong_input
 INSTANTIATE_TEST_SUITE_P(Messages, Robustness, ::testing::ValuesIn(message_cases()), case_name);
 INSTANTIATE_TEST_SUITE_P(Memory, Robustness, ::testing::ValuesIn(memory_cases()), case_name);
 INSTANTIATE_TEST_SUITE_P(Options, Robustness, ::testing::ValuesIn(option_cases()), case_name);
+INSTANTIATE_TEST_SUITE_P(NamedInput, Robustness, ::testing::ValuesIn(named_input_cases()),
+                         case_name);
+INSTANTIATE_TEST_SUITE_P(Images, Robustness, ::testing::ValuesIn(image_cases()), case_name);
+INSTANTIATE_TEST_SUITE_P(Budget, Robustness, ::testing::ValuesIn(budget_cases()), case_name);
 INSTANTIATE_TEST_SUITE_P(Options, GlobalOption, ::testing::ValuesIn(spellings()), spelling_name);
 
 }  // namespace

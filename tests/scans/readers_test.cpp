@@ -157,6 +157,39 @@ TEST(XyzReader, SpacesCommasCommentsAndHeader) {
   }
 }
 
+// A spreadsheet's UTF-8 byte-order mark is not a header: the first point stays. A first line in
+// Latin-1 (no-break spaces as separators) is not a header either: an error at line 1.
+TEST(XyzReader, ByteOrderMarkAndLatinOneKeepTheFirstPoint) {
+  const PointSet a = parse_xyz_points(
+      "\xEF\xBB\xBF"
+      "1 2 3\n4 5 6\n",
+      "a.xyz");
+  ASSERT_EQ(a.points.size(), 2u);
+  EXPECT_EQ(a.points[0], Eigen::Vector3d(1, 2, 3));
+  const PointSet b = parse_xyz_points(
+      "\xEF\xBB\xBF"
+      "x,y,z\n1,2,3\n",
+      "b.csv");
+  ASSERT_EQ(b.points.size(), 1u);
+  try {
+    parse_xyz_points(
+        "1\xA0"
+        "2\xA0"
+        "3\n4 5 6\n",
+        "c.xyz");
+    FAIL() << "expected a ParseError";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 1);
+    EXPECT_EQ(e.file(), "c.xyz");
+  }
+  EXPECT_THROW(parse_xyz_points(std::string("\xFF\xFE"
+                                            "1\0 \0"
+                                            "2\0",
+                                            8),
+                                "d.xyz"),
+               ParseError);
+}
+
 TEST(PcdReader, AsciiAndBinary) {
   const std::string head =
       "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z rgb\nSIZE 4 4 4 4\nTYPE F F F U\nCOUNT 1 1 1 1\n"
