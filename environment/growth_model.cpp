@@ -120,7 +120,8 @@ class Grower {
       if (!m.alive) continue;
       const bool tip =
           !(m.main >= 0 && ms_[m.main].alive) && !(m.lateral >= 0 && ms_[m.lateral].alive);
-      pipes += (tip ? 1.0 : 0.0) + (disused_pipes_.empty() ? 0.0 : disused_pipes_[i]);
+      pipes += (tip ? 1.0 : 0.0) +
+               (static_cast<std::size_t>(i) < disused_pipes_.size() ? disused_pipes_[i] : 0.0);
       m.alive = false;
       ++shed_;
       if (shoots_[m.shoot].first == i) shoots_[m.shoot].alive = false;
