@@ -369,7 +369,8 @@ TreeGraph DevelopmentalModel::stage(double t) const {
 
 void DevelopmentalModel::stage(double t, TreeGraph& out) const {
   t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0);
-  const bool sheds = added_.copies > 0 || !shed_root_.empty();
+  // Branches shed before the given tree are left out as they are placed (place_nodes).
+  const bool sheds = added_.copies > 0;
   TreeGraph& grown = sheds ? grown_tree_ : out;
   grown.clear_keep_capacity();  // place_nodes() sizes its columns once (TreeGraph::Appender)
   place_nodes(t, grown);
@@ -402,11 +403,6 @@ void DevelopmentalModel::remove_shed(double t, const TreeGraph& grown, TreeGraph
         added_.attach_height_m[i] < (overlap ? overlap_base_m : base_m)) {
       kept_id_[stage_id_[i]] = 0;
     }
-  }
-  // Branches shed before the given tree go once complete (shed_time_ <= 1).
-  for (std::size_t k = 0; k < shed_root_.size(); ++k) {
-    const NodeId i = shed_root_[k];
-    if (stage_id_[i] != kNoNode && t >= shed_time_[k]) kept_id_[stage_id_[i]] = 0;
   }
   out.clear_keep_capacity();
   out.reserve(grown.size());
@@ -469,6 +465,10 @@ bool DevelopmentalModel::bend(NodeId i, double tc, Eigen::Quaterniond& q) const 
   tip_chain_.resize(n);
   const std::span<const NodeId> parents = tree_.parents();
   const bool shifted = !chain_shift_.empty();
+  // Eq. 5.3's constant rates need no profile (the common case, read once here).
+  const bool profiled = params_.profiles != ProfileChoice::kConstant;
+  const bool shedding = !shed_root_.empty();
+  shed_pipes_.clear();
   TreeGraph::Appender append(out, n);
   for (NodeId i = 0; i < n; ++i) {
     const NodeId p = i == 0 ? kNoNode : parents[i];
@@ -476,12 +476,20 @@ bool DevelopmentalModel::bend(NodeId i, double tc, Eigen::Quaterniond& q) const 
     flags_[i] = 0;
     if (p != kNoNode && !(flags_[p] & kComplete)) continue;  // absent or still growing
     const PlacePlan& a = plan_[i];
+    if (shedding && a.chain_base && t >= chain_shed_time_[a.chain]) {
+      // A branch shed before the given tree, gone with its subtree once complete; its pipes stay
+      // in its parent's wood (eq. 5.8, as Pirk 5.3.6 keeps those of removed branches).
+      shed_pipes_.push_back({stage_id_[p], radius_pow_[i]});
+      continue;
+    }
     const bool edge = a.kind == OrganKind::kInternode;
     double length = a.length;
     // The chain's own clock: t, unless an edit shifted it (5.4.1).
     const double tc = edge && shifted ? t + chain_shift_[a.chain] : t;
     if (edge) {
-      const double reach = grown_length(a.chain, tc) - a.chain_offset;
+      const double reach = (profiled ? grown_length(a.chain, tc)
+                                     : chain_rate_[a.chain] * (tc - chain_start_[a.chain])) -
+                           a.chain_offset;
       if (tc < 1.0 && !(reach > 0.0)) continue;  // not started yet
       // At t = 1 every edge is complete (rounding must not leave one a hair short).
       if (tc < 1.0) length = std::min(reach, length);
@@ -530,6 +538,10 @@ double DevelopmentalModel::birth_shift(NodeId i) const {
 void DevelopmentalModel::set_radii(TreeGraph& out) const {
   const double inv_u = params_.pipe_exponent == 2.5 ? 0.0 : 1.0 / params_.pipe_exponent;
   below_.assign(out.size(), Below{});
+  for (const auto& [k, pipes] : shed_pipes_) {
+    below_[k].sum += pipes;
+    below_[k].has_child = 1;
+  }
   for (NodeId k = static_cast<NodeId>(out.size()); k-- > 0;) {
     const NodeId i = given_of_[k];
     const RadiusPlan& a = radius_plan_[i];

@@ -29,6 +29,7 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "fspm/tree_graph.hpp"
@@ -152,7 +153,8 @@ class DevelopmentalModel {
   // the time it is shed.
   std::vector<NodeId> shed_root_;
   std::vector<double> shed_time_;
-  AddedStructures added_;  // its tree is moved into tree_
+  std::vector<double> chain_shed_time_;  // per chain, of a shed branch's first chain (else inf)
+  AddedStructures added_;                // its tree is moved into tree_
   NodeId added_end_ = 0;   // nodes added_.first_added..added_end_ - 1 are added structures
   NodeId given_size_ = 0;  // nodes of the given tree
   std::vector<double> chain_shift_;  // per chain, t of its own clock minus t (edits only)
@@ -229,6 +231,8 @@ class DevelopmentalModel {
   // chain's last edge (it then carries its chain's tip organs, 5.3.7), else ~0.
   mutable std::vector<std::uint32_t> tip_chain_;
   mutable TreeGraph grown_tree_;  // the stage with every added branch, before shedding
+  // Per shed branch left out of this stage: its parent's stage node and its r^u.
+  mutable std::vector<std::pair<NodeId, double>> shed_pipes_;
   mutable std::vector<NodeId> kept_id_;
 };
 

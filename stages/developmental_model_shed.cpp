@@ -3,6 +3,7 @@
 // holds pipes beyond its children's needs, on a clock that completes it before t = 1.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "stages/developmental_model.hpp"
@@ -42,6 +43,10 @@ void DevelopmentalModel::reconstruct_shed_branches() {
     shed_root_.push_back(root);
     // Complete, and shed, when its own clock reaches 1.
     shed_time_.push_back(std::clamp(1.0 - chain_shift_[chain_[root]], 0.0, 1.0));
+  }
+  chain_shed_time_.assign(chain_rate_.size(), std::numeric_limits<double>::infinity());
+  for (std::size_t k = 0; k < shed_root_.size(); ++k) {
+    chain_shed_time_[chain_[shed_root_[k]]] = shed_time_[k];
   }
 }
 
