@@ -11,6 +11,11 @@
 #     (--shed-branches), with constant rates and with rates by chain (--growth-profiles by_chain).
 # Columns "new" are the last of these. Its distances are to the recorded and other trees grown
 # with keep_shed_pipes too (the same internodes, radii of the same kind of wood).
+# A second table gives, per type and growth profile choice, how far the time each surviving
+# internode starts growing in the model (t * 30 years) is from the year it grew in (its birth
+# time in the grown tree): mean error and mean absolute error in years, and the share of the
+# 20-year tree's internodes still in the 30-year tree (born by year 20), the most any model of
+# the 30-year tree's own branches can hold at t = 2/3.
 # FSPM=path/to/fspm to use a build.
 set -euo pipefail
 fspm=${FSPM:-fspm}
@@ -59,4 +64,39 @@ print(f"| {t}, {y} y | {n(old)} / {n(shed)} / {n(new)} / {n(r)} / {n(o)} "
       f"{o['crown_width']:.2f} | {d_old:.0f} / {d_other:.0f} | {d_new:.0f} / {d_new_other:.0f} |")
 PY
   done
+done
+echo
+echo "| type | 20-year internodes still there at 30 years | birth year, model minus grown, mean / mean absolute: constant (eq. 5.3) | by_chain | logistic | accelerating |"
+echo "|---|---|---|---|---|---|"
+for type in A B C; do
+  $fspm -q grow --preset $type --years 30 --seed 1 -o "$work"/final.tree
+  $fspm -q grow --preset $type --years 20 --seed 1 -o "$work"/recorded.treeb
+  recorded=$($fspm -q tree info "$work"/recorded.treeb --json |
+    /usr/bin/python3 -c "import json, sys; print(json.load(sys.stdin)['internodes'])")
+  kept=$(/usr/bin/python3 - "$work"/final.tree <<'PY'
+import sys
+print(sum(1 for line in open(sys.argv[1]) if len(line.split()) > 16 and line.split()[0].isdigit()
+          and line.split()[2] == "internode" and float(line.split()[16]) <= 20))
+PY
+)
+  row="| $type | $kept of $recorded ($(/usr/bin/python3 -c "print(f'{$kept / $recorded:.2f}')")) |"
+  for profiles in constant by_chain logistic accelerating; do
+    $fspm -q stages "$work"/final.tree --at 1 --growth-profiles $profiles -o "$work"/start.tree
+    row+=$(/usr/bin/python3 - "$work"/final.tree "$work"/start.tree <<'PY'
+import sys
+def births(path):
+    out = []
+    for line in open(path):
+        f = line.split()
+        if len(f) > 16 and f[0].isdigit() and f[2] == "internode":
+            out.append(float(f[16]))
+    return out
+grown, model = births(sys.argv[1]), births(sys.argv[2])
+assert len(grown) == len(model)
+e = [30 * m - g for g, m in zip(grown, model)]
+print(f" {sum(e) / len(e):.2f} / {sum(abs(x) for x in e) / len(e):.2f} |", end="")
+PY
+)
+  done
+  echo "$row"
 done
