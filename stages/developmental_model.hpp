@@ -123,11 +123,13 @@ class DevelopmentalModel {
   void apply_edits();
   bool is_internode(NodeId n) const;
   NodeId edited_branch_base(NodeId node, const char* what) const;
-  std::vector<NodeId> subtree(NodeId base) const;
+  std::vector<NodeId> subtree(NodeId base, NodeId end = kNoNode) const;
   void mark_edited_ancestors(NodeId from);
   // Returns how far the copy's clock runs ahead of its source's (its chain_shift_ minus the
-  // source's); `roll_rad` turns it about the target's heading.
-  double append_branch_copy(const CopyEdit& edit, double roll_rad = 0.0);
+  // source's); `roll_rad` turns it about the target's heading; `branch`, when given, is the
+  // source's subtree(base) to copy.
+  double append_branch_copy(const CopyEdit& edit, double roll_rad = 0.0,
+                            const std::vector<NodeId>* branch = nullptr);
   void reconstruct_shed_branches();
   void remove_shed(double t, const TreeGraph& grown, TreeGraph& out) const;
   void assign_levels_and_chains();

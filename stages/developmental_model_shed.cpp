@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <unordered_map>
+#include <vector>
 
 #include "stages/developmental_model.hpp"
 
@@ -27,6 +29,7 @@ void DevelopmentalModel::reconstruct_shed_branches() {
   if (chain_shift_.empty()) chain_shift_.assign(chain_rate_.size(), 0.0);
   // Copies of one source at several places are turned apart by the golden angle.
   const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
+  std::unordered_map<NodeId, std::vector<NodeId>> branches;  // per source, its nodes
   for (std::size_t k = 0; k < sites.size(); ++k) {
     const NodeId target = sites[k].edge;
     if (target >= given_size_) continue;
@@ -37,7 +40,10 @@ void DevelopmentalModel::reconstruct_shed_branches() {
     if (source == kNoNode) break;
     const NodeId root = static_cast<NodeId>(tree_.size());
     const double source_pow = radius_pow_[source];
-    append_branch_copy({source, target}, golden * static_cast<double>(k));
+    // The source as in the given tree (without the shed branches already stood in it).
+    auto [it, fresh] = branches.try_emplace(source);
+    if (fresh) it->second = subtree(source, given_size_);
+    append_branch_copy({source, target}, golden * static_cast<double>(k), &it->second);
     // The copy takes the disused pipes' place in eq. 5.7, so the radii below stay as given.
     if (radius_pow_[target] > 0.0) radius_coefficient_[target] += source_pow / radius_pow_[target];
     shed_root_.push_back(root);
