@@ -480,6 +480,8 @@ bool DevelopmentalModel::bend(NodeId i, double tc, Eigen::Quaterniond& q) const 
       // A branch shed before the given tree, gone with its subtree once complete; its pipes stay
       // in its parent's wood (eq. 5.8, as Pirk 5.3.6 keeps those of removed branches).
       shed_pipes_.push_back({stage_id_[p], radius_pow_[i]});
+      // Its nodes follow it in one run of ids, and nothing else reads them in this stage.
+      i = chain_shed_end_[a.chain] - 1;
       continue;
     }
     const bool edge = a.kind == OrganKind::kInternode;
@@ -501,7 +503,7 @@ bool DevelopmentalModel::bend(NodeId i, double tc, Eigen::Quaterniond& q) const 
     NodeData d;
     d.kind = a.kind;
     d.order = a.order;
-    d.birth_time = shifted ? a.start_time - birth_shift(i) : a.start_time;
+    d.birth_time = shifted ? a.start_time - chain_shift_[a.chain] : a.start_time;
     d.physiological_age = a.age;
     d.length = length;
     const NodeId pk = p == kNoNode ? kNoNode : stage_id_[p];
@@ -524,12 +526,6 @@ bool DevelopmentalModel::bend(NodeId i, double tc, Eigen::Quaterniond& q) const 
     flags_[i] =
         static_cast<std::uint8_t>((length < a.length ? 0 : kComplete) | (turned ? kTurned : 0));
   }
-}
-
-// Organs take the clock of the internode bearing them.
-double DevelopmentalModel::birth_shift(NodeId i) const {
-  while (!is_edge(tree_, i)) i = tree_.parent(i);
-  return chain_shift_[chain_[i]];
 }
 
 // Backward, from the tips: radii by eq. 5.8 (r^u carried, so one root per inner edge). An edge
@@ -592,7 +588,10 @@ void DevelopmentalModel::build_plans() {
     a.length = tree_.length(i);
     a.chain_offset = offset_[i];
     a.start_time = start_time_[i];
-    a.chain = chain_[i];
+    // An organ takes the chain (and clock) of the internode bearing it.
+    NodeId bearer = i;
+    while (!is_edge(tree_, bearer)) bearer = tree_.parent(bearer);
+    a.chain = chain_[bearer];
     a.order = static_cast<std::uint16_t>(level_[i] - 1);
     a.age = tree_.physiological_age(i);
     a.kind = tree_.kind(i);

@@ -147,7 +147,6 @@ class DevelopmentalModel {
   void add_tip_leaves(TreeGraph& out) const;
   void build_plans();
   void build_tip_organs();
-  double birth_shift(NodeId i) const;
 
   TreeGraph tree_;  // the given tree, with the added structures appended when they are on
   StagesParams params_;
@@ -156,6 +155,7 @@ class DevelopmentalModel {
   std::vector<NodeId> shed_root_;
   std::vector<double> shed_time_;
   std::vector<double> chain_shed_time_;  // per chain, of a shed branch's first chain (else inf)
+  std::vector<NodeId> chain_shed_end_;   // per such chain, the id after its branch's last node
   AddedStructures added_;                // its tree is moved into tree_
   NodeId added_end_ = 0;   // nodes added_.first_added..added_end_ - 1 are added structures
   NodeId given_size_ = 0;  // nodes of the given tree
@@ -183,7 +183,7 @@ class DevelopmentalModel {
   // that do not start at their parent's end need is in a side record.
   struct alignas(64) PlacePlan {
     // What decides whether the node is present comes first.
-    std::uint32_t chain = 0;
+    std::uint32_t chain = 0;       // of an organ, its internode's
     std::uint32_t side = kNoNode;  // index in side_plan_, kNoNode for none
     OrganKind kind = OrganKind::kInternode;
     std::uint8_t chain_base = 0;

@@ -51,8 +51,12 @@ void DevelopmentalModel::reconstruct_shed_branches() {
     shed_time_.push_back(std::clamp(1.0 - chain_shift_[chain_[root]], 0.0, 1.0));
   }
   chain_shed_time_.assign(chain_rate_.size(), std::numeric_limits<double>::infinity());
+  chain_shed_end_.assign(chain_rate_.size(), kNoNode);
   for (std::size_t k = 0; k < shed_root_.size(); ++k) {
     chain_shed_time_[chain_[shed_root_[k]]] = shed_time_[k];
+    // Each copy's nodes were appended in one run.
+    chain_shed_end_[chain_[shed_root_[k]]] =
+        k + 1 < shed_root_.size() ? shed_root_[k + 1] : static_cast<NodeId>(tree_.size());
   }
 }
 
