@@ -195,6 +195,12 @@ void run_stages(const StagesOptions& o) {
   }
   std::size_t branches = 0;
   for (NodeId i = 0; i < tree.size(); ++i) branches += tree.kind(i) == OrganKind::kInternode;
+  if (o.shed_branches && model.shed_branch_count() == 0) {
+    spdlog::warn(
+        "--shed-branches: no radius of {} holds more pipes than its branches need, so no shed "
+        "branch was read back; a tree grown by fspm keeps them with --set keep_shed_pipes=true",
+        o.tree);
+  }
   spdlog::info("{}: {} internodes in {} chains; {} added branch(es); {} stage(s) -> {}", o.tree,
                branches, model.chain_count(), model.added_branch_count(), times.size(), o.output);
   if (o.json) {
