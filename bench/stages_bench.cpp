@@ -116,6 +116,40 @@ void BM_StageCopyPeer(benchmark::State& state) {
 }
 BENCHMARK(BM_StageCopyPeer)->Arg(43)->Unit(benchmark::kMillisecond);
 
+// Args: years of preset A grown with the pipes of its shed branches kept (keep_shed_pipes),
+// stage time in percent; the model reconstructs the shed branches (StagesParams::shed) and
+// chooses growth profiles by chain.
+void BM_StageShed(benchmark::State& state) {
+  static std::map<int, TreeGraph> trees;
+  const int years = static_cast<int>(state.range(0));
+  if (!trees.contains(years)) {
+    fspm::environment::GrowthParams p = fspm::environment::growth_preset("A");
+    p.years = years;
+    p.keep_shed_pipes = true;
+    trees.emplace(years, fspm::environment::grow_tree(p).tree);
+  }
+  const TreeGraph& t = trees.at(years);
+  fspm::stages::StagesParams params;
+  params.shed.enabled = true;
+  params.profiles = fspm::stages::ProfileChoice::kByChain;
+  const fspm::stages::DevelopmentalModel model(t, params);
+  const double at = static_cast<double>(state.range(1)) / 100.0;
+  TreeGraph out;
+  for (auto _ : state) {
+    model.stage(at, out);
+    benchmark::DoNotOptimize(out.size());
+  }
+  counters(state, t);
+  state.counters["stage_nodes"] = static_cast<double>(out.size());
+  state.counters["shed_branches"] = static_cast<double>(model.shed_branch_count());
+}
+BENCHMARK(BM_StageShed)
+    ->Args({30, 67})
+    ->Args({30, 100})
+    ->Args({43, 90})
+    ->Args({43, 100})
+    ->Unit(benchmark::kMillisecond);
+
 void BM_StagesAnalysis(benchmark::State& state) {
   const TreeGraph& t = tree_for(static_cast<int>(state.range(0)));
   for (auto _ : state) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/enum_option.hpp"
 #include "cli/output.hpp"
 #include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
@@ -35,6 +36,8 @@ struct StagesOptions {
   bool added = false;
   bool added_overlap = false;
   double added_gamma = 1.0;
+  stages::ProfileChoice growth_profiles = stages::ProfileChoice::kConstant;
+  bool shed_branches = false;
   double profile_m = 0.0;
   std::vector<std::string> age_branch;   // NODE:DT (Pirk 5.4.1)
   std::vector<std::string> copy_branch;  // FROM:TO
@@ -182,6 +185,8 @@ void run_stages(const StagesOptions& o) {
   params.added.enabled = o.added || o.added_overlap;
   params.added.overlap = o.added_overlap;
   params.added.gamma = o.added_gamma;
+  params.profiles = o.growth_profiles;
+  params.shed.enabled = o.shed_branches;
   params.edits = branch_edits(o);
   const stages::DevelopmentalModel model(tree, params);
   const double analysis_seconds = seconds_since(t0);
@@ -196,6 +201,12 @@ void run_stages(const StagesOptions& o) {
   }
   std::size_t branches = 0;
   for (NodeId i = 0; i < tree.size(); ++i) branches += tree.kind(i) == OrganKind::kInternode;
+  if (o.shed_branches && model.shed_branch_count() == 0) {
+    spdlog::warn(
+        "--shed-branches: no radius of {} holds more pipes than its branches need, so no shed "
+        "branch was read back; a tree grown by fspm keeps them with --set keep_shed_pipes=true",
+        o.tree);
+  }
   spdlog::info("{}: {} internodes in {} chains; {} added branch(es); {} stage(s) -> {}", o.tree,
                branches, model.chain_count(), model.added_branch_count(), times.size(), o.output);
   if (o.json) {
@@ -207,6 +218,7 @@ void run_stages(const StagesOptions& o) {
                 {"chains", model.chain_count()},
                 {"added_branches", model.added_branch_count()},
                 {"overlap_branches", model.overlap_branch_count()},
+                {"shed_branches", model.shed_branch_count()},
                 {"crown_ratio", model.crown().crown_ratio()},
                 {"stages", times.size()},
                 {"times", times},
@@ -247,6 +259,15 @@ void add_stages_commands(CLI::App& app) {
                 "gamma of eq. 5.10 for --added (1: the last stage is the given tree; < 1 keeps "
                 "some added branches, > 1 sheds them earlier)")
       ->check(number_in(1e-6, 100.0));
+  add_enum_option(s, "--growth-profiles", o->growth_profiles, stages::kProfileChoices,
+                  stages::profile_choice_name,
+                  "Growth-rate profiles of the chains (Pirk 5.3.1): constant (eq. 5.3), by_chain "
+                  "(accelerating for short slow chains that start late, constant for the others), "
+                  "logistic or accelerating for all");
+  s->add_flag("--shed-branches", o->shed_branches,
+              "Stand a shed branch wherever a radius holds more pipes than its children need "
+              "(pipe model, Shinozaki et al. 1964), grown as its closest lateral and shed when "
+              "complete");
   s->add_option("--age-branch", o->age_branch,
                 "NODE:DT: make the branch holding internode NODE older by DT (units of t; "
                 "negative: younger), or by K years as NODE:Ky with --season-years; it shows at "

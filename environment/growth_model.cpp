@@ -112,16 +112,26 @@ class Grower {
 
   void shed(std::int32_t root) {
     std::vector<std::int32_t> stack{root};
+    double pipes = 0.0;  // of the shed branch, in tip pipes: its tips and its own disused pipes
     while (!stack.empty()) {
       const std::int32_t i = stack.back();
       stack.pop_back();
       Metamer& m = ms_[i];
       if (!m.alive) continue;
+      const bool tip =
+          !(m.main >= 0 && ms_[m.main].alive) && !(m.lateral >= 0 && ms_[m.lateral].alive);
+      pipes += (tip ? 1.0 : 0.0) +
+               (static_cast<std::size_t>(i) < disused_pipes_.size() ? disused_pipes_[i] : 0.0);
       m.alive = false;
       ++shed_;
       if (shoots_[m.shoot].first == i) shoots_[m.shoot].alive = false;
       if (m.main >= 0) stack.push_back(m.main);
       if (m.lateral >= 0) stack.push_back(m.lateral);
+    }
+    // Shinozaki et al. 1964: the shed branch's pipes stay in its parent's wood.
+    if (p_.keep_shed_pipes && ms_[root].parent >= 0) {
+      disused_pipes_.resize(ms_.size(), 0.0);
+      disused_pipes_[static_cast<std::size_t>(ms_[root].parent)] += pipes;
     }
   }
 
@@ -433,6 +443,13 @@ class Grower {
       double sum = 0.0;
       if (m.main >= 0 && ms_[m.main].alive) sum += std::pow(radius[m.main], e);
       if (m.lateral >= 0 && ms_[m.lateral].alive) sum += std::pow(radius[m.lateral], e);
+      const double disused = k < disused_pipes_.size() ? disused_pipes_[k] : 0.0;
+      if (disused > 0.0) {
+        // The living pipes (a tip's own) and the disused ones of shed branches.
+        const double tip_pipe = std::pow(p_.tip_radius_m, e);
+        radius[k] = std::pow((sum > 0 ? sum : tip_pipe) + disused * tip_pipe, 1.0 / e);
+        continue;
+      }
       radius[k] = sum > 0 ? std::pow(sum, 1.0 / e) : p_.tip_radius_m;
     }
     std::vector<NodeId> new_id(n, kNoNode);
@@ -516,6 +533,7 @@ class Grower {
   std::vector<BudPerception> perceptions_;
   std::vector<std::int64_t> count_;
   std::size_t shed_ = 0, grown_ = 0;
+  std::vector<double> disused_pipes_;  // per metamer, of shed laterals (keep_shed_pipes)
 };
 
 }  // namespace

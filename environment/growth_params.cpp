@@ -257,6 +257,14 @@ GrowthParams parse_growth_params(std::string_view text, const std::string& file_
       return true;
     };
   };
+  auto boolean = [](bool& out) -> Setter {
+    return [&out](const toml::node& n) {
+      const auto v = n.value<bool>();
+      if (!v || !n.is_boolean()) return false;
+      out = *v;
+      return true;
+    };
+  };
   constexpr double kBig = 1e300;
   const std::map<std::string, std::pair<Setter, std::string>> keys = {
       {"years", {integer(p.years, 0, 1000), "an integer in [0, 1000]"}},
@@ -291,6 +299,7 @@ GrowthParams parse_growth_params(std::string_view text, const std::string& file_
       {"light_significance", {real(p.light_significance, 0, 0.999), "a number in [0, 1)"}},
       {"tip_radius_m", {real(p.tip_radius_m, 1e-12, kBig), "a positive length"}},
       {"pipe_exponent", {real(p.pipe_exponent, 1, 4), "a number in [1, 4]"}},
+      {"keep_shed_pipes", {boolean(p.keep_shed_pipes), "true or false"}},
       {"min_shoot_vigour", {real(p.min_shoot_vigour, 0, kBig), "a non-negative number"}},
       {"sky_light_fraction", {real(p.sky_light_fraction, 0, 1), "a fraction in [0, 1]"}},
       {"light_half_saturation",

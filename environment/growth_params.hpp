@@ -78,6 +78,10 @@ struct GrowthParams {
   // Geometry: pipe model r^n = sum r_child^n from the tip radius.
   double tip_radius_m = 0.004;
   double pipe_exponent = 2.5;
+  // Radii keep the pipes of shed branches (Shinozaki et al. 1964: the pipes of lost branches stay
+  // in the wood below them as disused pipes), each shed branch counting with the pipes it had
+  // when it was shed. Off: radii from the living branches alone.
+  bool keep_shed_pipes = false;
 };
 
 // Which tropism weights Pirk's tree types take. Pirk's text (4.5.4) pairs them as A 0.25 / 0.12,

@@ -402,6 +402,8 @@ void bind_growth_params(py::module_& m) {
            "Radius of a shoot tip, the start of the pipe model (m, > 0; 0.004)")
       .add("pipe_exponent", &env::GrowthParams::pipe_exponent,
            "Pipe model exponent n in r^n = sum r_child^n ([1, 4]; 2.5)")
+      .add("keep_shed_pipes", &env::GrowthParams::keep_shed_pipes,
+           "Radii keep the pipes of shed branches, as wood keeps disused pipes (bool; False)")
       .existing("light_model")
       .existing("voxel_size_m")
       .existing("shadow_a")

@@ -1,7 +1,9 @@
 // fspm.developmental_model: developmental stages of a static tree (Pirk chapter 5).
 #include <pybind11/stl.h>
 
+#include <string>
 #include "python/bindings.hpp"
+
 #include "stages/developmental_model.hpp"
 
 namespace fspm::python {
@@ -30,6 +32,9 @@ void bind_stages(py::module_& m) {
       .def_property_readonly("overlap_branch_count", &DevelopmentalModel::overlap_branch_count,
                              "Of the added branches, those in the overlap region above the crown "
                              "base (Pirk 5.3.5), 0 unless added_overlap=True")
+      .def_property_readonly("shed_branch_count", &DevelopmentalModel::shed_branch_count,
+                             "Branches shed before the given tree read back from its radii, 0 "
+                             "unless shed_branches=True")
       .def_property_readonly(
           "crown_ratio",
           [](const DevelopmentalModel& model) { return model.crown().crown_ratio(); },
@@ -49,7 +54,8 @@ void bind_stages(py::module_& m) {
       "developmental_model",
       [](const TreeGraph& tree, bool thickest_continues, bool added, double added_gamma,
          bool added_overlap, const std::vector<std::pair<NodeId, double>>& age_branches,
-         const std::vector<std::pair<NodeId, NodeId>>& copy_branches) {
+         const std::vector<std::pair<NodeId, NodeId>>& copy_branches, bool shed_branches,
+         const std::string& growth_profiles) {
         stages::StagesParams p;
         p.continuation = thickest_continues ? stages::Continuation::kThickest
                                             : stages::Continuation::kLeastDeviation;
@@ -58,12 +64,15 @@ void bind_stages(py::module_& m) {
         p.added.overlap = added_overlap;
         for (const auto& [node, delta] : age_branches) p.edits.age.push_back({node, delta});
         for (const auto& [from, to] : copy_branches) p.edits.copy.push_back({from, to});
+        p.shed.enabled = shed_branches;
+        p.profiles = stages::profile_choice_from_name(growth_profiles);
         return DevelopmentalModel(tree, p);
       },
       py::arg("tree"), py::arg("thickest_continues") = true, py::arg("added") = false,
       py::arg("added_gamma") = 1.0, py::arg("added_overlap") = false,
       py::arg("age_branches") = std::vector<std::pair<NodeId, double>>{},
       py::arg("copy_branches") = std::vector<std::pair<NodeId, NodeId>>{},
+      py::arg("shed_branches") = false, py::arg("growth_profiles") = "constant",
       "Analyse a Tree into a DevelopmentalModel (chains, growth rates, angles, radii). "
       "thickest_continues=False uses Pirk's rule (the child deviating least continues the axis); "
       "added=True adds the branches a young tree had below the crown and sheds them as the crown "
@@ -75,8 +84,11 @@ void bind_stages(py::module_& m) {
       "negative: younger), so that it shows at each stage what it would show dt later; "
       "copy_branches, a list of (from, to), copies the branch holding internode `from` rigidly "
       "to the end of internode `to`, growing from the time the tree reaches `to` at the age the "
-      "source had when it started; raises ValueError for an empty tree "
-      "or bad parameters");
+      "source had when it started; shed_branches=True stands a shed branch wherever a radius "
+      "holds more pipes than its children need (pipe model, Shinozaki et al. 1964), grown as "
+      "the lateral of the closest pipes and shed when complete; growth_profiles is 'constant' "
+      "(Pirk eq. 5.3), 'by_chain', 'logistic' or 'accelerating'; raises ValueError for an empty "
+      "tree or bad parameters");
 
   m.def("seasonal_time", &stages::seasonal_time, py::arg("t"), py::arg("years"), py::arg("c") = 1.2,
         py::arg("s") = 0.0,

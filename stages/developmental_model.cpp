@@ -70,6 +70,7 @@ void StagesParams::validate() const {
     throw ValueError("stages: same_level_tolerance must be in [0, 1]");
   }
   added.validate();
+  shed.validate();
   for (const AgeEdit& a : edits.age) {
     if (!(std::abs(a.delta_t) <= 1.0)) {
       throw ValueError("stages: a branch's age change must be in [-1, 1] (units of t), got " +
@@ -100,6 +101,7 @@ DevelopmentalModel::DevelopmentalModel(const TreeGraph& tree, const StagesParams
   compute_bending();
   compute_radius_coefficients();
   apply_edits();
+  reconstruct_shed_branches();
   build_plans();
   build_tip_organs();
 }
@@ -198,14 +200,29 @@ void DevelopmentalModel::assign_levels_and_chains() {
 }
 
 // Pirk eq. 5.3-5.4: a chain starts when its parent chain reaches the branch point and grows at
-// the rate that completes it at t = 1; an edge starts when the chain reaches it.
+// the rate that completes it at t = 1 (or by its growth profile, stages/growth_profile.hpp); an
+// edge starts when the chain reaches it. Profiles chosen by chain are chosen from the constant
+// rates (a first pass), then the times are computed again with them.
 void DevelopmentalModel::compute_growth_times() {
+  chain_length_ = chain_rate_;  // assign_levels_and_chains() left the lengths there
+  chain_profile_.assign(chain_length_.size(), ChainProfile{});
+  propagate_growth_times();
+  if (params_.profiles == ProfileChoice::kConstant) return;
+  if (params_.profiles == ProfileChoice::kByChain) {
+    choose_chain_profiles();
+  } else {
+    chain_profile_.assign(chain_length_.size(), uniform_profile(params_.profiles));
+  }
+  propagate_growth_times();
+}
+
+void DevelopmentalModel::propagate_growth_times() {
   const std::size_t n = tree_.size();
-  std::vector<double> chain_length = chain_rate_;
-  chain_start_.assign(chain_rate_.size(), 0.0);
-  chain_last_.assign(chain_rate_.size(), kNoNode);
+  chain_start_.assign(chain_length_.size(), 0.0);
+  chain_last_.assign(chain_length_.size(), kNoNode);
+  chain_rate_.assign(chain_length_.size(), 0.0);
   start_time_.assign(n, 0.0);
-  chain_rate_[0] = chain_length[0];
+  chain_rate_[0] = chain_length_[0];
   for (NodeId i = 0; i < n; ++i) {
     if (!is_edge(tree_, i)) {
       start_time_[i] = start_time_[tree_.parent(i)];
@@ -216,13 +233,54 @@ void DevelopmentalModel::compute_growth_times() {
     if (chain_base_[i]) {
       const NodeId p = tree_.parent(i);
       // The parent chain reaches the end of edge p (where the branch stands).
-      const double reached =
-          chain_start_[chain_[p]] + (offset_[p] + tree_.length(p)) / chain_rate_[chain_[p]];
-      chain_start_[c] = std::min(reached, 1.0);
-      chain_rate_[c] = chain_length[c] / std::max(1.0 - chain_start_[c], 1e-9);
+      chain_start_[c] = std::min(reach_time(chain_[p], offset_[p] + tree_.length(p)), 1.0);
+      chain_rate_[c] = chain_length_[c] / std::max(1.0 - chain_start_[c], 1e-9);
     }
-    start_time_[i] =
-        chain_rate_[c] > 0.0 ? chain_start_[c] + offset_[i] / chain_rate_[c] : chain_start_[c];
+    start_time_[i] = reach_time(c, offset_[i]);
+  }
+}
+
+// The time chain c has grown `length_m` (eq. 5.3 with the chain's profile).
+double DevelopmentalModel::reach_time(std::uint32_t c, double length_m) const {
+  const ChainProfile& profile = chain_profile_[c];
+  if (profile.kind == GrowthProfile::kConstant) {
+    return chain_rate_[c] > 0.0 ? chain_start_[c] + length_m / chain_rate_[c] : chain_start_[c];
+  }
+  const double share = chain_length_[c] > 0.0 ? length_m / chain_length_[c] : 0.0;
+  return chain_start_[c] + (1.0 - chain_start_[c]) * profile_time(profile, share);
+}
+
+// The length chain c has grown at its own clock tc (eq. 5.3 with the chain's profile).
+double DevelopmentalModel::grown_length(std::uint32_t c, double tc) const {
+  const ChainProfile& profile = chain_profile_[c];
+  if (profile.kind == GrowthProfile::kConstant) return chain_rate_[c] * (tc - chain_start_[c]);
+  const double span = std::max(1.0 - chain_start_[c], 1e-9);
+  return chain_length_[c] * profile_fraction(profile, (tc - chain_start_[c]) / span);
+}
+
+// Profiles by chain (choose_profile) from the constant rates of the first pass, against the
+// median rate of each level.
+void DevelopmentalModel::choose_chain_profiles() {
+  const std::size_t chains = chain_length_.size();
+  std::vector<std::uint16_t> chain_level(chains, 1);
+  for (NodeId i = 0; i < tree_.size(); ++i) {
+    if (is_edge(tree_, i) && (i == 0 || chain_base_[i])) chain_level[chain_[i]] = level_[i];
+  }
+  std::vector<std::vector<double>> rates;
+  for (std::size_t c = 0; c < chains; ++c) {
+    if (rates.size() <= chain_level[c]) rates.resize(chain_level[c] + 1u);
+    rates[chain_level[c]].push_back(chain_rate_[c]);
+  }
+  std::vector<double> median(rates.size(), 0.0);
+  for (std::size_t g = 0; g < rates.size(); ++g) {
+    if (rates[g].empty()) continue;
+    auto mid = rates[g].begin() + static_cast<std::ptrdiff_t>(rates[g].size() / 2);
+    std::nth_element(rates[g].begin(), mid, rates[g].end());
+    median[g] = *mid;
+  }
+  for (std::size_t c = 0; c < chains; ++c) {
+    chain_profile_[c] = choose_profile(chain_level[c], chain_length_[c], chain_length_[0],
+                                       chain_rate_[c], median[chain_level[c]], chain_start_[c]);
   }
 }
 
@@ -311,7 +369,9 @@ TreeGraph DevelopmentalModel::stage(double t) const {
 
 void DevelopmentalModel::stage(double t, TreeGraph& out) const {
   t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0);
-  TreeGraph& grown = added_.copies > 0 ? grown_tree_ : out;
+  // Branches shed before the given tree are left out as they are placed (place_nodes).
+  const bool sheds = added_.copies > 0;
+  TreeGraph& grown = sheds ? grown_tree_ : out;
   grown.clear_keep_capacity();  // place_nodes() sizes its columns once (TreeGraph::Appender)
   place_nodes(t, grown);
   // Pirk 5.3.6: the branches shed later still count in the radii (eq. 5.8), so removing them
@@ -319,7 +379,7 @@ void DevelopmentalModel::stage(double t, TreeGraph& out) const {
   set_radii(grown);
   // A branch made younger (5.4.1) is still growing at t = 1.
   if (t < 1.0 || !chain_shift_.empty()) add_tip_leaves(grown);
-  if (added_.copies > 0) remove_shed(t, grown, out);
+  if (sheds) remove_shed(t, grown, out);
 }
 
 // Pirk eq. 5.10: an added branch is present while its base is at or above the crown base
@@ -327,12 +387,13 @@ void DevelopmentalModel::stage(double t, TreeGraph& out) const {
 // above every added branch; it is the given tree by definition, whatever the rounding.
 void DevelopmentalModel::remove_shed(double t, const TreeGraph& grown, TreeGraph& out) const {
   const bool last = t >= 1.0 && params_.added.gamma == 1.0;
-  const double height_m = tree_height(grown);
-  const double base_m =
-      last ? std::numeric_limits<double>::infinity() : added_.curve.crown_base_m(height_m);
+  const double height_m = added_.copies > 0 ? tree_height(grown) : 0.0;
+  const double base_m = last || added_.copies == 0 ? std::numeric_limits<double>::infinity()
+                                                   : added_.curve.crown_base_m(height_m);
   // The overlap region's copies follow eq. 5.10 with the region's top as the final crown base.
-  const double overlap_base_m =
-      last ? std::numeric_limits<double>::infinity() : added_.overlap_curve.crown_base_m(height_m);
+  const double overlap_base_m = last || added_.copies == 0
+                                    ? std::numeric_limits<double>::infinity()
+                                    : added_.overlap_curve.crown_base_m(height_m);
   kept_id_.assign(grown.size(), 0);  // 0: shed, 1: kept; then the new id
   for (NodeId k = 0; k < grown.size(); ++k) kept_id_[k] = 1;
   for (NodeId i = added_.first_added; i < added_end_; ++i) {
@@ -404,6 +465,10 @@ bool DevelopmentalModel::bend(NodeId i, double tc, Eigen::Quaterniond& q) const 
   tip_chain_.resize(n);
   const std::span<const NodeId> parents = tree_.parents();
   const bool shifted = !chain_shift_.empty();
+  // Eq. 5.3's constant rates need no profile (the common case, read once here).
+  const bool profiled = params_.profiles != ProfileChoice::kConstant;
+  const bool shedding = !shed_root_.empty();
+  shed_pipes_.clear();
   TreeGraph::Appender append(out, n);
   for (NodeId i = 0; i < n; ++i) {
     const NodeId p = i == 0 ? kNoNode : parents[i];
@@ -411,12 +476,22 @@ bool DevelopmentalModel::bend(NodeId i, double tc, Eigen::Quaterniond& q) const 
     flags_[i] = 0;
     if (p != kNoNode && !(flags_[p] & kComplete)) continue;  // absent or still growing
     const PlacePlan& a = plan_[i];
+    if (shedding && a.chain_base && t >= chain_shed_time_[a.chain]) {
+      // A branch shed before the given tree, gone with its subtree once complete; its pipes stay
+      // in its parent's wood (eq. 5.8, as Pirk 5.3.6 keeps those of removed branches).
+      shed_pipes_.push_back({stage_id_[p], radius_pow_[i]});
+      // Its nodes follow it in one run of ids, and nothing else reads them in this stage.
+      i = chain_shed_end_[a.chain] - 1;
+      continue;
+    }
     const bool edge = a.kind == OrganKind::kInternode;
     double length = a.length;
     // The chain's own clock: t, unless an edit shifted it (5.4.1).
     const double tc = edge && shifted ? t + chain_shift_[a.chain] : t;
     if (edge) {
-      const double reach = chain_rate_[a.chain] * (tc - chain_start_[a.chain]) - a.chain_offset;
+      const double reach = (profiled ? grown_length(a.chain, tc)
+                                     : chain_rate_[a.chain] * (tc - chain_start_[a.chain])) -
+                           a.chain_offset;
       if (tc < 1.0 && !(reach > 0.0)) continue;  // not started yet
       // At t = 1 every edge is complete (rounding must not leave one a hair short).
       if (tc < 1.0) length = std::min(reach, length);
@@ -428,7 +503,7 @@ bool DevelopmentalModel::bend(NodeId i, double tc, Eigen::Quaterniond& q) const 
     NodeData d;
     d.kind = a.kind;
     d.order = a.order;
-    d.birth_time = shifted ? a.start_time - birth_shift(i) : a.start_time;
+    d.birth_time = shifted ? a.start_time - chain_shift_[a.chain] : a.start_time;
     d.physiological_age = a.age;
     d.length = length;
     const NodeId pk = p == kNoNode ? kNoNode : stage_id_[p];
@@ -453,18 +528,16 @@ bool DevelopmentalModel::bend(NodeId i, double tc, Eigen::Quaterniond& q) const 
   }
 }
 
-// Organs take the clock of the internode bearing them.
-double DevelopmentalModel::birth_shift(NodeId i) const {
-  while (!is_edge(tree_, i)) i = tree_.parent(i);
-  return chain_shift_[chain_[i]];
-}
-
 // Backward, from the tips: radii by eq. 5.8 (r^u carried, so one root per inner edge). An edge
 // whose subtree is complete has its given radius, which eq. 5.8 gives back by construction of b.
 // Runs over the nodes place_nodes() put in `out` (stage ids follow the given tree's order).
 void DevelopmentalModel::set_radii(TreeGraph& out) const {
   const double inv_u = params_.pipe_exponent == 2.5 ? 0.0 : 1.0 / params_.pipe_exponent;
   below_.assign(out.size(), Below{});
+  for (const auto& [k, pipes] : shed_pipes_) {
+    below_[k].sum += pipes;
+    below_[k].has_child = 1;
+  }
   for (NodeId k = static_cast<NodeId>(out.size()); k-- > 0;) {
     const NodeId i = given_of_[k];
     const RadiusPlan& a = radius_plan_[i];
@@ -515,7 +588,10 @@ void DevelopmentalModel::build_plans() {
     a.length = tree_.length(i);
     a.chain_offset = offset_[i];
     a.start_time = start_time_[i];
-    a.chain = chain_[i];
+    // An organ takes the chain (and clock) of the internode bearing it.
+    NodeId bearer = i;
+    while (!is_edge(tree_, bearer)) bearer = tree_.parent(bearer);
+    a.chain = chain_[bearer];
     a.order = static_cast<std::uint16_t>(level_[i] - 1);
     a.age = tree_.physiological_age(i);
     a.kind = tree_.kind(i);

@@ -29,11 +29,14 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "fspm/tree_graph.hpp"
 #include "stages/added_structures.hpp"
 #include "stages/branch_edits.hpp"
+#include "stages/growth_profile.hpp"
+#include "stages/shed_branches.hpp"
 
 namespace fspm::stages {
 
@@ -59,7 +62,10 @@ struct StagesParams {
   double same_level_tolerance = 0.05;  // 5.2.2: children within 5 % keep the parent's level
   AddedStructuresParams added;         // 5.3.5-5.3.6: branches the young tree had (off)
   BranchEdits edits;                   // 5.4.1: branches aged or copied (none)
-  void validate() const;               // throws ValueError for values out of range
+  // Growth-rate profiles of the chains (5.3.1): eq. 5.3's constant rates, or chosen per chain.
+  ProfileChoice profiles = ProfileChoice::kConstant;
+  ShedBranchesParams shed;  // branches shed before the given tree, from the pipe model (off)
+  void validate() const;    // throws ValueError for values out of range
 };
 
 // Pirk eq. 5.11: seasonal growth rhythm, t in [0, 1] remapped over `years` seasons with
@@ -91,6 +97,10 @@ class DevelopmentalModel {
   // Of those, the copies in the overlap region above the crown base (AddedStructuresParams::
   // overlap), and the height of that region's top (0: none).
   std::size_t overlap_branch_count() const { return added_.overlap_copies; }
+  // Branches shed before the given tree, reconstructed from the pipe model (StagesParams::shed),
+  // and the time each is shed, in the order of their first nodes.
+  std::size_t shed_branch_count() const { return shed_root_.size(); }
+  const std::vector<double>& shed_times() const { return shed_time_; }
   double overlap_top_m() const { return added_.overlap_top_m; }
   const CrownShape& crown() const { return added_.crown; }
   const CrownRatioCurve& crown_ratio_curve() const { return added_.curve; }
@@ -103,6 +113,8 @@ class DevelopmentalModel {
   // Per chain: growth rate (length per unit of t) and the time it starts.
   const std::vector<double>& chain_rate() const { return chain_rate_; }
   const std::vector<double>& chain_start() const { return chain_start_; }
+  // Per chain: its growth profile (constant for every chain unless StagesParams::profiles says).
+  const std::vector<ChainProfile>& chain_profile() const { return chain_profile_; }
   // Per chain: how far its clock runs ahead of t (growth-based editing; empty without edits).
   const std::vector<double>& chain_shift() const { return chain_shift_; }
 
@@ -111,13 +123,22 @@ class DevelopmentalModel {
   void apply_edits();
   bool is_internode(NodeId n) const;
   NodeId edited_branch_base(NodeId node, const char* what) const;
-  std::vector<NodeId> subtree(NodeId base) const;
+  std::vector<NodeId> subtree(NodeId base, NodeId end = kNoNode) const;
   void mark_edited_ancestors(NodeId from);
-  void append_branch_copy(const CopyEdit& edit);
+  // Returns how far the copy's clock runs ahead of its source's (its chain_shift_ minus the
+  // source's); `roll_rad` turns it about the target's heading; `branch`, when given, is the
+  // source's subtree(base) to copy.
+  double append_branch_copy(const CopyEdit& edit, double roll_rad = 0.0,
+                            const std::vector<NodeId>* branch = nullptr);
+  void reconstruct_shed_branches();
   void remove_shed(double t, const TreeGraph& grown, TreeGraph& out) const;
   void assign_levels_and_chains();
   NodeId continuation(NodeId p, const std::vector<NodeId>& edges) const;
   void compute_growth_times();
+  void propagate_growth_times();
+  void choose_chain_profiles();
+  double reach_time(std::uint32_t c, double length_m) const;
+  double grown_length(std::uint32_t c, double tc) const;
   void compute_bending();
   void compute_radius_coefficients();
   void place_nodes(double t, TreeGraph& out) const;
@@ -126,11 +147,16 @@ class DevelopmentalModel {
   void add_tip_leaves(TreeGraph& out) const;
   void build_plans();
   void build_tip_organs();
-  double birth_shift(NodeId i) const;
 
   TreeGraph tree_;  // the given tree, with the added structures appended when they are on
   StagesParams params_;
-  AddedStructures added_;  // its tree is moved into tree_
+  // Branches shed before the given tree (StagesParams::shed): the first node of each copy and
+  // the time it is shed.
+  std::vector<NodeId> shed_root_;
+  std::vector<double> shed_time_;
+  std::vector<double> chain_shed_time_;  // per chain, of a shed branch's first chain (else inf)
+  std::vector<NodeId> chain_shed_end_;   // per such chain, the id after its branch's last node
+  AddedStructures added_;                // its tree is moved into tree_
   NodeId added_end_ = 0;   // nodes added_.first_added..added_end_ - 1 are added structures
   NodeId given_size_ = 0;  // nodes of the given tree
   std::vector<double> chain_shift_;  // per chain, t of its own clock minus t (edits only)
@@ -140,7 +166,9 @@ class DevelopmentalModel {
   std::vector<double> start_time_;        // when the edge starts growing
   std::vector<std::uint8_t> chain_base_;  // first edge of a lateral chain
   std::vector<double> chain_rate_, chain_start_;
-  std::vector<NodeId> chain_last_;  // last edge of each chain
+  std::vector<double> chain_length_;         // per chain
+  std::vector<ChainProfile> chain_profile_;  // per chain (constant: eq. 5.3)
+  std::vector<NodeId> chain_last_;           // last edge of each chain
   // Bending of lateral chain bases (eq. 5.5): axis, final angle minus initial angle, and the
   // time span over which it is made up.
   std::vector<Eigen::Vector3d> bend_axis_;
@@ -155,7 +183,7 @@ class DevelopmentalModel {
   // that do not start at their parent's end need is in a side record.
   struct alignas(64) PlacePlan {
     // What decides whether the node is present comes first.
-    std::uint32_t chain = 0;
+    std::uint32_t chain = 0;       // of an organ, its internode's
     std::uint32_t side = kNoNode;  // index in side_plan_, kNoNode for none
     OrganKind kind = OrganKind::kInternode;
     std::uint8_t chain_base = 0;
@@ -205,6 +233,8 @@ class DevelopmentalModel {
   // chain's last edge (it then carries its chain's tip organs, 5.3.7), else ~0.
   mutable std::vector<std::uint32_t> tip_chain_;
   mutable TreeGraph grown_tree_;  // the stage with every added branch, before shedding
+  // Per shed branch left out of this stage: its parent's stage node and its r^u.
+  mutable std::vector<std::pair<NodeId, double>> shed_pipes_;
   mutable std::vector<NodeId> kept_id_;
 };
 

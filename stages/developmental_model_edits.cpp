@@ -54,12 +54,13 @@ NodeId DevelopmentalModel::edited_branch_base(NodeId node, const char* what) con
   return b;
 }
 
-// `base` and its descendants, in id order (parents first).
-std::vector<NodeId> DevelopmentalModel::subtree(NodeId base) const {
-  std::vector<std::uint8_t> in(tree_.size() - base, 0);
+// `base` and its descendants below node `end` (all by default), in id order (parents first).
+std::vector<NodeId> DevelopmentalModel::subtree(NodeId base, NodeId end) const {
+  end = std::min<NodeId>(end, static_cast<NodeId>(tree_.size()));
+  std::vector<std::uint8_t> in(end - base, 0);
   std::vector<NodeId> out{base};
   in[0] = 1;
-  for (NodeId i = base + 1; i < tree_.size(); ++i) {
+  for (NodeId i = base + 1; i < end; ++i) {
     const NodeId p = tree_.parent(i);
     if (p >= base && in[p - base]) in[i - base] = 1, out.push_back(i);
   }
@@ -76,7 +77,8 @@ void DevelopmentalModel::mark_edited_ancestors(NodeId from) {
 // parent heading to the target's (rigid: the copy meets the target as the source meets its
 // parent), and keeps the source's chains, rates and bends on clocks shifted so that it starts
 // when its parent chain reaches the target end, at the age the source had at its own start.
-void DevelopmentalModel::append_branch_copy(const CopyEdit& edit) {
+double DevelopmentalModel::append_branch_copy(const CopyEdit& edit, double roll_rad,
+                                              const std::vector<NodeId>* branch) {
   const NodeId base = edited_branch_base(edit.branch, "copy");
   const NodeId target = edit.target;
   if (target >= given_size_ || !is_internode(target)) {
@@ -84,13 +86,14 @@ void DevelopmentalModel::append_branch_copy(const CopyEdit& edit) {
                      " is not an internode of the given tree");
   }
   const NodeId sp = tree_.parent(base);
-  const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(heading_[sp], heading_[target]);
+  const Eigen::Quaterniond q = Eigen::Quaterniond(Eigen::AngleAxisd(roll_rad, heading_[target])) *
+                               Eigen::Quaterniond::FromTwoVectors(heading_[sp], heading_[target]);
   const Eigen::Vector3d from = tree_.end(sp), to = tree_.end(target);
   const std::uint32_t cb = chain_[base], ct = chain_[target];
   const double target_reached =
-      std::min(chain_start_[ct] + (offset_[target] + tree_.length(target)) / chain_rate_[ct], 1.0);
+      std::min(reach_time(ct, offset_[target] + tree_.length(target)), 1.0);
   const double shift = (chain_start_[cb] - chain_shift_[cb]) - (target_reached - chain_shift_[ct]);
-  const std::vector<NodeId> nodes = subtree(base);
+  const std::vector<NodeId> nodes = branch ? *branch : subtree(base);
   std::map<NodeId, NodeId> id;
   std::map<std::uint32_t, std::uint32_t> new_chain;
   for (const NodeId k : nodes) {
@@ -105,6 +108,8 @@ void DevelopmentalModel::append_branch_copy(const CopyEdit& edit) {
       auto [it, added] = new_chain.try_emplace(c, static_cast<std::uint32_t>(chain_rate_.size()));
       if (added) {
         chain_rate_.push_back(chain_rate_[c]);
+        chain_length_.push_back(chain_length_[c]);
+        chain_profile_.push_back(chain_profile_[c]);
         chain_start_.push_back(chain_start_[c]);
         chain_last_.push_back(chain_last_[c]);  // remapped below
         chain_shift_.push_back(chain_shift_[c] + shift);
@@ -128,6 +133,7 @@ void DevelopmentalModel::append_branch_copy(const CopyEdit& edit) {
   // A former tip carries the copy's pipes alone (b = 1 in eq. 5.8).
   if (radius_coefficient_[target] == 0.0) radius_coefficient_[target] = 1.0;
   mark_edited_ancestors(target);
+  return shift;
 }
 
 }  // namespace fspm::stages

@@ -210,6 +210,27 @@ def test_developmental_stages_with_added_branches():
         fspm.developmental_model(tree, added=True, added_gamma=0.0)
 
 
+def test_developmental_stages_with_shed_branches():
+    # A vertical trunk of four unit edges with a lateral of two along +x at the end of the third;
+    # tips of 1 cm, the root edge one tip pipe thicker than the trunk above needs (r^2.5 of 3
+    # tips): one shed branch, a copy of the lateral, 8 (t - 0.25) long and shed at t = 0.5
+    # (docs/stages.md; tests/stages/shed_branches_test.cpp).
+    parents = [-1, 0, 1, 2, 2, 4]
+    starts = [(0, 0, 0), (0, 0, 1), (0, 0, 2), (0, 0, 3), (0, 0, 3), (1, 0, 3)]
+    ends = [(0, 0, 1), (0, 0, 2), (0, 0, 3), (0, 0, 4), (1, 0, 3), (2, 0, 3)]
+    pipes = [3, 2, 2, 1, 1, 1]
+    tree = fspm.Tree.from_arrays(np.array(parents), np.array(starts, float), np.array(ends, float),
+                                 radii=np.array([0.01 * p ** 0.4 for p in pipes]))
+    assert fspm.developmental_model(tree).shed_branch_count == 0
+    model = fspm.developmental_model(tree, shed_branches=True, growth_profiles="by_chain")
+    assert model.shed_branch_count == 1
+    assert len(model.stage(0.4)) == 4 and len(model.stage(0.5)) == 2
+    last = model.stage(1.0)
+    assert len(last) == len(tree) and np.allclose(last.radii, tree.radii)
+    with pytest.raises(ValueError):
+        fspm.developmental_model(tree, growth_profiles="linear")
+
+
 def test_read_results_of_a_sweep(tmp_path):
     out = tmp_path / "sweep"
     summary = fspm.run_experiment(str(ROOT / "examples/experiments/branching.toml"), str(out),

@@ -92,6 +92,35 @@ TEST(StagesCli, OneOfAtAndStepsIsRequired) {
 // A branch mesh written by `fspm mesh` is read through its skeleton (Pirk 5.2.1): the skeleton
 // has the given tree's height and about its total internode length, and the last stage is the
 // skeleton.
+// A tree grown with the pipes of its shed branches kept gives --shed-branches something to read
+// back; the last stage is still the given tree. A tree whose radii follow the pipe model gives
+// nothing, and a warning that says how to keep them.
+TEST(StagesCli, ShedBranchesFromKeptPipes) {
+  const auto dir = scratch_dir("stages_shed");
+  const std::string kept = (dir / "kept.treeb").string();
+  auto r = run_fspm("grow --preset B --years 12 --set keep_shed_pipes=true -o " + kept);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_fspm("stages " + kept + " --at 1 --shed-branches --growth-profiles by_chain -o " +
+               (dir / "last.treeb").string() + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(nlohmann::json::parse(r.out)["shed_branches"].get<int>(), 0);
+  const TreeGraph given = read_tree_file(kept);
+  const TreeGraph last = read_tree_file((dir / "last.treeb").string());
+  ASSERT_EQ(last.size(), given.size());
+  for (NodeId i = 0; i < given.size(); ++i) {
+    ASSERT_NEAR(last.radius(i), given.radius(i), 1e-9) << i;
+  }
+  r = run_fspm("stages " + kTree + " --at 0.5 --shed-branches -o " + (dir / "half.treeb").string() +
+               " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["shed_branches"].get<int>(), 0);
+  EXPECT_NE(r.err.find("keep_shed_pipes=true"), std::string::npos) << r.err;
+  r = run_fspm("stages " + kTree + " --at 0.5 --growth-profiles linear -o " +
+               (dir / "bad.treeb").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("by_chain"), std::string::npos) << r.err;
+}
+
 TEST(StagesCli, BranchMeshThroughItsSkeleton) {
   const auto dir = scratch_dir("stages_mesh");
   const std::string mesh = (dir / "tree.ply").string();
