@@ -11,8 +11,10 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/cpu_time.hpp"
 #include "cli/enum_option.hpp"
 #include "cli/output.hpp"
+#include "environment/leaf_light_model.hpp"
 #include "environment/plastic_adaptation.hpp"
 #include "environment/scene_file.hpp"
 #include "environment/tree_analysis.hpp"
@@ -24,7 +26,8 @@ namespace fspm::cli {
 namespace {
 
 constexpr environment::ClusterLightModel kClusterLightModels[] = {
-    environment::ClusterLightModel::kSky, environment::ClusterLightModel::kShadowGrid};
+    environment::ClusterLightModel::kCanopy, environment::ClusterLightModel::kSky,
+    environment::ClusterLightModel::kShadowGrid};
 
 struct AdaptOptions {
   std::vector<std::string> trees;
@@ -41,7 +44,8 @@ struct AdaptOptions {
   bool together = false;
   bool temporal = false;
   bool absolute_pruning = false;
-  environment::ClusterLightModel light_model = environment::ClusterLightModel::kSky;
+  environment::ClusterLightModel light_model = environment::ClusterLightModel::kCanopy;
+  std::string canopy_model = environment::kAdaptationLeafLightModel;
   bool json = false;
 };
 
@@ -87,6 +91,7 @@ environment::AnalysisParams analysis_params(const AdaptOptions& o) {
   params.temporal_pruning = o.temporal;
   params.relative_pruning = !o.absolute_pruning;
   params.light_model = o.light_model;
+  params.canopy_model = o.canopy_model;
   return params;
 }
 
@@ -100,13 +105,15 @@ Eigen::Vector3d grown_brightest(const AdaptOptions& o, const environment::Scene&
   return b.normalized();
 }
 
-// The trees adapted to one scene, each alone or all together, with the seconds each took.
+// The trees adapted to one scene, each alone or all together, with the seconds each took (wall
+// clock, and CPU time of the thread).
 std::vector<environment::AdaptationResult> adapt_to_scene(
     const AdaptOptions& o, const std::vector<TreeGraph>& trees,
     const std::vector<environment::TreeAnalysis>& analyses, const environment::Scene& scene,
-    std::vector<double>& seconds) {
+    std::vector<double>& seconds, std::vector<double>& cpu_seconds) {
   std::vector<environment::AdaptationResult> adapted;
   seconds.clear();
+  cpu_seconds.clear();
   if (o.together) {
     // Tree-tree interaction: lock-step adaptation in one light field (Pirk 4.4.3).
     std::vector<const TreeGraph*> tp;
@@ -116,15 +123,20 @@ std::vector<environment::AdaptationResult> adapt_to_scene(
       ap.push_back(&analyses[k]);
     }
     const auto t0 = std::chrono::steady_clock::now();
+    const double c0 = thread_cpu_seconds();
     adapted = environment::adapt_trees(tp, ap, scene);
     const double total = seconds_since(t0);
     seconds.assign(trees.size(), total / static_cast<double>(trees.size()));
+    cpu_seconds.assign(trees.size(),
+                       (thread_cpu_seconds() - c0) / static_cast<double>(trees.size()));
     return adapted;
   }
   for (std::size_t k = 0; k < trees.size(); ++k) {
     const auto t0 = std::chrono::steady_clock::now();
+    const double c0 = thread_cpu_seconds();
     adapted.push_back(environment::adapt_tree(trees[k], analyses[k], scene));
     seconds.push_back(seconds_since(t0));
+    cpu_seconds.push_back(thread_cpu_seconds() - c0);
   }
   return adapted;
 }
@@ -133,7 +145,7 @@ nlohmann::json json_vector(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z
 
 nlohmann::json adapted_json(const environment::AdaptationResult& r, const std::string& input,
                             const std::string& output, std::size_t nodes, double seconds,
-                            double analysis_seconds) {
+                            double cpu_seconds, double analysis_seconds) {
   return {{"input", input},
           {"output", output},
           {"nodes", nodes},
@@ -143,6 +155,7 @@ nlohmann::json adapted_json(const environment::AdaptationResult& r, const std::s
           {"pruned_centroid", json_vector(r.pruned_centroid)},
           {"internode_centroid", json_vector(r.internode_centroid)},
           {"seconds", seconds},
+          {"cpu_seconds", cpu_seconds},
           {"analysis_seconds", analysis_seconds}};
 }
 
@@ -177,17 +190,17 @@ void run_adapt(const AdaptOptions& o) {
 
   nlohmann::json results = nlohmann::json::array();
   for (std::size_t s = 0; s < scenes.size(); ++s) {
-    std::vector<double> seconds;
+    std::vector<double> seconds, cpu_seconds;
     const std::vector<environment::AdaptationResult> adapted =
-        adapt_to_scene(o, trees, analyses, scenes[s], seconds);
+        adapt_to_scene(o, trees, analyses, scenes[s], seconds, cpu_seconds);
     for (std::size_t k = 0; k < trees.size(); ++k) {
       const environment::AdaptationResult& r = adapted[k];
       const std::string& output = outputs[s][k];
       // The adapted tree as it stands: pruned branches gone unless asked to keep them flagged.
       write_tree_file(o.keep_pruned ? r.tree : environment::remove_pruned(r.tree), output,
                       o.format);
-      nlohmann::json item =
-          adapted_json(r, o.trees[k], output, trees[k].size(), seconds[k], analysis_seconds[k]);
+      nlohmann::json item = adapted_json(r, o.trees[k], output, trees[k].size(), seconds[k],
+                                         cpu_seconds[k], analysis_seconds[k]);
       if (several_scenes) {
         item["scene"] = o.scenes[s];
         item["light_evaluations"] = r.light_evaluations;
@@ -244,8 +257,12 @@ void add_adapt_commands(CLI::App& app) {
       +[](environment::ClusterLightModel m) -> std::string_view {
         return environment::cluster_light_model_name(m);
       },
-      "Cluster light: sky (hemisphere with the clusters as caps) or shadow_grid "
-      "(Palubicki's voxel shade, faster)");
+      "Cluster light: canopy (the leaves as turbid media, --canopy-model), sky (hemisphere "
+      "with the clusters as caps, Pirk eq. 4.3) or shadow_grid (Palubicki's voxel shade)");
+  a->add_option(
+       "--canopy-model", opt->canopy_model,
+       "Leaf light model of --light-model canopy: " + environment::leaf_light_model_names())
+      ->capture_default_str();
   a->add_flag("--together", opt->together,
               "Trees shade each other, adapted in lock-step (world coordinates, Pirk 4.4.3)");
   a->add_flag("--keep-pruned", opt->keep_pruned,
