@@ -90,15 +90,30 @@ void CanopySweep::bin(std::span<const Sphere> clusters, std::span<const Eigen::V
         }
       }
     }
+    // Per axis and voxel the nearer and farther of its two samples: a voxel whose farther
+    // samples are all inside counts 8 at once, one whose nearer samples are all outside 0.
+    for (int k = 0; k < 3; ++k) {
+      near2_[k].clear();
+      far2_[k].clear();
+      for (std::size_t i = 0; i < offset2_[k].size(); i += 2) {
+        near2_[k].push_back(std::min(offset2_[k][i], offset2_[k][i + 1]));
+        far2_[k].push_back(std::max(offset2_[k][i], offset2_[k][i + 1]));
+      }
+    }
     inside_.clear();
     int count = 0;
     const std::vector<double>&ox = offset2_[0], &oy = offset2_[1], &oz = offset2_[2];
-    for (std::size_t z = 0; z < oz.size(); z += 2) {
-      for (std::size_t y = 0; y < oy.size(); y += 2) {
-        for (std::size_t x = 0; x < ox.size(); x += 2) {
+    for (std::size_t z = 0; z < near2_[2].size(); ++z) {
+      for (std::size_t y = 0; y < near2_[1].size(); ++y) {
+        const double near_yz = near2_[1][y] + near2_[2][z], far_yz = far2_[1][y] + far2_[2][z];
+        for (std::size_t x = 0; x < near2_[0].size(); ++x) {
           int in = 0;
-          for (int s = 0; s < 8; ++s) {
-            in += ox[x + (s & 1)] + oy[y + ((s >> 1) & 1)] + oz[z + (s >> 2)] < r2;
+          if (far2_[0][x] + far_yz < r2) {
+            in = 8;
+          } else if (near2_[0][x] + near_yz < r2) {
+            for (int s = 0; s < 8; ++s) {
+              in += ox[2 * x + (s & 1)] + oy[2 * y + ((s >> 1) & 1)] + oz[2 * z + (s >> 2)] < r2;
+            }
           }
           inside_.push_back(static_cast<std::uint8_t>(in));
           count += in;
@@ -120,6 +135,18 @@ void CanopySweep::bin(std::span<const Sphere> clusters, std::span<const Eigen::V
           if (inside_[k] != 0)
             kappa_[index(x, y, z)] += static_cast<float>(per_sample * inside_[k]);
         }
+      }
+    }
+  }
+  // Which rows along x (per z, y) and along y (per z, x) hold leaves, for sweep().
+  row_leaves_x_.assign(static_cast<std::size_t>(n_.z()) * n_.y(), 0);
+  row_leaves_y_.assign(static_cast<std::size_t>(n_.z()) * n_.x(), 0);
+  for (int z = 0; z < n_.z(); ++z) {
+    for (int y = 0; y < n_.y(); ++y) {
+      for (int x = 0; x < n_.x(); ++x) {
+        if (kappa_[index(x, y, z)] == 0.0f) continue;
+        row_leaves_x_[static_cast<std::size_t>(z) * n_.y() + y] = 1;
+        row_leaves_y_[static_cast<std::size_t>(z) * n_.x() + x] = 1;
       }
     }
   }
@@ -153,12 +180,27 @@ void CanopySweep::sweep(const Eigen::Vector3d& d) {
   const int ma = n_[a] - 2, mb = n_[b] - 2, mc = n_[c] - 2;
   float* A = a_.data();
   const float* K = kappa_.data();
+  // Rows with no leaves and no shade-carrying upstream rows stay zero: they are cleared, not
+  // swept (the space around the crown and beside its shadow).
+  row_lit_.assign(static_cast<std::size_t>(n_[a]) * n_[c], 0);
+  const auto leafy = [&](int ia, int ic) -> bool {
+    if (a == 2) return row_leaves_x_[static_cast<std::size_t>(ia) * n_.y() + ic] != 0;
+    if (a == 1) return row_leaves_x_[static_cast<std::size_t>(ic) * n_.y() + ia] != 0;
+    return row_leaves_y_[static_cast<std::size_t>(ic) * n_.x() + ia] != 0;
+  };
   for (int s = 0; s < ma; ++s) {
     const int ia = sa > 0 ? ma - s : 1 + s;
     for (int ic = 1; ic <= mc; ++ic) {
       const std::ptrdiff_t row = ia * stride[a] + ic * sc + sb;
+      const std::size_t up_row = static_cast<std::size_t>(ia + sa) * n_[c] + (ic + oc);
+      const bool lit = leafy(ia, ic) || row_lit_[up_row] != 0 || row_lit_[up_row + 1] != 0;
       // The upstream layer is another layer: no aliasing within a row.
       float* __restrict out = A + row;
+      if (!lit) {
+        for (int ib = 0; ib < mb; ++ib) out[ib * sb] = 0.0f;
+        continue;
+      }
+      row_lit_[static_cast<std::size_t>(ia) * n_[c] + ic] = 1;
       const float* __restrict in = A + row + up;
       const float* __restrict k = K + row;
       if (sb == 1) {

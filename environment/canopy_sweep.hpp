@@ -22,7 +22,7 @@
 
 namespace fspm::environment {
 
-inline constexpr double kCanopySweepVoxel_m = 0.4;
+inline constexpr double kCanopySweepVoxel_m = 0.5;
 
 class CanopySweep {
  public:
@@ -60,7 +60,10 @@ class CanopySweep {
   // Per voxel: depth + half the step times its extinction (the trapezoid's upstream term).
   std::vector<float> a_;
   std::vector<std::uint8_t> inside_;  // scratch of bin()
-  std::vector<double> offset2_[3];
+  // Rows along x (index z * n_.y + y) and along y (z * n_.x + x) that hold leaves, and the rows
+  // of the current sweep that carry shade.
+  std::vector<std::uint8_t> row_leaves_x_, row_leaves_y_, row_lit_;
+  std::vector<double> offset2_[3], near2_[3], far2_[3];  // scratch of bin()
 };
 
 }  // namespace fspm::environment

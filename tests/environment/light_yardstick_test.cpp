@@ -137,10 +137,10 @@ TEST(LightYardstick, ClusterLightAgainstRayTracedLeaves) {
       for (std::size_t c = 0; c < n; ++c) out[c] = lit[c].light;
     };
     t0 = std::chrono::steady_clock::now();
-    sweep_at(0.2, sweep_fine);
+    sweep_at(0.25, sweep_fine);
     const double sweep_fine_s = seconds_since(t0);
     t0 = std::chrono::steady_clock::now();
-    sweep_at(0.5, sweep_coarse);
+    sweep_at(0.4, sweep_coarse);
     const double sweep_coarse_s = seconds_since(t0);
     t0 = std::chrono::steady_clock::now();
     make_leaf_light_model("turbid", sky64)->evaluate(g.cluster_spheres, {}, lit);
@@ -164,9 +164,9 @@ TEST(LightYardstick, ClusterLightAgainstRayTracedLeaves) {
                 {"turbid medium, centre, 0.1 m voxels", voxel_light, voxel_s},
                 {"shadow grid per cluster", grid_light, grid_s},
                 {"turbid, 64 directions", turbid64, turbid64_s},
-                {"sweep 0.4 m, 64 dirs (canopy)", sweep_light, sweep_s},
-                {"sweep 0.2 m, 64 dirs", sweep_fine, sweep_fine_s},
-                {"sweep 0.5 m, 64 dirs", sweep_coarse, sweep_coarse_s}};
+                {"sweep 0.5 m, 64 dirs (canopy)", sweep_light, sweep_s},
+                {"sweep 0.25 m, 64 dirs", sweep_fine, sweep_fine_s},
+                {"sweep 0.4 m, 64 dirs", sweep_coarse, sweep_coarse_s}};
     Agreement best_old, leaf, sweep;
     for (const auto& row : rows) {
       const Agreement a = compare(row.values, truth);
@@ -177,10 +177,10 @@ TEST(LightYardstick, ClusterLightAgainstRayTracedLeaves) {
       if (&row.values == &sweep_light) sweep = a;
     }
     // The adaptation's default cluster light (the sweep) is nearer the traced leaves than eq. 4.3
-    // at the centre (the adaptation's `sky`), and ranks the clusters nearly as well as the leaf
-    // light.
+    // at the centre (the adaptation's `sky`), and ranks the clusters better than it.
     EXPECT_LT(sweep.mae, best_old.mae) << type;
-    EXPECT_GT(sweep.r, 0.75) << type;
+    EXPECT_GT(sweep.r, 0.7) << type;
+    EXPECT_GT(sweep.r, best_old.r) << type;
     // The leaf light is nearer the traced leaves than eq. 4.3 at the centre, and ranks the
     // clusters as they do.
     EXPECT_LT(leaf.mae, best_old.mae) << type;
