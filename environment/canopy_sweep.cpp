@@ -15,11 +15,7 @@ namespace {
 // dark at any voxel size used).
 constexpr double kMaxExtinction = 100.0;
 
-// Trilinear corner and fractions of a point in the grid of voxel centres.
-struct Cell {
-  std::size_t base = 0;
-  float fx = 0.0f, fy = 0.0f, fz = 0.0f;
-};
+using Cell = CanopySweep::Cell;
 
 float trilinear(const std::vector<float>& v, const Cell& c, std::size_t sy, std::size_t sz) {
   const float* p = v.data() + c.base;
@@ -219,41 +215,67 @@ void CanopySweep::sweep(const Eigen::Vector3d& d) {
   }
 }
 
+void CanopySweep::prepare(std::span<const Sphere> clusters,
+                          std::span<const Eigen::Vector3d> points) {
+  bin(clusters, points);
+  const std::size_t sy = static_cast<std::size_t>(n_.x());
+  const std::size_t sz = sy * static_cast<std::size_t>(n_.y());
+  cells_.resize(points.size());
+  kappa_at_.resize(points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const Eigen::Vector3d f = (points[k] - lo_) / h_;
+    Eigen::Vector3i i;
+    for (int j = 0; j < 3; ++j) i[j] = std::clamp(static_cast<int>(std::floor(f[j])), 0, n_[j] - 3);
+    cells_[k] = {index(i.x() + 1, i.y() + 1, i.z() + 1), static_cast<float>(f.x() - i.x()),
+                 static_cast<float>(f.y() - i.y()), static_cast<float>(f.z() - i.z())};
+    kappa_at_[k] = trilinear(kappa_, cells_[k], sy, sz);
+  }
+}
+
+void CanopySweep::transmit(const Eigen::Vector3d& d, std::span<float> out) {
+  sweep(d);
+  const std::size_t sy = static_cast<std::size_t>(n_.x());
+  const std::size_t sz = sy * static_cast<std::size_t>(n_.y());
+  const auto half = static_cast<float>(0.5 * h_ / d.cwiseAbs().maxCoeff());
+  for (std::size_t k = 0; k < cells_.size(); ++k) {
+    const float tau = std::max(0.0f, trilinear(a_, cells_[k], sy, sz) - half * kappa_at_[k]);
+    out[k] = std::exp(-tau);
+  }
+}
+
+void CanopySweep::transmissions(std::span<const Sphere> clusters,
+                                std::span<const Eigen::Vector3d> points,
+                                std::span<const Eigen::Vector3d> directions, std::span<float> out) {
+  if (points.empty()) return;
+  prepare(clusters, points);
+  const std::size_t np = points.size();
+  for (std::size_t i = 0; i < directions.size(); ++i) {
+    transmit(directions[i], out.subspan(i * np, np));
+  }
+}
+
 void CanopySweep::evaluate(std::span<const Sphere> clusters,
                            std::span<const Eigen::Vector3d> points,
                            std::span<const std::span<const float>> visibility,
                            std::span<LightSample> out) {
   const std::size_t np = points.size();
   if (np == 0) return;
-  bin(clusters, points);
-  const std::size_t sy = static_cast<std::size_t>(n_.x());
-  const std::size_t sz = sy * static_cast<std::size_t>(n_.y());
-  std::vector<Cell> cells(np);
-  std::vector<float> kappa_at(np);
-  for (std::size_t k = 0; k < np; ++k) {
-    const Eigen::Vector3d f = (points[k] - lo_) / h_;
-    Eigen::Vector3i i;
-    for (int j = 0; j < 3; ++j) i[j] = std::clamp(static_cast<int>(std::floor(f[j])), 0, n_[j] - 3);
-    cells[k] = {index(i.x() + 1, i.y() + 1, i.z() + 1), static_cast<float>(f.x() - i.x()),
-                static_cast<float>(f.y() - i.y()), static_cast<float>(f.z() - i.z())};
-    kappa_at[k] = trilinear(kappa_, cells[k], sy, sz);
-  }
+  prepare(clusters, points);
   std::vector<double> sum(np, 0.0);
   std::vector<Eigen::Vector3d> moment(np, Eigen::Vector3d::Zero());
+  std::vector<float> t(np);
   for (int i = 0; i < dirs_.size(); ++i) {
     const double w = weight_[static_cast<std::size_t>(i)];
     if (w <= 0.0) continue;
     const Eigen::Vector3d& d = dirs_.direction(i);
-    sweep(d);
-    const double half = 0.5 * h_ / d.cwiseAbs().maxCoeff();
+    transmit(d, t);
     for (std::size_t k = 0; k < np; ++k) {
-      const float tau =
-          std::max(0.0f, trilinear(a_, cells[k], sy, sz) - static_cast<float>(half) * kappa_at[k]);
-      double t = w * std::exp(-tau);
-      if (!visibility.empty() && !visibility[k].empty())
-        t *= visibility[k][static_cast<std::size_t>(i)];
-      sum[k] += t;
-      moment[k] += t * d;
+      double v = w * t[k];
+      if (!visibility.empty() && !visibility[k].empty()) {
+        v *= visibility[k][static_cast<std::size_t>(i)];
+      }
+      sum[k] += v;
+      moment[k] += v * d;
     }
   }
   for (std::size_t k = 0; k < np; ++k) {

@@ -37,10 +37,25 @@ class CanopySweep {
   void evaluate(std::span<const Sphere> clusters, std::span<const Eigen::Vector3d> points,
                 std::span<const std::span<const float>> visibility, std::span<LightSample> out);
 
+  // Transmission through the clusters from every point along each of `directions` (unit, z > 0):
+  // out[i * points.size() + k] for direction i at point k (the sun's beam at every step of a day).
+  void transmissions(std::span<const Sphere> clusters, std::span<const Eigen::Vector3d> points,
+                     std::span<const Eigen::Vector3d> directions, std::span<float> out);
+
   const HemisphereDirections& directions() const { return dirs_; }
   double voxel_m() const { return h_; }
 
+  // Trilinear corner and fractions of a point in the grid of voxel centres.
+  struct Cell {
+    std::size_t base = 0;
+    float fx = 0.0f, fy = 0.0f, fz = 0.0f;
+  };
+
  private:
+  // Bins the clusters and locates the points.
+  void prepare(std::span<const Sphere> clusters, std::span<const Eigen::Vector3d> points);
+  // Transmission at every prepared point along d.
+  void transmit(const Eigen::Vector3d& d, std::span<float> out);
   void bin(std::span<const Sphere> clusters, std::span<const Eigen::Vector3d> points);
   void sweep(const Eigen::Vector3d& d);
   std::size_t index(int x, int y, int z) const {
@@ -59,6 +74,8 @@ class CanopySweep {
   std::vector<float> kappa_;  // extinction per metre
   // Per voxel: depth + half the step times its extinction (the trapezoid's upstream term).
   std::vector<float> a_;
+  std::vector<Cell> cells_;           // per prepared point
+  std::vector<float> kappa_at_;       // the extinction interpolated at each prepared point
   std::vector<std::uint8_t> inside_;  // scratch of bin()
   // Rows along x (index z * n_.y + y) and along y (z * n_.x + x) that hold leaves, and the rows
   // of the current sweep that carry shade.

@@ -41,6 +41,23 @@ std::unique_ptr<LeafLightModel> make_leaf_light_model(const std::string& name, c
                    leaf_light_model_names() + ")");
 }
 
+double obstacle_transmission(const Scene& scene, const Eigen::Vector3d& p,
+                             const Eigen::Vector3d& d) {
+  double t = 1.0;
+  if (scene.ground && p.z() < scene.ground->height_m) t *= scene.ground->translucency;
+  for (const Sphere& o : scene.spheres) {
+    if (ray_hits_sphere(p, d, o.center, o.radius_m)) t *= o.translucency;
+  }
+  for (const Box& b : scene.boxes) {
+    if (b.ray_entry(p, d) >= 0.0) t *= b.translucency;
+  }
+  for (const TriangleMesh& m : scene.meshes) {
+    const int n = m.crossings(p, d);
+    if (n > 0) t *= std::pow(m.translucency, n);
+  }
+  return t;
+}
+
 std::vector<float> obstacle_visibility(const Scene& scene, const HemisphereDirections& dirs,
                                        const Eigen::Vector3d& p) {
   const bool any = !scene.spheres.empty() || !scene.boxes.empty() || !scene.meshes.empty() ||
@@ -49,19 +66,7 @@ std::vector<float> obstacle_visibility(const Scene& scene, const HemisphereDirec
   std::vector<float> vis(static_cast<std::size_t>(dirs.size()), 1.0f);
   bool shaded = false;
   for (int i = 0; i < dirs.size(); ++i) {
-    const Eigen::Vector3d& d = dirs.direction(i);
-    double t = 1.0;
-    if (scene.ground && p.z() < scene.ground->height_m) t *= scene.ground->translucency;
-    for (const Sphere& o : scene.spheres) {
-      if (ray_hits_sphere(p, d, o.center, o.radius_m)) t *= o.translucency;
-    }
-    for (const Box& b : scene.boxes) {
-      if (b.ray_entry(p, d) >= 0.0) t *= b.translucency;
-    }
-    for (const TriangleMesh& m : scene.meshes) {
-      const int n = m.crossings(p, d);
-      if (n > 0) t *= std::pow(m.translucency, n);
-    }
+    const double t = obstacle_transmission(scene, p, dirs.direction(i));
     vis[static_cast<std::size_t>(i)] = static_cast<float>(t);
     shaded = shaded || t < 1.0;
   }

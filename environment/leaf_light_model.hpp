@@ -52,5 +52,8 @@ inline constexpr const char* kAdaptationLeafLightModel = "sweep";
 // multiplying by its translucency (eq. 4.3); empty when nothing is in the way.
 std::vector<float> obstacle_visibility(const Scene& scene, const HemisphereDirections& dirs,
                                        const Eigen::Vector3d& p);
+// The same along one unit direction d.
+double obstacle_transmission(const Scene& scene, const Eigen::Vector3d& p,
+                             const Eigen::Vector3d& d);
 
 }  // namespace fspm::environment
