@@ -17,6 +17,7 @@
 #include "environment/leaf_light_model.hpp"
 #include "environment/plastic_adaptation.hpp"
 #include "environment/scene_file.hpp"
+#include "environment/site_sky.hpp"
 #include "environment/tree_analysis.hpp"
 #include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
@@ -39,6 +40,7 @@ struct AdaptOptions {
   double phototropism = 0.25;
   double gravitropism = 0.12;
   std::vector<double> grown_brightest;
+  std::string sky_file;
   bool keep_pruned = false;
   bool remove_pruned = true;  // the default; the flag only confirms it
   bool together = false;
@@ -164,6 +166,13 @@ void run_adapt(const AdaptOptions& o) {
   for (const std::string& path : o.scenes) scenes.push_back(environment::read_scene_file(path));
   const environment::AnalysisParams params = analysis_params(o);
   const Eigen::Vector3d brightest = grown_brightest(o, scenes.front());
+  if (!o.sky_file.empty()) {
+    // A real sky: every scene's brightest point becomes its mean light direction; the trees grew
+    // under the scene's own sky (or --grown-brightest), so this is a global light change.
+    const Eigen::Vector3d real =
+        environment::mean_light_direction(environment::read_site_sky_file(o.sky_file));
+    for (environment::Scene& scene : scenes) scene.sky.brightest = real;
+  }
   const bool many = o.trees.size() > 1;
   const bool several_scenes = scenes.size() > 1;
   std::vector<std::vector<std::string>> outputs;  // per scene, per tree
@@ -248,6 +257,9 @@ void add_adapt_commands(CLI::App& app) {
                 "Brightest sky direction x y z the trees grew under (default: the scene's)")
       ->expected(3)
       ->check(number_in(-1e6, 1e6));
+  a->add_option("--sky", opt->sky_file,
+                "TOML file with sky = { site = { latitude, longitude, elevation }, date, "
+                "hours | days }: the scenes' sky becomes that real sky's mean light direction");
   a->add_flag("--temporal-pruning", opt->temporal,
               "Pruning thresholds over all earlier growth stages (eq. 4.5), not the final one");
   a->add_flag("--absolute-pruning", opt->absolute_pruning,
