@@ -11,6 +11,7 @@
 #include "environment/canopy_light.hpp"
 #include "environment/daylight.hpp"
 #include "environment/growth_model.hpp"
+#include "environment/leaf_light_model.hpp"
 #include "tests/environment/leaf_ray_tracer.hpp"
 
 namespace {
@@ -62,6 +63,24 @@ void BM_CanopyDaylight30YearA(benchmark::State& state) {  // arg: voxel size in 
 }
 BENCHMARK(BM_CanopyDaylight30YearA)->Arg(0)->Arg(10)->Arg(15)->Unit(benchmark::kMillisecond);
 
+// The same day through the crown swept in voxels (daylight_through_voxels, CanopySweep; arg: voxel
+// size in cm): one sweep per sky direction and per step with the sun up.
+void BM_CanopyDaylightSweep30YearA(benchmark::State& state) {
+  const GrowthResult& g = tree_a30();
+  RealSky sky;
+  sky.site = {45.0, 7.0, 300.0, 1.0};
+  sky.date = {2024, 6, 21};
+  std::vector<Eigen::Vector3d> centres;
+  for (const Sphere& c : g.cluster_spheres) centres.push_back(c.center);
+  for (auto _ : state) {
+    auto out = daylight_through_voxels(g.cluster_spheres, leaf_sky(), sky, centres,
+                                       0.01 * static_cast<double>(state.range(0)));
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.counters["clusters"] = static_cast<double>(g.cluster_spheres.size());
+}
+BENCHMARK(BM_CanopyDaylightSweep30YearA)->Arg(50)->Arg(25)->Unit(benchmark::kMillisecond);
+
 // The yardstick: ray tracing the leaves and wood of the 15-year type-A tree (16 leaves and 64 rays
 // per cluster), against the turbid medium's light for the same clusters (counter `ratio`).
 void BM_LightYardstick15YearA(benchmark::State& state) {
@@ -88,8 +107,21 @@ void BM_LightYardstick15YearA(benchmark::State& state) {
   }
   const double canopy_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / kRuns;
+  // The adaptation's default leaf light (the sweep in 0.5 m voxels, 64 directions).
+  Sky sky64;
+  sky64.directions = 64;
+  const auto sweep = make_leaf_light_model("sweep", sky64);
+  std::vector<LightSample> lit(g.cluster_spheres.size());
+  const auto t1 = std::chrono::steady_clock::now();
+  for (int k = 0; k < kRuns; ++k) {
+    sweep->evaluate(g.cluster_spheres, {}, lit);
+    benchmark::DoNotOptimize(lit.data());
+  }
+  const double sweep_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count() / kRuns;
   state.counters["clusters"] = static_cast<double>(g.cluster_spheres.size());
   state.counters["canopy_ms"] = 1e3 * canopy_s;
+  state.counters["sweep_ms"] = 1e3 * sweep_s;
 }
 BENCHMARK(BM_LightYardstick15YearA)->Unit(benchmark::kMillisecond);
 

@@ -11,10 +11,13 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/cpu_time.hpp"
 #include "cli/enum_option.hpp"
 #include "cli/output.hpp"
+#include "environment/leaf_light_model.hpp"
 #include "environment/plastic_adaptation.hpp"
 #include "environment/scene_file.hpp"
+#include "environment/site_sky.hpp"
 #include "environment/tree_analysis.hpp"
 #include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
@@ -24,7 +27,8 @@ namespace fspm::cli {
 namespace {
 
 constexpr environment::ClusterLightModel kClusterLightModels[] = {
-    environment::ClusterLightModel::kSky, environment::ClusterLightModel::kShadowGrid};
+    environment::ClusterLightModel::kCanopy, environment::ClusterLightModel::kSky,
+    environment::ClusterLightModel::kShadowGrid};
 
 struct AdaptOptions {
   std::vector<std::string> trees;
@@ -36,12 +40,14 @@ struct AdaptOptions {
   double phototropism = 0.25;
   double gravitropism = 0.12;
   std::vector<double> grown_brightest;
+  std::string sky_file;
   bool keep_pruned = false;
   bool remove_pruned = true;  // the default; the flag only confirms it
   bool together = false;
   bool temporal = false;
   bool absolute_pruning = false;
-  environment::ClusterLightModel light_model = environment::ClusterLightModel::kSky;
+  environment::ClusterLightModel light_model = environment::ClusterLightModel::kCanopy;
+  std::string canopy_model = environment::kAdaptationLeafLightModel;
   bool json = false;
 };
 
@@ -87,6 +93,7 @@ environment::AnalysisParams analysis_params(const AdaptOptions& o) {
   params.temporal_pruning = o.temporal;
   params.relative_pruning = !o.absolute_pruning;
   params.light_model = o.light_model;
+  params.canopy_model = o.canopy_model;
   return params;
 }
 
@@ -100,13 +107,15 @@ Eigen::Vector3d grown_brightest(const AdaptOptions& o, const environment::Scene&
   return b.normalized();
 }
 
-// The trees adapted to one scene, each alone or all together, with the seconds each took.
+// The trees adapted to one scene, each alone or all together, with the seconds each took (wall
+// clock, and CPU time of the thread).
 std::vector<environment::AdaptationResult> adapt_to_scene(
     const AdaptOptions& o, const std::vector<TreeGraph>& trees,
     const std::vector<environment::TreeAnalysis>& analyses, const environment::Scene& scene,
-    std::vector<double>& seconds) {
+    std::vector<double>& seconds, std::vector<double>& cpu_seconds) {
   std::vector<environment::AdaptationResult> adapted;
   seconds.clear();
+  cpu_seconds.clear();
   if (o.together) {
     // Tree-tree interaction: lock-step adaptation in one light field (Pirk 4.4.3).
     std::vector<const TreeGraph*> tp;
@@ -116,15 +125,20 @@ std::vector<environment::AdaptationResult> adapt_to_scene(
       ap.push_back(&analyses[k]);
     }
     const auto t0 = std::chrono::steady_clock::now();
+    const double c0 = thread_cpu_seconds();
     adapted = environment::adapt_trees(tp, ap, scene);
     const double total = seconds_since(t0);
     seconds.assign(trees.size(), total / static_cast<double>(trees.size()));
+    cpu_seconds.assign(trees.size(),
+                       (thread_cpu_seconds() - c0) / static_cast<double>(trees.size()));
     return adapted;
   }
   for (std::size_t k = 0; k < trees.size(); ++k) {
     const auto t0 = std::chrono::steady_clock::now();
+    const double c0 = thread_cpu_seconds();
     adapted.push_back(environment::adapt_tree(trees[k], analyses[k], scene));
     seconds.push_back(seconds_since(t0));
+    cpu_seconds.push_back(thread_cpu_seconds() - c0);
   }
   return adapted;
 }
@@ -133,7 +147,7 @@ nlohmann::json json_vector(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z
 
 nlohmann::json adapted_json(const environment::AdaptationResult& r, const std::string& input,
                             const std::string& output, std::size_t nodes, double seconds,
-                            double analysis_seconds) {
+                            double cpu_seconds, double analysis_seconds) {
   return {{"input", input},
           {"output", output},
           {"nodes", nodes},
@@ -143,6 +157,7 @@ nlohmann::json adapted_json(const environment::AdaptationResult& r, const std::s
           {"pruned_centroid", json_vector(r.pruned_centroid)},
           {"internode_centroid", json_vector(r.internode_centroid)},
           {"seconds", seconds},
+          {"cpu_seconds", cpu_seconds},
           {"analysis_seconds", analysis_seconds}};
 }
 
@@ -151,6 +166,13 @@ void run_adapt(const AdaptOptions& o) {
   for (const std::string& path : o.scenes) scenes.push_back(environment::read_scene_file(path));
   const environment::AnalysisParams params = analysis_params(o);
   const Eigen::Vector3d brightest = grown_brightest(o, scenes.front());
+  if (!o.sky_file.empty()) {
+    // A real sky: every scene's brightest point becomes its mean light direction; the trees grew
+    // under the scene's own sky (or --grown-brightest), so this is a global light change.
+    const Eigen::Vector3d real =
+        environment::mean_light_direction(environment::read_site_sky_file(o.sky_file));
+    for (environment::Scene& scene : scenes) scene.sky.brightest = real;
+  }
   const bool many = o.trees.size() > 1;
   const bool several_scenes = scenes.size() > 1;
   std::vector<std::vector<std::string>> outputs;  // per scene, per tree
@@ -177,17 +199,17 @@ void run_adapt(const AdaptOptions& o) {
 
   nlohmann::json results = nlohmann::json::array();
   for (std::size_t s = 0; s < scenes.size(); ++s) {
-    std::vector<double> seconds;
+    std::vector<double> seconds, cpu_seconds;
     const std::vector<environment::AdaptationResult> adapted =
-        adapt_to_scene(o, trees, analyses, scenes[s], seconds);
+        adapt_to_scene(o, trees, analyses, scenes[s], seconds, cpu_seconds);
     for (std::size_t k = 0; k < trees.size(); ++k) {
       const environment::AdaptationResult& r = adapted[k];
       const std::string& output = outputs[s][k];
       // The adapted tree as it stands: pruned branches gone unless asked to keep them flagged.
       write_tree_file(o.keep_pruned ? r.tree : environment::remove_pruned(r.tree), output,
                       o.format);
-      nlohmann::json item =
-          adapted_json(r, o.trees[k], output, trees[k].size(), seconds[k], analysis_seconds[k]);
+      nlohmann::json item = adapted_json(r, o.trees[k], output, trees[k].size(), seconds[k],
+                                         cpu_seconds[k], analysis_seconds[k]);
       if (several_scenes) {
         item["scene"] = o.scenes[s];
         item["light_evaluations"] = r.light_evaluations;
@@ -235,6 +257,9 @@ void add_adapt_commands(CLI::App& app) {
                 "Brightest sky direction x y z the trees grew under (default: the scene's)")
       ->expected(3)
       ->check(number_in(-1e6, 1e6));
+  a->add_option("--sky", opt->sky_file,
+                "TOML file with sky = { site = { latitude, longitude, elevation }, date, "
+                "hours | days }: the scenes' sky becomes that real sky's mean light direction");
   a->add_flag("--temporal-pruning", opt->temporal,
               "Pruning thresholds over all earlier growth stages (eq. 4.5), not the final one");
   a->add_flag("--absolute-pruning", opt->absolute_pruning,
@@ -244,8 +269,12 @@ void add_adapt_commands(CLI::App& app) {
       +[](environment::ClusterLightModel m) -> std::string_view {
         return environment::cluster_light_model_name(m);
       },
-      "Cluster light: sky (hemisphere with the clusters as caps) or shadow_grid "
-      "(Palubicki's voxel shade, faster)");
+      "Cluster light: canopy (the leaves as turbid media, --canopy-model), sky (hemisphere "
+      "with the clusters as caps, Pirk eq. 4.3) or shadow_grid (Palubicki's voxel shade)");
+  a->add_option(
+       "--canopy-model", opt->canopy_model,
+       "Leaf light model of --light-model canopy: " + environment::leaf_light_model_names())
+      ->capture_default_str();
   a->add_flag("--together", opt->together,
               "Trees shade each other, adapted in lock-step (world coordinates, Pirk 4.4.3)");
   a->add_flag("--keep-pruned", opt->keep_pruned,

@@ -23,6 +23,7 @@
 #include "cli/html_single_file.hpp"
 #include "cli/output.hpp"
 #include "cli/report_figures.hpp"
+#include "cli/report_light_profile.hpp"
 #include "cli/run_file_writers.hpp"
 #include "cli/xvfb.hpp"
 #include "experiments/comparisons.hpp"
@@ -403,6 +404,7 @@ std::string report_markdown(const ex::ResultsDb& db, const ReportInputs& in, con
   if (figures) md += sweep_figures(*x, db.info(), in.runs, dir);
   md += ex::summary_tables_markdown(*x, in.runs);
   if (figures) md += tree_renders(*x, in.runs, dir);
+  if (figures) md += light_profile_figure(*x, in.runs, dir);
   md += ex::timings_markdown(db.info(), in.runs);  // last: for whoever plans the next sweep
   return md;
 }

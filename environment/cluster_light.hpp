@@ -53,6 +53,9 @@ class ClusterLightField {
   bool update_obstacles(std::uint32_t c);
   // True when c moved far enough since its obstacle visibility was computed to need a new one.
   bool obstacles_stale(std::uint32_t c) const;
+  // Cluster c's cached obstacle transmission per sky direction (directions(n) order), empty when
+  // nothing is in the way.
+  std::span<const float> obstacle_visibility(std::uint32_t c) const { return obstacle_vis_[c]; }
   // Cluster c's light from the sky through the obstacles alone (its cached visibility, no
   // clusters): the share of the open sky's light, and its mean direction in `direction`. Summed
   // when the visibility changes, not when asked: the shadow-grid adaptation asks for every

@@ -71,4 +71,13 @@ std::vector<DaylightSample> daylight_at(const CanopyLight& light, const RealSky&
                                         std::span<const Eigen::Vector3d> points,
                                         std::span<const std::uint32_t> ignore = {});
 
+// The same through the clusters as turbid media in voxels (CanopySweep of voxel_m, the leaf light
+// model "sweep"): one sweep per diffuse sky direction (scene.sky.directions) and one per step with
+// the sun up, whatever the number of points; the scene's boxes, meshes, spheres and ground by their
+// translucency along each ray. Each point's own cluster shades it (the light of its leaves).
+std::vector<DaylightSample> daylight_through_voxels(std::span<const Sphere> clusters,
+                                                    const Scene& scene, const RealSky& sky,
+                                                    std::span<const Eigen::Vector3d> points,
+                                                    double voxel_m);
+
 }  // namespace fspm::environment

@@ -1,5 +1,7 @@
 #include "environment/growth_model.hpp"
 
+#include "environment/site_sky.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -55,6 +57,9 @@ class Grower {
   Grower(const GrowthParams& p, const Scene& scene, const Eigen::Vector3d& base)
       : p_(p), scene_(scene), base_(base), rng_(p.seed), grid_(p.shadow_grid) {
     if (!scene_.ground) scene_.ground = Ground{base.z(), 1.0, true};  // obstruction only
+    // A real sky (parameter table `sky`): its mean light direction is the brightest point of the
+    // cos^2 sky the light models see (site_sky.hpp).
+    if (p_.site_sky) scene_.sky.brightest = mean_light_direction(*p_.site_sky);
     wsum_ = p_.phototropism + p_.gravitropism;
     // Pirk eq. 4.7 with l_s = l_i: each internode keeps (1 - sum w)^1 of its default direction.
     ws_ = 1.0 - wsum_;

@@ -339,6 +339,12 @@ GrowthParams parse_growth_params(std::string_view text, const std::string& file_
        {real(p.space_colonization.region_radius_m, 1e-6, kBig), "a positive length"}},
       {"marker_region_height_m",
        {real(p.space_colonization.region_height_m, 1e-6, kBig), "a positive length"}},
+      {"sky",
+       {[&p, &file_name](const toml::node& n) {
+          p.site_sky = parse_site_sky(n, file_name);
+          return true;
+        },
+        "a table { site = { latitude, longitude, elevation }, date, hours | days }"}},
       {"gravity_direction",
        {[&p](const toml::node& n) {
           const auto* a = n.as_array();

@@ -4,11 +4,13 @@
 #include <Eigen/Core>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "environment/shadow_grid.hpp"
+#include "environment/site_sky.hpp"
 #include "environment/space_colonization.hpp"
 
 namespace fspm::environment {
@@ -65,6 +67,10 @@ struct GrowthParams {
   BudLightModel light_model = BudLightModel::kShadowGrid;
   // Share of the open sky's light that reaches the stand (1: open site); scales every bud's Q.
   double sky_light_fraction = 1.0;
+  // A real sky (`sky = { site = {...}, date, hours | days }`): its mean light direction
+  // (site_sky.hpp) replaces the scene's brightest point for every light model that has one (the
+  // `sky` bud light and the leaves' light; the shadow grid's pyramid stays vertical).
+  std::optional<SiteSky> site_sky;
   // Photosynthetic light response, a rectangular hyperbola (Thornley and Johnson 1990): the
   // resource of a bud with light Q is P(Q) = Q (1 + K) / (Q + K), 1 in full light, with K the
   // half-saturation light; K = inf gives Palubicki's linear Q. It is what keeps a little less

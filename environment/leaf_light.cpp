@@ -4,7 +4,7 @@
 #include <limits>
 #include <vector>
 
-#include "environment/canopy_light.hpp"
+#include "environment/leaf_light_model.hpp"
 #include "fspm/attribute_names.hpp"
 
 namespace fspm::environment {
@@ -37,10 +37,17 @@ void record_leaf_light(TreeGraph& tree, const Scene& scene) {
   constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
   std::vector<std::uint32_t> sphere_of;
   const std::vector<Sphere> spheres = leaf_spheres(tree, sphere_of);
-  // Large crowns through voxels (as close to ray-traced leaves as the spheres, and faster beyond
-  // about a thousand clusters: docs/environment.md).
-  const double voxel_m = spheres.size() > kLeafLightVoxelsFrom ? kLeafLightVoxel_m : 0.0;
-  const std::vector<LightSample> lit = CanopyLight(scene, spheres, voxel_m).evaluate_clusters();
+  // The growth model's leaf light model (leaf_light_model.hpp), the scene's obstacles by their
+  // transmission per sky direction at each cluster.
+  const HemisphereDirections dirs(scene.sky.directions);
+  std::vector<std::vector<float>> vis(spheres.size());
+  std::vector<std::span<const float>> views(spheres.size());
+  for (std::size_t k = 0; k < spheres.size(); ++k) {
+    vis[k] = obstacle_visibility(scene, dirs, spheres[k].center);
+    views[k] = vis[k];
+  }
+  std::vector<LightSample> lit(spheres.size());
+  make_leaf_light_model(kGrowthLeafLightModel, scene.sky)->evaluate(spheres, views, lit);
   tree.add_attribute(kLightAttribute, kNoValue);
   auto light = tree.attribute(kLightAttribute);
   for (NodeId i = 0; i < tree.size(); ++i) {

@@ -8,6 +8,7 @@
 
 #include "environment/cluster_grid_light.hpp"
 #include "environment/cluster_light.hpp"
+#include "environment/leaf_light_model.hpp"
 #include "environment/solid_push.hpp"
 #include "fspm/attribute_names.hpp"
 #include "fspm/error.hpp"
@@ -97,8 +98,12 @@ class Engine {
   void refresh();
   void setup_grid();
   void regrid();
+  void setup_canopy();
+  void recanopy();
   void update_light() {
-    if (grid_) {
+    if (canopy_) {
+      recanopy();
+    } else if (grid_) {
       regrid();
     } else {
       check_moved();
@@ -137,6 +142,13 @@ class Engine {
   std::vector<Eigen::Vector3d> buds0_, buds_;
   std::vector<std::uint32_t> bud_start_, bud_cluster_;
   std::uint64_t grid_epoch_ = ~std::uint64_t{0};
+  // Canopy light (ClusterLightModel::kCanopy): the whole crown through a leaf light model,
+  // evaluated again after every step that moved or pruned something.
+  std::unique_ptr<LeafLightModel> canopy_;
+  std::vector<Sphere> canopy_spheres_;
+  std::vector<std::uint32_t> canopy_index_;
+  std::vector<std::span<const float>> canopy_vis_;
+  std::vector<LightSample> canopy_out_;
   int step_ = -1;  // the step run() is at
 };
 
@@ -200,6 +212,16 @@ Engine::Engine(const std::vector<const TreeGraph*>& trees,
       }
     }
     setup_grid();
+    return;
+  }
+  if (runs_.front().a->params.light_model == ClusterLightModel::kCanopy) {
+    for (const TreeRun& r : runs_) {
+      if (r.a->params.light_model != ClusterLightModel::kCanopy ||
+          r.a->params.canopy_model != runs_.front().a->params.canopy_model) {
+        throw ValueError("plastic adaptation: the trees were analysed with different light models");
+      }
+    }
+    setup_canopy();
     return;
   }
   bool sky_changed = false;
@@ -314,6 +336,62 @@ void Engine::regrid() {
     const double sky = field_.sky_light(c, sky_direction);
     combine_sky_and_grid(sky, sky_direction, grid_light_[c], grid_direction_[c]);
     field_.set_light(c, grid_light_[c], grid_direction_[c], true);
+  }
+  ++epoch_;
+  grid_epoch_ = epoch_;
+}
+
+void Engine::setup_canopy() {
+  for (TreeRun& r : runs_) setup_tree(r);
+  const AnalysisParams& params = runs_.front().a->params;
+  Sky sky;
+  sky.directions = params.light_directions;
+  sky.significance = params.light_significance;
+  sky.brightest = scene_.sky.brightest.norm() > 0
+                      ? Eigen::Vector3d(scene_.sky.brightest.normalized())
+                      : Eigen::Vector3d::UnitZ();
+  canopy_ = make_leaf_light_model(params.canopy_model, sky);
+  if (!field_.has_obstacles() && runs_.size() == 1 &&
+      (runs_.front().a->brightest - sky.brightest).norm() <= 1e-12) {
+    // The analysis' own light: nothing differs from the open scene until something moves.
+    const TreeAnalysis& a = *runs_.front().a;
+    for (std::uint32_t c = 0; c < field_.size(); ++c) {
+      field_.set_light(c, a.cluster_light[c], a.cluster_direction[c]);
+    }
+    grid_epoch_ = epoch_;
+    return;
+  }
+  for (std::uint32_t c = 0; c < field_.size(); ++c) field_.update_obstacles(c);
+  recanopy();
+}
+
+// Every living cluster's light through the leaf light model, at the clusters' current places,
+// with each cluster's cached obstacle visibility (recomputed where it moved enough).
+void Engine::recanopy() {
+  moved_.clear();
+  vanished_.clear();
+  if (grid_epoch_ == epoch_) return;
+  canopy_spheres_.clear();
+  canopy_index_.clear();
+  canopy_vis_.clear();
+  bool any_obstacle = false;
+  for (std::uint32_t c = 0; c < field_.size(); ++c) {
+    if (!field_.alive(c)) continue;
+    if (field_.obstacles_stale(c)) field_.update_obstacles(c);
+    const TreeRun& r = runs_[owner_[c]];
+    const LeafCluster& k = r.a->clusters[c - r.first_cluster];
+    canopy_spheres_.push_back({field_.center(c), k.radius_m, k.translucency, false});
+    canopy_index_.push_back(c);
+    canopy_vis_.push_back(field_.obstacle_visibility(c));
+    any_obstacle = any_obstacle || !canopy_vis_.back().empty();
+  }
+  canopy_out_.resize(canopy_spheres_.size());
+  canopy_->evaluate(canopy_spheres_,
+                    any_obstacle ? std::span<const std::span<const float>>(canopy_vis_)
+                                 : std::span<const std::span<const float>>(),
+                    canopy_out_);
+  for (std::size_t k = 0; k < canopy_index_.size(); ++k) {
+    field_.set_light(canopy_index_[k], canopy_out_[k].light, canopy_out_[k].direction, true);
   }
   ++epoch_;
   grid_epoch_ = epoch_;
@@ -466,7 +544,7 @@ void Engine::bend(TreeRun& r, int level, int step) {
     cgroup_[gc] = r.group[anchor];
     moved_.push_back(gc);
   }
-  if (grid_) ++epoch_;  // the grid's light is read again after every move
+  if (grid_ || canopy_) ++epoch_;  // the whole crown's light is read again after every move
   field_.mark_moved();
 }
 

@@ -98,6 +98,15 @@ std::vector<Sphere> cluster_spheres(const std::vector<LeafCluster>& clusters) {
 }
 
 void AnalysisParams::validate() const {
+  if (light_model == ClusterLightModel::kCanopy) {
+    bool known = false;
+    for (const LeafLightModelEntry& e : leaf_light_models())
+      known = known || canopy_model == e.name;
+    if (!known) {
+      throw ValueError("plastic analysis: unknown canopy_model '" + canopy_model.substr(0, 40) +
+                       "' (expected one of " + leaf_light_model_names() + ")");
+    }
+  }
   if (!(min_cluster_radius_m > 0.0 && std::isfinite(min_cluster_radius_m))) {
     throw ValueError("plastic analysis: min_cluster_radius_m must be a finite number > 0");
   }
@@ -122,14 +131,23 @@ void AnalysisParams::validate() const {
 }
 
 ClusterLightModel cluster_light_model_from_name(const std::string& name) {
+  if (name == "canopy") return ClusterLightModel::kCanopy;
   if (name == "sky") return ClusterLightModel::kSky;
   if (name == "shadow_grid") return ClusterLightModel::kShadowGrid;
   throw ValueError("plastic analysis: unknown light_model '" + name.substr(0, 40) +
-                   "' (expected sky or shadow_grid)");
+                   "' (expected canopy, sky or shadow_grid)");
 }
 
 const char* cluster_light_model_name(ClusterLightModel model) {
-  return model == ClusterLightModel::kSky ? "sky" : "shadow_grid";
+  switch (model) {
+    case ClusterLightModel::kCanopy:
+      return "canopy";
+    case ClusterLightModel::kSky:
+      return "sky";
+    case ClusterLightModel::kShadowGrid:
+      break;
+  }
+  return "shadow_grid";
 }
 
 void cluster_buds(const TreeGraph& t, const std::vector<LeafCluster>& clusters,
@@ -163,6 +181,21 @@ void sky_light(TreeAnalysis& a, ClusterLightField& field) {
   a.cluster_light.assign(field.lights().begin(), field.lights().end());
   a.cluster_direction.assign(field.directions().begin(), field.directions().end());
   a.cluster_neighbors = field.take_neighbor_lists();
+}
+
+// The clusters alone under an open sky through the leaf light model `canopy_model`.
+void canopy_light(const Sky& sky, TreeAnalysis& a) {
+  const std::size_t nc = a.clusters.size();
+  const std::vector<Sphere> spheres = cluster_spheres(a.clusters);
+  std::vector<LightSample> lit(nc);
+  make_leaf_light_model(a.params.canopy_model, sky)->evaluate(spheres, {}, lit);
+  a.cluster_light.resize(nc);
+  a.cluster_direction.resize(nc);
+  for (std::size_t c = 0; c < nc; ++c) {
+    a.cluster_light[c] = lit[c].light;
+    a.cluster_direction[c] = lit[c].direction;
+  }
+  a.cluster_neighbors.assign(nc, {});
 }
 
 // The clusters' buds alone in the shadow grid of an open scene.
@@ -479,6 +512,8 @@ TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
   ClusterLightField field(params.light_directions, params.light_significance, a.brightest);
   if (params.light_model == ClusterLightModel::kShadowGrid) {
     grid_light(t, scene, field.open_direction(), a);
+  } else if (params.light_model == ClusterLightModel::kCanopy) {
+    canopy_light(scene.sky, a);
   } else {
     sky_light(a, field);
   }

@@ -21,6 +21,7 @@
 
 #include "environment/cluster_grid_light.hpp"
 #include "environment/cluster_light.hpp"
+#include "environment/leaf_light_model.hpp"
 #include "environment/occluders.hpp"
 #include "environment/shadow_grid.hpp"
 #include "fspm/tree_graph.hpp"
@@ -29,12 +30,15 @@ namespace fspm::environment {
 
 inline constexpr std::uint32_t kNoCluster = std::numeric_limits<std::uint32_t>::max();
 
-// Which light the analysis and the adaptation give the leaf clusters: the sky hemisphere with the
-// other clusters as caps (Pirk eq. 4.3; ClusterLightField), or Palubicki's local shadow grid
+// Which light the analysis and the adaptation give the leaf clusters: the crown's leaves as turbid
+// media through a leaf light model of the registry (leaf_light_model.hpp, `canopy_model`; the
+// whole crown evaluated again at every age level that moved or pruned something), the sky
+// hemisphere with the other clusters as caps (Pirk eq. 4.3; ClusterLightField, re-evaluated
+// cluster by cluster where the change reaches), or Palubicki's local shadow grid
 // (ClusterGridLight), the light the growth model's default trees grew under.
-enum class ClusterLightModel { kSky, kShadowGrid };
+enum class ClusterLightModel { kCanopy, kSky, kShadowGrid };
 
-// "sky" or "shadow_grid"; throws ValueError naming the choices otherwise.
+// "canopy", "sky" or "shadow_grid"; throws ValueError naming the choices otherwise.
 ClusterLightModel cluster_light_model_from_name(const std::string& name);
 const char* cluster_light_model_name(ClusterLightModel model);
 
@@ -56,7 +60,9 @@ struct AnalysisParams {
   double phototropism = 0.25;
   double gravitropism = 0.12;
   Eigen::Vector3d gravity_direction = -Eigen::Vector3d::UnitZ();
-  ClusterLightModel light_model = ClusterLightModel::kSky;
+  ClusterLightModel light_model = ClusterLightModel::kCanopy;
+  // The leaf light model of light_model kCanopy (a name of leaf_light_models()).
+  std::string canopy_model = kAdaptationLeafLightModel;
   // Light as in the growth model: few directions, a coarse shadow-volume cutoff (see Sky).
   int light_directions = 64;
   double light_significance = 0.01;

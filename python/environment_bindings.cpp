@@ -501,7 +501,8 @@ void bind_analysis_params(py::module_& m) {
       [](env::AnalysisParams& p, const std::string& name) {
         p.light_model = env::cluster_light_model_from_name(name);
       },
-      "Light of the leaf clusters: 'sky' (hemisphere, clusters as caps) or 'shadow_grid'");
+      "Light of the leaf clusters: 'canopy' (the leaves as turbid media, the default), 'sky' "
+      "(hemisphere, clusters as caps, Pirk eq. 4.3) or 'shadow_grid'");
   Fields<env::AnalysisParams>(ap)
       .existing("light_model")
       .add("skeleton_radius_m", &env::AnalysisParams::skeleton_radius_m,

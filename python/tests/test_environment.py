@@ -168,7 +168,7 @@ def test_grow_tree_is_deterministic_and_consistent():
 
 def test_plastic_adaptation():
     tree = fspm.read_tree(str(ROOT / "examples/trees/open_a12.treeb"))  # a 12-year tree of type A
-    analysis = fspm.analyze_tree(tree)
+    analysis = fspm.analyze_tree(tree, {"light_model": "sky"})  # Pirk's eq. 4.3 cluster light
     assert analysis.skeleton.shape == (len(tree),)
     assert analysis.clusters.shape[1] == 5 and len(analysis.clusters) > 0
     # An unchanged (open) scene adapts to exactly the input tree.
@@ -182,7 +182,7 @@ def test_plastic_adaptation():
     assert adapted.mean_tip_shift[0] < 0
     scene = fspm.Scene()
     scene.add_wall((0.7, -20), (0.7, 20), height=6, thickness=0.2)
-    same_wall = fspm.adapt_tree(tree, fspm.analyze_tree(tree, {"pruning_strength": 0.8}), scene)
+    same_wall = fspm.adapt_tree(tree, fspm.analyze_tree(tree, {"pruning_strength": 0.8, "light_model": "sky"}), scene)
     np.testing.assert_array_equal(same_wall.tree.ends, adapted.tree.ends)
     assert adapted.mean_tip_displacement_m > 0
     pruned = adapted.tree.attribute("pruned")

@@ -48,6 +48,14 @@ TEST(ReportRenders, TheWallIsDrawnBesideTheTreeThatWasAdaptedToIt) {
   // The wall, 6 m high in a picture about 6.4 m high, is a grey column of many pixels.
   EXPECT_LT(graphics::testing::stone_pixels(far_image), 30u);
   EXPECT_GT(graphics::testing::stone_pixels(near_image), 200u);
+  // The light profile of both trees (their clusters carry a translucency), listed by run.
+  EXPECT_NE(md.find("## Light in the crown"), std::string::npos) << md;
+  EXPECT_NE(md.find("- run 0: tree_x_m = -5"), std::string::npos) << md;
+  EXPECT_NE(md.find("- run 1: tree_x_m = 1.5"), std::string::npos) << md;
+  const graphics::Image profile =
+      graphics::read_image((dir / "out/figures/light-profile.png").string());
+  EXPECT_EQ(profile.width, 640);
+  EXPECT_EQ(profile.height, 480);
 }
 
 }  // namespace

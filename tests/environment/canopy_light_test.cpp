@@ -121,6 +121,11 @@ struct Profile {
   std::vector<std::pair<double, double>> by_lai;  // (leaf area index above, light) per cluster
   double k = 0.0;                                 // fitted Beer-Lambert coefficient
   double worst_bin_error = 0.0;  // largest relative deviation of a leaf-area fifth from exp(-k L)
+  // The clusters of each tree's top height fifth: the leaf area above their centres as the sky
+  // sees it, their own leaves included (weight 1 / (trees * clusters in the fifth)), and its mean.
+  std::vector<std::pair<double, double>> top_fifth_lai;
+  double top_fifth_mean_lai = 0.0;
+  double top_fifth_vertical_lai = 0.0;  // the vertical leaf area index above their centres
 };
 
 // Adds a grown tree's leaf clusters: the mean light of their leaves (the attribute "light") and
@@ -129,12 +134,15 @@ struct Profile {
 void add_tree(const GrowthResult& g, int trees, Profile& p) {
   const CanopyLight model(Scene{}, g.cluster_spheres);
   const std::vector<LightSample> tops = model.evaluate_cluster_tops();
-  std::vector<std::array<double, 3>> by_height;
+  std::vector<std::array<double, 5>> by_height;
   const auto light = g.tree.attribute(kLightAttribute);
   std::size_t j = 0;
   for (NodeId i = 0; i < g.tree.size(); ++i) {
     if (g.tree.kind(i) != OrganKind::kLeaf) continue;
-    by_height.push_back({g.tree.start(i).z(), light[i], tops[j].light});
+    const Eigen::Vector3d& centre = g.cluster_spheres[j].center;
+    by_height.push_back({g.tree.start(i).z(), light[i], tops[j].light,
+                         model.sky_leaf_area_index_above(centre),
+                         model.leaf_area_index_above(centre)});
     p.by_lai.push_back(
         {model.sky_leaf_area_index_above(cluster_top(g.cluster_spheres[j]), j), tops[j].light});
     ++j;
@@ -146,6 +154,13 @@ void add_tree(const GrowthResult& g, int trees, Profile& p) {
     for (std::size_t k = a; k < b; ++k) s += by_height[k][1], top += by_height[k][2];
     p.fifth_light[f] += s / static_cast<double>(b - a) / trees;
     p.fifth_top[f] += top / static_cast<double>(b - a) / trees;
+  }
+  const std::size_t a = by_height.size() * 4 / 5;
+  const double w = 1.0 / static_cast<double>((by_height.size() - a) * trees);
+  for (std::size_t k = a; k < by_height.size(); ++k) {
+    p.top_fifth_lai.push_back({by_height[k][3], w});
+    p.top_fifth_mean_lai += w * by_height[k][3];
+    p.top_fifth_vertical_lai += w * by_height[k][4];
   }
 }
 
@@ -191,11 +206,22 @@ TEST(CanopyLight, OpenGrownCrownsAreLitFromTheTopAndFollowBeersLaw) {
       fit_beer(p);
       const auto& f = p.fifth_light;
       const auto& t = p.fifth_top;
+      // What Beer's law with the fitted k gives the top fifth's leaves for the leaf area above
+      // their centres (their own cluster's included): the ceiling of the goal "top fifth >= 0.7".
+      double beer_top = 0.0;
+      for (const auto& [lai, w] : p.top_fifth_lai) beer_top += w * std::exp(-p.k * lai);
       std::printf(
           "%-20s leaves %.2f %.2f %.2f %.2f %.2f  tops %.2f %.2f %.2f %.2f %.2f  k %.3f  "
-          "worst Beer fifth %.2f\n",
+          "worst Beer fifth %.2f  top fifth: L %.2f (vertical %.2f), Beer %.2f\n",
           name.c_str(), f[0], f[1], f[2], f[3], f[4], t[0], t[1], t[2], t[3], t[4], p.k,
-          p.worst_bin_error);
+          p.worst_bin_error, p.top_fifth_mean_lai, p.top_fifth_vertical_lai, beer_top);
+      // Beer's law with the fitted k puts the top fifth's leaves below 0.7 of the open sky in
+      // every crown (the leaf area above them, their own cluster's included, exceeds
+      // ln(1 / 0.7) / k = 0.5-0.85), so a goal of 0.7 for them is out of reach of the physics;
+      // their mean light lies at 0.65-1.0 of Beer's value (docs/environment.md).
+      EXPECT_LT(beer_top, 0.7) << name;
+      EXPECT_GT(f[4], 0.6 * beer_top) << name;
+      EXPECT_LT(f[4], 1.05 * beer_top) << name;
       EXPECT_GE(t[4], 0.7) << name;
       EXPECT_GT(t[4], t[0]) << name;
       EXPECT_LE(p.worst_bin_error, 0.2) << name;

@@ -141,9 +141,39 @@ TEST(PlasticAdaptation, EmptySceneLeavesTheTreeUnchanged) {
   EXPECT_LT(r.mean_tip_displacement_m, 1e-9);
 }
 
-TEST(PlasticAdaptation, WallBendsTipsAwayAndPrunesItsShadow) {
+TEST(PlasticAdaptation, CanopyLightBesideAWallBendsAwayAndDimsTheWallSide) {
+  // The default cluster light (the crown's leaves as turbid media, swept through voxels): the same
+  // wall as below bends the crown away, and the clusters left on the wall's side get less light
+  // for their size than those on the far side (eq. 4.13's density is the light's ratio).
   const OpenTree& g = grown_a();
   const TreeAnalysis a = analyze_tree(g.tree);
+  ASSERT_EQ(a.params.light_model, ClusterLightModel::kCanopy);
+  Scene scene;
+  scene.boxes.push_back(Box::wall({1.5, -20}, {1.5, 20}, 0.0, 3.0 * g.height_m + 5.0, 0.2));
+  const AdaptationResult r = adapt_tree(g.tree, a, scene);
+  EXPECT_LT(r.mean_tip_shift.x(), -0.1);
+  EXPECT_GT(r.mean_tip_displacement_m, 0.1);
+  double wall = 0.0, far = 0.0;
+  int n_wall = 0, n_far = 0;
+  for (const LeafCluster& c : r.clusters) {
+    (c.center.x() > 0.0 ? wall : far) += c.density;
+    ++(c.center.x() > 0.0 ? n_wall : n_far);
+  }
+  std::printf(
+      "canopy light: pruned %zu, tip shift x %.3f m, density wall side %.3f (%d), far %.3f (%d)\n",
+      r.pruned_nodes, r.mean_tip_shift.x(), wall / n_wall, n_wall, far / n_far, n_far);
+  ASSERT_GT(n_wall, 0);
+  ASSERT_GT(n_far, 0);
+  EXPECT_LT(wall / n_wall, far / n_far);
+  EXPECT_LT(far / n_far, 1.0);  // the wall takes light from the far side too
+}
+
+TEST(PlasticAdaptation, WallBendsTipsAwayAndPrunesItsShadow) {
+  // Pirk's eq. 4.3 cluster light (`sky`).
+  const OpenTree& g = grown_a();
+  AnalysisParams params;
+  params.light_model = ClusterLightModel::kSky;
+  const TreeAnalysis a = analyze_tree(g.tree, params);
   Scene scene;
   // An opaque wall 1.5 m east of the trunk, taller than the tree.
   scene.boxes.push_back(Box::wall({1.5, -20}, {1.5, 20}, 0.0, 3.0 * g.height_m + 5.0, 0.2));
