@@ -18,6 +18,9 @@
 namespace fspm::greenlab {
 namespace {
 
+// No prototype yet for this axis start (reconstruct_instanced, the line tree's instancing).
+constexpr std::uint32_t kNoPrototype = 0xFFFFFFFFu;
+
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 
 std::string age_key(int p, const char* name) { return "age." + std::to_string(p) + "." + name; }
@@ -682,119 +685,45 @@ void reconstruct_into(const CompressedTreeGraph& graph, const ReconstructionOpti
   if (stats) *stats = st;
 }
 
-namespace {
-
-// The instanced form of a graph with turtle geometry: its groups are the prototypes.
-InstancedPlant instanced_geometry(const CompressedTreeGraph& graph,
-                                  const ReconstructionOptions& options) {
-  InstancedPlant plant;
-  InstancedTree tree = instanced_tree_of(graph, geometry_options(graph, options, plant.age));
-  const std::size_t n = tree.prototypes.size();
-  plant.prototypes.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    auto& p = tree.prototypes[i];
-    auto& q = plant.prototypes[i];
-    q.own_components = p.geometry.size();
-    q.geometry = std::move(p.geometry);
-    for (const auto& c : p.children) {
-      q.children.push_back({c.prototype, c.attach, c.rotation, c.translation, c.order});
-    }
+InstancedTree reconstruct_instanced(const CompressedTreeGraph& graph,
+                                    const ReconstructionOptions& options) {
+  if (graph.has_geometry()) {
+    // Turtle geometry: the groups of the graph are the prototypes.
+    double age = 0.0;
+    return instanced_tree_of(graph, geometry_options(graph, options, age));
   }
-  // Prototypes are numbered as they are met, so children come after their parents.
-  std::vector<std::uint64_t> total(n, 0);
-  for (std::size_t i = n; i-- > 0;) {
-    total[i] = plant.prototypes[i].own_components;
-    for (const auto& c : plant.prototypes[i].children) {
-      total[i] = add_saturating(total[i], total[c.prototype]);
-    }
-  }
-  plant.represented_components = total.empty() ? 0 : total[0];
-  return plant;
-}
-
-}  // namespace
-
-InstancedPlant reconstruct_instanced(const CompressedTreeGraph& graph,
-                                     const ReconstructionOptions& options) {
-  if (graph.has_geometry()) return instanced_geometry(graph, options);
   const AxisBuilder builder(graph, options, false);
-  InstancedPlant plant;
-  plant.age = builder.age();
-  if (nothing_born(graph, builder)) return plant;
+  InstancedTree tree;
+  if (nothing_born(graph, builder)) return tree;
   const Frame canonical = builder.trunk_frame();
   const Eigen::Matrix3d canonical_inverse = canonical.axes.transpose();
   std::vector<std::uint32_t> prototype_of(graph.size(), kNoPrototype);
+  std::vector<RecordId> first_record{graph.root()};  // of each prototype's axis
   std::vector<AxisStart> laterals;
   // One prototype per axis start, built in its own frame; children placed by transforms.
   prototype_of[graph.root()] = 0;
-  plant.prototypes.emplace_back();
-  plant.prototypes[0].record = graph.root();
-  for (std::size_t i = 0; i < plant.prototypes.size(); ++i) {
+  tree.prototypes.emplace_back();
+  for (std::size_t i = 0; i < tree.prototypes.size(); ++i) {
     ReconstructionStats st;
     laterals.clear();
-    const RecordId record = plant.prototypes[i].record;
     TreeGraph geometry;
     if (builder.any_pruning_period()) geometry.add_attribute(kDeadAttribute, 0.0);
-    builder.walk({record, kNoNode, canonical, 0}, geometry, laterals, st);
-    std::vector<InstancedPlant::Child> children;
+    builder.walk({first_record[i], kNoNode, canonical, 0}, geometry, laterals, st);
+    std::vector<InstancedTree::Child> children;
     children.reserve(laterals.size());
     for (const AxisStart& l : laterals) {
       std::uint32_t& proto = prototype_of[l.record];
       if (proto == kNoPrototype) {
-        proto = static_cast<std::uint32_t>(plant.prototypes.size());
-        plant.prototypes.emplace_back();
-        plant.prototypes.back().record = l.record;
+        proto = static_cast<std::uint32_t>(tree.prototypes.size());
+        tree.prototypes.emplace_back();
+        first_record.push_back(l.record);
       }
-      children.push_back({proto, l.parent, l.frame.axes * canonical_inverse, l.frame.position});
+      children.push_back(
+          {proto, l.parent, l.frame.axes * canonical_inverse, l.frame.position, 1.0});
     }
-    InstancedPlant::Prototype& p = plant.prototypes[i];
+    InstancedTree::Prototype& p = tree.prototypes[i];
     p.geometry = std::move(geometry);
     p.children = std::move(children);
-    p.own_components = st.components();
-  }
-  // Components represented: a prototype's own plus its children's, children built after parents.
-  std::vector<std::uint64_t> total(plant.prototypes.size(), 0);
-  for (std::size_t i = plant.prototypes.size(); i-- > 0;) {
-    std::uint64_t t = plant.prototypes[i].own_components;
-    for (const auto& c : plant.prototypes[i].children) t += total[c.prototype];
-    total[i] = t;
-  }
-  plant.represented_components = total[0];
-  return plant;
-}
-
-TreeGraph expand_instanced(const InstancedPlant& plant) {
-  TreeGraph tree;
-  if (plant.prototypes.empty()) return tree;
-  struct Item {
-    std::uint32_t prototype;
-    NodeId parent;
-    Eigen::Matrix3d rotation;
-    Eigen::Vector3d translation;
-    std::uint16_t order;
-  };
-  std::vector<Item> queue{{0, kNoNode, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(), 0}};
-  std::vector<NodeId> map;
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    const Item item = queue[head];
-    const auto& p = plant.prototypes[item.prototype];
-    const TreeGraph& g = p.geometry;
-    map.assign(g.size(), kNoNode);
-    for (NodeId n = 0; n < g.size(); ++n) {
-      NodeData d = g.data(n);
-      d.start = item.rotation * d.start + item.translation;
-      d.end = item.rotation * d.end + item.translation;
-      d.direction = item.rotation * d.direction;
-      d.order = static_cast<std::uint16_t>(d.order + item.order);
-      NodeId parent = n == 0 ? item.parent : map[g.parent(n)];
-      if (parent == kNoNode && !tree.empty()) parent = 0;  // one root (turtle geometry)
-      map[n] = tree.add_node(parent, d);
-    }
-    for (const auto& c : p.children) {
-      queue.push_back({c.prototype, c.attach == kNoNode ? item.parent : map[c.attach],
-                       item.rotation * c.rotation, item.rotation * c.translation + item.translation,
-                       static_cast<std::uint16_t>(item.order + c.order)});
-    }
   }
   return tree;
 }
