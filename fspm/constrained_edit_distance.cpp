@@ -161,7 +161,7 @@ struct ModelRelabel {
   }
 };
 
-// Zhang's recurrences (see MODELS_DIGEST sec. 2): rows of A in post-order, columns of B in
+// Zhang's recurrences (Zhang 1996): rows of A in post-order, columns of B in
 // post-order, D_T = distance of subtrees, D_F = distance of child forests.
 template <class Relabel>
 double run_programme(const PostTree& A, const PostTree& B, const std::vector<double>& del,
