@@ -47,6 +47,15 @@ std::string sentence(std::string text) {
   return text;
 }
 
+// The one-line description for NAME: the top-level app's starts with its own name ("fspm: ..."),
+// which NAME already gives.
+std::string summary(const CLI::App& app) {
+  const std::string prefix = app.get_name() + ": ";
+  std::string text = app.get_description();
+  if (text.starts_with(prefix)) text.erase(0, prefix.size());
+  return text;
+}
+
 bool visible(const CLI::Option* o) { return !o->get_group().empty(); }
 
 // "fspm tree info" for the app of `tree info`.
@@ -194,7 +203,7 @@ std::string man_page(const CLI::App& app, const std::string& version) {
       << ".TH " << roff_text(upper(page_name(app)), true) << " 1 \"\" \"" << roff_text(version)
       << "\" \"fspm manual\"\n"
       << ".SH NAME\n"
-      << roff_text(page_name(app), true) << " \\- " << roff_text(app.get_description()) << "\n"
+      << roff_text(page_name(app), true) << " \\- " << roff_text(summary(app)) << "\n"
       << ".SH SYNOPSIS\n";
   write_synopsis(out, app);
   out << ".SH DESCRIPTION\n" << roff_text(app.get_description()) << "\n";
