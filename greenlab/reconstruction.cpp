@@ -273,136 +273,168 @@ class AxisBuilder {
   }
 
   // Adds the axis starting at axis.record under axis.parent; its laterals go to `laterals`.
+  // Metamer by metamer: the internode, its leaf and its laterals at its top, then the frame
+  // turned for the next metamer; the terminal flower after the last one. `node` is one record
+  // reused for every organ, so an organ keeps the fields of the internode it does not set.
   void walk(const AxisStart& axis, TreeGraph& tree, std::vector<AxisStart>& laterals,
             ReconstructionStats& st) const {
-    const CompressedRecord* r = &graph_.record(axis.record);
-    bool axis_dead = false;
-    if (axis.record != graph_.root()) {  // a lateral axis (the root never starts one)
-      const AgeGeometry& axis_geo = geo_.age(r->physiological_age);
-      axis_dead = status(r->birth, axis_geo.axis_life_span, axis_geo.pruning_period) <=
-                  axis_geo.pruning_period;
-    }
+    const bool axis_dead = lateral_axis_dead(axis.record);
     Frame f = axis.frame;
     NodeId parent = axis.parent;
     RecordId id = axis.record;
     NodeData node;
     while (true) {
-      r = &graph_.record(id);
-      const int p = r->physiological_age;
-      const AgeGeometry& g = geo_.age(p);
-      const AgeRotations& rp = rotations(p);
-      double length = g.internode_length_m;
-      double r_birth = g.internode_radius_m;
-      double r_final = g.internode_radius_m + g.radius_growth_m * (final_date_ - r->birth);
-      if (geo_.from_volumes) {
-        const auto dim = internode_dimensions(r->pith_volume, r->ring_volume, geo_.reference_length,
-                                              geo_.allometry_b);
-        length = dim.length;
-        r_birth = dim.pith_radius;
-        r_final = dim.radius;
-      }
-      double radius = r_final;
-      if (now_ < final_date_ && final_date_ > r->birth) {
-        // Jaeger 3.2.2: quadratic interpolation of the diameter from birth to the final age.
-        const double x = (now_ - r->birth) / (final_date_ - r->birth);
-        radius = r_birth + (r_final - r_birth) * x * x;
-      }
-      const Eigen::Vector3d heading = f.axes.col(0);
-      node.start = f.position;
-      f.position += heading * length;
-      node.end = f.position;
-      node.direction = heading;
-      node.length = length;
-      node.radius = radius;
-      node.birth_time = r->birth;
-      node.physiological_age = static_cast<std::uint16_t>(p);
-      node.order = axis.order;
-      node.kind = OrganKind::kInternode;
-      const NodeId internode = add_to(tree, parent, node);
+      const CompressedRecord& r = graph_.record(id);
+      const AgeGeometry& g = geo_.age(r.physiological_age);
+      const AgeRotations& rp = rotations(r.physiological_age);
+      const NodeId internode = add_internode(r, g, axis.order, f, parent, tree, node);
       ++st.metamers;
       if (axis_dead && any_pruning_period_) tree.attribute(kDeadAttribute)[internode] = 1.0;
-
       // The leaf and the laterals sit at the top of the metamer, their azimuth set by phyllotaxy.
-      if (options_.leaves) {
-        const double s = status(r->birth, g.leaf_life_span, g.pruning_period);
-        if (s > 0.0) {
-          double leaf_length = g.leaf_length_m;
-          if (geo_.from_volumes) {
-            leaf_length = std::sqrt(std::max(r->leaf_volume, 0.0) / geo_.leaf_thickness);
-          }
-          place_leaf(f, g, rp, radius, now_ - r->birth, node);
-          node.end = node.start + node.direction * leaf_length;
-          node.length = leaf_length;
-          node.radius = 0.0;
-          node.kind = OrganKind::kLeaf;
-          node.order = static_cast<std::uint16_t>(axis.order + 1);
-          const NodeId leaf = add_to(tree, internode, node);
-          ++st.leaves;
-          if (any_pruning_period_ && s <= g.pruning_period)
-            tree.attribute(kDeadAttribute)[leaf] = 1.0;
-        }
-      }
-      const auto ax = graph_.axillaries(id);
-      if (!ax.empty()) {
-        const double spread = 2.0 * std::numbers::pi / static_cast<double>(ax.size());
-        for (std::size_t k = 0; k < ax.size(); ++k) {
-          const CompressedRecord& child = graph_.record(ax[k]);
-          if (child.birth > now_) continue;
-          if (pruned(ax[k])) {
-            ++st.pruned_axes;  // the whole lateral axis has fallen
-            continue;
-          }
-          if (axis.order + 1 > options_.lod.max_order) continue;  // Jaeger 3.1.1: order limit
-          const int q = child.physiological_age;
-          Frame lf;
-          lf.position = f.position;
-          if (k > 0) {
-            lf.axes = f.axes *
-                      Eigen::AngleAxisd(spread * static_cast<double>(k), Eigen::Vector3d::UnitX())
-                          .toRotationMatrix() *
-                      rotations(q).branching;
-          } else {
-            lf.axes = f.axes * rotations(q).branching;
-          }
-          if (absolute_effects_ && geo_.age(q).plagiotropic()) {
-            lf.axes = plagiotropic_frame(lf.axes.col(0), lf.axes.col(1));
-          }
-          laterals.push_back({ax[k], internode, lf, static_cast<std::uint16_t>(axis.order + 1)});
-        }
-      }
-      if (phyllotaxy_about_heading_) {
-        turn_about_heading(f.axes, rp.phyllotaxy);
-      } else {
-        f.axes = f.axes * rp.phyllotaxy;
-      }
-      if (absolute_effects_ && g.straightening > 0.0 && !g.plagiotropic()) {
-        // Orthotropic axes (Rauh) turn their heading up by a fraction per metamer.
-        const Eigen::Vector3d h = f.axes.col(0);
-        const Eigen::Vector3d target = (h + g.straightening * (Eigen::Vector3d::UnitZ() - h));
-        if (target.squaredNorm() > 1e-12) {
-          f.axes = Eigen::Quaterniond::FromTwoVectors(h, target.normalized()).toRotationMatrix() *
-                   f.axes;
-        }
-      }
+      if (options_.leaves) add_leaf(r, g, rp, axis.order, f, internode, tree, node, st);
+      queue_laterals(id, axis.order, f, internode, laterals, st);
+      next_metamer_frame(g, rp, f);
       parent = internode;
-      if (r->successor == kNoRecord || graph_.record(r->successor).birth > now_) {
-        // Terminal flower, shown from the cycle after its metamer's growth unit.
-        if (options_.flowers && r->apex == ApexState::kFlower && r->birth + 1.0 <= now_ + 1e-9) {
-          node.start = f.position;
-          node.direction = f.axes.col(0);
-          node.end = f.position + node.direction * (0.5 * g.leaf_length_m);
-          node.length = 0.5 * g.leaf_length_m;
-          node.radius = 0.0;
-          node.kind = OrganKind::kFlower;
-          node.order = axis.order;
-          node.birth_time = r->birth + 1.0;
-          add_to(tree, internode, node);
-          ++st.flowers;
-        }
+      if (r.successor == kNoRecord || graph_.record(r.successor).birth > now_) {
+        add_flower(r, g, axis.order, f, internode, tree, node, st);
         break;
       }
-      id = r->successor;
+      id = r.successor;
     }
+  }
+
+  // Whether the lateral axis starting at `record` is dead but not yet fallen (Jaeger 3.2.1);
+  // the root never starts a lateral.
+  bool lateral_axis_dead(RecordId record) const {
+    if (record == graph_.root()) return false;
+    const CompressedRecord& r = graph_.record(record);
+    const AgeGeometry& g = geo_.age(r.physiological_age);
+    return status(r.birth, g.axis_life_span, g.pruning_period) <= g.pruning_period;
+  }
+
+  // The internode of metamer `r` along the heading of `f`, which it moves to its top. Its length
+  // and radius are the parameters' or (GL1) from its volumes, the radius interpolated to the
+  // present date.
+  NodeId add_internode(const CompressedRecord& r, const AgeGeometry& g, std::uint16_t order,
+                       Frame& f, NodeId parent, TreeGraph& tree, NodeData& node) const {
+    double length = g.internode_length_m;
+    double r_birth = g.internode_radius_m;
+    double r_final = g.internode_radius_m + g.radius_growth_m * (final_date_ - r.birth);
+    if (geo_.from_volumes) {
+      const auto dim = internode_dimensions(r.pith_volume, r.ring_volume, geo_.reference_length,
+                                            geo_.allometry_b);
+      length = dim.length;
+      r_birth = dim.pith_radius;
+      r_final = dim.radius;
+    }
+    double radius = r_final;
+    if (now_ < final_date_ && final_date_ > r.birth) {
+      // Jaeger 3.2.2: quadratic interpolation of the diameter from birth to the final age.
+      const double x = (now_ - r.birth) / (final_date_ - r.birth);
+      radius = r_birth + (r_final - r_birth) * x * x;
+    }
+    const Eigen::Vector3d heading = f.axes.col(0);
+    node.start = f.position;
+    f.position += heading * length;
+    node.end = f.position;
+    node.direction = heading;
+    node.length = length;
+    node.radius = radius;
+    node.birth_time = r.birth;
+    node.physiological_age = static_cast<std::uint16_t>(r.physiological_age);
+    node.order = order;
+    node.kind = OrganKind::kInternode;
+    return add_to(tree, parent, node);
+  }
+
+  // The leaf of metamer `r` while it is present (Jaeger 3.2.1), flagged dead in its pruning
+  // period; `node` still holds the internode, whose radius places the leaf.
+  void add_leaf(const CompressedRecord& r, const AgeGeometry& g, const AgeRotations& rp,
+                std::uint16_t order, const Frame& f, NodeId internode, TreeGraph& tree,
+                NodeData& node, ReconstructionStats& st) const {
+    const double s = status(r.birth, g.leaf_life_span, g.pruning_period);
+    if (s <= 0.0) return;
+    double leaf_length = g.leaf_length_m;
+    if (geo_.from_volumes) {
+      leaf_length = std::sqrt(std::max(r.leaf_volume, 0.0) / geo_.leaf_thickness);
+    }
+    place_leaf(f, g, rp, node.radius, now_ - r.birth, node);
+    node.end = node.start + node.direction * leaf_length;
+    node.length = leaf_length;
+    node.radius = 0.0;
+    node.kind = OrganKind::kLeaf;
+    node.order = static_cast<std::uint16_t>(order + 1);
+    const NodeId leaf = add_to(tree, internode, node);
+    ++st.leaves;
+    if (any_pruning_period_ && s <= g.pruning_period) tree.attribute(kDeadAttribute)[leaf] = 1.0;
+  }
+
+  // The lateral axes born at the top of metamer `id`, spread evenly around the heading and
+  // turned by their branching angle; fallen ones counted, those past the order limit skipped.
+  void queue_laterals(RecordId id, std::uint16_t order, const Frame& f, NodeId internode,
+                      std::vector<AxisStart>& laterals, ReconstructionStats& st) const {
+    const auto ax = graph_.axillaries(id);
+    if (ax.empty()) return;
+    const double spread = 2.0 * std::numbers::pi / static_cast<double>(ax.size());
+    for (std::size_t k = 0; k < ax.size(); ++k) {
+      const CompressedRecord& child = graph_.record(ax[k]);
+      if (child.birth > now_) continue;
+      if (pruned(ax[k])) {
+        ++st.pruned_axes;  // the whole lateral axis has fallen
+        continue;
+      }
+      if (order + 1 > options_.lod.max_order) continue;  // Jaeger 3.1.1: order limit
+      const int q = child.physiological_age;
+      Frame lf;
+      lf.position = f.position;
+      if (k > 0) {
+        lf.axes = f.axes *
+                  Eigen::AngleAxisd(spread * static_cast<double>(k), Eigen::Vector3d::UnitX())
+                      .toRotationMatrix() *
+                  rotations(q).branching;
+      } else {
+        lf.axes = f.axes * rotations(q).branching;
+      }
+      if (absolute_effects_ && geo_.age(q).plagiotropic()) {
+        lf.axes = plagiotropic_frame(lf.axes.col(0), lf.axes.col(1));
+      }
+      laterals.push_back({ax[k], internode, lf, static_cast<std::uint16_t>(order + 1)});
+    }
+  }
+
+  // The frame of the next metamer: turned by the phyllotaxy and, for orthotropic axes with
+  // straightening (Rauh), its heading turned up by a fraction.
+  void next_metamer_frame(const AgeGeometry& g, const AgeRotations& rp, Frame& f) const {
+    if (phyllotaxy_about_heading_) {
+      turn_about_heading(f.axes, rp.phyllotaxy);
+    } else {
+      f.axes = f.axes * rp.phyllotaxy;
+    }
+    if (absolute_effects_ && g.straightening > 0.0 && !g.plagiotropic()) {
+      const Eigen::Vector3d h = f.axes.col(0);
+      const Eigen::Vector3d target = (h + g.straightening * (Eigen::Vector3d::UnitZ() - h));
+      if (target.squaredNorm() > 1e-12) {
+        f.axes =
+            Eigen::Quaterniond::FromTwoVectors(h, target.normalized()).toRotationMatrix() * f.axes;
+      }
+    }
+  }
+
+  // Terminal flower of the axis's last metamer, shown from the cycle after its growth unit.
+  void add_flower(const CompressedRecord& r, const AgeGeometry& g, std::uint16_t order,
+                  const Frame& f, NodeId internode, TreeGraph& tree, NodeData& node,
+                  ReconstructionStats& st) const {
+    if (!options_.flowers || r.apex != ApexState::kFlower || r.birth + 1.0 > now_ + 1e-9) return;
+    node.start = f.position;
+    node.direction = f.axes.col(0);
+    node.end = f.position + node.direction * (0.5 * g.leaf_length_m);
+    node.length = 0.5 * g.leaf_length_m;
+    node.radius = 0.0;
+    node.kind = OrganKind::kFlower;
+    node.order = order;
+    node.birth_time = r.birth + 1.0;
+    add_to(tree, internode, node);
+    ++st.flowers;
   }
 
   // Start and direction of the leaf at the top of a metamer of frame f and radius `radius`:
