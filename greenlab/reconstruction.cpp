@@ -885,6 +885,223 @@ struct PlacedCopy {
   std::uint32_t item;
 };
 
+// Raw pointers to the columns of a line tree, taken again after each resize.
+struct LineColumns {
+  NodeId* parent = nullptr;
+  Eigen::Vector3f *start = nullptr, *direction = nullptr;
+  float *length = nullptr, *radius = nullptr, *birth = nullptr;
+  std::uint16_t *age = nullptr, *order = nullptr;
+  OrganKind* kind = nullptr;
+  std::uint8_t* dead = nullptr;
+
+  void bind(LineTree& lines) {
+    parent = lines.parents().data();
+    start = lines.starts().data();
+    direction = lines.directions().data();
+    length = lines.lengths().data();
+    radius = lines.radii().data();
+    birth = lines.birth_times().data();
+    age = lines.physiological_ages().data();
+    order = lines.orders().data();
+    kind = lines.kinds().data();
+    dead = lines.has_dead() ? lines.dead().data() : nullptr;
+  }
+};
+
+// The records of every metamer born by the age with its leaf and flower bound the output (only
+// fallen axes make it smaller): the columns are sized once, left unwritten, and cut to the
+// records written at the end. Throws for plants too big for an explicit form.
+void size_line_tree(const CompressedTreeGraph& graph, const AxisBuilder& builder, LineTree& lines) {
+  explicit_metamers(graph, builder);
+  const auto capacity = static_cast<std::size_t>(
+      instances_at_age(graph, builder.age(),
+                       [&](const CompressedRecord& r) { return builder.records_per_metamer(r); }));
+  check_memory(static_cast<double>(capacity) * LineTree::kBytesPerRecord,
+               "the explicit tree of " + std::to_string(capacity) + " records");
+  if (lines.capacity() < capacity) {
+    lines.reserve(capacity);
+    lines.advise_huge_pages();
+  }
+  lines.resize_for_overwrite(capacity);
+}
+
+// Oldest node first, axis by axis (as reconstruct): a FIFO of axis starts. An axis whose subtree
+// depends on its absolute orientation is walked from its frame and written at once; any other is
+// a prototype walked once in the canonical frame, placed by a rigid transform, and copied after
+// the walk (in parallel). `queue` and `copies` are the caller's lists, kept between calls.
+class LineTreeWriter {
+ public:
+  LineTreeWriter(const CompressedTreeGraph& graph, const AxisBuilder& builder, LineTree& lines,
+                 std::vector<LineItem>& queue, std::vector<PlacedCopy>& copies)
+      : graph_(graph),
+        builder_(builder),
+        lines_(lines),
+        queue_(queue),
+        copies_(copies),
+        dependent_(orientation_dependent_below(graph, builder)),
+        canonical_(builder.trunk_frame()),
+        canonical_inverse_(canonical_.axes.transpose()) {
+    protos_.resize_index(graph.size());
+    columns_.bind(lines_);
+  }
+
+  // Writes the whole plant; returns the number of records written.
+  NodeId run(ReconstructionStats& st) {
+    queue_.clear();
+    copies_.clear();
+    walk_frames_.assign(1, builder_.root_frame());
+    queue_.push_back(
+        {graph_.root(), kNoNode, 0, 0, Eigen::Matrix3f::Identity(), Eigen::Vector3f::Zero()});
+    for (std::size_t head = 0; head < queue_.size(); ++head) {
+      const LineItem item = queue_[head];  // copied: the queue grows below
+      if (item.walk_frame != kNoWalk) {
+        write_walked_axis(item, st);
+      } else {
+        place_prototype(item, head, st);
+      }
+    }
+    columns_.bind(lines_);
+    copy_placed_prototypes();
+    return cursor_;
+  }
+
+ private:
+  // The bound of size_line_tree holds for every plant the simulation makes; a hand-made graph
+  // that breaks it only costs a reallocation.
+  void make_room(std::size_t n) {
+    if (cursor_ + n <= lines_.size()) return;
+    lines_.resize_for_overwrite(std::max<std::size_t>(2 * lines_.size(), cursor_ + n));
+    columns_.bind(lines_);
+  }
+
+  ReconstructionStats walk_axis(RecordId record, const Frame& frame, std::uint16_t axis_order) {
+    scratch_.clear_keep_capacity();
+    if (builder_.any_pruning_period()) scratch_.add_attribute(kDeadAttribute, 0.0);
+    laterals_.clear();
+    ReconstructionStats axis_stats;
+    builder_.walk({record, kNoNode, frame, axis_order}, scratch_, laterals_, axis_stats);
+    return axis_stats;
+  }
+
+  // An axis walked from its absolute frame, written at the cursor; its laterals queued.
+  void write_walked_axis(const LineItem& item, ReconstructionStats& st) {
+    const NodeId base = cursor_;
+    add_stats(st, walk_axis(item.record, walk_frames_[item.walk_frame], item.order));
+    make_room(scratch_.size());
+    const bool has_dead = scratch_.has_attribute(kDeadAttribute);
+    const LineColumns& c = columns_;
+    for (NodeId k = 0; k < scratch_.size(); ++k) {
+      const NodeId i = base + k;
+      c.parent[i] = k == 0 ? item.parent : base + scratch_.parent(k);
+      c.start[i] = scratch_.start(k).cast<float>();
+      c.direction[i] = scratch_.direction(k).cast<float>();
+      c.length[i] = static_cast<float>(scratch_.length(k));
+      c.radius[i] = static_cast<float>(scratch_.radius(k));
+      c.birth[i] = static_cast<float>(scratch_.birth_time(k));
+      c.age[i] = scratch_.physiological_age(k);
+      c.order[i] = scratch_.order(k);
+      c.kind[i] = scratch_.kind(k);
+      if (c.dead) c.dead[i] = has_dead && scratch_.attribute(kDeadAttribute)[k] != 0.0;
+    }
+    cursor_ += static_cast<NodeId>(scratch_.size());
+    for (const AxisStart& l : laterals_) {
+      LineItem next{l.record,
+                    base + l.parent,
+                    l.order,
+                    kNoWalk,
+                    Eigen::Matrix3f::Identity(),
+                    Eigen::Vector3f::Zero()};
+      if (dependent_[l.record] != 0) {
+        next.walk_frame = static_cast<std::uint32_t>(walk_frames_.size());
+        walk_frames_.push_back(l.frame);
+      } else {  // placement of the prototype, whose frame is the canonical one
+        next.rotation = (l.frame.axes * canonical_inverse_).cast<float>();
+        next.translation = l.frame.position.cast<float>();
+      }
+      queue_.push_back(next);
+    }
+  }
+
+  // A prototype (walked the first time it is met) placed by the queue's item `head`: its records
+  // reserved at the cursor for the copy, its laterals queued with the composed transforms.
+  void place_prototype(const LineItem& item, std::size_t head, ReconstructionStats& st) {
+    const NodeId base = cursor_;
+    std::uint32_t pi = protos_.index_of(item.record);
+    if (pi == kNoPrototype) {
+      const ReconstructionStats axis_stats = walk_axis(item.record, canonical_, 0);
+      pi = protos_.add(item.record, scratch_, laterals_, canonical_inverse_, axis_stats);
+    }
+    const LinePrototypes::Prototype& p = protos_.prototypes[pi];
+    add_stats(st, p.stats);
+    make_room(p.count);
+    copies_.push_back({pi, base, static_cast<std::uint32_t>(head)});
+    cursor_ += p.count;
+    const Eigen::Matrix3f& rot = item.rotation;
+    const Eigen::Vector3f& shift = item.translation;
+    const auto child_order = static_cast<std::uint16_t>(item.order + 1);
+    for (std::uint32_t c = 0; c < p.child_count; ++c) {
+      const LinePrototypes::Child& child = protos_.children[p.child_first + c];
+      queue_.push_back({child.record, base + child.attach, child_order, kNoWalk,
+                        rot * child.rotation, rot * child.translation + shift});
+    }
+  }
+
+  void copy_placed(const PlacedCopy& copy) const {
+    const LineItem& item = queue_[copy.item];
+    const LinePrototypes::Prototype& p = protos_.prototypes[copy.prototype];
+    const LineColumns& c = columns_;
+    // One pass per record: prototypes are short (about ten records), so separate copies per
+    // column would spend more on starting loops than on copying.
+    for (std::uint32_t k = 0; k < p.count; ++k) {
+      const std::uint32_t from = p.first + k;
+      const NodeId i = copy.base + k;
+      c.parent[i] = k == 0 ? item.parent : copy.base + protos_.parent[from];
+      c.start[i] = item.rotation * protos_.start[from] + item.translation;
+      c.direction[i] = item.rotation * protos_.direction[from];
+      c.length[i] = protos_.length[from];
+      c.radius[i] = protos_.radius[from];
+      c.birth[i] = protos_.birth[from];
+      c.age[i] = protos_.age[from];
+      c.kind[i] = protos_.kind[from];
+      c.order[i] = static_cast<std::uint16_t>(protos_.order[from] + item.order);
+    }
+    if (c.dead) std::copy_n(protos_.dead.data() + p.first, p.count, c.dead + copy.base);
+  }
+
+  // Every placed prototype's records into their own range [base, base + count): the ranges do
+  // not overlap, so they are written in parallel, the same records on any number of threads.
+  // (The caller's thread_local lists are reached through the references held here: a worker
+  // naming them would see its own.)
+  void copy_placed_prototypes() const {
+    // Isolated: while it waits, this thread takes no unrelated task of an enclosing parallel
+    // loop, which could run another reconstruction here and reuse the thread_local lists under
+    // it.
+    tbb::this_task_arena::isolate([&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, copies_.size(), 1024),
+                        [&](const tbb::blocked_range<std::size_t>& range) {
+                          for (std::size_t c = range.begin(); c != range.end(); ++c) {
+                            copy_placed(copies_[c]);
+                          }
+                        });
+    });
+  }
+
+  const CompressedTreeGraph& graph_;
+  const AxisBuilder& builder_;
+  LineTree& lines_;
+  std::vector<LineItem>& queue_;
+  std::vector<PlacedCopy>& copies_;
+  const std::vector<std::uint8_t> dependent_;
+  const Frame canonical_;
+  const Eigen::Matrix3d canonical_inverse_;
+  LinePrototypes protos_;
+  LineColumns columns_;
+  NodeId cursor_ = 0;
+  std::vector<Frame> walk_frames_;
+  TreeGraph scratch_;
+  std::vector<AxisStart> laterals_;
+};
+
 }  // namespace
 
 LineTree reconstruct_lines(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
@@ -916,170 +1133,13 @@ void reconstruct_lines_into(const CompressedTreeGraph& graph, const Reconstructi
     if (stats) *stats = st;
     return;
   }
-  explicit_metamers(graph, builder);  // refuses plants too big for an explicit form
-  // The records of every metamer born by the age with its leaf and flower bound the output
-  // (only fallen axes make it smaller): the columns are sized once, left unwritten, and cut to
-  // the records written at the end.
-  const auto capacity = static_cast<std::size_t>(
-      instances_at_age(graph, builder.age(),
-                       [&](const CompressedRecord& r) { return builder.records_per_metamer(r); }));
-  check_memory(static_cast<double>(capacity) * LineTree::kBytesPerRecord,
-               "the explicit tree of " + std::to_string(capacity) + " records");
-  if (lines.capacity() < capacity) {
-    lines.reserve(capacity);
-    lines.advise_huge_pages();
-  }
-  lines.resize_for_overwrite(capacity);
-  const std::vector<std::uint8_t> dependent = orientation_dependent_below(graph, builder);
-  const Frame canonical = builder.trunk_frame();
-  const Eigen::Matrix3d canonical_inverse = canonical.axes.transpose();
-  LinePrototypes protos;
-  protos.resize_index(graph.size());
-
-  NodeId* parent = nullptr;
-  Eigen::Vector3f *start = nullptr, *direction = nullptr;
-  float *length = nullptr, *radius = nullptr, *birth = nullptr;
-  std::uint16_t *age = nullptr, *order = nullptr;
-  OrganKind* kind = nullptr;
-  std::uint8_t* dead = nullptr;
-  const auto columns = [&] {
-    parent = lines.parents().data();
-    start = lines.starts().data();
-    direction = lines.directions().data();
-    length = lines.lengths().data();
-    radius = lines.radii().data();
-    birth = lines.birth_times().data();
-    age = lines.physiological_ages().data();
-    order = lines.orders().data();
-    kind = lines.kinds().data();
-    dead = lines.has_dead() ? lines.dead().data() : nullptr;
-  };
-  columns();
-  NodeId cursor = 0;
-  // The bound above holds for every plant the simulation makes; a hand-made graph that breaks
-  // it only costs a reallocation.
-  const auto make_room = [&](std::size_t n) {
-    if (cursor + n <= lines.size()) return;
-    lines.resize_for_overwrite(std::max<std::size_t>(2 * lines.size(), cursor + n));
-    columns();
-  };
-
-  // Oldest node first, axis by axis (as reconstruct): a FIFO of axis starts. It holds every axis
-  // of the plant (176 000 for the Table 1 tree), so its memory is kept per thread between calls:
-  // growth animation frames then neither allocate nor fault it in again.
+  size_line_tree(graph, builder, lines);
+  // The axis starts of the whole plant (176 000 for the Table 1 tree) and the prototypes placed
+  // are kept per thread between calls: growth animation frames then neither allocate nor fault
+  // them in again.
   thread_local std::vector<LineItem> queue;
-  queue.clear();
-  // The prototypes placed, copied once the walk is done (below).
   thread_local std::vector<PlacedCopy> copies;
-  copies.clear();
-  std::vector<Frame> walk_frames{builder.root_frame()};
-  queue.push_back(
-      {graph.root(), kNoNode, 0, 0, Eigen::Matrix3f::Identity(), Eigen::Vector3f::Zero()});
-  TreeGraph scratch;
-  std::vector<AxisStart> laterals;
-  const auto walk_axis = [&](RecordId record, const Frame& frame, std::uint16_t axis_order) {
-    scratch.clear_keep_capacity();
-    if (builder.any_pruning_period()) scratch.add_attribute(kDeadAttribute, 0.0);
-    laterals.clear();
-    ReconstructionStats axis_stats;
-    builder.walk({record, kNoNode, frame, axis_order}, scratch, laterals, axis_stats);
-    return axis_stats;
-  };
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    const LineItem item = queue[head];
-    const NodeId base = cursor;
-    if (item.walk_frame != kNoWalk) {
-      add_stats(st, walk_axis(item.record, walk_frames[item.walk_frame], item.order));
-      make_room(scratch.size());
-      const bool has_dead = scratch.has_attribute(kDeadAttribute);
-      for (NodeId k = 0; k < scratch.size(); ++k) {
-        const NodeId i = base + k;
-        parent[i] = k == 0 ? item.parent : base + scratch.parent(k);
-        start[i] = scratch.start(k).cast<float>();
-        direction[i] = scratch.direction(k).cast<float>();
-        length[i] = static_cast<float>(scratch.length(k));
-        radius[i] = static_cast<float>(scratch.radius(k));
-        birth[i] = static_cast<float>(scratch.birth_time(k));
-        age[i] = scratch.physiological_age(k);
-        order[i] = scratch.order(k);
-        kind[i] = scratch.kind(k);
-        if (dead) dead[i] = has_dead && scratch.attribute(kDeadAttribute)[k] != 0.0;
-      }
-      cursor += static_cast<NodeId>(scratch.size());
-      for (const AxisStart& l : laterals) {
-        LineItem next{l.record,
-                      base + l.parent,
-                      l.order,
-                      kNoWalk,
-                      Eigen::Matrix3f::Identity(),
-                      Eigen::Vector3f::Zero()};
-        if (dependent[l.record] != 0) {
-          next.walk_frame = static_cast<std::uint32_t>(walk_frames.size());
-          walk_frames.push_back(l.frame);
-        } else {  // placement of the prototype, whose frame is the canonical one
-          next.rotation = (l.frame.axes * canonical_inverse).cast<float>();
-          next.translation = l.frame.position.cast<float>();
-        }
-        queue.push_back(next);
-      }
-      continue;
-    }
-    std::uint32_t pi = protos.index_of(item.record);
-    if (pi == kNoPrototype) {
-      const ReconstructionStats axis_stats = walk_axis(item.record, canonical, 0);
-      pi = protos.add(item.record, scratch, laterals, canonical_inverse, axis_stats);
-    }
-    const LinePrototypes::Prototype& p = protos.prototypes[pi];
-    add_stats(st, p.stats);
-    make_room(p.count);
-    copies.push_back({pi, base, static_cast<std::uint32_t>(head)});
-    cursor += p.count;
-    const Eigen::Matrix3f& rot = item.rotation;
-    const Eigen::Vector3f& shift = item.translation;
-    const auto child_order = static_cast<std::uint16_t>(item.order + 1);
-    for (std::uint32_t c = 0; c < p.child_count; ++c) {
-      const LinePrototypes::Child& child = protos.children[p.child_first + c];
-      queue.push_back({child.record, base + child.attach, child_order, kNoWalk,
-                       rot * child.rotation, rot * child.translation + shift});
-    }
-  }
-  // Every placed prototype's records into their own range [base, base + count): the ranges do
-  // not overlap, so they are written in parallel, the same records on any number of threads.
-  // (The thread_local lists are named through references: a worker naming them would see its
-  // own.)
-  columns();
-  const std::vector<LineItem>& items = queue;
-  const std::vector<PlacedCopy>& placed = copies;
-  const auto copy_placed = [&](const PlacedCopy& copy) {
-    const LineItem& item = items[copy.item];
-    const LinePrototypes::Prototype& p = protos.prototypes[copy.prototype];
-    // One pass per record: prototypes are short (about ten records), so separate copies per
-    // column would spend more on starting loops than on copying.
-    for (std::uint32_t k = 0; k < p.count; ++k) {
-      const std::uint32_t from = p.first + k;
-      const NodeId i = copy.base + k;
-      parent[i] = k == 0 ? item.parent : copy.base + protos.parent[from];
-      start[i] = item.rotation * protos.start[from] + item.translation;
-      direction[i] = item.rotation * protos.direction[from];
-      length[i] = protos.length[from];
-      radius[i] = protos.radius[from];
-      birth[i] = protos.birth[from];
-      age[i] = protos.age[from];
-      kind[i] = protos.kind[from];
-      order[i] = static_cast<std::uint16_t>(protos.order[from] + item.order);
-    }
-    if (dead) std::copy_n(protos.dead.data() + p.first, p.count, dead + copy.base);
-  };
-  // Isolated: while it waits, this thread takes no unrelated task of an enclosing parallel loop,
-  // which could run another reconstruction here and reuse the thread_local lists under it.
-  tbb::this_task_arena::isolate([&] {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, placed.size(), 1024),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                        for (std::size_t c = range.begin(); c != range.end(); ++c) {
-                          copy_placed(placed[c]);
-                        }
-                      });
-  });
+  const NodeId cursor = LineTreeWriter(graph, builder, lines, queue, copies).run(st);
   lines.resize_for_overwrite(cursor);
   if (stats) *stats = st;
 }
