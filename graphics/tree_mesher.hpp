@@ -4,10 +4,10 @@
 // each end. A chain is a maximal run of internodes without a fork (fspm::chains): it stops at
 // every internode with two or more internode children, and each child, the axis's continuation
 // as well as the lateral, starts a tube of its own (Pirk 6.1.3 instead continues a chain through
-// the thickest child; that is not done here); leaf nodes become quads (optionally bent) placed on their metamer, and leaf clusters
-// (leaf nodes of length 0 and radius > 0, as grown and adapted trees keep them) a cloud of leaves
-// or a crown volume (graphics/foliage.hpp). Node columns and user attributes are carried to the
-// vertices as named float attributes.
+// the thickest child; that is not done here); leaf nodes become quads (optionally bent) placed on
+// their metamer, and leaf clusters (leaf nodes of length 0 and radius > 0, as grown and adapted
+// trees keep them) a cloud of leaves or a crown volume (graphics/foliage.hpp). Node columns and
+// user attributes are carried to the vertices as named float attributes.
 #include <Eigen/Core>
 #include <cstddef>
 #include <cstdint>
