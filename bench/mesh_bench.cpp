@@ -130,23 +130,10 @@ leaf_length = 0.2
   return graph;
 }
 
-fspm::graphics::InstancedTree instanced_tree(fspm::greenlab::InstancedPlant plant) {
-  fspm::graphics::InstancedTree tree;
-  for (auto& p : plant.prototypes) {
-    fspm::graphics::InstancedTree::Prototype q;
-    q.geometry = std::move(p.geometry);
-    for (const auto& c : p.children) {
-      q.children.push_back({c.prototype, c.attach, c.rotation, c.translation});
-    }
-    tree.prototypes.push_back(std::move(q));
-  }
-  return tree;
-}
-
 // Jaeger 3.1.2: mesh each substructure once and place it by transforms. Represented triangles
 // per second counts every instance's triangles (what the explicit path has to generate).
 void BM_InstancedMeshCompressedPlant(benchmark::State& state) {
-  const auto tree = instanced_tree(fspm::greenlab::reconstruct_instanced(leeuwenberg_plant(), {}));
+  const auto tree = fspm::greenlab::reconstruct_instanced(leeuwenberg_plant(), {});
   std::size_t represented = 0, stored = 0, instances = 0;
   for (auto _ : state) {
     const auto mesh = fspm::graphics::mesh_instanced(tree);
@@ -179,7 +166,7 @@ BENCHMARK(BM_ExplicitMeshCompressedPlant)->Unit(benchmark::kMillisecond)->UseRea
 // Instanced .glb of the plant: each substructure mesh stored once, one node per occurrence.
 void BM_InstancedGlbExport(benchmark::State& state) {
   const auto mesh = fspm::graphics::mesh_instanced(
-      instanced_tree(fspm::greenlab::reconstruct_instanced(leeuwenberg_plant(), {})));
+      fspm::greenlab::reconstruct_instanced(leeuwenberg_plant(), {}));
   const std::string path = (std::filesystem::temp_directory_path() /
                             ("fspm_inst_bench_" + std::to_string(::getpid()) + ".glb"))
                                .string();

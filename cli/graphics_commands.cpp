@@ -201,17 +201,7 @@ graphics::InstancedMesh mesh_compressed(const CompressedTreeGraph& graph, double
                                         const LevelOfDetail& lod) {
   greenlab::ReconstructionOptions ro;
   ro.age = age;
-  greenlab::InstancedPlant plant = greenlab::reconstruct_instanced(graph, ro);
-  graphics::InstancedTree tree;
-  tree.prototypes.reserve(plant.prototypes.size());
-  for (auto& p : plant.prototypes) {
-    graphics::InstancedTree::Prototype q;
-    q.geometry = std::move(p.geometry);
-    for (const auto& c : p.children) {
-      q.children.push_back({c.prototype, c.attach, c.rotation, c.translation, c.order});
-    }
-    tree.prototypes.push_back(std::move(q));
-  }
+  graphics::InstancedTree tree = greenlab::reconstruct_instanced(graph, ro);
   // Jaeger 3.1.1: the level of detail reduces the substructures before they are meshed.
   if (lod.active()) tree = reduce_instanced_tree(tree, lod);
   return graphics::mesh_instanced(tree, options);

@@ -161,179 +161,261 @@ struct ModelRelabel {
   }
 };
 
-// Zhang's recurrences (see MODELS_DIGEST sec. 2): rows of A in post-order, columns of B in
-// post-order, D_T = distance of subtrees, D_F = distance of child forests.
+// Zhang's recurrences (Zhang 1996): rows of A in post-order, columns of B in post-order,
+// D_T = distance of subtrees, D_F = distance of child forests. Only the rows of nodes whose
+// parent is not done yet are alive; a finished parent returns its children's rows to a pool.
+template <class Relabel>
+class ZhangProgramme {
+ public:
+  ZhangProgramme(const PostTree& A, const PostTree& B, const std::vector<double>& del,
+                 const std::vector<double>& ins, const Relabel& relabel, AssignmentSolver solver,
+                 Traceback* tb)
+      : A_(A), B_(B), relabel_(relabel), solver_(solver), tb_(tb), n1_(A.size()), n2_(B.size()) {
+    whole_subtree_costs(del, ins);
+  }
+
+  double run() {
+    if (n1_ == 0 || n2_ == 0) {
+      return (n1_ ? del_tree_[n1_ - 1] : 0.0) + (n2_ ? ins_tree_[n2_ - 1] : 0.0);
+    }
+    tree_row_.assign(n1_, nullptr);
+    forest_row_.assign(n1_, nullptr);
+    double result = 0.0;
+    for (std::uint32_t i = 0; i < n1_; ++i) {
+      fill_row(i);
+      if (i + 1 == n1_) result = tree_row_[i][n2_ - 1];
+      release_children_rows(i);
+    }
+    return result;
+  }
+
+ private:
+  // Costs of deleting / inserting whole subtrees and child forests.
+  void whole_subtree_costs(const std::vector<double>& del, const std::vector<double>& ins) {
+    del_tree_.resize(n1_);
+    del_forest_.assign(n1_, 0.0);
+    ins_tree_.resize(n2_);
+    ins_forest_.assign(n2_, 0.0);
+    for (std::uint32_t i = 0; i < n1_; ++i) {
+      for (std::uint32_t s = 0; s < A_.degree(i); ++s) {
+        del_forest_[i] += del_tree_[A_.children(i)[s]];
+      }
+      del_tree_[i] = del_forest_[i] + del[i];
+    }
+    for (std::uint32_t j = 0; j < n2_; ++j) {
+      for (std::uint32_t t = 0; t < B_.degree(j); ++t) {
+        ins_forest_[j] += ins_tree_[B_.children(j)[t]];
+      }
+      ins_tree_[j] = ins_forest_[j] + ins[j];
+    }
+  }
+
+  double* take_row() {
+    if (free_rows_.empty()) {
+      storage_.push_back(std::make_unique<double[]>(n2_));
+      return storage_.back().get();
+    }
+    double* r = free_rows_.back();
+    free_rows_.pop_back();
+    return r;
+  }
+
+  // D_F[i][.] and D_T[i][.] for every node of B, from the rows of i's children.
+  void fill_row(std::uint32_t i) {
+    double* Ti = tree_row_[i] = take_row();
+    double* Fi = forest_row_[i] = take_row();
+    ci_ = A_.children(i);
+    ni_ = A_.degree(i);
+    child_tree_.resize(ni_);
+    child_forest_.resize(ni_);
+    for (std::uint32_t s = 0; s < ni_; ++s) {
+      child_tree_[s] = tree_row_[ci_[s]];
+      child_forest_[s] = forest_row_[ci_[s]];
+    }
+    for (std::uint32_t j = 0; j < n2_; ++j) {
+      std::uint16_t fcode = kCodeNone;
+      const double f = forest_distance(i, j, Fi, fcode);
+      Fi[j] = f;
+      std::uint16_t tcode = kCodeMatch;
+      Ti[j] = tree_distance(i, j, f, Ti, tcode);
+      if (tb_) {
+        tb_->tree[std::size_t{i} * n2_ + j] = tcode;
+        tb_->forest[std::size_t{i} * n2_ + j] = fcode;
+      }
+    }
+  }
+
+  void release_children_rows(std::uint32_t i) {
+    const std::uint32_t* ci = A_.children(i);
+    for (std::uint32_t s = 0; s < A_.degree(i); ++s) {
+      free_rows_.push_back(tree_row_[ci[s]]);
+      free_rows_.push_back(forest_row_[ci[s]]);
+      tree_row_[ci[s]] = forest_row_[ci[s]] = nullptr;
+    }
+  }
+
+  // D_F(i, j): the restricted mapping of the two child forests, or all of one forest mapped
+  // under a single child of the other node.
+  double forest_distance(std::uint32_t i, std::uint32_t j, const double* Fi, std::uint16_t& fcode) {
+    const std::uint32_t* cj = B_.children(j);
+    const std::uint32_t nj = B_.degree(j);
+    if (ni_ == 0) return ins_forest_[j];
+    if (nj == 0) return del_forest_[i];
+    fcode = kCodeMatch;
+    double f = restricted_mapping(i, j);
+    // All of A's forest maps into the forest under one child j_t of j; j_t is inserted.
+    for (std::uint32_t t = 0; t < nj; ++t) {
+      const double c = ins_forest_[j] - ins_forest_[cj[t]] + Fi[cj[t]];
+      if (c < f) {
+        f = c;
+        fcode = encode(kCodeInsert, t);
+      }
+    }
+    // Symmetric: all of B's forest maps into the forest under one child i_s of i.
+    for (std::uint32_t s = 0; s < ni_; ++s) {
+      const double c = del_forest_[i] - del_forest_[ci_[s]] + child_forest_[s][j];
+      if (c < f) {
+        f = c;
+        fcode = encode(kCodeDelete, s);
+      }
+    }
+    return f;
+  }
+
+  // D_T(i, j): i relabelled to j with the forests matched, or j inserted with T_A[i] inside one
+  // child subtree of j, or i deleted symmetrically.
+  double tree_distance(std::uint32_t i, std::uint32_t j, double f, const double* Ti,
+                       std::uint16_t& tcode) const {
+    const std::uint32_t* cj = B_.children(j);
+    const std::uint32_t nj = B_.degree(j);
+    double d = f + relabel_(i, j);
+    for (std::uint32_t t = 0; t < nj; ++t) {
+      const double c = ins_tree_[j] - ins_tree_[cj[t]] + Ti[cj[t]];
+      if (c < d) {
+        d = c;
+        tcode = encode(kCodeInsert, t);
+      }
+    }
+    for (std::uint32_t s = 0; s < ni_; ++s) {
+      const double c = del_tree_[i] - del_tree_[ci_[s]] + child_tree_[s][j];
+      if (c < d) {
+        d = c;
+        tcode = encode(kCodeDelete, s);
+      }
+    }
+    return d;
+  }
+
+  // Restricted mapping: children of i matched one-to-one with children of j.
+  double restricted_mapping(std::uint32_t i, std::uint32_t j) {
+    if (solver_ == AssignmentSolver::kMinCostFlow) return match_by_flow(j);
+    const std::uint32_t nj = B_.degree(j);
+    if (ni_ == 1 || nj == 1) return match_one_pair(i, j);
+    return match_by_assignment(i, j);
+  }
+
+  double match_by_flow(std::uint32_t j) {
+    const std::uint32_t* cj = B_.children(j);
+    const std::uint32_t nj = B_.degree(j);
+    pair_cost_.resize(std::size_t{ni_} * nj);
+    row_alone_.resize(ni_);
+    col_alone_.resize(nj);
+    for (std::uint32_t s = 0; s < ni_; ++s) {
+      row_alone_[s] = del_tree_[ci_[s]];
+      for (std::uint32_t t = 0; t < nj; ++t) pair_cost_[s * nj + t] = child_tree_[s][cj[t]];
+    }
+    for (std::uint32_t t = 0; t < nj; ++t) col_alone_[t] = ins_tree_[cj[t]];
+    const auto pa = solve_partial_assignment(pair_cost_, ni_, nj, row_alone_, col_alone_, solver_);
+    if (tb_) {
+      for (std::uint32_t s = 0; s < ni_; ++s) {
+        tb_->match[std::size_t{ci_[s]} * n2_ + j] =
+            static_cast<std::uint16_t>(pa.row_to_col[s] + 1);
+      }
+    }
+    return pa.cost;
+  }
+
+  // One side has a single child: the best pair, if it gains anything, by enumeration.
+  double match_one_pair(std::uint32_t i, std::uint32_t j) {
+    const std::uint32_t* cj = B_.children(j);
+    const std::uint32_t nj = B_.degree(j);
+    double best = 0.0;
+    std::uint32_t bs = ni_, bt = nj;
+    for (std::uint32_t s = 0; s < ni_; ++s) {
+      for (std::uint32_t t = 0; t < nj; ++t) {
+        const double g = child_tree_[s][cj[t]] - del_tree_[ci_[s]] - ins_tree_[cj[t]];
+        if (g <= best) {
+          best = g;
+          bs = s;
+          bt = t;
+        }
+      }
+    }
+    if (tb_) {
+      for (std::uint32_t s = 0; s < ni_; ++s) {
+        tb_->match[std::size_t{ci_[s]} * n2_ + j] =
+            static_cast<std::uint16_t>(s == bs ? bt + 1 : 0);
+      }
+    }
+    return del_forest_[i] + ins_forest_[j] + best;
+  }
+
+  // Gains (pair cost minus leaving both alone, clamped at 0), smaller side as rows, solved by
+  // the Hungarian method.
+  double match_by_assignment(std::uint32_t i, std::uint32_t j) {
+    const std::uint32_t* cj = B_.children(j);
+    const std::uint32_t nj = B_.degree(j);
+    const bool transposed = ni_ > nj;
+    const std::uint32_t rows = transposed ? nj : ni_, cols = transposed ? ni_ : nj;
+    gain_.resize(std::size_t{rows} * cols);
+    assign_.resize(rows);
+    for (std::uint32_t s = 0; s < ni_; ++s) {
+      for (std::uint32_t t = 0; t < nj; ++t) {
+        const double g =
+            std::min(0.0, child_tree_[s][cj[t]] - del_tree_[ci_[s]] - ins_tree_[cj[t]]);
+        gain_[transposed ? std::size_t{t} * cols + s : std::size_t{s} * cols + t] = g;
+      }
+    }
+    const double f = del_forest_[i] + ins_forest_[j] +
+                     hungarian_.solve(gain_.data(), rows, cols, assign_.data());
+    if (tb_) {
+      for (std::uint32_t s = 0; s < ni_; ++s) tb_->match[std::size_t{ci_[s]} * n2_ + j] = 0;
+      for (std::uint32_t r = 0; r < rows; ++r) {
+        const std::uint32_t s = transposed ? static_cast<std::uint32_t>(assign_[r]) : r;
+        const std::uint32_t t = transposed ? r : static_cast<std::uint32_t>(assign_[r]);
+        if (child_tree_[s][cj[t]] <= del_tree_[ci_[s]] + ins_tree_[cj[t]]) {
+          tb_->match[std::size_t{ci_[s]} * n2_ + j] = static_cast<std::uint16_t>(t + 1);
+        }
+      }
+    }
+    return f;
+  }
+
+  const PostTree& A_;
+  const PostTree& B_;
+  const Relabel& relabel_;
+  const AssignmentSolver solver_;
+  Traceback* const tb_;
+  const std::uint32_t n1_, n2_;
+  std::vector<double> del_tree_, del_forest_, ins_tree_, ins_forest_;
+  // Rows of D_T and D_F per node of A, alive until its parent is done, and their pool.
+  std::vector<std::unique_ptr<double[]>> storage_;
+  std::vector<double*> free_rows_, tree_row_, forest_row_;
+  // The node of A whose row is being filled: its children and their rows.
+  const std::uint32_t* ci_ = nullptr;
+  std::uint32_t ni_ = 0;
+  std::vector<const double*> child_tree_, child_forest_;
+  // Workspaces of the restricted mapping.
+  std::vector<double> gain_, pair_cost_, row_alone_, col_alone_;
+  std::vector<int> assign_;
+  HungarianWorkspace hungarian_;
+};
+
 template <class Relabel>
 double run_programme(const PostTree& A, const PostTree& B, const std::vector<double>& del,
                      const std::vector<double>& ins, const Relabel& relabel,
                      AssignmentSolver solver, Traceback* tb) {
-  const std::uint32_t n1 = A.size(), n2 = B.size();
-  // Costs of deleting / inserting whole subtrees and child forests.
-  std::vector<double> del_tree(n1), del_forest(n1, 0.0), ins_tree(n2), ins_forest(n2, 0.0);
-  for (std::uint32_t i = 0; i < n1; ++i) {
-    for (std::uint32_t s = 0; s < A.degree(i); ++s) del_forest[i] += del_tree[A.children(i)[s]];
-    del_tree[i] = del_forest[i] + del[i];
-  }
-  for (std::uint32_t j = 0; j < n2; ++j) {
-    for (std::uint32_t t = 0; t < B.degree(j); ++t) ins_forest[j] += ins_tree[B.children(j)[t]];
-    ins_tree[j] = ins_forest[j] + ins[j];
-  }
-  if (n1 == 0 || n2 == 0) return (n1 ? del_tree[n1 - 1] : 0.0) + (n2 ? ins_tree[n2 - 1] : 0.0);
-
-  std::vector<std::unique_ptr<double[]>> storage;
-  std::vector<double*> free_rows;
-  const auto take_row = [&]() -> double* {
-    if (free_rows.empty()) {
-      storage.push_back(std::make_unique<double[]>(n2));
-      return storage.back().get();
-    }
-    double* r = free_rows.back();
-    free_rows.pop_back();
-    return r;
-  };
-  std::vector<double*> tree_row(n1, nullptr), forest_row(n1, nullptr);
-  std::vector<const double*> child_tree, child_forest;
-  std::vector<double> gain, pair_cost, row_alone, col_alone;
-  std::vector<int> assign;
-  HungarianWorkspace hungarian;
-  double result = 0.0;
-
-  for (std::uint32_t i = 0; i < n1; ++i) {
-    double* Ti = tree_row[i] = take_row();
-    double* Fi = forest_row[i] = take_row();
-    const std::uint32_t* ci = A.children(i);
-    const std::uint32_t ni = A.degree(i);
-    child_tree.resize(ni);
-    child_forest.resize(ni);
-    for (std::uint32_t s = 0; s < ni; ++s) {
-      child_tree[s] = tree_row[ci[s]];
-      child_forest[s] = forest_row[ci[s]];
-    }
-    for (std::uint32_t j = 0; j < n2; ++j) {
-      const std::uint32_t* cj = B.children(j);
-      const std::uint32_t nj = B.degree(j);
-      double f;
-      std::uint16_t fcode = kCodeNone;
-      if (ni == 0) {
-        f = ins_forest[j];
-      } else if (nj == 0) {
-        f = del_forest[i];
-      } else {
-        // Restricted mapping: children of i matched one-to-one with children of j.
-        const double base = del_forest[i] + ins_forest[j];
-        fcode = kCodeMatch;
-        if (solver == AssignmentSolver::kMinCostFlow) {
-          pair_cost.resize(std::size_t{ni} * nj);
-          row_alone.resize(ni);
-          col_alone.resize(nj);
-          for (std::uint32_t s = 0; s < ni; ++s) {
-            row_alone[s] = del_tree[ci[s]];
-            for (std::uint32_t t = 0; t < nj; ++t) pair_cost[s * nj + t] = child_tree[s][cj[t]];
-          }
-          for (std::uint32_t t = 0; t < nj; ++t) col_alone[t] = ins_tree[cj[t]];
-          const auto pa = solve_partial_assignment(pair_cost, ni, nj, row_alone, col_alone, solver);
-          f = pa.cost;
-          if (tb) {
-            for (std::uint32_t s = 0; s < ni; ++s) {
-              tb->match[std::size_t{ci[s]} * n2 + j] =
-                  static_cast<std::uint16_t>(pa.row_to_col[s] + 1);
-            }
-          }
-        } else if (ni == 1 || nj == 1) {
-          double best = 0.0;
-          std::uint32_t bs = ni, bt = nj;
-          for (std::uint32_t s = 0; s < ni; ++s) {
-            for (std::uint32_t t = 0; t < nj; ++t) {
-              const double g = child_tree[s][cj[t]] - del_tree[ci[s]] - ins_tree[cj[t]];
-              if (g <= best) {
-                best = g;
-                bs = s;
-                bt = t;
-              }
-            }
-          }
-          f = base + best;
-          if (tb) {
-            for (std::uint32_t s = 0; s < ni; ++s) {
-              tb->match[std::size_t{ci[s]} * n2 + j] =
-                  static_cast<std::uint16_t>(s == bs ? bt + 1 : 0);
-            }
-          }
-        } else {
-          // Gains (pair cost minus leaving both alone, clamped at 0), smaller side as rows.
-          const bool transposed = ni > nj;
-          const std::uint32_t rows = transposed ? nj : ni, cols = transposed ? ni : nj;
-          gain.resize(std::size_t{rows} * cols);
-          assign.resize(rows);
-          for (std::uint32_t s = 0; s < ni; ++s) {
-            for (std::uint32_t t = 0; t < nj; ++t) {
-              const double g =
-                  std::min(0.0, child_tree[s][cj[t]] - del_tree[ci[s]] - ins_tree[cj[t]]);
-              gain[transposed ? std::size_t{t} * cols + s : std::size_t{s} * cols + t] = g;
-            }
-          }
-          f = base + hungarian.solve(gain.data(), rows, cols, assign.data());
-          if (tb) {
-            for (std::uint32_t s = 0; s < ni; ++s) tb->match[std::size_t{ci[s]} * n2 + j] = 0;
-            for (std::uint32_t r = 0; r < rows; ++r) {
-              const std::uint32_t s = transposed ? static_cast<std::uint32_t>(assign[r]) : r;
-              const std::uint32_t t = transposed ? r : static_cast<std::uint32_t>(assign[r]);
-              if (child_tree[s][cj[t]] <= del_tree[ci[s]] + ins_tree[cj[t]]) {
-                tb->match[std::size_t{ci[s]} * n2 + j] = static_cast<std::uint16_t>(t + 1);
-              }
-            }
-          }
-        }
-        // All of A's forest maps into the forest under one child j_t of j; j_t is inserted.
-        for (std::uint32_t t = 0; t < nj; ++t) {
-          const double c = ins_forest[j] - ins_forest[cj[t]] + Fi[cj[t]];
-          if (c < f) {
-            f = c;
-            fcode = encode(kCodeInsert, t);
-          }
-        }
-        // Symmetric: all of B's forest maps into the forest under one child i_s of i.
-        for (std::uint32_t s = 0; s < ni; ++s) {
-          const double c = del_forest[i] - del_forest[ci[s]] + child_forest[s][j];
-          if (c < f) {
-            f = c;
-            fcode = encode(kCodeDelete, s);
-          }
-        }
-      }
-      Fi[j] = f;
-      // Trees: i relabelled to j with the forests matched, or j inserted with T_A[i] inside
-      // one child subtree of j, or i deleted symmetrically.
-      double d = f + relabel(i, j);
-      std::uint16_t tcode = kCodeMatch;
-      for (std::uint32_t t = 0; t < nj; ++t) {
-        const double c = ins_tree[j] - ins_tree[cj[t]] + Ti[cj[t]];
-        if (c < d) {
-          d = c;
-          tcode = encode(kCodeInsert, t);
-        }
-      }
-      for (std::uint32_t s = 0; s < ni; ++s) {
-        const double c = del_tree[i] - del_tree[ci[s]] + child_tree[s][j];
-        if (c < d) {
-          d = c;
-          tcode = encode(kCodeDelete, s);
-        }
-      }
-      Ti[j] = d;
-      if (tb) {
-        tb->tree[std::size_t{i} * n2 + j] = tcode;
-        tb->forest[std::size_t{i} * n2 + j] = fcode;
-      }
-    }
-    for (std::uint32_t s = 0; s < ni; ++s) {
-      free_rows.push_back(tree_row[ci[s]]);
-      free_rows.push_back(forest_row[ci[s]]);
-      tree_row[ci[s]] = forest_row[ci[s]] = nullptr;
-    }
-    if (i + 1 == n1) result = Ti[n2 - 1];
-  }
-  return result;
+  return ZhangProgramme<Relabel>(A, B, del, ins, relabel, solver, tb).run();
 }
 
 std::vector<std::pair<NodeId, NodeId>> trace_mapping(const PostTree& A, const PostTree& B,

@@ -34,9 +34,39 @@ std::size_t explicit_size(const InstancedTree& tree, std::size_t max_nodes) {
   return nodes;
 }
 
+// Writes one occurrence's geometry into `out` (transformed, orders offset, attributes copied) and
+// returns the occurrences of its children; `map` receives the new id of each prototype node.
+void write_occurrence(const InstancedTree& tree, const Occurrence& o, TreeGraph& out,
+                      std::vector<NodeId>& map) {
+  const TreeGraph& g = tree.prototypes[o.prototype].geometry;
+  map.assign(g.size(), kNoNode);
+  for (NodeId n = 0; n < g.size(); ++n) {
+    NodeData d = g.data(n);
+    d.start = o.rotation * d.start + o.translation;
+    d.end = o.rotation * d.end + o.translation;
+    d.direction = o.rotation * d.direction;
+    d.order = static_cast<std::uint16_t>(d.order + o.order);
+    NodeId parent = n == 0 ? o.parent : map[g.parent(n)];
+    if (parent == kNoNode && !out.empty()) parent = 0;  // one root
+    map[n] = out.add_node(parent, d);
+  }
+  for (const auto& name : g.attribute_names()) {
+    const auto from = g.attribute(name);
+    const auto to = out.attribute(name);
+    for (NodeId n = 0; n < g.size(); ++n) to[map[n]] = from[n];
+  }
+}
+
+Occurrence child_occurrence(const Occurrence& o, const InstancedTree::Child& c,
+                            const std::vector<NodeId>& map) {
+  return {c.prototype, c.attach == kNoNode ? o.parent : map[c.attach], o.rotation * c.rotation,
+          o.rotation * c.translation + o.translation, o.order + c.order};
+}
+
 }  // namespace
 
-TreeGraph expand_instanced_tree(const InstancedTree& tree, std::size_t max_nodes) {
+TreeGraph expand_instanced_tree(const InstancedTree& tree, std::size_t max_nodes,
+                                ExpansionOrder order) {
   TreeGraph out;
   if (tree.prototypes.empty()) return out;
   check_instanced_tree(tree);
@@ -47,35 +77,28 @@ TreeGraph expand_instanced_tree(const InstancedTree& tree, std::size_t max_nodes
   check_memory(static_cast<double>(nodes) * TreeGraph::bytes_per_node(out.attribute_names().size()),
                "the explicit tree of " + std::to_string(nodes) + " nodes");
   out.reserve(nodes);
+  std::vector<NodeId> map;
+  if (order == ExpansionOrder::kAxisByAxis) {
+    // A FIFO of occurrences: children in order after everything met before them.
+    std::vector<Occurrence> queue{Occurrence{}};
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const Occurrence o = queue[head];  // copied: the queue grows below
+      write_occurrence(tree, o, out, map);
+      for (const auto& c : tree.prototypes[o.prototype].children) {
+        queue.push_back(child_occurrence(o, c, map));
+      }
+    }
+    return out;
+  }
   // Depth first, children pushed in reverse so they come out in order.
   std::vector<Occurrence> stack{Occurrence{}};
-  std::vector<NodeId> map;
   while (!stack.empty()) {
     const Occurrence o = stack.back();
     stack.pop_back();
-    const auto& p = tree.prototypes[o.prototype];
-    const TreeGraph& g = p.geometry;
-    map.assign(g.size(), kNoNode);
-    for (NodeId n = 0; n < g.size(); ++n) {
-      NodeData d = g.data(n);
-      d.start = o.rotation * d.start + o.translation;
-      d.end = o.rotation * d.end + o.translation;
-      d.direction = o.rotation * d.direction;
-      d.order = static_cast<std::uint16_t>(d.order + o.order);
-      NodeId parent = n == 0 ? o.parent : map[g.parent(n)];
-      if (parent == kNoNode && !out.empty()) parent = 0;  // one root
-      map[n] = out.add_node(parent, d);
-    }
-    for (const auto& name : g.attribute_names()) {
-      const auto from = g.attribute(name);
-      const auto to = out.attribute(name);
-      for (NodeId n = 0; n < g.size(); ++n) to[map[n]] = from[n];
-    }
-    for (std::size_t k = p.children.size(); k-- > 0;) {
-      const auto& c = p.children[k];
-      stack.push_back({c.prototype, c.attach == kNoNode ? o.parent : map[c.attach],
-                       o.rotation * c.rotation, o.rotation * c.translation + o.translation,
-                       o.order + c.order});
+    write_occurrence(tree, o, out, map);
+    const auto& children = tree.prototypes[o.prototype].children;
+    for (std::size_t k = children.size(); k-- > 0;) {
+      stack.push_back(child_occurrence(o, children[k], map));
     }
   }
   return out;

@@ -33,12 +33,20 @@ struct InstancedTree {
   std::vector<Prototype> prototypes;  // prototypes[0] is the root
 };
 
+// The order in which the occurrences are written to the explicit tree. Depth first: each
+// occurrence followed by everything that hangs from it (the turtle's order of an L-system).
+// Axis by axis: breadth first over the occurrences, oldest first (trunk, then its laterals, then
+// theirs), the order of greenlab::reconstruct (Jaeger 3.1.1), so that the expansion of
+// greenlab::reconstruct_instanced numbers its nodes as the explicit reconstruction does.
+enum class ExpansionOrder { kDepthFirst, kAxisByAxis };
+
 // The explicit tree the instanced tree stands for: every occurrence's geometry transformed, its
 // orders offset, its user attributes copied. A child's base hangs from its attach node, or, without
 // one, from the node its parent occurrence hangs from (the first node when there is none). Throws
 // ValueError for a child referring to a missing prototype or node, and MemoryLimitError (through
 // check_memory) or ValueError when the explicit tree would exceed `max_nodes` nodes.
-TreeGraph expand_instanced_tree(const InstancedTree& tree, std::size_t max_nodes);
+TreeGraph expand_instanced_tree(const InstancedTree& tree, std::size_t max_nodes,
+                                ExpansionOrder order = ExpansionOrder::kDepthFirst);
 
 // Throws ValueError when a child refers to a prototype or attachment node that does not exist.
 void check_instanced_tree(const InstancedTree& tree);

@@ -1,10 +1,13 @@
 #pragma once
 // Meshing a TreeGraph: every chain of internodes becomes one generalized cylinder (a tube of
 // rings swept along the chain with parallel transport frames, Pirk 6.1.2), closed by a cap at
-// each end; leaf nodes become quads (optionally bent) placed on their metamer, and leaf clusters
-// (leaf nodes of length 0 and radius > 0, as grown and adapted trees keep them) a cloud of leaves
-// or a crown volume (graphics/foliage.hpp). Node columns and user attributes are carried to the
-// vertices as named float attributes.
+// each end. A chain is a maximal run of internodes without a fork (fspm::chains): it stops at
+// every internode with two or more internode children, and each child, the axis's continuation
+// as well as the lateral, starts a tube of its own (Pirk 6.1.3 instead continues a chain through
+// the thickest child; that is not done here); leaf nodes become quads (optionally bent) placed on
+// their metamer, and leaf clusters (leaf nodes of length 0 and radius > 0, as grown and adapted
+// trees keep them) a cloud of leaves or a crown volume (graphics/foliage.hpp). Node columns and
+// user attributes are carried to the vertices as named float attributes.
 #include <Eigen/Core>
 #include <cstddef>
 #include <cstdint>
@@ -19,7 +22,8 @@
 namespace fspm::graphics {
 
 // How tubes meet at branch points.
-//   kSeparate: one closed tube per chain (Pirk 6.1.3), children start with their own cap.
+//   kSeparate: one closed tube per chain, ending at the fork; every child starts with its own
+//     cap, from the frame at its parent chain's tip.
 //   kContinuous: after Reynolds 3.2, one tube per axis running through its branch points; where a
 //     lateral axis starts, a knuckle ring is added on the parent at the lateral's width and the
 //     lateral grows out of the quad it leaves open, sharing its four vertices, so the bark is one

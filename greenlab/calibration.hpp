@@ -1,5 +1,5 @@
 #pragma once
-// Calibration of GL1 ("model inversion", MODELS_DIGEST §3): hidden parameters (sink strengths,
+// Calibration of GL1 ("model inversion", Yan et al. 2004): hidden parameters (sink strengths,
 // beta-law shapes, resistance, seed biomass ...) fitted by least squares to target data with
 // Ceres (Levenberg-Marquardt); standard errors from the covariance (J^T J)^-1 scaled by the
 // residual variance.

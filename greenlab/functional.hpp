@@ -1,5 +1,5 @@
 #pragma once
-// GL1 source-sink functioning (de Reffye et al. 2003; MODELS_DIGEST §3): biomass production from
+// GL1 source-sink functioning (de Reffye et al. 2003; Yan et al. 2004): biomass production from
 // green leaf area, allocation to organs by sink strength times a beta-law expansion function,
 // rings spread over the internodes by number. Organs of one physiological age born in one cycle
 // are identical, so everything is computed per (age, birth cycle) and multiplied by the organ

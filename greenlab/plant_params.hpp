@@ -28,7 +28,7 @@ enum class Orientation : std::uint8_t { kOrthotropic = 0, kPlagiotropic = 1 };
 // them (Jaeger 4.2: time and aging attributes in floating point), metamer k of n at c - 1 + k/n.
 enum class BirthDates : std::uint8_t { kCycle = 0, kContinuous = 1 };
 
-// Organ-level GL1 parameters of one physiological age (MODELS_DIGEST §3).
+// Organ-level GL1 parameters of one physiological age (Yan et al. 2004).
 struct AgeFunctional {
   double leaf_sink = 1.0;
   double internode_sink = 1.0;
@@ -82,7 +82,7 @@ struct AgeParams {
   }
 };
 
-// Plant-level GL1 parameters (MODELS_DIGEST §3, Jaeger annex for the allometry).
+// Plant-level GL1 parameters (Yan et al. 2004, Jaeger annex for the allometry).
 struct Functional {
   bool enabled = false;
   double seed_biomass = 1.0;        // Q(0)

@@ -18,6 +18,9 @@
 namespace fspm::greenlab {
 namespace {
 
+// No prototype yet for this axis start (reconstruct_instanced, the line tree's instancing).
+constexpr std::uint32_t kNoPrototype = 0xFFFFFFFFu;
+
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 
 std::string age_key(int p, const char* name) { return "age." + std::to_string(p) + "." + name; }
@@ -270,136 +273,168 @@ class AxisBuilder {
   }
 
   // Adds the axis starting at axis.record under axis.parent; its laterals go to `laterals`.
+  // Metamer by metamer: the internode, its leaf and its laterals at its top, then the frame
+  // turned for the next metamer; the terminal flower after the last one. `node` is one record
+  // reused for every organ, so an organ keeps the fields of the internode it does not set.
   void walk(const AxisStart& axis, TreeGraph& tree, std::vector<AxisStart>& laterals,
             ReconstructionStats& st) const {
-    const CompressedRecord* r = &graph_.record(axis.record);
-    bool axis_dead = false;
-    if (axis.record != graph_.root()) {  // a lateral axis (the root never starts one)
-      const AgeGeometry& axis_geo = geo_.age(r->physiological_age);
-      axis_dead = status(r->birth, axis_geo.axis_life_span, axis_geo.pruning_period) <=
-                  axis_geo.pruning_period;
-    }
+    const bool axis_dead = lateral_axis_dead(axis.record);
     Frame f = axis.frame;
     NodeId parent = axis.parent;
     RecordId id = axis.record;
     NodeData node;
     while (true) {
-      r = &graph_.record(id);
-      const int p = r->physiological_age;
-      const AgeGeometry& g = geo_.age(p);
-      const AgeRotations& rp = rotations(p);
-      double length = g.internode_length_m;
-      double r_birth = g.internode_radius_m;
-      double r_final = g.internode_radius_m + g.radius_growth_m * (final_date_ - r->birth);
-      if (geo_.from_volumes) {
-        const auto dim = internode_dimensions(r->pith_volume, r->ring_volume, geo_.reference_length,
-                                              geo_.allometry_b);
-        length = dim.length;
-        r_birth = dim.pith_radius;
-        r_final = dim.radius;
-      }
-      double radius = r_final;
-      if (now_ < final_date_ && final_date_ > r->birth) {
-        // Jaeger 3.2.2: quadratic interpolation of the diameter from birth to the final age.
-        const double x = (now_ - r->birth) / (final_date_ - r->birth);
-        radius = r_birth + (r_final - r_birth) * x * x;
-      }
-      const Eigen::Vector3d heading = f.axes.col(0);
-      node.start = f.position;
-      f.position += heading * length;
-      node.end = f.position;
-      node.direction = heading;
-      node.length = length;
-      node.radius = radius;
-      node.birth_time = r->birth;
-      node.physiological_age = static_cast<std::uint16_t>(p);
-      node.order = axis.order;
-      node.kind = OrganKind::kInternode;
-      const NodeId internode = add_to(tree, parent, node);
+      const CompressedRecord& r = graph_.record(id);
+      const AgeGeometry& g = geo_.age(r.physiological_age);
+      const AgeRotations& rp = rotations(r.physiological_age);
+      const NodeId internode = add_internode(r, g, axis.order, f, parent, tree, node);
       ++st.metamers;
       if (axis_dead && any_pruning_period_) tree.attribute(kDeadAttribute)[internode] = 1.0;
-
       // The leaf and the laterals sit at the top of the metamer, their azimuth set by phyllotaxy.
-      if (options_.leaves) {
-        const double s = status(r->birth, g.leaf_life_span, g.pruning_period);
-        if (s > 0.0) {
-          double leaf_length = g.leaf_length_m;
-          if (geo_.from_volumes) {
-            leaf_length = std::sqrt(std::max(r->leaf_volume, 0.0) / geo_.leaf_thickness);
-          }
-          place_leaf(f, g, rp, radius, now_ - r->birth, node);
-          node.end = node.start + node.direction * leaf_length;
-          node.length = leaf_length;
-          node.radius = 0.0;
-          node.kind = OrganKind::kLeaf;
-          node.order = static_cast<std::uint16_t>(axis.order + 1);
-          const NodeId leaf = add_to(tree, internode, node);
-          ++st.leaves;
-          if (any_pruning_period_ && s <= g.pruning_period)
-            tree.attribute(kDeadAttribute)[leaf] = 1.0;
-        }
-      }
-      const auto ax = graph_.axillaries(id);
-      if (!ax.empty()) {
-        const double spread = 2.0 * std::numbers::pi / static_cast<double>(ax.size());
-        for (std::size_t k = 0; k < ax.size(); ++k) {
-          const CompressedRecord& child = graph_.record(ax[k]);
-          if (child.birth > now_) continue;
-          if (pruned(ax[k])) {
-            ++st.pruned_axes;  // the whole lateral axis has fallen
-            continue;
-          }
-          if (axis.order + 1 > options_.lod.max_order) continue;  // Jaeger 3.1.1: order limit
-          const int q = child.physiological_age;
-          Frame lf;
-          lf.position = f.position;
-          if (k > 0) {
-            lf.axes = f.axes *
-                      Eigen::AngleAxisd(spread * static_cast<double>(k), Eigen::Vector3d::UnitX())
-                          .toRotationMatrix() *
-                      rotations(q).branching;
-          } else {
-            lf.axes = f.axes * rotations(q).branching;
-          }
-          if (absolute_effects_ && geo_.age(q).plagiotropic()) {
-            lf.axes = plagiotropic_frame(lf.axes.col(0), lf.axes.col(1));
-          }
-          laterals.push_back({ax[k], internode, lf, static_cast<std::uint16_t>(axis.order + 1)});
-        }
-      }
-      if (phyllotaxy_about_heading_) {
-        turn_about_heading(f.axes, rp.phyllotaxy);
-      } else {
-        f.axes = f.axes * rp.phyllotaxy;
-      }
-      if (absolute_effects_ && g.straightening > 0.0 && !g.plagiotropic()) {
-        // Orthotropic axes (Rauh) turn their heading up by a fraction per metamer.
-        const Eigen::Vector3d h = f.axes.col(0);
-        const Eigen::Vector3d target = (h + g.straightening * (Eigen::Vector3d::UnitZ() - h));
-        if (target.squaredNorm() > 1e-12) {
-          f.axes = Eigen::Quaterniond::FromTwoVectors(h, target.normalized()).toRotationMatrix() *
-                   f.axes;
-        }
-      }
+      if (options_.leaves) add_leaf(r, g, rp, axis.order, f, internode, tree, node, st);
+      queue_laterals(id, axis.order, f, internode, laterals, st);
+      next_metamer_frame(g, rp, f);
       parent = internode;
-      if (r->successor == kNoRecord || graph_.record(r->successor).birth > now_) {
-        // Terminal flower, shown from the cycle after its metamer's growth unit.
-        if (options_.flowers && r->apex == ApexState::kFlower && r->birth + 1.0 <= now_ + 1e-9) {
-          node.start = f.position;
-          node.direction = f.axes.col(0);
-          node.end = f.position + node.direction * (0.5 * g.leaf_length_m);
-          node.length = 0.5 * g.leaf_length_m;
-          node.radius = 0.0;
-          node.kind = OrganKind::kFlower;
-          node.order = axis.order;
-          node.birth_time = r->birth + 1.0;
-          add_to(tree, internode, node);
-          ++st.flowers;
-        }
+      if (r.successor == kNoRecord || graph_.record(r.successor).birth > now_) {
+        add_flower(r, g, axis.order, f, internode, tree, node, st);
         break;
       }
-      id = r->successor;
+      id = r.successor;
     }
+  }
+
+  // Whether the lateral axis starting at `record` is dead but not yet fallen (Jaeger 3.2.1);
+  // the root never starts a lateral.
+  bool lateral_axis_dead(RecordId record) const {
+    if (record == graph_.root()) return false;
+    const CompressedRecord& r = graph_.record(record);
+    const AgeGeometry& g = geo_.age(r.physiological_age);
+    return status(r.birth, g.axis_life_span, g.pruning_period) <= g.pruning_period;
+  }
+
+  // The internode of metamer `r` along the heading of `f`, which it moves to its top. Its length
+  // and radius are the parameters' or (GL1) from its volumes, the radius interpolated to the
+  // present date.
+  NodeId add_internode(const CompressedRecord& r, const AgeGeometry& g, std::uint16_t order,
+                       Frame& f, NodeId parent, TreeGraph& tree, NodeData& node) const {
+    double length = g.internode_length_m;
+    double r_birth = g.internode_radius_m;
+    double r_final = g.internode_radius_m + g.radius_growth_m * (final_date_ - r.birth);
+    if (geo_.from_volumes) {
+      const auto dim = internode_dimensions(r.pith_volume, r.ring_volume, geo_.reference_length,
+                                            geo_.allometry_b);
+      length = dim.length;
+      r_birth = dim.pith_radius;
+      r_final = dim.radius;
+    }
+    double radius = r_final;
+    if (now_ < final_date_ && final_date_ > r.birth) {
+      // Jaeger 3.2.2: quadratic interpolation of the diameter from birth to the final age.
+      const double x = (now_ - r.birth) / (final_date_ - r.birth);
+      radius = r_birth + (r_final - r_birth) * x * x;
+    }
+    const Eigen::Vector3d heading = f.axes.col(0);
+    node.start = f.position;
+    f.position += heading * length;
+    node.end = f.position;
+    node.direction = heading;
+    node.length = length;
+    node.radius = radius;
+    node.birth_time = r.birth;
+    node.physiological_age = static_cast<std::uint16_t>(r.physiological_age);
+    node.order = order;
+    node.kind = OrganKind::kInternode;
+    return add_to(tree, parent, node);
+  }
+
+  // The leaf of metamer `r` while it is present (Jaeger 3.2.1), flagged dead in its pruning
+  // period; `node` still holds the internode, whose radius places the leaf.
+  void add_leaf(const CompressedRecord& r, const AgeGeometry& g, const AgeRotations& rp,
+                std::uint16_t order, const Frame& f, NodeId internode, TreeGraph& tree,
+                NodeData& node, ReconstructionStats& st) const {
+    const double s = status(r.birth, g.leaf_life_span, g.pruning_period);
+    if (s <= 0.0) return;
+    double leaf_length = g.leaf_length_m;
+    if (geo_.from_volumes) {
+      leaf_length = std::sqrt(std::max(r.leaf_volume, 0.0) / geo_.leaf_thickness);
+    }
+    place_leaf(f, g, rp, node.radius, now_ - r.birth, node);
+    node.end = node.start + node.direction * leaf_length;
+    node.length = leaf_length;
+    node.radius = 0.0;
+    node.kind = OrganKind::kLeaf;
+    node.order = static_cast<std::uint16_t>(order + 1);
+    const NodeId leaf = add_to(tree, internode, node);
+    ++st.leaves;
+    if (any_pruning_period_ && s <= g.pruning_period) tree.attribute(kDeadAttribute)[leaf] = 1.0;
+  }
+
+  // The lateral axes born at the top of metamer `id`, spread evenly around the heading and
+  // turned by their branching angle; fallen ones counted, those past the order limit skipped.
+  void queue_laterals(RecordId id, std::uint16_t order, const Frame& f, NodeId internode,
+                      std::vector<AxisStart>& laterals, ReconstructionStats& st) const {
+    const auto ax = graph_.axillaries(id);
+    if (ax.empty()) return;
+    const double spread = 2.0 * std::numbers::pi / static_cast<double>(ax.size());
+    for (std::size_t k = 0; k < ax.size(); ++k) {
+      const CompressedRecord& child = graph_.record(ax[k]);
+      if (child.birth > now_) continue;
+      if (pruned(ax[k])) {
+        ++st.pruned_axes;  // the whole lateral axis has fallen
+        continue;
+      }
+      if (order + 1 > options_.lod.max_order) continue;  // Jaeger 3.1.1: order limit
+      const int q = child.physiological_age;
+      Frame lf;
+      lf.position = f.position;
+      if (k > 0) {
+        lf.axes = f.axes *
+                  Eigen::AngleAxisd(spread * static_cast<double>(k), Eigen::Vector3d::UnitX())
+                      .toRotationMatrix() *
+                  rotations(q).branching;
+      } else {
+        lf.axes = f.axes * rotations(q).branching;
+      }
+      if (absolute_effects_ && geo_.age(q).plagiotropic()) {
+        lf.axes = plagiotropic_frame(lf.axes.col(0), lf.axes.col(1));
+      }
+      laterals.push_back({ax[k], internode, lf, static_cast<std::uint16_t>(order + 1)});
+    }
+  }
+
+  // The frame of the next metamer: turned by the phyllotaxy and, for orthotropic axes with
+  // straightening (Rauh), its heading turned up by a fraction.
+  void next_metamer_frame(const AgeGeometry& g, const AgeRotations& rp, Frame& f) const {
+    if (phyllotaxy_about_heading_) {
+      turn_about_heading(f.axes, rp.phyllotaxy);
+    } else {
+      f.axes = f.axes * rp.phyllotaxy;
+    }
+    if (absolute_effects_ && g.straightening > 0.0 && !g.plagiotropic()) {
+      const Eigen::Vector3d h = f.axes.col(0);
+      const Eigen::Vector3d target = (h + g.straightening * (Eigen::Vector3d::UnitZ() - h));
+      if (target.squaredNorm() > 1e-12) {
+        f.axes =
+            Eigen::Quaterniond::FromTwoVectors(h, target.normalized()).toRotationMatrix() * f.axes;
+      }
+    }
+  }
+
+  // Terminal flower of the axis's last metamer, shown from the cycle after its growth unit.
+  void add_flower(const CompressedRecord& r, const AgeGeometry& g, std::uint16_t order,
+                  const Frame& f, NodeId internode, TreeGraph& tree, NodeData& node,
+                  ReconstructionStats& st) const {
+    if (!options_.flowers || r.apex != ApexState::kFlower || r.birth + 1.0 > now_ + 1e-9) return;
+    node.start = f.position;
+    node.direction = f.axes.col(0);
+    node.end = f.position + node.direction * (0.5 * g.leaf_length_m);
+    node.length = 0.5 * g.leaf_length_m;
+    node.radius = 0.0;
+    node.kind = OrganKind::kFlower;
+    node.order = order;
+    node.birth_time = r.birth + 1.0;
+    add_to(tree, internode, node);
+    ++st.flowers;
   }
 
   // Start and direction of the leaf at the top of a metamer of frame f and radius `radius`:
@@ -682,119 +717,45 @@ void reconstruct_into(const CompressedTreeGraph& graph, const ReconstructionOpti
   if (stats) *stats = st;
 }
 
-namespace {
-
-// The instanced form of a graph with turtle geometry: its groups are the prototypes.
-InstancedPlant instanced_geometry(const CompressedTreeGraph& graph,
-                                  const ReconstructionOptions& options) {
-  InstancedPlant plant;
-  InstancedTree tree = instanced_tree_of(graph, geometry_options(graph, options, plant.age));
-  const std::size_t n = tree.prototypes.size();
-  plant.prototypes.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    auto& p = tree.prototypes[i];
-    auto& q = plant.prototypes[i];
-    q.own_components = p.geometry.size();
-    q.geometry = std::move(p.geometry);
-    for (const auto& c : p.children) {
-      q.children.push_back({c.prototype, c.attach, c.rotation, c.translation, c.order});
-    }
+InstancedTree reconstruct_instanced(const CompressedTreeGraph& graph,
+                                    const ReconstructionOptions& options) {
+  if (graph.has_geometry()) {
+    // Turtle geometry: the groups of the graph are the prototypes.
+    double age = 0.0;
+    return instanced_tree_of(graph, geometry_options(graph, options, age));
   }
-  // Prototypes are numbered as they are met, so children come after their parents.
-  std::vector<std::uint64_t> total(n, 0);
-  for (std::size_t i = n; i-- > 0;) {
-    total[i] = plant.prototypes[i].own_components;
-    for (const auto& c : plant.prototypes[i].children) {
-      total[i] = add_saturating(total[i], total[c.prototype]);
-    }
-  }
-  plant.represented_components = total.empty() ? 0 : total[0];
-  return plant;
-}
-
-}  // namespace
-
-InstancedPlant reconstruct_instanced(const CompressedTreeGraph& graph,
-                                     const ReconstructionOptions& options) {
-  if (graph.has_geometry()) return instanced_geometry(graph, options);
   const AxisBuilder builder(graph, options, false);
-  InstancedPlant plant;
-  plant.age = builder.age();
-  if (nothing_born(graph, builder)) return plant;
+  InstancedTree tree;
+  if (nothing_born(graph, builder)) return tree;
   const Frame canonical = builder.trunk_frame();
   const Eigen::Matrix3d canonical_inverse = canonical.axes.transpose();
   std::vector<std::uint32_t> prototype_of(graph.size(), kNoPrototype);
+  std::vector<RecordId> first_record{graph.root()};  // of each prototype's axis
   std::vector<AxisStart> laterals;
   // One prototype per axis start, built in its own frame; children placed by transforms.
   prototype_of[graph.root()] = 0;
-  plant.prototypes.emplace_back();
-  plant.prototypes[0].record = graph.root();
-  for (std::size_t i = 0; i < plant.prototypes.size(); ++i) {
+  tree.prototypes.emplace_back();
+  for (std::size_t i = 0; i < tree.prototypes.size(); ++i) {
     ReconstructionStats st;
     laterals.clear();
-    const RecordId record = plant.prototypes[i].record;
     TreeGraph geometry;
     if (builder.any_pruning_period()) geometry.add_attribute(kDeadAttribute, 0.0);
-    builder.walk({record, kNoNode, canonical, 0}, geometry, laterals, st);
-    std::vector<InstancedPlant::Child> children;
+    builder.walk({first_record[i], kNoNode, canonical, 0}, geometry, laterals, st);
+    std::vector<InstancedTree::Child> children;
     children.reserve(laterals.size());
     for (const AxisStart& l : laterals) {
       std::uint32_t& proto = prototype_of[l.record];
       if (proto == kNoPrototype) {
-        proto = static_cast<std::uint32_t>(plant.prototypes.size());
-        plant.prototypes.emplace_back();
-        plant.prototypes.back().record = l.record;
+        proto = static_cast<std::uint32_t>(tree.prototypes.size());
+        tree.prototypes.emplace_back();
+        first_record.push_back(l.record);
       }
-      children.push_back({proto, l.parent, l.frame.axes * canonical_inverse, l.frame.position});
+      children.push_back(
+          {proto, l.parent, l.frame.axes * canonical_inverse, l.frame.position, 1.0});
     }
-    InstancedPlant::Prototype& p = plant.prototypes[i];
+    InstancedTree::Prototype& p = tree.prototypes[i];
     p.geometry = std::move(geometry);
     p.children = std::move(children);
-    p.own_components = st.components();
-  }
-  // Components represented: a prototype's own plus its children's, children built after parents.
-  std::vector<std::uint64_t> total(plant.prototypes.size(), 0);
-  for (std::size_t i = plant.prototypes.size(); i-- > 0;) {
-    std::uint64_t t = plant.prototypes[i].own_components;
-    for (const auto& c : plant.prototypes[i].children) t += total[c.prototype];
-    total[i] = t;
-  }
-  plant.represented_components = total[0];
-  return plant;
-}
-
-TreeGraph expand_instanced(const InstancedPlant& plant) {
-  TreeGraph tree;
-  if (plant.prototypes.empty()) return tree;
-  struct Item {
-    std::uint32_t prototype;
-    NodeId parent;
-    Eigen::Matrix3d rotation;
-    Eigen::Vector3d translation;
-    std::uint16_t order;
-  };
-  std::vector<Item> queue{{0, kNoNode, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(), 0}};
-  std::vector<NodeId> map;
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    const Item item = queue[head];
-    const auto& p = plant.prototypes[item.prototype];
-    const TreeGraph& g = p.geometry;
-    map.assign(g.size(), kNoNode);
-    for (NodeId n = 0; n < g.size(); ++n) {
-      NodeData d = g.data(n);
-      d.start = item.rotation * d.start + item.translation;
-      d.end = item.rotation * d.end + item.translation;
-      d.direction = item.rotation * d.direction;
-      d.order = static_cast<std::uint16_t>(d.order + item.order);
-      NodeId parent = n == 0 ? item.parent : map[g.parent(n)];
-      if (parent == kNoNode && !tree.empty()) parent = 0;  // one root (turtle geometry)
-      map[n] = tree.add_node(parent, d);
-    }
-    for (const auto& c : p.children) {
-      queue.push_back({c.prototype, c.attach == kNoNode ? item.parent : map[c.attach],
-                       item.rotation * c.rotation, item.rotation * c.translation + item.translation,
-                       static_cast<std::uint16_t>(item.order + c.order)});
-    }
   }
   return tree;
 }
@@ -924,6 +885,223 @@ struct PlacedCopy {
   std::uint32_t item;
 };
 
+// Raw pointers to the columns of a line tree, taken again after each resize.
+struct LineColumns {
+  NodeId* parent = nullptr;
+  Eigen::Vector3f *start = nullptr, *direction = nullptr;
+  float *length = nullptr, *radius = nullptr, *birth = nullptr;
+  std::uint16_t *age = nullptr, *order = nullptr;
+  OrganKind* kind = nullptr;
+  std::uint8_t* dead = nullptr;
+
+  void bind(LineTree& lines) {
+    parent = lines.parents().data();
+    start = lines.starts().data();
+    direction = lines.directions().data();
+    length = lines.lengths().data();
+    radius = lines.radii().data();
+    birth = lines.birth_times().data();
+    age = lines.physiological_ages().data();
+    order = lines.orders().data();
+    kind = lines.kinds().data();
+    dead = lines.has_dead() ? lines.dead().data() : nullptr;
+  }
+};
+
+// The records of every metamer born by the age with its leaf and flower bound the output (only
+// fallen axes make it smaller): the columns are sized once, left unwritten, and cut to the
+// records written at the end. Throws for plants too big for an explicit form.
+void size_line_tree(const CompressedTreeGraph& graph, const AxisBuilder& builder, LineTree& lines) {
+  explicit_metamers(graph, builder);
+  const auto capacity = static_cast<std::size_t>(
+      instances_at_age(graph, builder.age(),
+                       [&](const CompressedRecord& r) { return builder.records_per_metamer(r); }));
+  check_memory(static_cast<double>(capacity) * LineTree::kBytesPerRecord,
+               "the explicit tree of " + std::to_string(capacity) + " records");
+  if (lines.capacity() < capacity) {
+    lines.reserve(capacity);
+    lines.advise_huge_pages();
+  }
+  lines.resize_for_overwrite(capacity);
+}
+
+// Oldest node first, axis by axis (as reconstruct): a FIFO of axis starts. An axis whose subtree
+// depends on its absolute orientation is walked from its frame and written at once; any other is
+// a prototype walked once in the canonical frame, placed by a rigid transform, and copied after
+// the walk (in parallel). `queue` and `copies` are the caller's lists, kept between calls.
+class LineTreeWriter {
+ public:
+  LineTreeWriter(const CompressedTreeGraph& graph, const AxisBuilder& builder, LineTree& lines,
+                 std::vector<LineItem>& queue, std::vector<PlacedCopy>& copies)
+      : graph_(graph),
+        builder_(builder),
+        lines_(lines),
+        queue_(queue),
+        copies_(copies),
+        dependent_(orientation_dependent_below(graph, builder)),
+        canonical_(builder.trunk_frame()),
+        canonical_inverse_(canonical_.axes.transpose()) {
+    protos_.resize_index(graph.size());
+    columns_.bind(lines_);
+  }
+
+  // Writes the whole plant; returns the number of records written.
+  NodeId run(ReconstructionStats& st) {
+    queue_.clear();
+    copies_.clear();
+    walk_frames_.assign(1, builder_.root_frame());
+    queue_.push_back(
+        {graph_.root(), kNoNode, 0, 0, Eigen::Matrix3f::Identity(), Eigen::Vector3f::Zero()});
+    for (std::size_t head = 0; head < queue_.size(); ++head) {
+      const LineItem item = queue_[head];  // copied: the queue grows below
+      if (item.walk_frame != kNoWalk) {
+        write_walked_axis(item, st);
+      } else {
+        place_prototype(item, head, st);
+      }
+    }
+    columns_.bind(lines_);
+    copy_placed_prototypes();
+    return cursor_;
+  }
+
+ private:
+  // The bound of size_line_tree holds for every plant the simulation makes; a hand-made graph
+  // that breaks it only costs a reallocation.
+  void make_room(std::size_t n) {
+    if (cursor_ + n <= lines_.size()) return;
+    lines_.resize_for_overwrite(std::max<std::size_t>(2 * lines_.size(), cursor_ + n));
+    columns_.bind(lines_);
+  }
+
+  ReconstructionStats walk_axis(RecordId record, const Frame& frame, std::uint16_t axis_order) {
+    scratch_.clear_keep_capacity();
+    if (builder_.any_pruning_period()) scratch_.add_attribute(kDeadAttribute, 0.0);
+    laterals_.clear();
+    ReconstructionStats axis_stats;
+    builder_.walk({record, kNoNode, frame, axis_order}, scratch_, laterals_, axis_stats);
+    return axis_stats;
+  }
+
+  // An axis walked from its absolute frame, written at the cursor; its laterals queued.
+  void write_walked_axis(const LineItem& item, ReconstructionStats& st) {
+    const NodeId base = cursor_;
+    add_stats(st, walk_axis(item.record, walk_frames_[item.walk_frame], item.order));
+    make_room(scratch_.size());
+    const bool has_dead = scratch_.has_attribute(kDeadAttribute);
+    const LineColumns& c = columns_;
+    for (NodeId k = 0; k < scratch_.size(); ++k) {
+      const NodeId i = base + k;
+      c.parent[i] = k == 0 ? item.parent : base + scratch_.parent(k);
+      c.start[i] = scratch_.start(k).cast<float>();
+      c.direction[i] = scratch_.direction(k).cast<float>();
+      c.length[i] = static_cast<float>(scratch_.length(k));
+      c.radius[i] = static_cast<float>(scratch_.radius(k));
+      c.birth[i] = static_cast<float>(scratch_.birth_time(k));
+      c.age[i] = scratch_.physiological_age(k);
+      c.order[i] = scratch_.order(k);
+      c.kind[i] = scratch_.kind(k);
+      if (c.dead) c.dead[i] = has_dead && scratch_.attribute(kDeadAttribute)[k] != 0.0;
+    }
+    cursor_ += static_cast<NodeId>(scratch_.size());
+    for (const AxisStart& l : laterals_) {
+      LineItem next{l.record,
+                    base + l.parent,
+                    l.order,
+                    kNoWalk,
+                    Eigen::Matrix3f::Identity(),
+                    Eigen::Vector3f::Zero()};
+      if (dependent_[l.record] != 0) {
+        next.walk_frame = static_cast<std::uint32_t>(walk_frames_.size());
+        walk_frames_.push_back(l.frame);
+      } else {  // placement of the prototype, whose frame is the canonical one
+        next.rotation = (l.frame.axes * canonical_inverse_).cast<float>();
+        next.translation = l.frame.position.cast<float>();
+      }
+      queue_.push_back(next);
+    }
+  }
+
+  // A prototype (walked the first time it is met) placed by the queue's item `head`: its records
+  // reserved at the cursor for the copy, its laterals queued with the composed transforms.
+  void place_prototype(const LineItem& item, std::size_t head, ReconstructionStats& st) {
+    const NodeId base = cursor_;
+    std::uint32_t pi = protos_.index_of(item.record);
+    if (pi == kNoPrototype) {
+      const ReconstructionStats axis_stats = walk_axis(item.record, canonical_, 0);
+      pi = protos_.add(item.record, scratch_, laterals_, canonical_inverse_, axis_stats);
+    }
+    const LinePrototypes::Prototype& p = protos_.prototypes[pi];
+    add_stats(st, p.stats);
+    make_room(p.count);
+    copies_.push_back({pi, base, static_cast<std::uint32_t>(head)});
+    cursor_ += p.count;
+    const Eigen::Matrix3f& rot = item.rotation;
+    const Eigen::Vector3f& shift = item.translation;
+    const auto child_order = static_cast<std::uint16_t>(item.order + 1);
+    for (std::uint32_t c = 0; c < p.child_count; ++c) {
+      const LinePrototypes::Child& child = protos_.children[p.child_first + c];
+      queue_.push_back({child.record, base + child.attach, child_order, kNoWalk,
+                        rot * child.rotation, rot * child.translation + shift});
+    }
+  }
+
+  void copy_placed(const PlacedCopy& copy) const {
+    const LineItem& item = queue_[copy.item];
+    const LinePrototypes::Prototype& p = protos_.prototypes[copy.prototype];
+    const LineColumns& c = columns_;
+    // One pass per record: prototypes are short (about ten records), so separate copies per
+    // column would spend more on starting loops than on copying.
+    for (std::uint32_t k = 0; k < p.count; ++k) {
+      const std::uint32_t from = p.first + k;
+      const NodeId i = copy.base + k;
+      c.parent[i] = k == 0 ? item.parent : copy.base + protos_.parent[from];
+      c.start[i] = item.rotation * protos_.start[from] + item.translation;
+      c.direction[i] = item.rotation * protos_.direction[from];
+      c.length[i] = protos_.length[from];
+      c.radius[i] = protos_.radius[from];
+      c.birth[i] = protos_.birth[from];
+      c.age[i] = protos_.age[from];
+      c.kind[i] = protos_.kind[from];
+      c.order[i] = static_cast<std::uint16_t>(protos_.order[from] + item.order);
+    }
+    if (c.dead) std::copy_n(protos_.dead.data() + p.first, p.count, c.dead + copy.base);
+  }
+
+  // Every placed prototype's records into their own range [base, base + count): the ranges do
+  // not overlap, so they are written in parallel, the same records on any number of threads.
+  // (The caller's thread_local lists are reached through the references held here: a worker
+  // naming them would see its own.)
+  void copy_placed_prototypes() const {
+    // Isolated: while it waits, this thread takes no unrelated task of an enclosing parallel
+    // loop, which could run another reconstruction here and reuse the thread_local lists under
+    // it.
+    tbb::this_task_arena::isolate([&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, copies_.size(), 1024),
+                        [&](const tbb::blocked_range<std::size_t>& range) {
+                          for (std::size_t c = range.begin(); c != range.end(); ++c) {
+                            copy_placed(copies_[c]);
+                          }
+                        });
+    });
+  }
+
+  const CompressedTreeGraph& graph_;
+  const AxisBuilder& builder_;
+  LineTree& lines_;
+  std::vector<LineItem>& queue_;
+  std::vector<PlacedCopy>& copies_;
+  const std::vector<std::uint8_t> dependent_;
+  const Frame canonical_;
+  const Eigen::Matrix3d canonical_inverse_;
+  LinePrototypes protos_;
+  LineColumns columns_;
+  NodeId cursor_ = 0;
+  std::vector<Frame> walk_frames_;
+  TreeGraph scratch_;
+  std::vector<AxisStart> laterals_;
+};
+
 }  // namespace
 
 LineTree reconstruct_lines(const CompressedTreeGraph& graph, const ReconstructionOptions& options,
@@ -955,170 +1133,13 @@ void reconstruct_lines_into(const CompressedTreeGraph& graph, const Reconstructi
     if (stats) *stats = st;
     return;
   }
-  explicit_metamers(graph, builder);  // refuses plants too big for an explicit form
-  // The records of every metamer born by the age with its leaf and flower bound the output
-  // (only fallen axes make it smaller): the columns are sized once, left unwritten, and cut to
-  // the records written at the end.
-  const auto capacity = static_cast<std::size_t>(
-      instances_at_age(graph, builder.age(),
-                       [&](const CompressedRecord& r) { return builder.records_per_metamer(r); }));
-  check_memory(static_cast<double>(capacity) * LineTree::kBytesPerRecord,
-               "the explicit tree of " + std::to_string(capacity) + " records");
-  if (lines.capacity() < capacity) {
-    lines.reserve(capacity);
-    lines.advise_huge_pages();
-  }
-  lines.resize_for_overwrite(capacity);
-  const std::vector<std::uint8_t> dependent = orientation_dependent_below(graph, builder);
-  const Frame canonical = builder.trunk_frame();
-  const Eigen::Matrix3d canonical_inverse = canonical.axes.transpose();
-  LinePrototypes protos;
-  protos.resize_index(graph.size());
-
-  NodeId* parent = nullptr;
-  Eigen::Vector3f *start = nullptr, *direction = nullptr;
-  float *length = nullptr, *radius = nullptr, *birth = nullptr;
-  std::uint16_t *age = nullptr, *order = nullptr;
-  OrganKind* kind = nullptr;
-  std::uint8_t* dead = nullptr;
-  const auto columns = [&] {
-    parent = lines.parents().data();
-    start = lines.starts().data();
-    direction = lines.directions().data();
-    length = lines.lengths().data();
-    radius = lines.radii().data();
-    birth = lines.birth_times().data();
-    age = lines.physiological_ages().data();
-    order = lines.orders().data();
-    kind = lines.kinds().data();
-    dead = lines.has_dead() ? lines.dead().data() : nullptr;
-  };
-  columns();
-  NodeId cursor = 0;
-  // The bound above holds for every plant the simulation makes; a hand-made graph that breaks
-  // it only costs a reallocation.
-  const auto make_room = [&](std::size_t n) {
-    if (cursor + n <= lines.size()) return;
-    lines.resize_for_overwrite(std::max<std::size_t>(2 * lines.size(), cursor + n));
-    columns();
-  };
-
-  // Oldest node first, axis by axis (as reconstruct): a FIFO of axis starts. It holds every axis
-  // of the plant (176 000 for the Table 1 tree), so its memory is kept per thread between calls:
-  // growth animation frames then neither allocate nor fault it in again.
+  size_line_tree(graph, builder, lines);
+  // The axis starts of the whole plant (176 000 for the Table 1 tree) and the prototypes placed
+  // are kept per thread between calls: growth animation frames then neither allocate nor fault
+  // them in again.
   thread_local std::vector<LineItem> queue;
-  queue.clear();
-  // The prototypes placed, copied once the walk is done (below).
   thread_local std::vector<PlacedCopy> copies;
-  copies.clear();
-  std::vector<Frame> walk_frames{builder.root_frame()};
-  queue.push_back(
-      {graph.root(), kNoNode, 0, 0, Eigen::Matrix3f::Identity(), Eigen::Vector3f::Zero()});
-  TreeGraph scratch;
-  std::vector<AxisStart> laterals;
-  const auto walk_axis = [&](RecordId record, const Frame& frame, std::uint16_t axis_order) {
-    scratch.clear_keep_capacity();
-    if (builder.any_pruning_period()) scratch.add_attribute(kDeadAttribute, 0.0);
-    laterals.clear();
-    ReconstructionStats axis_stats;
-    builder.walk({record, kNoNode, frame, axis_order}, scratch, laterals, axis_stats);
-    return axis_stats;
-  };
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    const LineItem item = queue[head];
-    const NodeId base = cursor;
-    if (item.walk_frame != kNoWalk) {
-      add_stats(st, walk_axis(item.record, walk_frames[item.walk_frame], item.order));
-      make_room(scratch.size());
-      const bool has_dead = scratch.has_attribute(kDeadAttribute);
-      for (NodeId k = 0; k < scratch.size(); ++k) {
-        const NodeId i = base + k;
-        parent[i] = k == 0 ? item.parent : base + scratch.parent(k);
-        start[i] = scratch.start(k).cast<float>();
-        direction[i] = scratch.direction(k).cast<float>();
-        length[i] = static_cast<float>(scratch.length(k));
-        radius[i] = static_cast<float>(scratch.radius(k));
-        birth[i] = static_cast<float>(scratch.birth_time(k));
-        age[i] = scratch.physiological_age(k);
-        order[i] = scratch.order(k);
-        kind[i] = scratch.kind(k);
-        if (dead) dead[i] = has_dead && scratch.attribute(kDeadAttribute)[k] != 0.0;
-      }
-      cursor += static_cast<NodeId>(scratch.size());
-      for (const AxisStart& l : laterals) {
-        LineItem next{l.record,
-                      base + l.parent,
-                      l.order,
-                      kNoWalk,
-                      Eigen::Matrix3f::Identity(),
-                      Eigen::Vector3f::Zero()};
-        if (dependent[l.record] != 0) {
-          next.walk_frame = static_cast<std::uint32_t>(walk_frames.size());
-          walk_frames.push_back(l.frame);
-        } else {  // placement of the prototype, whose frame is the canonical one
-          next.rotation = (l.frame.axes * canonical_inverse).cast<float>();
-          next.translation = l.frame.position.cast<float>();
-        }
-        queue.push_back(next);
-      }
-      continue;
-    }
-    std::uint32_t pi = protos.index_of(item.record);
-    if (pi == kNoPrototype) {
-      const ReconstructionStats axis_stats = walk_axis(item.record, canonical, 0);
-      pi = protos.add(item.record, scratch, laterals, canonical_inverse, axis_stats);
-    }
-    const LinePrototypes::Prototype& p = protos.prototypes[pi];
-    add_stats(st, p.stats);
-    make_room(p.count);
-    copies.push_back({pi, base, static_cast<std::uint32_t>(head)});
-    cursor += p.count;
-    const Eigen::Matrix3f& rot = item.rotation;
-    const Eigen::Vector3f& shift = item.translation;
-    const auto child_order = static_cast<std::uint16_t>(item.order + 1);
-    for (std::uint32_t c = 0; c < p.child_count; ++c) {
-      const LinePrototypes::Child& child = protos.children[p.child_first + c];
-      queue.push_back({child.record, base + child.attach, child_order, kNoWalk,
-                       rot * child.rotation, rot * child.translation + shift});
-    }
-  }
-  // Every placed prototype's records into their own range [base, base + count): the ranges do
-  // not overlap, so they are written in parallel, the same records on any number of threads.
-  // (The thread_local lists are named through references: a worker naming them would see its
-  // own.)
-  columns();
-  const std::vector<LineItem>& items = queue;
-  const std::vector<PlacedCopy>& placed = copies;
-  const auto copy_placed = [&](const PlacedCopy& copy) {
-    const LineItem& item = items[copy.item];
-    const LinePrototypes::Prototype& p = protos.prototypes[copy.prototype];
-    // One pass per record: prototypes are short (about ten records), so separate copies per
-    // column would spend more on starting loops than on copying.
-    for (std::uint32_t k = 0; k < p.count; ++k) {
-      const std::uint32_t from = p.first + k;
-      const NodeId i = copy.base + k;
-      parent[i] = k == 0 ? item.parent : copy.base + protos.parent[from];
-      start[i] = item.rotation * protos.start[from] + item.translation;
-      direction[i] = item.rotation * protos.direction[from];
-      length[i] = protos.length[from];
-      radius[i] = protos.radius[from];
-      birth[i] = protos.birth[from];
-      age[i] = protos.age[from];
-      kind[i] = protos.kind[from];
-      order[i] = static_cast<std::uint16_t>(protos.order[from] + item.order);
-    }
-    if (dead) std::copy_n(protos.dead.data() + p.first, p.count, dead + copy.base);
-  };
-  // Isolated: while it waits, this thread takes no unrelated task of an enclosing parallel loop,
-  // which could run another reconstruction here and reuse the thread_local lists under it.
-  tbb::this_task_arena::isolate([&] {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, placed.size(), 1024),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                        for (std::size_t c = range.begin(); c != range.end(); ++c) {
-                          copy_placed(placed[c]);
-                        }
-                      });
-  });
+  const NodeId cursor = LineTreeWriter(graph, builder, lines, queue, copies).run(st);
   lines.resize_for_overwrite(cursor);
   if (stats) *stats = st;
 }

@@ -10,6 +10,7 @@
 
 #include "fspm/compressed_tree_graph.hpp"
 #include "fspm/instanced_lod.hpp"
+#include "fspm/instanced_tree.hpp"
 #include "fspm/line_tree.hpp"
 #include "fspm/tree_graph.hpp"
 #include "greenlab/plant_params.hpp"
@@ -122,31 +123,11 @@ void reconstruct_lines_into(const CompressedTreeGraph& graph, const Reconstructi
 // on the absolute orientation (orthotropic straightening, plagiotropic flattening) are left out,
 // as Jaeger notes; everything else (angles, lengths, diameters, pruning, birth-date filtering)
 // is as in reconstruct().
-inline constexpr std::uint32_t kNoPrototype = 0xFFFFFFFFu;
-struct InstancedPlant {
-  struct Child {
-    std::uint32_t prototype;
-    // Node of the parent prototype the lateral grows from; kNoNode (turtle geometry only) for a
-    // substructure that hangs from what its parent hangs from.
-    NodeId attach;
-    Eigen::Matrix3d rotation;  // child frame -> parent frame
-    Eigen::Vector3d translation;
-    double order = 1.0;  // branching order added to the parent's
-  };
-  struct Prototype {
-    RecordId record = kNoRecord;  // first metamer of the axis in the compressed graph
-    TreeGraph geometry;           // the axis, its leaves and flower; node 0 is its base
-    std::vector<Child> children;
-    std::uint64_t own_components = 0;
-  };
-  double age = 0.0;
-  std::vector<Prototype> prototypes;         // prototypes[0] is the trunk
-  std::uint64_t represented_components = 0;  // internodes + leaves of the whole plant
-};
-
-InstancedPlant reconstruct_instanced(const CompressedTreeGraph& graph,
-                                     const ReconstructionOptions& options);
-// The explicit tree an instanced plant stands for (axis by axis, as reconstruct orders it).
-TreeGraph expand_instanced(const InstancedPlant& plant);
+//
+// Prototypes are numbered as they are met, oldest axis first, so children come after their
+// parents; expand_instanced_tree(tree, max_nodes, ExpansionOrder::kAxisByAxis) gives back the
+// explicit tree with the nodes in reconstruct()'s order.
+InstancedTree reconstruct_instanced(const CompressedTreeGraph& graph,
+                                    const ReconstructionOptions& options);
 
 }  // namespace fspm::greenlab

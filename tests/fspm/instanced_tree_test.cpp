@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <vector>
 
 #include "fspm/error.hpp"
 
@@ -52,6 +53,49 @@ TEST(InstancedTree, ExpandsOccurrencesWithTheirTransformsOrdersAndAttributes) {
   EXPECT_EQ(g.order(3), 3);
   EXPECT_EQ(g.attribute("color_index")[1], 4.0);
   EXPECT_EQ(g.attribute("color_index")[2], 0.0);
+}
+
+// A one-internode trunk bearing two laterals at its base (at x = 1 and x = -1, one up), each
+// bearing a twig at its top: depth first writes a lateral and its twig before the next lateral,
+// axis by axis writes both laterals before both twigs.
+InstancedTree two_laterals_with_twigs() {
+  InstancedTree t;
+  t.prototypes.resize(3);
+  t.prototypes[0].geometry.add_node(kNoNode, segment({0, 0, 0}, {0, 0, 1}));
+  t.prototypes[1].geometry.add_node(kNoNode, segment({0, 0, 0}, {0, 0, 1}));
+  t.prototypes[2].geometry.add_node(kNoNode, segment({0, 0, 0}, {0, 0, 0.5}));
+  const Eigen::Matrix3d same = Eigen::Matrix3d::Identity();
+  t.prototypes[0].children.push_back({1, 0, same, {1, 0, 1}});
+  t.prototypes[0].children.push_back({1, 0, same, {-1, 0, 1}});
+  t.prototypes[1].children.push_back({2, 0, same, {0, 0, 1}});
+  return t;
+}
+
+TEST(InstancedTree, ExpandsDepthFirstOrAxisByAxis) {
+  const InstancedTree t = two_laterals_with_twigs();
+  struct Expected {
+    NodeId parent;
+    Eigen::Vector3d start;
+    int order;
+  };
+  const auto check = [](const TreeGraph& g, const std::vector<Expected>& nodes) {
+    ASSERT_EQ(g.size(), nodes.size());
+    for (NodeId n = 0; n < g.size(); ++n) {
+      EXPECT_EQ(g.parent(n), nodes[n].parent) << n;
+      EXPECT_NEAR((g.start(n) - nodes[n].start).norm(), 0.0, 1e-12) << n;
+      EXPECT_EQ(g.order(n), nodes[n].order) << n;
+    }
+  };
+  check(expand_instanced_tree(t, 100), {{kNoNode, {0, 0, 0}, 0},
+                                        {0, {1, 0, 1}, 1},
+                                        {1, {1, 0, 2}, 2},
+                                        {0, {-1, 0, 1}, 1},
+                                        {3, {-1, 0, 2}, 2}});
+  check(expand_instanced_tree(t, 100, ExpansionOrder::kAxisByAxis), {{kNoNode, {0, 0, 0}, 0},
+                                                                     {0, {1, 0, 1}, 1},
+                                                                     {0, {-1, 0, 1}, 1},
+                                                                     {1, {1, 0, 2}, 2},
+                                                                     {2, {-1, 0, 2}, 2}});
 }
 
 TEST(InstancedTree, RefusesTreesPastTheBudgetAndBadReferences) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "fspm/error.hpp"
+#include "fspm/instanced_tree.hpp"
 #include "greenlab/reconstruction.hpp"
 #include "greenlab/simulation.hpp"
 #include "test_plants.hpp"
@@ -132,7 +133,8 @@ TEST(LeafInsertion, EveryLeafOfABranchedPlantSitsOnItsInternodeSurface) {
   }
   EXPECT_GT(checked, 100u);
   // The instanced form and the line tree place them the same way.
-  const TreeGraph expanded = expand_instanced(reconstruct_instanced(g, {}));
+  const TreeGraph expanded =
+      expand_instanced_tree(reconstruct_instanced(g, {}), 10'000'000, ExpansionOrder::kAxisByAxis);
   const LineTree lines = reconstruct_lines(g, {});
   ASSERT_EQ(lines.size(), t.size());
   for (NodeId n = 0; n < t.size(); ++n) {

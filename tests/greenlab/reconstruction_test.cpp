@@ -6,6 +6,8 @@
 #include <numbers>
 
 #include "fspm/error.hpp"
+#include "fspm/instanced_lod.hpp"
+#include "fspm/instanced_tree.hpp"
 #include "greenlab/simulation.hpp"
 #include "test_plants.hpp"
 
@@ -181,10 +183,12 @@ TEST(Reconstruction, InstancedFormExpandsToTheExplicitTree) {
     o.age = age;
     ReconstructionStats st;
     const TreeGraph explicit_tree = reconstruct(g, o, &st);
-    const InstancedPlant inst = reconstruct_instanced(g, o);
-    EXPECT_EQ(inst.represented_components, st.components());
+    const InstancedTree inst = reconstruct_instanced(g, o);
+    EXPECT_EQ(count_instanced_tree(inst).nodes, st.components() + st.flowers);
     EXPECT_LT(inst.prototypes.size(), 10u);
-    const TreeGraph expanded = expand_instanced(inst);
+    // Axis by axis, as reconstruct() numbers the nodes.
+    const TreeGraph expanded =
+        expand_instanced_tree(inst, explicit_tree.size(), ExpansionOrder::kAxisByAxis);
     ASSERT_EQ(expanded.size(), explicit_tree.size());
     for (NodeId n = 0; n < expanded.size(); ++n) {
       ASSERT_EQ(expanded.parent(n), explicit_tree.parent(n)) << n;
@@ -218,7 +222,7 @@ TEST(Reconstruction, HugePlantsFailCleanly) {
   EXPECT_EQ(st.metamers, 510u);
   // The instanced form has no such limit: one prototype per cycle.
   o.age = 62;
-  const InstancedPlant inst = reconstruct_instanced(g, o);
+  const InstancedTree inst = reconstruct_instanced(g, o);
   EXPECT_EQ(inst.prototypes.size(), 62u);
   EXPECT_THROW(simulate_compressed(p, 64), ValueError);
 }
