@@ -41,6 +41,7 @@
 #include "fspm/atomic_file.hpp"
 #include "fspm/error.hpp"
 #include "fspm/number_text.hpp"
+#include "fspm/p_value_text.hpp"
 #include "graphics/render.hpp"
 
 namespace fspm::cli {
@@ -176,7 +177,7 @@ ex::ComparisonResults compare_runs(const std::string& dir, std::size_t jobs, boo
   for (const ex::TTestRow& t : c.tests) {
     std::cout << "t-test " << t.a << " vs " << t.b << " (" << t.group << ", "
               << ex::distance_scale_name(t.scale) << " distance): t = " << format_significant(t.t)
-              << ", df = " << format_significant(t.df) << ", p = " << format_significant(t.p)
+              << ", df = " << format_significant(t.df) << ", " << format_p_value(t.p)
               << (t.significant() ? " (significant)" : " (not significant)") << '\n';
   }
   return c;

@@ -24,6 +24,7 @@
 #include "fspm/input_file.hpp"
 #include "fspm/nesting_depth.hpp"
 #include "fspm/number_text.hpp"
+#include "fspm/p_value_text.hpp"
 #include "fspm/statistics.hpp"
 #include "fspm/tree_file.hpp"
 
@@ -119,16 +120,6 @@ std::string csv_text(const std::string& s) {
 std::string number(double v) {
   if (!std::isfinite(v)) return "-";
   return format_significant(v);
-}
-
-// Two significant digits down to 0.001 (p = 0.0016, p = 0.034, p = 0.27), below it p < 0.001.
-std::string p_text(double p) {
-  if (!std::isfinite(p)) return "p undefined";
-  if (p < 0.001) return "p < 0.001";
-  std::ostringstream out;
-  out.precision(p < 0.01 ? 4 : p < 0.1 ? 3 : 2);
-  out << std::fixed << "p = " << p;
-  return out.str();
 }
 
 }  // namespace
@@ -430,7 +421,7 @@ std::string comparisons_markdown(const Experiment& x, const ComparisonResults& r
       std::string cell;
       for (const TTestRow& t : results.tests) {
         if (t.group == group && t.a == name) {
-          cell += (cell.empty() ? "" : "; ") + p_text(t.p) + " vs " + t.b;
+          cell += (cell.empty() ? "" : "; ") + format_p_value(t.p) + " vs " + t.b;
         }
       }
       return cell.empty() ? std::string(" ") : cell;
@@ -448,8 +439,9 @@ std::string comparisons_markdown(const Experiment& x, const ComparisonResults& r
          << (t.welch ? "Welch" : "Student") << ", " << alternative_name(t.alternative) << " | "
          << number(t.mean_a - t.mean_b) << " [" << number(t.difference_low) << ", "
          << number(t.difference_high) << "] | " << number(t.cohens_d) << " | " << number(t.t)
-         << " | " << number(t.df) << " | " << p_text(t.p) << " | " << p_text(t.p_holm) << " | "
-         << (t.significant_holm() ? "yes" : "no") << " (" << number(t.alpha) << ") |\n";
+         << " | " << number(t.df) << " | " << format_p_value(t.p) << " | "
+         << format_p_value(t.p_holm) << " | " << (t.significant_holm() ? "yes" : "no") << " ("
+         << number(t.alpha) << ") |\n";
     }
   }
   md << notes_markdown(results.notes);

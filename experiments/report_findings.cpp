@@ -5,16 +5,12 @@
 #include <sstream>
 
 #include "fspm/number_text.hpp"
+#include "fspm/p_value_text.hpp"
 
 namespace fspm::experiments {
 namespace {
 
 std::string number(double v) { return std::isfinite(v) ? format_significant(v) : "-"; }
-
-std::string p_words(double p) {
-  if (!std::isfinite(p)) return "undefined";
-  return p < 0.001 ? "< 0.001" : "= " + format_significant(p, 2);
-}
 
 // "T-G is like G-G" or "T-G is unlike G-G (smaller)", then the numbers behind it.
 void test_sentence(std::ostream& md, const TTestRow& t) {
@@ -28,8 +24,9 @@ void test_sentence(std::ostream& md, const TTestRow& t) {
   }
   md << ": mean " << number(t.mean_a) << " against " << number(t.mean_b) << ", difference "
      << number(t.mean_a - t.mean_b) << " [95 % CI " << number(t.difference_low) << ", "
-     << number(t.difference_high) << "], Cohen's d " << number(t.cohens_d) << ", p " << p_words(t.p)
-     << ", Holm p " << p_words(t.p_holm) << " (" << t.n_a << " and " << t.n_b << " pairs)";
+     << number(t.difference_high) << "], Cohen's d " << number(t.cohens_d) << ", "
+     << format_p_value(t.p) << ", Holm " << format_p_value(t.p_holm) << " (" << t.n_a << " and "
+     << t.n_b << " pairs)";
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include "fspm/number_text.hpp"
+#include "fspm/p_value_text.hpp"
 
 #include <gtest/gtest.h>
 
@@ -65,3 +66,14 @@ TEST(FormatSignificant, NeverMoreThanFourSignificantDigitsBelowTenThousand) {
 
 }  // namespace
 }  // namespace fspm
+
+// A p value far below the noise floor of format_significant is a strong result, not zero: the
+// printed line says "p < 0.001" as journals do (APA), never "p = 0".
+TEST(FormatPValue, TinyPValuesAreBelowAThousandthNotZero) {
+  EXPECT_EQ(format_p_value(3.4e-15), "p < 0.001");
+  EXPECT_EQ(format_p_value(0.0), "p < 0.001");
+  EXPECT_EQ(format_p_value(0.0479414), "p = 0.048");
+  EXPECT_EQ(format_p_value(0.0016), "p = 0.0016");
+  EXPECT_EQ(format_p_value(1.0), "p = 1");
+  EXPECT_EQ(format_p_value(std::nan("")), "p undefined");
+}
