@@ -5,6 +5,7 @@
 
 #include "cli/html_report_data.hpp"
 #include "cli/html_report_trees.hpp"
+#include "cli/report_light_profile.hpp"
 #include "cli/report_web_assets.hpp"
 #include "experiments/report.hpp"
 #include "experiments/report_notes.hpp"
@@ -52,6 +53,19 @@ std::string trees_markdown(const ex::Experiment& x, const HtmlTrees& trees) {
         how + "\n\n<div class=\"fspm-pairs\"></div>\n";
   }
   return md + ex::notes_markdown(trees.notes);
+}
+
+// The section "Light in the crown": explanation, the placeholder of the page's plot and the runs'
+// groups; only the notes when no tree has leaf clusters.
+std::string light_profile_markdown(const LightProfiles& profiles) {
+  if (profiles.trees.empty()) return ex::notes_markdown(profiles.notes);
+  std::string groups;
+  for (const TreeLightProfile& t : profiles.trees)
+    groups += "- run " + std::to_string(t.run) + ": " + t.group + "\n";
+  return "\n## Light in the crown\n\n" + light_profile_explanation() +
+         " Hover a point for its layer's number of clusters.\n\n"
+         "<div class=\"fspm-lightprofile\"></div>\n\n" +
+         groups + ex::notes_markdown(profiles.notes);
 }
 
 const char* const kIndexHtml = R"(<!DOCTYPE html>
@@ -125,12 +139,16 @@ fs::path write_html_report(const HtmlReportInput& in) {
     const HtmlTrees trees =
         write_html_trees(*in.experiment, *in.runs, in.comparisons, in.dir, report_dir);
     markdown += trees_markdown(*in.experiment, trees);
+    const LightProfiles profiles = light_profiles(*in.experiment, *in.runs, in.dir);
+    markdown += light_profile_markdown(profiles);
+    data["light_profiles"] = html_light_profiles_json(profiles);
     data["trees"] = trees.trees;
     data["pair_views"] = trees.pair_views;
     data["tree_files"] = trees.files;
   } else {
     data["trees"] = data["pair_views"] = json::array();
     data["tree_files"] = json::object();
+    data["light_profiles"] = json::array();
   }
   data["metrics"] = html_metrics_json(*in.info, kind);
   data["markdown"] = markdown;

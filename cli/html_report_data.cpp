@@ -77,4 +77,22 @@ json html_pairs_json(const ex::ComparisonResults& results, ex::DistanceScale sca
   return out;
 }
 
+json html_light_profiles_json(const LightProfiles& profiles) {
+  json out = json::array();
+  for (const TreeLightProfile& t : profiles.trees) {
+    json tree = {{"run", t.run},
+                 {"group", t.group},
+                 {"height_m", json::array()},
+                 {"mean_light", json::array()},
+                 {"clusters", json::array()}};
+    for (const environment::LightLayer& layer : t.layers) {
+      tree["height_m"].push_back(number_or_null(layer.height_m));
+      tree["mean_light"].push_back(number_or_null(layer.mean_light));
+      tree["clusters"].push_back(layer.clusters);
+    }
+    out.push_back(std::move(tree));
+  }
+  return out;
+}
+
 }  // namespace fspm::cli

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "cli/report_light_profile.hpp"
 #include "experiments/comparisons.hpp"
 #include "experiments/model_kind.hpp"
 #include "experiments/results_db.hpp"
@@ -28,5 +29,9 @@ nlohmann::json html_metrics_json(const experiments::ExperimentInfo& info,
 // "raw_distance" the raw one.
 nlohmann::json html_pairs_json(const experiments::ComparisonResults& results,
                                experiments::DistanceScale scale);
+
+// [{"run", "group", "height_m": [..], "mean_light": [..], "clusters": [..]}], one per tree of
+// light_profiles(), its layers bottom to top: the numbers of report.md's light profile.
+nlohmann::json html_light_profiles_json(const LightProfiles& profiles);
 
 }  // namespace fspm::cli

@@ -5,7 +5,6 @@
 #include <map>
 
 #include "environment/leaf_light.hpp"
-#include "environment/light_profile.hpp"
 #include "experiments/render_selection.hpp"
 #include "experiments/report_notes.hpp"
 #include "fspm/error.hpp"
@@ -16,15 +15,12 @@ namespace fspm::cli {
 namespace fs = std::filesystem;
 namespace ex = fspm::experiments;
 
-std::string light_profile_figure(const ex::Experiment& x, const std::vector<ex::RunRecord>& runs,
-                                 const std::string& dir) {
+LightProfiles light_profiles(const ex::Experiment& x, const std::vector<ex::RunRecord>& runs,
+                             const std::string& dir) {
+  LightProfiles out;
   const std::vector<ex::RenderChoice> choices = ex::select_renders(x, runs);
-  if (choices.empty()) return {};
   std::map<std::size_t, const ex::RunRecord*> by_run;
   for (const ex::RunRecord& r : runs) by_run[r.run] = &r;
-  std::vector<graphics::ChartSeries> series;
-  std::vector<std::string> notes;
-  std::string groups;
   for (const ex::RenderChoice& c : choices) {
     try {
       TreeGraph tree = ex::recorded_run_tree(x, *by_run.at(c.run), dir);
@@ -37,24 +33,42 @@ std::string light_profile_figure(const ex::Experiment& x, const std::vector<ex::
           ex::recorded_run_scene(x, *by_run.at(c.run)).value_or(environment::Scene{});
       scene.sky.directions = 64;
       environment::record_leaf_light(tree, scene);
-      const std::vector<environment::LightLayer> profile = environment::leaf_light_profile(tree);
-      if (profile.empty()) continue;
-      graphics::ChartSeries s;
-      // Short legend entries (the legend sits in the chart's upper right); the groups are listed
-      // under the figure.
-      s.name = "run " + std::to_string(c.run);
-      groups += "- run " + std::to_string(c.run) + ": " + c.group + "\n";
-      s.markers = true;
-      for (const environment::LightLayer& layer : profile) {
-        s.x.push_back(layer.mean_light);
-        s.y.push_back(layer.height_m);
-      }
-      series.push_back(std::move(s));
+      std::vector<environment::LightLayer> layers = environment::leaf_light_profile(tree);
+      if (layers.empty()) continue;
+      out.trees.push_back({c.run, c.group, std::move(layers)});
     } catch (const Error& e) {
-      notes.push_back("no light profile (run " + std::to_string(c.run) + "): " + e.what());
+      out.notes.push_back("no light profile (run " + std::to_string(c.run) + "): " + e.what());
     }
   }
-  if (series.empty()) return ex::notes_markdown(notes);
+  return out;
+}
+
+std::string light_profile_explanation() {
+  return "The mean light of the selected trees' leaf clusters (the mean light of each cluster's "
+         "leaves through the crown as turbid media and past the obstacles of the run's scene, as "
+         "a share of the open sky: 1 is a leaf that sees the whole sky) in ten layers from the "
+         "lowest cluster to the highest, against the layer's height above the tree's base.";
+}
+
+std::string light_profile_figure(const ex::Experiment& x, const std::vector<ex::RunRecord>& runs,
+                                 const std::string& dir) {
+  const LightProfiles profiles = light_profiles(x, runs, dir);
+  if (profiles.trees.empty()) return ex::notes_markdown(profiles.notes);
+  std::vector<graphics::ChartSeries> series;
+  std::string groups;
+  for (const TreeLightProfile& t : profiles.trees) {
+    graphics::ChartSeries s;
+    // Short legend entries (the legend sits in the chart's upper right); the groups are listed
+    // under the figure.
+    s.name = "run " + std::to_string(t.run);
+    groups += "- run " + std::to_string(t.run) + ": " + t.group + "\n";
+    s.markers = true;
+    for (const environment::LightLayer& layer : t.layers) {
+      s.x.push_back(layer.mean_light);
+      s.y.push_back(layer.height_m);
+    }
+    series.push_back(std::move(s));
+  }
   const std::string file = "figures/light-profile.png";
   try {
     fs::create_directories(fs::path(dir) / "figures");
@@ -79,12 +93,9 @@ std::string light_profile_figure(const ex::Experiment& x, const std::vector<ex::
   } catch (const fs::filesystem_error& e) {
     return "\nNote: light profile left out: " + std::string(e.what()) + "\n";
   }
-  return "\n## Light in the crown\n\nThe mean light of the selected trees' leaf clusters (the "
-         "mean light of each cluster's leaves through the crown as turbid media and past the "
-         "obstacles of the run's scene, as a share of the open sky) in ten layers from the lowest "
-         "cluster to the highest, against the layer's height above the tree's base.\n\n![light "
-         "against height in the crown](" +
-         file + ")\n\n" + groups + ex::notes_markdown(notes);
+  return "\n## Light in the crown\n\n" + light_profile_explanation() +
+         "\n\n![light against height in the crown](" + file + ")\n\n" + groups +
+         ex::notes_markdown(profiles.notes);
 }
 
 }  // namespace fspm::cli

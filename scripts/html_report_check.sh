@@ -2,7 +2,7 @@
 # The HTML report in a real browser: runs a small version of the adapted-versus-grown experiment
 # (4 trees per type, age and set), writes its HTML report, opens it from file:// in headless
 # Chromium (report_web/test/check_report.mjs: no console error, every plot and 3D view drawn, a
-# table sorts) and compares the page's numbers with results.sqlite and ttests.csv
+# table sorts, the light profile plot shows the numbers of data.js) and compares the page's numbers with results.sqlite and ttests.csv
 # (report_web/test/check_numbers.py). Then the report of an experiment whose name, description and
 # comparison names carry script (report_web/test/hostile_experiment.toml) must run none of it
 # (report_web/test/check_hostile.mjs). Needs a Release build in build/ and scripts/deps.sh.

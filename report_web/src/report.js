@@ -219,6 +219,24 @@
     }
   }
 
+  // Light against height in the crown, one line per typical tree (D.light_profiles, the numbers
+  // of report.md's figure): light on the whole 0-1 range of the share of the open sky, so that
+  // profiles compare across reports.
+  function lightProfile(host) {
+    const div = el('div', { class: 'fspm-plot fspm-light-plot' });
+    const caption = el('figcaption', { text: 'Light: the mean over a layer\'s leaf clusters of the light their leaves receive, ' +
+      'as a share of the open sky (0 = full shade, 1 = the whole sky unobstructed); height in m above the tree\'s base.' });
+    host.appendChild(el('figure', { class: 'fspm-light-figure' }, [div, caption]));
+    lazy(div, () => plot(div, D.light_profiles.map((t) => ({
+      type: 'scatter', mode: 'lines+markers', name: `run ${t.run}`, x: t.mean_light, y: t.height_m,
+      marker: { size: 7 },
+      hovertext: t.height_m.map((h, j) => `run ${t.run} (${escapeHtml(t.group)})<br>height ${fmt(h)} m: light ${fmt(t.mean_light[j])} of the open sky<br>${t.clusters[j]} clusters`),
+      hoverinfo: 'text',
+    })), { title: { text: 'Light in the crown' }, showlegend: true, legend: { x: 1, xanchor: 'right', y: 1 },
+      xaxis: { title: { text: 'mean light of the leaf clusters (share of the open sky)' }, range: [0, 1], dtick: 0.1, fixedrange: true, zeroline: false },
+      yaxis: { title: { text: 'height above the base (m)' }, rangemode: 'tozero' } }));
+  }
+
   // ---------- 3D trees ----------
   // One WebGL renderer for every view (browsers allow only a few WebGL contexts per page): it
   // draws a view offscreen and copies the picture into the view's own canvas.
@@ -404,7 +422,7 @@
     const content = document.getElementById('report');
     renderMarkdown(content);
     content.querySelectorAll('table').forEach(enhanceTable);
-    const fill = { sweeps: sweepPlots, boxplots: boxPlots, trees: treeViews, pairs: pairViews };
+    const fill = { sweeps: sweepPlots, boxplots: boxPlots, trees: treeViews, pairs: pairViews, lightprofile: lightProfile };
     for (const [k, f] of Object.entries(fill)) content.querySelectorAll(`.fspm-${k}`).forEach((h) => f(h));
     const h1 = content.querySelector('h1');
     if (h1) h1.after(contents(content));

@@ -1,7 +1,8 @@
 // Opens an HTML report of `fspm report --html` from file:// in headless Chromium and checks it as
 // a reader would see it: no console error, every plot and 3D view drawn (their screenshots not
-// blank), a header click sorts a table. Writes a screenshot of the page top and the page's tables
-// (every row, all pages) as JSON for check_numbers.py.
+// blank), a header click sorts a table, the light profile plot shows data.js's numbers where they
+// lie on its axes. Writes a screenshot of the page top and the page's tables (every row, all
+// pages) as JSON for check_numbers.py.
 //   node check_report.mjs REPORT/index.html SCREENSHOT.png TABLES.json
 import { launchBrowser } from './browser.mjs';
 import fs from 'node:fs';
@@ -105,6 +106,57 @@ try {
   if (!sorted) fail('no table with a numeric column to sort');
   else if (!sorted.changed || !sorted.ordered) fail(`sorting by "${sorted.header}" did not order the rows: ${JSON.stringify(sorted)}`);
 
+  // The light profile: one line per tree of data.js's light_profiles (read here from the file
+  // fspm wrote, not from the page), its values those of the data, and its points drawn where
+  // those values lie on the axes (light on the fixed 0-1 axis of the share of the open sky).
+  const dataText = fs.readFileSync(path.join(path.dirname(indexPath), 'data.js'), 'utf8');
+  const written = JSON.parse(dataText.replace(/^window\.FSPM_REPORT = /, '').replace(/;\s*$/, ''));
+  const profiles = written.light_profiles || [];
+  if (profiles.length === 0) fail('data.js has no light profile (the check\'s trees have leaf clusters)');
+  const light = await page.evaluate(() => {
+    const divs = document.querySelectorAll('.fspm-light-plot');
+    if (divs.length !== 1) return { count: divs.length };
+    const gd = divs[0];
+    const xa = gd._fullLayout.xaxis, ya = gd._fullLayout.yaxis;
+    const traces = Array.from(gd.querySelectorAll('.scatterlayer .trace')).map((t) =>
+      Array.from(t.querySelectorAll('.points .point')).map((p) => {
+        const m = /translate\(([-\d.e]+),\s*([-\d.e]+)\)/.exec(p.getAttribute('transform'));
+        return [xa.p2c(parseFloat(m[1])), ya.p2c(parseFloat(m[2]))];
+      }));
+    return {
+      count: 1,
+      data: gd.data.map((t) => ({ name: t.name, x: Array.from(t.x), y: Array.from(t.y) })),
+      drawn: traces,
+      xRange: xa.range, xTitle: xa.title.text, yTitle: ya.title.text,
+      xPerPixel: (xa.range[1] - xa.range[0]) / xa._length, yPerPixel: (ya.range[1] - ya.range[0]) / ya._length,
+      caption: gd.closest('figure')?.querySelector('figcaption')?.textContent || '',
+    };
+  });
+  if (profiles.length > 0) {
+    if (light.count !== 1) fail(`${light.count} light profile plots on the page, expected 1`);
+    else {
+      if (light.data.length !== profiles.length) fail(`light profile: ${light.data.length} lines, data.js has ${profiles.length} trees`);
+      if (light.xRange[0] !== 0 || light.xRange[1] !== 1) fail(`light profile: light axis ${light.xRange}, expected 0 to 1`);
+      if (!/share of the open sky/.test(light.xTitle)) fail(`light profile: light axis titled "${light.xTitle}"`);
+      if (!/\(m\)/.test(light.yTitle)) fail(`light profile: height axis titled "${light.yTitle}"`);
+      if (!/share of the open sky/.test(light.caption)) fail(`light profile: caption "${light.caption}" does not say what the light is`);
+      profiles.forEach((t, k) => {
+        const d = light.data[k];
+        if (!d) return;
+        if (d.name !== `run ${t.run}`) fail(`light profile line ${k}: "${d.name}", data.js run ${t.run}`);
+        if (JSON.stringify(d.x) !== JSON.stringify(t.mean_light)) fail(`light profile run ${t.run}: light ${d.x} on the page, ${t.mean_light} in data.js`);
+        if (JSON.stringify(d.y) !== JSON.stringify(t.height_m)) fail(`light profile run ${t.run}: height ${d.y} on the page, ${t.height_m} in data.js`);
+        const drawn = light.drawn[k] || [];
+        if (drawn.length !== t.mean_light.length) fail(`light profile run ${t.run}: ${drawn.length} points drawn, ${t.mean_light.length} layers in data.js`);
+        drawn.forEach(([x, y], j) => {
+          // Within a pixel and a half of where the data puts them.
+          if (Math.abs(x - t.mean_light[j]) > 1.5 * light.xPerPixel || Math.abs(y - t.height_m[j]) > 1.5 * light.yPerPixel)
+            fail(`light profile run ${t.run}, layer ${j}: drawn at (${x}, ${y}), data.js (${t.mean_light[j]}, ${t.height_m[j]})`);
+        });
+      });
+    }
+  }
+
   // Every table, every row (the page keeps the rows of all pages), with the heading above it.
   const tables = await page.evaluate(() => Array.from(document.querySelectorAll('#report table')).map((t) => {
     let h = t.closest('.fspm-table-wrap') || t;
@@ -118,10 +170,11 @@ try {
   fs.writeFileSync(tablesPath, JSON.stringify(tables, null, 1));
 
   // The page's top, and the page at the box plots, the sweeps, the trees and the pairs
-  // (SHOT-plots.png, SHOT-sweeps.png, SHOT-trees.png, SHOT-pairs.png), as a reader sees them.
+  // (SHOT-plots.png, SHOT-sweeps.png, SHOT-trees.png, SHOT-pairs.png,
+  // SHOT-light.png), as a reader sees them.
   await page.evaluate(() => window.scrollTo(0, 0));
   await page.screenshot({ path: screenshotPath });
-  for (const [what, selector] of [['plots', '.fspm-boxplots'], ['sweeps', '.fspm-sweeps'], ['trees', '.fspm-trees'], ['pairs', '.fspm-pairs']]) {
+  for (const [what, selector] of [['plots', '.fspm-boxplots'], ['sweeps', '.fspm-sweeps'], ['trees', '.fspm-trees'], ['pairs', '.fspm-pairs'], ['light', '.fspm-light-figure']]) {
     const found = await page.evaluate((sel) => {
       const e = document.querySelector(sel);
       if (!e) return false;
@@ -130,7 +183,7 @@ try {
     }, selector);
     if (found) await page.screenshot({ path: screenshotPath.replace(/\.png$/, `-${what}.png`) });
   }
-  console.log(`checked ${plots.length} plots, ${views.length} 3D views, ${tables.length} tables; sorted by "${sorted?.header}"`);
+  console.log(`checked ${profiles.length} light profiles, ${plots.length} plots, ${views.length} 3D views, ${tables.length} tables; sorted by "${sorted?.header}"`);
 } finally {
   await browser.close();
 }
