@@ -64,9 +64,6 @@ TEST(FormatSignificant, NeverMoreThanFourSignificantDigitsBelowTenThousand) {
   }
 }
 
-}  // namespace
-}  // namespace fspm
-
 // A p value far below the noise floor of format_significant is a strong result, not zero: the
 // printed line says "p < 0.001" as journals do (APA), never "p = 0".
 TEST(FormatPValue, TinyPValuesAreBelowAThousandthNotZero) {
@@ -77,3 +74,6 @@ TEST(FormatPValue, TinyPValuesAreBelowAThousandthNotZero) {
   EXPECT_EQ(format_p_value(1.0), "p = 1");
   EXPECT_EQ(format_p_value(std::nan("")), "p undefined");
 }
+
+}  // namespace
+}  // namespace fspm
