@@ -12,6 +12,9 @@
 #ifndef FSPM_IMAGE_CODEC_BUILD_PATH
 #define FSPM_IMAGE_CODEC_BUILD_PATH ""
 #endif
+#ifndef FSPM_IMAGE_CODEC_INSTALL_PATH
+#define FSPM_IMAGE_CODEC_INSTALL_PATH ""
+#endif
 #ifndef FSPM_IMAGE_CODEC_INSTALL_LIBDIR
 #define FSPM_IMAGE_CODEC_INSTALL_LIBDIR "lib"
 #endif
@@ -22,8 +25,9 @@ namespace {
 constexpr const char* kModuleName = "libfspm_image_codec.so";
 
 // Beside the program or library that holds this code first (bin/../lib in the build tree,
-// bin/../LIBDIR once installed, wherever the tree was moved), then the build tree, then the
-// loader's own search path (LD_LIBRARY_PATH, ld.so.cache).
+// bin/../LIBDIR once installed, wherever the tree was moved), then the build tree and the
+// installation prefix (programs built against an installed fspm), then the loader's own search
+// path (LD_LIBRARY_PATH, ld.so.cache).
 std::vector<std::string> module_candidates() {
   std::vector<std::string> paths;
   Dl_info self{};
@@ -34,14 +38,15 @@ std::vector<std::string> module_candidates() {
       paths.push_back((dir / sub / kModuleName).lexically_normal().string());
     }
   }
-  if (std::string(FSPM_IMAGE_CODEC_BUILD_PATH).size() > 0) {
-    paths.emplace_back(FSPM_IMAGE_CODEC_BUILD_PATH);
+  for (const char* path : {FSPM_IMAGE_CODEC_BUILD_PATH, FSPM_IMAGE_CODEC_INSTALL_PATH}) {
+    if (*path != '\0') paths.emplace_back(path);
   }
   paths.emplace_back(kModuleName);
   return paths;
 }
 
 const ImageCodecApi* load_codec(std::string& error) {
+  error = "not found beside the program, in the build tree or on the library path";
   for (const std::string& path : module_candidates()) {
     if (path.find('/') != std::string::npos && !std::filesystem::exists(path)) continue;
     void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
