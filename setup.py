@@ -66,6 +66,11 @@ class CMakeBuild(build_ext):
         target = Path(self.get_ext_fullpath(ext.name))
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(built[0], target)
+        # OpenImageIO behind the module fspm loads on the first image it reads or writes
+        # (fspm/image_codec.hpp): beside _fspm, where the loader looks.
+        codec = build_dir / "lib" / "libfspm_image_codec.so"
+        if codec.exists():
+            shutil.copyfile(codec, target.parent / codec.name)
 
 
 setup(

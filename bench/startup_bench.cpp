@@ -1,5 +1,6 @@
 // Whole-process start-up of the command line: `fspm --version` and `fspm tree info` on a small
-// tree (goal < 50 ms each), with `fspm-full --version` (every library loaded) for comparison.
+// tree (goal < 50 ms each), `fspm run --help` and `fspm render --help`, handed to fspm-full
+// (goal < 100 ms each), and `fspm-full --version` for comparison.
 // Each iteration also starts /bin/true, so the counter vs_true (the command's time over
 // /bin/true's in the same run) is comparable across machines and loads.
 #include <benchmark/benchmark.h>
@@ -57,6 +58,15 @@ void BM_FspmTreeInfo(benchmark::State& state) {
   measure(state, {kBin + "/fspm", "tree", "info", kTree});
 }
 BENCHMARK(BM_FspmTreeInfo)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(1.0);
+
+// Handed to fspm-full, which defines every option of the command.
+void BM_FspmRunHelp(benchmark::State& state) { measure(state, {kBin + "/fspm", "run", "--help"}); }
+BENCHMARK(BM_FspmRunHelp)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(1.0);
+
+void BM_FspmRenderHelp(benchmark::State& state) {
+  measure(state, {kBin + "/fspm", "render", "--help"});
+}
+BENCHMARK(BM_FspmRenderHelp)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(1.0);
 
 void BM_FspmFullVersion(benchmark::State& state) {
   measure(state, {kBin + "/fspm-full", "--version"});

@@ -1,8 +1,6 @@
-// Encoded in memory through an OpenImageIO IOProxy, then written with the core's atomic writer.
+// Through OpenImageIO, loaded on first use (fspm/image_codec.hpp): encoded in memory, then written
+// with the core's atomic writer.
 #include "crown/image_io.hpp"
-
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,33 +11,30 @@
 #include "fspm/atomic_file.hpp"
 #include "fspm/error.hpp"
 #include "fspm/image_budget.hpp"
+#include "fspm/image_codec.hpp"
 
 namespace fspm::crown {
 namespace {
 
 // All channels of the first subimage as floats: 8-bit ones in [0, 1], float ones as stored.
-std::vector<float> read_pixels(const std::string& path, OIIO::ImageSpec& spec) {
+std::vector<float> read_pixels(const std::string& path, ImageInfo& spec) {
   check_image_file(path);
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) throw IoError("cannot read image: " + OIIO::geterror(), path);
-  spec = in->spec();
+  spec = read_image_info(path);
   // Our floats and the decoder's own buffer of the stored values.
-  check_image_size(path, spec.width, spec.height, spec.nchannels,
-                   sizeof(float) + static_cast<double>(spec.format.size()));
-  std::vector<float> pixels(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data())) {
-    throw IoError("cannot decode image: " + in->geterror(), path);
-  }
+  check_image_size(path, spec.width, spec.height, spec.channels,
+                   sizeof(float) + static_cast<double>(spec.bytes_per_value));
+  std::vector<float> pixels(static_cast<std::size_t>(spec.width) * spec.height * spec.channels);
+  read_image_pixels(path, spec.channels, PixelType::kFloat, pixels.data());
   return pixels;
 }
 
 }  // namespace
 
 Raster read_rgb(const std::string& path) {
-  OIIO::ImageSpec spec;
+  ImageInfo spec;
   const std::vector<float> pixels = read_pixels(path, spec);
   Raster out(spec.width, spec.height, 3);
-  const int n = spec.nchannels;
+  const int n = spec.channels;
   for (std::size_t i = 0, count = out.values.size() / 3; i < count; ++i) {
     for (int c = 0; c < 3; ++c) {
       out.values[3 * i + c] = std::clamp(pixels[i * n + (n >= 3 ? c : 0)], 0.0f, 1.0f);
@@ -49,21 +44,21 @@ Raster read_rgb(const std::string& path) {
 }
 
 Raster read_raster(const std::string& path) {
-  OIIO::ImageSpec spec;
+  ImageInfo spec;
   Raster out;
   out.values = read_pixels(path, spec);
   out.width = spec.width;
   out.height = spec.height;
-  out.channels = spec.nchannels;
+  out.channels = spec.channels;
   return out;
 }
 
 Mask read_mask(const std::string& path) {
-  OIIO::ImageSpec spec;
+  ImageInfo spec;
   const std::vector<float> pixels = read_pixels(path, spec);
   Mask mask(spec.width, spec.height);
   for (std::size_t i = 0; i < mask.inside.size(); ++i) {
-    mask.inside[i] = pixels[i * spec.nchannels] > 0.5f ? 1 : 0;
+    mask.inside[i] = pixels[i * spec.channels] > 0.5f ? 1 : 0;
   }
   if (mask.count() == 0) {
     throw ValueError("the mask has no crown pixel (expected white crown on black)", path);
@@ -72,7 +67,7 @@ Mask read_mask(const std::string& path) {
 }
 
 void check_image_output(const std::string& path) {
-  if (!OIIO::ImageOutput::create(path)) {
+  if (image_writer_format(path).empty()) {
     throw ValueError("unknown image format (expected an extension such as .png, .tif or .exr)",
                      path);
   }
@@ -87,24 +82,19 @@ void write_raster(const Raster& image, const std::string& path) {
   if (image.width < 1 || image.height < 1 || (image.channels != 1 && image.channels != 3)) {
     throw ValueError("image to write has no pixels or not 1 or 3 channels", path);
   }
-  auto out = OIIO::ImageOutput::create(path);
   // Formats that hold floats (OpenEXR, TIFF) get the values as they are: radii in metres.
-  const std::string format = out->format_name();
+  const std::string format = image_writer_format(path);
   const bool floats = format == "openexr" || format == "tiff";
   std::vector<std::uint8_t> bytes(floats ? 0 : image.values.size());
   for (std::size_t i = 0; i < bytes.size(); ++i) {
     bytes[i] =
         static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(image.values[i], 0.0f, 1.0f)));
   }
-  const OIIO::TypeDesc type = floats ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
+  const PixelType type = floats ? PixelType::kFloat : PixelType::kUint8;
   const void* data = floats ? static_cast<const void*>(image.values.data()) : bytes.data();
-  OIIO::ImageSpec spec(image.width, image.height, image.channels, type);
-  OIIO::Filesystem::IOVecOutput memory;  // encode in memory: nothing touches disk yet
-  if (!out->supports("ioproxy") || !out->set_ioproxy(&memory) || !out->open(path, spec) ||
-      !out->write_image(type, data) || !out->close()) {
-    throw IoError("cannot encode image: " + out->geterror(), path);
-  }
-  const std::vector<unsigned char>& encoded = memory.buffer();
+  // Encoded in memory: nothing touches disk yet.
+  const std::vector<unsigned char> encoded = encode_image(
+      path, ImageInfo{image.width, image.height, image.channels, floats ? 4 : 1}, type, data);
   write_file_atomically(
       path,
       [&](std::ostream& stream) {

@@ -1,8 +1,6 @@
-// Images through OpenImageIO (built with the VTK option, which brings OpenImageIO along).
-// Encoded in memory through an IOProxy, then written atomically like every fspm output.
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
+// Images through OpenImageIO (built with the VTK option, which brings OpenImageIO along), loaded
+// on first use (fspm/image_codec.hpp). Encoded in memory, then written atomically like every fspm
+// output.
 #include <algorithm>
 #include <filesystem>
 #include <memory>
@@ -11,12 +9,13 @@
 #include "fspm/atomic_file.hpp"
 #include "fspm/error.hpp"
 #include "fspm/image_budget.hpp"
+#include "fspm/image_codec.hpp"
 #include "graphics/image.hpp"
 
 namespace fspm::graphics {
 
 void check_image_path(const std::string& path) {
-  if (!OIIO::ImageOutput::create(path)) {
+  if (image_writer_format(path).empty()) {
     throw ValueError("unknown image format for '" + path +
                          "' (expected an extension such as .png, .tif or .exr)",
                      path);
@@ -32,16 +31,14 @@ void write_image(const Image& image, const std::string& path) {
       image.rgba.size() != static_cast<std::size_t>(image.width) * image.height * 4) {
     throw ValueError("image has no pixels or a wrong buffer size", path);
   }
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) {
+  const std::string format = image_writer_format(path);
+  if (format.empty()) {
     throw ValueError("unknown image format for '" + path +
                          "' (expected an extension such as .png, .tif or .exr)",
                      path);
   }
   // PNG and JPEG carry no alpha we need: RGB keeps files small; TIFF/EXR keep RGBA.
-  const std::string format = out->format_name();
   const int channels = (format == "png" || format == "jpeg") ? 3 : 4;
-  OIIO::ImageSpec spec(image.width, image.height, channels, OIIO::TypeDesc::UINT8);
   std::vector<std::uint8_t> pixels;
   const std::uint8_t* data = image.rgba.data();
   if (channels == 3) {
@@ -51,17 +48,9 @@ void write_image(const Image& image, const std::string& path) {
     }
     data = pixels.data();
   }
-  if (!out->supports("ioproxy")) {
-    throw ValueError("image format '" + format + "' cannot be written atomically here", path);
-  }
-  OIIO::Filesystem::IOVecOutput memory;  // encode in memory: nothing touches disk yet
-  if (!out->set_ioproxy(&memory) || !out->open(path, spec)) {
-    throw IoError("cannot encode image: " + out->geterror(), path);
-  }
-  if (!out->write_image(OIIO::TypeDesc::UINT8, data) || !out->close()) {
-    throw IoError("cannot encode image: " + out->geterror(), path);
-  }
-  const std::vector<unsigned char>& bytes = memory.buffer();
+  // Encoded in memory: nothing touches disk yet.
+  const std::vector<unsigned char> bytes = encode_image(
+      path, ImageInfo{image.width, image.height, channels, 1}, PixelType::kUint8, data);
   write_file_atomically(
       path,
       [&](std::ostream& stream) {
@@ -73,27 +62,22 @@ void write_image(const Image& image, const std::string& path) {
 
 Image read_image(const std::string& path) {
   check_image_file(path);
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) throw IoError("cannot read image: " + OIIO::geterror(), path);
-  const OIIO::ImageSpec& spec = in->spec();
+  const ImageInfo spec = read_image_info(path);
   // The stored channels as bytes, the decoder's own buffer of them, and the RGBA copy.
   check_image_size(
-      path, spec.width, spec.height, std::max(spec.nchannels, 1),
-      1.0 + static_cast<double>(spec.format.size()) + 4.0 / std::max(spec.nchannels, 1));
+      path, spec.width, spec.height, std::max(spec.channels, 1),
+      1.0 + static_cast<double>(spec.bytes_per_value) + 4.0 / std::max(spec.channels, 1));
   Image image;
   image.width = spec.width;
   image.height = spec.height;
-  std::vector<std::uint8_t> raw(static_cast<std::size_t>(spec.width) * spec.height *
-                                spec.nchannels);
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, raw.data())) {
-    throw IoError("cannot read image: " + in->geterror(), path);
-  }
+  std::vector<std::uint8_t> raw(static_cast<std::size_t>(spec.width) * spec.height * spec.channels);
+  read_image_pixels(path, spec.channels, PixelType::kUint8, raw.data());
   image.rgba.assign(static_cast<std::size_t>(spec.width) * spec.height * 4, 255);
   for (std::size_t i = 0, n = static_cast<std::size_t>(spec.width) * spec.height; i < n; ++i) {
-    for (int c = 0; c < std::min(spec.nchannels, 4); ++c) {
-      image.rgba[4 * i + c] = raw[i * spec.nchannels + c];
+    for (int c = 0; c < std::min(spec.channels, 4); ++c) {
+      image.rgba[4 * i + c] = raw[i * spec.channels + c];
     }
-    if (spec.nchannels < 3) {
+    if (spec.channels < 3) {
       image.rgba[4 * i + 1] = image.rgba[4 * i + 2] = image.rgba[4 * i];
     }
   }

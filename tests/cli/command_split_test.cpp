@@ -79,6 +79,9 @@ TEST(CommandSplit, LeanExecutableLinksNoGraphicsMpiOrDatabaseLibrary) {
   }
   const std::string full_libs = shell_output("ldd " + kFullExe, status);
   EXPECT_NE(full_libs.find("libvtk"), std::string::npos);
+  // OpenImageIO (about 260 libraries with its own dependencies) is loaded on the first image
+  // read or written (fspm/image_codec.hpp), not at start.
+  EXPECT_EQ(full_libs.find("libOpenImageIO"), std::string::npos) << full_libs;
 }
 
 }  // namespace
