@@ -10,23 +10,13 @@
 #include <string>
 
 #include "tests/cli/run_command.hpp"
+#include "tests/cli/shell_output.hpp"
 
 namespace fspm {
 namespace {
 
 using testing::run_fspm;
-
-// Standard output of a shell command, and its exit status.
-std::string shell_output(const std::string& command, int& status) {
-  std::string out;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return out;
-  char buf[4096];
-  std::size_t n;
-  while ((n = std::fread(buf, 1, sizeof buf, pipe)) > 0) out.append(buf, n);
-  status = ::pclose(pipe);
-  return out;
-}
+using testing::shell_output;
 
 // The "Subcommands:" block of a --help text, one line per command.
 std::set<std::string> subcommand_lines(const std::string& help) {

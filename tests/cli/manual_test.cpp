@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "tests/cli/run_command.hpp"
+#include "tests/cli/shell_output.hpp"
 
 namespace fspm {
 namespace {
@@ -22,17 +23,7 @@ namespace fs = std::filesystem;
 using testing::read_text;
 using testing::run_fspm;
 using testing::scratch_dir;
-
-std::string shell_output(const std::string& command, int& status) {
-  std::string out;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return out;
-  char buf[4096];
-  std::size_t n;
-  while ((n = std::fread(buf, 1, sizeof buf, pipe)) > 0) out.append(buf, n);
-  status = ::pclose(pipe);
-  return out;
-}
+using testing::shell_output;
 
 std::string full_exe() { return (fs::path(FSPM_EXE).parent_path() / "fspm-full").string(); }
 
