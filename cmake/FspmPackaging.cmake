@@ -103,6 +103,10 @@ set(CPACK_DEBIAN_PACKAGE_SUGGESTS
 if(NOT FSPM_SHARED_LIBS)
   string(APPEND CPACK_DEBIAN_PACKAGE_SUGGESTS ", libceres-dev, libtbb-dev, libhwy-dev")
 endif()
+# The optional parts are in the one package (fspm-full links the viewer and MPI); what they need
+# at run time beyond libraries is recommended: mpirun for `fspm run --mpi`, Xvfb for renders and
+# the viewer on a machine without a display.
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "openmpi-bin, xvfb, xauth")
 set(CPACK_DEBIAN_PACKAGE_DESCRIPTION
     "${PROJECT_DESCRIPTION}\n The fspm and fspm-full commands, the Python module fspm, the C++\n libraries with headers and CMake package (find_package(fspm)), docs and examples.")
 set(CPACK_OUTPUT_FILE_PREFIX ${PROJECT_BINARY_DIR}/packages)
