@@ -45,7 +45,7 @@ def test_errors_are_also_the_matching_builtin_exceptions(tmp_path):
         fspm.parse_newick("(1:,2);")
     with pytest.raises(OSError):
         fspm.read_tree(str(tmp_path / "missing.tree"))
-    with pytest.raises(ValueError, match="expected sky or shadow_grid"):
+    with pytest.raises(ValueError, match="expected canopy, sky or shadow_grid"):
         fspm.AnalysisParams(light_model="sunny")
     for exc in (fspm.ParseError, fspm.IoError, fspm.ParameterError):
         assert issubclass(exc, fspm.Error)
