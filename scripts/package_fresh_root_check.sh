@@ -51,6 +51,19 @@ echo "fspm --version: $printed"
 in_root fspm-full --version > /dev/null
 in_root fspm tree info /usr/share/doc/fspm/examples/trees/small.nwk
 in_root python3 -c "import fspm; assert fspm.__version__ == '$version'; print('import fspm', fspm.__version__, fspm.__file__)"
+for page in fspm.1 fspm-grow.1 fspm-render.1; do
+  in_root test -s "/usr/share/man/man1/$page" || { echo "fresh_root_check: no manual page $page"; exit 1; }
+done
+in_root test -s /usr/share/bash-completion/completions/fspm \
+  || { echo "fresh_root_check: no bash completion"; exit 1; }
+echo "manual pages and bash completion installed"
+# Images go through OpenImageIO loaded on first use (libfspm_image_codec.so): a crown from the
+# example photograph reads a PNG and writes its mask, and a render under the recommended Xvfb writes one.
+in_root fspm-full crown /usr/share/doc/fspm/examples/crown/tree_front.png -o /tmp/crown_out/ > /dev/null
+in_root test -s /tmp/crown_out/crown_mask.png || { echo "fresh_root_check: fspm crown wrote no mask"; exit 1; }
+in_root xvfb-run -a fspm render /usr/share/doc/fspm/examples/trees/small.nwk -o /tmp/small.png > /dev/null
+in_root python3 -c "import sys; sys.exit(0 if open('/tmp/small.png', 'rb').read(8) == b'\\x89PNG\\r\\n\\x1a\\n' else 'not a PNG')"
+echo "an image read (fspm crown) and one written (xvfb-run fspm render)"
 
 echo "== examples/downstream against /usr (compiler, CMake and the public headers' packages)"
 in_root apt-get install -y -qq --no-install-recommends g++ make cmake pkg-config libeigen3-dev \
