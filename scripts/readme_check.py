@@ -215,14 +215,14 @@ def main():
     for page in PAGES:
         for lang, first, lines in blocks(page):
             if lang == "python":
-                todo = [(first, "\n".join(lines), "")]
+                pending = [(first, "\n".join(lines), "")]
                 if not python:
                     print(f"skip  {page}:{first} python block: the Python module is not built")
                     skipped += 1
                     continue
             else:
-                todo = commands(lines, first)
-            for line, command, comment in todo:
+                pending = commands(lines, first)
+            for line, command, comment in pending:
                 where = f"{page}:{line}"
                 shown = command.splitlines()[0][:100]
                 m = re.match(r"^(\w+)=(\S+)$", command)

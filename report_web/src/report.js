@@ -228,7 +228,7 @@
       'as a share of the open sky (0 = full shade, 1 = the whole sky unobstructed); height in m above the tree\'s base.' });
     host.appendChild(el('figure', { class: 'fspm-light-figure' }, [div, caption]));
     lazy(div, () => plot(div, D.light_profiles.map((t) => ({
-      type: 'scatter', mode: 'lines+markers', name: `run ${t.run}`, x: t.mean_light, y: t.height_m,
+      type: 'scatter', mode: 'lines+markers', name: `${escapeHtml(t.group)} (run ${t.run})`, x: t.mean_light, y: t.height_m,
       marker: { size: 7 },
       hovertext: t.height_m.map((h, j) => `run ${t.run} (${escapeHtml(t.group)})<br>height ${fmt(h)} m: light ${fmt(t.mean_light[j])} of the open sky<br>${t.clusters[j]} clusters`),
       hoverinfo: 'text',

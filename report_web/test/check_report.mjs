@@ -143,7 +143,7 @@ try {
       profiles.forEach((t, k) => {
         const d = light.data[k];
         if (!d) return;
-        if (d.name !== `run ${t.run}`) fail(`light profile line ${k}: "${d.name}", data.js run ${t.run}`);
+        if (d.name !== `${t.group} (run ${t.run})`) fail(`light profile line ${k}: "${d.name}", data.js ${t.group} (run ${t.run})`);
         if (JSON.stringify(d.x) !== JSON.stringify(t.mean_light)) fail(`light profile run ${t.run}: light ${d.x} on the page, ${t.mean_light} in data.js`);
         if (JSON.stringify(d.y) !== JSON.stringify(t.height_m)) fail(`light profile run ${t.run}: height ${d.y} on the page, ${t.height_m} in data.js`);
         const drawn = light.drawn[k] || [];
