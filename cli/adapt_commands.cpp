@@ -6,7 +6,10 @@
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 
@@ -14,10 +17,12 @@
 #include "cli/cpu_time.hpp"
 #include "cli/enum_option.hpp"
 #include "cli/output.hpp"
+#include "environment/leaf_light.hpp"
 #include "environment/leaf_light_model.hpp"
 #include "environment/plastic_adaptation.hpp"
 #include "environment/scene_file.hpp"
 #include "environment/site_sky.hpp"
+#include "environment/sky_distribution.hpp"
 #include "environment/tree_analysis.hpp"
 #include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
@@ -143,6 +148,26 @@ std::vector<environment::AdaptationResult> adapt_to_scene(
   return adapted;
 }
 
+// Under a real sky (--sky): the adapted tree's leaf clusters get their PAR (record_leaf_par)
+// through the adapted crown and the scene's obstacles, over the analysis' sky directions; returns
+// their mean flux (nan without a real sky or clusters).
+double record_adapted_par(TreeGraph& tree, const environment::Scene& scene,
+                          const environment::AnalysisParams& params) {
+  if (!scene.sky.distribution) return std::numeric_limits<double>::quiet_NaN();
+  std::vector<std::uint32_t> sphere_of;
+  const std::vector<environment::Sphere> clusters = environment::leaf_spheres(tree, sphere_of);
+  if (clusters.empty()) return std::numeric_limits<double>::quiet_NaN();
+  environment::Scene par_scene = scene;
+  par_scene.sky.directions = params.light_directions;
+  environment::record_leaf_par(tree, par_scene, clusters, sphere_of);
+  double sum = 0.0;
+  const auto par = tree.attribute(environment::kParAttribute);
+  for (NodeId i = 0; i < tree.size(); ++i) {
+    if (sphere_of[i] != environment::kNoSphere) sum += par[i];
+  }
+  return sum / static_cast<double>(clusters.size());
+}
+
 nlohmann::json json_vector(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
 nlohmann::json adapted_json(const environment::AdaptationResult& r, const std::string& input,
@@ -167,11 +192,15 @@ void run_adapt(const AdaptOptions& o) {
   const environment::AnalysisParams params = analysis_params(o);
   const Eigen::Vector3d brightest = grown_brightest(o, scenes.front());
   if (!o.sky_file.empty()) {
-    // A real sky: every scene's brightest point becomes its mean light direction; the trees grew
-    // under the scene's own sky (or --grown-brightest), so this is a global light change.
-    const Eigen::Vector3d real =
-        environment::mean_light_direction(environment::read_site_sky_file(o.sky_file));
-    for (environment::Scene& scene : scenes) scene.sky.brightest = real;
+    // A real sky: every scene's sky becomes its light per direction (the sun's positions and the
+    // diffuse sky, sky_distribution.hpp) with its mean light direction as the brightest point;
+    // the trees grew under the scene's own sky (or --grown-brightest): a global light change.
+    const auto real = std::make_shared<const environment::SkyDistribution>(
+        environment::sky_distribution(environment::read_site_sky_file(o.sky_file)));
+    for (environment::Scene& scene : scenes) {
+      scene.sky.brightest = real->mean_direction();
+      scene.sky.distribution = real;
+    }
   }
   const bool many = o.trees.size() > 1;
   const bool several_scenes = scenes.size() > 1;
@@ -206,10 +235,12 @@ void run_adapt(const AdaptOptions& o) {
       const environment::AdaptationResult& r = adapted[k];
       const std::string& output = outputs[s][k];
       // The adapted tree as it stands: pruned branches gone unless asked to keep them flagged.
-      write_tree_file(o.keep_pruned ? r.tree : environment::remove_pruned(r.tree), output,
-                      o.format);
+      TreeGraph written = o.keep_pruned ? r.tree : environment::remove_pruned(r.tree);
+      const double mean_par = record_adapted_par(written, scenes[s], params);
+      write_tree_file(written, output, o.format);
       nlohmann::json item = adapted_json(r, o.trees[k], output, trees[k].size(), seconds[k],
                                          cpu_seconds[k], analysis_seconds[k]);
+      if (std::isfinite(mean_par)) item["mean_leaf_par_umol_m2_s"] = mean_par;
       if (several_scenes) {
         item["scene"] = o.scenes[s];
         item["light_evaluations"] = r.light_evaluations;

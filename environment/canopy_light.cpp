@@ -32,12 +32,12 @@ CanopyLight::CanopyLight(const Scene& scene, std::span<const Sphere> clusters, d
     // of the light in its cap, as in eq. 4.3: the same shadow volume bounds it.
     reach2_.push_back(shadow_reach2(c.radius_m, c.translucency, scene.sky.significance));
   }
-  const Eigen::Vector3d& b = scene.sky.brightest;
+  // The cos^2 sky of eq. 4.3, or a real sky's light (sky_distribution.hpp).
+  const std::vector<double> w = sky_weights(scene.sky, dirs_);
   weight_.resize(dirs_.size());
   Eigen::Vector3d open = Eigen::Vector3d::Zero();
   for (int i = 0; i < dirs_.size(); ++i) {
-    const double c = b.dot(dirs_.direction(i));
-    weight_[i] = c * c;
+    weight_[i] = w[static_cast<std::size_t>(i)];
     weight_sum_ += weight_[i];
     open += weight_[i] * dirs_.direction(i);
   }

@@ -29,20 +29,30 @@ float trilinear(const std::vector<float>& v, const Cell& c, std::size_t sy, std:
 
 }  // namespace
 
+namespace {
+
+Sky cos2_sky(int directions, const Eigen::Vector3d& brightest) {
+  Sky sky;
+  sky.directions = directions;
+  sky.brightest =
+      brightest.norm() > 0.0 ? Eigen::Vector3d(brightest.normalized()) : Eigen::Vector3d::UnitZ();
+  return sky;
+}
+
+}  // namespace
+
 CanopySweep::CanopySweep(int directions, const Eigen::Vector3d& brightest, double voxel_m)
-    : dirs_(directions), h_(voxel_m) {
+    : CanopySweep(cos2_sky(directions, brightest), voxel_m) {}
+
+CanopySweep::CanopySweep(const Sky& sky, double voxel_m) : dirs_(sky.directions), h_(voxel_m) {
   if (!(voxel_m > 0.0)) {
     throw ValueError("canopy sweep: voxel size must be > 0 m, got " + std::to_string(voxel_m));
   }
-  const Eigen::Vector3d b =
-      brightest.norm() > 0.0 ? Eigen::Vector3d(brightest.normalized()) : Eigen::Vector3d::UnitZ();
-  weight_.resize(static_cast<std::size_t>(dirs_.size()));
+  weight_ = sky_weights(sky, dirs_);  // Pirk eq. 4.3's cos^2, or a real sky's light
   Eigen::Vector3d m = Eigen::Vector3d::Zero();
   for (int i = 0; i < dirs_.size(); ++i) {
-    const double c = b.dot(dirs_.direction(i));
-    weight_[static_cast<std::size_t>(i)] = c * c;  // Pirk eq. 4.3
-    weight_sum_ += c * c;
-    m += c * c * dirs_.direction(i);
+    weight_sum_ += weight_[static_cast<std::size_t>(i)];
+    m += weight_[static_cast<std::size_t>(i)] * dirs_.direction(i);
   }
   if (m.norm() > 0.0) open_direction_ = m.normalized();
 }

@@ -29,6 +29,8 @@ class CanopySweep {
   // The sky of Pirk eq. 4.3 (`directions` stratified directions, I = cos^2 to `brightest`).
   // Throws ValueError unless voxel_m > 0 and directions >= 1.
   CanopySweep(int directions, const Eigen::Vector3d& brightest, double voxel_m);
+  // The sky's own weights per direction (sky_weights: cos^2 or a real sky's light).
+  CanopySweep(const Sky& sky, double voxel_m);
 
   // Light at every point relative to the open sky, and its mean direction, through the clusters
   // (extinction mu = -ln(gamma) / (2 r), canopy_light.hpp) and the obstacles' transmission per

@@ -7,6 +7,7 @@
 
 #include "environment/canopy_sweep.hpp"
 #include "environment/leaf_light_model.hpp"
+#include "environment/sky_distribution.hpp"
 #include "fspm/error.hpp"
 
 namespace fspm::environment {
@@ -171,64 +172,7 @@ std::vector<DaylightSample> daylight_through_voxels(std::span<const Sphere> clus
                                                     const Scene& scene, const RealSky& sky,
                                                     std::span<const Eigen::Vector3d> points,
                                                     double voxel_m) {
-  const std::vector<SkyStep> steps = sky_steps(sky);
-  const double dt_s = 3600.0 * (sky.last_hour - sky.first_hour) / steps.size();
-  double open_mol = 0.0;
-  for (const SkyStep& s : steps) open_mol += par_umol_m2_s(s.radiation.global_W_m2()) * dt_s * 1e-6;
-  const std::size_t np = points.size();
-  std::vector<double> mol(np, 0.0);
-  CanopySweep sweep(scene.sky.directions, scene.sky.brightest, voxel_m);
-  const HemisphereDirections& dirs = sweep.directions();
-  std::vector<std::vector<float>> vis(np);
-  for (std::size_t k = 0; k < np; ++k) vis[k] = obstacle_visibility(scene, dirs, points[k]);
-  // Diffuse light: every point's transmission per sky direction (one sweep each), then every
-  // step's sky weights.
-  std::vector<Eigen::Vector3d> sky_dirs(static_cast<std::size_t>(dirs.size()));
-  for (int i = 0; i < dirs.size(); ++i) sky_dirs[static_cast<std::size_t>(i)] = dirs.direction(i);
-  std::vector<float> t(sky_dirs.size() * np);
-  std::vector<double> diffuse(np);
-  bool any_diffuse = false;
-  for (const SkyStep& s : steps) any_diffuse = any_diffuse || s.radiation.diffuse_W_m2 > 0.0;
-  if (any_diffuse) sweep.transmissions(clusters, points, sky_dirs, t);
-  for (const SkyStep& s : steps) {
-    if (s.radiation.diffuse_W_m2 <= 0.0) continue;
-    const std::vector<double> w = diffuse_weights(dirs, sky.diffuse, s.sun);
-    std::fill(diffuse.begin(), diffuse.end(), 0.0);
-    for (std::size_t i = 0; i < w.size(); ++i) {
-      const float* ti = t.data() + i * np;
-      for (std::size_t k = 0; k < np; ++k) {
-        diffuse[k] += w[i] * ti[k] * (vis[k].empty() ? 1.0f : vis[k][i]);
-      }
-    }
-    for (std::size_t k = 0; k < np; ++k) {
-      mol[k] += par_umol_m2_s(s.radiation.diffuse_W_m2 * diffuse[k]) * dt_s * 1e-6;
-    }
-  }
-  // The sun's beam: one sweep per step with the sun up.
-  std::vector<Eigen::Vector3d> suns;
-  std::vector<double> direct;
-  for (const SkyStep& s : steps) {
-    if (s.radiation.direct_W_m2 <= 0.0) continue;
-    suns.push_back(s.sun);
-    direct.push_back(s.radiation.direct_W_m2);
-  }
-  std::vector<float> beam(suns.size() * np);
-  if (!suns.empty()) sweep.transmissions(clusters, points, suns, beam);
-  const bool obstacles = !scene.spheres.empty() || !scene.boxes.empty() || !scene.meshes.empty() ||
-                         scene.ground.has_value();
-  for (std::size_t j = 0; j < suns.size(); ++j) {
-    for (std::size_t k = 0; k < np; ++k) {
-      const double o = obstacles ? obstacle_transmission(scene, points[k], suns[j]) : 1.0;
-      mol[k] += par_umol_m2_s(direct[j] * beam[j * np + k] * o) * dt_s * 1e-6;
-    }
-  }
-  std::vector<DaylightSample> out(np);
-  for (std::size_t k = 0; k < np; ++k) {
-    out[k].daily_par_mol_m2 = mol[k];
-    out[k].par_umol_m2_s = mol[k] * 1e6 / (dt_s * steps.size());
-    out[k].open_fraction = open_mol > 0.0 ? mol[k] / open_mol : 0.0;
-  }
-  return out;
+  return daylight_through_voxels(clusters, scene, sky_distribution(sky), points, voxel_m);
 }
 
 }  // namespace fspm::environment

@@ -1,11 +1,13 @@
 #include "environment/growth_model.hpp"
 
 #include "environment/site_sky.hpp"
+#include "environment/sky_distribution.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <random>
@@ -57,9 +59,13 @@ class Grower {
   Grower(const GrowthParams& p, const Scene& scene, const Eigen::Vector3d& base)
       : p_(p), scene_(scene), base_(base), rng_(p.seed), grid_(p.shadow_grid) {
     if (!scene_.ground) scene_.ground = Ground{base.z(), 1.0, true};  // obstruction only
-    // A real sky (parameter table `sky`): its mean light direction is the brightest point of the
-    // cos^2 sky the light models see (site_sky.hpp).
-    if (p_.site_sky) scene_.sky.brightest = mean_light_direction(*p_.site_sky);
+    // A real sky (parameter table `sky`): its light per direction replaces the cos^2 sky of the
+    // light models that weight sky directions (sky_distribution.hpp); its mean direction is the
+    // brightest point of what takes one direction.
+    if (p_.site_sky) {
+      site_light_ = std::make_shared<const SkyDistribution>(sky_distribution(*p_.site_sky));
+      scene_.sky.brightest = site_light_->mean_direction();
+    }
     wsum_ = p_.phototropism + p_.gravitropism;
     // Pirk eq. 4.7 with l_s = l_i: each internode keeps (1 - sum w)^1 of its default direction.
     ws_ = 1.0 - wsum_;
@@ -88,10 +94,12 @@ class Grower {
 
  private:
   // The scene with the sky sampled as the parameters say, without clusters.
-  Scene light_scene_settings() const {
+  Scene light_scene_settings() const { return light_scene_settings(p_.light_significance); }
+  Scene light_scene_settings(double significance) const {
     Scene s = scene_;
     s.sky.directions = p_.light_directions;
-    s.sky.significance = p_.light_significance;
+    s.sky.significance = significance;
+    if (site_light_) apply_sky_distribution(s.sky, site_light_);
     return s;
   }
 
@@ -506,8 +514,7 @@ class Grower {
     // The mean light of each cluster's leaves through the final clusters as turbid media (the
     // shoots of the last cycle had no bud light). The cutoff is at most the sky's default: each
     // cluster below it is ignored alone, and in a crown hundreds of them add up.
-    Scene leaf_scene = light_scene_settings();
-    leaf_scene.sky.significance = std::min(leaf_scene.sky.significance, Sky{}.significance);
+    Scene leaf_scene = light_scene_settings(std::min(p_.light_significance, Sky{}.significance));
     record_leaf_light(out.tree, leaf_scene);
     out.clusters = out.cluster_spheres.size();
     out.shed = shed_;
@@ -518,6 +525,7 @@ class Grower {
 
   GrowthParams p_;
   Scene scene_;
+  std::shared_ptr<const SkyDistribution> site_light_;  // the real sky's light, if any
   Eigen::Vector3d base_;
   std::mt19937_64 rng_;
   double wsum_ = 0.0, ws_ = 1.0;

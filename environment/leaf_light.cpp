@@ -4,7 +4,9 @@
 #include <limits>
 #include <vector>
 
+#include "environment/canopy_sweep.hpp"
 #include "environment/leaf_light_model.hpp"
+#include "environment/sky_distribution.hpp"
 #include "fspm/attribute_names.hpp"
 
 namespace fspm::environment {
@@ -56,6 +58,26 @@ void record_leaf_light(TreeGraph& tree, const Scene& scene) {
     } else if (tree.kind(i) == OrganKind::kLeaf) {
       light[i] = kNoValue;
     }
+  }
+  if (scene.sky.distribution) record_leaf_par(tree, scene, spheres, sphere_of);
+}
+
+void record_leaf_par(TreeGraph& tree, const Scene& scene, std::span<const Sphere> spheres,
+                     std::span<const std::uint32_t> sphere_of) {
+  constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
+  std::vector<Eigen::Vector3d> centres;
+  centres.reserve(spheres.size());
+  for (const Sphere& s : spheres) centres.push_back(s.center);
+  const std::vector<DaylightSample> par = daylight_through_voxels(
+      spheres, scene, *scene.sky.distribution, centres, kCanopySweepVoxel_m);
+  tree.add_attribute(kParAttribute, kNoValue);
+  tree.add_attribute(kDailyParAttribute, kNoValue);
+  auto flux = tree.attribute(kParAttribute);
+  auto daily = tree.attribute(kDailyParAttribute);
+  for (NodeId i = 0; i < tree.size(); ++i) {
+    const bool lit = sphere_of[i] != kNoSphere;
+    flux[i] = lit ? par[sphere_of[i]].par_umol_m2_s : kNoValue;
+    daily[i] = lit ? par[sphere_of[i]].daily_par_mol_m2 : kNoValue;
   }
 }
 

@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "environment/scene.hpp"
@@ -27,6 +28,19 @@ std::vector<Sphere> leaf_spheres(const TreeGraph& tree, std::vector<std::uint32_
 // kLeafLightVoxel_m (LeafAreaGrid).
 inline constexpr std::size_t kLeafLightVoxelsFrom = 1000;
 inline constexpr double kLeafLightVoxel_m = 0.1;
+
+// Absolute light of a leaf cluster under a real sky (sky_distribution.hpp): the mean PAR flux over
+// the period (umol m-2 s-1, night included) and the PAR of a day (mol m-2; the period's divided by
+// its days), through the crown swept in voxels of kCanopySweepVoxel_m and the obstacles.
+inline constexpr const char* kParAttribute = "par_umol_m2_s";
+inline constexpr const char* kDailyParAttribute = "daily_par_mol_m2";
+
+// With a real sky (scene.sky.distribution) the clusters also get kParAttribute and
+// kDailyParAttribute (nan elsewhere), and "light" is their share of the period's open PAR through
+// the model's sky directions.
 void record_leaf_light(TreeGraph& tree, const Scene& scene);
+// Only the PAR attributes, for the clusters `spheres` (leaf_spheres) of the tree.
+void record_leaf_par(TreeGraph& tree, const Scene& scene, std::span<const Sphere> spheres,
+                     std::span<const std::uint32_t> sphere_of);
 
 }  // namespace fspm::environment

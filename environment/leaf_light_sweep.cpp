@@ -68,8 +68,7 @@ std::vector<std::uint32_t> components(std::span<const Sphere> clusters, double s
 class SweepLeafLight final : public LeafLightModel {
  public:
   explicit SweepLeafLight(const Sky& sky)
-      : sweep_(sky.directions, sky.brightest, kCanopySweepVoxel_m),
-        significance_(sky.significance) {}
+      : sweep_(sky, kCanopySweepVoxel_m), significance_(sky.significance) {}
 
   void evaluate(std::span<const Sphere> clusters,
                 std::span<const std::span<const float>> visibility,

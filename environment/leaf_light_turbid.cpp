@@ -22,14 +22,9 @@ class TurbidLeafLight final : public LeafLightModel {
     const double voxel_m = clusters.size() > kLeafLightVoxelsFrom ? kLeafLightVoxel_m : 0.0;
     const CanopyLight light(scene_, clusters, voxel_m);
     const HemisphereDirections& dirs = light.directions();
-    const Eigen::Vector3d b = scene_.sky.brightest.normalized();
-    std::vector<double> weight(static_cast<std::size_t>(dirs.size()));
+    const std::vector<double> weight = sky_weights(scene_.sky, dirs);  // Pirk eq. 4.3 or real
     double weight_sum = 0.0;
-    for (int i = 0; i < dirs.size(); ++i) {
-      const double c = b.dot(dirs.direction(i));
-      weight[static_cast<std::size_t>(i)] = c * c;  // Pirk eq. 4.3
-      weight_sum += c * c;
-    }
+    for (double w : weight) weight_sum += w;
     std::vector<double> t;
     for (std::size_t k = 0; k < clusters.size(); ++k) {
       const bool open = visibility.empty() || visibility[k].empty();

@@ -40,12 +40,12 @@ LightModel::LightModel(const Scene& scene)
 }
 
 void LightModel::set_sky_weights() {
-  const Eigen::Vector3d b = scene_.sky.brightest;  // a unit vector: validate(Sky)
+  // Pirk: I = cos^2(angle to the brightest point), or a real sky's light (sky_distribution.hpp).
+  const std::vector<double> w = sky_weights(scene_.sky, dirs_);
   weight_.resize(dirs_.size());
   Eigen::Vector3d m = Eigen::Vector3d::Zero();
   for (int i = 0; i < dirs_.size(); ++i) {
-    const double c = dirs_.direction(i).dot(b);
-    weight_[i] = c * c;  // Pirk: I = cos^2(angle to the brightest point)
+    weight_[i] = w[static_cast<std::size_t>(i)];
     weight_sum_ += weight_[i];
     m += weight_[i] * dirs_.direction(i);
   }
@@ -234,12 +234,12 @@ LightSample LightModel::evaluate(const Eigen::Vector3d& p, std::uint32_t ignore)
   for (std::size_t i = 0; i < scene_.boxes.size() && !boxes; ++i) boxes = box_relevant(i, p);
   for (std::size_t i = 0; i < scene_.meshes.size() && !boxes; ++i) boxes = mesh_relevant(i, p);
 
-  if (scene_.sky.analytic && scene_.sky.analytic_boxes && boxes) {
+  if (scene_.sky.analytic && !scene_.sky.distribution && scene_.sky.analytic_boxes && boxes) {
     LightSample out;
     if (analytic_with_boxes(p, caps, all, out)) return out;
   }
-  if (scene_.sky.analytic && !boxes && caps.size() <= kMaxAnalyticCaps &&
-      analytic_caps_exact(std::span<const Cap>(caps))) {
+  if (scene_.sky.analytic && !scene_.sky.distribution && !boxes &&
+      caps.size() <= kMaxAnalyticCaps && analytic_caps_exact(std::span<const Cap>(caps))) {
     const AnalyticLight a = analytic_cap_light(scene_.sky.brightest, std::span<const Cap>(caps));
     LightSample out;
     out.light = std::clamp(all * a.integral / a.open_integral, 0.0, 1.0);

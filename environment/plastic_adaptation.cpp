@@ -9,6 +9,7 @@
 #include "environment/cluster_grid_light.hpp"
 #include "environment/cluster_light.hpp"
 #include "environment/leaf_light_model.hpp"
+#include "environment/sky_distribution.hpp"
 #include "environment/solid_push.hpp"
 #include "fspm/attribute_names.hpp"
 #include "fspm/error.hpp"
@@ -350,8 +351,10 @@ void Engine::setup_canopy() {
   sky.brightest = scene_.sky.brightest.norm() > 0
                       ? Eigen::Vector3d(scene_.sky.brightest.normalized())
                       : Eigen::Vector3d::UnitZ();
+  // A real sky's light per direction (sky_distribution.hpp) instead of the cos^2 sky.
+  if (scene_.sky.distribution) apply_sky_distribution(sky, scene_.sky.distribution);
   canopy_ = make_leaf_light_model(params.canopy_model, sky);
-  if (!field_.has_obstacles() && runs_.size() == 1 &&
+  if (!field_.has_obstacles() && runs_.size() == 1 && !sky.distribution &&
       (runs_.front().a->brightest - sky.brightest).norm() <= 1e-12) {
     // The analysis' own light: nothing differs from the open scene until something moves.
     const TreeAnalysis& a = *runs_.front().a;

@@ -7,61 +7,16 @@
 #include <string>
 #include <vector>
 
-#include "environment/hemisphere.hpp"
-#include "environment/sky_radiation.hpp"
+#include "environment/sky_distribution.hpp"
 #include "fspm/closest_name.hpp"
 #include "fspm/error.hpp"
 #include "fspm/input_file.hpp"
 #include "fspm/toml_text.hpp"
 
 namespace fspm::environment {
-namespace {
-
-bool leap(int year) { return (year % 4 == 0 && year % 100 != 0) || year % 400 == 0; }
-
-CalendarDate next_day(CalendarDate d) {
-  static constexpr int kDays[] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
-  const int length = kDays[d.month - 1] + (d.month == 2 && leap(d.year) ? 1 : 0);
-  if (++d.day > length) {
-    d.day = 1;
-    if (++d.month > 12) d.month = 1, ++d.year;
-  }
-  return d;
-}
-
-// The diffuse sky's mean direction, weights L(d) cos(theta) normalised to sum 1.
-Eigen::Vector3d diffuse_mean(const HemisphereDirections& dirs, DiffuseSky sky,
-                             const Eigen::Vector3d& sun) {
-  Eigen::Vector3d m = Eigen::Vector3d::Zero();
-  double sum = 0.0;
-  for (int i = 0; i < dirs.size(); ++i) {
-    const Eigen::Vector3d& d = dirs.direction(i);
-    const double w = sky_radiance(sky, d, sun) * d.z();
-    m += w * d;
-    sum += w;
-  }
-  return sum > 0.0 ? Eigen::Vector3d(m / sum) : Eigen::Vector3d::UnitZ();
-}
-
-}  // namespace
 
 Eigen::Vector3d mean_light_direction(const SiteSky& site_sky) {
-  const HemisphereDirections dirs(256);
-  Eigen::Vector3d total = Eigen::Vector3d::Zero();
-  const int days = std::max(site_sky.days, 1);
-  RealSky sky = site_sky.sky;
-  if (site_sky.days > 0) sky.first_hour = 0.0, sky.last_hour = 24.0;
-  for (int d = 0; d < days; ++d) {
-    validate(sky);
-    for (const SkyStep& s : sky_steps(sky)) {
-      total += s.radiation.direct_W_m2 * s.sun;
-      if (s.radiation.diffuse_W_m2 > 0.0) {
-        total += s.radiation.diffuse_W_m2 * diffuse_mean(dirs, sky.diffuse, s.sun);
-      }
-    }
-    sky.date = next_day(sky.date);
-  }
-  return total.z() > 0.0 ? Eigen::Vector3d(total.normalized()) : Eigen::Vector3d::UnitZ();
+  return sky_distribution(site_sky).mean_direction();
 }
 
 namespace {

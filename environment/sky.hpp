@@ -2,8 +2,13 @@
 // The sky of Pirk eq. 4.3: intensity I = cos^2(angle to the brightest point), z up, x east, y
 // north.
 #include <Eigen/Core>
+#include <memory>
+#include <vector>
 
 namespace fspm::environment {
+
+struct SkyDistribution;  // sky_distribution.hpp
+class HemisphereDirections;
 
 struct Sky {
   Eigen::Vector3d brightest = Eigen::Vector3d::UnitZ();  // unit vector to the brightest sky point
@@ -13,7 +18,14 @@ struct Sky {
   // With analytic: boxes and walls in closed form (spherical polygons, see light_model). Off, they
   // are ray-cast over the directions like meshes.
   bool analytic_boxes = true;
+  // A real sky's light per direction (sky_distribution.hpp, apply_sky_distribution) in place of
+  // the cos^2 sky; null: the cos^2 sky around `brightest`.
+  std::shared_ptr<const SkyDistribution> distribution;
 };
+
+// The sky's intensity per cell of dirs, in any unit (only ratios matter): cos^2 of the angle to
+// the brightest point (Pirk eq. 4.3), or the real sky's PAR per cell (SkyDistribution).
+std::vector<double> sky_weights(const Sky& sky, const HemisphereDirections& dirs);
 
 // Throws ValueError naming the field unless brightest is a finite unit vector, directions is in
 // [1, kMaxSkyDirections] and significance in [0, 1). (A brightest point below the horizon is
