@@ -6,6 +6,9 @@
 #include <vector>
 
 #include "environment/canopy_light.hpp"
+#include "environment/canopy_sweep.hpp"
+#include "environment/hemisphere.hpp"
+#include "environment/sky_distribution.hpp"
 #include "fspm/error.hpp"
 
 namespace fspm::environment {
@@ -47,6 +50,99 @@ CanopySummary summarize_canopy(std::span<const Sphere> clusters, const Eigen::Ve
       std::min(out.silhouette_area_m2 / kSphericalLeafProjection, out.leaf_area_m2);
   out.shaded_leaf_area_m2 = out.leaf_area_m2 - out.sunlit_leaf_area_m2;
   out.star = out.leaf_area_m2 > 0.0 ? out.silhouette_area_m2 / out.leaf_area_m2 : 0.0;
+  return out;
+}
+
+namespace {
+
+// The directions the crown is lit from, each with its light on a plane normal to it (F_d), and
+// the sun's positions with their direct light (for the sunlit fraction).
+struct LitDirections {
+  std::vector<Eigen::Vector3d> dirs;
+  std::vector<double> normal_flux;  // F_d: mol m-2 per day (real sky) or eq. 4.3's I(d)
+  std::vector<double> beam;         // direct light of each direction (0 for the diffuse sky)
+  double per_day = 1.0;             // a real sky's period / its days: F in mol m-2 per day
+};
+
+LitDirections lit_directions(const Sky& sky) {
+  LitDirections out;
+  const HemisphereDirections cells(sky.directions);
+  std::vector<double> w;
+  if (sky.distribution) {
+    SkyDistribution diffuse = *sky.distribution;
+    std::fill(diffuse.direct_mol_m2.begin(), diffuse.direct_mol_m2.end(), 0.0);
+    w = diffuse.cell_mol_m2(cells);
+    out.per_day = 1.0 / std::max(sky.distribution->days, 1);
+  } else {
+    w = sky_weights(sky, cells);  // eq. 4.3's intensity: already per unit normal area
+  }
+  for (int i = 0; i < cells.size(); ++i) {
+    const Eigen::Vector3d& d = cells.direction(i);
+    const double v = w[static_cast<std::size_t>(i)];
+    if (v <= 0.0) continue;
+    out.dirs.push_back(d);
+    out.normal_flux.push_back(sky.distribution ? v / d.z() : v);
+    out.beam.push_back(0.0);
+  }
+  if (!sky.distribution) {
+    out.dirs.push_back(Eigen::Vector3d::UnitZ());  // the beam of the sunlit leaf area
+    out.normal_flux.push_back(0.0);
+    out.beam.push_back(1.0);
+    return out;
+  }
+  const SkyDistribution& d = *sky.distribution;
+  for (std::size_t k = 0; k < d.suns.size(); ++k) {
+    if (d.direct_mol_m2[k] <= 0.0 || d.suns[k].z() <= 0.0) continue;
+    out.dirs.push_back(d.suns[k]);
+    out.normal_flux.push_back(d.direct_mol_m2[k] / d.suns[k].z());
+    out.beam.push_back(d.direct_mol_m2[k]);
+  }
+  return out;
+}
+
+}  // namespace
+
+CanopyLightSummary summarize_canopy_light(std::span<const Sphere> clusters, const Sky& sky) {
+  CanopyLightSummary out;
+  out.clusters = clusters.size();
+  out.real_sky = sky.distribution != nullptr;
+  if (clusters.empty()) return out;
+  const LitDirections lit = lit_directions(sky);
+  const std::size_t n = clusters.size();
+  std::vector<Eigen::Vector3d> centres(n);
+  for (std::size_t k = 0; k < n; ++k) centres[k] = clusters[k].center;
+  std::vector<float> t(lit.dirs.size() * n);
+  CanopySweep sweep(1, Eigen::Vector3d::UnitZ(), kCanopySweepVoxel_m);
+  sweep.transmissions(clusters, centres, lit.dirs, t);
+  double flux = 0.0, beam = 0.0;
+  for (std::size_t i = 0; i < lit.dirs.size(); ++i) flux += lit.normal_flux[i], beam += lit.beam[i];
+  out.per_cluster.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    double lit_flux = 0.0, lit_beam = 0.0;
+    for (std::size_t i = 0; i < lit.dirs.size(); ++i) {
+      const double tk = t[i * n + k];
+      lit_flux += lit.normal_flux[i] * tk;
+      lit_beam += lit.beam[i] * tk;
+    }
+    ClusterCanopyLight& c = out.per_cluster[k];
+    c.leaf_area_m2 = cluster_leaf_area_m2(clusters[k]);
+    c.sunlit_fraction = beam > 0.0 ? lit_beam / beam : 0.0;
+    c.sunlit_leaf_area_m2 = c.sunlit_fraction * c.leaf_area_m2;
+    c.shaded_leaf_area_m2 = c.leaf_area_m2 - c.sunlit_leaf_area_m2;
+    c.lie = flux > 0.0 ? lit_flux / flux : 0.0;
+    c.star = kSphericalLeafProjection * c.lie;
+    if (out.real_sky) {
+      c.absorbed_par_mol_day =
+          kLeafParAbsorptance * kSphericalLeafProjection * c.leaf_area_m2 * lit_flux * lit.per_day;
+    }
+    out.leaf_area_m2 += c.leaf_area_m2;
+    out.sunlit_leaf_area_m2 += c.sunlit_leaf_area_m2;
+    out.shaded_leaf_area_m2 += c.shaded_leaf_area_m2;
+    out.lie += c.lie * c.leaf_area_m2;
+    out.absorbed_par_mol_day += c.absorbed_par_mol_day;
+  }
+  out.lie = out.leaf_area_m2 > 0.0 ? out.lie / out.leaf_area_m2 : 0.0;
+  out.star = kSphericalLeafProjection * out.lie;
   return out;
 }
 
