@@ -3,18 +3,23 @@
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
 #include "environment/canopy_summary.hpp"
 #include "environment/leaf_light.hpp"
+#include "environment/site_sky.hpp"
+#include "environment/sky_distribution.hpp"
 #include "fspm/attribute_names.hpp"
+#include "fspm/error.hpp"
 #include "fspm/mtg_tree.hpp"
 #include "fspm/plant_frame.hpp"
 #include "fspm/tree_file.hpp"
@@ -29,6 +34,7 @@ struct InfoOptions {
   std::string file;
   std::string format;
   bool json = false;
+  std::string sky_file;  // a real sky (sky = { site, date, hours | days }) for the canopy light
 };
 
 struct ConvertOptions {
@@ -60,6 +66,53 @@ std::optional<nlohmann::json> canopy_json(const TreeGraph& tree) {
                         {"shaded_leaf_area_m2", c.shaded_leaf_area_m2},
                         {"silhouette_area_m2", c.silhouette_area_m2},
                         {"star", c.star}};
+}
+
+nlohmann::json canopy_light_values(const environment::ClusterCanopyLight& c, bool real_sky) {
+  nlohmann::json j = {{"leaf_area_m2", c.leaf_area_m2},
+                      {"sunlit_leaf_area_m2", c.sunlit_leaf_area_m2},
+                      {"shaded_leaf_area_m2", c.shaded_leaf_area_m2},
+                      {"lie", c.lie},
+                      {"star", c.star}};
+  if (real_sky) j["absorbed_par_mol_day"] = c.absorbed_par_mol_day;
+  return j;
+}
+
+// The light of the leaf clusters in the crown, per cluster and for the tree
+// (environment/canopy_summary: summarize_canopy_light), under a real sky or eq. 4.3's cos^2 sky.
+std::optional<nlohmann::json> canopy_light_json(const TreeGraph& tree,
+                                                const std::string& sky_file) {
+  if (!tree.has_attribute("translucency")) return std::nullopt;
+  std::vector<std::uint32_t> sphere_of;
+  const std::vector<environment::Sphere> clusters = environment::leaf_spheres(tree, sphere_of);
+  if (clusters.empty()) return std::nullopt;
+  environment::Sky sky;
+  sky.directions = 64;  // the growth model's leaf light
+  if (!sky_file.empty()) {
+    environment::apply_sky_distribution(
+        sky, std::make_shared<const environment::SkyDistribution>(
+                 environment::sky_distribution(environment::read_site_sky_file(sky_file))));
+  }
+  const environment::CanopyLightSummary c = environment::summarize_canopy_light(clusters, sky);
+  environment::ClusterCanopyLight total;
+  total.leaf_area_m2 = c.leaf_area_m2;
+  total.sunlit_leaf_area_m2 = c.sunlit_leaf_area_m2;
+  total.shaded_leaf_area_m2 = c.shaded_leaf_area_m2;
+  total.lie = c.lie;
+  total.star = c.star;
+  total.absorbed_par_mol_day = c.absorbed_par_mol_day;
+  nlohmann::json j = canopy_light_values(total, c.real_sky);
+  j["sky"] = c.real_sky ? "site" : "cos2";
+  j["clusters"] = c.clusters;
+  nlohmann::json per = nlohmann::json::array();
+  for (NodeId i = 0; i < tree.size(); ++i) {
+    if (sphere_of[i] == environment::kNoSphere) continue;
+    nlohmann::json v = canopy_light_values(c.per_cluster[sphere_of[i]], c.real_sky);
+    v["node"] = i;
+    per.push_back(std::move(v));
+  }
+  j["per_cluster"] = std::move(per);
+  return j;
 }
 
 nlohmann::json summary_json(const std::string& file, const TreeGraph& tree) {
@@ -101,7 +154,14 @@ nlohmann::json summary_json(const std::string& file, const TreeGraph& tree) {
 
 void run_info(const InfoOptions& o) {
   const TreeGraph tree = read_tree_file(o.file, o.format);
-  const nlohmann::json j = summary_json(o.file, tree);
+  nlohmann::json j = summary_json(o.file, tree);
+  if (const auto light = canopy_light_json(tree, o.sky_file)) {
+    j["canopy_light"] = *light;
+  } else if (!o.sky_file.empty()) {
+    throw ValueError(o.file +
+                     ": --sky needs leaf clusters (leaf nodes with translucency, as fspm "
+                     "grow writes them)");
+  }
   if (o.json) {
     print_json(j);
     return;
@@ -125,6 +185,19 @@ void run_info(const InfoOptions& o) {
         c["clusters"].get<std::size_t>(), c["leaf_area_m2"].get<double>(),
         c["sunlit_leaf_area_m2"].get<double>(), c["shaded_leaf_area_m2"].get<double>(),
         c["silhouette_area_m2"].get<double>(), c["star"].get<double>());
+  }
+  if (j.contains("canopy_light")) {
+    const auto& c = j["canopy_light"];
+    std::cout << fmt::format(
+        "  canopy light ({} sky): sunlit {:.2f} m2, shaded {:.2f} m2, LIE {:.3f}, STAR {:.3f}",
+        c["sky"].get<std::string>() == "site" ? "real" : "cos2",
+        c["sunlit_leaf_area_m2"].get<double>(), c["shaded_leaf_area_m2"].get<double>(),
+        c["lie"].get<double>(), c["star"].get<double>());
+    if (c.contains("absorbed_par_mol_day")) {
+      std::cout << fmt::format(", absorbed PAR {:.1f} mol/day",
+                               c["absorbed_par_mol_day"].get<double>());
+    }
+    std::cout << '\n';
   }
 }
 
@@ -189,6 +262,9 @@ void add_tree_commands(CLI::App& app) {
   i->add_option("FILE", info->file, "Tree file (.tree, .treeb, .nwk, .mtg)")->required();
   add_input_format_option(i, info->format);
   i->add_flag("--json", info->json, "Machine-readable JSON on stdout");
+  i->add_option("--sky", info->sky_file,
+                "TOML file with a real sky (sky = { site = {latitude, longitude, elevation}, "
+                "date, hours | days }): the canopy light's sunlit area and absorbed PAR under it");
   i->callback([info] { run_info(*info); });
 
   auto conv = std::make_shared<ConvertOptions>();
