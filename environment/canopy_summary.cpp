@@ -8,6 +8,7 @@
 #include "environment/canopy_light.hpp"
 #include "environment/canopy_sweep.hpp"
 #include "environment/hemisphere.hpp"
+#include "environment/leaf_light_model.hpp"
 #include "environment/sky_distribution.hpp"
 #include "fspm/error.hpp"
 
@@ -61,6 +62,7 @@ struct LitDirections {
   std::vector<Eigen::Vector3d> dirs;
   std::vector<double> normal_flux;  // F_d: mol m-2 per day (real sky) or eq. 4.3's I(d)
   std::vector<double> beam;         // direct light of each direction (0 for the diffuse sky)
+  std::vector<int> cell;            // the direction's cell of the sky, -1 for the sun
   double per_day = 1.0;             // a real sky's period / its days: F in mol m-2 per day
 };
 
@@ -83,11 +85,13 @@ LitDirections lit_directions(const Sky& sky) {
     out.dirs.push_back(d);
     out.normal_flux.push_back(sky.distribution ? v / d.z() : v);
     out.beam.push_back(0.0);
+    out.cell.push_back(i);
   }
   if (!sky.distribution) {
     out.dirs.push_back(Eigen::Vector3d::UnitZ());  // the beam of the sunlit leaf area
     out.normal_flux.push_back(0.0);
     out.beam.push_back(1.0);
+    out.cell.push_back(-1);
     return out;
   }
   const SkyDistribution& d = *sky.distribution;
@@ -96,6 +100,7 @@ LitDirections lit_directions(const Sky& sky) {
     out.dirs.push_back(d.suns[k]);
     out.normal_flux.push_back(d.direct_mol_m2[k] / d.suns[k].z());
     out.beam.push_back(d.direct_mol_m2[k]);
+    out.cell.push_back(-1);
   }
   return out;
 }
@@ -103,6 +108,13 @@ LitDirections lit_directions(const Sky& sky) {
 }  // namespace
 
 CanopyLightSummary summarize_canopy_light(std::span<const Sphere> clusters, const Sky& sky) {
+  Scene open;
+  open.sky = sky;
+  return summarize_canopy_light(clusters, open);
+}
+
+CanopyLightSummary summarize_canopy_light(std::span<const Sphere> clusters, const Scene& scene) {
+  const Sky& sky = scene.sky;
   CanopyLightSummary out;
   out.clusters = clusters.size();
   out.real_sky = sky.distribution != nullptr;
@@ -114,6 +126,21 @@ CanopyLightSummary summarize_canopy_light(std::span<const Sphere> clusters, cons
   std::vector<float> t(lit.dirs.size() * n);
   CanopySweep sweep(1, Eigen::Vector3d::UnitZ(), kCanopySweepVoxel_m);
   sweep.transmissions(clusters, centres, lit.dirs, t);
+  // The obstacles by their translucency along each direction (eq. 4.3).
+  const bool obstacles = !scene.spheres.empty() || !scene.boxes.empty() || !scene.meshes.empty() ||
+                         scene.ground.has_value();
+  if (obstacles) {
+    const HemisphereDirections cells(sky.directions);
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::vector<float> vis = obstacle_visibility(scene, cells, centres[k]);
+      for (std::size_t i = 0; i < lit.dirs.size(); ++i) {
+        const int c = lit.cell[i];
+        const double o = c >= 0 ? (vis.empty() ? 1.0 : vis[static_cast<std::size_t>(c)])
+                                : obstacle_transmission(scene, centres[k], lit.dirs[i]);
+        t[i * n + k] *= static_cast<float>(o);
+      }
+    }
+  }
   double flux = 0.0, beam = 0.0;
   for (std::size_t i = 0; i < lit.dirs.size(); ++i) flux += lit.normal_flux[i], beam += lit.beam[i];
   out.per_cluster.resize(n);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "environment/occluders.hpp"
+#include "environment/scene.hpp"
 #include "environment/sky.hpp"
 
 namespace fspm::environment {
@@ -80,7 +81,10 @@ struct CanopyLightSummary {
 
 // Under `sky`: its real sky's sun positions and diffuse light (sky.distribution, with
 // sky.directions diffuse directions), or the cos^2 sky of eq. 4.3 and a beam from the zenith.
-// Obstacles are left out: the crown's own light.
+// The crown's own light, without obstacles.
 CanopyLightSummary summarize_canopy_light(std::span<const Sphere> clusters, const Sky& sky);
+// Under scene.sky, with the scene's obstacles (not its leaf clusters: scene.spheres count as
+// obstacles) by their translucency along each direction, as eq. 4.3 takes them.
+CanopyLightSummary summarize_canopy_light(std::span<const Sphere> clusters, const Scene& scene);
 
 }  // namespace fspm::environment

@@ -139,6 +139,9 @@ class AdaptModel final : public Model {
     std::vector<env::Sphere> clusters = leaf_cluster_spheres(*result.tree);
     if (clusters.empty()) clusters = env::cluster_spheres(adapted.clusters);
     result.metrics["light_interception"] = light_interception(placed, clusters);
+    env::Scene lit = placed;
+    lit.sky.directions = params.light_directions;
+    add_canopy_light_metrics(lit, clusters, result.metrics);
     for (auto& [name, value] : tree_metrics(*result.tree)) result.metrics[name] = value;
     return result;
   }

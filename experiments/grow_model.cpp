@@ -4,11 +4,13 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 #include "environment/growth_model.hpp"
 #include "environment/growth_params.hpp"
 #include "environment/plastic_adaptation.hpp"
+#include "environment/sky_distribution.hpp"
 #include "environment/tree_analysis.hpp"
 #include "experiments/grow_set.hpp"
 #include "experiments/light_interception.hpp"
@@ -148,6 +150,14 @@ class GrowModel final : public Model {
     // that the metric means the same for sets O, G and T.
     result.metrics["light_interception"] =
         light_interception(set == GrowSet::kOpen ? open : full, leaf_cluster_spheres(*result.tree));
+    // The crown's light under the growth's sky (its real sky when the parameters give one).
+    env::Scene lit = set == GrowSet::kOpen ? open : full;
+    lit.sky.directions = params.light_directions;
+    if (params.site_sky) {
+      env::apply_sky_distribution(lit.sky, std::make_shared<const env::SkyDistribution>(
+                                               env::sky_distribution(*params.site_sky)));
+    }
+    add_canopy_light_metrics(lit, leaf_cluster_spheres(*result.tree), result.metrics);
     for (auto& [name, value] : tree_metrics(*result.tree)) result.metrics[name] = value;
     return result;
   }

@@ -1,5 +1,7 @@
 #include "experiments/light_interception.hpp"
 
+#include "environment/canopy_summary.hpp"
+
 #include <cstdint>
 #include <numbers>
 
@@ -32,6 +34,18 @@ std::vector<environment::Sphere> leaf_cluster_spheres(const TreeGraph& tree) {
     out.push_back({tree.end(n), tree.radius(n), gamma[n], false});
   }
   return out;
+}
+
+void add_canopy_light_metrics(const environment::Scene& scene,
+                              const std::vector<environment::Sphere>& clusters,
+                              std::map<std::string, double>& metrics) {
+  if (clusters.empty()) return;
+  const environment::CanopyLightSummary c = environment::summarize_canopy_light(clusters, scene);
+  metrics["sunlit_leaf_area"] = c.sunlit_leaf_area_m2;
+  metrics["shaded_leaf_area"] = c.shaded_leaf_area_m2;
+  metrics["star"] = c.star;
+  metrics["light_interception_efficiency"] = c.lie;
+  if (c.real_sky) metrics["absorbed_par"] = c.absorbed_par_mol_day;
 }
 
 }  // namespace fspm::experiments

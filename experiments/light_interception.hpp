@@ -1,5 +1,7 @@
 #pragma once
 // The metric light_interception: light the leaf clusters of a tree absorb in a scene.
+#include <map>
+#include <string>
 #include <vector>
 
 #include "environment/occluders.hpp"
@@ -13,6 +15,14 @@ namespace fspm::experiments {
 // lit horizontal area that absorbs as much, in m^2.
 double light_interception(const environment::Scene& scene,
                           const std::vector<environment::Sphere>& clusters);
+
+// The canopy light metrics (environment/canopy_summary: summarize_canopy_light) of the clusters
+// under scene.sky and among the scene's obstacles: sunlit_leaf_area, shaded_leaf_area, star,
+// light_interception_efficiency, and absorbed_par when the sky is a real one
+// (scene.sky.distribution).
+void add_canopy_light_metrics(const environment::Scene& scene,
+                              const std::vector<environment::Sphere>& clusters,
+                              std::map<std::string, double>& metrics);
 
 // The leaf clusters a tree carries as leaf nodes with a "translucency" attribute, as the growth
 // model writes them and plastic adaptation moves them: a sphere at the node's end with its radius

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "fspm/error.hpp"
 #include "test_files.hpp"
@@ -106,6 +107,46 @@ TEST(GrowModel, BadParametersAreRejectedBeforeRunning) {
   EXPECT_THROW(f.model->check_parameter("scene", std::string("missing.json")), IoError);
   EXPECT_NO_THROW(f.model->check_parameter("preset", std::string("B")));
   EXPECT_THROW(f.model->check_parameter("preset", std::string("Z")), ValueError);
+}
+
+}  // namespace
+}  // namespace fspm::experiments
+
+namespace fspm::experiments {
+namespace {
+
+// With a real sky in the growth parameters the runs record the PAR the leaves absorb; the tree
+// beside the wall absorbs less (its own size and the wall's shade). The canopy light metrics hold
+// together: sunlit + shaded leaf area, STAR = G x LIE with G = 0.5, LIE within (0, 1].
+TEST(GrowModel, RealSkyGivesAbsorbedPar) {
+  const std::filesystem::path dir = testing::scratch("grow_real_sky");
+  testing::write(dir / "wall.json", kWall);
+  testing::write(dir / "sky.toml",
+                 "preset = \"A\"\nsky = { site = { latitude = 50, longitude = 8, elevation = 200, "
+                 "utc_offset = 1 }, date = \"2024-06-01\" }\n");
+  const auto model =
+      make_grow_model((dir / "sky.toml").string(), (dir / "wall.json").string(), dir.string());
+  const auto run = [&](const char* set) {
+    return model->run({{"years", std::int64_t{7}}, {"set", std::string(set)}}, 3, RunContext{});
+  };
+  const RunResult o = run("O"), g = run("G");
+  for (const RunResult* r : {&o, &g}) {
+    ASSERT_TRUE(r->metrics.contains("absorbed_par"));
+    EXPECT_GT(r->metrics.at("absorbed_par"), 0.0);
+    const double lie = r->metrics.at("light_interception_efficiency");
+    EXPECT_GT(lie, 0.0);
+    EXPECT_LE(lie, 1.0);
+    EXPECT_NEAR(r->metrics.at("star"), 0.5 * lie, 1e-12);
+    EXPECT_GT(r->metrics.at("sunlit_leaf_area"), 0.0);
+    EXPECT_GT(r->metrics.at("shaded_leaf_area"), 0.0);
+  }
+  std::printf("absorbed PAR: open %.2f mol/day, beside the wall %.2f mol/day\n",
+              o.metrics.at("absorbed_par"), g.metrics.at("absorbed_par"));
+  EXPECT_GT(o.metrics.at("absorbed_par"), g.metrics.at("absorbed_par"));
+  const Fixture plain("grow_cos2_sky");
+  const RunResult c = plain.run("O", 3);
+  EXPECT_FALSE(c.metrics.contains("absorbed_par"));
+  EXPECT_TRUE(c.metrics.contains("light_interception_efficiency"));
 }
 
 }  // namespace
