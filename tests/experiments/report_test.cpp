@@ -40,5 +40,30 @@ TEST(Report, MeansAndSampleDeviationsPerPoint) {
   EXPECT_NE(markdown_report(info, runs).find("| height (m) |"), std::string::npos);
 }
 
+// The canopy light metrics of grown trees get their columns and units in the report's tables.
+TEST(Report, CanopyLightMetricsHaveTheirUnits) {
+  ExperimentInfo info;
+  info.name = "canopy";
+  info.total_runs = 1;
+  info.metrics = {"sunlit_leaf_area", "shaded_leaf_area", "star", "light_interception_efficiency",
+                  "absorbed_par"};
+  info.experiment_text = "[model]\nkind = \"grow\"\n";
+  RunRecord r;
+  r.run = 0;
+  r.point = 0;
+  r.status = RunStatus::kOk;
+  r.metrics = {{"sunlit_leaf_area", 7.5},
+               {"shaded_leaf_area", 6.6},
+               {"star", 0.25},
+               {"light_interception_efficiency", 0.5},
+               {"absorbed_par", 306.8}};
+  const std::string md = markdown_report(info, {r});
+  EXPECT_NE(md.find("| sunlit_leaf_area (m^2) | shaded_leaf_area (m^2) | star (ratio) | "
+                    "light_interception_efficiency (ratio) | absorbed_par (mol/day) |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| 7.5 | 6.6 | 0.25 | 0.5 | 306.8 |"), std::string::npos) << md;
+}
+
 }  // namespace
 }  // namespace fspm::experiments
