@@ -13,6 +13,7 @@
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
 #include "environment/canopy_light.hpp"
+#include "environment/canopy_sweep.hpp"
 #include "environment/daylight.hpp"
 #include "environment/growth_model.hpp"
 #include "environment/leaf_light.hpp"
@@ -130,7 +131,9 @@ struct GrowOptions {
 };
 
 // The light of a tree's leaf clusters: the mean light of each cluster's leaves through the crown
-// as turbid media and the scene's obstacles (record_leaf_light), and its PAR under a real sky.
+// as turbid media and the scene's obstacles, as fspm grow records it (record_leaf_light: spheres,
+// or kLeafLightVoxel_m voxels above kLeafLightVoxelsFrom clusters), and its PAR under a real sky
+// as fspm grow records it too (record_leaf_par: the crown swept in kCanopySweepVoxel_m voxels).
 void leaf_cluster_light(const LightOptions& o, const environment::Scene& scene,
                         const std::optional<environment::RealSky>& sky,
                         std::vector<Eigen::Vector3d>& points,
@@ -147,7 +150,10 @@ void leaf_cluster_light(const LightOptions& o, const environment::Scene& scene,
       clusters.size() > environment::kLeafLightVoxelsFrom ? environment::kLeafLightVoxel_m : 0.0;
   const environment::CanopyLight light(scene, clusters, voxel_m);
   samples = light.evaluate_clusters();
-  if (sky) daylight = environment::daylight_at(light, *sky, points);
+  if (sky) {
+    daylight = environment::daylight_through_voxels(clusters, scene, *sky, points,
+                                                    environment::kCanopySweepVoxel_m);
+  }
 }
 
 void run_light(const LightOptions& o) {
