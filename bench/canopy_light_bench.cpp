@@ -5,13 +5,18 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <cstdint>
+#include <memory>
 #include <random>
 #include <vector>
 
 #include "environment/canopy_light.hpp"
+#include "environment/canopy_summary.hpp"
 #include "environment/daylight.hpp"
 #include "environment/growth_model.hpp"
+#include "environment/leaf_light.hpp"
 #include "environment/leaf_light_model.hpp"
+#include "environment/sky_distribution.hpp"
 #include "tests/environment/leaf_ray_tracer.hpp"
 
 namespace {
@@ -80,6 +85,43 @@ void BM_CanopyDaylightSweep30YearA(benchmark::State& state) {
   state.counters["clusters"] = static_cast<double>(g.cluster_spheres.size());
 }
 BENCHMARK(BM_CanopyDaylightSweep30YearA)->Arg(50)->Arg(25)->Unit(benchmark::kMillisecond);
+
+// Growth's leaf PAR under a real sky (record_leaf_par: the crown swept in 0.5 m voxels, 64 diffuse
+// directions and every sun position of a clear 21 June at 45 N) and the canopy light summary
+// (sunlit and shaded leaf area, LIE, STAR, absorbed PAR per cluster) under the same sky.
+Scene real_day_scene() {
+  RealSky day;
+  day.site = {45.0, 7.0, 300.0, 1.0};
+  day.date = {2024, 6, 21};
+  Scene s = leaf_sky();
+  apply_sky_distribution(s.sky, std::make_shared<const SkyDistribution>(sky_distribution(day)));
+  return s;
+}
+
+void BM_GrownLeafPar30YearA(benchmark::State& state) {
+  const GrowthResult& g = tree_a30();
+  const Scene scene = real_day_scene();
+  fspm::TreeGraph tree = g.tree;
+  std::vector<std::uint32_t> sphere_of;
+  const std::vector<Sphere> clusters = leaf_spheres(tree, sphere_of);
+  for (auto _ : state) {
+    record_leaf_par(tree, scene, clusters, sphere_of);
+    benchmark::DoNotOptimize(tree.attribute(kParAttribute).data());
+  }
+  state.counters["clusters"] = static_cast<double>(clusters.size());
+}
+BENCHMARK(BM_GrownLeafPar30YearA)->Unit(benchmark::kMillisecond);
+
+void BM_CanopyLightSummary30YearA(benchmark::State& state) {
+  const GrowthResult& g = tree_a30();
+  const Scene scene = real_day_scene();
+  for (auto _ : state) {
+    const CanopyLightSummary c = summarize_canopy_light(g.cluster_spheres, scene.sky);
+    benchmark::DoNotOptimize(c.absorbed_par_mol_day);
+  }
+  state.counters["clusters"] = static_cast<double>(g.cluster_spheres.size());
+}
+BENCHMARK(BM_CanopyLightSummary30YearA)->Unit(benchmark::kMillisecond);
 
 // The yardstick: ray tracing the leaves and wood of the 15-year type-A tree (16 leaves and 64 rays
 // per cluster), against the turbid medium's light for the same clusters (counter `ratio`).

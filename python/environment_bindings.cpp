@@ -3,11 +3,15 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include "environment/canopy_summary.hpp"
 #include "environment/growth_model.hpp"
 #include "environment/growth_params.hpp"
+#include "environment/leaf_light.hpp"
 #include "environment/light_model.hpp"
 #include "environment/plastic_adaptation.hpp"
 #include "environment/scene_file.hpp"
+#include "environment/site_sky.hpp"
+#include "environment/sky_distribution.hpp"
 #include "environment/tree_analysis.hpp"
 #include "fspm/number_text.hpp"
 #include "python/bindings.hpp"
@@ -485,9 +489,66 @@ void bind_growth_functions(py::module_& m) {
       "base (x, y, z in m)");
 }
 
+// The light of a tree's leaf clusters in its crown (environment/canopy_summary), as fspm tree
+// info --json gives it under "canopy_light": totals and one array per quantity, per cluster.
+py::dict canopy_light(const TreeGraph& tree, const std::string& sky_file, int directions) {
+  std::vector<std::uint32_t> sphere_of;
+  const std::vector<env::Sphere> clusters = env::leaf_spheres(tree, sphere_of);
+  env::Sky sky;
+  sky.directions = directions;
+  env::validate(sky);
+  if (!sky_file.empty()) {
+    env::apply_sky_distribution(sky, std::make_shared<const env::SkyDistribution>(
+                                         env::sky_distribution(env::read_site_sky_file(sky_file))));
+  }
+  env::CanopyLightSummary c;
+  {
+    py::gil_scoped_release release;
+    c = env::summarize_canopy_light(clusters, sky);
+  }
+  py::dict out;
+  out["sky"] = c.real_sky ? "site" : "cos2";
+  out["clusters"] = c.clusters;
+  out["leaf_area_m2"] = c.leaf_area_m2;
+  out["sunlit_leaf_area_m2"] = c.sunlit_leaf_area_m2;
+  out["shaded_leaf_area_m2"] = c.shaded_leaf_area_m2;
+  out["lie"] = c.lie;
+  out["star"] = c.star;
+  if (c.real_sky) out["absorbed_par_mol_day"] = c.absorbed_par_mol_day;
+  std::vector<std::int64_t> nodes;
+  for (NodeId i = 0; i < tree.size(); ++i) {
+    if (sphere_of[i] != env::kNoSphere) nodes.push_back(static_cast<std::int64_t>(i));
+  }
+  const auto column = [&](double env::ClusterCanopyLight::*field) {
+    py::array_t<double> a(static_cast<py::ssize_t>(nodes.size()));
+    auto v = a.mutable_unchecked<1>();
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+      v(static_cast<py::ssize_t>(k)) = c.per_cluster[sphere_of[nodes[k]]].*field;
+    }
+    return a;
+  };
+  py::dict per;
+  per["node"] = py::array_t<std::int64_t>(static_cast<py::ssize_t>(nodes.size()), nodes.data());
+  per["leaf_area_m2"] = column(&env::ClusterCanopyLight::leaf_area_m2);
+  per["sunlit_leaf_area_m2"] = column(&env::ClusterCanopyLight::sunlit_leaf_area_m2);
+  per["shaded_leaf_area_m2"] = column(&env::ClusterCanopyLight::shaded_leaf_area_m2);
+  per["lie"] = column(&env::ClusterCanopyLight::lie);
+  per["star"] = column(&env::ClusterCanopyLight::star);
+  if (c.real_sky)
+    per["absorbed_par_mol_day"] = column(&env::ClusterCanopyLight::absorbed_par_mol_day);
+  out["per_cluster"] = per;
+  return out;
+}
+
 void bind_growth(py::module_& m) {
   bind_growth_params(m);
   bind_growth_functions(m);
+  m.def("canopy_light", &canopy_light, py::arg("tree"), py::arg("sky_file") = std::string(),
+        py::arg("directions") = 64,
+        "Light of a tree's leaf clusters in its crown, per cluster and for the tree: sunlit and "
+        "shaded leaf area (m2), light interception efficiency (lie), STAR and, under a real sky "
+        "(sky_file: TOML with sky = { site, date, hours | days }), absorbed PAR (mol/day); "
+        "as `fspm tree info --json` gives it under canopy_light");
 }
 
 void bind_analysis_params(py::module_& m) {

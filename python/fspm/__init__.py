@@ -13,8 +13,8 @@ Families (names follow the C++ API):
   (a single-precision ``LineTree``), ``read_plant_params``,
   ``fit_gl1``, ``predict_targets``, ``read_targets_csv``
 * environment: ``Scene``, ``read_scene_file``, ``parse_scene_json``, ``light``, ``LightModel``,
-  ``GrowthParams``, ``grow_tree``, ``analyze_tree``, ``adapt_tree``, ``adapt_trees``,
-  ``remove_pruned``
+  ``GrowthParams``, ``grow_tree``, ``canopy_light``, ``analyze_tree``, ``adapt_tree``,
+  ``adapt_trees``, ``remove_pruned``
 * statistics: ``mean``, ``standard_deviation``, ``mean_confidence_interval``,
   ``student_t_test``, ``welch_t_test``, ``paired_t_test``, ``mann_whitney_u_test``, ``cohens_d``
 * graphics: ``mesh_tree``, ``MeshOptions``, ``write_mesh`` (.obj/.ply/.vtp/.glb), ``write_pvd``,
@@ -57,6 +57,7 @@ from ._fspm import (  # noqa: F401
     adapt_tree,
     adapt_trees,
     analyze_tree,
+    canopy_light,
     cohens_d,
     decode_clusters,
     count_mesh,

@@ -232,3 +232,25 @@ def test_light_releases_the_gil():
         count *= 2
     inside = [t for t in ticks if span["start"] + 0.02 < t < span["end"] - 0.02]
     assert len(inside) >= 5
+
+
+def test_canopy_light_under_a_real_sky(tmp_path):
+    sky = tmp_path / "sky.toml"
+    sky.write_text('sky = { site = { latitude = 50, longitude = 8, elevation = 200, '
+                   'utc_offset = 1 }, date = "2024-06-01" }\n')
+    params = fspm.parse_growth_params(
+        'preset = "A"\nyears = 8\n' + sky.read_text())
+    tree = fspm.grow_tree(params).tree
+    # Grown under a real sky, the leaves carry their PAR.
+    assert "par_umol_m2_s" in tree.attribute_names()
+    c = fspm.canopy_light(tree, str(sky))
+    assert c["sky"] == "site"
+    per = c["per_cluster"]
+    assert len(per["node"]) == c["clusters"] > 0
+    assert np.allclose(per["sunlit_leaf_area_m2"] + per["shaded_leaf_area_m2"],
+                       per["leaf_area_m2"])
+    assert np.allclose(per["star"], 0.5 * per["lie"])
+    assert math.isclose(per["absorbed_par_mol_day"].sum(), c["absorbed_par_mol_day"],
+                        rel_tol=1e-9)
+    assert 0 < c["lie"] <= 1
+    assert "absorbed_par_mol_day" not in fspm.canopy_light(tree)
