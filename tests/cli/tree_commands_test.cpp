@@ -225,6 +225,42 @@ TEST(TreeCli, InfoJsonReportsTheCanopy) {
                    .contains("canopy"));
 }
 
+// The canopy light per cluster and for the tree: the clusters' areas add up to the tree's, STAR is
+// half the light interception efficiency, and a real sky (--sky) adds the absorbed PAR; --sky on a
+// tree without leaf clusters is an error.
+TEST(TreeCli, InfoJsonReportsTheCanopyLight) {
+  const std::string open = std::string(FSPM_SOURCE_DIR) + "/examples/trees/open_a12.treeb";
+  const auto dir = scratch_dir("info_canopy_light");
+  write_text(dir / "sky.toml",
+             "sky = { site = { latitude = 50, longitude = 8, elevation = 200, utc_offset = 1 }, "
+             "date = \"2024-06-01\" }\n");
+  const auto r = run_fspm("tree info --json --sky " + (dir / "sky.toml").string() + " " + open);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto c = nlohmann::json::parse(r.out)["canopy_light"];
+  ASSERT_TRUE(c.is_object()) << r.out;
+  EXPECT_EQ(c["sky"], "site");
+  ASSERT_EQ(c["per_cluster"].size(), c["clusters"].get<std::size_t>());
+  double sunlit = 0.0, absorbed = 0.0;
+  for (const auto& k : c["per_cluster"]) {
+    sunlit += k["sunlit_leaf_area_m2"].get<double>();
+    absorbed += k["absorbed_par_mol_day"].get<double>();
+    EXPECT_NEAR(k["star"].get<double>(), 0.5 * k["lie"].get<double>(), 1e-12);
+  }
+  EXPECT_NEAR(sunlit, c["sunlit_leaf_area_m2"].get<double>(), 1e-9 * sunlit);
+  EXPECT_NEAR(absorbed, c["absorbed_par_mol_day"].get<double>(), 1e-9 * absorbed);
+  EXPECT_GT(absorbed, 0.0);
+  EXPECT_GT(c["lie"].get<double>(), 0.0);
+  EXPECT_LT(c["lie"].get<double>(), 1.0);
+  const auto plain = nlohmann::json::parse(run_fspm("tree info --json " + open).out);
+  EXPECT_EQ(plain["canopy_light"]["sky"], "cos2");
+  EXPECT_FALSE(plain["canopy_light"].contains("absorbed_par_mol_day"));
+  write_text(dir / "x.nwk", "((1,2)3,4)5;\n");
+  const auto bare =
+      run_fspm("tree info --sky " + (dir / "sky.toml").string() + " " + (dir / "x.nwk").string());
+  EXPECT_EQ(bare.exit_code, 1);
+  EXPECT_NE(bare.err.find("leaf clusters"), std::string::npos) << bare.err;
+}
+
 TEST(TreeCli, MalformedFileExitsOneWithFileAndLine) {
   const auto dir = scratch_dir("bad");
   const auto bad = dir / "bad.tree";
