@@ -1,5 +1,7 @@
 #include "environment/cluster_light.hpp"
 
+#include "environment/sky_distribution.hpp"
+
 #include "environment/analytic_caps.hpp"
 #include "environment/sky_occlusion_kernel.hpp"
 #include "fspm/dcheck.hpp"
@@ -45,6 +47,25 @@ ClusterLightField::ClusterLightField(int directions, double significance,
     ys_.push_back(static_cast<float>(dirs_.direction(i).y()));
     zs_.push_back(static_cast<float>(dirs_.direction(i).z()));
   }
+}
+
+void ClusterLightField::set_sky_distribution(std::shared_ptr<const SkyDistribution> distribution) {
+  Sky sky;
+  sky.directions = dirs_.size();
+  sky.significance = significance_;
+  apply_sky_distribution(sky, std::move(distribution));
+  distribution_ = sky.distribution;
+  significance_ = sky.significance;
+  brightest_ = sky.brightest;
+  const std::vector<double> w = sky_weights(sky, dirs_);
+  weight_sum_ = 0.0;
+  Eigen::Vector3d m = Eigen::Vector3d::Zero();
+  for (int i = 0; i < dirs_.size(); ++i) {
+    weight_[static_cast<std::size_t>(i)] = w[static_cast<std::size_t>(i)];
+    weight_sum_ += weight_[static_cast<std::size_t>(i)];
+    m += weight_[static_cast<std::size_t>(i)] * dirs_.direction(i);
+  }
+  open_direction_ = m.norm() > 0 ? Eigen::Vector3d(m.normalized()) : Eigen::Vector3d::UnitZ();
 }
 
 void ClusterLightField::set_clusters(std::span<const Eigen::Vector3d> centers,
@@ -352,7 +373,7 @@ void ClusterLightField::evaluate(std::uint32_t c, bool rebuild) {
     }
   }
   const std::vector<float>& obstacle = obstacle_vis_[c];
-  if (obstacle.empty() && caps_.size() <= kMaxAnalyticCaps &&
+  if (!distribution_ && obstacle.empty() && caps_.size() <= kMaxAnalyticCaps &&
       analytic_caps_exact(std::span<const Cap>(caps_))) {
     const AnalyticLight a = analytic_cap_light(brightest_, std::span<const Cap>(caps_));
     light_[c] = std::clamp(all * a.integral / a.open_integral, 0.0, 1.0);
@@ -424,6 +445,8 @@ void ClusterLightField::evaluate_batch(std::span<const std::uint32_t> which,
   world.sky.brightest = brightest_;
   world.sky.directions = dirs_.size();
   world.sky.significance = significance_;
+  world.sky.distribution = distribution_;
+  if (distribution_) world.sky.analytic = false;
   // The per-cluster path samples the obstacles over the directions: the batch must compute the same
   // integral, so LightModel's closed-form boxes stay off here.
   world.sky.analytic_boxes = false;

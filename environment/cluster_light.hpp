@@ -12,6 +12,7 @@
 // integrated in closed form (exact), otherwise over the stratified directions.
 #include <Eigen/Core>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -34,6 +35,9 @@ class ClusterLightField {
   static constexpr double kListMargin_m = 0.5;
 
   ClusterLightField(int directions, double significance, const Eigen::Vector3d& brightest);
+  // A real sky's light per direction in place of the cos^2 sky (sky_distribution.hpp: weights,
+  // mean direction, cutoff lowered by its peak, closed forms off). Call before set_clusters.
+  void set_sky_distribution(std::shared_ptr<const SkyDistribution> distribution);
 
   // Replaces the clusters (centres, radii, translucencies); all alive, nothing evaluated.
   void set_clusters(std::span<const Eigen::Vector3d> centers, std::span<const double> radii,
@@ -149,6 +153,7 @@ class ClusterLightField {
   std::vector<double> weight_;
   double weight_sum_ = 0.0;
   double significance_ = 0.01;
+  std::shared_ptr<const SkyDistribution> distribution_;  // null: the cos^2 sky
   Eigen::Vector3d brightest_ = Eigen::Vector3d::UnitZ();
   Eigen::Vector3d open_direction_ = Eigen::Vector3d::UnitZ();
   double max_reach_ = 0.0;

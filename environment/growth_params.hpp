@@ -67,9 +67,9 @@ struct GrowthParams {
   BudLightModel light_model = BudLightModel::kShadowGrid;
   // Share of the open sky's light that reaches the stand (1: open site); scales every bud's Q.
   double sky_light_fraction = 1.0;
-  // A real sky (`sky = { site = {...}, date, hours | days }`): its mean light direction
-  // (site_sky.hpp) replaces the scene's brightest point for every light model that has one (the
-  // `sky` bud light and the leaves' light; the shadow grid's pyramid stays vertical).
+  // A real sky (`sky = { site = {...}, date, hours | days }`): its light per direction
+  // (sky_distribution.hpp) replaces the cos^2 sky of the `sky` bud light and the leaves' light,
+  // which also get their PAR; the shadow grid's pyramid stays vertical.
   std::optional<SiteSky> site_sky;
   // Photosynthetic light response, a rectangular hyperbola (Thornley and Johnson 1990): the
   // resource of a bud with light Q is P(Q) = Q (1 + K) / (Q + K), 1 in full light, with K the

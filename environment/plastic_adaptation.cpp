@@ -159,6 +159,7 @@ Engine::Engine(const std::vector<const TreeGraph*>& trees,
       field_(analyses.empty() ? 64 : analyses.front()->params.light_directions,
              analyses.empty() ? 0.01 : analyses.front()->params.light_significance,
              scene.sky.brightest) {
+  if (scene.sky.distribution) field_.set_sky_distribution(scene.sky.distribution);  // a real sky
   if (trees.size() != analyses.size()) {
     throw ValueError("plastic adaptation: one analysis per tree expected");
   }

@@ -1,8 +1,9 @@
 #pragma once
-// A real sky for the growth and adaptation light models, which take the sky as the cos^2 sky of
-// Pirk eq. 4.3 around one brightest point: the sun at a site over some hours of a day or over
-// whole days (solar_position.hpp, clear-sky radiation split into direct and diffuse,
-// sky_radiation.hpp), reduced to the direction its light comes from on average,
+// A real sky for the growth and adaptation light models: the sun at a site over some hours of a
+// day or over whole days (solar_position.hpp, clear-sky radiation split into direct and diffuse,
+// sky_radiation.hpp). The light models that weight sky directions take its light per direction
+// (sky_distribution.hpp); what takes one direction takes the direction its light comes from on
+// average,
 //
 //   b = normalise( sum_t [ S_b(t) s(t) + S_d(t) m_d(t) ] ),
 //

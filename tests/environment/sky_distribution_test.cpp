@@ -12,6 +12,8 @@
 #include "environment/leaf_light.hpp"
 #include "environment/leaf_light_model.hpp"
 #include "environment/light_model.hpp"
+#include "environment/plastic_adaptation.hpp"
+#include "environment/tree_analysis.hpp"
 
 namespace fspm::environment {
 namespace {
@@ -204,6 +206,40 @@ TEST(SkyDistribution, GrownLeavesCarryTheirPar) {
   EXPECT_GT(sy / n, 0.1);
   EXPECT_LT(sy / n, 0.95);
   EXPECT_GT(r, 0.7);
+}
+
+}  // namespace
+}  // namespace fspm::environment
+
+namespace fspm::environment {
+namespace {
+
+// The adaptation's light models under the equinox sky of 55 N as a light per direction: each turns
+// the 12-year tree's tips to the south, and its `sky` cluster light differs from that of the cos^2
+// sky around the same mean direction.
+TEST(SkyDistribution, AdaptationTakesTheRealSky) {
+  GrowthParams p = growth_preset("A");
+  p.years = 12;
+  const GrowthResult g = grow_tree(p);
+  SiteSky site;
+  site.sky.site = {55.0, 0.0, 0.0, 0.0};
+  site.sky.date = {2024, 3, 20};
+  const auto d = std::make_shared<const SkyDistribution>(sky_distribution(site));
+  for (const ClusterLightModel model : {ClusterLightModel::kCanopy, ClusterLightModel::kSky}) {
+    AnalysisParams ap;
+    ap.light_model = model;
+    const TreeAnalysis a = analyze_tree(g.tree, ap);
+    Scene mean_only;
+    mean_only.sky.brightest = d->mean_direction();
+    Scene real = mean_only;
+    real.sky.distribution = d;
+    const AdaptationResult r = adapt_tree(g.tree, a, real);
+    const AdaptationResult m = adapt_tree(g.tree, a, mean_only);
+    std::printf("adapted under 55 N (model %d): tip shift y %.3f m (mean direction only %.3f m)\n",
+                static_cast<int>(model), r.mean_tip_shift.y(), m.mean_tip_shift.y());
+    EXPECT_LT(r.mean_tip_shift.y(), -0.1);
+    EXPECT_GT(std::abs(r.mean_tip_shift.y() - m.mean_tip_shift.y()), 1e-6);
+  }
 }
 
 }  // namespace
