@@ -290,7 +290,8 @@ void add_adapt_commands(CLI::App& app) {
       ->check(number_in(-1e6, 1e6));
   a->add_option("--sky", opt->sky_file,
                 "TOML file with sky = { site = { latitude, longitude, elevation }, date, "
-                "hours | days }: the scenes' sky becomes that real sky's mean light direction");
+                "hours | days }: the scenes' sky becomes that real sky (its sun positions and "
+                "diffuse light per direction); the adapted trees' leaf clusters get their PAR");
   a->add_flag("--temporal-pruning", opt->temporal,
               "Pruning thresholds over all earlier growth stages (eq. 4.5), not the final one");
   a->add_flag("--absolute-pruning", opt->absolute_pruning,
