@@ -113,6 +113,38 @@ TEST(AdaptCli, SeveralScenesReadaptTheSameAnalysis) {
             js["nodes"].get<std::size_t>() - js["pruned_nodes"].get<std::size_t>());
 }
 
+// Under a real sky (--sky) the adapted trees' leaf clusters carry their PAR, and a wall beside the
+// tree takes part of it; without --sky there is none.
+TEST(AdaptCli, RealSkyGivesTheLeavesTheirPar) {
+  const auto dir = scratch_dir("adapt_sky");
+  std::ofstream(dir / "empty.json") << R"({"occluders": []})";
+  std::ofstream(dir / "wall.json")
+      << R"({"occluders": [{"type": "wall", "from": [1.0, -20], "to": [1.0, 20], "height": 20}]})";
+  std::ofstream(dir / "sky.toml") << "sky = { site = { latitude = 50, longitude = 8, elevation = "
+                                     "200, utc_offset = 1 }, date = \"2024-06-01\" }\n";
+  const auto tree = (dir / "a.tree").string();
+  ASSERT_EQ(run_fspm("grow --preset A --years 10 -o " + tree).exit_code, 0);
+  const auto adapt = [&](const char* scene, const char* out, bool sky) {
+    return run_fspm("adapt " + tree + " --scene " + (dir / scene).string() + " -o " +
+                    (dir / out).string() + " --json" +
+                    (sky ? " --sky " + (dir / "sky.toml").string() : std::string()));
+  };
+  const auto e = adapt("empty.json", "e.tree", true);
+  const auto w = adapt("wall.json", "w.tree", true);
+  ASSERT_EQ(e.exit_code, 0) << e.err;
+  ASSERT_EQ(w.exit_code, 0) << w.err;
+  const double open = nlohmann::json::parse(e.out)["mean_leaf_par_umol_m2_s"].get<double>();
+  const double walled = nlohmann::json::parse(w.out)["mean_leaf_par_umol_m2_s"].get<double>();
+  EXPECT_GT(open, 0.0);
+  EXPECT_LT(walled, open);
+  const TreeGraph adapted = read_tree_file((dir / "e.tree").string());
+  ASSERT_TRUE(adapted.has_attribute("par_umol_m2_s"));
+  ASSERT_TRUE(adapted.has_attribute("daily_par_mol_m2"));
+  const auto plain = adapt("empty.json", "p.tree", false);
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_FALSE(nlohmann::json::parse(plain.out).contains("mean_leaf_par_umol_m2_s"));
+}
+
 TEST(AdaptCli, BadSceneIsAUserError) {
   const auto dir = scratch_dir("adapt_bad");
   const auto tree = (dir / "a.tree").string();
