@@ -42,6 +42,12 @@ struct SplitOptions {
   double f_s = 0.98;                // eq. 3.2
   bool follow_main_axes = true;     // false: eq. 3.2 alone (Pirk)
   double main_branch_share = 0.05;  // of l(root), eq. 3.1's subtree length
+  // A side branch reaching this share of the skeleton's longest path from the root (its longest
+  // path from its fork to a tip) is a main limb too, however many limbs share the crown; 0: off.
+  double main_branch_reach = 0.1;
+  // Side tips shorter than this (scans/tip_pruning.hpp: split rings, leaf tufts, noise) are left
+  // out of the lengths the main axes are chosen by; 0 counts every node.
+  double spur_length_m = 0.0;
 };
 
 // Needs the radii of eq. 3.1 set on skeleton.tree; f_s > 0.

@@ -31,6 +31,7 @@ struct EncodeOptions {
   // false: eq. 3.2 alone, as Pirk.
   bool follow_main_axes = true;
   double main_branch_share = 0.05;
+  double main_branch_reach = 0.1;
 };
 
 // An occlusion gap the neighbour graph bridged (scans/neighbour_graph.hpp): a bridge longer than
