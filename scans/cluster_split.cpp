@@ -96,6 +96,7 @@ std::vector<std::uint8_t> main_axis_nodes(const TreeGraph& t, const SplitOptions
 ClusterSplit split_clusters(const PointSet& ps, const PointSkeleton& s, const SplitOptions& o) {
   if (!(o.f_s > 0.0)) throw ValueError("f_s must be positive");
   if (!(o.main_branch_share >= 0.0)) throw ValueError("the main branch share must not be negative");
+  if (!(o.main_branch_reach >= 0.0)) throw ValueError("the main branch reach must not be negative");
   const TreeGraph& t = s.tree;
   const std::vector<std::uint8_t> main_axis = main_axis_nodes(t, o);
   ClusterSplit out;
