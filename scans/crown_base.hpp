@@ -1,10 +1,10 @@
 #pragma once
-// The crown base of a scanned tree as forestry measures it: the height of the base of the lowest
-// live branch, where its axis leaves the trunk's axis. The skeleton's fork node is a centroid of
-// a bin of points at one geodesic distance from the root, and it moves by a bin (0.1-0.2 m) with
-// how the graph reached the junction; the branch's own points do not. Each branch from the trunk
-// that carries at least `min_branch_length_m` of skeleton is judged by the points of its first
-// segments off the trunk's surface:
+// The crown base of a scanned tree in the silvicultural sense: the height of the base of the lowest
+// live branch, where its axis leaves the trunk's axis (where the branch meets the stem). The
+// skeleton's fork node is a centroid of a bin of points at one geodesic distance from the root, and
+// it moves by a bin (0.1-0.2 m) with how the graph reached the junction; the branch's own points do
+// not. Each branch from the trunk that carries at least `min_branch_length_m` of skeleton is judged
+// by the points of its first segments off the trunk's surface:
 // - with an axis (the points' spread along their principal direction kMinAxisSpread times that
 //   across, not within kMinForkAngleDeg of the trunk), the point of the trunk's axis nearest to
 //   the branch's axis line;
