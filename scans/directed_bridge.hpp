@@ -9,6 +9,7 @@
 // leaving a piece out leaves its points without a path from the root, and the skeleton without
 // a parent for their node.
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -26,6 +27,18 @@ inline constexpr double kBridgeConeDeg = 30.0;  // half-angle of the cone about 
 inline constexpr std::size_t kMinAxisPoints = 10;
 inline constexpr double kMinElongation = 3.0;  // of the first to the second principal extent
 inline constexpr double kMaxDetour = 3.0;      // of the shortest edge's length
+
+// Whether the piece has an axis: at least kMinAxisPoints points, kMinElongation times longer than
+// wide.
+bool piece_is_elongated(const PointSet& points, const std::vector<std::uint32_t>& piece);
+
+// The bridge along the piece's axis: from one of its ends to the nearest point of the target
+// (`tree_index` over `tree_points`) inside the cone about the axis, at most kMaxDetour times the
+// shortest edge or the piece's length away; none when the piece has no axis or the cone is empty.
+std::optional<Bridge> axis_bridge(const PointSet& points, const std::vector<std::uint32_t>& piece,
+                                  const PointKdTree& tree_index,
+                                  const std::vector<std::uint32_t>& tree_points,
+                                  const Bridge& shortest);
 
 // The bridge for one piece (`piece`: its point indices) whose shortest edge to the tree is
 // `shortest`. `tree_index` searches the tree's points (`tree_points`, indices into points.points).
