@@ -40,12 +40,6 @@ bool piece_is_elongated(const PointSet& ps, const std::vector<std::uint32_t>& pi
   return piece_axis(ps, piece).elongated;
 }
 
-Bridge directed_bridge(const PointSet& ps, const std::vector<std::uint32_t>& piece,
-                       const PointKdTree& tree_index, const std::vector<std::uint32_t>& tree_points,
-                       const Bridge& shortest) {
-  return axis_bridge(ps, piece, tree_index, tree_points, shortest).value_or(shortest);
-}
-
 std::optional<Bridge> axis_bridge(const PointSet& ps, const std::vector<std::uint32_t>& piece,
                                   const PointKdTree& tree_index,
                                   const std::vector<std::uint32_t>& tree_points,
