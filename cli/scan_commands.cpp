@@ -38,6 +38,7 @@ struct EncodeCommand {
   bool keep_ground = false;
   bool pirk_split = false;
   std::optional<double> main_branch_share;
+  std::optional<double> main_branch_reach;
   std::uint64_t seed = 1;
   bool json = false;
 };
@@ -130,6 +131,7 @@ void run_encode(const EncodeCommand& o) {
   options.keep_ground = o.keep_ground;
   options.follow_main_axes = !o.pirk_split;
   if (o.main_branch_share) options.main_branch_share = *o.main_branch_share;
+  if (o.main_branch_reach) options.main_branch_reach = *o.main_branch_reach;
   const scans::PointSet points = load_input(o);
   const auto t0 = std::chrono::steady_clock::now();
   const scans::EncodeResult r = [&] {
@@ -223,6 +225,10 @@ void add_encode_command(CLI::App& app) {
   e->add_option("--main-branch-share", o->main_branch_share,
                 "Share of the skeleton's length a limb must carry to stay in the main skeleton "
                 "without passing eq. 3.2 (default 0.05)")
+      ->check(number_in(0, 1));
+  e->add_option("--main-branch-reach", o->main_branch_reach,
+                "Share of the skeleton's longest path a limb must reach beyond its fork to stay "
+                "in the main skeleton without passing eq. 3.2 (default 0.1; 0: off)")
       ->check(number_in(0, 1));
   e->add_option("--seed", o->seed, "Seed of the simulated scan of a tree model")
       ->check(number_in(0, kMaxSeed));

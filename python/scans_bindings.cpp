@@ -35,7 +35,7 @@ py::array_t<std::uint32_t> triangle_rows(const std::vector<std::array<std::uint3
 scans::EncodeResult encode(const PointArray& points, const std::string& species,
                            std::optional<double> beta, std::optional<double> gamma,
                            std::optional<double> f_s, std::optional<double> root_diameter,
-                           int neighbours, double voxel) {
+                           int neighbours, double voxel, bool pirk_split) {
   scans::EncodeOptions o;
   o.species = scans::species_by_name(species);
   if (beta) o.species.beta = *beta;
@@ -44,6 +44,7 @@ scans::EncodeResult encode(const PointArray& points, const std::string& species,
   o.root_diameter_m = root_diameter;
   o.neighbours = neighbours;
   o.voxel_m = voxel;
+  o.follow_main_axes = !pirk_split;
   scans::PointSet set;
   const auto span = as_points(points, "points");
   set.points.assign(span.begin(), span.end());
@@ -109,16 +110,21 @@ void bind_point_encoding(py::module_& m) {
       "encode_points",
       [](const PointArray& points, const std::string& species, std::optional<double> beta,
          std::optional<double> gamma, std::optional<double> f_s,
-         std::optional<double> root_diameter, int neighbours, double voxel) {
-        return encode(points, species, beta, gamma, f_s, root_diameter, neighbours, voxel).model;
+         std::optional<double> root_diameter, int neighbours, double voxel, bool pirk_split) {
+        return encode(points, species, beta, gamma, f_s, root_diameter, neighbours, voxel,
+                      pirk_split)
+            .model;
       },
       py::arg("points"), py::arg("species") = "default", py::arg("beta") = py::none(),
       py::arg("gamma") = py::none(), py::arg("f_s") = py::none(),
       py::arg("root_diameter") = py::none(), py::arg("neighbours") = 8, py::arg("voxel") = 0.0,
+      py::arg("pirk_split") = false,
       "Encode a scanned tree ((N, 3) points in m, z up) into a ClusterModel (Pirk 3.3): "
       "species names a preset of Table 3.1 ('default', 'pine', ...) whose beta, gamma, f_s any "
       "keyword overrides; root_diameter (m) is estimated from the trunk points when None; "
-      "voxel: thinning size in m (0: 1/1000 of the extent, negative: none)");
+      "voxel: thinning size in m (0: 1/1000 of the extent, negative: none); pirk_split=True "
+      "keeps the main skeleton by eq. 3.2 alone, as Pirk and fspm encode --pirk-split (default: "
+      "the trunk to the top and the limbs to their tips, eq. 3.2 for the smaller branches)");
 }
 
 void bind_cluster_files(py::module_& m) {

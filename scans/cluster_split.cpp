@@ -5,6 +5,7 @@
 
 #include "fspm/error.hpp"
 #include "scans/allometry.hpp"
+#include "scans/tip_pruning.hpp"
 
 namespace fspm::scans {
 
@@ -48,26 +49,65 @@ std::vector<std::uint8_t> continues_axis(const TreeGraph& t, const std::vector<d
   return out;
 }
 
+// l(u) of eq. 3.1 without the short side tips: the spurs that split rings of points, leaf tufts
+// and noise leave on the skeleton add a length that depends on the scan, not on the tree, and
+// would lower every branch's share of l(root).
+std::vector<double> branch_lengths_m(const TreeGraph& t, double spur_length_m) {
+  const std::vector<std::uint8_t> spur = short_tip_nodes(t, spur_length_m);
+  std::vector<double> l(t.size(), 0.0);
+  for (NodeId u = static_cast<NodeId>(t.size()); u-- > 0;) {
+    if (spur[u] == 0) l[u] += t.length(u);
+    if (t.parent(u) != kNoNode) l[t.parent(u)] += l[u];
+  }
+  return l;
+}
+
+// The longest path from the start of each node's segment down to a tip of its subtree.
+std::vector<double> reach_lengths_m(const TreeGraph& t) {
+  std::vector<double> reach(t.size(), 0.0);
+  for (NodeId u = static_cast<NodeId>(t.size()); u-- > 0;) {
+    reach[u] += t.length(u);
+    const NodeId p = t.parent(u);
+    if (p != kNoNode) reach[p] = std::max(reach[p], reach[u]);
+  }
+  return reach;
+}
+
+// The nodes kept whatever eq. 3.2 says (none for Pirk's rule): those continuing their parent's
+// axis, and the first nodes of limbs carrying main_branch_share of the skeleton's length or
+// reaching main_branch_reach of its longest path.
+std::vector<std::uint8_t> main_axis_nodes(const TreeGraph& t, const SplitOptions& o) {
+  std::vector<std::uint8_t> out(t.size(), 0);
+  if (!o.follow_main_axes || t.empty()) return out;
+  const std::vector<double> l =
+      o.spur_length_m > 0.0 ? branch_lengths_m(t, o.spur_length_m) : subtree_lengths_m(t);
+  const std::vector<std::uint8_t> axis = continues_axis(t, l);
+  const std::vector<double> reach = reach_lengths_m(t);
+  for (NodeId u = 0; u < t.size(); ++u) {
+    const bool limb = l[u] >= o.main_branch_share * l[0] ||
+                      (o.main_branch_reach > 0.0 && reach[u] >= o.main_branch_reach * reach[0]);
+    out[u] = axis[u] != 0 || limb ? 1 : 0;
+  }
+  return out;
+}
+
 }  // namespace
 
 ClusterSplit split_clusters(const PointSet& ps, const PointSkeleton& s, const SplitOptions& o) {
   if (!(o.f_s > 0.0)) throw ValueError("f_s must be positive");
   if (!(o.main_branch_share >= 0.0)) throw ValueError("the main branch share must not be negative");
+  if (!(o.main_branch_reach >= 0.0)) throw ValueError("the main branch reach must not be negative");
   const TreeGraph& t = s.tree;
-  const std::vector<double> l = subtree_lengths_m(t);
-  const std::vector<std::uint8_t> axis = continues_axis(t, l);
-  const auto on_main_axis = [&](NodeId u) {
-    return o.follow_main_axes && (axis[u] != 0 || l[u] >= o.main_branch_share * l[0]);
-  };
+  const std::vector<std::uint8_t> main_axis = main_axis_nodes(t, o);
   ClusterSplit out;
   out.main_of.assign(t.size(), kNoNode);
-  std::vector<std::uint32_t> cluster_of(t.size(), UINT32_MAX);
-  std::vector<std::uint32_t> cluster_at_main(t.size(), UINT32_MAX);  // by full id of p_i
+  std::vector<std::uint32_t> cluster_of(t.size(), UINT32_MAX), cluster_at_main;
+  cluster_at_main.assign(t.size(), UINT32_MAX);  // by full id of p_i
   for (NodeId u = 0; u < t.size(); ++u) {
     const NodeId p = t.parent(u);
     const double diameter = 2.0 * t.radius(u);
     const bool confident = mean_point_distance_m(ps, s, u) <= o.f_s * diameter;  // eq. 3.2
-    if (p == kNoNode || (out.main_of[p] != kNoNode && (confident || on_main_axis(u)))) {
+    if (p == kNoNode || (out.main_of[p] != kNoNode && (confident || main_axis[u] != 0))) {
       NodeData d = t.data(u);
       out.main_of[u] = out.main_skeleton.add_node(p == kNoNode ? kNoNode : out.main_of[p], d);
     } else if (out.main_of[p] != kNoNode) {

@@ -10,10 +10,13 @@
 // a limb carrying a tenth of the skeleton's length a diameter of 1-6 % of the trunk's, far below
 // the scatter of a crown bin's points (leaves, twigs, airborne sampling). With main axes followed
 // (the default), a node also stays in the main skeleton when it continues its parent's axis
-// (of the children with at least half the largest sibling's subtree, the straightest) or when
-// its subtree carries at least
-// `main_branch_share` of the skeleton's length: the trunk runs to the top and the main limbs to
-// their tips, and eq. 3.2 decides only for the smaller side branches, which become clusters.
+// (of the children with at least half the largest sibling's subtree, the straightest), when its
+// subtree carries at least `main_branch_share` of the skeleton's length, or when it reaches at
+// least `main_branch_reach` of the skeleton's longest path beyond its fork: the trunk runs to the
+// top and every limb the scan resolves to its tip, and eq. 3.2 decides only for the short side
+// tips, which become clusters. A share of the whole length falls with the number of limbs, and
+// where limbs touch the shortest paths reach one through a short side chain of its neighbour;
+// the reach does not depend on either.
 #include <cstdint>
 #include <vector>
 
@@ -42,6 +45,12 @@ struct SplitOptions {
   double f_s = 0.98;                // eq. 3.2
   bool follow_main_axes = true;     // false: eq. 3.2 alone (Pirk)
   double main_branch_share = 0.05;  // of l(root), eq. 3.1's subtree length
+  // A side branch reaching this share of the skeleton's longest path from the root (its longest
+  // path from its fork to a tip) is a main limb too, however many limbs share the crown; 0: off.
+  double main_branch_reach = 0.1;
+  // Side tips shorter than this (scans/tip_pruning.hpp: split rings, leaf tufts, noise) are left
+  // out of the lengths the main axes are chosen by; 0 counts every node.
+  double spur_length_m = 0.0;
 };
 
 // Needs the radii of eq. 3.1 set on skeleton.tree; f_s > 0.

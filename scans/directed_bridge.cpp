@@ -36,11 +36,16 @@ PieceAxis piece_axis(const PointSet& ps, const std::vector<std::uint32_t>& piece
 
 }  // namespace
 
-Bridge directed_bridge(const PointSet& ps, const std::vector<std::uint32_t>& piece,
-                       const PointKdTree& tree_index, const std::vector<std::uint32_t>& tree_points,
-                       const Bridge& shortest) {
+bool piece_is_elongated(const PointSet& ps, const std::vector<std::uint32_t>& piece) {
+  return piece_axis(ps, piece).elongated;
+}
+
+std::optional<Bridge> axis_bridge(const PointSet& ps, const std::vector<std::uint32_t>& piece,
+                                  const PointKdTree& tree_index,
+                                  const std::vector<std::uint32_t>& tree_points,
+                                  const Bridge& shortest) {
   const PieceAxis a = piece_axis(ps, piece);
-  if (!a.elongated) return shortest;
+  if (!a.elongated) return std::nullopt;
   const double cos_cone = std::cos(kBridgeConeDeg * std::numbers::pi / 180.0);
   // The piece's two ends along its axis, each looking outwards.
   auto [lo, hi] = std::minmax_element(piece.begin(), piece.end(), [&](auto i, auto j) {
@@ -50,7 +55,7 @@ Bridge directed_bridge(const PointSet& ps, const std::vector<std::uint32_t>& pie
   const double shortest_m = (ps.points[shortest.from] - ps.points[shortest.to]).norm();
   const double radius_m =
       std::max(kMaxDetour * shortest_m, (ps.points[*hi] - ps.points[*lo]).dot(a.axis));
-  Bridge best = shortest;
+  std::optional<Bridge> best;
   double best_m = std::numeric_limits<double>::infinity();
   std::vector<std::pair<std::uint32_t, double>> hits;
   for (const auto& [end, outwards] : {std::pair{*lo, Eigen::Vector3d(-a.axis)}, {*hi, a.axis}}) {
@@ -62,7 +67,7 @@ Bridge directed_bridge(const PointSet& ps, const std::vector<std::uint32_t>& pie
       const Eigen::Vector3d d = ps.points[tree_points[h.first]] - p;
       const double len = d.norm();
       if (len > 0.0 && d.dot(outwards) >= cos_cone * len && len < best_m) {
-        best_m = len, best = {end, tree_points[h.first]};
+        best_m = len, best = Bridge{end, tree_points[h.first]};
       }
     }
   }

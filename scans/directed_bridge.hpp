@@ -3,12 +3,11 @@
 // another (an occlusion gap), the neighbour graph leaves the branch's far part as a piece of its
 // own, and the shortest edge to the rest of the tree may cross sideways to a neighbouring limb.
 // An elongated piece (a branch segment) is instead joined along its own axis: from one of its ends,
-// to the nearest point of the tree within a cone about the axis, at most kMaxDetour times the
+// to the nearest point of another part within a cone about the axis, at most kMaxDetour times the
 // shortest edge or the piece's own length away. Round or small pieces (a leaf, a tuft of noise)
-// and pieces with no point in the cone keep the shortest edge, so that every piece is joined:
-// leaving a piece out leaves its points without a path from the root, and the skeleton without
-// a parent for their node.
+// have no axis; which bridge joins each piece is chosen in scans/piece_bridges.hpp.
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -19,7 +18,7 @@ namespace fspm::scans {
 
 struct Bridge {
   std::uint32_t from = 0;  // in the piece
-  std::uint32_t to = 0;    // in the tree (the root's piece)
+  std::uint32_t to = 0;    // in the part it is joined to
 };
 
 inline constexpr double kBridgeConeDeg = 30.0;  // half-angle of the cone about the piece's axis
@@ -27,10 +26,16 @@ inline constexpr std::size_t kMinAxisPoints = 10;
 inline constexpr double kMinElongation = 3.0;  // of the first to the second principal extent
 inline constexpr double kMaxDetour = 3.0;      // of the shortest edge's length
 
-// The bridge for one piece (`piece`: its point indices) whose shortest edge to the tree is
-// `shortest`. `tree_index` searches the tree's points (`tree_points`, indices into points.points).
-Bridge directed_bridge(const PointSet& points, const std::vector<std::uint32_t>& piece,
-                       const PointKdTree& tree_index, const std::vector<std::uint32_t>& tree_points,
-                       const Bridge& shortest);
+// Whether the piece has an axis: at least kMinAxisPoints points, kMinElongation times longer than
+// wide.
+bool piece_is_elongated(const PointSet& points, const std::vector<std::uint32_t>& piece);
+
+// The bridge along the piece's axis: from one of its ends to the nearest point of the target
+// (`tree_index` over `tree_points`) inside the cone about the axis, at most kMaxDetour times the
+// shortest edge or the piece's length away; none when the piece has no axis or the cone is empty.
+std::optional<Bridge> axis_bridge(const PointSet& points, const std::vector<std::uint32_t>& piece,
+                                  const PointKdTree& tree_index,
+                                  const std::vector<std::uint32_t>& tree_points,
+                                  const Bridge& shortest);
 
 }  // namespace fspm::scans

@@ -17,6 +17,10 @@
 namespace fspm::scans {
 namespace {
 
+// Side tips shorter than this many bins are spurs of the binning, not branches
+// (scans/tip_pruning.hpp).
+constexpr double kSpurBins = 4.0;
+
 void check_options(const EncodeOptions& o) {
   const SpeciesParameters& s = o.species;
   if (!(s.beta > 0.0) || !(s.gamma >= 0.0) || !(s.f_s > 0.0)) {
@@ -116,8 +120,12 @@ EncodeResult encode_point_set(const PointSet& absolute, const EncodeOptions& o) 
         "through them); give the root diameter (--root-diameter)");
   }
   set_allometric_radii(skeleton.tree, d_root, o.species.gamma);
-  ClusterSplit split =
-      split_clusters(ps, skeleton, {o.species.f_s, o.follow_main_axes, o.main_branch_share});
+  ClusterSplit split = split_clusters(ps, skeleton,
+                                      {.f_s = o.species.f_s,
+                                       .follow_main_axes = o.follow_main_axes,
+                                       .main_branch_share = o.main_branch_share,
+                                       .main_branch_reach = o.main_branch_reach,
+                                       .spur_length_m = kSpurBins * bin});
   EncodeResult r;
   r.points = input.points.size();
   r.thinned_points = ps.points.size() + ground;
@@ -135,7 +143,7 @@ EncodeResult encode_point_set(const PointSet& absolute, const EncodeOptions& o) 
   r.model.root_diameter_m = d_root;
   r.model.clusters = hulls(thin, split.clusters, o.hull);
   r.model.skeleton = std::move(split.main_skeleton);
-  r.branch_skeleton = without_short_tips(skeleton.tree, 4.0 * bin);
+  r.branch_skeleton = without_short_tips(skeleton.tree, kSpurBins * bin);
   r.full_skeleton = std::move(skeleton.tree);
   r.origin = origin;
   translate_tree(r.model.skeleton, origin);

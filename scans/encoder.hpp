@@ -27,10 +27,12 @@ struct EncodeOptions {
   // after thinning unless this is set; the root is the base of the trunk's column either way.
   bool keep_ground = false;
   // The main skeleton follows the trunk to the top and the limbs carrying main_branch_share of the
-  // skeleton's length to their tips, eq. 3.2 deciding for the rest (scans/cluster_split.hpp);
-  // false: eq. 3.2 alone, as Pirk.
+  // skeleton's length or reaching main_branch_reach of its longest path (0.1: four of the default
+  // forty bins, the spur length of the branch skeleton) to their tips, eq. 3.2 deciding for the
+  // rest (scans/cluster_split.hpp); false: eq. 3.2 alone, as Pirk.
   bool follow_main_axes = true;
   double main_branch_share = 0.05;
+  double main_branch_reach = 0.1;
 };
 
 // An occlusion gap the neighbour graph bridged (scans/neighbour_graph.hpp): a bridge longer than

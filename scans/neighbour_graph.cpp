@@ -6,21 +6,12 @@
 #include <numeric>
 
 #include "fspm/error.hpp"
-#include "scans/directed_bridge.hpp"
+#include "scans/disjoint_sets.hpp"
+#include "scans/piece_bridges.hpp"
 #include "scans/point_kd_tree.hpp"
 
 namespace fspm::scans {
 namespace {
-
-struct DisjointSets {
-  std::vector<std::uint32_t> parent;
-  explicit DisjointSets(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  }
-  void join(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
-};
 
 // k nearest neighbours of every point (itself excluded), row-major n x k.
 std::vector<std::uint32_t> nearest_neighbours(const PointSet& ps, const PointKdTree& tree, int k) {
@@ -40,11 +31,12 @@ std::vector<std::uint32_t> nearest_neighbours(const PointSet& ps, const PointKdT
   return knn;
 }
 
-// Shortest edges joining every other piece to the piece of `root`: for each piece, the point
-// whose nearest root-piece point is nearest. A piece's points are first searched among their
-// 16 nearest neighbours in `all`; only pieces with no hit there search a tree of the root piece.
-// A piece whose shortest edge is longer than `gap_m` (an occlusion gap) is joined along its own
-// axis instead, when it has one (scans/directed_bridge.hpp).
+// Bridges joining every other piece to the piece of `root`. Each piece's shortest edge to the
+// root piece: the point whose nearest root-piece point is nearest, searched first among the
+// points' 16 nearest neighbours in `all`; only pieces with no hit there search a tree of the root
+// piece. When every such edge is within `gap_m`, those edges join the pieces; when one is longer
+// (an occlusion gap), the pieces are joined to each other and to the root piece by their
+// shortest admissible bridges (scans/piece_bridges.hpp).
 std::vector<Bridge> bridges(const PointSet& ps, const PointKdTree& all, DisjointSets& sets,
                             std::uint32_t root, double gap_m) {
   const std::uint32_t root_set = sets.find(root);
@@ -92,17 +84,19 @@ std::vector<Bridge> bridges(const PointSet& ps, const PointKdTree& all, Disjoint
     Best& b = best[sets.find(i)];
     if (dist < b.first) b = {dist, {i, main[j]}};
   }
-  std::vector<std::vector<std::uint32_t>> pieces(ps.points.size());
+  std::vector<std::vector<std::uint32_t>> pieces;
+  std::vector<Bridge> to_root;
+  std::vector<std::uint32_t> slot(ps.points.size(), std::numeric_limits<std::uint32_t>::max());
   for (std::uint32_t i : other) {
-    if (best[sets.find(i)].first > gap_m * gap_m) pieces[sets.find(i)].push_back(i);
+    const std::uint32_t s = sets.find(i);
+    if (slot[s] == std::numeric_limits<std::uint32_t>::max()) {
+      slot[s] = static_cast<std::uint32_t>(pieces.size());
+      pieces.emplace_back();
+      to_root.push_back(best[s].second);
+    }
+    pieces[slot[s]].push_back(i);
   }
-  std::vector<Bridge> out;
-  for (std::size_t s = 0; s < best.size(); ++s) {
-    if (!std::isfinite(best[s].first)) continue;
-    out.push_back(pieces[s].empty() ? best[s].second
-                                    : directed_bridge(ps, pieces[s], tree, main, best[s].second));
-  }
-  return out;
+  return join_pieces(ps, pieces, tree, main, to_root, gap_m);
 }
 
 // The gap length: kGapSpacings times the median distance from a point to its k-th neighbour (the

@@ -2,9 +2,10 @@
 // The neighbour graph of a point set (Pirk sec. 3.3.1, after Livny et al. 2010): every point is
 // joined to its k nearest neighbours, and each edge (u, v) weighs |u - v|^beta. Pieces the scan
 // left disconnected (occlusion gaps) are bridged to the piece holding the lowest point by the
-// shortest edge between them, so the shortest-path tree reaches every point; a piece beyond a gap
-// longer than a few point spacings is joined along its own axis when it has one
-// (scans/directed_bridge.hpp).
+// shortest edge between them, so the shortest-path tree reaches every point. Where a gap is longer
+// than a few point spacings, the pieces are joined to each other first, as a minimum spanning
+// tree over pieces whose bridges run along a piece's own axis when it has one
+// (scans/piece_bridges.hpp).
 #include <cstdint>
 #include <utility>
 #include <vector>

@@ -5,9 +5,15 @@
 // refinement). A tip chain (the nodes from a tip back to the first fork) shorter than
 // min_length_m is removed, once, so branches behind a removed tip stay; a chain that continues
 // its parent's axis (the trunk's or a branch's top) is kept whatever its length.
+#include <cstdint>
+#include <vector>
+
 #include "fspm/tree_graph.hpp"
 
 namespace fspm::scans {
+
+// 1 for the nodes of the short side tips, 0 for the rest (the nodes without_short_tips keeps).
+std::vector<std::uint8_t> short_tip_nodes(const TreeGraph& tree, double min_length_m);
 
 TreeGraph without_short_tips(const TreeGraph& tree, double min_length_m);
 

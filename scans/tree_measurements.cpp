@@ -7,6 +7,7 @@
 
 #include "fspm/error.hpp"
 #include "scans/allometry.hpp"
+#include "scans/crown_base.hpp"
 #include "scans/point_origin.hpp"
 
 namespace fspm::scans {
@@ -58,14 +59,12 @@ void measure_stem(const PointSet& ps, const std::vector<char>& on_trunk, double 
   m.dbh_m = 2.0 * s.circle->radius_m;
 }
 
-void measure_crown(const PointSet& ps, const TreeGraph& t, double z0, const MeasureOptions& o,
+void measure_crown(const PointSet& ps, const TreeGraph& t, double z0,
+                   const std::vector<std::uint32_t>& cylinder_of_point, const MeasureOptions& o,
                    TreeMeasurements& m) {
-  const std::vector<double> l = subtree_lengths_m(t);
-  for (NodeId u = 0; u < t.size() && !m.crown_base_m; ++u) {
-    if (t.order(u) != 0) continue;
-    for (NodeId c : t.children(u)) {
-      if (t.order(c) > 0 && l[c] >= o.min_branch_length_m) m.crown_base_m = t.end(u).z() - z0;
-    }
+  if (const std::optional<double> z =
+          crown_base_z(ps, t, cylinder_of_point, m.cylinders, o.min_branch_length_m)) {
+    m.crown_base_m = *z - z0;
   }
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(INFINITY), hi = -lo;
   const double from = z0 + m.crown_base_m.value_or(0.0);
@@ -75,15 +74,10 @@ void measure_crown(const PointSet& ps, const TreeGraph& t, double z0, const Meas
   m.crown_width_m = lo.allFinite() ? 0.5 * ((hi - lo).x() + (hi - lo).y()) : 0.0;
 }
 
-// The cylinders and their numbers; returns which points belong to the trunk (their nearest
-// segment has order 0).
-std::vector<char> measure_cylinders(const PointSet& ps, const TreeGraph& t, const MeasureOptions& o,
-                                    TreeMeasurements& m) {
+// The cylinders and their numbers; returns the cylinder (skeleton node) of every point.
+std::vector<std::uint32_t> measure_cylinders(const PointSet& ps, const TreeGraph& t,
+                                             const MeasureOptions& o, TreeMeasurements& m) {
   QsmCylinders q = fit_qsm_cylinders(ps, t);
-  std::vector<char> on_trunk(ps.points.size());
-  for (std::size_t i = 0; i < ps.points.size(); ++i) {
-    on_trunk[i] = q.cylinders[q.cylinder_of_point[i]].order == 0;
-  }
   m.woody_volume_m3 = cylinders_volume_m3(q.cylinders);
   std::size_t explained = 0;
   for (double d : q.surface_distance_m) explained += d <= o.explained_tolerance_m;
@@ -99,7 +93,7 @@ std::vector<char> measure_cylinders(const PointSet& ps, const TreeGraph& t, cons
     m.branch_length_per_order_m[order] += t.length(u);
   }
   m.cylinders = std::move(q.cylinders);
-  return on_trunk;
+  return std::move(q.cylinder_of_point);
 }
 
 }  // namespace
@@ -116,9 +110,13 @@ TreeMeasurements measure_tree(const PointSet& absolute, const TreeGraph& skeleto
   for (const Eigen::Vector3d& p : ps.points) z0 = std::min(z0, p.z()), z1 = std::max(z1, p.z());
   TreeMeasurements m;
   m.height_m = z1 - z0;
-  const std::vector<char> on_trunk = measure_cylinders(ps, t, o, m);
+  const std::vector<std::uint32_t> cylinder_of_point = measure_cylinders(ps, t, o, m);
+  std::vector<char> on_trunk(ps.points.size());  // the point's nearest segment has order 0
+  for (std::size_t i = 0; i < ps.points.size(); ++i) {
+    on_trunk[i] = m.cylinders[cylinder_of_point[i]].order == 0;
+  }
   measure_stem(ps, on_trunk, z0, o, m);
-  measure_crown(ps, t, z0, o, m);
+  measure_crown(ps, t, z0, cylinder_of_point, o, m);
   for (QsmCylinder& c : m.cylinders) c.start += origin;
   if (m.dbh_m && *m.dbh_m > o.max_dbh_per_height * m.height_m) {
     m.warnings.push_back(fmt::format(

@@ -4,8 +4,9 @@
 // - dbh_m: diameter of the circle fitted to the trunk points at breast height
 //   (scans/breast_height.hpp), unset when the slice has too few of them or no compact stem;
 // - height_m: highest minus lowest point;
-// - crown_base_m: height above the lowest point of the lowest fork on the trunk whose branch
-//   carries at least min_branch_length_m of skeleton;
+// - crown_base_m: height above the lowest point of the base of the lowest branch on the trunk
+//   that carries at least min_branch_length_m of skeleton (the lowest live branch's base:
+//   the crown base in the silvicultural sense; scans/crown_base.hpp);
 // - crown_width_m: the mean of the x and y extents of the points above the crown base (all
 //   points when no crown base is found);
 // - woody_volume_m3, branches_per_order, branch_length_per_order_m: from cylinders fitted along

@@ -79,8 +79,8 @@ CLAIMS = [
      lambda out, _: tuple(int(x) for x in
                           re.search(r"(\d+) points from (\d+) scanner", out).groups()),
      (73843, 4)),
-    (r"encode scan\.ply .*-o tree\.clusters", "71 leaf clusters",
-     _int_after(r"(\d+) clusters"), 71),
+    (r"encode scan\.ply .*-o tree\.clusters", "138 leaf clusters",
+     _int_after(r"(\d+) clusters"), 138),
     (r"stats ttest examples/stats/plant_growth_ctrl\.csv", "t = -2.134, df = 16.79, p = 0.0479",
      lambda out, _: tuple(round(_json(out)[k], n) for k, n in (("t", 3), ("df", 2), ("p", 4))),
      (-2.134, 16.79, 0.0479)),

@@ -173,3 +173,19 @@ def test_las_files_are_read(tmp_path):
     path.write_bytes(bytes(header) + records)
     assert fspm.read_points(str(path)) == pytest.approx(
         np.array([[1000.01, 2000.02, 30.03], [999.0, 2000.0, 32.5]]))
+
+
+def test_pirk_split_keeps_a_shorter_main_skeleton():
+    # Eq. 3.2 alone (fspm encode --pirk-split) stops on the trunk of a grown tree, where the
+    # default follows the limbs: fewer main nodes, and more of the points in clusters.
+    tree = fspm.read_tree(str(ROOT / "examples" / "trees" / "open_a12.treeb"))
+    points = fspm.simulate_scan(tree, seed=1)
+    default = fspm.encode_points(points)
+    pirk = fspm.encode_points(points, pirk_split=True)
+    assert len(pirk.skeleton) * 3 < len(default.skeleton)
+
+    def clustered(model):
+        return sum(c["point_count"] for c in model.clusters)
+
+    assert clustered(pirk) > clustered(default)
+    assert pirk.root_diameter == pytest.approx(default.root_diameter)

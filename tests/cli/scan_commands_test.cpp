@@ -296,6 +296,24 @@ TEST(ScanCli, DefaultSkeletonOfARealCloudReachesTheTopAndSpansTheCrown) {
   }
 }
 
+// The reach rule (--main-branch-reach, default 0.1) keeps limbs the share rule alone leaves in
+// clusters: more main nodes, fewer points in clusters; values outside [0, 1] are refused.
+TEST(ScanCli, MainBranchReachKeepsMoreLimbs) {
+  const auto dir = scratch_dir("ahn4_reach");
+  const std::string las =
+      std::string(FSPM_SOURCE_DIR) + "/examples/scans/ahn4_tree_121913_487434.las";
+  const std::string with = (dir / "with.tree").string(), without = (dir / "without.tree").string();
+  auto r =
+      run_fspm("encode " + las + " -o " + (dir / "a.clusters").string() + " --skeleton " + with);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_fspm("encode " + las + " -o " + (dir / "b.clusters").string() +
+               " --main-branch-reach 0 --skeleton " + without);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(read_tree_file(with).size(), read_tree_file(without).size() * 3 / 2);
+  r = run_fspm("encode " + las + " -o " + (dir / "c.clusters").string() + " --main-branch-reach 2");
+  EXPECT_EQ(r.exit_code, 1);
+}
+
 // Points on the cylinder of radius r around a -> b every step_m, without the stretch between the
 // shares gap_from and gap_to of its length, moved by `offset`, written to `out` in full precision.
 void write_cylinder(std::ofstream& out, const Eigen::Vector3d& a, const Eigen::Vector3d& b,

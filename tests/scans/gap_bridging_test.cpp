@@ -79,5 +79,31 @@ TEST(GapBridging, ARoundPieceKeepsItsShortestEdge) {
   EXPECT_NEAR(r.gaps[0].length_m, 0.46, 0.03);
 }
 
+// A crown floating above a bare stump (its lower part hidden): a 1 m stump, a gap of 0.5 m, a
+// stem piece from 1.5 to 3 m, a gap of 0.5 m, and a leaning limb piece from 3.4 m whose axis
+// points back at the stem piece's top, not at the stump. Joined each to the stump, the limb's
+// piece would take a 2.4 m bridge across the open crown (its shortest edge, as no stump point
+// lies in its cone); joined to the nearer piece first, both gaps are half a metre.
+TEST(GapBridging, PiecesOfAFloatingCrownJoinEachOtherBeforeTheStump) {
+  PointSet ps;
+  add_cylinder(ps, {0, 0, 0}, {0, 0, 1}, 0.1, 0.02);     // stump
+  add_cylinder(ps, {0, 0, 1.5}, {0, 0, 3}, 0.08, 0.02);  // stem piece
+  const Eigen::Vector3d limb0(0.3, 0, 3.4), limb1(1.5, 0, 4.6);
+  add_cylinder(ps, limb0, limb1, 0.05, 0.02);
+  EncodeOptions o;
+  o.root_diameter_m = 0.2;
+  const EncodeResult r = encode_point_set(ps, o);
+  ASSERT_EQ(r.gaps.size(), 2u);
+  for (const BridgedGap& g : r.gaps) EXPECT_LT(g.length_m, 0.6);
+  // One gap joins the stump's top to the stem piece's foot, the other the stem piece's top to
+  // the limb's foot.
+  const auto joins = [](const BridgedGap& g, double z_a, double z_b) {
+    const double lo = std::min(g.from.z(), g.to.z()), hi = std::max(g.from.z(), g.to.z());
+    return std::abs(lo - z_a) < 0.1 && std::abs(hi - z_b) < 0.1;
+  };
+  EXPECT_TRUE(joins(r.gaps[0], 1.0, 1.5) || joins(r.gaps[1], 1.0, 1.5));
+  EXPECT_TRUE(joins(r.gaps[0], 3.0, 3.4) || joins(r.gaps[1], 3.0, 3.4));
+}
+
 }  // namespace
 }  // namespace fspm::scans

@@ -81,7 +81,7 @@ TEST(TreeMeasurements, SyntheticTreesWithinTheirKnownGeometry) {
       EXPECT_NEAR(m.height_m, truth.height_m, 0.02 * truth.height_m);
       EXPECT_NEAR(m.woody_volume_m3, truth.volume_m3, 0.15 * truth.volume_m3);
       ASSERT_TRUE(m.crown_base_m);
-      EXPECT_NEAR(*m.crown_base_m, truth.crown_base_m, 0.15);
+      EXPECT_NEAR(*m.crown_base_m, truth.crown_base_m, 0.05);
       EXPECT_GT(m.points_explained_fraction, 0.8);
       ASSERT_GE(m.branches_per_order.size(), 2u);
       EXPECT_EQ(m.branches_per_order[0], 1u);
