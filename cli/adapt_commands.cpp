@@ -51,8 +51,8 @@ struct AdaptOptions {
   bool together = false;
   bool temporal = false;
   bool absolute_pruning = false;
-  environment::ClusterLightModel light_model = environment::ClusterLightModel::kCanopy;
-  std::string canopy_model = environment::kAdaptationLeafLightModel;
+  environment::ClusterLightModel light_model = environment::AnalysisParams{}.light_model;
+  std::string canopy_model = environment::AnalysisParams{}.canopy_model;
   bool json = false;
 };
 

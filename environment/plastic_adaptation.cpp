@@ -27,6 +27,19 @@ constexpr double kDriftParallax = 0.15;
 constexpr double kLightChange = 0.05;
 // Refreshes with at least 1/kBatchShare of the clusters due use one LightModel for all.
 constexpr std::size_t kBatchShare = 8;
+// Pirk 5.3.2, after Shinozaki's pipe model: a branch stops bending once it carries this many
+// terminal edges of the skeleton; it is then "solid". Below, a segment's eq. 4.6 turn is scaled by
+// its bendability (solid_edges - tips) / (solid_edges - 1): 1 for a skeleton tip, 0 when solid.
+// Without it an old, thick segment turns like a young shoot and swings the whole crown it
+// carries, which the growth model, where an internode never turns once grown, does not do
+// (docs/environment.md).
+constexpr std::uint32_t kSolidTerminalEdges = 5;
+
+double bendability(std::uint32_t skeleton_tips) {
+  if (skeleton_tips >= kSolidTerminalEdges) return 0.0;
+  return static_cast<double>(kSolidTerminalEdges - skeleton_tips) /
+         static_cast<double>(kSolidTerminalEdges - 1);
+}
 
 bool is_internode(const TreeGraph& t, NodeId n) { return t.kind(n) == OrganKind::kInternode; }
 
@@ -69,8 +82,9 @@ struct TreeRun {
   std::vector<std::uint32_t> pre, pre_pos, pre_size;        // skeleton pre-order
   std::vector<std::uint32_t> cluster_start, cluster_items;  // clusters anchored per node (CSR)
   std::vector<std::uint8_t> lateral, pruned;
-  std::vector<Rigid> F;    // accumulated transform
-  std::vector<int> stamp;  // step at which S was set
+  std::vector<std::uint32_t> skeleton_tips;  // skeleton tips in each skeleton node's subtree
+  std::vector<Rigid> F;                      // accumulated transform
+  std::vector<int> stamp;                    // step at which S was set
   std::vector<std::uint64_t> group;
   std::vector<double> zeta, length_below;
   std::vector<Eigen::Vector3d> light_sum;
@@ -88,6 +102,7 @@ class Engine {
   void setup_tree(TreeRun& r);
   void aggregate(TreeRun& r);
   void bend(TreeRun& r, int level, int step);
+  bool turn_blocked(const TreeRun& r, NodeId m, const Rigid& turn) const;
   void prune(TreeRun& r, int level);
   void prune_subtree(TreeRun& r, NodeId s);
   void prune_blocked(TreeRun& r, int step);
@@ -445,6 +460,11 @@ void Engine::setup_tree(TreeRun& r) {
     }
   }
   r.lateral = lateral_bases(t);
+  r.skeleton_tips.assign(n, 0);
+  for (auto it = r.skeleton.rbegin(); it != r.skeleton.rend(); ++it) {
+    if (r.skeleton_tips[*it] == 0) r.skeleton_tips[*it] = 1;  // no skeleton child: a tip
+    if (*it != 0) r.skeleton_tips[t.parent(*it)] += r.skeleton_tips[*it];
+  }
   r.pruned.assign(n, 0);
   r.F.assign(n, Rigid{});
   r.stamp.assign(n, -1);
@@ -506,7 +526,8 @@ void Engine::bend(TreeRun& r, int level, int step) {
   const auto hi = r.age_begin[static_cast<std::size_t>(level) + 1];
   for (std::size_t k = lo; k < hi; ++k) {
     const NodeId m = r.by_age[k];
-    if (r.pruned[m]) continue;
+    const double bendable = bendability(r.skeleton_tips[m]);
+    if (r.pruned[m] || bendable <= 0.0) continue;
     // Eq. 4.6 in the frame the segment has been carried into: the old heading (analysis
     // tropism) and the new one (light direction of its clusters now).
     const Eigen::Quaterniond& q_cur = r.F[m].q;
@@ -517,12 +538,14 @@ void Engine::bend(TreeRun& r, int level, int step) {
     const Eigen::Vector3d h_old = ws * d_o + (1.0 - ws) * (q_cur * a.tropism[m]);
     const Eigen::Vector3d h_new = ws * d_o + (1.0 - ws) * t_new;
     if (h_old.norm() <= 1e-12 || h_new.norm() <= 1e-12) continue;
-    const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(h_old, h_new);
+    const Eigen::Quaterniond q = Eigen::Quaterniond::Identity().slerp(
+        bendable, Eigen::Quaterniond::FromTwoVectors(h_old, h_new));
     // Below 1e-4 rad (2 mm at 20 m) a turn is not worth moving the subtree and re-checking the
     // light of everything it carries.
     if (q.vec().norm() < 5e-5) continue;
     const Eigen::Vector3d pivot = r.F[m](t.start(m));
     const Rigid turn{q, pivot - q * pivot};  // x -> q (x - pivot) + pivot
+    if (turn_blocked(r, m, turn)) continue;
     const std::uint64_t grp = tree_tag | (static_cast<std::uint64_t>(m) + 1);
     ++r.result.bent_segments;
     any = true;
@@ -550,6 +573,28 @@ void Engine::bend(TreeRun& r, int level, int step) {
   }
   if (grid_ || canopy_) ++epoch_;  // the whole crown's light is read again after every move
   field_.mark_moved();
+}
+
+// A branch does not bend through a solid (a solid obstacle, or the ground when the scene has one:
+// prune_blocked's rule): a turn that would carry the segment or any living segment of its subtree
+// into one is not made, as a growing shoot that meets a solid does not enter it (growth_model.cpp).
+// Only bendable segments turn, and they carry fewer than kSolidTerminalEdges skeleton tips, so the
+// subtrees checked are small.
+bool Engine::turn_blocked(const TreeRun& r, NodeId m, const Rigid& turn) const {
+  if (!has_solids_) return false;
+  const TreeGraph& t = *r.tree;
+  for (std::uint32_t j = r.pre_pos[m]; j < r.pre_pos[m] + r.pre_size[m]; ++j) {
+    const NodeId n = r.pre[j];
+    if (r.pruned[n]) continue;
+    const Rigid f = compose(turn, r.F[n]);
+    // Only a segment the turn moves into a solid counts: one already in it (grown into the wall)
+    // is pruned by prune_blocked whether it turns or not.
+    if (scene_.segment_blocked(f(t.start(n)), f(t.end(n))) &&
+        !scene_.segment_blocked(r.F[n](t.start(n)), r.F[n](t.end(n)))) {
+      return true;
+    }
+  }
+  return false;
 }
 
 // Pirk 4.4.1: after a level, every lateral branch up to that age whose resources per remaining

@@ -2,12 +2,14 @@
 // Plastic adaptation (Pirk 4.4): a tree analysed in the open (tree_analysis.hpp) is bent and pruned
 // for a new scene, age level by age level, oldest first. Per level: every skeleton segment of that
 // age is bent by the rotation that takes its eq. 4.6 heading under the analysis-time tropism to its
-// heading under the new light direction (so an unchanged environment leaves it unchanged), the
-// rotation is carried to its subtree (one pass over the younger skeleton per level), the leaf
-// clusters follow their anchor (Pirk 4.4.2), the light is updated and every lateral branch up to
-// that age whose resources per length (eq. 4.11) fall below its minimum pruning factor (eq. 4.12)
-// is pruned with its subtree. Pruned clusters lose translucency by eq. 4.14 or vanish; the leaf
-// density follows the light (eq. 4.13); clusters that end up in a solid obstacle are pushed out.
+// heading under the new light direction (so an unchanged environment leaves it unchanged), scaled
+// by its bendability: none for a branch carrying five or more skeleton tips (Pirk 5.3.2, pipe
+// model), and never into a solid; the rotation is carried to its subtree (one pass over the younger
+// skeleton per level), the leaf clusters follow their anchor (Pirk 4.4.2), the light is updated and
+// every lateral branch up to that age whose resources per length (eq. 4.11) fall below its minimum
+// pruning factor (eq. 4.12) is pruned with its subtree. Pruned clusters lose translucency by
+// eq. 4.14 or vanish; the leaf density follows the light (eq. 4.13); clusters that end up in a
+// solid obstacle are pushed out.
 //
 // Only the affected parts are recomputed (Pirk 4.6): light is evaluated per leaf cluster, starting
 // from the analysis' cache; a cluster is re-evaluated only when clusters in its shadow

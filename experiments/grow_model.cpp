@@ -188,11 +188,11 @@ class GrowModel final : public Model {
            name == "adapt_light_model";
   }
 
-  // The cluster light of set T's adaptation (Pirk 4.3.2's sky, or the shadow grid); the growth
-  // model's own light model does not choose it.
+  // The cluster light of set T's adaptation; the growth model's own light model does not choose
+  // it. Without `adapt_light_model` it is the adaptation's default, the one `fspm adapt` uses.
   static env::ClusterLightModel adapt_light_model(const ParameterSet& parameters) {
     const auto it = parameters.find("adapt_light_model");
-    if (it == parameters.end()) return env::ClusterLightModel::kSky;
+    if (it == parameters.end()) return env::AnalysisParams{}.light_model;
     return env::cluster_light_model_from_name(parameter_string(it->second, "adapt_light_model"));
   }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "environment/tree_analysis.hpp"
 #include "fspm/error.hpp"
 #include "test_files.hpp"
 
@@ -78,23 +79,25 @@ TEST(GrowModel, SetTInTheOpenIsSetO) {
               1e-9 * o.metrics.at("light_interception"));
 }
 
-// Set T's adaptation takes its cluster light from adapt_light_model: "sky" is the default, and
-// the shadow grid is another light, so the same open tree is adapted differently.
+// Set T's adaptation takes its cluster light from adapt_light_model: the adaptation's own default
+// (the one `fspm adapt` uses, AnalysisParams) without it, and the shadow grid is another light,
+// so the same open tree is adapted differently.
 TEST(GrowModel, AdaptLightModelChoosesSetTsClusterLight) {
   const Fixture f("grow_adapt_light");
   ParameterSet p{{"preset", std::string("A")}, {"years", std::int64_t{7}}};
   p["set"] = std::string("T");
   const RunResult by_default = f.model->run(p, 9, RunContext{});
-  p["adapt_light_model"] = std::string("sky");
-  const RunResult sky = f.model->run(p, 9, RunContext{});
+  p["adapt_light_model"] =
+      std::string(environment::cluster_light_model_name(environment::AnalysisParams{}.light_model));
+  const RunResult named = f.model->run(p, 9, RunContext{});
   p["adapt_light_model"] = std::string("shadow_grid");
   const RunResult grid = f.model->run(p, 9, RunContext{});
-  EXPECT_EQ(sky.metrics.at("nodes"), by_default.metrics.at("nodes"));
-  EXPECT_EQ(sky.metrics.at("tip_displacement"), by_default.metrics.at("tip_displacement"));
-  EXPECT_NE(grid.metrics.at("tip_displacement"), sky.metrics.at("tip_displacement"));
+  EXPECT_EQ(named.metrics.at("nodes"), by_default.metrics.at("nodes"));
+  EXPECT_EQ(named.metrics.at("tip_displacement"), by_default.metrics.at("tip_displacement"));
+  EXPECT_NE(grid.metrics.at("tip_displacement"), named.metrics.at("tip_displacement"));
   // Either way the adapted tree is the open one minus what was pruned.
   EXPECT_EQ(grid.metrics.at("nodes") + grid.metrics.at("pruned_nodes"),
-            sky.metrics.at("nodes") + sky.metrics.at("pruned_nodes"));
+            named.metrics.at("nodes") + named.metrics.at("pruned_nodes"));
   EXPECT_THROW(f.model->check_parameter("adapt_light_model", std::string("sunny")), ValueError);
   EXPECT_NO_THROW(f.model->check_parameter("adapt_light_model", std::string("shadow_grid")));
 }
