@@ -26,10 +26,6 @@
 namespace fspm::cli {
 namespace {
 
-constexpr environment::ClusterLightModel kClusterLightModels[] = {
-    environment::ClusterLightModel::kCanopy, environment::ClusterLightModel::kSky,
-    environment::ClusterLightModel::kShadowGrid};
-
 struct AdaptOptions {
   std::vector<std::string> trees;
   std::vector<std::string> scenes;
@@ -264,13 +260,8 @@ void add_adapt_commands(CLI::App& app) {
               "Pruning thresholds over all earlier growth stages (eq. 4.5), not the final one");
   a->add_flag("--absolute-pruning", opt->absolute_pruning,
               "Pirk's eq. 4.12 thresholds as analysed, not scaled with the crown's resources");
-  add_enum_option(
-      a, "--light-model", opt->light_model, kClusterLightModels,
-      +[](environment::ClusterLightModel m) -> std::string_view {
-        return environment::cluster_light_model_name(m);
-      },
-      "Cluster light: canopy (the leaves as turbid media, --canopy-model), sky (hemisphere "
-      "with the clusters as caps, Pirk eq. 4.3) or shadow_grid (Palubicki's voxel shade)");
+  add_enum_option(a, "--light-model", opt->light_model, environment::kClusterLightModelNames,
+                  "Cluster light");
   a->add_option(
        "--canopy-model", opt->canopy_model,
        "Leaf light model of --light-model canopy: " + environment::leaf_light_model_names())

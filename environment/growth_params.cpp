@@ -17,36 +17,19 @@
 namespace fspm::environment {
 
 std::string_view bud_light_model_name(BudLightModel model) {
-  switch (model) {
-    case BudLightModel::kSky:
-      return "sky";
-    case BudLightModel::kShadowGrid:
-      return "shadow_grid";
-    case BudLightModel::kSpaceColonization:
-      return "space_colonization";
-  }
-  return "sky";
+  return kBudLightModelNames.name(model);
 }
 
 BudLightModel bud_light_model_from_name(std::string_view name) {
-  for (BudLightModel m :
-       {BudLightModel::kSky, BudLightModel::kShadowGrid, BudLightModel::kSpaceColonization}) {
-    if (name == bud_light_model_name(m)) return m;
-  }
-  throw ValueError(
-      "light_model: expected \"sky\", \"shadow_grid\" or \"space_colonization\", got \"" +
-      std::string(name) + "\"");
+  return kBudLightModelNames.from_name(name);
 }
 
 std::string_view tropism_pairing_name(TropismPairing pairing) {
-  return pairing == TropismPairing::kText ? "text" : "appendix";
+  return kTropismPairingNames.name(pairing);
 }
 
 TropismPairing tropism_pairing_from_name(std::string_view name) {
-  if (name == "text") return TropismPairing::kText;
-  if (name == "appendix") return TropismPairing::kAppendix;
-  throw ValueError("preset_tropisms: expected \"text\" or \"appendix\", got \"" +
-                   std::string(name) + "\"");
+  return kTropismPairingNames.from_name(name);
 }
 
 namespace {
@@ -312,14 +295,11 @@ GrowthParams parse_growth_params(std::string_view text, const std::string& file_
         "a positive number or inf"}},
       {"light_model",
        {[&p](const toml::node& n) {
-          try {
-            p.light_model = bud_light_model_from_name(n.value<std::string>().value_or(""));
-            return true;
-          } catch (const ValueError&) {
-            return false;
-          }
+          const auto model = kBudLightModelNames.find(n.value<std::string>().value_or(""));
+          if (model) p.light_model = *model;
+          return model.has_value();
         },
-        "\"sky\", \"shadow_grid\" or \"space_colonization\""}},
+        kBudLightModelNames.expected()}},
       {"voxel_size_m", {real(p.shadow_grid.voxel_size_m, 1e-3, kBig), "a length >= 0.001"}},
       {"shadow_a", {real(p.shadow_grid.shade_a, 1e-12, kBig), "a positive number"}},
       {"shadow_b", {real(p.shadow_grid.shade_b, 1.000001, kBig), "a number > 1"}},

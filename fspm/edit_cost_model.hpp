@@ -11,14 +11,19 @@
 #include <string_view>
 #include <vector>
 
+#include "fspm/name_table.hpp"
 #include "fspm/tree_graph.hpp"
 
 namespace fspm {
 
 enum class EditCostKind { kTopological, kAbsolute, kStandardized };
 
-inline constexpr EditCostKind kEditCostKinds[] = {
-    EditCostKind::kTopological, EditCostKind::kAbsolute, EditCostKind::kStandardized};
+inline constexpr NameTable<EditCostKind, 3> kEditCostKindNames{
+    "cost model",
+    {{EditCostKind::kTopological, "topological", "every edit costs 1"},
+     {EditCostKind::kAbsolute, "absolute", "1 plus the attribute differences"},
+     {EditCostKind::kStandardized, "standardized", "differences over each attribute's spread"}}};
+inline constexpr auto kEditCostKinds = kEditCostKindNames.values();
 
 // "topological", "absolute", "standardized".
 std::string_view edit_cost_kind_name(EditCostKind kind);
