@@ -20,9 +20,10 @@ enum class EditCostKind { kTopological, kAbsolute, kStandardized };
 
 inline constexpr NameTable<EditCostKind, 3> kEditCostKindNames{
     "cost model",
-    {{EditCostKind::kTopological, "topological", "every edit costs 1"},
-     {EditCostKind::kAbsolute, "absolute", "1 plus the attribute differences"},
-     {EditCostKind::kStandardized, "standardized", "differences over each attribute's spread"}}};
+    {{EditCostKind::kTopological, "topological", "delete and insert cost 1, relabel 0"},
+     {EditCostKind::kAbsolute, "absolute", "costs from the attribute values and their differences"},
+     {EditCostKind::kStandardized, "standardized",
+      "the same on attributes standardized over both trees, Pirk eq. 4.23-4.26"}}};
 inline constexpr auto kEditCostKinds = kEditCostKindNames.values();
 
 // "topological", "absolute", "standardized".
