@@ -40,7 +40,7 @@ inline constexpr std::uint32_t kNoCluster = std::numeric_limits<std::uint32_t>::
 enum class ClusterLightModel { kCanopy, kSky, kShadowGrid };
 inline constexpr NameTable<ClusterLightModel, 3> kClusterLightModelNames{
     "light_model",
-    {{ClusterLightModel::kCanopy, "canopy", "the leaves as turbid media, --canopy-model"},
+    {{ClusterLightModel::kCanopy, "canopy", "the leaves as turbid media, through the canopy model"},
      {ClusterLightModel::kSky, "sky", "hemisphere with the clusters as caps, Pirk eq. 4.3"},
      {ClusterLightModel::kShadowGrid, "shadow_grid", "Palubicki's voxel shade"}}};
 
