@@ -31,28 +31,19 @@
 namespace fspm::cli {
 namespace {
 
-constexpr environment::ClusterLightModel kClusterLightModels[] = {
-    environment::ClusterLightModel::kCanopy, environment::ClusterLightModel::kSky,
-    environment::ClusterLightModel::kShadowGrid};
-
 struct AdaptOptions {
   std::vector<std::string> trees;
   std::vector<std::string> scenes;
   std::string out;
   std::string format;
-  double skeleton_radius_m = 0.0;
-  double pruning_strength = 0.8;
-  double phototropism = 0.25;
-  double gravitropism = 0.12;
+  // The options bound straight into the analysis parameters, whose defaults are the options'.
+  environment::AnalysisParams analysis;
   std::vector<double> grown_brightest;
   std::string sky_file;
   bool keep_pruned = false;
   bool remove_pruned = true;  // the default; the flag only confirms it
   bool together = false;
-  bool temporal = false;
-  bool absolute_pruning = false;
-  environment::ClusterLightModel light_model = environment::AnalysisParams{}.light_model;
-  std::string canopy_model = environment::AnalysisParams{}.canopy_model;
+  bool absolute_pruning = false;  // the inverse of analysis.relative_pruning
   bool json = false;
 };
 
@@ -90,15 +81,8 @@ std::vector<std::string> output_paths(const AdaptOptions& o, const std::filesyst
 }
 
 environment::AnalysisParams analysis_params(const AdaptOptions& o) {
-  environment::AnalysisParams params;
-  params.skeleton_radius_m = o.skeleton_radius_m;
-  params.pruning_strength = o.pruning_strength;
-  params.phototropism = o.phototropism;
-  params.gravitropism = o.gravitropism;
-  params.temporal_pruning = o.temporal;
+  environment::AnalysisParams params = o.analysis;
   params.relative_pruning = !o.absolute_pruning;
-  params.light_model = o.light_model;
-  params.canopy_model = o.canopy_model;
   return params;
 }
 
@@ -275,14 +259,14 @@ void add_adapt_commands(CLI::App& app) {
                 "Output tree file, or a directory when several trees or scenes are given")
       ->required();
   a->add_option("--format", opt->format, "Output format (default: from the extension)");
-  a->add_option("--skeleton-radius", opt->skeleton_radius_m,
+  a->add_option("--skeleton-radius", opt->analysis.skeleton_radius_m,
                 "Skeleton thickness threshold in m (default: 2.5 x thinnest internode)")
       ->check(positive_number(1000));
-  a->add_option("--pruning-strength", opt->pruning_strength, "c_psi of Pirk eq. 4.12")
+  a->add_option("--pruning-strength", opt->analysis.pruning_strength, "c_psi of Pirk eq. 4.12")
       ->capture_default_str();
-  a->add_option("--phototropism", opt->phototropism, "Phototropism weight (eq. 4.6)")
+  a->add_option("--phototropism", opt->analysis.phototropism, "Phototropism weight (eq. 4.6)")
       ->capture_default_str();
-  a->add_option("--gravitropism", opt->gravitropism, "Gravitropism weight (eq. 4.6)")
+  a->add_option("--gravitropism", opt->analysis.gravitropism, "Gravitropism weight (eq. 4.6)")
       ->capture_default_str();
   a->add_option("--grown-brightest", opt->grown_brightest,
                 "Brightest sky direction x y z the trees grew under (default: the scene's)")
@@ -292,19 +276,14 @@ void add_adapt_commands(CLI::App& app) {
                 "TOML file with sky = { site = { latitude, longitude, elevation }, date, "
                 "hours | days }: the scenes' sky becomes that real sky (its sun positions and "
                 "diffuse light per direction); the adapted trees' leaf clusters get their PAR");
-  a->add_flag("--temporal-pruning", opt->temporal,
+  a->add_flag("--temporal-pruning", opt->analysis.temporal_pruning,
               "Pruning thresholds over all earlier growth stages (eq. 4.5), not the final one");
   a->add_flag("--absolute-pruning", opt->absolute_pruning,
               "Pirk's eq. 4.12 thresholds as analysed, not scaled with the crown's resources");
-  add_enum_option(
-      a, "--light-model", opt->light_model, kClusterLightModels,
-      +[](environment::ClusterLightModel m) -> std::string_view {
-        return environment::cluster_light_model_name(m);
-      },
-      "Cluster light: canopy (the leaves as turbid media, --canopy-model), sky (hemisphere "
-      "with the clusters as caps, Pirk eq. 4.3) or shadow_grid (Palubicki's voxel shade)");
+  add_enum_option(a, "--light-model", opt->analysis.light_model,
+                  environment::kClusterLightModelNames, "Cluster light");
   a->add_option(
-       "--canopy-model", opt->canopy_model,
+       "--canopy-model", opt->analysis.canopy_model,
        "Leaf light model of --light-model canopy: " + environment::leaf_light_model_names())
       ->capture_default_str();
   a->add_flag("--together", opt->together,

@@ -10,25 +10,22 @@
 #include <vector>
 
 #include "fspm/closest_name.hpp"
+#include "fspm/name_table.hpp"
 
 namespace fspm::cli {
 
-// Adds `--name` to `app`, storing into `value` one of `kinds` given by its name `name_of(kind)`;
-// the help lists the names and the default is `value`'s name.
-template <typename Kind, std::size_t N>
-CLI::Option* add_enum_option(CLI::App* app, const std::string& flag, Kind& value,
-                             const Kind (&kinds)[N], std::string_view (*name_of)(Kind),
-                             const std::string& help) {
+// The transform that turns a name into the enum's number (which CLI11 then converts into the
+// enum), refusing other names with the closest one.
+template <typename Kind>
+CLI::Validator enum_transform(const std::vector<std::string>& names,
+                              const std::vector<Kind>& kinds) {
   std::map<std::string, Kind> by_name;
-  std::vector<std::string> names;
-  for (Kind k : kinds) {
-    names.emplace_back(name_of(k));
-    by_name.emplace(names.back(), k);
-  }
   std::string choices;
-  for (const std::string& n : names) choices += (choices.empty() ? "" : ", ") + n;
-  // The text becomes the enum's number, which CLI11 then converts into the enum.
-  CLI::Validator to_kind(
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    by_name.emplace(names[i], kinds[i]);
+    choices += (i ? ", " : "") + names[i];
+  }
+  return CLI::Validator(
       [by_name, names](std::string& input) -> std::string {
         const auto it = by_name.find(input);
         if (it == by_name.end()) {
@@ -38,9 +35,39 @@ CLI::Option* add_enum_option(CLI::App* app, const std::string& flag, Kind& value
         return {};
       },
       "one of: " + choices);
+}
+
+// Adds `--name` to `app`, storing into `value` one of `kinds` (any range of the enum) given by
+// its name `name_of(kind)`; the help lists the names and the default is `value`'s name.
+template <typename Kind, typename Kinds>
+CLI::Option* add_enum_option(CLI::App* app, const std::string& flag, Kind& value,
+                             const Kinds& kinds, std::string_view (*name_of)(Kind),
+                             const std::string& help) {
+  std::vector<std::string> names;
+  std::vector<Kind> values;
+  for (Kind k : kinds) {
+    names.emplace_back(name_of(k));
+    values.push_back(k);
+  }
   return app->add_option(flag, value, help)
-      ->transform(to_kind)
+      ->transform(enum_transform(names, values))
       ->default_str(std::string(name_of(value)));
+}
+
+// The same for an enum with a NameTable: the help is `help` followed by the table's names and
+// what each means ("Cost model: topological (every edit costs 1), absolute (...)").
+template <typename Kind, std::size_t N>
+CLI::Option* add_enum_option(CLI::App* app, const std::string& flag, Kind& value,
+                             const NameTable<Kind, N>& table, const std::string& help) {
+  std::vector<std::string> names;
+  std::vector<Kind> values;
+  for (const NamedValue<Kind>& e : table.entries()) {
+    names.emplace_back(e.name);
+    values.push_back(e.value);
+  }
+  return app->add_option(flag, value, help + ": " + table.help())
+      ->transform(enum_transform(names, values))
+      ->default_str(std::string(table.name(value)));
 }
 
 }  // namespace fspm::cli

@@ -291,8 +291,8 @@ void add_environment_commands(CLI::App& app) {
   l->add_option("--hours", light->hours,
                 "Real sky: local hours FROM:TO integrated (default 0:24, the whole day)");
   l->add_option("--diffuse-sky", light->diffuse,
-                "Real sky: diffuse radiance overcast (CIE standard overcast, default), clear "
-                "(CIE standard clear) or uniform");
+                "Real sky: diffuse radiance, " + environment::kDiffuseSkyNames.help())
+      ->capture_default_str();
   l->add_option("--global-radiation", light->global_W_m2,
                 "Real sky: global radiation on a horizontal plane (W m-2) held while the sun is "
                 "up (default: the clear sky of the site and date)");
@@ -300,8 +300,9 @@ void add_environment_commands(CLI::App& app) {
                 "Real sky: measured hourly global radiation, CSV hour,global_W_m2 (local hours "
                 "0-23)");
   l->add_option("--split", light->split,
-                "Real sky: direct/diffuse split of the global radiation, spitters (Spitters et al. "
-                "1986, default) or erbs (Erbs et al. 1982)");
+                "Real sky: direct/diffuse split of the global radiation, " +
+                    environment::kDiffuseSplitNames.help())
+      ->capture_default_str();
   l->add_option("--transmittance", light->transmittance,
                 "Real sky: clear-sky atmospheric transmittance (default 0.75)");
   l->callback([light] { run_light(*light); });
@@ -311,10 +312,13 @@ void add_environment_commands(CLI::App& app) {
       "grow", "Self-organizing tree growth (Palubicki 2009) with light, walls and obstacles");
   g->add_option("PARAMS", grow->params, "Growth parameters (TOML, see docs/environment.md)");
   g->add_option("--preset", grow->preset, "Pirk's tree type A, B or C instead of PARAMS");
-  g->add_option("--light-model", grow->light_model,
-                "With --preset: shadow_grid (default), sky or space_colonization");
+  g->add_option(
+      "--light-model", grow->light_model,
+      "With --preset: " + environment::kBudLightModelNames.help() + "; default " +
+          std::string(environment::bud_light_model_name(environment::GrowthParams{}.light_model)));
   g->add_option("--tropisms", grow->tropisms,
-                "With --preset: Pirk's tropism pairing, text (default) or appendix");
+                "With --preset: Pirk's tropism pairing, " +
+                    environment::kTropismPairingNames.help() + "; default text");
   g->add_option("--scene", grow->scene, "Scene with obstacles and sky (JSON, see docs/formats.md)");
   g->add_option("--years", grow->years, "Growth cycles (default: from the parameters)")
       ->check(number_in(0, environment::kMaxYears));

@@ -227,7 +227,7 @@ void add_evaluation_commands(CLI::App& app) {
   dist->add_option("A", d->a, "Tree file (.tree, .treeb, .nwk, .mtg) or a Newick string '(...);'")
       ->required();
   dist->add_option("B", d->b, "Tree file (.tree, .treeb, .nwk, .mtg) or Newick string")->required();
-  add_enum_option(dist, "--cost", d->cost, kEditCostKinds, edit_cost_kind_name, "Cost model");
+  add_enum_option(dist, "--cost", d->cost, kEditCostKindNames, "Cost model");
   dist->add_option("--attr", d->attributes,
                    "Attributes compared, comma-separated (default: label for Newick, else "
                    "length,radius)")
@@ -235,8 +235,7 @@ void add_evaluation_commands(CLI::App& app) {
   dist->add_option("--main-skeleton", d->main_skeleton,
                    "Compare only nodes with radius above this thickness (m) and their ancestors")
       ->check(number_in(0, 1e300));
-  add_enum_option(dist, "--solver", d->solver, kAssignmentSolvers, assignment_solver_name,
-                  "Forest matching");
+  add_enum_option(dist, "--solver", d->solver, kAssignmentSolverNames, "Forest matching");
   dist->add_flag("--mapping", d->mapping, "Also print the matched node pairs");
   dist->add_flag("--json", d->json, "Machine-readable JSON on stdout");
   dist->callback([d] { run_distance(*d); });
@@ -254,7 +253,7 @@ void add_evaluation_commands(CLI::App& app) {
   auto* paired = tt->add_flag("--paired", t->paired, "Paired test on a_i - b_i");
   welch->excludes(paired);
   tt->add_option("--column", t->column, "CSV column name (the first row is the header)");
-  add_enum_option(tt, "--alternative", t->alternative, kAlternatives, alternative_name,
+  add_enum_option(tt, "--alternative", t->alternative, kAlternativeNames,
                   "The alternative hypothesis about mean(A) - mean(B)");
   tt->add_option("--level", t->level, "Confidence level of the interval")->capture_default_str();
   tt->add_flag("--json", t->json, "Machine-readable JSON on stdout");
@@ -271,7 +270,7 @@ void add_evaluation_commands(CLI::App& app) {
   mw->add_option("A", m->a, file_help)->required();
   mw->add_option("B", m->b, file_help)->required();
   mw->add_option("--column", m->column, "CSV column name (the first row is the header)");
-  add_enum_option(mw, "--alternative", m->alternative, kAlternatives, alternative_name,
+  add_enum_option(mw, "--alternative", m->alternative, kAlternativeNames,
                   "The alternative hypothesis about A's location against B's");
   mw->add_flag("--no-correction", m->no_correction,
                "No continuity correction in the normal approximation");

@@ -13,6 +13,7 @@
 
 #include "fspm/error.hpp"
 #include "fspm/input_file.hpp"
+#include "fspm/vertex_normals.hpp"
 #include "scans/gltf_reader.hpp"
 #include "scans/obj_reader.hpp"
 
@@ -28,14 +29,7 @@ std::string extension(const std::string& path) {
 
 // Area-weighted vertex normals, for meshes that carry none.
 std::vector<Eigen::Vector3f> vertex_normals(const graphics::TriangleMesh& mesh) {
-  std::vector<Eigen::Vector3f> normals(mesh.positions.size(), Eigen::Vector3f::Zero());
-  for (const auto& t : mesh.triangles) {
-    const Eigen::Vector3f n = (mesh.positions[t[1]] - mesh.positions[t[0]])
-                                  .cross(mesh.positions[t[2]] - mesh.positions[t[0]]);
-    for (const std::uint32_t v : t) normals[v] += n;
-  }
-  for (auto& n : normals) n = n.norm() > 0.0f ? n.normalized() : Eigen::Vector3f::UnitZ();
-  return normals;
+  return area_weighted_vertex_normals(mesh.positions, mesh.triangles);
 }
 
 // Every polygon of an .obj as a fan of leaf triangles (the reader keeps groups, not materials).

@@ -259,11 +259,8 @@ void add_stages_commands(CLI::App& app) {
                 "gamma of eq. 5.10 for --added (1: the last stage is the given tree; < 1 keeps "
                 "some added branches, > 1 sheds them earlier)")
       ->check(number_in(1e-6, 100.0));
-  add_enum_option(s, "--growth-profiles", o->growth_profiles, stages::kProfileChoices,
-                  stages::profile_choice_name,
-                  "Growth-rate profiles of the chains (Pirk 5.3.1): constant (eq. 5.3), by_chain "
-                  "(accelerating for short slow chains that start late, constant for the others), "
-                  "logistic or accelerating for all");
+  add_enum_option(s, "--growth-profiles", o->growth_profiles, stages::kProfileChoiceNames,
+                  "Growth-rate profiles of the chains (Pirk 5.3.1)");
   s->add_flag("--shed-branches", o->shed_branches,
               "Stand a shed branch wherever a radius holds more pipes than its children need "
               "(pipe model, Shinozaki et al. 1964), grown as its closest lateral and shed when "

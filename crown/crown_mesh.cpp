@@ -1,4 +1,5 @@
 #include "crown/crown_mesh.hpp"
+#include "fspm/vertex_normals.hpp"
 
 #include <Eigen/Geometry>
 #include <utility>
@@ -18,17 +19,7 @@ double enclosed_volume(const CrownMesh& mesh, std::size_t first, std::size_t las
 }
 
 std::vector<Eigen::Vector3f> vertex_normals(const CrownMesh& mesh) {
-  std::vector<Eigen::Vector3f> normals(mesh.positions.size(), Eigen::Vector3f::Zero());
-  for (const auto& tri : mesh.triangles) {
-    const Eigen::Vector3f& a = mesh.positions[tri[0]];
-    const Eigen::Vector3f n = (mesh.positions[tri[1]] - a).cross(mesh.positions[tri[2]] - a);
-    for (std::uint32_t v : tri) normals[v] += n;  // |n| is twice the area: area weighting
-  }
-  for (Eigen::Vector3f& n : normals) {
-    const float length = n.norm();
-    n = length > 0.0f ? Eigen::Vector3f(n / length) : Eigen::Vector3f::UnitZ();
-  }
-  return normals;
+  return area_weighted_vertex_normals(mesh.positions, mesh.triangles);
 }
 
 void flip_triangles(CrownMesh& mesh, std::size_t first, std::size_t last) {

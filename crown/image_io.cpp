@@ -1,38 +1,19 @@
-// Through OpenImageIO, loaded on first use (fspm/image_codec.hpp): encoded in memory, then written
-// with the core's atomic writer.
+// Through fspm/image_file (OpenImageIO loaded on first use, the size checks before decoding,
+// encoded in memory, then written atomically).
 #include "crown/image_io.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <filesystem>
-#include <ostream>
 
-#include "fspm/atomic_file.hpp"
 #include "fspm/error.hpp"
-#include "fspm/image_budget.hpp"
-#include "fspm/image_codec.hpp"
+#include "fspm/image_file.hpp"
 
 namespace fspm::crown {
-namespace {
-
-// All channels of the first subimage as floats: 8-bit ones in [0, 1], float ones as stored.
-std::vector<float> read_pixels(const std::string& path, ImageInfo& spec) {
-  check_image_file(path);
-  spec = read_image_info(path);
-  // Our floats and the decoder's own buffer of the stored values.
-  check_image_size(path, spec.width, spec.height, spec.channels,
-                   sizeof(float) + static_cast<double>(spec.bytes_per_value));
-  std::vector<float> pixels(static_cast<std::size_t>(spec.width) * spec.height * spec.channels);
-  read_image_pixels(path, spec.channels, PixelType::kFloat, pixels.data());
-  return pixels;
-}
-
-}  // namespace
 
 Raster read_rgb(const std::string& path) {
   ImageInfo spec;
-  const std::vector<float> pixels = read_pixels(path, spec);
+  const std::vector<float> pixels = read_image_floats(path, 0, spec);
   Raster out(spec.width, spec.height, 3);
   const int n = spec.channels;
   for (std::size_t i = 0, count = out.values.size() / 3; i < count; ++i) {
@@ -46,7 +27,7 @@ Raster read_rgb(const std::string& path) {
 Raster read_raster(const std::string& path) {
   ImageInfo spec;
   Raster out;
-  out.values = read_pixels(path, spec);
+  out.values = read_image_floats(path, 0, spec);
   out.width = spec.width;
   out.height = spec.height;
   out.channels = spec.channels;
@@ -55,7 +36,7 @@ Raster read_raster(const std::string& path) {
 
 Mask read_mask(const std::string& path) {
   ImageInfo spec;
-  const std::vector<float> pixels = read_pixels(path, spec);
+  const std::vector<float> pixels = read_image_floats(path, 0, spec);
   Mask mask(spec.width, spec.height);
   for (std::size_t i = 0; i < mask.inside.size(); ++i) {
     mask.inside[i] = pixels[i * spec.channels] > 0.5f ? 1 : 0;
@@ -66,16 +47,7 @@ Mask read_mask(const std::string& path) {
   return mask;
 }
 
-void check_image_output(const std::string& path) {
-  if (image_writer_format(path).empty()) {
-    throw ValueError("unknown image format (expected an extension such as .png, .tif or .exr)",
-                     path);
-  }
-  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
-  if (!dir.empty() && !std::filesystem::is_directory(dir)) {
-    throw IoError("cannot write: directory '" + dir.string() + "' does not exist", path);
-  }
-}
+void check_image_output(const std::string& path) { fspm::check_image_output(path); }
 
 void write_raster(const Raster& image, const std::string& path) {
   check_image_output(path);
@@ -92,16 +64,8 @@ void write_raster(const Raster& image, const std::string& path) {
   }
   const PixelType type = floats ? PixelType::kFloat : PixelType::kUint8;
   const void* data = floats ? static_cast<const void*>(image.values.data()) : bytes.data();
-  // Encoded in memory: nothing touches disk yet.
-  const std::vector<unsigned char> encoded = encode_image(
-      path, ImageInfo{image.width, image.height, image.channels, floats ? 4 : 1}, type, data);
-  write_file_atomically(
-      path,
-      [&](std::ostream& stream) {
-        stream.write(reinterpret_cast<const char*>(encoded.data()),
-                     static_cast<std::streamsize>(encoded.size()));
-      },
-      true);
+  write_image_file(path, ImageInfo{image.width, image.height, image.channels, floats ? 4 : 1}, type,
+                   data);
 }
 
 void write_mask(const Mask& mask, const std::string& path) {

@@ -51,13 +51,7 @@ void parse_hours(std::string_view text, RealSky& sky) {
   sky.last_hour = parse_number(text.substr(colon + 1), "the last hour (0-24)");
 }
 
-DiffuseSky diffuse_sky_from_name(std::string_view name) {
-  if (name == "overcast") return DiffuseSky::kStandardOvercast;
-  if (name == "clear") return DiffuseSky::kClear;
-  if (name == "uniform") return DiffuseSky::kUniform;
-  throw ValueError("unknown diffuse sky \"" + std::string(name) +
-                   "\", expected overcast, clear or uniform");
-}
+DiffuseSky diffuse_sky_from_name(std::string_view name) { return kDiffuseSkyNames.from_name(name); }
 
 void validate(const RealSky& sky) {
   if (!(sky.first_hour >= 0.0 && sky.last_hour <= 24.0 && sky.first_hour < sky.last_hour)) {

@@ -17,36 +17,19 @@
 namespace fspm::environment {
 
 std::string_view bud_light_model_name(BudLightModel model) {
-  switch (model) {
-    case BudLightModel::kSky:
-      return "sky";
-    case BudLightModel::kShadowGrid:
-      return "shadow_grid";
-    case BudLightModel::kSpaceColonization:
-      return "space_colonization";
-  }
-  return "sky";
+  return kBudLightModelNames.name(model);
 }
 
 BudLightModel bud_light_model_from_name(std::string_view name) {
-  for (BudLightModel m :
-       {BudLightModel::kSky, BudLightModel::kShadowGrid, BudLightModel::kSpaceColonization}) {
-    if (name == bud_light_model_name(m)) return m;
-  }
-  throw ValueError(
-      "light_model: expected \"sky\", \"shadow_grid\" or \"space_colonization\", got \"" +
-      std::string(name) + "\"");
+  return kBudLightModelNames.from_name(name);
 }
 
 std::string_view tropism_pairing_name(TropismPairing pairing) {
-  return pairing == TropismPairing::kText ? "text" : "appendix";
+  return kTropismPairingNames.name(pairing);
 }
 
 TropismPairing tropism_pairing_from_name(std::string_view name) {
-  if (name == "text") return TropismPairing::kText;
-  if (name == "appendix") return TropismPairing::kAppendix;
-  throw ValueError("preset_tropisms: expected \"text\" or \"appendix\", got \"" +
-                   std::string(name) + "\"");
+  return kTropismPairingNames.from_name(name);
 }
 
 namespace {
@@ -222,51 +205,56 @@ void validate(const GrowthParams& p) {
   check(p.pipe_exponent >= 1 && p.pipe_exponent <= 4, "pipe_exponent", "a number in [1, 4]");
 }
 
-GrowthParams parse_growth_params(std::string_view text, const std::string& file_name,
-                                 const std::vector<std::string>& overrides) {
-  toml::table table = parse_toml_text(text, file_name);
-  std::set<std::string> from_command_line;
-  for (const std::string& setting : overrides) {
-    for (auto&& [key, node] : override_table(setting)) {
-      from_command_line.insert(std::string(key.str()));
-      table.insert_or_assign(key, std::move(node));
-    }
-  }
-  GrowthParams p;
-  if (auto preset = table["preset"]) {
-    p = preset_from_table(table, *preset.node(), file_name);
-  } else if (const toml::node* n = table.get("preset_tropisms")) {
-    throw ValueError("preset_tropisms: chooses the tropisms of a preset; expected a preset key too",
-                     file_name, static_cast<int>(n->source().begin.line));
-  }
-  using Setter = std::function<bool(const toml::node&)>;
-  auto real = [](double& out, double lo, double hi) -> Setter {
-    return [&out, lo, hi](const toml::node& n) {
-      const auto v = n.value<double>();
-      if (!v || !std::isfinite(*v) || *v < lo || *v > hi) return false;
-      out = *v;
-      return true;
-    };
+namespace {
+
+// How one key of a parameter file is read: a setter that stores a valid value (false for another
+// type or a value out of range) and what the key expects, for the message.
+using Setter = std::function<bool(const toml::node&)>;
+using KeyTable = std::map<std::string, std::pair<Setter, std::string>>;
+constexpr double kBig = 1e300;
+
+Setter real(double& out, double lo, double hi) {
+  return [&out, lo, hi](const toml::node& n) {
+    const auto v = n.value<double>();
+    if (!v || !std::isfinite(*v) || *v < lo || *v > hi) return false;
+    out = *v;
+    return true;
   };
-  auto integer = [](auto& out, long long lo, long long hi) -> Setter {
-    return [&out, lo, hi](const toml::node& n) {
-      if (!n.is_integer()) return false;
-      const long long v = n.as_integer()->get();
-      if (v < lo || v > hi) return false;
-      out = static_cast<std::remove_reference_t<decltype(out)>>(v);
-      return true;
-    };
+}
+
+template <typename Int>
+Setter integer(Int& out, long long lo, long long hi) {
+  return [&out, lo, hi](const toml::node& n) {
+    if (!n.is_integer()) return false;
+    const long long v = n.as_integer()->get();
+    if (v < lo || v > hi) return false;
+    out = static_cast<Int>(v);
+    return true;
   };
-  auto boolean = [](bool& out) -> Setter {
-    return [&out](const toml::node& n) {
-      const auto v = n.value<bool>();
-      if (!v || !n.is_boolean()) return false;
-      out = *v;
-      return true;
-    };
+}
+
+Setter boolean(bool& out) {
+  return [&out](const toml::node& n) {
+    const auto v = n.value<bool>();
+    if (!v || !n.is_boolean()) return false;
+    out = *v;
+    return true;
   };
-  constexpr double kBig = 1e300;
-  const std::map<std::string, std::pair<Setter, std::string>> keys = {
+}
+
+// A positive number or inf ("no limit").
+Setter positive_or_inf(double& out) {
+  return [&out](const toml::node& n) {
+    const auto v = n.value<double>();
+    if (!v || std::isnan(*v) || !(*v > 0)) return false;
+    out = *v;
+    return true;
+  };
+}
+
+// The keys of growth itself: cycles, vigour, shoots, tropisms, shedding, pipes.
+KeyTable growth_keys(GrowthParams& p) {
+  return {
       {"years", {integer(p.years, 0, 1000), "an integer in [0, 1000]"}},
       {"seed",
        {integer(p.seed, 0, std::numeric_limits<long long>::max()), "a non-negative integer"}},
@@ -276,14 +264,7 @@ GrowthParams parse_growth_params(std::string_view text, const std::string& file_
       {"max_shoot_metamers", {integer(p.max_shoot_metamers, 1, 1000), "an integer in [1, 1000]"}},
       {"max_internodes",
        {integer(p.max_internodes, 1, std::numeric_limits<long long>::max()), "an integer >= 1"}},
-      {"max_height_m",
-       {[&p](const toml::node& n) {
-          const auto v = n.value<double>();
-          if (!v || std::isnan(*v) || !(*v > 0)) return false;
-          p.max_height_m = *v;
-          return true;
-        },
-        "a positive length or inf"}},
+      {"max_height_m", {positive_or_inf(p.max_height_m), "a positive length or inf"}},
       {"branching_angle_deg", {real(p.branching_angle_deg, -180, 180), "an angle in [-180, 180]"}},
       {"phyllotaxy_deg", {real(p.phyllotaxy_deg, -360, 360), "an angle in [-360, 360]"}},
       {"perturbation_deg", {real(p.perturbation_deg, 0, 90), "an angle in [0, 90]"}},
@@ -294,32 +275,40 @@ GrowthParams parse_growth_params(std::string_view text, const std::string& file_
       {"pruning_factor", {real(p.pruning_factor, 0, kBig), "a non-negative number"}},
       {"leaf_years", {integer(p.leaf_years, 1, 1000), "an integer in [1, 1000]"}},
       {"cluster_radius_m", {real(p.cluster_radius_m, 1e-12, kBig), "a positive length"}},
-      {"gamma0", {real(p.gamma0, 0, 1), "a translucency in [0, 1]"}},
-      {"light_directions", {integer(p.light_directions, 1, 1 << 20), "an integer >= 1"}},
-      {"light_significance", {real(p.light_significance, 0, 0.999), "a number in [0, 1)"}},
       {"tip_radius_m", {real(p.tip_radius_m, 1e-12, kBig), "a positive length"}},
       {"pipe_exponent", {real(p.pipe_exponent, 1, 4), "a number in [1, 4]"}},
       {"keep_shed_pipes", {boolean(p.keep_shed_pipes), "true or false"}},
       {"min_shoot_vigour", {real(p.min_shoot_vigour, 0, kBig), "a non-negative number"}},
+      {"gravity_direction",
+       {[&p](const toml::node& n) {
+          const auto* a = n.as_array();
+          if (!a || a->size() != 3) return false;
+          for (int k = 0; k < 3; ++k) {
+            const auto v = (*a)[k].value<double>();
+            if (!v || !std::isfinite(*v)) return false;
+            p.gravity_direction[k] = *v;
+          }
+          return p.gravity_direction.norm() > 0;
+        },
+        "an array of 3 numbers, not all zero"}}};
+}
+
+// The keys of the light: the bud light model and its parameters, the light directions, the sky.
+void add_light_keys(KeyTable& keys, GrowthParams& p, const std::string& file_name) {
+  KeyTable light = {
+      {"gamma0", {real(p.gamma0, 0, 1), "a translucency in [0, 1]"}},
+      {"light_directions", {integer(p.light_directions, 1, 1 << 20), "an integer >= 1"}},
+      {"light_significance", {real(p.light_significance, 0, 0.999), "a number in [0, 1)"}},
       {"sky_light_fraction", {real(p.sky_light_fraction, 0, 1), "a fraction in [0, 1]"}},
       {"light_half_saturation",
-       {[&p](const toml::node& n) {
-          const auto v = n.value<double>();
-          if (!v || std::isnan(*v) || !(*v > 0)) return false;
-          p.light_half_saturation = *v;
-          return true;
-        },
-        "a positive number or inf"}},
+       {positive_or_inf(p.light_half_saturation), "a positive number or inf"}},
       {"light_model",
        {[&p](const toml::node& n) {
-          try {
-            p.light_model = bud_light_model_from_name(n.value<std::string>().value_or(""));
-            return true;
-          } catch (const ValueError&) {
-            return false;
-          }
+          const auto model = kBudLightModelNames.find(n.value<std::string>().value_or(""));
+          if (model) p.light_model = *model;
+          return model.has_value();
         },
-        "\"sky\", \"shadow_grid\" or \"space_colonization\""}},
+        kBudLightModelNames.expected()}},
       {"voxel_size_m", {real(p.shadow_grid.voxel_size_m, 1e-3, kBig), "a length >= 0.001"}},
       {"shadow_a", {real(p.shadow_grid.shade_a, 1e-12, kBig), "a positive number"}},
       {"shadow_b", {real(p.shadow_grid.shade_b, 1.000001, kBig), "a number > 1"}},
@@ -344,20 +333,39 @@ GrowthParams parse_growth_params(std::string_view text, const std::string& file_
           p.site_sky = parse_site_sky(n, file_name);
           return true;
         },
-        "a table { site = { latitude, longitude, elevation }, date, hours | days }"}},
-      {"gravity_direction",
-       {[&p](const toml::node& n) {
-          const auto* a = n.as_array();
-          if (!a || a->size() != 3) return false;
-          for (int k = 0; k < 3; ++k) {
-            const auto v = (*a)[k].value<double>();
-            if (!v || !std::isfinite(*v)) return false;
-            p.gravity_direction[k] = *v;
-          }
-          return p.gravity_direction.norm() > 0;
-        },
-        "an array of 3 numbers, not all zero"}},
-  };
+        "a table { site = { latitude, longitude, elevation }, date, hours | days }"}}};
+  keys.merge(light);
+}
+
+// The file's table with the command line's NAME=VALUE settings over it; `from_command_line` gets
+// their keys.
+toml::table table_with_overrides(std::string_view text, const std::string& file_name,
+                                 const std::vector<std::string>& overrides,
+                                 std::set<std::string>& from_command_line) {
+  toml::table table = parse_toml_text(text, file_name);
+  for (const std::string& setting : overrides) {
+    for (auto&& [key, node] : override_table(setting)) {
+      from_command_line.insert(std::string(key.str()));
+      table.insert_or_assign(key, std::move(node));
+    }
+  }
+  return table;
+}
+
+// The parameters a table starts from: its preset's, or the defaults.
+GrowthParams base_params(const toml::table& table, const std::string& file_name) {
+  if (auto preset = table["preset"]) return preset_from_table(table, *preset.node(), file_name);
+  if (const toml::node* n = table.get("preset_tropisms")) {
+    throw ValueError("preset_tropisms: chooses the tropisms of a preset; expected a preset key too",
+                     file_name, static_cast<int>(n->source().begin.line));
+  }
+  return GrowthParams{};
+}
+
+// Every key of `table` through its setter; an unknown key or a refused value is a ValueError at
+// its line, or naming --set when the command line gave it.
+void apply_keys(const toml::table& table, const KeyTable& keys,
+                const std::set<std::string>& from_command_line, const std::string& file_name) {
   for (const auto& [key, node] : table) {
     const std::string name(key.str());
     const int line = static_cast<int>(node.source().begin.line);
@@ -378,6 +386,19 @@ GrowthParams parse_growth_params(std::string_view text, const std::string& file_
       throw ValueError(name + ": expected " + it->second.second, file_name, line, column);
     }
   }
+}
+
+}  // namespace
+
+GrowthParams parse_growth_params(std::string_view text, const std::string& file_name,
+                                 const std::vector<std::string>& overrides) {
+  std::set<std::string> from_command_line;
+  const toml::table table = table_with_overrides(text, file_name, overrides, from_command_line);
+  GrowthParams p = base_params(table, file_name);
+  // The setters write into p, which stays in place while they are used.
+  KeyTable keys = growth_keys(p);
+  add_light_keys(keys, p, file_name);
+  apply_keys(table, keys, from_command_line, file_name);
   try {
     validate(p);
   } catch (const ValueError& e) {

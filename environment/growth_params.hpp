@@ -12,6 +12,7 @@
 #include "environment/shadow_grid.hpp"
 #include "environment/site_sky.hpp"
 #include "environment/space_colonization.hpp"
+#include "fspm/name_table.hpp"
 
 namespace fspm::environment {
 
@@ -21,6 +22,13 @@ enum class BudLightModel {
   kShadowGrid,         // Palubicki's shadow propagation in a voxel grid (local shade)
   kSpaceColonization,  // marker points and perception cones (Runions et al. 2007)
 };
+// The names of parameter files and options, and what each means in --help.
+inline constexpr NameTable<BudLightModel, 3> kBudLightModelNames{
+    "light_model",
+    {{BudLightModel::kSky, "sky", "the sky hemisphere shaded by leaf clusters, Pirk eq. 4.3"},
+     {BudLightModel::kShadowGrid, "shadow_grid", "Palubicki's voxel shade"},
+     {BudLightModel::kSpaceColonization, "space_colonization",
+      "marker points and perception cones, Runions et al. 2007"}}};
 // The name used in parameter files ("sky", "shadow_grid", "space_colonization").
 std::string_view bud_light_model_name(BudLightModel model);
 // The model of a name; throws ValueError naming the three for an unknown one.
@@ -94,6 +102,10 @@ struct GrowthParams {
 // B 0.45 / 0.44, C 0.03 / 0.23 (phototropism / gravitropism); the captions of the thesis'
 // appendix tables read A 0.25 / 0.12, B 0.45 / 0.03, C 0.44 / 0.23.
 enum class TropismPairing { kText, kAppendix };
+inline constexpr NameTable<TropismPairing, 2> kTropismPairingNames{
+    "preset_tropisms",
+    {{TropismPairing::kText, "text", "the pairing of Pirk's text, 4.5.4"},
+     {TropismPairing::kAppendix, "appendix", "the pairing of the appendix tables' captions"}}};
 std::string_view tropism_pairing_name(TropismPairing pairing);  // "text", "appendix"
 // Throws ValueError for a name other than "text" and "appendix".
 TropismPairing tropism_pairing_from_name(std::string_view name);

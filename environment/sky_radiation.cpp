@@ -57,10 +57,7 @@ double erbs_diffuse_fraction(double global_W_m2, double sun_elevation_deg, int d
 }
 
 DiffuseSplit diffuse_split_from_name(std::string_view name) {
-  if (name == "spitters") return DiffuseSplit::kSpitters;
-  if (name == "erbs") return DiffuseSplit::kErbs;
-  throw ValueError("unknown diffuse split \"" + std::string(name) +
-                   "\", expected spitters or erbs");
+  return kDiffuseSplitNames.from_name(name);
 }
 
 HorizontalRadiation split_global(double global_W_m2, double sun_elevation_deg, int day_of_year,

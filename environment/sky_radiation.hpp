@@ -5,6 +5,8 @@
 #include <Eigen/Core>
 #include <string_view>
 
+#include "fspm/name_table.hpp"
+
 namespace fspm::environment {
 
 // Solar constant (W m-2) of Campbell and Norman (1998, ch. 11).
@@ -39,6 +41,10 @@ double spitters_diffuse_fraction(double global_W_m2, double sun_elevation_deg, i
 double erbs_diffuse_fraction(double global_W_m2, double sun_elevation_deg, int day_of_year);
 
 enum class DiffuseSplit { kSpitters, kErbs };
+inline constexpr NameTable<DiffuseSplit, 2> kDiffuseSplitNames{
+    "diffuse split",
+    {{DiffuseSplit::kSpitters, "spitters", "Spitters et al. 1986"},
+     {DiffuseSplit::kErbs, "erbs", "Erbs et al. 1982"}}};
 // Throws ValueError for a name other than "spitters" or "erbs".
 DiffuseSplit diffuse_split_from_name(std::string_view name);
 
@@ -57,6 +63,11 @@ enum class DiffuseSky {
   kClear,             // CIE standard clear sky (CIE S 011/E:2003, type 12)
   kUniform,           // uniform radiance
 };
+inline constexpr NameTable<DiffuseSky, 3> kDiffuseSkyNames{
+    "diffuse sky",
+    {{DiffuseSky::kStandardOvercast, "overcast", "CIE standard overcast"},
+     {DiffuseSky::kClear, "clear", "CIE standard clear"},
+     {DiffuseSky::kUniform, "uniform", "uniform radiance"}}};
 double sky_radiance(DiffuseSky sky, const Eigen::Vector3d& d, const Eigen::Vector3d& sun);
 
 }  // namespace fspm::environment

@@ -131,23 +131,11 @@ void AnalysisParams::validate() const {
 }
 
 ClusterLightModel cluster_light_model_from_name(const std::string& name) {
-  if (name == "canopy") return ClusterLightModel::kCanopy;
-  if (name == "sky") return ClusterLightModel::kSky;
-  if (name == "shadow_grid") return ClusterLightModel::kShadowGrid;
-  throw ValueError("plastic analysis: unknown light_model '" + name.substr(0, 40) +
-                   "' (expected canopy, sky or shadow_grid)");
+  return kClusterLightModelNames.from_name(name, "plastic analysis");
 }
 
-const char* cluster_light_model_name(ClusterLightModel model) {
-  switch (model) {
-    case ClusterLightModel::kCanopy:
-      return "canopy";
-    case ClusterLightModel::kSky:
-      return "sky";
-    case ClusterLightModel::kShadowGrid:
-      break;
-  }
-  return "shadow_grid";
+std::string_view cluster_light_model_name(ClusterLightModel model) {
+  return kClusterLightModelNames.name(model);
 }
 
 void cluster_buds(const TreeGraph& t, const std::vector<LeafCluster>& clusters,

@@ -24,6 +24,7 @@
 #include "environment/leaf_light_model.hpp"
 #include "environment/occluders.hpp"
 #include "environment/shadow_grid.hpp"
+#include "fspm/name_table.hpp"
 #include "fspm/tree_graph.hpp"
 
 namespace fspm::environment {
@@ -37,10 +38,15 @@ inline constexpr std::uint32_t kNoCluster = std::numeric_limits<std::uint32_t>::
 // cluster by cluster where the change reaches), or Palubicki's local shadow grid
 // (ClusterGridLight), the light the growth model's default trees grew under.
 enum class ClusterLightModel { kCanopy, kSky, kShadowGrid };
+inline constexpr NameTable<ClusterLightModel, 3> kClusterLightModelNames{
+    "light_model",
+    {{ClusterLightModel::kCanopy, "canopy", "the leaves as turbid media, through the canopy model"},
+     {ClusterLightModel::kSky, "sky", "hemisphere with the clusters as caps, Pirk eq. 4.3"},
+     {ClusterLightModel::kShadowGrid, "shadow_grid", "Palubicki's voxel shade"}}};
 
 // "canopy", "sky" or "shadow_grid"; throws ValueError naming the choices otherwise.
 ClusterLightModel cluster_light_model_from_name(const std::string& name);
-const char* cluster_light_model_name(ClusterLightModel model);
+std::string_view cluster_light_model_name(ClusterLightModel model);
 
 struct AnalysisParams {
   // Internodes at least this thick belong to the skeleton; <= 0 picks 2.5 times the thinnest

@@ -312,8 +312,8 @@ const toml::array& table_array(const Reader& r, const toml::table& root, const s
 }
 
 // A name of `names` (in order `kinds`), or a failure at `node` listing them.
-template <typename Kind, std::size_t N>
-Kind one_of(const Reader& r, const std::string& key, const toml::node& node, const Kind (&kinds)[N],
+template <typename Kind, typename Kinds>
+Kind one_of(const Reader& r, const std::string& key, const toml::node& node, const Kinds& kinds,
             std::string_view (*name_of)(Kind)) {
   const std::string given = r.string(key, node);
   std::string list;

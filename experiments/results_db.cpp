@@ -10,8 +10,19 @@
 #include <nlohmann/json.hpp>
 
 #include "fspm/error.hpp"
+#include "fspm/name_table.hpp"
 
 namespace fspm::experiments {
+namespace {
+
+constexpr NameTable<RunStatus, 3> kRunStatusNames{
+    "run status",
+    {{RunStatus::kOk, "ok", "the run finished"},
+     {RunStatus::kError, "error", "the model threw"},
+     {RunStatus::kTimeout, "timeout", "the run outlasted its time limit"}}};
+
+}  // namespace
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -56,24 +67,9 @@ ParameterSet parameters_from_json(const json& j) {
 
 }  // namespace
 
-std::string_view run_status_name(RunStatus status) {
-  switch (status) {
-    case RunStatus::kOk:
-      return "ok";
-    case RunStatus::kError:
-      return "error";
-    case RunStatus::kTimeout:
-      return "timeout";
-  }
-  return "error";
-}
+std::string_view run_status_name(RunStatus status) { return kRunStatusNames.name(status); }
 
-RunStatus run_status_from_name(std::string_view name) {
-  if (name == "ok") return RunStatus::kOk;
-  if (name == "error") return RunStatus::kError;
-  if (name == "timeout") return RunStatus::kTimeout;
-  throw ValueError("unknown run status '" + std::string(name) + "'");
-}
+RunStatus run_status_from_name(std::string_view name) { return kRunStatusNames.from_name(name); }
 
 struct ResultsDb::Statements {
   sqlite3_stmt* insert = nullptr;

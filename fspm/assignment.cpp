@@ -142,14 +142,11 @@ PartialAssignment solve_min_cost_flow(std::span<const double> pair_cost, std::si
 }  // namespace
 
 std::string_view assignment_solver_name(AssignmentSolver solver) {
-  return solver == AssignmentSolver::kHungarian ? "hungarian" : "min-cost-flow";
+  return kAssignmentSolverNames.name(solver);
 }
 
 AssignmentSolver assignment_solver_from_name(std::string_view name) {
-  if (name == "hungarian") return AssignmentSolver::kHungarian;
-  if (name == "min-cost-flow") return AssignmentSolver::kMinCostFlow;
-  throw ValueError("unknown assignment solver '" + std::string(name) +
-                   "': expected hungarian or min-cost-flow");
+  return kAssignmentSolverNames.from_name(name);
 }
 
 PartialAssignment solve_partial_assignment(std::span<const double> pair_cost, std::size_t rows,

@@ -9,12 +9,17 @@
 #include <string_view>
 #include <vector>
 
+#include "fspm/name_table.hpp"
+
 namespace fspm {
 
 enum class AssignmentSolver { kHungarian, kMinCostFlow };
 
-inline constexpr AssignmentSolver kAssignmentSolvers[] = {AssignmentSolver::kHungarian,
-                                                          AssignmentSolver::kMinCostFlow};
+inline constexpr NameTable<AssignmentSolver, 2> kAssignmentSolverNames{
+    "assignment solver",
+    {{AssignmentSolver::kHungarian, "hungarian", "Hungarian method, O(n^3)"},
+     {AssignmentSolver::kMinCostFlow, "min-cost-flow", "successive shortest paths"}}};
+inline constexpr auto kAssignmentSolvers = kAssignmentSolverNames.values();
 
 // "hungarian", "min-cost-flow".
 std::string_view assignment_solver_name(AssignmentSolver solver);

@@ -7,24 +7,10 @@
 
 namespace fspm {
 
-std::string_view edit_cost_kind_name(EditCostKind kind) {
-  switch (kind) {
-    case EditCostKind::kTopological:
-      return "topological";
-    case EditCostKind::kAbsolute:
-      return "absolute";
-    case EditCostKind::kStandardized:
-      return "standardized";
-  }
-  return "topological";
-}
+std::string_view edit_cost_kind_name(EditCostKind kind) { return kEditCostKindNames.name(kind); }
 
 EditCostKind edit_cost_kind_from_name(std::string_view name) {
-  if (name == "topological") return EditCostKind::kTopological;
-  if (name == "absolute") return EditCostKind::kAbsolute;
-  if (name == "standardized") return EditCostKind::kStandardized;
-  throw ValueError("unknown cost model '" + std::string(name) +
-                   "': expected topological, absolute or standardized");
+  return kEditCostKindNames.from_name(name);
 }
 
 FeatureCostModel::FeatureCostModel(std::size_t dims, std::vector<double> features_a,

@@ -11,14 +11,20 @@
 #include <string_view>
 #include <vector>
 
+#include "fspm/name_table.hpp"
 #include "fspm/tree_graph.hpp"
 
 namespace fspm {
 
 enum class EditCostKind { kTopological, kAbsolute, kStandardized };
 
-inline constexpr EditCostKind kEditCostKinds[] = {
-    EditCostKind::kTopological, EditCostKind::kAbsolute, EditCostKind::kStandardized};
+inline constexpr NameTable<EditCostKind, 3> kEditCostKindNames{
+    "cost model",
+    {{EditCostKind::kTopological, "topological", "delete and insert cost 1, relabel 0"},
+     {EditCostKind::kAbsolute, "absolute", "costs from the attribute values and their differences"},
+     {EditCostKind::kStandardized, "standardized",
+      "the same on attributes standardized over both trees, Pirk eq. 4.23-4.26"}}};
+inline constexpr auto kEditCostKinds = kEditCostKindNames.values();
 
 // "topological", "absolute", "standardized".
 std::string_view edit_cost_kind_name(EditCostKind kind);

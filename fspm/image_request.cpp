@@ -1,37 +1,32 @@
 #include "fspm/image_request.hpp"
 
+#include <algorithm>
 #include <charconv>
+#include <iterator>
 #include <string>
 
 #include "fspm/error.hpp"
+#include "fspm/name_table.hpp"
 
 namespace fspm {
+namespace {
 
-std::string_view view_name(View view) {
-  switch (view) {
-    case View::kFront:
-      return "front";
-    case View::kSide:
-      return "side";
-    case View::kTop:
-      return "top";
-    case View::kIso:
-      return "iso";
-  }
-  return "front";
-}
+constexpr NameTable<View, 4> kViewNames{"view",
+                                        {{View::kFront, "front", "along +y"},
+                                         {View::kSide, "side", "along -x"},
+                                         {View::kTop, "top", "down -z"},
+                                         {View::kIso, "iso", "from a raised corner"}}};
+static_assert(std::size(kViews) == kViewNames.size() &&
+                  std::equal(std::begin(kViews), std::end(kViews), kViewNames.values().begin()),
+              "every view has its name, in the order of kViews");
 
-std::optional<View> find_view(std::string_view name) {
-  for (View v : kViews) {
-    if (view_name(v) == name) return v;
-  }
-  return std::nullopt;
-}
+}  // namespace
 
-View view_from_name(std::string_view name) {
-  if (const std::optional<View> v = find_view(name)) return *v;
-  throw ValueError("unknown view '" + std::string(name) + "' (expected front, side, top or iso)");
-}
+std::string_view view_name(View view) { return kViewNames.name(view); }
+
+std::optional<View> find_view(std::string_view name) { return kViewNames.find(name); }
+
+View view_from_name(std::string_view name) { return kViewNames.from_name(name); }
 
 std::optional<ImageSize> find_image_size(std::string_view text) {
   const auto x = text.find_first_of("xX");

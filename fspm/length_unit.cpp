@@ -3,30 +3,24 @@
 #include <string>
 
 #include "fspm/error.hpp"
+#include "fspm/name_table.hpp"
 
 namespace fspm {
+namespace {
 
-std::string_view length_unit_name(LengthUnit unit) {
-  switch (unit) {
-    case LengthUnit::kMetre:
-      return "m";
-    case LengthUnit::kDecimetre:
-      return "dm";
-    case LengthUnit::kCentimetre:
-      return "cm";
-    case LengthUnit::kMillimetre:
-      return "mm";
-  }
-  return "m";
-}
+constexpr NameTable<LengthUnit, 4> kLengthUnitNames{
+    "unit",
+    {{LengthUnit::kMetre, "m", "metres"},
+     {LengthUnit::kDecimetre, "dm", "decimetres"},
+     {LengthUnit::kCentimetre, "cm", "centimetres"},
+     {LengthUnit::kMillimetre, "mm", "millimetres"}}};
+
+}  // namespace
+
+std::string_view length_unit_name(LengthUnit unit) { return kLengthUnitNames.name(unit); }
 
 LengthUnit length_unit_from_name(std::string_view name, std::string_view what) {
-  for (LengthUnit u : {LengthUnit::kMetre, LengthUnit::kDecimetre, LengthUnit::kCentimetre,
-                       LengthUnit::kMillimetre}) {
-    if (length_unit_name(u) == name) return u;
-  }
-  throw ValueError(std::string(what) + ": unknown unit '" + std::string(name) +
-                   "': expected m, dm, cm or mm");
+  return kLengthUnitNames.from_name(name, what);
 }
 
 double metres_per_unit(LengthUnit unit) {

@@ -93,23 +93,11 @@ double normal_cdf(double z) { return boost::math::cdf(boost::math::normal(), z);
 }  // namespace
 
 std::string_view alternative_name(Alternative alternative) {
-  switch (alternative) {
-    case Alternative::kTwoSided:
-      return "two-sided";
-    case Alternative::kLess:
-      return "less";
-    case Alternative::kGreater:
-      return "greater";
-  }
-  return "two-sided";
+  return kAlternativeNames.name(alternative);
 }
 
 Alternative alternative_from_name(std::string_view name) {
-  if (name == "two-sided") return Alternative::kTwoSided;
-  if (name == "less") return Alternative::kLess;
-  if (name == "greater") return Alternative::kGreater;
-  throw ValueError("unknown alternative '" + std::string(name) +
-                   "': expected two-sided, less or greater");
+  return kAlternativeNames.from_name(name);
 }
 
 double mean(std::span<const double> values) {

@@ -8,13 +8,19 @@
 #include <string_view>
 #include <vector>
 
+#include "fspm/name_table.hpp"
+
 namespace fspm {
 
 // The alternative hypothesis about mean_a - mean_b (or the location shift of a against b).
 enum class Alternative { kTwoSided, kLess, kGreater };
 
-inline constexpr Alternative kAlternatives[] = {Alternative::kTwoSided, Alternative::kLess,
-                                                Alternative::kGreater};
+inline constexpr NameTable<Alternative, 3> kAlternativeNames{
+    "alternative",
+    {{Alternative::kTwoSided, "two-sided", "a and b differ"},
+     {Alternative::kLess, "less", "a below b"},
+     {Alternative::kGreater, "greater", "a above b"}}};
+inline constexpr auto kAlternatives = kAlternativeNames.values();
 // "two-sided", "less", "greater".
 std::string_view alternative_name(Alternative alternative);
 // Inverse of alternative_name; throws ValueError on an unknown name.

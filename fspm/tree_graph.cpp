@@ -7,8 +7,19 @@
 #include "fspm/columns.hpp"
 #include "fspm/error.hpp"
 #include "fspm/huge_pages.hpp"
+#include "fspm/name_table.hpp"
 
 namespace fspm {
+namespace {
+
+constexpr NameTable<OrganKind, 4> kOrganKindNames{
+    "organ kind",
+    {{OrganKind::kInternode, "internode", "a stem segment"},
+     {OrganKind::kLeaf, "leaf", "a leaf"},
+     {OrganKind::kFlower, "flower", "a flower or fruit"},
+     {OrganKind::kBud, "bud", "a bud"}}};
+
+}  // namespace
 
 double TreeGraph::bytes_per_node(std::size_t user_attributes) {
   return 4.0 * sizeof(NodeId) + 3.0 * sizeof(Eigen::Vector3d) + 3.0 * sizeof(double) +
@@ -16,28 +27,9 @@ double TreeGraph::bytes_per_node(std::size_t user_attributes) {
          sizeof(double) * static_cast<double>(user_attributes);
 }
 
-std::string_view organ_kind_name(OrganKind kind) {
-  switch (kind) {
-    case OrganKind::kInternode:
-      return "internode";
-    case OrganKind::kLeaf:
-      return "leaf";
-    case OrganKind::kFlower:
-      return "flower";
-    case OrganKind::kBud:
-      return "bud";
-  }
-  return "internode";
-}
+std::string_view organ_kind_name(OrganKind kind) { return kOrganKindNames.name(kind); }
 
-OrganKind organ_kind_from_name(std::string_view name) {
-  for (OrganKind k :
-       {OrganKind::kInternode, OrganKind::kLeaf, OrganKind::kFlower, OrganKind::kBud}) {
-    if (organ_kind_name(k) == name) return k;
-  }
-  throw ValueError("unknown organ kind '" + std::string(name) +
-                   "', expected internode, leaf, flower or bud");
-}
+OrganKind organ_kind_from_name(std::string_view name) { return kOrganKindNames.from_name(name); }
 
 NodeId TreeGraph::add_node(NodeId parent, const NodeData& d) {
   const NodeId id = static_cast<NodeId>(size());

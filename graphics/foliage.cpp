@@ -6,8 +6,18 @@
 #include <string>
 
 #include "fspm/error.hpp"
+#include "fspm/name_table.hpp"
 
 namespace fspm::graphics {
+namespace {
+
+constexpr NameTable<FoliageMode, 2> kFoliageModeNames{
+    "foliage",
+    {{FoliageMode::kLeaves, "leaves", "leaf quads in each cluster"},
+     {FoliageMode::kVolumes, "volumes", "one translucent sphere per cluster"}}};
+
+}  // namespace
+
 namespace {
 
 // Farthest point of a leaf quad from its base, as a fraction of the cluster radius.
@@ -96,9 +106,7 @@ void write_volume(const Eigen::Vector3d& center, double radius_m, const FoliageO
 }  // namespace
 
 FoliageMode foliage_mode_from_name(std::string_view name) {
-  if (name == "leaves") return FoliageMode::kLeaves;
-  if (name == "volumes") return FoliageMode::kVolumes;
-  throw ValueError("unknown foliage '" + std::string(name) + "' (expected leaves or volumes)");
+  return kFoliageModeNames.from_name(name);
 }
 
 void validate_foliage(const FoliageOptions& o) {

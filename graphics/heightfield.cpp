@@ -6,6 +6,7 @@
 
 #include "fspm/error.hpp"
 #include "fspm/memory_budget.hpp"
+#include "fspm/vertex_normals.hpp"
 
 namespace fspm::graphics {
 namespace {
@@ -20,13 +21,7 @@ std::vector<int> grid_lines(int count, int stride) {
 
 // Area-weighted vertex normals from the triangles around each vertex.
 void add_normals(TriangleMesh& mesh) {
-  mesh.normals.assign(mesh.positions.size(), Eigen::Vector3f::Zero());
-  for (const auto& t : mesh.triangles) {
-    const Eigen::Vector3f n = (mesh.positions[t[1]] - mesh.positions[t[0]])
-                                  .cross(mesh.positions[t[2]] - mesh.positions[t[0]]);
-    for (std::uint32_t v : t) mesh.normals[v] += n;
-  }
-  for (auto& n : mesh.normals) n = n.norm() > 0.0f ? n.normalized() : Eigen::Vector3f::UnitZ();
+  mesh.normals = area_weighted_vertex_normals(mesh.positions, mesh.triangles);
 }
 
 }  // namespace

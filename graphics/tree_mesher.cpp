@@ -8,21 +8,25 @@
 
 #include "fspm/error.hpp"
 #include "fspm/memory_budget.hpp"
+#include "fspm/name_table.hpp"
 #include "fspm/tree_traversal.hpp"
 #include "graphics/bspline_refinement.hpp"
 #include "graphics/parallel_transport.hpp"
 
 namespace fspm::graphics {
+namespace {
 
-std::string_view junction_mode_name(JunctionMode mode) {
-  return mode == JunctionMode::kContinuous ? "continuous" : "separate";
-}
+constexpr NameTable<JunctionMode, 2> kJunctionModeNames{
+    "junction mode",
+    {{JunctionMode::kSeparate, "separate", "one tube per chain, capped at forks"},
+     {JunctionMode::kContinuous, "continuous", "one closed skin through the branch points"}}};
+
+}  // namespace
+
+std::string_view junction_mode_name(JunctionMode mode) { return kJunctionModeNames.name(mode); }
 
 JunctionMode junction_mode_from_name(std::string_view name) {
-  if (name == "separate") return JunctionMode::kSeparate;
-  if (name == "continuous") return JunctionMode::kContinuous;
-  throw ValueError("unknown junction mode '" + std::string(name) +
-                   "' (expected separate or continuous)");
+  return kJunctionModeNames.from_name(name);
 }
 namespace {
 

@@ -5,43 +5,29 @@
 #include <limits>
 
 #include "fspm/error.hpp"
+#include "fspm/name_table.hpp"
 
 namespace fspm::graphics {
 
-std::string_view material_name(Material material) {
-  switch (material) {
-    case Material::kLeaf:
-      return "leaf";
-    case Material::kObstacle:
-      return "obstacle";
-    case Material::kCrown:
-      return "crown";
-    case Material::kTranslucentObstacle:
-      return "translucent_obstacle";
-    case Material::kTerrain:
-      return "terrain";
-    case Material::kBark:
-      break;
-  }
-  return "bark";
-}
+namespace {
 
-std::optional<Material> find_material(std::string_view name) {
-  for (const Material m : kMaterials) {
-    if (name == material_name(m)) return m;
-  }
-  return std::nullopt;
-}
+constexpr NameTable<Material, 6> kMaterialNames{
+    "material",
+    {{Material::kBark, "bark", "branches and trunk"},
+     {Material::kLeaf, "leaf", "leaves"},
+     {Material::kObstacle, "obstacle", "opaque obstacles"},
+     {Material::kCrown, "crown", "leaf-cluster volumes"},
+     {Material::kTranslucentObstacle, "translucent_obstacle", "obstacles letting light through"},
+     {Material::kTerrain, "terrain", "the ground"}}};
+static_assert(kMaterialNames.values() == kMaterials, "every material has its name");
 
-Material material_from_name(std::string_view name) {
-  if (const auto m = find_material(name)) return *m;
-  std::string names;
-  for (const Material m : kMaterials) {
-    names += names.empty() ? "" : ", ";
-    names += material_name(m);
-  }
-  throw ValueError("unknown material '" + std::string(name) + "' (expected " + names + ")");
-}
+}  // namespace
+
+std::string_view material_name(Material material) { return kMaterialNames.name(material); }
+
+std::optional<Material> find_material(std::string_view name) { return kMaterialNames.find(name); }
+
+Material material_from_name(std::string_view name) { return kMaterialNames.from_name(name); }
 
 std::array<float, 3> material_color(Material material) {
   switch (material) {

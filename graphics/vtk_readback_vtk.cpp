@@ -12,6 +12,7 @@
 #include <filesystem>
 
 #include "fspm/error.hpp"
+#include "fspm/vertex_normals.hpp"
 #include "graphics/vtk_readback.hpp"
 
 namespace fspm::graphics {
@@ -101,22 +102,15 @@ TriangleMesh read_vtp_mesh(const std::string& path) {
       mesh.materials.push_back(m);
     }
   }
-  mesh.normals.assign(mesh.positions.size(), Eigen::Vector3f::Zero());
   if (normals != nullptr && normals->GetNumberOfComponents() == 3) {
+    mesh.normals.assign(mesh.positions.size(), Eigen::Vector3f::Zero());
     for (vtkIdType i = 0; i < nv; ++i) {
       mesh.normals[i] = Eigen::Vector3f(static_cast<float>(normals->GetComponent(i, 0)),
                                         static_cast<float>(normals->GetComponent(i, 1)),
                                         static_cast<float>(normals->GetComponent(i, 2)));
     }
-  } else {  // area-weighted vertex normals
-    for (const auto& t : mesh.triangles) {
-      const Eigen::Vector3f n = (mesh.positions[t[1]] - mesh.positions[t[0]])
-                                    .cross(mesh.positions[t[2]] - mesh.positions[t[0]]);
-      for (auto i : t) mesh.normals[i] += n;
-    }
-    for (auto& n : mesh.normals) {
-      n = n.norm() > 0.0f ? Eigen::Vector3f(n.normalized()) : Eigen::Vector3f::UnitZ();
-    }
+  } else {
+    mesh.normals = area_weighted_vertex_normals(mesh.positions, mesh.triangles);
   }
   for (int a = 0; a < pd->GetNumberOfArrays(); ++a) {
     vtkDataArray* array = pd->GetArray(a);

@@ -302,7 +302,7 @@ void bind_growth_light(py::class_<env::GrowthParams>& gp) {
       [](env::GrowthParams& p, const std::string& name) {
         p.light_model = env::bud_light_model_from_name(name);
       },
-      "Where buds get light: 'sky', 'shadow_grid' or 'space_colonization'");
+      ("Where buds get light: " + env::kBudLightModelNames.help()).c_str());
   using GP = env::GrowthParams;
   using SG = env::ShadowGridParams;
   using SC = env::SpaceColonizationParams;
@@ -562,8 +562,8 @@ void bind_analysis_params(py::module_& m) {
       [](env::AnalysisParams& p, const std::string& name) {
         p.light_model = env::cluster_light_model_from_name(name);
       },
-      "Light of the leaf clusters: 'canopy' (the leaves as turbid media, the default), 'sky' "
-      "(hemisphere, clusters as caps, Pirk eq. 4.3) or 'shadow_grid'");
+      ("Light of the leaf clusters (default canopy): " + env::kClusterLightModelNames.help())
+          .c_str());
   Fields<env::AnalysisParams>(ap)
       .existing("light_model")
       .add("skeleton_radius_m", &env::AnalysisParams::skeleton_radius_m,

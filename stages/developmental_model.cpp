@@ -48,15 +48,11 @@ double pipe_root(double r_u, double inv_u) {
 }  // namespace
 
 std::string_view continuation_name(Continuation continuation) {
-  return continuation == Continuation::kThickest ? "thickest" : "least_deviation";
+  return kContinuationNames.name(continuation);
 }
 
 Continuation continuation_from_name(std::string_view name) {
-  for (Continuation c : {Continuation::kThickest, Continuation::kLeastDeviation}) {
-    if (name == continuation_name(c)) return c;
-  }
-  throw ValueError("stages: unknown continuation '" + std::string(name) + "'" +
-                   closest_name_hint(name, {"thickest", "least_deviation"}));
+  return kContinuationNames.from_name(name, "stages");
 }
 
 void StagesParams::validate() const {

@@ -32,6 +32,7 @@
 #include <utility>
 #include <vector>
 
+#include "fspm/name_table.hpp"
 #include "fspm/tree_graph.hpp"
 #include "stages/added_structures.hpp"
 #include "stages/branch_edits.hpp"
@@ -45,6 +46,11 @@ enum class Continuation : std::uint8_t {
   kLeastDeviation,  // Pirk 5.2.2: the child deviating least from the parent's direction
   kThickest,        // the thickest child (the least deviating of those within the tolerance)
 };
+inline constexpr NameTable<Continuation, 2> kContinuationNames{
+    "continuation",
+    {{Continuation::kLeastDeviation, "least_deviation",
+      "the child deviating least from the parent's direction, Pirk 5.2.2"},
+     {Continuation::kThickest, "thickest", "the thickest child"}}};
 
 // "least_deviation", "thickest".
 std::string_view continuation_name(Continuation continuation);

@@ -29,26 +29,11 @@ double logistic_inverse(double share) {
 }  // namespace
 
 std::string_view profile_choice_name(ProfileChoice choice) {
-  switch (choice) {
-    case ProfileChoice::kByChain:
-      return "by_chain";
-    case ProfileChoice::kLogistic:
-      return "logistic";
-    case ProfileChoice::kAccelerating:
-      return "accelerating";
-    case ProfileChoice::kConstant:
-      break;
-  }
-  return "constant";
+  return kProfileChoiceNames.name(choice);
 }
 
 ProfileChoice profile_choice_from_name(std::string_view name) {
-  for (ProfileChoice c : kProfileChoices) {
-    if (name == profile_choice_name(c)) return c;
-  }
-  throw ValueError("stages: unknown growth profile choice '" + std::string(name) +
-                   "' (expected constant, by_chain, logistic or accelerating)" +
-                   closest_name_hint(name, {"constant", "by_chain", "logistic", "accelerating"}));
+  return kProfileChoiceNames.from_name(name, "stages");
 }
 
 std::string_view growth_profile_name(GrowthProfile profile) {

@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <string_view>
 
+#include "fspm/name_table.hpp"
+
 namespace fspm::stages {
 
 enum class GrowthProfile : std::uint8_t { kConstant, kLogistic, kAccelerating };
@@ -21,9 +23,14 @@ enum class ProfileChoice : std::uint8_t {
   kLogistic,      // every chain an S-curve over its whole span (tau_end = 1)
   kAccelerating,  // every chain tau^k
 };
-inline constexpr ProfileChoice kProfileChoices[] = {
-    ProfileChoice::kConstant, ProfileChoice::kByChain, ProfileChoice::kLogistic,
-    ProfileChoice::kAccelerating};
+inline constexpr NameTable<ProfileChoice, 4> kProfileChoiceNames{
+    "growth profile choice",
+    {{ProfileChoice::kConstant, "constant", "eq. 5.3 for every chain"},
+     {ProfileChoice::kByChain, "by_chain",
+      "accelerating for short slow chains that start late, constant for the others"},
+     {ProfileChoice::kLogistic, "logistic", "every chain an S-curve"},
+     {ProfileChoice::kAccelerating, "accelerating", "every chain tau^k"}}};
+inline constexpr auto kProfileChoices = kProfileChoiceNames.values();
 
 // "constant", "by_chain", "logistic", "accelerating".
 std::string_view profile_choice_name(ProfileChoice choice);

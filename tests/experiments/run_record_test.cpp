@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "experiments/run_execution.hpp"
+#include "fspm/error.hpp"
 
 namespace fspm::experiments {
 namespace {
@@ -64,6 +65,20 @@ TEST(RunRecord, TextRoundTripKeepsEveryField) {
     EXPECT_EQ(back.files, r.files);
     EXPECT_EQ(back.finished_at, r.finished_at);
   }
+}
+
+}  // namespace
+}  // namespace fspm::experiments
+
+namespace fspm::experiments {
+namespace {
+
+TEST(RunStatusNames, EveryStatusBothWays) {
+  for (RunStatus s : {RunStatus::kOk, RunStatus::kError, RunStatus::kTimeout}) {
+    EXPECT_EQ(run_status_from_name(run_status_name(s)), s);
+  }
+  EXPECT_EQ(run_status_name(RunStatus::kTimeout), "timeout");
+  EXPECT_THROW(run_status_from_name("okay"), ValueError);
 }
 
 }  // namespace

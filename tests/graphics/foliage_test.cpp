@@ -115,6 +115,7 @@ TEST(Foliage, CrownVolumesAreClosedSpheres) {
 
 TEST(Foliage, BadNamesAndOptionsAreUserErrors) {
   EXPECT_EQ(foliage_mode_from_name("volumes"), FoliageMode::kVolumes);
+  EXPECT_EQ(foliage_mode_from_name("leaves"), FoliageMode::kLeaves);
   EXPECT_THROW(foliage_mode_from_name("fog"), ValueError);
   MeshOptions o = with_foliage(FoliageMode::kLeaves);
   o.foliage.leaf_length_ratio = 1.5;  // a leaf longer than the cluster's radius
