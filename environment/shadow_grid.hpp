@@ -15,8 +15,8 @@
 // given the direction the light comes from on average (a real sky's PAR-weighted mean direction,
 // sky_distribution.hpp): then every pyramid leans along it, layer k + q above a voxel summed over
 // the square of half width q around the point q layers up that direction (rounded to a voxel), as
-// a sun-direction shadow is swept through a voxel model layer by layer (Gorte et al. 2018), so
-// shade falls on the side away from the sun.
+// voxels in the sun's shadow are found from its azimuth and elevation in voxel models of cities
+// (Gorte et al. 2018), so shade falls on the side away from the sun.
 //
 // The pyramid sum is computed per layer from 2D summed-area tables, so a voxel's shade costs
 // O(q_max) whatever the number of buds; it is computed only for the voxels asked about. Buffers
