@@ -44,6 +44,7 @@ void ShadowGrid::set_params(const ShadowGridParams& params) {
         "shadow grid: expected voxel_size_m > 0, shadow_a > 0, shadow_b > 1, "
         "shadow_depth_voxels >= 0 and full_light > 0");
   }
+  lean_ = Eigen::Vector2d::Zero();  // a pooled grid does not keep a former sky's lean
   update_lean_shifts();
 }
 

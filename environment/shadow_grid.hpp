@@ -45,7 +45,8 @@ struct ShadowGridParams {
 class ShadowGrid {
  public:
   explicit ShadowGrid(const ShadowGridParams& params);
-  // New parameters for a grid whose buffers are reused; call reset() before adding anything.
+  // New parameters for a grid whose buffers are reused, with the vertical pyramid again; call
+  // reset() before adding anything.
   void set_params(const ShadowGridParams& params);
 
   // Leans every pyramid toward `toward_light` (z > 0, any length; the zenith gives Palubicki's

@@ -256,6 +256,9 @@ TEST(ShadowGrid, LeaningPyramidEqualsTheDirectSum) {
   lone.propagate();
   EXPECT_NEAR(lone.spread_bud_light(at), 1.0, 1e-12);
   EXPECT_THROW(lone.set_light_direction({1.0, 0.0, 0.0}), ValueError);
+  // New parameters (a grid taken from a pool) bring back the vertical pyramid.
+  lone.set_params(p);
+  EXPECT_EQ(lone.light_axis(), Eigen::Vector3d::UnitZ());
 }
 
 // Light from the zenith is Palubicki's vertical pyramid, shade for shade.
