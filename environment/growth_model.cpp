@@ -65,6 +65,8 @@ class Grower {
     if (p_.site_sky) {
       site_light_ = std::make_shared<const SkyDistribution>(sky_distribution(*p_.site_sky));
       scene_.sky.brightest = site_light_->mean_direction();
+      // The shadow grid's pyramids lean along it, so shade falls away from the sun.
+      grid_.set_light_direction(scene_.sky.brightest);
     }
     wsum_ = p_.phototropism + p_.gravitropism;
     // Pirk eq. 4.7 with l_s = l_i: each internode keeps (1 - sum w)^1 of its default direction.

@@ -44,14 +44,50 @@ void ShadowGrid::set_params(const ShadowGridParams& params) {
         "shadow grid: expected voxel_size_m > 0, shadow_a > 0, shadow_b > 1, "
         "shadow_depth_voxels >= 0 and full_light > 0");
   }
+  lean_ = Eigen::Vector2d::Zero();  // a pooled grid does not keep a former sky's lean
+  update_lean_shifts();
+}
+
+void ShadowGrid::set_light_direction(const Eigen::Vector3d& toward_light) {
+  if (!toward_light.allFinite() || !(toward_light.z() > 0)) {
+    throw ValueError("shadow grid: expected a light direction above the horizon (z > 0)");
+  }
+  Eigen::Vector2d lean = toward_light.head<2>() / toward_light.z();
+  const double max_tan = std::tan(kMaxLeanDeg * 3.14159265358979323846 / 180.0);
+  if (lean.norm() > max_tan) lean *= max_tan / lean.norm();
+  lean_ = lean;
+  n_ = Eigen::Vector3i::Zero();  // the margins change: reset() first
+  update_lean_shifts();
+}
+
+void ShadowGrid::update_lean_shifts() {
+  shift_x_.assign(p_.depth_voxels + 1, 0);
+  shift_y_.assign(p_.depth_voxels + 1, 0);
+  leaning_ = false;
+  for (int q = 0; q <= p_.depth_voxels; ++q) {
+    shift_x_[q] = static_cast<int>(std::lround(q * lean_.x()));
+    shift_y_[q] = static_cast<int>(std::lround(q * lean_.y()));
+    leaning_ = leaning_ || shift_x_[q] != 0 || shift_y_[q] != 0;
+  }
+}
+
+void ShadowGrid::voxel_span(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
+                            Eigen::Vector3d& first, Eigen::Vector3d& last) const {
+  const double h = p_.voxel_size_m;
+  const int reach = p_.depth_voxels + 1;
+  // Shade comes from up to the last layer's shift further toward the light.
+  const int sx = shift_x_.back(), sy = shift_y_.back();
+  first = (lo / h).array().floor() -
+          Eigen::Array3d(reach + std::max(0, -sx), reach + std::max(0, -sy), 1);
+  last = (hi / h).array().floor() +
+         Eigen::Array3d(reach + std::max(0, sx), reach + std::max(0, sy), reach);
 }
 
 void ShadowGrid::reset(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
   const double h = p_.voxel_size_m;
-  const int reach = p_.depth_voxels + 1;
   // Voxels are aligned to multiples of h so that the same point always falls in the same voxel.
-  const Eigen::Vector3d first = (lo / h).array().floor() - Eigen::Array3d(reach, reach, 1);
-  const Eigen::Vector3d last = (hi / h).array().floor() + Eigen::Array3d(reach, reach, reach);
+  Eigen::Vector3d first, last;
+  voxel_span(lo, hi, first, last);
   const double voxels = (last - first + Eigen::Vector3d::Ones()).prod();
   if (!(voxels <= kMaxVoxels)) {
     throw ValueError(
@@ -98,9 +134,8 @@ void ShadowGrid::clear_buds() {
 bool ShadowGrid::covers(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) const {
   // The same voxel range reset() would choose for [lo, hi] must lie inside the grid.
   const double h = p_.voxel_size_m;
-  const int reach = p_.depth_voxels + 1;
-  const Eigen::Vector3d first = (lo / h).array().floor() - Eigen::Array3d(reach, reach, 1);
-  const Eigen::Vector3d last = (hi / h).array().floor() + Eigen::Array3d(reach, reach, reach);
+  Eigen::Vector3d first, last;
+  voxel_span(lo, hi, first, last);
   const Eigen::Vector3d have = (origin_ / h).array().round();
   return n_.prod() > 0 && (first.array() >= have.array()).all() &&
          (last.array() < (have + n_.cast<double>()).array()).all();
@@ -308,6 +343,7 @@ double ShadowGrid::voxel_shade(std::size_t at, int i, int j, int k) const {
 double ShadowGrid::pyramid_sum(int i, int j, int k) const {
   // Palubicki: s(i, j, k) = sum over q of b^-q times the sources of layer k + q within the
   // square of half width q above (i, j).
+  if (leaning_) return leaning_pyramid_sum(i, j, k);
   const int q_max = p_.depth_voxels;
   const int q_last = std::min(q_max, n_.z() - 1 - k);
   double sum = 0.0;
@@ -328,6 +364,17 @@ double ShadowGrid::pyramid_sum(int i, int j, int k) const {
     const std::size_t hi_col = static_cast<std::size_t>(i + q + 1);
     sum += falloff_[q] * (layer[hi_row + hi_col] - layer[lo_row + hi_col] - layer[hi_row + lo_col] +
                           layer[lo_row + lo_col]);
+  }
+  return sum;
+}
+
+double ShadowGrid::leaning_pyramid_sum(int i, int j, int k) const {
+  // The same squares centred q layers up the light direction: (i + shift_x[q], j + shift_y[q]).
+  const int q_last = std::min(p_.depth_voxels, n_.z() - 1 - k);
+  double sum = 0.0;
+  for (int q = 0; q <= q_last; ++q) {
+    const int ci = i + shift_x_[q], cj = j + shift_y_[q];
+    sum += falloff_[q] * box_sum(k + q, ci - q, ci + q, cj - q, cj + q);
   }
   return sum;
 }
@@ -375,6 +422,17 @@ void ShadowGrid::add_bud_spread(const Corners& k, double weight) {
   }
 }
 
+double ShadowGrid::upper_share_in_square(const Corners& k, int c) const {
+  // Under a lean a lower corner's square one layer up is centred shift(1) voxels aside and may
+  // leave out some of the upper corners.
+  double share = 0.0;
+  for (int u = 4; u < 8; ++u) {
+    const int dx = (u & 1) - (c & 1), dy = ((u >> 1) & 1) - ((c >> 1) & 1);
+    if (std::abs(dx - shift_x_[1]) <= 1 && std::abs(dy - shift_y_[1]) <= 1) share += k.w[u];
+  }
+  return share;
+}
+
 // Palubicki's Q / C at each corner without the bud's own shade: its share a w at the corner
 // itself, and at a lower corner the upper corners' shares one layer up (every lower corner's
 // pyramid takes in all four, at b^-1). Outside the grid nothing shades.
@@ -397,7 +455,8 @@ double ShadowGrid::spread_bud_light(const Corners& k) const {
     const std::size_t at = k.all_inside ? corner_index(k, c) : index(v.x(), v.y(), v.z());
     if (obstacle_[at]) continue;
     const bool upper = (c >> 2) != 0;
-    const double own = p_.shade_a * (w + (upper ? 0.0 : upper_share / p_.shade_b));
+    const double below = upper ? 0.0 : leaning_ ? upper_share_in_square(k, c) : upper_share;
+    const double own = p_.shade_a * (w + below / p_.shade_b);
     const double s = voxel_shade(at, v.x(), v.y(), v.z()) - own;
     light += w * std::min(std::max(p_.full_light - s, 0.0) / p_.full_light, 1.0);
   }
@@ -406,13 +465,13 @@ double ShadowGrid::spread_bud_light(const Corners& k) const {
 
 Eigen::Vector3d ShadowGrid::spread_light_direction(const Eigen::Vector3d& p) const {
   Corners k;
-  if (!locate(p, k)) return Eigen::Vector3d::UnitZ();
+  if (!locate(p, k)) return light_axis();
   Eigen::Vector3d d = Eigen::Vector3d::Zero();
   for (int c = 0; c < 8; ++c) {
     const double w = k.w[c];
     if (w <= 0.0) continue;
     const Eigen::Vector3i v = k.base + corner_offset(c);
-    d += w * (k.all_inside || inside(v) ? light_direction_at(v) : Eigen::Vector3d::UnitZ());
+    d += w * (k.all_inside || inside(v) ? light_direction_at(v) : light_axis());
   }
   return d.normalized();
 }
@@ -469,7 +528,7 @@ Eigen::Vector3d ShadowGrid::growth_direction(const Eigen::Vector3d& p) const {
 
 Eigen::Vector3d ShadowGrid::light_direction(const Eigen::Vector3d& p) const {
   Eigen::Vector3i v;
-  if (!voxel_of(p, v)) return Eigen::Vector3d::UnitZ();
+  if (!voxel_of(p, v)) return light_axis();
   return light_direction_at(v);
 }
 
@@ -487,10 +546,13 @@ Eigen::Vector3d ShadowGrid::light_direction_at(const Eigen::Vector3i& v) const {
   const Eigen::Vector2d away(
       shade_at(v - Eigen::Vector3i::UnitX()) - shade_at(v + Eigen::Vector3i::UnitX()),
       shade_at(v - Eigen::Vector3i::UnitY()) - shade_at(v + Eigen::Vector3i::UnitY()));
+  // Under a lean the cone's axis is the light direction (lean_ = 0 at the zenith).
   const double norm = away.norm();
-  if (norm <= 1e-12) return Eigen::Vector3d::UnitZ();
+  if (norm <= 1e-12) return light_axis();
   const double tilt = std::min(1.0, norm / p_.full_light);  // tan of the tilt angle
-  return Eigen::Vector3d(tilt * away.x() / norm, tilt * away.y() / norm, 1.0).normalized();
+  return Eigen::Vector3d(lean_.x() + tilt * away.x() / norm, lean_.y() + tilt * away.y() / norm,
+                         1.0)
+      .normalized();
 }
 
 }  // namespace fspm::environment

@@ -11,7 +11,12 @@
 // bud inside it, never chosen as a growth direction) and casts obstacle_shade * C * (1 -
 // translucency) times the share of the voxel it fills into the pyramid below it, so an opaque
 // roof darkens what lies under it and a wall shades the buds within about q_max voxels of it. The
-// pyramid is vertical: the sky's brightest point is taken at the zenith, as in Palubicki's model.
+// pyramid is vertical, the light taken from the zenith as in Palubicki's model, unless the grid is
+// given the direction the light comes from on average (a real sky's PAR-weighted mean direction,
+// sky_distribution.hpp): then every pyramid leans along it, layer k + q above a voxel summed over
+// the square of half width q around the point q layers up that direction (rounded to a voxel), as
+// voxels in the sun's shadow are found from its azimuth and elevation in voxel models of cities
+// (Gorte et al. 2018), so shade falls on the side away from the sun.
 //
 // The pyramid sum is computed per layer from 2D summed-area tables, so a voxel's shade costs
 // O(q_max) whatever the number of buds; it is computed only for the voxels asked about. Buffers
@@ -40,8 +45,22 @@ struct ShadowGridParams {
 class ShadowGrid {
  public:
   explicit ShadowGrid(const ShadowGridParams& params);
-  // New parameters for a grid whose buffers are reused; call reset() before adding anything.
+  // New parameters for a grid whose buffers are reused, with the vertical pyramid again; call
+  // reset() before adding anything.
   void set_params(const ShadowGridParams& params);
+
+  // Leans every pyramid toward `toward_light` (z > 0, any length; the zenith gives Palubicki's
+  // vertical pyramid and the same shades bit for bit), by at most kMaxLeanDeg from the zenith;
+  // call before reset(). Throws ValueError for a direction that is not finite or not above the
+  // horizon.
+  void set_light_direction(const Eigen::Vector3d& toward_light);
+  // The lean's axis: the unit vector the pyramids lean toward (the zenith by default).
+  Eigen::Vector3d light_axis() const {
+    return Eigen::Vector3d(lean_.x(), lean_.y(), 1.0).normalized();
+  }
+  // A lower mean light direction leans the pyramids this much: its shade lands within
+  // q_max tan(60 deg) voxels to the side instead of running off along the grid.
+  static constexpr double kMaxLeanDeg = 60.0;
 
   // Empties the grid and sizes it to cover every bud inside [lo, hi] together with every voxel
   // whose shade can reach them (q_max voxels beside and above).
@@ -66,9 +85,10 @@ class ShadowGrid {
   // Unit vector from p towards the least shaded neighbouring voxels (their mean when several tie);
   // straight up when every neighbour is an obstacle.
   Eigen::Vector3d growth_direction(const Eigen::Vector3d& p) const;
-  // Mean light direction at p: the zenith tilted toward the less shaded side (central differences
-  // over the four side neighbours, an obstacle voxel counting as C + a of shade) by up to the 45
-  // degrees of the shadow pyramid. Smooth where growth_direction picks one of 26.
+  // Mean light direction at p: the zenith (the lean's axis) tilted toward the less shaded side
+  // (central differences over the four side neighbours, an obstacle voxel counting as C + a of
+  // shade) by up to the 45 degrees of the shadow pyramid. Smooth where growth_direction picks one
+  // of 26.
   Eigen::Vector3d light_direction(const Eigen::Vector3d& p) const;
 
   // The same spread over the eight voxel centres around p with trilinear weights (summing to 1):
@@ -101,6 +121,14 @@ class ShadowGrid {
 
  private:
   bool voxel_of(const Eigen::Vector3d& p, Eigen::Vector3i& v) const;
+  // The voxel range reset() gives to buds in [lo, hi]: q_max + 1 voxels beside and above, and on
+  // the side the pyramids lean toward as many more as they shift.
+  void voxel_span(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, Eigen::Vector3d& first,
+                  Eigen::Vector3d& last) const;
+  void update_lean_shifts();
+  double leaning_pyramid_sum(int i, int j, int k) const;
+  // The weight of the upper corners inside lower corner c's square one layer up.
+  double upper_share_in_square(const Corners& k, int c) const;
   bool inside(const Eigen::Vector3i& v) const {
     return (v.array() >= 0).all() && (v.array() < n_.array()).all();
   }
@@ -141,6 +169,11 @@ class ShadowGrid {
   std::uint32_t stamp_ = 1;
   std::vector<std::size_t> touched_;  // voxels add_bud() changed since the last clear
   std::vector<double> falloff_;       // b^-q
+  // The lean: horizontal shift per layer toward the light (tan of the lean, per axis), and the
+  // square's centre shift for layer q, round(q lean), per axis; leaning_ when any shift is not 0.
+  Eigen::Vector2d lean_ = Eigen::Vector2d::Zero();
+  std::vector<int> shift_x_, shift_y_;
+  bool leaning_ = false;
   std::vector<std::uint8_t> obstacle_;
   std::vector<double> sat_;  // per layer (nx + 1) x (ny + 1) summed-area table of source_
 };

@@ -2,11 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <utility>
 #include <vector>
 
+#include "environment/site_sky.hpp"
 #include "fspm/error.hpp"
 #include "tests/scoped_memory_limit.hpp"
 
@@ -204,6 +207,131 @@ TEST(ShadowGrid, MemoryLimitRefusesAGridTooLargeForIt) {
   } catch (const MemoryLimitError& e) {
     EXPECT_NE(std::string(e.what()).find("556325 voxels"), std::string::npos) << e.what();
   }
+}
+
+// The leaning pyramid written out directly: a source at voxel s shades voxel v by strength * b^-q
+// with q = s.z - v.z in [0, q_max] when s lies in the square of half width q around
+// v + q (lean_x, lean_y) rounded to a voxel.
+double leaning_shade(const ShadowGridParams& p, const Eigen::Vector2d& lean,
+                     const Eigen::Vector3i& source, double strength, const Eigen::Vector3i& at) {
+  const int q = source.z() - at.z();
+  if (q < 0 || q > p.depth_voxels) return 0.0;
+  const long cx = at.x() + std::lround(q * lean.x()), cy = at.y() + std::lround(q * lean.y());
+  if (std::abs(source.x() - cx) > q || std::abs(source.y() - cy) > q) return 0.0;
+  return strength * std::pow(p.shade_b, -q);
+}
+
+TEST(ShadowGrid, LeaningPyramidEqualsTheDirectSum) {
+  ShadowGridParams p;
+  p.depth_voxels = 6;
+  p.shade_b = 1.7;
+  const double h = p.voxel_size_m;
+  const Eigen::Vector3d toward_light(0.3, -0.8, 1.0);  // lean (0.3, -0.8) per layer
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<int> coord(0, 12);
+  std::vector<Eigen::Vector3i> buds;
+  for (int n = 0; n < 60; ++n) buds.emplace_back(coord(rng), coord(rng), coord(rng));
+  ShadowGrid grid(p);
+  grid.set_light_direction(toward_light);
+  grid.reset(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(13 * h));
+  for (const auto& b : buds) grid.add_bud(center_of(b, h));
+  grid.propagate();
+  // The grid reaches the buds that can shade the corner voxels from up the lean.
+  EXPECT_TRUE(grid.covers(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(13 * h)));
+  for (int k = 0; k < 13; ++k) {
+    for (int j = 0; j < 13; ++j) {
+      for (int i = 0; i < 13; ++i) {
+        double expect = 0.0;
+        for (const auto& b : buds) expect += leaning_shade(p, {0.3, -0.8}, b, p.shade_a, {i, j, k});
+        EXPECT_NEAR(grid.shade(center_of({i, j, k}, h)), expect, 1e-9) << i << " " << j << " " << k;
+      }
+    }
+  }
+  // A lone bud under the lean still sees its own voxel as open, spread or not.
+  ShadowGrid lone(p);
+  lone.set_light_direction(toward_light);
+  const Eigen::Vector3d at(0.37, 0.41, 0.52);
+  lone.reset(at, at);
+  lone.add_bud_spread(at);
+  lone.propagate();
+  EXPECT_NEAR(lone.spread_bud_light(at), 1.0, 1e-12);
+  EXPECT_THROW(lone.set_light_direction({1.0, 0.0, 0.0}), ValueError);
+  // New parameters (a grid taken from a pool) bring back the vertical pyramid.
+  lone.set_params(p);
+  EXPECT_EQ(lone.light_axis(), Eigen::Vector3d::UnitZ());
+}
+
+// Light from the zenith is Palubicki's vertical pyramid, shade for shade.
+TEST(ShadowGrid, ZenithLightDirectionChangesNothing) {
+  ShadowGridParams p;
+  const double h = p.voxel_size_m;
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> coord(0.0, 2.0);
+  std::vector<Eigen::Vector3d> buds;
+  for (int n = 0; n < 200; ++n) buds.emplace_back(coord(rng), coord(rng), coord(rng));
+  ShadowGrid plain(p), zenith(p);
+  zenith.set_light_direction({0.0, 0.0, 2.0});
+  for (ShadowGrid* g : {&plain, &zenith}) {
+    g->reset(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(2.0));
+    for (const auto& b : buds) g->add_bud(b);
+    g->propagate();
+  }
+  EXPECT_EQ(plain.dimensions(), zenith.dimensions());
+  for (const auto& b : buds) {
+    EXPECT_EQ(plain.bud_light(b), zenith.bud_light(b));
+    EXPECT_EQ(plain.growth_direction(b), zenith.growth_direction(b));
+    EXPECT_EQ(plain.light_direction(b), zenith.light_direction(b));
+  }
+  EXPECT_EQ(zenith.light_axis(), Eigen::Vector3d::UnitZ());
+  (void)h;
+}
+
+// Under the equinox sun of 55 N (the real sky's mean light direction leans about 40 degrees to
+// the south, y north), an opaque ball above a point to its south shades it: a point 0.6 m below
+// the ball and 0.45 m north of it is darker than the point as far south of it, and the shadow
+// falls where the ball's shadow line along the light meets the layer, not straight below. Under
+// the default (zenith) light both points get the same shade.
+TEST(ShadowGrid, OccluderShadesThePointAwayFromTheSun) {
+  SiteSky site;
+  site.sky.site = {55.0, 0.0, 0.0, 0.0};
+  site.sky.date = {2024, 3, 20};
+  const Eigen::Vector3d light = mean_light_direction(site);
+  ASSERT_LT(light.y(), -0.3);
+  ShadowGridParams p;
+  Scene scene;
+  const Eigen::Vector3d ball(0.075, 0.075, 3.075);  // a voxel centre
+  scene.spheres.push_back({ball, 0.3, 0.0});
+  const Eigen::Vector3d north = ball + Eigen::Vector3d(0.0, 0.45, -0.6);
+  const Eigen::Vector3d south = ball + Eigen::Vector3d(0.0, -0.45, -0.6);
+  // Where the line from the ball away from the light meets the layer 0.6 m down.
+  const Eigen::Vector3d shadow = ball - 0.6 / light.z() * light;
+  const Eigen::Vector3d below = ball - Eigen::Vector3d(0.0, 0.0, 0.6);
+  // A bud's light, alone under the ball (bud_light removes the bud's own shade).
+  const auto light_at = [&](bool lean, const Eigen::Vector3d& bud) {
+    ShadowGrid grid(p);
+    if (lean) grid.set_light_direction(light);
+    grid.reset(Eigen::Vector3d(-1, -1, 2), Eigen::Vector3d(1, 1, 2.5));
+    grid.add_obstacles(scene);
+    grid.add_bud(bud);
+    grid.propagate();
+    return grid.bud_light(bud);
+  };
+  const auto lights = [&](bool lean) {
+    return std::array<double, 4>{light_at(lean, north), light_at(lean, south),
+                                 light_at(lean, shadow), light_at(lean, below)};
+  };
+  const auto leaning = lights(true), vertical = lights(false);
+  std::printf(
+      "55 N light (%.3f %.3f %.3f): north %.3f south %.3f shadow %.3f below %.3f; "
+      "zenith: north %.3f south %.3f below %.3f\n",
+      light.x(), light.y(), light.z(), leaning[0], leaning[1], leaning[2], leaning[3], vertical[0],
+      vertical[1], vertical[3]);
+  EXPECT_LT(leaning[0], leaning[1] - 0.05);
+  EXPECT_GT(leaning[1], vertical[1]);  // the ball is no longer up the light from it
+  EXPECT_LT(leaning[2], leaning[3]);
+  EXPECT_LT(leaning[2], 1.0);
+  EXPECT_DOUBLE_EQ(vertical[0], vertical[1]);
+  EXPECT_LT(vertical[0], 1.0);
 }
 
 }  // namespace

@@ -85,10 +85,11 @@ TEST(SiteSky, ParsedFromAGrowthParameterFile) {
   EXPECT_NE(no_date.find("date"), std::string::npos) << no_date;
 }
 
-// Internodes' mean y (north positive) of a tree grown with the sky bud light under a real sky.
+// Internodes' mean y (north positive) of a tree grown with a bud light (the sky's by default)
+// under a real sky.
 // latitude NaN: the default sky, brightest at the zenith.
-double mean_y(double latitude_deg) {
-  GrowthParams p = growth_preset("A", BudLightModel::kSky);
+double mean_y(double latitude_deg, BudLightModel model = BudLightModel::kSky) {
+  GrowthParams p = growth_preset("A", model);
   p.years = 12;
   if (!std::isnan(latitude_deg)) p.site_sky = equinox_at(latitude_deg);
   const GrowthResult g = grow_tree(p);
@@ -110,6 +111,20 @@ TEST(SiteSky, TreesGrowTowardTheSun) {
               north_site, south_site, zenith);
   EXPECT_LT(north_site, -0.05);
   EXPECT_GT(south_site, 0.05);
+  EXPECT_LT(north_site, zenith - 0.05);
+  EXPECT_GT(south_site, zenith + 0.05);
+}
+
+// The same with the default bud light, the shadow grid: its pyramids lean along the real sky's
+// mean light direction, so the shade of the crown falls to its north at a northern site and the
+// tree grows toward the south (toward the north at a southern site).
+TEST(SiteSky, ShadowGridTreesGrowTowardTheSun) {
+  const BudLightModel grid = BudLightModel::kShadowGrid;
+  const double north_site = mean_y(55.0, grid), south_site = mean_y(-55.0, grid),
+               zenith = mean_y(std::nan(""), grid);
+  std::printf(
+      "shadow grid, mean internode y: grown at 55 N %.3f m, at 55 S %.3f m, zenith %.3f m\n",
+      north_site, south_site, zenith);
   EXPECT_LT(north_site, zenith - 0.05);
   EXPECT_GT(south_site, zenith + 0.05);
 }
