@@ -1,11 +1,11 @@
-#include "cli/scene_obstacles.hpp"
+#include "io/scene_obstacles.hpp"
 
 #include <spdlog/spdlog.h>
 
-#include "cli/obstacle_crop.hpp"
-#include "cli/obstacle_mesh.hpp"
+#include "io/obstacle_crop.hpp"
+#include "io/obstacle_mesh.hpp"
 
-namespace fspm::cli {
+namespace fspm::io {
 
 std::size_t add_scene_obstacles(graphics::InstancedMesh& scene, environment::Scene obstacles,
                                 const std::string& file, bool near_plants) {
@@ -40,4 +40,4 @@ std::size_t obstacle_triangle_count(const graphics::InstancedMesh& scene) {
   return n;
 }
 
-}  // namespace fspm::cli
+}  // namespace fspm::io

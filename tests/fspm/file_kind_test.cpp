@@ -31,7 +31,9 @@ TEST(FileKind, EveryKindHasOneRowAndItsExtensionsAreItsOwn) {
     EXPECT_EQ(&file_kind_info(info.kind), &info);
     ASSERT_FALSE(info.extensions[0].empty()) << info.name;
     for (std::string_view e : info.extensions) {
-      if (!e.empty()) EXPECT_EQ(file_kind_for_extension(e), info.kind) << e;
+      if (!e.empty()) {
+        EXPECT_EQ(file_kind_for_extension(e), info.kind) << e;
+      }
     }
   }
 }
