@@ -15,6 +15,7 @@
 #include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
 #include "fspm/instanced_lod.hpp"
+#include "fspm/tree_file.hpp"
 #include "graphics/mesh_writers.hpp"
 #include "greenlab/reconstruction.hpp"
 #include "io/input_kind.hpp"
@@ -94,7 +95,7 @@ void check_mesh_request(const MeshCommand& c, graphics::MeshFormat format, Input
 // One tree's bark as a skinned .glb with its wind animation (Reynolds 3.3).
 void write_skinned_mesh(const MeshCommand& c, const graphics::MeshOptions& options,
                         nlohmann::json& j) {
-  const TreeGraph tree = io::read_tree_input(c.tree, c.format);
+  const TreeGraph tree = read_tree_file(c.tree, c.format);
   const SkinnedOutput out = write_wind_glb(tree, options, c.wind, c.animate_s, c.seed, c.out);
   j["vertices"] = out.vertices;
   j["triangles"] = out.triangles;
@@ -116,7 +117,7 @@ void write_growth_sequence(const MeshCommand& c, InputKind kind,
   ro.lod = c.graph_lod.lod();
   const TreeGraph tree = is_compressed(kind)
                              ? greenlab::reconstruct(io::load_compressed(c.tree, kind), ro)
-                             : reduce_tree(io::read_tree_input(c.tree, c.format), ro.lod);
+                             : reduce_tree(read_tree_file(c.tree, c.format), ro.lod);
   const std::vector<double> ages = c.ages.empty() ? graphics::default_ages(tree) : c.ages;
   const auto frames = graphics::write_pvd(tree, options, ages, c.out);
   std::size_t vertices = 0, triangles = 0;

@@ -15,6 +15,7 @@
 #include "environment/scene_file.hpp"
 #include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
+#include "fspm/tree_file.hpp"
 #include "graphics/image.hpp"
 #include "graphics/render.hpp"
 #include "io/input_kind.hpp"
@@ -63,7 +64,7 @@ graphics::InstancedMesh wind_frame(const RenderCommand& c, const graphics::MeshO
     throw ValueError("--wind-time needs one tree file (.tree, .treeb, .nwk, .mtg)", c.tree);
   }
   WindFrame f =
-      posed_in_wind(io::read_tree_input(c.tree, c.format), options, c.wind, c.wind_time_s, c.seed);
+      posed_in_wind(read_tree_file(c.tree, c.format), options, c.wind, c.wind_time_s, c.seed);
   render.frame = f.frame;
   return graphics::InstancedMesh::single(std::move(f.mesh));
 }

@@ -19,6 +19,7 @@
 #include "fspm/error.hpp"
 #include "fspm/instanced_lod.hpp"
 #include "fspm/scene_reader.hpp"
+#include "fspm/tree_file.hpp"
 #include "graphics/image.hpp"
 #include "graphics/scene_file.hpp"
 #include "graphics/viewer.hpp"
@@ -237,7 +238,7 @@ std::vector<ViewSource> read_view_sources(const ViewCommand& c, int size_px,
       s.graph = io::load_compressed(path, s.kind);
       if (ages.empty()) ages = io::plant_ages(s.graph);
     } else if (s.kind == InputKind::kTree) {
-      s.tree = io::read_tree_input(path, c.format);
+      s.tree = read_tree_file(path, c.format);
       if (s.lod.active()) s.tree = reduce_tree(s.tree, s.lod);
       if (c.stages > 0) s.model = std::make_shared<const stages::DevelopmentalModel>(s.tree);
     } else if (s.kind == InputKind::kLsystem) {
@@ -306,7 +307,7 @@ void run_wind_view(const ViewCommand& c, graphics::ViewerOptions options,
   if (!c.ages.empty() || c.stages > 0 || c.lod) {
     throw ValueError("--wind takes no --ages, --stages or --lod");
   }
-  const TreeGraph tree = io::read_tree_input(c.trees[0], c.format);
+  const TreeGraph tree = read_tree_file(c.trees[0], c.format);
   graphics::MeshOptions mesh_options;
   set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
   auto wind = std::make_shared<graphics::ViewerWind>();

@@ -4,7 +4,6 @@
 
 #include "fspm/file_kind.hpp"
 #include "fspm/scene_description.hpp"
-#include "fspm/tree_file.hpp"
 
 namespace fspm::io {
 
@@ -38,24 +37,6 @@ std::string resolve_crown_folder(const std::string& path) {
   const bool folder =
       std::filesystem::is_directory(path) && std::filesystem::is_regular_file(crown);
   return folder ? crown.string() : path;
-}
-
-namespace {
-
-std::string_view sniffed_tree_format(const std::string& path, std::string_view format) {
-  if (!format.empty() || file_kind_by_extension(path) != FileKind::kUnknown) return format;
-  return tree_format_of_kind(file_kind(path));
-}
-
-}  // namespace
-
-TreeGraph read_tree_input(const std::string& path, std::string_view format) {
-  return read_tree_file(path, sniffed_tree_format(path, format));
-}
-
-TreeGraph read_tree_input(const std::string& path, std::string_view format,
-                          const MtgTreeOptions& mtg) {
-  return read_tree_file(path, sniffed_tree_format(path, format), mtg);
 }
 
 }  // namespace fspm::io

@@ -4,10 +4,6 @@
 // fly), a scene of many plants (.json), a ParaView growth sequence (.pvd, viewer only), an
 // L-system (.l, drawn by the turtle) or a mesh placed as it is (a crown from fspm crown).
 #include <string>
-#include <string_view>
-
-#include "fspm/mtg_tree.hpp"
-#include "fspm/tree_graph.hpp"
 
 namespace fspm::io {
 
@@ -23,11 +19,5 @@ bool is_compressed(InputKind kind);
 // The folder fspm crown wrote (OUT/ holding crown.glb) stands for its crown, as in scene files;
 // any other path is returned as it is.
 std::string resolve_crown_folder(const std::string& path);
-
-// read_tree_file with `format`, or, when none is given and the extension names no kind, the
-// format the file's first bytes tell (fspm/file_kind.hpp).
-TreeGraph read_tree_input(const std::string& path, std::string_view format);
-TreeGraph read_tree_input(const std::string& path, std::string_view format,
-                          const MtgTreeOptions& mtg);
 
 }  // namespace fspm::io

@@ -54,7 +54,7 @@ graphics::InstancedMesh load_part(const std::string& path, InputKind kind,
         path);
   }
   if (age >= 0.0) options.max_birth_time = age;
-  TreeGraph tree = read_tree_input(path, format, mtg);
+  TreeGraph tree = read_tree_file(path, format, mtg);
   if (lod.active()) tree = reduce_tree(tree, lod);
   return graphics::InstancedMesh::single(graphics::mesh_tree(tree, options));
 }
@@ -161,7 +161,7 @@ graphics::InstancedMesh load_render_input(const std::string& path, const std::st
     // A skeleton at projected coordinates (fspm encode --skeleton keeps the input's frame) is
     // drawn relative to the kilometre below it, as its scan is: floats keep decimetres there and
     // the camera lost the tree without the ground plane's bounds.
-    TreeGraph tree = read_tree_input(path, format, default_mtg_tree_options());
+    TreeGraph tree = read_tree_file(path, format, default_mtg_tree_options());
     recentre_for_render(tree);
     if (lod.active()) tree = reduce_tree(tree, lod);
     return graphics::InstancedMesh::single(graphics::mesh_tree(tree, options));

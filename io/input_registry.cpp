@@ -5,6 +5,7 @@
 #include "fspm/error.hpp"
 #include "fspm/input_file.hpp"
 #include "fspm/scene_reader.hpp"
+#include "fspm/tree_file.hpp"
 #include "graphics/vtk_readback.hpp"
 #include "io/input_kind.hpp"
 #include "io/placed_mesh.hpp"
@@ -16,7 +17,7 @@
 namespace fspm::io {
 namespace {
 
-InputData read_tree(const std::string& path) { return read_tree_input(path, {}); }
+InputData read_tree(const std::string& path) { return read_tree_file(path, {}); }
 
 InputData read_ctree(const std::string& path) { return read_ctree_file(path); }
 

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "fspm/error.hpp"
+#include "fspm/tree_file.hpp"
 
 namespace fspm {
 namespace {
@@ -68,6 +69,29 @@ TEST(FileKind, TheExtensionDecidesAndTheBytesOnlyWithoutOne) {
   EXPECT_EQ(file_kind((dir / "fspm_file_kind_missing").string()), FileKind::kUnknown);
   std::filesystem::remove(bare);
   std::filesystem::remove(named);
+}
+
+// A tree file without extension is read in the format its magic tells; written, it still needs
+// an extension or a format (the bytes of an old file at the path do not choose).
+TEST(FileKind, TreeFilesWithoutExtensionAreReadByTheirMagic) {
+  TreeGraph tree;
+  NodeData d;
+  d.end = {0.0, 0.0, 1.0};
+  const NodeId root = tree.add_node(kNoNode, d);
+  d.start = d.end;
+  d.end = {0.0, 0.5, 1.5};
+  tree.add_node(root, d);
+  const auto dir = std::filesystem::temp_directory_path();
+  for (const char* format : {"tree", "treeb"}) {
+    const std::string bare = (dir / (std::string("fspm_file_kind_tree_") + format)).string();
+    write_tree_file(tree, bare, format);
+    const TreeGraph back = read_tree_file(bare);
+    ASSERT_EQ(back.size(), 2u) << format;
+    EXPECT_EQ(back.parent(1), 0u);
+    EXPECT_DOUBLE_EQ(back.end(1).y(), 0.5);
+    EXPECT_THROW(write_tree_file(tree, bare), ValueError);
+    std::filesystem::remove(bare);
+  }
 }
 
 TEST(FileKind, FamiliesAndWrittenMeshFormats) {
