@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 import fspm
+from conftest import chain_tree
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "examples"
@@ -127,3 +128,18 @@ def test_errors_are_the_built_in_exceptions(tmp_path):
         fspm.load(str(tmp_path / "missing.bin"))
     with pytest.raises(FileNotFoundError):
         fspm.load(str(tmp_path / "missing.tree"))
+
+
+@pytest.mark.skipif(not fspm.render_available(), reason="VTK reads .vtp and .pvd")
+def test_meshes_and_growth_sequences_written_by_fspm(tmp_path):
+    tree = chain_tree(4, 0.05)
+    mesh = fspm.mesh_tree(tree)
+    for name in ("tree.vtp", "tree.glb", "tree.ply"):
+        fspm.write_mesh(mesh, str(tmp_path / name))
+        loaded = fspm.load(str(tmp_path / name))
+        assert isinstance(loaded, fspm.TriangleMesh), name
+        assert loaded.triangle_count() == mesh.triangle_count(), name
+    frames = fspm.write_pvd(tree, str(tmp_path / "growth.pvd"), ages=[1.0, 3.0])
+    steps = fspm.load(str(tmp_path / "growth.pvd"))
+    assert [t for t, _ in steps] == [1.0, 3.0]
+    assert [m.triangle_count() for _, m in steps] == [f["triangles"] for f in frames]
