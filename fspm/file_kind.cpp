@@ -44,9 +44,11 @@ std::string lower(std::string_view text) {
   return out;
 }
 
-// The magic followed by the end of its line, where a line follows it (PLY's "ply", MTG's
-// "CODE:"), or by anything (binary magics).
+// The magic followed by the end of its line where a line must follow it (PLY's "ply"), or by
+// anything.
 bool starts_with_magic(std::string_view data, std::string_view magic, FileKind kind) {
+  // A PCD header may leave out its comment line and start with its first entry.
+  if (kind == FileKind::kPcd && data.starts_with("VERSION ")) return true;
   if (magic.empty() || data.substr(0, magic.size()) != magic) return false;
   if (kind != FileKind::kPly) return true;
   const std::string_view rest = data.substr(magic.size());

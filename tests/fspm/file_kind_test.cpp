@@ -46,6 +46,7 @@ TEST(FileKind, FirstBytesOfEachFormat) {
   EXPECT_EQ(file_kind_by_content(std::string("glTF\x02\0\0\0", 8)), FileKind::kGlb);
   EXPECT_EQ(file_kind_by_content("LASF\0\0"), FileKind::kLas);
   EXPECT_EQ(file_kind_by_content("# .PCD v0.7 - Point Cloud Data\nVERSION 0.7\n"), FileKind::kPcd);
+  EXPECT_EQ(file_kind_by_content("VERSION 0.7\nFIELDS x y z\n"), FileKind::kPcd);
   EXPECT_EQ(file_kind_by_content("FSPMTREB\x01"), FileKind::kTreeBinary);
   EXPECT_EQ(file_kind_by_content("FSPMCTRE\x02"), FileKind::kCtree);
   EXPECT_EQ(file_kind_by_content("FSPMCLU3"), FileKind::kClusters);
