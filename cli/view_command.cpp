@@ -30,6 +30,7 @@
 #include "io/lod_scene.hpp"
 #include "io/lsystem_mesh.hpp"
 #include "io/placed_mesh.hpp"
+#include "io/stepped_input.hpp"
 #include "stages/developmental_model.hpp"
 
 namespace fspm::cli {
@@ -75,68 +76,6 @@ struct ViewCommand {
   GraphLodArguments graph_lod;
   bool json = false;
 };
-
-// One FILE of `fspm view`, loaded once and meshed at each growth step.
-struct ViewSource {
-  std::string path;
-  InputKind kind = InputKind::kTree;
-  TreeGraph tree;
-  CompressedTreeGraph graph;
-  LsystemDrawing drawing;       // an L-system, drawn once
-  graphics::TriangleMesh mesh;  // a crown from fspm crown, read once
-  LevelOfDetail lod;
-  // With --stages: the tree's developmental model (Pirk 5), whose stage at time `age` is drawn.
-  std::shared_ptr<const stages::DevelopmentalModel> model;
-
-  // `age`: plant age for compressed graphs, latest birth time for trees, the stage's time in
-  // (0, 1] with --stages, ignored for scenes; infinity = everything.
-  graphics::InstancedMesh at(double age, const graphics::MeshOptions& options,
-                             const std::string& format) const {
-    if (kind == InputKind::kScene) return io::load_scene(path, options, true, lod);
-    if (is_compressed(kind)) {
-      return io::mesh_compressed(graph, std::isinf(age) ? -1.0 : age, options, lod);
-    }
-    if (kind == InputKind::kLsystem) return io::mesh_lsystem(drawing, options);
-    if (kind == InputKind::kMesh) return graphics::InstancedMesh::single(mesh);
-    if (model) {
-      return graphics::InstancedMesh::single(
-          graphics::mesh_tree(model->stage(std::isinf(age) ? 1.0 : age), options));
-    }
-    graphics::MeshOptions o = options;
-    o.max_birth_time = age;
-    (void)format;
-    return graphics::InstancedMesh::single(graphics::mesh_tree(tree, o));
-  }
-};
-
-// Every file meshed at every age (instanced), placed side by side along x with a gap of a
-// tenth of the widest.
-std::vector<graphics::InstancedMesh> view_steps(const std::vector<ViewSource>& sources,
-                                                const std::string& format,
-                                                const std::vector<double>& ages,
-                                                const graphics::MeshOptions& options) {
-  std::vector<graphics::PartPlacement> placements;
-  float x = 0.0f;
-  for (std::size_t i = 0; i < sources.size(); ++i) {
-    const graphics::InstancedMesh full =
-        sources[i].at(std::numeric_limits<double>::infinity(), options, format);
-    Eigen::Vector3f lo, hi;
-    full.bounds(lo, hi);
-    const float width = hi.x() - lo.x();
-    graphics::PartPlacement p;
-    p.part = i;
-    p.translation.x() = full.instances.empty() ? x : x - lo.x();
-    placements.push_back(p);
-    x += width * 1.1f + 0.1f;
-  }
-  std::vector<graphics::InstancedMesh> steps;
-  for (double age : ages) {
-    std::vector<graphics::InstancedMesh> parts;
-    for (const auto& s : sources) parts.push_back(s.at(age, options, format));
-    steps.push_back(graphics::place_parts(parts, placements));
-  }
-  return steps;
-}
 
 // fspm view --lod: one scene (or tree, or plant) with its plants chosen per instance each frame.
 void run_lod_view(const ViewCommand& c, const graphics::ViewerOptions& options,
@@ -226,11 +165,11 @@ void check_stages_view(const ViewCommand& c, std::vector<double>& ages) {
   for (int k = 1; k <= c.stages; ++k) ages.push_back(static_cast<double>(k) / c.stages);
 }
 
-std::vector<ViewSource> read_view_sources(const ViewCommand& c, int size_px,
-                                          std::vector<double>& ages) {
-  std::vector<ViewSource> sources;
+std::vector<io::SteppedInput> read_view_sources(const ViewCommand& c, int size_px,
+                                                std::vector<double>& ages) {
+  std::vector<io::SteppedInput> sources;
   for (const auto& path : c.trees) {
-    ViewSource s;
+    io::SteppedInput s;
     s.path = path;
     s.kind = input_kind(path);
     s.lod = c.graph_lod.lod();
@@ -255,7 +194,7 @@ std::vector<ViewSource> read_view_sources(const ViewCommand& c, int size_px,
 
 // The meshes of every age step, and a far level of detail: rings four times coarser, at most
 // six sides. Returns the far meshes' ring edge length.
-double mesh_view_steps(const ViewCommand& c, const std::vector<ViewSource>& sources,
+double mesh_view_steps(const ViewCommand& c, const std::vector<io::SteppedInput>& sources,
                        std::vector<double>& ages, std::vector<graphics::InstancedMesh>& steps,
                        std::vector<graphics::InstancedMesh>& far) {
   if (ages.empty()) ages.push_back(std::numeric_limits<double>::infinity());
@@ -265,13 +204,13 @@ double mesh_view_steps(const ViewCommand& c, const std::vector<ViewSource>& sour
   mesh_options.max_sides = c.max_sides;
   mesh_options.min_sides = std::min(mesh_options.min_sides, c.max_sides);
   mesh_options.axis_subdivisions = c.axis_subdivisions;
-  steps = view_steps(sources, c.format, ages, mesh_options);
+  steps = io::steps_side_by_side(sources, ages, mesh_options);
   graphics::MeshOptions coarse = mesh_options;
   coarse.axis_subdivisions = 1;  // far away: straight internodes
   coarse.edge_length_m *= 4.0;
   coarse.max_sides = std::min(6, c.max_sides);
   coarse.min_sides = 3;
-  far = view_steps(sources, c.format, ages, coarse);
+  far = io::steps_side_by_side(sources, ages, coarse);
   return coarse.edge_length_m;
 }
 
