@@ -1,8 +1,8 @@
 #include "cli/run_scene_mesh.hpp"
 
-#include "cli/obstacle_crop.hpp"
-#include "cli/obstacle_mesh.hpp"
 #include "experiments/render_selection.hpp"
+#include "io/obstacle_crop.hpp"
+#include "io/obstacle_mesh.hpp"
 
 namespace fspm::cli {
 
@@ -14,10 +14,10 @@ graphics::TriangleMesh run_scene_mesh(const experiments::Experiment& x,
   obstacles = Obstacles::kNone;
   if (const std::optional<environment::Scene> scene = experiments::recorded_run_scene(x, record)) {
     Eigen::Vector2d region_lo, region_hi;
-    obstacle_region(mesh.bbox_min().cast<double>(), mesh.bbox_max().cast<double>(), region_lo,
-                    region_hi);
+    io::obstacle_region(mesh.bbox_min().cast<double>(), mesh.bbox_max().cast<double>(), region_lo,
+                        region_hi);
     const graphics::TriangleMesh stones =
-        mesh_obstacles(obstacles_near(*scene, region_lo, region_hi));
+        io::mesh_obstacles(io::obstacles_near(*scene, region_lo, region_hi));
     obstacles = stones.triangle_count() > 0 ? Obstacles::kDrawn : Obstacles::kFarAway;
     mesh.append(stones);
   }

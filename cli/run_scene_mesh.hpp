@@ -12,7 +12,7 @@ namespace fspm::cli {
 enum class Obstacles { kNone, kFarAway, kDrawn };
 
 // The run's tree (experiments/render_selection.hpp: read back or regrown) meshed with `options`,
-// with its scene's obstacles cut to the region around it (cli/obstacle_crop.hpp) appended;
+// with its scene's obstacles cut to the region around it (io/obstacle_crop.hpp) appended;
 // `obstacles` says whether there were any and whether they were near enough to be drawn.
 graphics::TriangleMesh run_scene_mesh(const experiments::Experiment& experiment,
                                       const experiments::RunRecord& record, const std::string& dir,

@@ -14,6 +14,7 @@
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
 #include "fspm/error.hpp"
+#include "fspm/file_kind.hpp"
 #include "fspm/tree_file.hpp"
 #include "scans/clusters_file.hpp"
 #include "scans/cylinders_csv.hpp"
@@ -43,10 +44,7 @@ struct EncodeCommand {
   bool json = false;
 };
 
-bool is_tree_file(const std::string& path) {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  return ext == ".tree" || ext == ".treeb" || ext == ".nwk" || ext == ".mtg";
-}
+bool is_tree_file(const std::string& path) { return is_tree_kind(file_kind_by_extension(path)); }
 
 // A point set, or a tree model scanned as a laser scanner at four positions would see it.
 scans::PointSet load_input(const EncodeCommand& o) {
@@ -103,7 +101,7 @@ nlohmann::json gaps_json(const scans::EncodeResult& r) {
 
 void run_encode(const EncodeCommand& o) {
   // The file is always the binary cluster format: another extension would misname it.
-  if (std::filesystem::path(o.output).extension() != ".clusters") {
+  if (file_kind_by_extension(o.output) != FileKind::kClusters) {
     throw ValueError("-o: encode writes the cluster format, expected a .clusters file", o.output);
   }
   refuse_overwriting_input(o.output, {o.input});

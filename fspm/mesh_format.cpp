@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "fspm/error.hpp"
+#include "fspm/file_kind.hpp"
 
 namespace fspm {
 
@@ -35,12 +36,10 @@ std::optional<MeshFormat> find_mesh_format(std::string_view name) {
 }
 
 MeshFormat mesh_format_for(const std::string& path) {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  if (!ext.empty()) {
-    if (const std::optional<MeshFormat> f = find_mesh_format(std::string_view(ext).substr(1))) {
-      return *f;
-    }
+  if (const std::optional<MeshFormat> f = written_mesh_format(file_kind_by_extension(path))) {
+    return *f;
   }
+  const std::string ext = std::filesystem::path(path).extension().string();
   throw ValueError(
       "unknown mesh file extension '" + ext + "' (expected .obj, .ply, .vtp, .pvd or .glb)", path);
 }

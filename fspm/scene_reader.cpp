@@ -1,11 +1,10 @@
 #include "fspm/scene_reader.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <set>
 #include <system_error>
 
+#include "fspm/file_kind.hpp"
 #include "fspm/input_file.hpp"
 #include "fspm/json_fields.hpp"
 #include "fspm/scene_landscape_reader.hpp"
@@ -78,10 +77,7 @@ std::string crown_mesh_path(const JsonFields& f, const json& p, const std::strin
     file /= kCrownMeshName;
     if (!std::filesystem::is_regular_file(file, ec)) fail("does not exist");
   }
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (ext != ".glb" && ext != ".gltf" && ext != ".obj") {
+  if (!is_grouped_mesh_kind(file_kind_by_extension(file.string()))) {
     fail("is neither a .glb, .gltf or .obj mesh nor a directory");
   }
   return file.string();
@@ -201,10 +197,7 @@ SceneDescription read_scene_description(const std::string& path) {
 }
 
 bool is_scene_path(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".json";
+  return file_kind_by_extension(path) == FileKind::kScene;
 }
 
 }  // namespace fspm

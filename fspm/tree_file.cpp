@@ -6,6 +6,7 @@
 #include "fspm/atomic_file.hpp"
 #include "fspm/binary_tree_format.hpp"
 #include "fspm/error.hpp"
+#include "fspm/file_kind.hpp"
 #include "fspm/finite_geometry.hpp"
 #include "fspm/input_file.hpp"
 #include "fspm/mtg_format.hpp"
@@ -16,6 +17,7 @@ namespace fspm {
 
 TreeFormat tree_format_for(const std::string& path, std::string_view name) {
   std::string key(name);
+  if (key.empty()) key = tree_format_of_kind(file_kind_by_extension(path));
   if (key.empty()) {
     key = std::filesystem::path(path).extension().string();
     if (!key.empty() && key.front() == '.') key.erase(0, 1);
@@ -58,12 +60,19 @@ TreeGraph read_tree_stream(std::istream& in, TreeFormat f, const std::string& pa
   }
 }
 
+// A file to read without a format or an extension that names one: the format its first bytes
+// tell (fspm/file_kind.hpp), if any.
+std::string_view read_format(const std::string& path, std::string_view format) {
+  if (!format.empty() || file_kind_by_extension(path) != FileKind::kUnknown) return format;
+  return tree_format_of_kind(file_kind(path));
+}
+
 }  // namespace
 
 TreeGraph read_tree_file(const std::string& path, std::string_view format,
                          const MtgTreeOptions& mtg) {
   const auto in = open_input_file(path, kMaxTreeFileBytes);
-  const TreeFormat f = tree_format_for(path, format);
+  const TreeFormat f = tree_format_for(path, read_format(path, format));
   if (f != TreeFormat::kMtg) return read_tree_stream(*in, f, path);
   const std::string text{std::istreambuf_iterator<char>(*in), {}};
   return parse_mtg(text, path, mtg);
@@ -72,7 +81,7 @@ TreeGraph read_tree_file(const std::string& path, std::string_view format,
 TreeGraph read_tree_file(const std::string& path, std::string_view format) {
   // The path first: a directory or a missing file is not "an unknown format".
   const auto in = open_input_file(path, kMaxTreeFileBytes);
-  return read_tree_stream(*in, tree_format_for(path, format), path);
+  return read_tree_stream(*in, tree_format_for(path, read_format(path, format)), path);
 }
 
 namespace {

@@ -161,6 +161,7 @@ void bind_graphics(py::module_& m);
 void bind_calibration(py::module_& m);
 void bind_stages(py::module_& m);
 void bind_scans(py::module_& m);
+void bind_io(py::module_& m);
 // Adds reconstruct_crown when fspm was built with OpenImageIO (the crown module).
 void bind_crown(py::module_& m);
 

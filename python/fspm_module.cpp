@@ -23,5 +23,6 @@ PYBIND11_MODULE(_fspm, m) {
   python::bind_graphics(m);
   python::bind_stages(m);
   python::bind_scans(m);
+  python::bind_io(m);
   python::bind_crown(m);
 }

@@ -1,41 +1,28 @@
 #include "scans/mesh_file.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <filesystem>
 
 #include "fspm/error.hpp"
+#include "fspm/file_kind.hpp"
 #include "scans/gltf_reader.hpp"
 #include "scans/ply_reader.hpp"
 
 namespace fspm::scans {
-namespace {
-
-std::string lower_extension(std::string_view path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
-}  // namespace
 
 bool is_mesh_file(std::string_view path) {
-  const std::string ext = lower_extension(path);
-  return ext == ".ply" || is_grouped_mesh_file(path);
+  return is_polygon_mesh_kind(file_kind_by_extension(path));
 }
 
 bool is_grouped_mesh_file(std::string_view path) {
-  const std::string ext = lower_extension(path);
-  return ext == ".obj" || ext == ".gltf" || ext == ".glb";
+  return is_grouped_mesh_kind(file_kind_by_extension(path));
 }
 
 namespace {
 
-GroupedMesh read_any_mesh(const std::string& path, const std::string& ext) {
-  if (ext == ".obj") return read_obj_mesh(path);
-  if (ext == ".ply") return read_ply_mesh(path);
-  if (ext == ".gltf" || ext == ".glb") return read_gltf_mesh(path);
+GroupedMesh read_any_mesh(const std::string& path, FileKind kind, const std::string& ext) {
+  if (kind == FileKind::kObj) return read_obj_mesh(path);
+  if (kind == FileKind::kPly) return read_ply_mesh(path);
+  if (kind == FileKind::kGltf || kind == FileKind::kGlb) return read_gltf_mesh(path);
   throw ValueError("unknown mesh extension '" + ext + "', expected .obj, .ply, .gltf or .glb",
                    path);
 }
@@ -43,8 +30,10 @@ GroupedMesh read_any_mesh(const std::string& path, const std::string& ext) {
 }  // namespace
 
 GroupedMesh read_mesh_file(const std::string& path, std::string_view format) {
-  const std::string ext = format.empty() ? lower_extension(path) : "." + std::string(format);
-  GroupedMesh m = read_any_mesh(path, ext);
+  const std::string ext =
+      format.empty() ? std::filesystem::path(path).extension().string() : "." + std::string(format);
+  const FileKind kind = format.empty() ? file_kind(path) : file_kind_for_extension(ext);
+  GroupedMesh m = read_any_mesh(path, kind, ext);
   if (m.faces.empty()) {
     throw ParseError(
         "no triangle in the mesh (" + std::to_string(m.vertices.size()) + " vertices, no face)",

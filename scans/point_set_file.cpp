@@ -1,10 +1,9 @@
 #include "scans/point_set_file.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <filesystem>
 
 #include "fspm/error.hpp"
+#include "fspm/file_kind.hpp"
 #include "scans/gltf_reader.hpp"
 #include "scans/las_reader.hpp"
 #include "scans/mesh_file.hpp"
@@ -17,14 +16,16 @@ namespace fspm::scans {
 
 namespace {
 
-PointSet read_any_point_set(const std::string& path, const std::string& ext) {
-  if (ext == ".ply") return read_ply_points(path);
-  if (ext == ".xyz" || ext == ".txt" || ext == ".csv") return read_xyz_points(path);
-  if (ext == ".pcd") return read_pcd_points(path);
-  if (ext == ".las" || ext == ".laz") return read_las_points(path);
+PointSet read_any_point_set(const std::string& path, FileKind kind, const std::string& ext) {
+  if (kind == FileKind::kPly) return read_ply_points(path);
+  if (kind == FileKind::kXyz) return read_xyz_points(path);
+  if (kind == FileKind::kPcd) return read_pcd_points(path);
+  if (kind == FileKind::kLas) return read_las_points(path);
   // The vertices of a mesh, faces or not.
-  if (ext == ".obj") return PointSet{read_obj_mesh(path).vertices};
-  if (ext == ".gltf" || ext == ".glb") return PointSet{read_gltf_mesh(path).vertices};
+  if (kind == FileKind::kObj) return PointSet{read_obj_mesh(path).vertices};
+  if (kind == FileKind::kGltf || kind == FileKind::kGlb) {
+    return PointSet{read_gltf_mesh(path).vertices};
+  }
   throw ValueError("unknown point-set extension '" + ext +
                        "', expected .ply, .xyz, .txt, .csv, .pcd, .las, .obj, .gltf or .glb",
                    path);
@@ -33,10 +34,8 @@ PointSet read_any_point_set(const std::string& path, const std::string& ext) {
 }  // namespace
 
 PointSet read_point_set(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  PointSet points = read_any_point_set(path, ext);
+  const std::string ext = std::filesystem::path(path).extension().string();
+  PointSet points = read_any_point_set(path, file_kind(path), ext);
   if (points.points.empty()) {
     throw ParseError("no point in the file (empty, a header only, or no line read as a point)",
                      path);

@@ -74,6 +74,7 @@ from ._fspm import (  # noqa: F401
     grow_tree,
     growth_preset,
     light,
+    load,
     lsystem_derive,
     lsystem_interpret,
     lsystem_plant,

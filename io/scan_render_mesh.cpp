@@ -1,18 +1,17 @@
-#include "cli/scan_render_mesh.hpp"
+#include "io/scan_render_mesh.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
-#include <filesystem>
 
-#include "cli/obstacle_mesh.hpp"
 #include "environment/occluders.hpp"
+#include "fspm/file_kind.hpp"
 #include "fspm/memory_budget.hpp"
+#include "io/obstacle_mesh.hpp"
 #include "scans/clusters_file.hpp"
 #include "scans/point_origin.hpp"
 #include "scans/point_set_file.hpp"
 
-namespace fspm::cli {
+namespace fspm::io {
 namespace {
 
 // Gives the triangles from `first` on `material` (the obstacle helpers emit kObstacle).
@@ -46,13 +45,6 @@ Eigen::Vector3d render_origin(const std::vector<Eigen::Vector3d>& points) {
     if (std::abs(lo[c]) > kRenderGridM) origin[c] = kRenderGridM * std::floor(lo[c] / kRenderGridM);
   }
   return origin;
-}
-
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
-  return ext;
 }
 
 }  // namespace
@@ -113,8 +105,8 @@ Eigen::Vector3d recentre_for_render(TreeGraph& tree) {
 
 std::optional<graphics::TriangleMesh> load_scan_render_mesh(const std::string& path,
                                                             const graphics::MeshOptions& options) {
-  const std::string ext = lower_extension(path);
-  if (ext == ".clusters") {
+  const FileKind kind = file_kind(path);
+  if (kind == FileKind::kClusters) {
     scans::ClusterModel model = scans::read_clusters_file(path);
     scans::PointSet nodes;
     for (const auto& hull : model.clusters) {
@@ -129,8 +121,8 @@ std::optional<graphics::TriangleMesh> load_scan_render_mesh(const std::string& p
     }
     return mesh_cluster_model(model, options, kPointRadiusShare * largest_extent_m(nodes));
   }
-  if (ext == ".ply" || ext == ".xyz" || ext == ".txt" || ext == ".csv" || ext == ".pcd" ||
-      ext == ".las") {
+  // Point sets; the grouped meshes (.obj, .gltf, .glb) are drawn as meshes, not as their vertices.
+  if (is_point_set_kind(kind) && !is_grouped_mesh_kind(kind)) {
     scans::PointSet points = scans::read_point_set(path);
     const Eigen::Vector3d origin = render_origin(points.points);
     for (Eigen::Vector3d& p : points.points) p -= origin;
@@ -139,4 +131,4 @@ std::optional<graphics::TriangleMesh> load_scan_render_mesh(const std::string& p
   return std::nullopt;
 }
 
-}  // namespace fspm::cli
+}  // namespace fspm::io

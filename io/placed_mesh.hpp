@@ -4,8 +4,9 @@
 #include <string>
 
 #include "graphics/triangle_mesh.hpp"
+#include "scans/obj_reader.hpp"
 
-namespace fspm::cli {
+namespace fspm::io {
 
 // True for .glb, .gltf and .obj (any case).
 bool is_placed_mesh_path(const std::string& path);
@@ -15,4 +16,8 @@ bool is_placed_mesh_path(const std::string& path);
 // ValueError naming the file.
 graphics::TriangleMesh read_placed_mesh(const std::string& path);
 
-}  // namespace fspm::cli
+// Every polygon of a mesh read by scans/mesh_file.hpp as a fan of leaf triangles (the readers
+// keep groups, not materials), with area-weighted vertex normals.
+graphics::TriangleMesh grouped_mesh_triangles(const scans::GroupedMesh& obj);
+
+}  // namespace fspm::io

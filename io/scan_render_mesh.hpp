@@ -1,8 +1,8 @@
 #pragma once
 // Meshes that let fspm render draw the stages of encoding a scan (Pirk 2013, sec. 3.3): a point
 // set as small spheres, and a cluster-based tree (.clusters) as its skeleton's tubes with each
-// cluster's alpha-shape hull as a translucent volume. Lives in the command line so graphics keeps
-// depending on the core only.
+// cluster's alpha-shape hull as a translucent volume. In io/ (it needs scans and graphics), so
+// graphics keeps depending on the core only.
 #include <optional>
 #include <string>
 
@@ -11,7 +11,7 @@
 #include "scans/cluster_model.hpp"
 #include "scans/point_set.hpp"
 
-namespace fspm::cli {
+namespace fspm::io {
 
 // Meridians of the sphere drawn at each point: a coarse sphere, since a scan has 10^4-10^5 points.
 inline constexpr int kPointSphereSegments = 6;
@@ -43,4 +43,4 @@ std::optional<graphics::TriangleMesh> load_scan_render_mesh(const std::string& p
 // subtracted (zero within 1 km of the origin).
 Eigen::Vector3d recentre_for_render(TreeGraph& tree);
 
-}  // namespace fspm::cli
+}  // namespace fspm::io

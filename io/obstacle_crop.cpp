@@ -1,10 +1,10 @@
-#include "cli/obstacle_crop.hpp"
+#include "io/obstacle_crop.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
 
-namespace fspm::cli {
+namespace fspm::io {
 namespace {
 
 constexpr double kUnbounded = 1e12;  // half height of the region: beyond any scene coordinate
@@ -71,4 +71,4 @@ environment::Scene obstacles_near(const environment::Scene& scene, const Eigen::
   return out;
 }
 
-}  // namespace fspm::cli
+}  // namespace fspm::io

@@ -1,4 +1,4 @@
-#include "cli/placed_mesh.hpp"
+#include "io/placed_mesh.hpp"
 
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -7,33 +7,26 @@
 #include <algorithm>
 #include <array>
 #include <assimp/Importer.hpp>
-#include <cctype>
-#include <filesystem>
 #include <limits>
 
 #include "fspm/error.hpp"
+#include "fspm/file_kind.hpp"
 #include "fspm/input_file.hpp"
 #include "fspm/vertex_normals.hpp"
 #include "scans/gltf_reader.hpp"
 #include "scans/obj_reader.hpp"
 
-namespace fspm::cli {
+namespace fspm::io {
 namespace {
-
-std::string extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
 
 // Area-weighted vertex normals, for meshes that carry none.
 std::vector<Eigen::Vector3f> vertex_normals(const graphics::TriangleMesh& mesh) {
   return area_weighted_vertex_normals(mesh.positions, mesh.triangles);
 }
 
-// Every polygon of an .obj as a fan of leaf triangles (the reader keeps groups, not materials).
-graphics::TriangleMesh obj_as_triangles(const scans::GroupedMesh& obj) {
+}  // namespace
+
+graphics::TriangleMesh grouped_mesh_triangles(const scans::GroupedMesh& obj) {
   graphics::TriangleMesh mesh;
   for (const Eigen::Vector3d& v : obj.vertices) {
     mesh.positions.push_back(v.cast<float>());
@@ -48,6 +41,8 @@ graphics::TriangleMesh obj_as_triangles(const scans::GroupedMesh& obj) {
   mesh.normals = vertex_normals(mesh);
   return mesh;
 }
+
+namespace {
 
 // fspm's materials by the names its glTF writer gives them; any other name draws as leaf.
 graphics::Material material_named(const std::string& name) {
@@ -133,16 +128,15 @@ graphics::TriangleMesh read_gltf_triangles(const std::string& path) {
 }  // namespace
 
 bool is_placed_mesh_path(const std::string& path) {
-  const std::string ext = extension(path);
-  return ext == ".glb" || ext == ".gltf" || ext == ".obj";
+  return is_grouped_mesh_kind(file_kind_by_extension(path));
 }
 
 graphics::TriangleMesh read_placed_mesh(const std::string& path) {
-  const std::string ext = extension(path);
-  if (ext == ".glb" || ext == ".gltf") return read_gltf_triangles(path);
-  if (ext == ".obj") {
+  const FileKind kind = file_kind(path);
+  if (kind == FileKind::kGlb || kind == FileKind::kGltf) return read_gltf_triangles(path);
+  if (kind == FileKind::kObj) {
     const scans::GroupedMesh obj = scans::read_obj_mesh(path);
-    graphics::TriangleMesh mesh = obj_as_triangles(obj);
+    graphics::TriangleMesh mesh = grouped_mesh_triangles(obj);
     if (mesh.triangles.empty()) {
       throw ParseError("no triangle in the OBJ file (" + std::to_string(obj.vertices.size()) +
                            " vertices, no face of 3 or more)",
@@ -153,4 +147,4 @@ graphics::TriangleMesh read_placed_mesh(const std::string& path) {
   throw ValueError("expected a .glb, .gltf or .obj mesh", path);
 }
 
-}  // namespace fspm::cli
+}  // namespace fspm::io

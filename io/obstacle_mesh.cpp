@@ -1,4 +1,4 @@
-#include "cli/obstacle_mesh.hpp"
+#include "io/obstacle_mesh.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include "fspm/error.hpp"
 
-namespace fspm::cli {
+namespace fspm::io {
 namespace {
 
 using graphics::Material;
@@ -163,4 +163,4 @@ TriangleMesh mesh_obstacles(const environment::Scene& scene, int sphere_segments
   return mesh;
 }
 
-}  // namespace fspm::cli
+}  // namespace fspm::io

@@ -1,6 +1,6 @@
-// Meshes of a growth scene's obstacles (cli/obstacle_mesh, cli/obstacle_crop), checked against
+// Meshes of a growth scene's obstacles (io/obstacle_mesh, io/obstacle_crop), checked against
 // the environment's own geometry: Box::contains, closed-form areas and volumes.
-#include "cli/obstacle_mesh.hpp"
+#include "io/obstacle_mesh.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,11 +8,11 @@
 #include <cmath>
 #include <numbers>
 
-#include "cli/obstacle_crop.hpp"
 #include "environment/scene_file.hpp"
 #include "fspm/error.hpp"
+#include "io/obstacle_crop.hpp"
 
-namespace fspm::cli {
+namespace fspm::io {
 namespace {
 
 using graphics::Material;
@@ -187,4 +187,4 @@ TEST(ObstacleCrop, SlantedBoxKeepsEverythingInsideTheRegion) {
 }
 
 }  // namespace
-}  // namespace fspm::cli
+}  // namespace fspm::io

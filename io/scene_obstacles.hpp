@@ -6,7 +6,7 @@
 #include "environment/scene.hpp"
 #include "graphics/instanced_mesh.hpp"
 
-namespace fspm::cli {
+namespace fspm::io {
 
 // Adds the walls, boxes, spheres and meshes of `obstacles` to `scene` as one more mesh (material
 // obstacle, or translucent obstacle) placed once; returns its triangle count. `near_plants`: only
@@ -20,4 +20,4 @@ std::size_t add_scene_obstacles(graphics::InstancedMesh& scene, environment::Sce
 // counted), for the --json reports of render and mesh.
 std::size_t obstacle_triangle_count(const graphics::InstancedMesh& scene);
 
-}  // namespace fspm::cli
+}  // namespace fspm::io

@@ -3,14 +3,15 @@
 // pictures and mesh files: walls and boxes as six flat-shaded quads, spheres as UV spheres,
 // triangle meshes as they are, of material obstacle (translucent obstacle when they let light
 // through). The ground is left out (renders draw
-// their own ground plane). Lives in the command line so graphics keeps depending on the core only.
+// their own ground plane). In io/ (it needs environment), so graphics keeps depending on the core
+// only.
 #include <Eigen/Core>
 
 #include "environment/occluders.hpp"
 #include "environment/scene.hpp"
 #include "graphics/triangle_mesh.hpp"
 
-namespace fspm::cli {
+namespace fspm::io {
 
 // Segments around a sphere's equator (half as many from pole to pole).
 inline constexpr int kSphereSegments = 32;
@@ -33,4 +34,4 @@ void append_triangle_mesh(const environment::TriangleMesh& surface, graphics::Tr
 graphics::TriangleMesh mesh_obstacles(const environment::Scene& scene,
                                       int sphere_segments = kSphereSegments);
 
-}  // namespace fspm::cli
+}  // namespace fspm::io

@@ -1,11 +1,10 @@
-#include "cli/scene_obstacles.hpp"
+#include "io/scene_obstacles.hpp"
 
-#include <spdlog/spdlog.h>
+#include "fspm/warning.hpp"
+#include "io/obstacle_crop.hpp"
+#include "io/obstacle_mesh.hpp"
 
-#include "cli/obstacle_crop.hpp"
-#include "cli/obstacle_mesh.hpp"
-
-namespace fspm::cli {
+namespace fspm::io {
 
 std::size_t add_scene_obstacles(graphics::InstancedMesh& scene, environment::Scene obstacles,
                                 const std::string& file, bool near_plants) {
@@ -19,8 +18,8 @@ std::size_t add_scene_obstacles(graphics::InstancedMesh& scene, environment::Sce
   graphics::TriangleMesh mesh = mesh_obstacles(obstacles);
   const std::size_t triangles = mesh.triangle_count();
   if (triangles == 0) {
-    spdlog::warn("{}: no walls, boxes, spheres or meshes{} to draw", file,
-                 near_plants ? " near the plants" : "");
+    warn(file + ": no walls, boxes, spheres or meshes" + (near_plants ? " near the plants" : "") +
+         " to draw");
     return 0;
   }
   graphics::MeshInstance instance;
@@ -40,4 +39,4 @@ std::size_t obstacle_triangle_count(const graphics::InstancedMesh& scene) {
   return n;
 }
 
-}  // namespace fspm::cli
+}  // namespace fspm::io

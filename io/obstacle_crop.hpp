@@ -5,7 +5,7 @@
 
 #include "environment/scene.hpp"
 
-namespace fspm::cli {
+namespace fspm::io {
 
 // The x/y region kept around plants with bounds [lo, hi]: their bounding box grown on each side,
 // in x and y, by the largest of its x and y sizes, half its height and 1 m; z is unbounded.
@@ -20,4 +20,4 @@ void obstacle_region(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
 environment::Scene obstacles_near(const environment::Scene& scene, const Eigen::Vector2d& region_lo,
                                   const Eigen::Vector2d& region_hi);
 
-}  // namespace fspm::cli
+}  // namespace fspm::io
