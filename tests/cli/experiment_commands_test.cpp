@@ -97,7 +97,12 @@ TEST(ExperimentCommands, AdaptExampleSweepsTheWallDistance) {
     const auto& n = at[{s, near}];
     EXPECT_GT(n["tip_displacement"].get<double>(), f["tip_displacement"].get<double>()) << s;
     EXPECT_LT(n["light_interception"].get<double>(), f["light_interception"].get<double>()) << s;
-    EXPECT_GE(n["pruned_nodes"].get<double>(), f["pruned_nodes"].get<double>()) << s;
+    // At c_psi = 1 the open tree already prunes its self-shaded inner shoots, and the relative
+    // thresholds (scaled with the crown's light, eq. 4.12) fall with the light near the wall, so
+    // the count need not rise there; up to the default it must.
+    if (s <= 0.8) {
+      EXPECT_GE(n["pruned_nodes"].get<double>(), f["pruned_nodes"].get<double>()) << s;
+    }
   }
   // Near the wall, a stronger c_psi prunes more; the default (0.8) prunes there, not far away.
   const auto pruned_near = [&](double s) {

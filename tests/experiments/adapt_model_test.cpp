@@ -71,9 +71,12 @@ TEST(AdaptModel, AnalysisParametersChangeTheResult) {
   const Fixture f("adapt_params");
   const RunResult strong = f.run({{"tree_x_m", 1.0}, {"pruning_strength", 1.5}});
   const RunResult none = f.run({{"tree_x_m", 1.0}, {"pruning_strength", 0.0}});
-  // c_psi = 0 makes every minimum pruning factor 0 (eq. 4.12): nothing can be pruned.
-  EXPECT_EQ(none.metrics.at("pruned_nodes"), 0.0);
-  EXPECT_GT(strong.metrics.at("pruned_nodes"), 0.0);
+  EXPECT_LT(none.metrics.at("pruned_nodes"), strong.metrics.at("pruned_nodes"));
+  // c_psi = 0 makes every minimum pruning factor 0 (eq. 4.12): nothing is pruned for its light,
+  // so in the open nothing is pruned at all (beside the wall, thick branches that stand in it
+  // cannot bend out and are pruned as blocked).
+  const RunResult none_open = f.run({{"scene", std::string("open")}, {"pruning_strength", 0.0}});
+  EXPECT_EQ(none_open.metrics.at("pruned_nodes"), 0.0);
 }
 
 TEST(AdaptModel, BadParametersAndFilesAreRejectedBeforeRunning) {
