@@ -15,10 +15,10 @@
 #include "bench/synthetic_photograph.hpp"
 #include "crown/auto_mask.hpp"
 #include "crown/base_mesh.hpp"
+#include "crown/crown_from_photo.hpp"
 #include "crown/gap_fill.hpp"
 #include "crown/image_io.hpp"
 #include "crown/inflation.hpp"
-#include "crown/reconstruction.hpp"
 
 namespace {
 

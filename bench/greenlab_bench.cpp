@@ -13,8 +13,8 @@
 #include "fspm/instanced_tree.hpp"
 #include "fspm/line_tree.hpp"
 #include "fspm/tree_file.hpp"
+#include "greenlab/expand.hpp"
 #include "greenlab/plant_params.hpp"
-#include "greenlab/reconstruction.hpp"
 #include "greenlab/simulation.hpp"
 
 namespace {

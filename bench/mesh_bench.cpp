@@ -14,8 +14,8 @@
 #include "graphics/instanced_mesh.hpp"
 #include "graphics/mesh_writers.hpp"
 #include "graphics/tree_mesher.hpp"
+#include "greenlab/expand.hpp"
 #include "greenlab/plant_params.hpp"
-#include "greenlab/reconstruction.hpp"
 #include "greenlab/simulation.hpp"
 
 namespace {

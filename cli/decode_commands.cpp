@@ -18,7 +18,7 @@
 #include "fspm/error.hpp"
 #include "fspm/tree_file.hpp"
 #include "graphics/mesh_writers.hpp"
-#include "reconstruction/decoding.hpp"
+#include "scan_decoding/decoding.hpp"
 #include "scans/clusters_file.hpp"
 
 namespace fspm::cli {
@@ -68,27 +68,26 @@ void run_decode(const DecodeCommand& o) {
   }
   const scans::ClusterModel model = scans::read_clusters_file(o.input);
   const auto t0 = std::chrono::steady_clock::now();
-  reconstruction::DecodeOptions options;
+  scan_decoding::DecodeOptions options;
   options.species = o.species;
   options.library.branchlets = o.branchlets;
   options.seed = o.seed;
   options.texture.match_branch_length = !o.docking_only;
-  const reconstruction::Decoding decoding = reconstruction::decode_clusters(model, options);
+  const scan_decoding::Decoding decoding = scan_decoding::decode_clusters(model, options);
   nlohmann::json summary{{"clusters", model.clusters.size()},
                          {"library_patches", decoding.library.patches.size()},
                          {"instances", decoding.placements.size()},
                          {"species", decoding.library.species},
-                         {"branch_length_m", reconstruction::textured_branch_length_m(decoding)},
+                         {"branch_length_m", scan_decoding::textured_branch_length_m(decoding)},
                          {"scanned_branch_length_m", scanned_branch_length_m(model)}};
-  const TreeGraph tree = reconstruction::decoded_tree(model, decoding);
+  const TreeGraph tree = scan_decoding::decoded_tree(model, decoding);
   summary["nodes"] = tree.size();
   if (mesh_output) {
-    reconstruction::DecodeMeshOptions mesh_options;
+    scan_decoding::DecodeMeshOptions mesh_options;
     mesh_options.seed = o.seed;
     mesh_options.prune_distance_m = o.prune_distance_m;
     if (o.lod_distance_m) mesh_options.camera_m = lod_camera(model, *o.lod_distance_m);
-    const graphics::InstancedMesh mesh =
-        reconstruction::decoded_mesh(model, decoding, mesh_options);
+    const graphics::InstancedMesh mesh = scan_decoding::decoded_mesh(model, decoding, mesh_options);
     summary["seconds"] = seconds_since(t0);
     summary["triangles"] = mesh.triangle_count();
     summary["stored_triangles"] = mesh.stored_triangle_count();

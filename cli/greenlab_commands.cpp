@@ -23,8 +23,8 @@
 #include "fspm/line_tree.hpp"
 #include "fspm/tree_file.hpp"
 #include "greenlab/calibration.hpp"
+#include "greenlab/expand.hpp"
 #include "greenlab/plant_params.hpp"
-#include "greenlab/reconstruction.hpp"
 #include "greenlab/simulation.hpp"
 
 namespace fspm::cli {

@@ -17,7 +17,7 @@
 #include "fspm/instanced_lod.hpp"
 #include "fspm/tree_file.hpp"
 #include "graphics/mesh_writers.hpp"
-#include "greenlab/reconstruction.hpp"
+#include "greenlab/expand.hpp"
 #include "io/input_kind.hpp"
 #include "io/input_mesh.hpp"
 #include "io/lsystem_mesh.hpp"

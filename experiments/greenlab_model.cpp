@@ -4,9 +4,9 @@
 #include <random>
 
 #include "experiments/metrics.hpp"
+#include "greenlab/expand.hpp"
 #include "greenlab/functional.hpp"
 #include "greenlab/plant_params.hpp"
-#include "greenlab/reconstruction.hpp"
 #include "greenlab/simulation.hpp"
 
 namespace fspm::experiments {

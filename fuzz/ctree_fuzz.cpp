@@ -6,7 +6,7 @@
 
 #include "fspm/compressed_tree_graph.hpp"
 #include "fspm/error.hpp"
-#include "greenlab/reconstruction.hpp"
+#include "greenlab/expand.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {

@@ -5,8 +5,8 @@
 
 #include "fspm/dcheck.hpp"
 #include "fspm/error.hpp"
+#include "greenlab/expand.hpp"
 #include "greenlab/functional.hpp"
-#include "greenlab/reconstruction.hpp"
 
 namespace fspm::greenlab {
 

@@ -11,9 +11,9 @@
 #include <string>
 
 #include "crown/auto_mask.hpp"
+#include "crown/crown_from_photo.hpp"
 #include "crown/cubemap.hpp"
 #include "crown/image_io.hpp"
-#include "crown/reconstruction.hpp"
 
 namespace fspm::python {
 namespace {

@@ -6,8 +6,8 @@
 #include "fspm/compressed_tree_graph.hpp"
 #include "fspm/instanced_ctree.hpp"
 #include "fspm/line_tree.hpp"
+#include "greenlab/expand.hpp"
 #include "greenlab/plant_params.hpp"
-#include "greenlab/reconstruction.hpp"
 #include "greenlab/simulation.hpp"
 #include "python/bindings.hpp"
 

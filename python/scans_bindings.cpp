@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "python/bindings.hpp"
-#include "reconstruction/decoding.hpp"
+#include "scan_decoding/decoding.hpp"
 #include "scans/clusters_file.hpp"
 #include "scans/encoder.hpp"
 #include "scans/point_set_file.hpp"
@@ -146,13 +146,13 @@ void bind_cluster_files(py::module_& m) {
       "decode_clusters",
       [](const scans::ClusterModel& model, const std::string& species, int branchlets,
          std::uint64_t seed, bool docking_only) {
-        reconstruction::DecodeOptions o;
+        scan_decoding::DecodeOptions o;
         o.species = species;
         o.library.branchlets = branchlets;
         o.seed = seed;
         o.texture.match_branch_length = !docking_only;
         py::gil_scoped_release release;
-        return reconstruction::decoded_tree(model, reconstruction::decode_clusters(model, o));
+        return scan_decoding::decoded_tree(model, scan_decoding::decode_clusters(model, o));
       },
       py::arg("model"), py::arg("species") = "", py::arg("branchlets") = 8, py::arg("seed") = 1,
       py::arg("docking_only") = false,

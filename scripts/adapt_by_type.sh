@@ -4,7 +4,7 @@
 # (docs/environment.md, "Answering the wall, type by type"). FSPM=path/to/fspm to use a build.
 set -euo pipefail
 fspm=${FSPM:-fspm}
-wall=${WALL:-experiments/adapted_vs_grown_wall.json}
+wall=${WALL:-examples/experiments/adapted_vs_grown_wall.json}
 work=$(mktemp -d)
 declare -A photo=([A-text]=0.25 [A-appendix]=0.25 [B-text]=0.45 [B-appendix]=0.45 [C-text]=0.03 [C-appendix]=0.44)
 declare -A gravi=([A-text]=0.12 [A-appendix]=0.12 [B-text]=0.44 [B-appendix]=0.03 [C-text]=0.23 [C-appendix]=0.23)

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Prints the rows of the every-light-model tables of docs/evaluation.md from a result directory
-of experiments/adapted_vs_grown_local_models.toml or adapted_vs_grown_sky.toml: per light model, tropism pairing, type and age the
+of examples/experiments/adapted_vs_grown_local_models.toml or adapted_vs_grown_sky.toml: per light model, tropism pairing, type and age the
 ratios of the sets' mean internodes (G / O, T / O), the mean distances of the four groups and the
 p-values of the two t-tests.
 

@@ -29,7 +29,7 @@ mkdir -p "$out"
 fspm=build/bin/fspm
 
 echo "== adapted versus grown (Pirk 4.5.4), small version: 8 trees per type, age and set"
-$fspm run experiments/adapted_vs_grown.toml --replicates 8 --out "$out/adapted_vs_grown" --jobs "$(nproc)"
+$fspm run examples/experiments/adapted_vs_grown.toml --replicates 8 --out "$out/adapted_vs_grown" --jobs "$(nproc)"
 # Figures need an X display (VTK); without one, xvfb-run provides it. --html: the interactive
 # report beside report.md (report/index.html).
 if [ -n "${DISPLAY:-}" ]; then

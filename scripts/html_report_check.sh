@@ -13,7 +13,7 @@ out=build/html-report-check
 shot=${1:-$out/page.png}
 rm -rf "$out/avg" "$out/hostile"
 mkdir -p "$out"
-build/bin/fspm run experiments/adapted_vs_grown.toml --replicates 4 --out "$out/avg" \
+build/bin/fspm run examples/experiments/adapted_vs_grown.toml --replicates 4 --out "$out/avg" \
   --jobs "$(nproc)" --json > "$out/run.json"
 build/bin/fspm report "$out/avg" --html --no-figures
 # puppeteer-core, pinned by report_web/package-lock.json (the build installs it with npm ci).

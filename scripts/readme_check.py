@@ -90,7 +90,7 @@ CLAIMS = [
      _int_after(r"(\d+) runs \("), 15),
     (r"report avg --html --single-file", "avg/report.html (one file)",
      lambda _, cwd: os.path.getsize(os.path.join(cwd, "avg", "report.html")) < 20e6, True),
-    (r"run experiments/adapted_vs_grown\.toml --replicates 4", "# 108 runs",
+    (r"run examples/experiments/adapted_vs_grown\.toml --replicates 4", "# 108 runs",
      _int_after(r"(\d+) runs \("), 108),
 ]
 

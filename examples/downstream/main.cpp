@@ -10,8 +10,8 @@
 #include "environment/growth_params.hpp"
 #include "fspm/constrained_edit_distance.hpp"
 #include "fspm/tree_file.hpp"
+#include "greenlab/expand.hpp"
 #include "greenlab/plant_params.hpp"
-#include "greenlab/reconstruction.hpp"
 #include "greenlab/simulation.hpp"
 
 int main(int argc, char** argv) {

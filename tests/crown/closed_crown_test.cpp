@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "crown/auto_mask.hpp"
+#include "crown/crown_from_photo.hpp"
 #include "crown/image_io.hpp"
-#include "crown/reconstruction.hpp"
 
 namespace fspm::crown {
 namespace {

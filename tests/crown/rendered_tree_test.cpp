@@ -9,8 +9,8 @@
 #include <string>
 
 #include "crown/auto_mask.hpp"
+#include "crown/crown_from_photo.hpp"
 #include "crown/image_io.hpp"
-#include "crown/reconstruction.hpp"
 #include "crown/side_view.hpp"
 
 namespace fspm::crown {

@@ -10,9 +10,9 @@
 #include <iostream>
 #include <random>
 
+#include "crown/crown_from_photo.hpp"
 #include "crown/inflation.hpp"
 #include "crown/mask_morphology.hpp"
-#include "crown/reconstruction.hpp"
 #include "fspm/error.hpp"
 
 namespace fspm::crown {

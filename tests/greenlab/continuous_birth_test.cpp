@@ -7,9 +7,9 @@
 #include <string>
 
 #include "fspm/error.hpp"
+#include "greenlab/expand.hpp"
 #include "greenlab/explicit_simulation.hpp"
 #include "greenlab/functional.hpp"
-#include "greenlab/reconstruction.hpp"
 #include "greenlab/simulation.hpp"
 #include "test_plants.hpp"
 

@@ -8,7 +8,7 @@
 
 #include "fspm/error.hpp"
 #include "fspm/instanced_tree.hpp"
-#include "greenlab/reconstruction.hpp"
+#include "greenlab/expand.hpp"
 #include "greenlab/simulation.hpp"
 #include "test_plants.hpp"
 

@@ -4,8 +4,8 @@
 
 #include "fspm/error.hpp"
 #include "fspm/line_tree.hpp"
+#include "greenlab/expand.hpp"
 #include "greenlab/plant_params.hpp"
-#include "greenlab/reconstruction.hpp"
 #include "greenlab/simulation.hpp"
 #include "test_plants.hpp"
 

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "fspm/error.hpp"
-#include "greenlab/reconstruction.hpp"
+#include "greenlab/expand.hpp"
 #include "greenlab/simulation.hpp"
 #include "test_plants.hpp"
 

@@ -2,7 +2,7 @@
 // result equals a reconstruction into a new graph, at every age.
 #include <gtest/gtest.h>
 
-#include "greenlab/reconstruction.hpp"
+#include "greenlab/expand.hpp"
 #include "greenlab/simulation.hpp"
 #include "test_plants.hpp"
 

@@ -1,4 +1,4 @@
-#include "greenlab/reconstruction.hpp"
+#include "greenlab/expand.hpp"
 
 #include <gtest/gtest.h>
 

@@ -12,10 +12,10 @@
 #include <random>
 #include <vector>
 
-#include "reconstruction/species_library.hpp"
+#include "scan_decoding/species_library.hpp"
 #include "scans/cluster_model.hpp"
 
-namespace fspm::reconstruction {
+namespace fspm::scan_decoding {
 
 struct TextureOptions {
   // S_s: patches whose thickness is within this ratio of the docking position's ...
@@ -103,4 +103,4 @@ std::vector<PlacedPatch> texture_clusters(const scans::ClusterModel& model,
                                           const SpeciesLibrary& library,
                                           const TextureOptions& options, std::mt19937_64& rng);
 
-}  // namespace fspm::reconstruction
+}  // namespace fspm::scan_decoding

@@ -9,11 +9,11 @@
 
 #include <limits>
 
-#include "reconstruction/cluster_texturing.hpp"
-#include "reconstruction/species_library.hpp"
+#include "scan_decoding/cluster_texturing.hpp"
+#include "scan_decoding/species_library.hpp"
 #include "scans/cluster_model.hpp"
 
-namespace fspm::reconstruction::testing {
+namespace fspm::scan_decoding::testing {
 
 // The hand library has no unit: its patches scale to the hulls without the species' bound.
 inline TextureOptions hand_options() {
@@ -118,4 +118,4 @@ inline bool inside_by_solid_angle(const scans::ClusterHull& hull, const Eigen::V
   return std::abs(std::abs(total) - 4.0 * std::numbers::pi) < 1e-6;
 }
 
-}  // namespace fspm::reconstruction::testing
+}  // namespace fspm::scan_decoding::testing

@@ -7,7 +7,7 @@
 
 #include "scans/cluster_model.hpp"
 
-namespace fspm::reconstruction {
+namespace fspm::scan_decoding {
 
 // Distances t > 0 at which origin + t direction crosses a hull triangle, ascending
 // (Moeller-Trumbore; `direction` need not be unit, t is in its units).
@@ -21,4 +21,4 @@ bool inside_hull(const scans::ClusterHull& hull, const Eigen::Vector3d& point);
 // Mean of the hull's vertices (zero for none).
 Eigen::Vector3d hull_centroid(const scans::ClusterHull& hull);
 
-}  // namespace fspm::reconstruction
+}  // namespace fspm::scan_decoding

@@ -1,4 +1,4 @@
-#include "reconstruction/decoding.hpp"
+#include "scan_decoding/decoding.hpp"
 
 #include <algorithm>
 #include <map>
@@ -8,7 +8,7 @@
 #include "fspm/error.hpp"
 #include "graphics/stochastic_pruning.hpp"
 
-namespace fspm::reconstruction {
+namespace fspm::scan_decoding {
 
 Decoding decode_clusters(const scans::ClusterModel& model, const DecodeOptions& options) {
   Decoding d;
@@ -166,4 +166,4 @@ graphics::InstancedMesh decoded_mesh(const scans::ClusterModel& model, const Dec
   return out;
 }
 
-}  // namespace fspm::reconstruction
+}  // namespace fspm::scan_decoding

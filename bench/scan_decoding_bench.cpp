@@ -12,13 +12,13 @@
 
 #include "bench/synthetic_scan_tree.hpp"
 #include "fspm/huge_pages.hpp"
-#include "reconstruction/decoding.hpp"
+#include "scan_decoding/decoding.hpp"
 #include "scans/encoder.hpp"
 #include "scans/scan_simulator.hpp"
 
 namespace {
 
-namespace rc = fspm::reconstruction;
+namespace rc = fspm::scan_decoding;
 
 const fspm::scans::ClusterModel& model() {
   static const fspm::scans::ClusterModel m = [] {

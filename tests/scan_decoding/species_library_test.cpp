@@ -3,9 +3,9 @@
 #include <gtest/gtest.h>
 
 #include "fspm/error.hpp"
-#include "reconstruction/species_library.hpp"
+#include "scan_decoding/species_library.hpp"
 
-namespace fspm::reconstruction {
+namespace fspm::scan_decoding {
 namespace {
 
 // Trunk of three internodes up z (radius 0.1) from (1, 2, 3); a lateral of two internodes (order
@@ -97,4 +97,4 @@ TEST(SpeciesLibrary, SeededAndChecked) {
 }
 
 }  // namespace
-}  // namespace fspm::reconstruction
+}  // namespace fspm::scan_decoding

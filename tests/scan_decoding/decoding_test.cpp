@@ -9,13 +9,13 @@
 #include <utility>
 
 #include "fspm/error.hpp"
-#include "reconstruction/decoding.hpp"
+#include "scan_decoding/decoding.hpp"
 #include "scans/encoder.hpp"
 #include "scans/scan_simulator.hpp"
 #include "scans/synthetic_tree.hpp"
-#include "tests/reconstruction/hand_built.hpp"
+#include "tests/scan_decoding/hand_built.hpp"
 
-namespace fspm::reconstruction {
+namespace fspm::scan_decoding {
 namespace {
 
 using testing::hand_library;
@@ -197,4 +197,4 @@ TEST(Decoding, LeavesAndInternodesKeepTheSpeciesSizes) {
 }
 
 }  // namespace
-}  // namespace fspm::reconstruction
+}  // namespace fspm::scan_decoding

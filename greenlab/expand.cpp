@@ -1,4 +1,4 @@
-#include "greenlab/reconstruction.hpp"
+#include "greenlab/expand.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

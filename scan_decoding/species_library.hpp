@@ -14,7 +14,7 @@
 
 #include "fspm/tree_graph.hpp"
 
-namespace fspm::reconstruction {
+namespace fspm::scan_decoding {
 
 struct DockingPoint {
   NodeId node = kNoNode;  // node of the patch the lateral axis hung from
@@ -74,4 +74,4 @@ std::vector<Patch> cut_into_patches(const TreeGraph& branchlet, std::uint32_t br
 // Throws ValueError for an unknown species or options out of range.
 SpeciesLibrary make_species_library(std::string_view species, const LibraryOptions& options = {});
 
-}  // namespace fspm::reconstruction
+}  // namespace fspm::scan_decoding

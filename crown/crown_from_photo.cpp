@@ -1,4 +1,4 @@
-#include "crown/reconstruction.hpp"
+#include "crown/crown_from_photo.hpp"
 
 #include <algorithm>
 #include <chrono>

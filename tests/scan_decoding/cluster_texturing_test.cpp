@@ -7,11 +7,11 @@
 #include <random>
 
 #include "fspm/error.hpp"
-#include "reconstruction/cluster_texturing.hpp"
-#include "reconstruction/hull_geometry.hpp"
-#include "tests/reconstruction/hand_built.hpp"
+#include "scan_decoding/cluster_texturing.hpp"
+#include "scan_decoding/hull_geometry.hpp"
+#include "tests/scan_decoding/hand_built.hpp"
 
-namespace fspm::reconstruction {
+namespace fspm::scan_decoding {
 namespace {
 
 using testing::hand_library;
@@ -209,4 +209,4 @@ TEST(ClusterTexturing, RefusesWhatItCannotTexture) {
 }
 
 }  // namespace
-}  // namespace fspm::reconstruction
+}  // namespace fspm::scan_decoding

@@ -1,4 +1,4 @@
-#include "reconstruction/cluster_texturing.hpp"
+#include "scan_decoding/cluster_texturing.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -8,9 +8,9 @@
 #include <string>
 
 #include "fspm/error.hpp"
-#include "reconstruction/hull_geometry.hpp"
+#include "scan_decoding/hull_geometry.hpp"
 
-namespace fspm::reconstruction {
+namespace fspm::scan_decoding {
 namespace {
 
 void validate(const TextureOptions& o) {
@@ -314,4 +314,4 @@ std::vector<PlacedPatch> texture_clusters(const scans::ClusterModel& model,
   return all;
 }
 
-}  // namespace fspm::reconstruction
+}  // namespace fspm::scan_decoding

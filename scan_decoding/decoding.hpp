@@ -14,11 +14,11 @@
 #include "fspm/tree_graph.hpp"
 #include "graphics/instanced_mesh.hpp"
 #include "graphics/tree_mesher.hpp"
-#include "reconstruction/cluster_texturing.hpp"
-#include "reconstruction/species_library.hpp"
+#include "scan_decoding/cluster_texturing.hpp"
+#include "scan_decoding/species_library.hpp"
 #include "scans/cluster_model.hpp"
 
-namespace fspm::reconstruction {
+namespace fspm::scan_decoding {
 
 struct DecodeOptions {
   std::string species;  // empty: the model's species
@@ -64,4 +64,4 @@ std::size_t drawn_leaves(std::size_t leaves, double distance_m, double prune_dis
 graphics::InstancedMesh decoded_mesh(const scans::ClusterModel& model, const Decoding& decoding,
                                      const DecodeMeshOptions& options = {});
 
-}  // namespace fspm::reconstruction
+}  // namespace fspm::scan_decoding

@@ -1,4 +1,4 @@
-#include "reconstruction/hull_geometry.hpp"
+#include "scan_decoding/hull_geometry.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
-namespace fspm::reconstruction {
+namespace fspm::scan_decoding {
 
 namespace {
 
@@ -59,4 +59,4 @@ Eigen::Vector3d hull_centroid(const scans::ClusterHull& hull) {
   return hull.vertices.empty() ? sum : Eigen::Vector3d(sum / double(hull.vertices.size()));
 }
 
-}  // namespace fspm::reconstruction
+}  // namespace fspm::scan_decoding

@@ -1,4 +1,4 @@
-#include "reconstruction/species_library.hpp"
+#include "scan_decoding/species_library.hpp"
 
 #include <algorithm>
 #include <string>
@@ -9,7 +9,7 @@
 #include "lsystem/turtle.hpp"
 #include "scans/species.hpp"
 
-namespace fspm::reconstruction {
+namespace fspm::scan_decoding {
 namespace {
 
 // The habit of a species' shoots, filled into one grammar.
@@ -182,4 +182,4 @@ std::vector<Patch> cut_into_patches(const TreeGraph& branchlet, std::uint32_t br
   return patches;
 }
 
-}  // namespace fspm::reconstruction
+}  // namespace fspm::scan_decoding
