@@ -225,25 +225,24 @@ TEST(SceneCli, UpgradeRewritesEarlierLayoutsWithTheSameLight) {
   EXPECT_EQ(read_text(old_scene), old_text);
 }
 
-// Every scene file shipped with fspm (examples/, experiments/) is in the one current layout: an
+// Every scene file shipped with fspm (examples/) is in the one current layout: an
 // example in an earlier layout fails here with its name. `scene upgrade` reads each, so each is
 // also a valid scene.
 TEST(SceneCli, EveryShippedSceneIsInTheCurrentLayout) {
   const auto dir = scratch_dir("scene_examples");
   int scenes = 0;
-  for (const char* folder : {"examples", "experiments"}) {
-    for (const auto& e : fs::recursive_directory_iterator(fs::path(FSPM_SOURCE_DIR) / folder)) {
-      if (e.path().extension() != ".json" ||
-          e.path().string().find("/downstream/") != std::string::npos) {
-        continue;
-      }
-      const auto r = run_fspm("scene upgrade " + e.path().string() + " -o " +
-                              (dir / "up.json").string() + " --json");
-      ASSERT_EQ(r.exit_code, 0) << e.path() << ": " << r.err;
-      EXPECT_EQ(nlohmann::json::parse(r.out)["layout"], "current")
-          << e.path() << " is in an earlier layout: rewrite it with fspm scene upgrade";
-      ++scenes;
+  const fs::path examples = fs::path(FSPM_SOURCE_DIR) / "examples";
+  for (const auto& e : fs::recursive_directory_iterator(examples)) {
+    if (e.path().extension() != ".json" ||
+        e.path().string().find("/downstream/") != std::string::npos) {
+      continue;
     }
+    const auto r = run_fspm("scene upgrade " + e.path().string() + " -o " +
+                            (dir / "up.json").string() + " --json");
+    ASSERT_EQ(r.exit_code, 0) << e.path() << ": " << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["layout"], "current")
+        << e.path() << " is in an earlier layout: rewrite it with fspm scene upgrade";
+    ++scenes;
   }
   EXPECT_GE(scenes, 6);  // wall, sphere and box, site, forest, landscape, the experiment's wall
 }
