@@ -248,8 +248,11 @@ void check_fixed_binary_size(const PlyHeader& h, std::string_view data, const st
   }
   const std::size_t held = data.size() - std::min(h.data_offset, data.size());
   if (expected == static_cast<double>(held)) return;
-  throw ParseError("the header declares " + declared_counts(h) + " (" +
-                       std::to_string(static_cast<std::uint64_t>(expected)) +
+  // Counts near 2^64 make a byte total no integer holds: say so rather than convert it.
+  const std::string expected_bytes = expected < 0x1p64
+                                         ? std::to_string(static_cast<std::uint64_t>(expected))
+                                         : "more than 18446744073709551615";
+  throw ParseError("the header declares " + declared_counts(h) + " (" + expected_bytes +
                        " bytes of data), the file holds " + std::to_string(held) +
                        " bytes after its header (to byte " + std::to_string(data.size()) +
                        "): a header count that does not match the data",

@@ -854,6 +854,18 @@ std::vector<Case> named_input_cases() {
        "s.ply: the header declares 2 vertex \\(24 bytes of data\\), the file holds 28 bytes after "
        "its header \\(to byte [0-9]+\\): a header count that does not match the data",
        {"c.clusters"}},
+      {"BinaryPlyCountsBeyondAnyByteTotal",
+       {{"s.ply",
+         "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty float x\n"
+         "property float y\nproperty float z\nelement extra 18000000000000000000\n"
+         "property double v\nend_header\n" +
+             std::string(24, '\0')}},
+       {},
+       "encode {dir}/s.ply -o {dir}/c.clusters",
+       1,
+       "s.ply: the header declares 2 vertex and 18000000000000000000 extra \\(more than "
+       "18446744073709551615 bytes of data\\)",
+       {"c.clusters"}},
       {"BinaryPlyShorterThanItsHeader",
        {{"s.ply", kPlyHeader + std::string(20, '\0')}},
        {},
