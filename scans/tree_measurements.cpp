@@ -9,6 +9,7 @@
 #include "scans/allometry.hpp"
 #include "scans/crown_base.hpp"
 #include "scans/point_origin.hpp"
+#include "scans/segment_distance.hpp"
 
 namespace fspm::scans {
 namespace {
@@ -57,6 +58,27 @@ void measure_stem(const PointSet& ps, const std::vector<char>& on_trunk, double 
   }
   m.tree_found = true;
   m.dbh_m = 2.0 * s.circle->radius_m;
+}
+
+// A point in a stem slice within the radius of an order-0 cylinder (plus a quarter of it, at
+// least 2 cm, for scanner noise and misregistered scans) of its axis lies on the stem's surface
+// even when its nearest segment is a branch's first one: at a fork that segment starts on the
+// trunk's axis and takes the stem's ring points on its side, which leaves the trunk an arc that
+// fits no circle (the terrestrial scan of a lodgepole pine in examples/scans/ forks at 1.27 m).
+void add_stem_surface_points(const PointSet& ps, const std::vector<QsmCylinder>& cylinders,
+                             double z_low, double z_high, std::vector<char>& on_trunk) {
+  for (std::size_t i = 0; i < ps.points.size(); ++i) {
+    const Eigen::Vector3d& p = ps.points[i];
+    if (on_trunk[i] || p.z() < z_low || p.z() > z_high) continue;
+    for (const QsmCylinder& c : cylinders) {
+      if (c.order != 0) continue;
+      const double reach = c.radius_m + std::max(0.25 * c.radius_m, 0.02);
+      if (segment_distance(p, p, c.start, c.start + c.length_m * c.axis) <= reach) {
+        on_trunk[i] = 1;
+        break;
+      }
+    }
+  }
 }
 
 void measure_crown(const PointSet& ps, const TreeGraph& t, double z0,
@@ -115,6 +137,9 @@ TreeMeasurements measure_tree(const PointSet& absolute, const TreeGraph& skeleto
   for (std::size_t i = 0; i < ps.points.size(); ++i) {
     on_trunk[i] = m.cylinders[cylinder_of_point[i]].order == 0;
   }
+  const BreastHeightOptions& b = o.breast_height;
+  add_stem_surface_points(ps, m.cylinders, z0 + std::min(b.stem_low_m, b.slice_low_m),
+                          z0 + std::max(b.stem_high_m, b.slice_high_m), on_trunk);
   measure_stem(ps, on_trunk, z0, o, m);
   measure_crown(ps, t, z0, cylinder_of_point, o, m);
   for (QsmCylinder& c : m.cylinders) c.start += origin;
