@@ -15,6 +15,7 @@
 #include "cli/full_command_list.hpp"
 #include "cli/output.hpp"
 #include "crown/auto_mask.hpp"
+#include "crown/crown_memory.hpp"
 #include "crown/cubemap.hpp"
 #include "crown/image_io.hpp"
 #include "crown/preview.hpp"
@@ -220,6 +221,13 @@ void make_crown(const CrownCommand& c, const OutputPaths& paths) {
   OutputTransaction outputs;
   auto t0 = std::chrono::steady_clock::now();
   nlohmann::json seconds = nlohmann::json::object();
+  // The whole reconstruction's memory from the photograph's header, before a pixel is decoded.
+  crown::CrownMemoryRequest need;
+  need.cubemap_size = c.cubemap_size;
+  need.working_pixels = crown::CrownOptions{}.working_pixels;
+  need.preview = !c.preview.empty();
+  need.side_mask = !c.side_mask.empty();
+  crown::check_crown_memory(c.photo, need);
   const crown::Raster photo = crown::read_rgb(c.photo);
   crown::Mask mask;
   if (c.mask.empty()) {
