@@ -16,6 +16,7 @@
 
 #include "fspm/error.hpp"
 #include "fspm/number_text.hpp"
+#include "fspm/saturating.hpp"
 
 namespace fspm::cli {
 namespace {
@@ -144,6 +145,11 @@ std::string human_text(const nlohmann::json& value) {
     out += human_text(value[i]);
   }
   return out + "]";
+}
+
+nlohmann::json count_json(std::uint64_t count) {
+  if (count == kSaturated) return count_text(count);
+  return count;
 }
 
 void use_checked_standard_output() {

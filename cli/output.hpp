@@ -1,5 +1,6 @@
 #pragma once
 // Shared helpers of the subcommands: machine-readable output on stdout, logs on stderr.
+#include <cstdint>
 #include <initializer_list>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
@@ -18,6 +19,10 @@ void print_json(const nlohmann::json& document);
 // (format_significant), arrays as "[a, b]", integers, booleans and strings as JSON writes them.
 // The --json form of the same command keeps every digit.
 std::string human_text(const nlohmann::json& value);
+
+// A count for --json: its number, or the text "more than 10^19" where it saturated at 2^64 - 1
+// (fspm/saturating.hpp), so no reader takes 18446744073709551615 for a count.
+nlohmann::json count_json(std::uint64_t count);
 
 // Routes std::cout through a buffer that remembers the system's reason of a failed write; then
 // finish_standard_output() flushes and throws IoError naming "standard output" and that reason
