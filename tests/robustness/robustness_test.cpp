@@ -594,7 +594,10 @@ std::vector<Case> memory_cases() {
        {},
        "--memory-limit 100M distance {dir}/a.nwk {dir}/a.nwk",
        1,
-       "the edit distance of trees of 3001 and 3001 nodes needs about 206.1 MiB, " + limit},
+       "the edit distance of trees of 3001 and 3001 nodes needs about 206.1 MiB, " + limit,
+       {},
+       {},
+       60},
       {"SweepAxisOverTheMemoryLimit",
        {{"e.toml", kSynthetic + "[sweep]\n\"x.a\" = { range = [0, 100000000] }\n"}},
        {},
@@ -846,6 +849,37 @@ std::vector<Case> named_input_cases() {
        1,
        "dup.toml:2:[0-9]+: .*cannot redefine existing .*'years'",
        {"t.tree"}},
+      // TOML forbids defining a key or table twice (TOML 1.0, "Keys"); every TOML input refuses it
+      // with the file and line, through the one reader (fspm/toml_text.hpp).
+      {"GreenlabParametersWithATableTwice",
+       {{"dup.toml", "[functional]\nbiomass = 1\n[functional]\nbiomass = 2\n"}},
+       {},
+       "greenlab simulate {dir}/dup.toml -o {dir}/p.ctree",
+       1,
+       "dup.toml:3:[0-9]+: .*cannot redefine existing table 'functional'",
+       {"p.ctree"}},
+      {"ExperimentWithAKeyTwice",
+       {{"dup.toml", kSynthetic + "[sweep]\n\"x.a\" = [1, 2]\n\"x.a\" = [3]\n"}},
+       {},
+       "run {dir}/dup.toml --out {dir}/out",
+       1,
+       "dup.toml:7:[0-9]+: .*cannot redefine existing array",
+       {"out"}},
+      {"GrowthParametersDottedKeyOverAValue",
+       {{"dup.toml", "years = 3\nyears.max = 4\n"}},
+       {},
+       "grow {dir}/dup.toml -o {dir}/t.tree",
+       1,
+       "dup.toml:2:[0-9]+: .*cannot redefine existing integer as dotted key-value pair",
+       {"t.tree"}},
+      {"SkyFileWithAKeyTwice",
+       {{"sky.toml", "[sky]\ndate = \"2024-06-21\"\ndate = \"2024-12-21\"\n"}},
+       {},
+       "adapt " + kExamples + "/trees/open_a12.treeb --scene " + kScene +
+           " --sky {dir}/sky.toml -o {dir}/a.tree",
+       1,
+       "sky.toml:3:[0-9]+: .*cannot redefine existing .*'date'",
+       {"a.tree"}},
       {"StrayBytesInABinaryPly",
        {{"s.ply", kPlyHeader + std::string(24, '\0') + "junk"}},
        {},
@@ -1091,6 +1125,62 @@ std::vector<Case> budget_cases() {
        {"t.glb"},
        {},
        400},
+      // The crown's working memory (photograph, masks, working images, cubemaps, preview) is
+      // estimated from the photograph's header; these headers declare what their data lacks.
+      {"CrownOfAPhoneSizedPhotoOverTheMemoryLimit",
+       {{"big.png", lying_png(4000, 3000)}},
+       {},
+       "--memory-limit 256M crown {dir}/big.png -o {dir}/out",
+       1,
+       "big.png: the crown of a 4000 x 3000 photograph needs about [0-9.]+ MiB, above the memory "
+       "limit of 256 MiB \\(--memory-limit\\)",
+       {"out"},
+       {},
+       300},
+      {"CrownPreviewOverTheMemoryLimit",
+       {{"big.png", lying_png(2000, 1500)}},
+       {},
+       "--memory-limit 256M crown {dir}/big.png -o {dir}/out --preview {dir}/p.png",
+       1,
+       "big.png: the crown of a 2000 x 1500 photograph and its preview needs about [0-9.]+ MiB, "
+       "above the memory limit of 256 MiB \\(--memory-limit\\)",
+       {"out", "p.png"},
+       {},
+       300},
+      {"CrownCubemapsOverTheMemoryLimit",
+       {},
+       {},
+       "--memory-limit 512M crown " + kExamples +
+           "/crown/tree_front.png -o {dir}/out --cubemap-size 2048",
+       1,
+       "tree_front.png: the crown of a 256 x 256 photograph with cubemaps of 2048 texels needs "
+       "about [0-9.]+ MiB, above the memory limit of 512 MiB \\(--memory-limit\\)",
+       {"out"},
+       {},
+       300},
+      // Copying a branch onto a node of its own branch doubles the model at each edit (Pirk
+      // 5.4.1 edits are applied in turn): thirty copies would need 2^30 times the branch.
+      {"StagesBranchCopiesOverTheMemoryLimit",
+       {},
+       {},
+       "--memory-limit 64M stages " + kExamples + "/trees/open_a12.treeb --at 1 -o {dir}/s.tree" +
+           repeat(" --copy-branch 614:631", 30),
+       1,
+       "branch edit \\(copy\\) 614:631: a model of [0-9]+ nodes needs about [0-9.]+ MiB, above "
+       "the memory limit of 64 MiB \\(--memory-limit\\)",
+       {"s.tree"},
+       {},
+       200},
+      // Stages are made one at a time into one tree: a long sequence holds no more than one.
+      {"ThousandStagesWithinASmallLimit",
+       {},
+       {},
+       "--memory-limit 8M stages " + kExamples + "/trees/open_a12.treeb --steps 1000 -o {dir}/s",
+       0,
+       "",
+       {},
+       {},
+       100},
       {"PopulationDistanceTooSmallNamesItsKey",
        {{"p.json", terrain +
                        ", \"population\": {\"min_distance_m\": 0.0001, \"classes\": "
@@ -1210,6 +1300,28 @@ TEST_P(GlobalOption, SameBeforeAndAfterTheCommand) {
   EXPECT_EQ(std::regex_replace(before.out, seconds, ""),
             std::regex_replace(after.out, seconds, ""));
   fs::remove_all(dir);
+}
+
+// Counts that saturate at 2^64 - 1 (ABOP Fig. 1.24a derived 40 steps has about 10^28 modules)
+// are written "more than 10^19" in text, logs and JSON, never as the saturated number itself.
+TEST(SaturatedCounts, AreMoreThanTenToTheNineteen) {
+  const std::string derive =
+      "lsystem derive " + expand(kExamples, {}) + "/lsystems/abop_1_24a.l --compressed --steps 40";
+  for (const std::string& args : {derive, derive + " --json", "-v " + derive}) {
+    const CommandResult r = run_fspm(args);
+    EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
+    const std::string all = r.out + r.err;
+    EXPECT_EQ(all.find("18446744073709551615"), std::string::npos) << args << "\n" << all;
+    EXPECT_NE(all.find("more than 10^19"), std::string::npos) << args << "\n" << all;
+  }
+  const CommandResult json = run_fspm(derive + " --json");
+  EXPECT_NE(json.out.find("\"modules\": \"more than 10^19\""), std::string::npos) << json.out;
+  EXPECT_NE(json.out.find("\"compression\": \"more than "), std::string::npos) << json.out;
+  // Below the saturation the counts stay numbers. F --> F[+F]F[-F]F makes 5^n F and adds six
+  // other modules per F rewritten: 5^n + 6 (5^n - 1) / 4 modules, 745058059692382811 at n = 25.
+  const CommandResult exact = run_fspm("lsystem derive " + expand(kExamples, {}) +
+                                       "/lsystems/abop_1_24a.l --compressed --steps 25 --json");
+  EXPECT_NE(exact.out.find("\"modules\": 745058059692382811"), std::string::npos) << exact.out;
 }
 
 std::string case_name(const ::testing::TestParamInfo<Case>& info) { return info.param.name; }
