@@ -23,6 +23,7 @@
 #include "crown/side_view.hpp"
 #include "fspm/atomic_file.hpp"
 #include "fspm/error.hpp"
+#include "fspm/signal_cleanup.hpp"
 #include "graphics/mesh_writers.hpp"
 
 namespace fspm::cli {
@@ -54,6 +55,7 @@ struct CrownCommand {
 struct OutputPaths {
   std::string mesh, color, radius, cubemaps, relief, mask, billboards;
   std::string created_dir;  // the output directory when this run created it
+  int cleanup = -1;         // its handle of fspm/signal_cleanup.hpp
 };
 
 OutputPaths output_paths(const std::string& out) {
@@ -87,7 +89,10 @@ OutputPaths output_paths(const std::string& out) {
   o.relief = beside("_relief.png");
   o.mask = beside("_mask.png");
   o.billboards = beside("_billboards.csv");
-  if (created) o.created_dir = p.string();
+  if (created) {
+    o.created_dir = p.string();
+    o.cleanup = register_signal_cleanup(o.created_dir);  // removed, when empty, by a signal
+  }
   return o;
 }
 
@@ -213,8 +218,10 @@ void run_crown(const CrownCommand& c) {
   } catch (...) {
     std::error_code ec;
     if (!paths.created_dir.empty()) std::filesystem::remove(paths.created_dir, ec);  // if empty
+    unregister_signal_cleanup(paths.cleanup);
     throw;
   }
+  unregister_signal_cleanup(paths.cleanup);
 }
 
 void make_crown(const CrownCommand& c, const OutputPaths& paths) {

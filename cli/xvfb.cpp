@@ -1,8 +1,10 @@
 #include "cli/xvfb.hpp"
 
 #include <spdlog/spdlog.h>
+#include <sys/prctl.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -15,8 +17,24 @@
 
 namespace fspm::cli {
 
+namespace {
+
+// Under xvfb-run this process is the script's child: a SIGTERM or SIGINT sent to the command the
+// user started ends the script, not this process, which would go on and write its outputs after
+// being stopped. The kernel sends it SIGTERM when its parent ends instead.
+void stop_with_xvfb_run() {
+  ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+  if (::getppid() == 1) std::raise(SIGTERM);  // the script already ended
+}
+
+}  // namespace
+
 void rerun_under_xvfb_if_needed() {
-  if (graphics::display_available() || std::getenv("FSPM_UNDER_XVFB") != nullptr) return;
+  if (std::getenv("FSPM_UNDER_XVFB") != nullptr) {
+    stop_with_xvfb_run();
+    return;
+  }
+  if (graphics::display_available()) return;
   const char* xvfb_run = "/usr/bin/xvfb-run";
   if (!std::filesystem::exists(xvfb_run)) return;
   std::ifstream cmdline("/proc/self/cmdline", std::ios::binary);
