@@ -47,7 +47,8 @@ void add_mtg_options(CLI::App& app, GlobalValues& values) {
                  "length unit)");
   app.add_option("--mtg-scale", values.mtg_scale,
                  "Scale of an MTG file whose entities become the tree's nodes (default: the "
-                 "finest with geometry)");
+                 "finest with geometry)")
+      ->check(CLI::Range(0, 1000));
   app.add_option("--plant", values.plant,
                  "Keep one plant of a multi-plant MTG file: its label (P2) or number (2)");
 }
