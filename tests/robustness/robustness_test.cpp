@@ -4,6 +4,7 @@
 // must not appear or change.
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <filesystem>
 #include <map>
 #include <regex>
@@ -944,6 +945,30 @@ std::vector<Case> named_input_cases() {
        1,
        "e.ply: no point in the file",
        {"c.clusters"}},
+      // A link to itself: the system's refusal names the file, exit 1, not an internal error.
+      {"InputIsALinkLoop",
+       {},
+       {},
+       "mesh {dir}/loop.treeb -o {dir}/m.obj",
+       1,
+       "^fspm: error: .*loop.treeb: Too many levels of symbolic links\\n$",
+       {"m.obj"},
+       "ln -s loop.treeb {dir}/loop.treeb; "},
+      // libpng prints its own complaint on stderr; it joins the one line of the error.
+      {"TruncatedPngIsOneLine",
+       {},
+       {},
+       "crown {dir}/cut.png -o {dir}/out",
+       1,
+       "^fspm: error: .*cut.png: cannot decode image: [^\\n]*hit end of file[^\\n]*\\n$",
+       {"out"},
+       "head -c 20000 " + kExamples + "/crown/tree_front.png > {dir}/cut.png; "},
+      {"NegativeMtgScale",
+       {},
+       {},
+       "--mtg-scale -1 tree info " + kExamples + "/trees/growth_units.mtg",
+       1,
+       "--mtg-scale: Value -1 not in range 0 to 1000"},
       {"MeshWithoutFaceForStages",
        {{"v.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"}},
        {},
@@ -1171,6 +1196,19 @@ std::vector<Case> budget_cases() {
        {"s.tree"},
        {},
        200},
+      // The points a simulated scan keeps are bounded before it starts (at most 1 / pi of the
+      // candidates it draws): 10^8 per m2 would take minutes and gigabytes.
+      {"ScanDensityOverTheMemoryLimit",
+       {},
+       {},
+       "--memory-limit 256M scan " + kExamples +
+           "/trees/open_a12.treeb -o {dir}/s.xyz --density 100000000",
+       1,
+       "a simulated scan of about [0-9]+ points \\(density 100000000 per m2\\) needs about "
+       "[0-9.]+ GiB, above the memory limit of 256 MiB \\(--memory-limit\\)",
+       {"s.xyz"},
+       {},
+       100},
       // Stages are made one at a time into one tree: a long sequence holds no more than one.
       {"ThousandStagesWithinASmallLimit",
        {},
@@ -1299,6 +1337,66 @@ TEST_P(GlobalOption, SameBeforeAndAfterTheCommand) {
   const std::regex seconds("\"seconds\": [0-9.e+-]+");
   EXPECT_EQ(std::regex_replace(before.out, seconds, ""),
             std::regex_replace(after.out, seconds, ""));
+  fs::remove_all(dir);
+}
+
+// SIGTERM and SIGINT end a command as the signal does (a shell sees 143 and 130), and what it
+// had not finished goes with it: no temporary of an atomic write, no output folder it created.
+struct Stopped {
+  bool by_signal = false;
+  int signal = 0;
+};
+
+Stopped stop_after(const std::vector<std::string>& args, int signal, double seconds) {
+  std::vector<std::string> words = {FSPM_EXE};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  const pid_t child = ::fork();
+  if (child == 0) {
+    const int null = ::open("/dev/null", O_RDWR);
+    ::dup2(null, 0), ::dup2(null, 1), ::dup2(null, 2);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  ::usleep(static_cast<useconds_t>(seconds * 1e6));
+  ::kill(child, signal);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return {WIFSIGNALED(status), WIFSIGNALED(status) ? WTERMSIG(status) : 0};
+}
+
+std::vector<std::string> temporaries_in(const fs::path& dir) {
+  std::vector<std::string> out;
+  if (!fs::exists(dir)) return out;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    if (e.path().filename().string().find(".tmp") != std::string::npos) out.push_back(e.path());
+  }
+  return out;
+}
+
+TEST(Signals, StagesStoppedLeaveNoTemporary) {
+  for (const int signal : {SIGTERM, SIGINT}) {
+    const fs::path dir = scratch_dir("signal_stages");
+    const Stopped s = stop_after({"stages", expand(kExamples, {}) + "/trees/open_a12.treeb",
+                                  "--steps", "100000", "-o", (dir / "out").string()},
+                                 signal, 1.0);
+    EXPECT_TRUE(s.by_signal && s.signal == signal) << "ended by signal " << s.signal;
+    EXPECT_TRUE(fs::exists(dir / "out"));  // some stages were written, each whole
+    EXPECT_EQ(temporaries_in(dir), std::vector<std::string>{});
+    fs::remove_all(dir);
+  }
+}
+
+TEST(Signals, CrownStoppedLeavesNoOutputFolder) {
+  const fs::path dir = scratch_dir("signal_crown");
+  const Stopped s = stop_after({"crown", expand(kExamples, {}) + "/crown/tree_front.png", "-o",
+                                (dir / "out").string(), "--cubemap-size", "1024"},
+                               SIGTERM, 1.0);
+  EXPECT_TRUE(s.by_signal && s.signal == SIGTERM) << "ended by signal " << s.signal;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  EXPECT_EQ(temporaries_in(dir), std::vector<std::string>{});
   fs::remove_all(dir);
 }
 
