@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "cli/output.hpp"
 #include "fspm/error.hpp"
@@ -69,8 +70,13 @@ CLI::App* chosen_command(const CLI::App& app, std::string& words) {
 std::string failure_line(const CLI::App* app, const CLI::Error& e) {
   std::string words;
   chosen_command(*app, words);
-  return "fspm: error: " + std::string(e.what()) + " (see fspm " +
-         (words.empty() ? "" : words + " ") + "--help)\n";
+  std::string what = e.what();
+  // "fspm frobnicate": CLI11 says a subcommand is required; name the word it did not know.
+  const std::vector<std::string> left = app->remaining(true);
+  if (what.starts_with("A subcommand is required") && !left.empty()) {
+    what = "unknown command '" + left.front().substr(0, 80) + "'";
+  }
+  return "fspm: error: " + what + " (see fspm " + (words.empty() ? "" : words + " ") + "--help)\n";
 }
 
 // --json given before the command (or after a command group such as `tree`) lands on the
