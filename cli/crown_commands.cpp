@@ -234,7 +234,7 @@ void make_crown(const CrownCommand& c, const OutputPaths& paths) {
   need.working_pixels = crown::CrownOptions{}.working_pixels;
   need.preview = !c.preview.empty();
   need.side_mask = !c.side_mask.empty();
-  crown::check_crown_memory(c.photo, need);
+  crown::check_crown_memory(c.photo, need, c.mask);
   const crown::Raster photo = crown::read_rgb(c.photo);
   crown::Mask mask;
   if (c.mask.empty()) {

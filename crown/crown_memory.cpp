@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "fspm/error.hpp"
 #include "fspm/image_budget.hpp"
 #include "fspm/image_codec.hpp"
 #include "fspm/memory_budget.hpp"
@@ -42,9 +43,22 @@ double crown_memory_bytes(const CrownMemoryRequest& r) {
   return bytes;
 }
 
-void check_crown_memory(const std::string& photo, CrownMemoryRequest request) {
+void check_crown_memory(const std::string& photo, CrownMemoryRequest request,
+                        const std::string& mask) {
   check_image_file(photo);
   const ImageInfo info = read_image_info(photo);
+  if (!mask.empty()) {
+    check_image_file(mask);
+    const ImageInfo m = read_image_info(mask);
+    check_image_size(mask, m.width, m.height, m.channels,
+                     sizeof(float) + static_cast<double>(m.bytes_per_value));
+    if (m.width != info.width || m.height != info.height) {
+      throw ValueError("the mask is " + std::to_string(m.width) + " x " + std::to_string(m.height) +
+                           " pixels but the photograph " + std::to_string(info.width) + " x " +
+                           std::to_string(info.height) + ": they must be the same size",
+                       mask);
+    }
+  }
   check_image_size(photo, info.width, info.height, info.channels,
                    sizeof(float) + static_cast<double>(info.bytes_per_value));
   request.width = info.width;

@@ -24,7 +24,9 @@ double crown_memory_bytes(const CrownMemoryRequest& request);
 
 // Reads the header of `photo` and checks it as every image reader does (fspm/image_budget.hpp),
 // then checks crown_memory_bytes against the memory limit: throws MemoryLimitError naming
-// `photo`, the photograph's size and the limit (--memory-limit).
-void check_crown_memory(const std::string& photo, CrownMemoryRequest request);
+// `photo`, the photograph's size and the limit (--memory-limit). A `mask` (optional) must declare
+// the photograph's size: ValueError naming it otherwise, before either is decoded.
+void check_crown_memory(const std::string& photo, CrownMemoryRequest request,
+                        const std::string& mask = {});
 
 }  // namespace fspm::crown
