@@ -256,6 +256,13 @@ run_case header/las-count fail big.las "head -c 107 $v/v.las > big.las; printf '
   "encode big.las -o out.clusters"
 run_case header/glb-length fail big.glb "head -c 8 $v/v.glb > big.glb; printf '\377\377\377\177' >> big.glb; tail -c +13 $v/v.glb >> big.glb" \
   "encode big.glb -o out.clusters"
+run_case header/gltf-accessor fail huge.gltf \
+  "printf '%s' '{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":36,\"uri\":\"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA\"}],\"bufferViews\":[{\"buffer\":0,\"byteLength\":36}],\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":2000000000,\"type\":\"VEC3\",\"min\":[0,0,0],\"max\":[1,1,1]}],\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0}}]}],\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}],\"scene\":0}' > huge.gltf" \
+  "encode huge.gltf -o out.clusters"
+run_case header/obj-index fail bad.obj "printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2000000000\n' > bad.obj" \
+  "stages bad.obj --at 0.5 -o out.tree"
+run_case header/obj-three-points fail t.obj "printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' > t.obj" \
+  "encode t.obj -o out.clusters"
 png_header() {  # WIDTH HEIGHT: a PNG header declaring WIDTH x HEIGHT with one row of data
   python3 - "$1" "$2" <<'EOF'
 import struct, sys, zlib
