@@ -22,6 +22,8 @@ TIMEOUT=${TIMEOUT:-60}
 ex=$here/examples
 work=$(mktemp -d /tmp/fspm_hostile.XXXXXX)
 [ "${KEEP:-0}" = 1 ] || trap 'rm -rf "$work"' EXIT
+trap 'exit 130' INT
+trap 'exit 143' TERM
 [ -x "$FSPM" ] || { echo "hostile_audit: no executable $FSPM" >&2; exit 2; }
 
 cases=0
