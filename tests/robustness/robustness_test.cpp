@@ -889,6 +889,18 @@ std::vector<Case> named_input_cases() {
        "s.ply: the header declares 2 vertex \\(24 bytes of data\\), the file holds 28 bytes after "
        "its header \\(to byte [0-9]+\\): a header count that does not match the data",
        {"c.clusters"}},
+      // 2 x 10^18 records of 12 bytes pass 2^64 bytes: said so, not converted (found by fuzzing).
+      {"BinaryPlyCountBeyondSixtyFourBits",
+       {{"s.ply",
+         "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000000000000\nproperty "
+         "float x\nproperty float y\nproperty float z\nend_header\n" +
+             std::string(24, '\0')}},
+       {},
+       "encode {dir}/s.ply -o {dir}/c.clusters",
+       1,
+       "s.ply: the header declares 2000000000000000000 vertex \\(more than 10\\^19 bytes of "
+       "data\\), the file holds 24 bytes",
+       {"c.clusters"}},
       {"BinaryPlyShorterThanItsHeader",
        {{"s.ply", kPlyHeader + std::string(20, '\0')}},
        {},
