@@ -16,12 +16,14 @@
 #include "cli/output.hpp"
 #include "crown/auto_mask.hpp"
 #include "crown/crown_from_photo.hpp"
+#include "crown/crown_memory.hpp"
 #include "crown/cubemap.hpp"
 #include "crown/image_io.hpp"
 #include "crown/preview.hpp"
 #include "crown/side_view.hpp"
 #include "fspm/atomic_file.hpp"
 #include "fspm/error.hpp"
+#include "fspm/signal_cleanup.hpp"
 #include "graphics/mesh_writers.hpp"
 
 namespace fspm::cli {
@@ -53,6 +55,7 @@ struct CrownCommand {
 struct OutputPaths {
   std::string mesh, color, radius, cubemaps, relief, mask, billboards;
   std::string created_dir;  // the output directory when this run created it
+  int cleanup = -1;         // its handle of fspm/signal_cleanup.hpp
 };
 
 OutputPaths output_paths(const std::string& out) {
@@ -86,7 +89,10 @@ OutputPaths output_paths(const std::string& out) {
   o.relief = beside("_relief.png");
   o.mask = beside("_mask.png");
   o.billboards = beside("_billboards.csv");
-  if (created) o.created_dir = p.string();
+  if (created) {
+    o.created_dir = p.string();
+    o.cleanup = register_signal_cleanup(o.created_dir);  // removed, when empty, by a signal
+  }
   return o;
 }
 
@@ -212,14 +218,23 @@ void run_crown(const CrownCommand& c) {
   } catch (...) {
     std::error_code ec;
     if (!paths.created_dir.empty()) std::filesystem::remove(paths.created_dir, ec);  // if empty
+    unregister_signal_cleanup(paths.cleanup);
     throw;
   }
+  unregister_signal_cleanup(paths.cleanup);
 }
 
 void make_crown(const CrownCommand& c, const OutputPaths& paths) {
   OutputTransaction outputs;
   auto t0 = std::chrono::steady_clock::now();
   nlohmann::json seconds = nlohmann::json::object();
+  // The whole reconstruction's memory from the photograph's header, before a pixel is decoded.
+  crown::CrownMemoryRequest need;
+  need.cubemap_size = c.cubemap_size;
+  need.working_pixels = crown::CrownOptions{}.working_pixels;
+  need.preview = !c.preview.empty();
+  need.side_mask = !c.side_mask.empty();
+  crown::check_crown_memory(c.photo, need, c.mask);
   const crown::Raster photo = crown::read_rgb(c.photo);
   crown::Mask mask;
   if (c.mask.empty()) {

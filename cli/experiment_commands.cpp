@@ -42,6 +42,7 @@
 #include "fspm/error.hpp"
 #include "fspm/number_text.hpp"
 #include "fspm/p_value_text.hpp"
+#include "fspm/signal_cleanup.hpp"
 #include "graphics/render.hpp"
 
 namespace fspm::cli {
@@ -60,8 +61,8 @@ std::atomic<int> g_interrupt_signal{SIGINT};
 extern "C" void on_interrupt(int signal) {
   g_interrupt_signal.store(signal);
   g_interrupted.store(true);
-  // A second Ctrl-C kills at once.
-  std::signal(signal, SIG_DFL);
+  // A second Ctrl-C ends the process at once, removing the temporaries of unfinished outputs.
+  std::signal(signal, fspm_signal_cleanup_handler);
 }
 
 struct RunOptions {
@@ -260,8 +261,8 @@ ex::RunnerSummary run_interruptibly(const RunOptions& o, const ex::Experiment& x
   std::signal(SIGTERM, on_interrupt);
   const ex::RunnerSummary s =
       o.mpi ? ex::run_experiment_mpi(x, model, r, is_root) : ex::run_experiment(x, model, r);
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
+  std::signal(SIGINT, fspm_signal_cleanup_handler);
+  std::signal(SIGTERM, fspm_signal_cleanup_handler);
   return s;
 }
 

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "cli/output.hpp"
 #include "fspm/error.hpp"
@@ -47,7 +48,8 @@ void add_mtg_options(CLI::App& app, GlobalValues& values) {
                  "length unit)");
   app.add_option("--mtg-scale", values.mtg_scale,
                  "Scale of an MTG file whose entities become the tree's nodes (default: the "
-                 "finest with geometry)");
+                 "finest with geometry)")
+      ->check(CLI::Range(0, 1000));
   app.add_option("--plant", values.plant,
                  "Keep one plant of a multi-plant MTG file: its label (P2) or number (2)");
 }
@@ -68,8 +70,13 @@ CLI::App* chosen_command(const CLI::App& app, std::string& words) {
 std::string failure_line(const CLI::App* app, const CLI::Error& e) {
   std::string words;
   chosen_command(*app, words);
-  return "fspm: error: " + std::string(e.what()) + " (see fspm " +
-         (words.empty() ? "" : words + " ") + "--help)\n";
+  std::string what = e.what();
+  // "fspm frobnicate": CLI11 says a subcommand is required; name the word it did not know.
+  const std::vector<std::string> left = app->remaining(true);
+  if (what.starts_with("A subcommand is required") && !left.empty()) {
+    what = "unknown command '" + left.front().substr(0, 80) + "'";
+  }
+  return "fspm: error: " + what + " (see fspm " + (words.empty() ? "" : words + " ") + "--help)\n";
 }
 
 // --json given before the command (or after a command group such as `tree`) lands on the

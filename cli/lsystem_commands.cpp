@@ -11,9 +11,11 @@
 #include "cli/commands.hpp"
 #include "cli/lsystem_source.hpp"
 #include "cli/output.hpp"
+#include "fspm/count_json.hpp"
 #include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
 #include "fspm/instanced_tree.hpp"
+#include "fspm/number_text.hpp"
 #include "fspm/saturating.hpp"
 #include "fspm/tree_file.hpp"
 #include "lsystem/derivation.hpp"
@@ -52,7 +54,9 @@ nlohmann::json symbol_counts(const std::vector<std::uint64_t>& per_symbol,
                              const lsystem::SymbolTable& table) {
   nlohmann::json symbols = nlohmann::json::object();
   for (std::size_t i = 0; i < per_symbol.size(); ++i) {
-    if (per_symbol[i]) symbols[table.name(static_cast<lsystem::SymbolId>(i))] = per_symbol[i];
+    if (per_symbol[i]) {
+      symbols[table.name(static_cast<lsystem::SymbolId>(i))] = count_json(per_symbol[i]);
+    }
   }
   return symbols;
 }
@@ -80,23 +84,28 @@ void run_derive_compressed(const LsystemOptions& o, const lsystem::LSystem& sys)
   const double compression = static_cast<double>(c.explicit_bytes) /
                              static_cast<double>(std::max<std::size_t>(graph_bytes, 1));
   spdlog::info("{}: {} steps, {} modules as {} substructures ({} bytes) in {:.6f} s", o.file,
-               g.steps, c.modules, g.nodes.size(), graph_bytes, seconds);
+               g.steps, count_text(c.modules), g.nodes.size(), graph_bytes, seconds);
   const nlohmann::json symbols = symbol_counts(c.per_symbol, sys.symbols);
+  // A saturated string size gives a lower bound of the compression, not its value.
+  const nlohmann::json compression_json =
+      c.explicit_bytes == kSaturated
+          ? nlohmann::json("more than " + format_significant(compression))
+          : nlohmann::json(compression);
   std::string text;
   if (o.string) text = lsystem::to_string(lsystem::expand(g, o.budget), sys.symbols);
   nlohmann::json written = nlohmann::json::object();
   write_derive_output(o, written);
   if (o.json) {
     nlohmann::json j = {{"steps", g.steps},
-                        {"modules", c.modules},
+                        {"modules", count_json(c.modules)},
                         {"symbols", symbols},
                         {"compressed", true},
                         {"graph_nodes", g.nodes.size()},
                         {"graph_bytes", graph_bytes},
-                        {"explicit_bytes", c.explicit_bytes},
-                        {"compression", compression},
+                        {"explicit_bytes", count_json(c.explicit_bytes)},
+                        {"compression", compression_json},
                         {"seconds", seconds}};
-    // Counts of 2^64 - 1 or more stay at 2^64 - 1.
+    // Counts of 2^64 - 1 or more are given as "more than 10^19".
     if (c.saturated) j["counts_saturated"] = true;
     if (o.string) j["string"] = text;
     j.update(written);
@@ -108,13 +117,10 @@ void run_derive_compressed(const LsystemOptions& o, const lsystem::LSystem& sys)
     return;
   }
   std::cout << "steps: " << g.steps << '\n' << "modules: " << count_text(c.modules) << '\n';
-  nlohmann::json shown = symbols;
-  for (auto& [name, count] : shown.items()) {
-    if (count.get<std::uint64_t>() == kSaturated) count = count_text(kSaturated);
-  }
-  std::cout << "symbols: " << shown.dump() << '\n';
+  std::cout << "symbols: " << symbols.dump() << '\n';
   std::cout << "substructures: " << g.nodes.size() << " (" << graph_bytes << " bytes, "
-            << compression << " times smaller than the string)\n";
+            << (c.saturated ? "more than " : "") << compression
+            << " times smaller than the string)\n";
 }
 
 void run_derive(const LsystemOptions& o) {
@@ -195,8 +201,8 @@ void run_interpret_drawing(const LsystemOptions& o) {
   summary["output"] = o.output;
   summary["seconds"] = seconds_since(t0);
   spdlog::info("{}: {} steps, {} prototypes placed {} times -> {}", o.file, summary["steps"].dump(),
-               summary["prototypes"].dump(), summary.value("instances", std::uint64_t{1}),
-               o.output);
+               summary["prototypes"].dump(),
+               summary.contains("instances") ? human_text(summary["instances"]) : "1", o.output);
   if (o.json) print_json(summary);
 }
 

@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <iostream>
 #include <new>
 #include <string>
@@ -13,8 +14,11 @@
 #include "cli/output.hpp"
 #include "fspm/error.hpp"
 #include "fspm/memory_budget.hpp"
+#include "fspm/signal_cleanup.hpp"
 
 int main(int argc, char** argv) {
+  // SIGINT and SIGTERM remove the temporaries of unfinished outputs before ending the process.
+  fspm::install_signal_cleanup();
   fspm::cli::use_checked_standard_output();
   // Logs and progress go to stderr so stdout stays machine-readable.
   spdlog::set_default_logger(spdlog::stderr_color_mt("fspm"));
@@ -51,6 +55,11 @@ int main(int argc, char** argv) {
     fspm::cli::finish_standard_output();
   } catch (const fspm::Error& e) {
     std::cerr << "fspm: error: " << e.what() << '\n';
+    return 1;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // The system refused a path (a link loop, a permission): the user's file, not a bug.
+    std::cerr << "fspm: error: " << (e.path1().empty() ? "" : e.path1().string() + ": ")
+              << e.code().message() << '\n';
     return 1;
   } catch (const std::bad_alloc&) {
     // An allocation the estimates missed failed below the limit: still the user's budget.

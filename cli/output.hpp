@@ -1,5 +1,6 @@
 #pragma once
 // Shared helpers of the subcommands: machine-readable output on stdout, logs on stderr.
+#include <cstdint>
 #include <initializer_list>
 #include <nlohmann/json_fwd.hpp>
 #include <string>

@@ -138,6 +138,9 @@ void run_encode(const EncodeCommand& o) {
     } catch (const MemoryLimitError& e) {
       if (!e.file().empty()) throw;
       throw MemoryLimitError(e.message(), o.input);  // which input was too large
+    } catch (const ValueError& e) {
+      if (!e.file().empty()) throw;
+      throw ValueError(e.message(), o.input);  // "no trunk diameter could be fitted": in which
     }
   }();
   const std::string bytes = scans::clusters_bytes(r.model);

@@ -1,9 +1,12 @@
 #include "cli/xvfb.hpp"
 
 #include <spdlog/spdlog.h>
+#include <sys/prctl.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -11,12 +14,72 @@
 #include <string>
 #include <vector>
 
+#include "fspm/signal_cleanup.hpp"
 #include "graphics/render.hpp"
 
 namespace fspm::cli {
 
+namespace {
+
+// The X server xvfb-run started (its pid from /tmp/.X<display>-lock) and the folder of its
+// authority file: a script that was killed cannot stop or remove them, so this process does.
+pid_t g_server = 0;
+char g_authority[4096] = {};
+char g_authority_dir[4096] = {};
+
+void remember_server() {
+  const char* display = std::getenv("DISPLAY");
+  if (display != nullptr && display[0] == ':') {
+    const std::string number(display + 1, display + 1 + std::strspn(display + 1, "0123456789"));
+    std::ifstream lock("/tmp/.X" + number + "-lock");
+    long pid = 0;
+    if (!number.empty() && lock >> pid && pid > 1) g_server = static_cast<pid_t>(pid);
+  }
+  const char* authority = std::getenv("XAUTHORITY");
+  const std::filesystem::path file = authority != nullptr ? authority : "";
+  if (file.parent_path().filename().string().starts_with("xvfb-run.") &&
+      file.string().size() < sizeof g_authority) {
+    std::strcpy(g_authority, file.c_str());
+    std::strcpy(g_authority_dir, file.parent_path().c_str());
+  }
+}
+
+// Only when the script is gone (this process was re-parented): otherwise it cleans up itself.
+void stop_orphaned_server() {
+  if (::getppid() != 1) return;
+  if (g_server > 0) ::kill(g_server, SIGTERM);
+  if (g_authority[0] != '\0') {
+    ::unlink(g_authority);
+    ::rmdir(g_authority_dir);
+  }
+}
+
+extern "C" void stop_with_server(int signal) {
+  stop_orphaned_server();  // kill, unlink and rmdir are async-signal-safe
+  fspm_signal_cleanup_handler(signal);
+}
+
+// Under xvfb-run this process is the script's child: a SIGTERM or SIGINT sent to the command the
+// user started ends the script, not this process, which would go on and write its outputs after
+// being stopped. The kernel sends it SIGTERM when its parent ends instead, and the X server the
+// script leaves behind is stopped with it.
+void stop_with_xvfb_run() {
+  remember_server();
+  std::signal(SIGTERM, stop_with_server);
+  std::signal(SIGINT, stop_with_server);
+  std::atexit(stop_orphaned_server);  // a command that stops gracefully (fspm run)
+  ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+  if (::getppid() == 1) std::raise(SIGTERM);  // the script already ended
+}
+
+}  // namespace
+
 void rerun_under_xvfb_if_needed() {
-  if (graphics::display_available() || std::getenv("FSPM_UNDER_XVFB") != nullptr) return;
+  if (std::getenv("FSPM_UNDER_XVFB") != nullptr) {
+    stop_with_xvfb_run();
+    return;
+  }
+  if (graphics::display_available()) return;
   const char* xvfb_run = "/usr/bin/xvfb-run";
   if (!std::filesystem::exists(xvfb_run)) return;
   std::ifstream cmdline("/proc/self/cmdline", std::ios::binary);

@@ -7,6 +7,7 @@
 #include <system_error>
 
 #include "fspm/error.hpp"
+#include "fspm/signal_cleanup.hpp"
 
 namespace fspm {
 namespace {
@@ -62,16 +63,23 @@ void write_file_atomically(const std::string& path, const std::function<void(std
   name += ".tmp";
   name += std::to_string(rd() % 1000000);
   const fs::path tmp = dir / name;
+  // Removed by the handler should SIGINT or SIGTERM end the process before the rename.
+  const int cleanup = register_signal_cleanup(tmp.string());
   try {
     write_stream(tmp, path, write, binary);
     if (OutputTransaction* t = OutputTransaction::current()) {
-      t->add(tmp.string(), path);
+      t->add(tmp.string(), path, cleanup);
       return;
     }
     fs::rename(tmp, target, ec);
-    if (ec) throw IoError("cannot replace the file: " + ec.message(), path);
+    unregister_signal_cleanup(cleanup);
+    if (ec) {
+      fs::remove(tmp, ec);
+      throw IoError("cannot replace the file: " + ec.message(), path);
+    }
   } catch (...) {
     fs::remove(tmp, ec);
+    unregister_signal_cleanup(cleanup);
     throw;
   }
 }
@@ -86,27 +94,35 @@ OutputTransaction::~OutputTransaction() {
   t_current = outer_;
   if (committed_) return;
   std::error_code ec;
-  for (const auto& [temporary, target] : pending_) fs::remove(temporary, ec);
+  for (const Pending& p : pending_) {
+    fs::remove(p.temporary, ec);
+    unregister_signal_cleanup(p.cleanup);
+  }
 }
 
 OutputTransaction* OutputTransaction::current() { return t_current; }
 
-void OutputTransaction::add(std::string temporary, std::string target) {
-  pending_.emplace_back(std::move(temporary), std::move(target));
+void OutputTransaction::add(std::string temporary, std::string target, int cleanup) {
+  pending_.push_back({std::move(temporary), std::move(target), cleanup});
 }
 
 void OutputTransaction::commit() {
   committed_ = true;
   if (outer_ != nullptr) {
-    for (auto& p : pending_) outer_->add(std::move(p.first), std::move(p.second));
+    for (Pending& p : pending_) outer_->add(std::move(p.temporary), std::move(p.target), p.cleanup);
     return;
   }
   for (std::size_t i = 0; i < pending_.size(); ++i) {
     std::error_code ec;
-    fs::rename(pending_[i].first, pending_[i].second, ec);
+    fs::rename(pending_[i].temporary, pending_[i].target, ec);
+    unregister_signal_cleanup(pending_[i].cleanup);
     if (ec) {
-      for (std::size_t j = i; j < pending_.size(); ++j) fs::remove(pending_[j].first, ec);
-      throw IoError("cannot replace the file: " + ec.message(), pending_[i].second);
+      fs::remove(pending_[i].temporary, ec);
+      for (std::size_t j = i + 1; j < pending_.size(); ++j) {
+        fs::remove(pending_[j].temporary, ec);
+        unregister_signal_cleanup(pending_[j].cleanup);
+      }
+      throw IoError("cannot replace the file: " + ec.message(), pending_[i].target);
     }
   }
 }

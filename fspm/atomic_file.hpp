@@ -33,15 +33,20 @@ class OutputTransaction {
   // the temporaries not renamed yet) when a rename fails.
   void commit();
 
-  // Called by write_file_atomically: keeps `temporary` to be renamed to `target`.
-  void add(std::string temporary, std::string target);
+  // Called by write_file_atomically: keeps `temporary` to be renamed to `target`; `cleanup` is
+  // its handle of fspm/signal_cleanup.hpp, released once it is renamed or removed.
+  void add(std::string temporary, std::string target, int cleanup = -1);
 
   // The thread's innermost open transaction, or nullptr.
   static OutputTransaction* current();
 
  private:
   OutputTransaction* outer_;
-  std::vector<std::pair<std::string, std::string>> pending_;  // temporary, target
+  struct Pending {
+    std::string temporary, target;
+    int cleanup = -1;
+  };
+  std::vector<Pending> pending_;
   bool committed_ = false;
 };
 

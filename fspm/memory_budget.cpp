@@ -98,10 +98,27 @@ std::string memory_text(double bytes) {
   return text;
 }
 
+namespace {
+
+// Three significant digits in the unit memory_text chooses ("1.04 GiB").
+std::string precise_memory_text(double bytes) {
+  static constexpr const char* kUnits[] = {"bytes", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
+  int unit = 0;
+  while (bytes >= 1024.0 && unit < 6) bytes /= 1024.0, ++unit;
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g %s", bytes, kUnits[unit]);
+  return text;
+}
+
+}  // namespace
+
 void check_memory(double bytes, std::string_view what, const std::string& file) {
   const auto limit = static_cast<double>(memory_limit_bytes());
   if (bytes <= limit) return;  // false for NaN: an overflowed estimate fails too
-  throw MemoryLimitError(std::string(what) + " needs about " + memory_text(bytes) +
+  std::string need = memory_text(bytes);
+  // Just above the limit both may round alike ("1 GiB, above the memory limit of 1 GiB").
+  if (need == memory_text(limit)) need = precise_memory_text(bytes);
+  throw MemoryLimitError(std::string(what) + " needs about " + need +
                              ", above the memory limit of " + memory_text(limit) +
                              " (--memory-limit)",
                          file);

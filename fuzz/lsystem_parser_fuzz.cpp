@@ -1,5 +1,9 @@
 // libFuzzer target for the L-system reader and derivation. The first byte picks the mode:
-//   even: the remaining bytes are an L-system file (parser, preprocessor, expressions);
+//   even: the remaining bytes are an L-system file (parser, preprocessor, expressions); when
+//         it is 2 mod 4, the file is derived as far as it says (up to 60 steps, explicitly and
+//         into substructures) with no module budget, so that exponential growth (modules of
+//         many parameters doubling, deep branching, parameters that are never shared) must end
+//         in the memory limit's error;
 //   odd:  the bytes drive a generator of small well-formed grammars (contexts, brackets,
 //         parameters, conditions, probabilities, cut, decomposition, homomorphism), so most
 //         inputs reach derivation and turtle interpretation.
@@ -15,6 +19,7 @@
 #include "fspm/memory_budget.hpp"
 #include "lsystem/derivation.hpp"
 #include "lsystem/parser.hpp"
+#include "lsystem/substructure_derivation.hpp"
 #include "lsystem/turtle.hpp"
 
 namespace {
@@ -102,18 +107,41 @@ void run(std::string_view text) {
   }
 }
 
+constexpr std::size_t kMemoryLimit = std::size_t{64} << 20;
+
+void run_growth(std::string_view text) {
+  fspm::set_memory_limit_bytes(std::size_t{16} << 20);
+  try {
+    const fspm::lsystem::LSystem sys =
+        fspm::lsystem::parse_lsystem(text, "fuzz.l", {}, "/nonexistent-fspm-fuzz");
+    fspm::lsystem::DeriveOptions options;
+    options.steps = std::clamp(sys.derivation_length, 1, 60);
+    options.module_budget = std::size_t{1} << 50;  // only the memory limit stops the growth
+    fspm::lsystem::Derivation derivation(sys, options);
+    derivation.run();
+    if (!fspm::lsystem::factorization_obstacle(sys)) {
+      fspm::lsystem::derive_substructures(sys, options);
+    }
+  } catch (const fspm::Error&) {
+    // Expected: malformed input, or growth past the memory limit.
+  }
+  fspm::set_memory_limit_bytes(kMemoryLimit);
+}
+
 }  // namespace
 
 // The process's memory limit far below libFuzzer's -malloc_limit_mb: a string that outgrows it
 // must be refused by the derivation's check, not by the fuzzer.
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  fspm::set_memory_limit_bytes(std::size_t{64} << 20);
+  fspm::set_memory_limit_bytes(kMemoryLimit);
   return 0;
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
-  if (data[0] % 2 == 0) {
+  if (data[0] % 4 == 2) {
+    run_growth(std::string_view(reinterpret_cast<const char*>(data + 1), size - 1));
+  } else if (data[0] % 2 == 0) {
     run(std::string_view(reinterpret_cast<const char*>(data + 1), size - 1));
   } else {
     ByteSource in(data + 1, size - 1);

@@ -611,7 +611,7 @@ std::uint64_t explicit_metamers(const CompressedTreeGraph& graph, const AxisBuil
                                 const LevelOfDetail& lod = {}) {
   const std::uint64_t metamers = metamers_within_order(graph, builder.age(), lod.max_order);
   if (metamers > kMaxExplicitMetamers) {
-    throw ValueError("the plant has " + std::to_string(metamers) + " metamers at age " +
+    throw ValueError("the plant has " + count_text(metamers) + " metamers at age " +
                      std::to_string(builder.age()) + ", too many for an explicit tree (at most " +
                      std::to_string(kMaxExplicitMetamers) +
                      "); use an earlier age or the instanced reconstruction");
@@ -658,7 +658,7 @@ TreeGraph reconstruct_geometry(const CompressedTreeGraph& graph,
     organs = count_instanced_tree(instanced).nodes;
   }
   if (organs > kMaxExplicitMetamers) {
-    throw ValueError("the plant has " + std::to_string(organs) + " organs" +
+    throw ValueError("the plant has " + count_text(organs) + " organs" +
                      (lod ? " at this level of detail" : "") +
                      ", too many for an explicit tree (at most " +
                      std::to_string(kMaxExplicitMetamers) +

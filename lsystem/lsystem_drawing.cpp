@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "fspm/compressed_tree_graph.hpp"
+#include "fspm/count_json.hpp"
 #include "fspm/elapsed.hpp"
 #include "fspm/error.hpp"
 #include "fspm/instanced_ctree.hpp"
@@ -95,10 +96,10 @@ LsystemDrawing draw_compressed(const LsystemSource& source, const LSystem& sys,
                  {"derive_seconds", derive_seconds},
                  {"prototypes", drawn.tree.prototypes.size()},
                  {"child_references", references},
-                 {"instances", drawn.instances},
-                 {"represented_segments", whole.internodes},
-                 {"represented_leaves", whole.leaves},
-                 {"drawn_segments", drawn.internodes},
+                 {"instances", count_json(drawn.instances)},
+                 {"represented_segments", count_json(whole.internodes)},
+                 {"represented_leaves", count_json(whole.leaves)},
+                 {"drawn_segments", count_json(drawn.internodes)},
                  {"min_detail", options.min_detail}};
   if (source.variants > 0) out.summary["variants"] = source.variants;
   if (!drawn.explicit_reason.empty()) out.summary["explicit_reason"] = drawn.explicit_reason;
@@ -137,7 +138,7 @@ void write_lsystem_ctree(const LsystemDrawing& drawing, const std::string& path,
   const CompressedTreeGraph graph = compress_instanced_tree(drawing.tree);
   write_ctree_file(graph, path);
   summary["ctree_records"] = graph.size();
-  summary["ctree_organs"] = geometry_organ_count(graph);
+  summary["ctree_organs"] = count_json(geometry_organ_count(graph));
   summary["ctree_bytes"] = std::filesystem::file_size(path);
 }
 

@@ -248,11 +248,11 @@ void check_fixed_binary_size(const PlyHeader& h, std::string_view data, const st
   }
   const std::size_t held = data.size() - std::min(h.data_offset, data.size());
   if (expected == static_cast<double>(held)) return;
-  // Counts near 2^64 make a byte total no integer holds: say so rather than convert it.
-  const std::string expected_bytes = expected < 0x1p64
-                                         ? std::to_string(static_cast<std::uint64_t>(expected))
-                                         : "more than 18446744073709551615";
-  throw ParseError("the header declares " + declared_counts(h) + " (" + expected_bytes +
+  // Counts near 2^64 times their record size pass 2^64 bytes, where the conversion is undefined.
+  const std::string bytes = expected < 0x1.0p64
+                                ? std::to_string(static_cast<std::uint64_t>(expected))
+                                : "more than 10^19";
+  throw ParseError("the header declares " + declared_counts(h) + " (" + bytes +
                        " bytes of data), the file holds " + std::to_string(held) +
                        " bytes after its header (to byte " + std::to_string(data.size()) +
                        "): a header count that does not match the data",

@@ -6,6 +6,8 @@
 #include <numbers>
 
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
+#include "fspm/number_text.hpp"
 #include "scans/segment_distance.hpp"
 
 namespace fspm::scans {
@@ -77,6 +79,35 @@ bool occluded(const TreeGraph& t, const OccluderGrid& grid, NodeId self, const E
   return false;
 }
 
+// Candidates of internode u nearer to scanner s than the reference distance d0 are drawn
+// (d0 / near)^2 times as densely and thinned by the same factor.
+double near_boost(const TreeGraph& t, NodeId u, const Eigen::Vector3d& s, double d0) {
+  const double near =
+      std::max((0.5 * (t.start(u) + t.end(u)) - s).norm() - 0.5 * t.length(u) - t.radius(u), 0.1);
+  return std::max(1.0, (d0 / near) * (d0 / near));
+}
+
+// The points a scan keeps, checked against the memory limit before it starts. A candidate
+// point is kept with probability |cos incidence| (d0 / range)^2 / boost on the half of the
+// cylinder facing the scanner: on average at most 1 / pi of the candidates drawn.
+void check_scan_memory(const TreeGraph& t, const std::vector<Eigen::Vector3d>& scanners,
+                       const ScanOptions& o) {
+  double candidates = 0.0;
+  for (const Eigen::Vector3d& s : scanners) {
+    const double d0 = (s - t.start(0)).head<2>().norm();
+    for (NodeId u = 0; u < t.size(); ++u) {
+      if (!scanned(t, u, o)) continue;
+      candidates +=
+          o.density_per_m2 * 2 * kPi * t.radius(u) * t.length(u) * near_boost(t, u, s, d0);
+    }
+  }
+  const double points = candidates / kPi;
+  // A growing vector holds up to twice its points while it moves them.
+  check_memory(2.0 * points * sizeof(Eigen::Vector3d),
+               "a simulated scan of about " + std::to_string(static_cast<long long>(points)) +
+                   " points (density " + format_significant(o.density_per_m2) + " per m2)");
+}
+
 // Points of internode u seen from scanner s at reference distance d0.
 void scan_internode(const TreeGraph& t, NodeId u, const OccluderGrid& grid,
                     const Eigen::Vector3d& s, double d0, const ScanOptions& o, std::mt19937_64& rng,
@@ -84,8 +115,7 @@ void scan_internode(const TreeGraph& t, NodeId u, const OccluderGrid& grid,
   const Eigen::Vector3d a = t.start(u), axis = (t.end(u) - a).normalized();
   const Eigen::Vector3d e1 = axis.unitOrthogonal(), e2 = axis.cross(e1);
   const double r = t.radius(u), len = t.length(u);
-  const double near = std::max((0.5 * (a + t.end(u)) - s).norm() - 0.5 * len - r, 0.1);
-  const double boost = std::max(1.0, (d0 / near) * (d0 / near));
+  const double boost = near_boost(t, u, s, d0);
   std::poisson_distribution<long> count(o.density_per_m2 * 2 * kPi * r * len * boost);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::normal_distribution<double> noise(0.0, o.range_noise_m);
@@ -124,6 +154,7 @@ PointSet simulate_scan(const TreeGraph& t, const ScanOptions& o, std::mt19937_64
   }
   PointSet out;
   const std::vector<Eigen::Vector3d> scanners = scanner_positions(t, o);
+  check_scan_memory(t, scanners, o);
   for (const Eigen::Vector3d& s : scanners) {
     const double d0 = (s - t.start(0)).head<2>().norm();
     const OccluderGrid grid(t, o, s);

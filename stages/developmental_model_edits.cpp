@@ -7,6 +7,7 @@
 #include <string>
 
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 #include "stages/developmental_model.hpp"
 
 namespace fspm::stages {
@@ -16,6 +17,11 @@ namespace {
 // radius as complete, but eq. 5.8 with the given b (Pirk 5.4.1: "the radii of parent branches
 // are changed according to Section 5.3.3").
 constexpr std::uint32_t kEditedBelow = std::numeric_limits<std::uint32_t>::max();
+
+// Per node of the model beyond its tree (and the stage's tree, counted with it): the analysed
+// columns (chains, offsets, bends, radii, headings), the place and radius plans, the work arrays
+// of a stage and the copy's map of ids.
+constexpr double kModelBytesPerNode = 400.0;
 
 }  // namespace
 
@@ -94,6 +100,13 @@ double DevelopmentalModel::append_branch_copy(const CopyEdit& edit, double roll_
       std::min(reach_time(ct, offset_[target] + tree_.length(target)), 1.0);
   const double shift = (chain_start_[cb] - chain_shift_[cb]) - (target_reached - chain_shift_[ct]);
   const std::vector<NodeId> nodes = branch ? *branch : subtree(base);
+  // A copy onto a node of its own branch carries the copies made before it: repeated, the model
+  // doubles with each edit, so each is checked against the memory limit before it is made.
+  const double after = static_cast<double>(tree_.size() + nodes.size());
+  check_memory(after * (2.0 * TreeGraph::bytes_per_node(tree_.attribute_names().size()) +
+                        kModelBytesPerNode),
+               "branch edit (copy) " + std::to_string(edit.branch) + ":" + std::to_string(target) +
+                   ": a model of " + std::to_string(static_cast<std::uint64_t>(after)) + " nodes");
   std::map<NodeId, NodeId> id;
   std::map<std::uint32_t, std::uint32_t> new_chain;
   for (const NodeId k : nodes) {

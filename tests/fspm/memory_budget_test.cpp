@@ -69,6 +69,19 @@ TEST(MemoryBudget, CheckPassesAtTheLimitAndThrowsAboveWithBothNumbers) {
   }
 }
 
+// Just above the limit the short forms of both would read alike ("1 GiB ... of 1 GiB").
+TEST(MemoryBudget, EstimateJustAboveTheLimitShowsItsDigits) {
+  LimitGuard guard;
+  set_memory_limit_bytes(1ull << 30);
+  try {
+    check_memory(1.04 * 1024 * 1024 * 1024, "the crown");
+    FAIL() << "no error above the limit";
+  } catch (const MemoryLimitError& e) {
+    EXPECT_EQ(e.message(),
+              "the crown needs about 1.04 GiB, above the memory limit of 1 GiB (--memory-limit)");
+  }
+}
+
 TEST(MemoryBudget, OverflowedEstimatesFail) {
   LimitGuard guard;
   set_memory_limit_bytes(1ull << 40);
