@@ -4,7 +4,6 @@
 #include <assimp/scene.h>
 
 #include <assimp/Importer.hpp>
-#include <cctype>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -12,6 +11,7 @@
 #include <regex>
 
 #include "fspm/error.hpp"
+#include "fspm/file_kind.hpp"
 #include "fspm/input_file.hpp"
 
 namespace fspm::scans {
@@ -98,9 +98,8 @@ void check_gltf_input(const std::string& path) {
     throw IoError("not a regular file (a pipe or device), expected a glTF file on disk", path);
   }
   open_input_file(path).reset();  // IoError for a missing, unreadable or implausibly large file
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".glb") check_glb_header(path, std::filesystem::file_size(path));
+  if (file_kind_by_extension(path) == FileKind::kGlb)
+    check_glb_header(path, std::filesystem::file_size(path));
 }
 
 GroupedMesh read_gltf_mesh(const std::string& path) {
