@@ -81,8 +81,9 @@ OutputPaths output_paths(const std::string& out) {
   auto beside = [&](const std::string& suffix) { return (dir / (stem + suffix)).string(); };
   OutputPaths o;
   o.mesh = directory ? beside(".glb") : out;
-  graphics::mesh_format_for(o.mesh);  // .obj, .ply, .vtp or .glb, else ValueError
-  if (o.mesh.ends_with(".pvd")) throw ValueError("a crown is one mesh, not a .pvd sequence", out);
+  // .obj, .ply, .vtp or .glb (fspm/file_kind.hpp), else ValueError.
+  if (graphics::mesh_format_for(o.mesh) == MeshFormat::kPvd)
+    throw ValueError("a crown is one mesh, not a .pvd sequence", out);
   o.color = beside("_color_cubemap.png");
   o.radius = beside("_radius_cubemap.exr");
   o.cubemaps = crown_cubemaps_path(o.mesh);

@@ -21,6 +21,7 @@
 #include "fspm/atomic_file.hpp"
 #include "fspm/edit_cost_model.hpp"
 #include "fspm/error.hpp"
+#include "fspm/file_kind.hpp"
 #include "fspm/input_file.hpp"
 #include "fspm/nesting_depth.hpp"
 #include "fspm/number_text.hpp"
@@ -67,7 +68,7 @@ std::string group_label(const RunRecord& r, const std::vector<std::string>& with
 
 const std::string* tree_file(const RunRecord& r) {
   for (const std::string& f : r.files) {
-    if (f.ends_with(".tree")) return &f;
+    if (file_kind_by_extension(f) == FileKind::kTreeText) return &f;
   }
   return nullptr;
 }

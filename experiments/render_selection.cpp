@@ -10,6 +10,7 @@
 #include "experiments/grow_set.hpp"
 #include "experiments/metrics.hpp"
 #include "experiments/model_factory.hpp"
+#include "fspm/file_kind.hpp"
 #include "fspm/number_text.hpp"
 #include "fspm/tree_file.hpp"
 
@@ -109,7 +110,7 @@ std::vector<RenderChoice> select_renders(const Experiment& x, const std::vector<
 
 TreeGraph recorded_run_tree(const Experiment& x, const RunRecord& record, const std::string& dir) {
   for (const std::string& file : record.files) {
-    if (file.ends_with(".tree"))
+    if (file_kind_by_extension(file) == FileKind::kTreeText)
       return read_tree_file((std::filesystem::path(dir) / file).string());
   }
   // The recorded parameters and seed, not the plan's: they are what the run was given.

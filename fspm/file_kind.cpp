@@ -78,6 +78,17 @@ FileKind file_kind_for_extension(std::string_view extension) {
   return FileKind::kUnknown;
 }
 
+std::string_view table_extension(std::string_view path) {
+  const std::string ext = lower(std::filesystem::path(path).extension().string());
+  if (ext.empty()) return {};
+  for (const auto& info : kFileKinds) {
+    for (std::string_view e : info.extensions) {
+      if (!e.empty() && e == ext) return e;
+    }
+  }
+  return {};
+}
+
 FileKind file_kind_by_extension(std::string_view path) {
   return file_kind_for_extension(std::filesystem::path(path).extension().string());
 }

@@ -51,6 +51,9 @@ const FileKindInfo& file_kind_info(FileKind kind);
 // file_kind_for_extension.
 FileKind file_kind_by_extension(std::string_view path);
 FileKind file_kind_for_extension(std::string_view extension);
+// The extension of `path` as the table spells it (lower case, with its dot) when it names a kind,
+// else empty: tells apart the extensions of one kind (.laz from .las, .xyz from .csv).
+std::string_view table_extension(std::string_view path);
 // The kind told by the first bytes of `data`, or kUnknown.
 FileKind file_kind_by_content(std::string_view data);
 // The kind of a file: its extension's, or, when the extension names none, its first bytes'

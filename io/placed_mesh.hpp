@@ -11,9 +11,9 @@ namespace fspm::io {
 // True for .glb, .gltf and .obj (any case).
 bool is_placed_mesh_path(const std::string& path);
 
-// A glTF mesh (assimp) with its materials and vertex colours; an .obj with every polygon as a fan
-// of leaf triangles (the reader keeps groups, not materials). Throws IoError, ParseError or
-// ValueError naming the file.
+// A glTF mesh (scans/gltf_reader.hpp) with its materials and vertex colours; an .obj with every
+// polygon as a fan of leaf triangles (the reader keeps groups, not materials). Throws IoError,
+// ParseError or ValueError naming the file.
 graphics::TriangleMesh read_placed_mesh(const std::string& path);
 
 // Every polygon of a mesh read by scans/mesh_file.hpp as a fan of leaf triangles (the readers

@@ -4,14 +4,15 @@
 #include <assimp/scene.h>
 
 #include <assimp/Importer.hpp>
-#include <cctype>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <regex>
 
 #include "fspm/error.hpp"
+#include "fspm/file_kind.hpp"
 #include "fspm/input_file.hpp"
 
 namespace fspm::scans {
@@ -29,30 +30,50 @@ std::string group_name(const aiScene& scene, const aiNode& node) {
   return node.mNumMeshes > 1 ? std::regex_replace(mesh, kPrimitiveSuffix, "") : mesh;
 }
 
+// The colours of `mesh` appended at `first`; vertices before them without colours get NaN.
+void append_colours(const aiMesh& mesh, std::size_t first, GltfMesh& m) {
+  constexpr float kNone = std::numeric_limits<float>::quiet_NaN();
+  m.colours.resize(first, Eigen::Vector3f::Constant(kNone));
+  for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+    const aiColor4D& c = mesh.mColors[0][v];
+    m.colours.emplace_back(c.r, c.g, c.b);
+  }
+}
+
+void append_vertices(const aiMesh& mesh, const aiMatrix4x4& to_scene, GltfMesh& m) {
+  const aiMatrix3x3 turn(to_scene);
+  const std::size_t first = m.mesh.vertices.size();
+  for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+    const aiVector3D p = to_scene * mesh.mVertices[v];
+    m.mesh.vertices.emplace_back(p.x, p.y, p.z);
+    const aiVector3D n = mesh.HasNormals() ? turn * mesh.mNormals[v] : aiVector3D(0, 0, 0);
+    m.normals.push_back(Eigen::Vector3f(n.x, n.y, n.z).normalized());
+  }
+  if (mesh.HasVertexColors(0)) append_colours(mesh, first, m);
+}
+
 void append_node_mesh(const aiScene& scene, const aiNode& node, const aiMatrix4x4& to_scene,
-                      GroupedMesh& m) {
-  const auto group = static_cast<std::uint32_t>(m.group_names.size());
-  m.group_names.push_back(group_name(scene, node));
+                      GltfMesh& m) {
+  const auto group = static_cast<std::uint32_t>(m.mesh.group_names.size());
+  m.mesh.group_names.push_back(group_name(scene, node));
   for (unsigned k = 0; k < node.mNumMeshes; ++k) {
     const aiMesh& mesh = *scene.mMeshes[node.mMeshes[k]];
-    const auto first = static_cast<std::uint32_t>(m.vertices.size());
-    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
-      const aiVector3D p = to_scene * mesh.mVertices[v];
-      m.vertices.emplace_back(p.x, p.y, p.z);
-    }
+    const auto first = static_cast<std::uint32_t>(m.mesh.vertices.size());
+    append_vertices(mesh, to_scene, m);
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
       const aiFace& face = mesh.mFaces[f];
       if (face.mNumIndices != 3) continue;  // a point or a line
-      m.faces.push_back(
+      m.mesh.faces.push_back(
           {first + face.mIndices[0], first + face.mIndices[1], first + face.mIndices[2]});
-      m.face_group.push_back(group);
+      m.mesh.face_group.push_back(group);
+      m.face_material.push_back(mesh.mMaterialIndex);
     }
   }
 }
 
 // Depth first, children in the file's order, so groups keep the order of the file's nodes.
 void append_subtree(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent_to_scene,
-                    GroupedMesh& m) {
+                    GltfMesh& m) {
   const aiMatrix4x4 to_scene = parent_to_scene * node.mTransformation;
   if (node.mNumMeshes > 0) append_node_mesh(scene, node, to_scene, m);
   for (unsigned c = 0; c < node.mNumChildren; ++c) {
@@ -98,12 +119,11 @@ void check_gltf_input(const std::string& path) {
     throw IoError("not a regular file (a pipe or device), expected a glTF file on disk", path);
   }
   open_input_file(path).reset();  // IoError for a missing, unreadable or implausibly large file
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".glb") check_glb_header(path, std::filesystem::file_size(path));
+  if (file_kind_by_extension(path) == FileKind::kGlb)
+    check_glb_header(path, std::filesystem::file_size(path));
 }
 
-GroupedMesh read_gltf_mesh(const std::string& path) {
+GltfMesh read_gltf(const std::string& path) {
   check_gltf_input(path);
   Assimp::Importer importer;
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
@@ -113,10 +133,19 @@ GroupedMesh read_gltf_mesh(const std::string& path) {
   if (scene == nullptr || scene->mRootNode == nullptr) {
     throw ParseError(std::string("cannot read as glTF 2.0: ") + importer.GetErrorString(), path);
   }
-  GroupedMesh m;
+  GltfMesh m;
+  for (unsigned i = 0; i < scene->mNumMaterials; ++i) {
+    m.material_names.emplace_back(scene->mMaterials[i]->GetName().C_Str());
+  }
   append_subtree(*scene, *scene->mRootNode, aiMatrix4x4(), m);
-  if (m.faces.empty()) throw ParseError("no triangle in the glTF meshes", path);
+  if (m.mesh.faces.empty()) throw ParseError("no triangle in the glTF meshes", path);
+  if (!m.colours.empty()) {
+    m.colours.resize(m.mesh.vertices.size(),
+                     Eigen::Vector3f::Constant(std::numeric_limits<float>::quiet_NaN()));
+  }
   return m;
 }
+
+GroupedMesh read_gltf_mesh(const std::string& path) { return read_gltf(path).mesh; }
 
 }  // namespace fspm::scans

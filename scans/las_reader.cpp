@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
 
 #include "fspm/error.hpp"
+#include "fspm/file_kind.hpp"
 #include "fspm/input_file.hpp"
 #include "fspm/memory_budget.hpp"
 #include "scans/byte_io.hpp"
@@ -170,10 +169,8 @@ PointSet parse_las_points(std::string_view data, const std::string& path) {
 }
 
 PointSet read_las_points(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (ext == ".laz") {
+  // A LAS point set by its kind (fspm/file_kind.hpp), but compressed when named .laz.
+  if (table_extension(path) == ".laz") {
     throw ParseError("LAZ (compressed LAS) is not read" + std::string(kDecompress), path);
   }
   return parse_las_points(read_input_file(path), path);

@@ -6,13 +6,15 @@
 
 #include "fspm/atomic_file.hpp"
 #include "fspm/error.hpp"
+#include "fspm/file_kind.hpp"
 #include "fspm/number_text.hpp"
 
 namespace fspm::scans {
 
 void write_point_set(const PointSet& ps, const std::string& path) {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  if (ext == ".ply") {
+  // By kind (fspm/file_kind.hpp); of the XYZ kind's extensions only .xyz, written space-separated.
+  const FileKind kind = file_kind_by_extension(path);
+  if (kind == FileKind::kPly) {
     double largest = 0.0;
     for (const Eigen::Vector3d& p : ps.points) largest = std::max(largest, p.cwiseAbs().maxCoeff());
     const bool wide = largest > kPlyFloatLimitM;
@@ -34,7 +36,7 @@ void write_point_set(const PointSet& ps, const std::string& path) {
           }
         },
         true);
-  } else if (ext == ".xyz") {
+  } else if (kind == FileKind::kXyz && table_extension(path) == ".xyz") {
     write_file_atomically(path, [&](std::ostream& out) {
       std::string line;
       for (const Eigen::Vector3d& p : ps.points) {
@@ -47,6 +49,7 @@ void write_point_set(const PointSet& ps, const std::string& path) {
       }
     });
   } else {
+    const std::string ext = std::filesystem::path(path).extension().string();
     throw ValueError("unknown point-set extension '" + ext + "', expected .ply or .xyz", path);
   }
 }

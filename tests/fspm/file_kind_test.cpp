@@ -27,6 +27,14 @@ TEST(FileKind, ExtensionsInAnyCase) {
   EXPECT_EQ(file_kind_for_extension(".Obj"), FileKind::kObj);
 }
 
+TEST(FileKind, TableExtensionTellsApartTheExtensionsOfOneKind) {
+  EXPECT_EQ(table_extension("scan.LAZ"), ".laz");
+  EXPECT_EQ(table_extension("scan.las"), ".las");
+  EXPECT_EQ(table_extension("dir.v2/points.Csv"), ".csv");
+  EXPECT_EQ(table_extension("notes.bin"), "");
+  EXPECT_EQ(table_extension("noextension"), "");
+}
+
 TEST(FileKind, EveryKindHasOneRowAndItsExtensionsAreItsOwn) {
   for (const FileKindInfo& info : file_kinds()) {
     EXPECT_EQ(&file_kind_info(info.kind), &info);

@@ -7,10 +7,12 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <sstream>
 
 #include "fspm/error.hpp"
+#include "scans/gltf_reader.hpp"
 #include "scans/grouped_mesh_skeleton.hpp"
 #include "scans/mesh_file.hpp"
 #include "scans/point_set_file.hpp"
@@ -56,6 +58,53 @@ TEST(GltfReader, UnitCubeMovedByItsNodeTransform) {
   expect_box(m, {1, 2, 3}, {3, 4, 5});
   // As a point set: the vertices.
   EXPECT_EQ(read_point_set(path).points.size(), m.vertices.size());
+}
+
+// Materials and vertex colours (glTF 2.0 sec. 3.7.2.1 COLOR_0, sec. 3.9 materials): two cubes,
+// the first "bark" without colours, the second "leaf" with one colour per corner, which the reader
+// gives back per face and per vertex (NaN for the vertices of the mesh without colours).
+TEST(GltfReader, MaterialsAndColoursPerFaceAndVertex) {
+  const std::string path = temp_path("materials.gltf");
+  GltfPart second = test::unit_cube("Second", "second_mesh");
+  for (float& x : second.positions) x += 2.0f;
+  auto [g, bin] = test::gltf_of({test::unit_cube("First", "first_mesh"), second});
+  std::vector<float> rgb;
+  for (int v = 0; v < 8; ++v) rgb.insert(rgb.end(), {0.1f * v, 0.5f, 1.0f - 0.1f * v});
+  g["bufferViews"].push_back(
+      {{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", 4 * rgb.size()}});
+  bin.append(reinterpret_cast<const char*>(rgb.data()), 4 * rgb.size());
+  g["accessors"].push_back({{"bufferView", g["bufferViews"].size() - 1},
+                            {"componentType", 5126},
+                            {"count", 8},
+                            {"type", "VEC3"}});
+  g["buffers"][0]["byteLength"] = bin.size();
+  g["materials"] = {{{"name", "bark"}}, {{"name", "leaf"}}};
+  g["meshes"][0]["primitives"][0]["material"] = 0;
+  g["meshes"][1]["primitives"][0]["material"] = 1;
+  g["meshes"][1]["primitives"][0]["attributes"]["COLOR_0"] = g["accessors"].size() - 1;
+  g["buffers"][0]["uri"] = "data:application/octet-stream;base64," + test::base64(bin);
+  std::ofstream(path, std::ios::binary) << g.dump();
+
+  const GltfMesh m = read_gltf(path);
+  ASSERT_EQ(m.mesh.faces.size(), 24u);
+  ASSERT_EQ(m.face_material.size(), 24u);
+  for (std::size_t f = 0; f < 24; ++f) {
+    ASSERT_LT(m.face_material[f], m.material_names.size());
+    EXPECT_EQ(m.material_names[m.face_material[f]], f < 12 ? "bark" : "leaf") << f;
+  }
+  ASSERT_EQ(m.mesh.vertices.size(), 16u);
+  EXPECT_EQ(m.normals.size(), 16u);
+  ASSERT_EQ(m.colours.size(), 16u);
+  for (std::size_t v = 0; v < 8; ++v) EXPECT_TRUE(m.colours[v].array().isNaN().all()) << v;
+  for (std::size_t v = 8; v < 16; ++v) {
+    // The second cube's vertex v - 8 sits at its corner, moved by (2, 2, 2).
+    const Eigen::Vector3d p = m.mesh.vertices[v] - Eigen::Vector3d::Constant(2.0);
+    const auto corner = static_cast<int>(std::lround(p.x() + 2 * p.y() + 4 * p.z()));
+    EXPECT_NEAR(m.colours[v].x(), 0.1f * corner, 1e-6f) << v;
+    EXPECT_NEAR(m.colours[v].y(), 0.5f, 1e-6f) << v;
+    EXPECT_NEAR(m.colours[v].z(), 1.0f - 0.1f * corner, 1e-6f) << v;
+  }
+  std::filesystem::remove(path);
 }
 
 // A parent turned 90 degrees about z, its child moved by (1, 0, 0): p -> Rz(90) (p + x), so the
