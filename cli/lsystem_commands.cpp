@@ -69,7 +69,7 @@ void write_derive_output(const LsystemOptions& o, nlohmann::json& summary) {
   write_lsystem_ctree(drawing, o.output, summary);
   summary["output"] = o.output;
   spdlog::info("{}: wrote {} ({} records, {} bytes)", o.file, o.output,
-               summary["ctree_records"].dump(), summary["ctree_bytes"].dump());
+               json_text(summary["ctree_records"]), json_text(summary["ctree_bytes"]));
 }
 
 // --compressed: the string as a graph of shared substructures (Jaeger 2.1.3), its module counts
@@ -117,7 +117,7 @@ void run_derive_compressed(const LsystemOptions& o, const lsystem::LSystem& sys)
     return;
   }
   std::cout << "steps: " << g.steps << '\n' << "modules: " << count_text(c.modules) << '\n';
-  std::cout << "symbols: " << symbols.dump() << '\n';
+  std::cout << "symbols: " << json_text(symbols) << '\n';
   std::cout << "substructures: " << g.nodes.size() << " (" << graph_bytes << " bytes, "
             << (c.saturated ? "more than " : "") << compression
             << " times smaller than the string)\n";
@@ -177,7 +177,7 @@ void run_derive(const LsystemOptions& o) {
     return;
   }
   std::cout << "steps: " << d.steps_done() << '\n' << "modules: " << s.size() << '\n';
-  std::cout << "symbols: " << symbols.dump() << '\n';
+  std::cout << "symbols: " << json_text(symbols) << '\n';
 }
 
 // --compressed, or a mesh output: the drawing as prototypes and placements (one prototype when
@@ -200,8 +200,8 @@ void run_interpret_drawing(const LsystemOptions& o) {
   }
   summary["output"] = o.output;
   summary["seconds"] = seconds_since(t0);
-  spdlog::info("{}: {} steps, {} prototypes placed {} times -> {}", o.file, summary["steps"].dump(),
-               summary["prototypes"].dump(),
+  spdlog::info("{}: {} steps, {} prototypes placed {} times -> {}", o.file,
+               json_text(summary["steps"]), json_text(summary["prototypes"]),
                summary.contains("instances") ? human_text(summary["instances"]) : "1", o.output);
   if (o.json) print_json(summary);
 }

@@ -133,11 +133,15 @@ void add_input_format_option(CLI::App* command, std::string& format) {
   command->add_option("--format", format, std::string("Input format: ") + kTreeFormats);
 }
 
-void print_json(const nlohmann::json& document) { std::cout << document.dump(2) << '\n'; }
+std::string json_text(const nlohmann::json& value, int indent) {
+  return value.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+void print_json(const nlohmann::json& document) { std::cout << json_text(document, 2) << '\n'; }
 
 std::string human_text(const nlohmann::json& value) {
   if (value.is_number_float()) return format_significant(value.get<double>());
-  if (!value.is_array()) return value.dump();
+  if (!value.is_array()) return json_text(value);
   std::string out = "[";
   for (std::size_t i = 0; i < value.size(); ++i) {
     if (i > 0) out += ", ";

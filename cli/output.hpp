@@ -15,6 +15,10 @@ namespace fspm::cli {
 // Prints one JSON document on stdout (pretty, newline-terminated).
 void print_json(const nlohmann::json& document);
 
+// JSON as text. Names read from input files (MTG features, attributes) may hold bytes that are
+// not UTF-8 (a Latin-1 file); they are written as U+FFFD instead of ending the command.
+std::string json_text(const nlohmann::json& value, int indent = -1);
+
 // A JSON value as people read it: floating-point numbers to four significant digits
 // (format_significant), arrays as "[a, b]", integers, booleans and strings as JSON writes them.
 // The --json form of the same command keeps every digit.

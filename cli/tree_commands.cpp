@@ -170,13 +170,13 @@ void run_info(const InfoOptions& o) {
   std::cout << o.file << '\n';
   for (const char* key : {"nodes", "internodes", "leaves", "flowers", "buds", "tips", "max_order",
                           "max_depth", "pruned", "positions_inferred", "radii_inferred"}) {
-    if (j.contains(key)) std::cout << "  " << key << ": " << j[key].dump() << '\n';
+    if (j.contains(key)) std::cout << "  " << key << ": " << json_text(j[key]) << '\n';
   }
   for (const char* key : {"height", "total_length", "crown_width", "crown_depth"}) {
     std::cout << "  " << key << ": " << human_text(j[key]) << " m\n";
   }
-  std::cout << "  branches_per_order: " << j["branches_per_order"].dump() << '\n';
-  std::cout << "  attributes: " << j["attributes"].dump() << '\n';
+  std::cout << "  branches_per_order: " << json_text(j["branches_per_order"]) << '\n';
+  std::cout << "  attributes: " << json_text(j["attributes"]) << '\n';
   if (j.contains("canopy")) {
     const auto& c = j["canopy"];
     std::cout << fmt::format(

@@ -182,6 +182,22 @@ TEST(TreeCli, InfoJsonCountsNodes) {
   EXPECT_EQ(j["max_depth"], 3);
 }
 
+// A feature name that is not UTF-8 (bytes of a Latin-1 file; found by fuzzing the MTG reader)
+// is written as U+FFFD in text and JSON, not an internal error.
+TEST(TreeCli, InfoWritesNamesThatAreNotUtf8) {
+  const auto dir = scratch_dir("info_latin1");
+  write_text(dir / "l.mtg",
+             "#\n#\nCODE:\xb2-RO,A\nMTG:\nENTITY-CODE\t\t\xff\xff\xff\nENTN\n"
+             "^/I0+.+knnnnnnPnnn2011\t2.");
+  auto r = run_fspm("tree info " + (dir / "l.mtg").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\xef\xbf\xbd"), std::string::npos) << r.out;
+  r = run_fspm("tree info --json " + (dir / "l.mtg").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NE(j["attributes"].dump(), "");
+}
+
 // The shipped Y of three tubes (rings, quads, no caps; its axes are written in its header): the
 // skeleton has the trunk from the ground and two order-1 branches ending at (0.8, 0, 3.2) and
 // (-0.6, 0.3, 3.0), so the bounding box and the counts are known in closed form.
