@@ -455,7 +455,7 @@ class Grower {
 
 GrowthResult grow_tree(const GrowthParams& params, const Scene& scene,
                        const Eigen::Vector3d& base) {
-  validate(params);
+  params.validate();
   return Grower(params, scene, base).run();
 }
 

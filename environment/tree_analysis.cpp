@@ -495,7 +495,7 @@ TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
   scene.sky.brightest = brightest.normalized();
   scene.sky.directions = params.light_directions;
   scene.sky.significance = params.light_significance;
-  validate(scene.sky);
+  scene.sky.validate();
   a.brightest = scene.sky.brightest;
   ClusterLightField field(params.light_directions, params.light_significance, a.brightest);
   // One case per ClusterLightModel, as in the adaptation's Engine (plastic_adaptation.cpp): the
