@@ -68,7 +68,7 @@ std::optional<environment::RealSky> real_sky(const LightOptions& o) {
     if (*o.global_W_m2 < 0.0) throw ValueError("--global-radiation must be >= 0 W m-2");
     sky.global_W_m2 = *o.global_W_m2;
   }
-  environment::validate(sky);
+  sky.validate();
   return sky;
 }
 

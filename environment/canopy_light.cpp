@@ -21,7 +21,7 @@ double cluster_leaf_area_m2(const Sphere& cluster) {
 CanopyLight::CanopyLight(const Scene& scene, std::span<const Sphere> clusters, double voxel_m)
     : obstacles_(scene), clusters_(clusters.begin(), clusters.end()), dirs_(scene.sky.directions) {
   if (voxel_m > 0.0) grid_.emplace(clusters, voxel_m);
-  validate(scene.sky);
+  scene.sky.validate();
   has_obstacles_ = !obstacles_.spheres.empty() || !obstacles_.boxes.empty() ||
                    !obstacles_.meshes.empty() || obstacles_.ground.has_value();
   mu_.reserve(clusters_.size());

@@ -53,7 +53,8 @@ void parse_hours(std::string_view text, RealSky& sky) {
 
 DiffuseSky diffuse_sky_from_name(std::string_view name) { return kDiffuseSkyNames.from_name(name); }
 
-void validate(const RealSky& sky) {
+void RealSky::validate() const {
+  const RealSky& sky = *this;
   if (!(sky.first_hour >= 0.0 && sky.last_hour <= 24.0 && sky.first_hour < sky.last_hour)) {
     throw ValueError("sky hours must satisfy 0 <= first < last <= 24, got " +
                      std::to_string(sky.first_hour) + " to " + std::to_string(sky.last_hour));
@@ -72,7 +73,7 @@ void validate(const RealSky& sky) {
 }
 
 std::vector<SkyStep> sky_steps(const RealSky& sky) {
-  validate(sky);
+  sky.validate();
   const int doy = day_of_year(sky.date);
   const int n = std::max(
       1, static_cast<int>(std::ceil((sky.last_hour - sky.first_hour) / sky.step_h - 1e-9)));

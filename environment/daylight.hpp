@@ -38,6 +38,9 @@ struct RealSky {
   // Measured hourly global radiation (W m-2, index = local hour 0-23, radiation_file.hpp); when
   // given it replaces global_W_m2 and the clear sky, each step taking its hour's value.
   std::vector<double> hourly_global_W_m2;
+  // Throws ValueError naming the field for hours outside [0, 24], first > last, a step <= 0, a
+  // transmittance outside (0, 1] or an invalid site or date.
+  void validate() const;
 };
 
 // "YYYY-MM-DD"; "FROM:TO" hours (local clock time, e.g. "6:18" or "5.5:20.25") into sky; a
@@ -46,10 +49,6 @@ struct RealSky {
 CalendarDate parse_date(std::string_view text);
 void parse_hours(std::string_view text, RealSky& sky);
 DiffuseSky diffuse_sky_from_name(std::string_view name);
-
-// Throws ValueError for hours outside [0, 24], first > last, a step <= 0, a transmittance outside
-// (0, 1] or an invalid site or date.
-void validate(const RealSky& sky);
 
 // One integration step: the sun and the radiation on a horizontal plane in the open.
 struct SkyStep {

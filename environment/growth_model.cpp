@@ -12,10 +12,9 @@
 #include <optional>
 #include <random>
 
+#include "environment/bud_light.hpp"
 #include "environment/leaf_light.hpp"
 #include "environment/light_model.hpp"
-#include "environment/shadow_grid.hpp"
-#include "environment/space_colonization.hpp"
 #include "fspm/attribute_names.hpp"
 #include "fspm/error.hpp"
 #include "fspm/memory_budget.hpp"
@@ -26,24 +25,8 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-struct Metamer {
-  Eigen::Vector3d start, end, heading, lateral_dir;
-  std::int32_t parent = -1, main = -1, lateral = -1;
-  std::int32_t shoot = -1;
-  int birth_year = 0;
-  double roll = 0.0;  // phyllotaxy angle of this metamer's lateral bud around the heading
-  std::uint16_t order = 0;
-  bool alive = true;
-  bool terminal_bud = false;
-  bool lateral_bud = false;
-};
-
-struct Shoot {
-  std::int32_t first = 0, last = 0;
-  int year = 0;
-  std::int32_t sphere = -1;  // index of its leaf cluster in this cycle's light scene
-  bool alive = true;
-};
+using growth::Metamer;
+using growth::Shoot;
 
 // Unit vector at `angle` from h, rotated by `roll` around h from a frame fixed by the world up.
 Eigen::Vector3d lateral_direction(const Eigen::Vector3d& h, double angle_rad, double roll_rad) {
@@ -57,7 +40,7 @@ Eigen::Vector3d lateral_direction(const Eigen::Vector3d& h, double angle_rad, do
 class Grower {
  public:
   Grower(const GrowthParams& p, const Scene& scene, const Eigen::Vector3d& base)
-      : p_(p), scene_(scene), base_(base), rng_(p.seed), grid_(p.shadow_grid) {
+      : p_(p), scene_(scene), base_(base), rng_(p.seed) {
     if (!scene_.ground) scene_.ground = Ground{base.z(), 1.0, true};  // obstruction only
     // A real sky (parameter table `sky`): its light per direction replaces the cos^2 sky of the
     // light models that weight sky directions (sky_distribution.hpp); its mean direction is the
@@ -65,9 +48,8 @@ class Grower {
     if (p_.site_sky) {
       site_light_ = std::make_shared<const SkyDistribution>(sky_distribution(*p_.site_sky));
       scene_.sky.brightest = site_light_->mean_direction();
-      // The shadow grid's pyramids lean along it, so shade falls away from the sun.
-      grid_.set_light_direction(scene_.sky.brightest);
     }
+    light_ = make_bud_light({p_, scene_, base_, rng_});
     wsum_ = p_.phototropism + p_.gravitropism;
     // Pirk eq. 4.7 with l_s = l_i: each internode keeps (1 - sum w)^1 of its default direction.
     ws_ = 1.0 - wsum_;
@@ -224,8 +206,6 @@ class Grower {
     }
   }
 
-  bool has_bud(const Metamer& m) const { return m.alive && (m.terminal_bud || m.lateral_bud); }
-
   // 1. Light Q and optimal growth direction V of every live bud (Palubicki step 1).
   void sense_light(int year) {
     const std::size_t n = ms_.size();
@@ -233,17 +213,10 @@ class Grower {
     q_lateral_.assign(n, 0.0);
     dir_terminal_.assign(n, Eigen::Vector3d::UnitZ());
     dir_lateral_.assign(n, Eigen::Vector3d::UnitZ());
-    switch (p_.light_model) {
-      case BudLightModel::kSky:
-        sense_sky(year);
-        break;
-      case BudLightModel::kShadowGrid:
-        sense_shadow_grid();
-        break;
-      case BudLightModel::kSpaceColonization:
-        sense_markers();
-        break;
-    }
+    Scene clusters;
+    if (light_->needs_cluster_scene()) clusters = light_scene(year);
+    BudLightOutput out{q_terminal_, q_lateral_, dir_terminal_, dir_lateral_};
+    light_->sense({ms_, shoots_, light_->needs_cluster_scene() ? &clusters : nullptr}, out);
     const double f = p_.sky_light_fraction, k = p_.light_half_saturation;
     auto response = [f, k](double q) {
       q *= f;
@@ -256,73 +229,6 @@ class Grower {
       q_terminal_[i] = response(q_terminal_[i]);
       q_lateral_[i] = response(q_lateral_[i]);
       if (has_bud(ms_[i])) bud_light_[i] = ms_[i].terminal_bud ? q_terminal_[i] : q_lateral_[i];
-    }
-  }
-
-  void sense_sky(int year) {
-    const LightModel light(light_scene(year));
-    for (std::size_t i = 0; i < ms_.size(); ++i) {
-      const Metamer& m = ms_[i];
-      if (!has_bud(m)) continue;
-      const std::int32_t own = shoots_[m.shoot].sphere;
-      const LightSample s =
-          light.evaluate(m.end, own < 0 ? kNoSphere : static_cast<std::uint32_t>(own));
-      q_terminal_[i] = q_lateral_[i] = s.light;
-      dir_terminal_[i] = dir_lateral_[i] = s.direction;
-    }
-  }
-
-  void sense_shadow_grid() {
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
-    for (const Metamer& m : ms_) {
-      if (!has_bud(m)) continue;
-      lo = lo.cwiseMin(m.end);
-      hi = hi.cwiseMax(m.end);
-    }
-    if (lo.x() > hi.x()) return;
-    grid_.reset(lo, hi);
-    grid_.add_obstacles(scene_);
-    for (const Metamer& m : ms_) {
-      if (has_bud(m))
-        grid_.add_bud(m.end, (m.terminal_bud ? 1.0 : 0.0) + (m.lateral_bud ? 1.0 : 0.0));
-    }
-    grid_.propagate();
-    for (std::size_t i = 0; i < ms_.size(); ++i) {
-      if (!has_bud(ms_[i])) continue;
-      q_terminal_[i] = q_lateral_[i] = grid_.bud_light(ms_[i].end);
-      dir_terminal_[i] = dir_lateral_[i] = grid_.growth_direction(ms_[i].end);
-    }
-  }
-
-  void sense_markers() {
-    if (!markers_) {
-      markers_.emplace(p_.space_colonization, scene_, base_, rng_);
-    }
-    // Markers within the occupancy radius of the tree's nodes are gone (Runions et al. 2007).
-    node_points_.clear();
-    for (const Metamer& m : ms_) {
-      if (m.alive && m.birth_year >= occupied_year_) node_points_.push_back(m.end);
-    }
-    occupied_year_ = ms_.empty() ? 0 : ms_.back().birth_year + 1;
-    markers_->occupy(node_points_);
-    queries_.clear();
-    query_node_.clear();
-    for (std::size_t i = 0; i < ms_.size(); ++i) {
-      const Metamer& m = ms_[i];
-      if (!m.alive) continue;
-      // Terminal buds look along the shoot, lateral buds along their branching direction.
-      if (m.terminal_bud) queries_.push_back({m.end, m.heading});
-      if (m.terminal_bud) query_node_.push_back(static_cast<std::int32_t>(i));
-      if (m.lateral_bud) queries_.push_back({m.end, m.lateral_dir});
-      if (m.lateral_bud) query_node_.push_back(-1 - static_cast<std::int32_t>(i));
-    }
-    perceptions_.resize(queries_.size());
-    markers_->perceive(queries_, perceptions_);
-    for (std::size_t k = 0; k < queries_.size(); ++k) {
-      const std::int32_t tag = query_node_[k];
-      const std::size_t i = static_cast<std::size_t>(tag >= 0 ? tag : -1 - tag);
-      (tag >= 0 ? q_terminal_ : q_lateral_)[i] = perceptions_[k].light;
-      (tag >= 0 ? dir_terminal_ : dir_lateral_)[i] = perceptions_[k].direction;
     }
   }
 
@@ -539,13 +445,7 @@ class Grower {
   std::vector<double> bud_light_;  // light sensed by each node's bud in the last cycle, nan: no bud
   std::vector<Eigen::Vector3d> dir_terminal_, dir_lateral_;
   std::vector<double> q_, v_, v_terminal_, v_lateral_;
-  ShadowGrid grid_;
-  std::optional<MarkerField> markers_;
-  int occupied_year_ = 0;  // nodes born before this year have occupied their markers
-  std::vector<Eigen::Vector3d> node_points_;
-  std::vector<BudQuery> queries_;
-  std::vector<std::int32_t> query_node_;
-  std::vector<BudPerception> perceptions_;
+  std::unique_ptr<BudLight> light_;  // made after scene_, rng_ and the sky it reads
   std::vector<std::int64_t> count_;
   std::size_t shed_ = 0, grown_ = 0;
   std::vector<double> disused_pipes_;  // per metamer, of shed laterals (keep_shed_pipes)
@@ -555,7 +455,7 @@ class Grower {
 
 GrowthResult grow_tree(const GrowthParams& params, const Scene& scene,
                        const Eigen::Vector3d& base) {
-  validate(params);
+  params.validate();
   return Grower(params, scene, base).run();
 }
 

@@ -162,7 +162,8 @@ toml::table override_table(const std::string& setting) {
 
 }  // namespace
 
-void validate(const GrowthParams& p) {
+void GrowthParams::validate() const {
+  const GrowthParams& p = *this;
   auto check = [](bool ok, const char* name, const char* expected) {
     if (!ok) throw ValueError(std::string(name) + ": expected " + expected);
   };
@@ -400,7 +401,7 @@ GrowthParams parse_growth_params(std::string_view text, const std::string& file_
   add_light_keys(keys, p, file_name);
   apply_keys(table, keys, from_command_line, file_name);
   try {
-    validate(p);
+    p.validate();
   } catch (const ValueError& e) {
     throw ValueError(e.message(), file_name);
   }

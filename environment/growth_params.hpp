@@ -96,6 +96,8 @@ struct GrowthParams {
   // in the wood below them as disused pipes), each shed branch counting with the pipes it had
   // when it was shed. Off: radii from the living branches alone.
   bool keep_shed_pipes = false;
+  // Throws ValueError naming the parameter when one is out of range.
+  void validate() const;
 };
 
 // Which tropism weights Pirk's tree types take. Pirk's text (4.5.4) pairs them as A 0.25 / 0.12,
@@ -127,8 +129,5 @@ GrowthParams read_growth_params(const std::string& path,
 // bare word is taken as a string), as `fspm grow --set` gives them.
 GrowthParams parse_growth_params(std::string_view text, const std::string& file_name = "<params>",
                                  const std::vector<std::string>& overrides = {});
-
-// Throws ValueError naming the parameter when one is out of range.
-void validate(const GrowthParams& p);
 
 }  // namespace fspm::environment

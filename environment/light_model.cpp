@@ -14,7 +14,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The scene, once its sky is checked: the direction set is built from it before the body runs.
 const Scene& with_checked_sky(const Scene& scene) {
-  validate(scene.sky);
+  scene.sky.validate();
   return scene;
 }
 

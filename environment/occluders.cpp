@@ -22,7 +22,8 @@ void check_translucency(double translucency) {
 
 }  // namespace
 
-void validate(const Sphere& sphere) {
+void Sphere::validate() const {
+  const Sphere& sphere = *this;
   if (!sphere.center.allFinite()) throw ValueError("sphere: expected a finite centre");
   if (!(sphere.radius_m > 0.0) || !std::isfinite(sphere.radius_m)) {
     throw ValueError("radius: expected a finite value > 0");
@@ -30,7 +31,8 @@ void validate(const Sphere& sphere) {
   check_translucency(sphere.translucency);
 }
 
-void validate(const Box& box) {
+void Box::validate() const {
+  const Box& box = *this;
   if (!box.center.allFinite()) throw ValueError("box: expected a finite centre");
   if (!box.half_extent.allFinite() || !(box.half_extent.array() > 0.0).all()) {
     throw ValueError(
@@ -44,7 +46,8 @@ void validate(const Box& box) {
   check_translucency(box.translucency);
 }
 
-void validate(const Ground& ground) {
+void Ground::validate() const {
+  const Ground& ground = *this;
   if (!std::isfinite(ground.height_m)) throw ValueError("ground: expected a finite height");
   check_translucency(ground.translucency);
 }

@@ -20,6 +20,8 @@ struct Sphere {
   double radius_m = 1.0;
   double translucency = 0.0;
   bool solid = false;  // leaf clusters do not stop growth
+  // Throws ValueError naming the first value out of range (see validate of Box).
+  void validate() const;
 };
 
 // A box with centre, half extents along its own axes and a rotation (identity: axis-aligned).
@@ -49,6 +51,11 @@ struct Box {
   Eigen::Vector3d to_local(const Eigen::Vector3d& p) const;
   Eigen::Vector3d local_direction(const Eigen::Vector3d& dir) const;
   double ray_entry_local(const Eigen::Vector3d& o, const Eigen::Vector3d& d) const;
+  // Each of Sphere, Box and Ground throws ValueError naming the first value out of range:
+  // finite positions, a radius and half extents > 0, a rotation with orthonormal columns,
+  // translucency in [0, 1]. The Python bindings check what they build with these (the scene file
+  // reader checks each value where it reads it, with its file and line).
+  void validate() const;
 };
 
 // Fixed ray directions in a box's frame, prepared for slab tests from many origins: the inverse of
@@ -74,6 +81,8 @@ struct Ground {
   double height_m = 0.0;
   double translucency = 0.0;
   bool solid = true;
+  // Throws ValueError naming the first value out of range (see validate of Box).
+  void validate() const;
 };
 
 struct TriangleMesh {
@@ -89,14 +98,6 @@ struct TriangleMesh {
   int crossings(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
                 double max_t = 1e300) const;
 };
-
-// Each throws ValueError naming the first value out of range: finite positions, a radius and half
-// extents > 0, a rotation with orthonormal columns, translucency in [0, 1]. The Python bindings
-// check what they build with these (the scene file reader checks each value where it reads it,
-// with its file and line).
-void validate(const Sphere& sphere);
-void validate(const Box& box);
-void validate(const Ground& ground);
 
 // Ray/sphere: true when the ray origin + t * dir (t > 0, dir unit) crosses the sphere's interior
 // within max_t (an origin inside counts).

@@ -99,6 +99,10 @@ class Engine {
   std::vector<AdaptationResult> run();
 
  private:
+  void collect_clusters(const std::vector<const TreeGraph*>& trees,
+                        const std::vector<const TreeAnalysis*>& analyses);
+  void setup_sky();
+  void mark_near_other_trees();
   void setup_tree(TreeRun& r);
   void aggregate(TreeRun& r);
   void bend(TreeRun& r, int level, int step);
@@ -178,6 +182,36 @@ Engine::Engine(const std::vector<const TreeGraph*>& trees,
   if (trees.size() != analyses.size()) {
     throw ValueError("plastic adaptation: one analysis per tree expected");
   }
+  collect_clusters(trees, analyses);
+  field_.set_obstacles(scene);
+  for (const Box& b : scene.boxes) has_solids_ = has_solids_ || b.solid;
+  for (const Sphere& b : scene.spheres) has_solids_ = has_solids_ || b.solid;
+  for (const TriangleMesh& m : scene.meshes) has_solids_ = has_solids_ || m.solid;
+  const ClusterLightModel model = runs_.front().a->params.light_model;
+  for (const TreeRun& r : runs_) {
+    if (r.a->params.light_model != model ||
+        (model == ClusterLightModel::kCanopy &&
+         r.a->params.canopy_model != runs_.front().a->params.canopy_model)) {
+      throw ValueError("plastic adaptation: the trees were analysed with different light models");
+    }
+  }
+  switch (model) {
+    case ClusterLightModel::kShadowGrid:
+      setup_grid();
+      break;
+    case ClusterLightModel::kCanopy:
+      setup_canopy();
+      break;
+    case ClusterLightModel::kSky:
+      setup_sky();
+      break;
+  }
+}
+
+// Every tree's clusters into one numbering (runs_[k].first_cluster on), the cluster state sized
+// to them.
+void Engine::collect_clusters(const std::vector<const TreeGraph*>& trees,
+                              const std::vector<const TreeAnalysis*>& analyses) {
   runs_.resize(trees.size());
   std::vector<Eigen::Vector3d> centers;
   std::vector<double> radii, gammas;
@@ -218,35 +252,18 @@ Engine::Engine(const std::vector<const TreeGraph*>& trees,
   eval_path_.assign(nc, 0.0);
   eval_all_path_.assign(nc, 0.0);
   check_.assign(nc, 0);
-  field_.set_obstacles(scene);
-  for (const Box& b : scene.boxes) has_solids_ = has_solids_ || b.solid;
-  for (const Sphere& b : scene.spheres) has_solids_ = has_solids_ || b.solid;
-  for (const TriangleMesh& m : scene.meshes) has_solids_ = has_solids_ || m.solid;
-  if (runs_.front().a->params.light_model == ClusterLightModel::kShadowGrid) {
-    for (const TreeRun& r : runs_) {
-      if (r.a->params.light_model != ClusterLightModel::kShadowGrid) {
-        throw ValueError("plastic adaptation: the trees were analysed with different light models");
-      }
-    }
-    setup_grid();
-    return;
-  }
-  if (runs_.front().a->params.light_model == ClusterLightModel::kCanopy) {
-    for (const TreeRun& r : runs_) {
-      if (r.a->params.light_model != ClusterLightModel::kCanopy ||
-          r.a->params.canopy_model != runs_.front().a->params.canopy_model) {
-        throw ValueError("plastic adaptation: the trees were analysed with different light models");
-      }
-    }
-    setup_canopy();
-    return;
-  }
+}
+
+// Sky light (Pirk eq. 4.3): the analysis' light is kept and only what changed against it is
+// evaluated again: the sky (everything), obstacles (the clusters they shade), neighbouring trees
+// (the clusters within reach of another tree).
+void Engine::setup_sky() {
   bool sky_changed = false;
+  const Eigen::Vector3d b = scene_.sky.brightest.norm() > 0
+                                ? Eigen::Vector3d(scene_.sky.brightest.normalized())
+                                : Eigen::Vector3d::UnitZ();
   for (const TreeRun& r : runs_) {
     const TreeAnalysis& a = *r.a;
-    const Eigen::Vector3d b = scene.sky.brightest.norm() > 0
-                                  ? Eigen::Vector3d(scene.sky.brightest.normalized())
-                                  : Eigen::Vector3d::UnitZ();
     sky_changed = sky_changed || (a.brightest - b).norm() > 1e-12 ||
                   a.params.light_directions != runs_.front().a->params.light_directions ||
                   a.params.light_significance != runs_.front().a->params.light_significance;
@@ -257,9 +274,7 @@ Engine::Engine(const std::vector<const TreeGraph*>& trees,
     }
   }
   for (TreeRun& r : runs_) setup_tree(r);
-
-  // What changed against the analysis: the sky (everything), obstacles (the clusters they shade),
-  // neighbouring trees (the clusters within reach of another tree).
+  const auto nc = static_cast<std::uint32_t>(field_.size());
   if (sky_changed) {
     for (std::uint32_t c = 0; c < nc; ++c) mark_dirty(c);
   }
@@ -268,29 +283,32 @@ Engine::Engine(const std::vector<const TreeGraph*>& trees,
       if (field_.update_obstacles(c)) mark_dirty(c);
     }
   }
-  if (runs_.size() > 1) {
-    const double reach = [&] {
-      double m = 0.0;
-      for (std::uint32_t c = 0; c < nc; ++c) {
-        if (field_.reach2(c) >= 0.0) m = std::max(m, std::sqrt(field_.reach2(c)));
-      }
-      return m + ClusterLightField::kListMargin_m;
-    }();
-    std::vector<Eigen::AlignedBox3d> boxes(runs_.size());
-    for (std::uint32_t c = 0; c < nc; ++c) boxes[owner_[c]].extend(centers[c]);
-    for (auto& b : boxes) {
-      if (!b.isEmpty()) b = Eigen::AlignedBox3d(b.min().array() - reach, b.max().array() + reach);
-    }
-    for (std::uint32_t c = 0; c < nc; ++c) {
-      for (std::size_t k = 0; k < boxes.size(); ++k) {
-        if (k != owner_[c] && boxes[k].contains(centers[c])) {
-          mark_dirty(c);
-          relist_[c] = 1;  // its analysed list knows only its own tree
-        }
+  if (runs_.size() > 1) mark_near_other_trees();
+  refresh();
+}
+
+// The clusters within light reach of another tree's box: evaluated again, and their neighbour
+// lists, which the analysis made against their own tree only, made again.
+void Engine::mark_near_other_trees() {
+  const auto nc = static_cast<std::uint32_t>(field_.size());
+  double reach = 0.0;
+  for (std::uint32_t c = 0; c < nc; ++c) {
+    if (field_.reach2(c) >= 0.0) reach = std::max(reach, std::sqrt(field_.reach2(c)));
+  }
+  reach += ClusterLightField::kListMargin_m;
+  std::vector<Eigen::AlignedBox3d> boxes(runs_.size());
+  for (std::uint32_t c = 0; c < nc; ++c) boxes[owner_[c]].extend(center0_[c]);
+  for (auto& b : boxes) {
+    if (!b.isEmpty()) b = Eigen::AlignedBox3d(b.min().array() - reach, b.max().array() + reach);
+  }
+  for (std::uint32_t c = 0; c < nc; ++c) {
+    for (std::size_t k = 0; k < boxes.size(); ++k) {
+      if (k != owner_[c] && boxes[k].contains(center0_[c])) {
+        mark_dirty(c);
+        relist_[c] = 1;
       }
     }
   }
-  refresh();
 }
 
 void Engine::setup_grid() {

@@ -93,7 +93,7 @@ SiteSky parse_site_sky(const toml::node& node, const std::string& file) {
     out.days = static_cast<int>(*v);
   }
   try {
-    validate(out.sky);
+    out.sky.validate();
   } catch (const ValueError& e) {
     bad(node, file, e.what());
   }

@@ -12,7 +12,8 @@ namespace {
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 }
 
-void validate(const Sky& sky) {
+void Sky::validate() const {
+  const Sky& sky = *this;
   if (!sky.brightest.allFinite() || std::abs(sky.brightest.norm() - 1.0) > 1e-9) {
     throw ValueError(
         "sky brightest: expected a non-zero direction (a unit vector once normalized)");

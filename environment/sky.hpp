@@ -21,16 +21,15 @@ struct Sky {
   // A real sky's light per direction (sky_distribution.hpp, apply_sky_distribution) in place of
   // the cos^2 sky; null: the cos^2 sky around `brightest`.
   std::shared_ptr<const SkyDistribution> distribution;
+  // Throws ValueError naming the field unless brightest is a finite unit vector, directions is in
+  // [1, kMaxSkyDirections] and significance in [0, 1). (A brightest point below the horizon is
+  // allowed: the cos^2 sky of -b is the same as that of b.)
+  void validate() const;
 };
 
 // The sky's intensity per cell of dirs, in any unit (only ratios matter): cos^2 of the angle to
 // the brightest point (Pirk eq. 4.3), or the real sky's PAR per cell (SkyDistribution).
 std::vector<double> sky_weights(const Sky& sky, const HemisphereDirections& dirs);
-
-// Throws ValueError naming the field unless brightest is a finite unit vector, directions is in
-// [1, kMaxSkyDirections] and significance in [0, 1). (A brightest point below the horizon is
-// allowed: the cos^2 sky of -b is the same as that of b.)
-void validate(const Sky& sky);
 
 // Unit direction from elevation above the horizon and azimuth clockwise from north (degrees).
 Eigen::Vector3d direction_from_elevation_azimuth(double elevation_deg, double azimuth_deg);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "fspm/error.hpp"
 #include "fspm/memory_budget.hpp"
@@ -26,24 +27,29 @@ bool has_solids(const Scene& scene) {
   return false;
 }
 
-void validate(const SpaceColonizationParams& p) {
-  auto positive = [](double v) { return v > 0 && std::isfinite(v); };
-  if (!positive(p.marker_density_per_m3) || !positive(p.perception_radius_m) ||
-      !positive(p.occupancy_radius_m) || !positive(p.region_radius_m) ||
-      !positive(p.region_height_m) || !(p.perception_angle_deg > 0) ||
-      !(p.perception_angle_deg <= 360)) {
+}  // namespace
+
+void SpaceColonizationParams::validate() const {
+  const auto positive = [](double v, const char* name, const char* what) {
+    if (!(v > 0 && std::isfinite(v))) {
+      throw ValueError(std::string("space colonization ") + name + ": expected a positive " + what);
+    }
+  };
+  positive(marker_density_per_m3, "marker_density_per_m3", "density");
+  positive(perception_radius_m, "perception_radius_m", "length");
+  positive(occupancy_radius_m, "occupancy_radius_m", "length");
+  positive(region_radius_m, "region_radius_m", "length");
+  positive(region_height_m, "region_height_m", "length");
+  if (!(perception_angle_deg > 0 && perception_angle_deg <= 360)) {
     throw ValueError(
-        "space colonization: expected positive densities, radii and region, and a "
-        "perception angle in (0, 360] degrees");
+        "space colonization perception_angle_deg: expected an angle in (0, 360] degrees");
   }
 }
-
-}  // namespace
 
 MarkerField::MarkerField(const SpaceColonizationParams& params, const Scene& scene,
                          const Eigen::Vector3d& base, std::mt19937_64& rng)
     : p_(params), scene_(scene), solids_(has_solids(scene)) {
-  validate(p_);
+  p_.validate();
   cos_half_angle_ = std::cos(0.5 * p_.perception_angle_deg * std::numbers::pi / 180.0);
   cell_ = std::max(p_.perception_radius_m, p_.occupancy_radius_m);
   const double r = p_.region_radius_m, h = p_.region_height_m;

@@ -24,6 +24,8 @@ struct SpaceColonizationParams {
   // Markers fill a vertical cylinder of this radius and height standing on the tree's base.
   double region_radius_m = 8.0;
   double region_height_m = 14.0;
+  // Throws ValueError naming the first parameter out of range.
+  void validate() const;
 };
 
 struct BudQuery {

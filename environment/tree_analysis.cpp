@@ -495,15 +495,21 @@ TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
   scene.sky.brightest = brightest.normalized();
   scene.sky.directions = params.light_directions;
   scene.sky.significance = params.light_significance;
-  validate(scene.sky);
+  scene.sky.validate();
   a.brightest = scene.sky.brightest;
   ClusterLightField field(params.light_directions, params.light_significance, a.brightest);
-  if (params.light_model == ClusterLightModel::kShadowGrid) {
-    grid_light(t, scene, field.open_direction(), a);
-  } else if (params.light_model == ClusterLightModel::kCanopy) {
-    canopy_light(scene.sky, a);
-  } else {
-    sky_light(a, field);
+  // One case per ClusterLightModel, as in the adaptation's Engine (plastic_adaptation.cpp): the
+  // compiler names a model missing from either.
+  switch (params.light_model) {
+    case ClusterLightModel::kShadowGrid:
+      grid_light(t, scene, field.open_direction(), a);
+      break;
+    case ClusterLightModel::kCanopy:
+      canopy_light(scene.sky, a);
+      break;
+    case ClusterLightModel::kSky:
+      sky_light(a, field);
+      break;
   }
 
   std::vector<Eigen::Vector3d> light_sum;

@@ -11,7 +11,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const fspm::environment::GrowthParams p = fspm::environment::parse_growth_params(
         std::string_view(reinterpret_cast<const char*>(data), size), "fuzz.toml");
-    fspm::environment::validate(p);
+    p.validate();
   } catch (const fspm::Error&) {
   }
   return 0;

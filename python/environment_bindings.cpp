@@ -78,7 +78,7 @@ template <typename Set>
 void set_checked_sky(env::Scene& scene, const Set& set) {
   env::Sky sky = scene.sky;
   set(sky);
-  env::validate(sky);
+  sky.validate();
   scene.sky = sky;
 }
 
@@ -130,7 +130,7 @@ void bind_scene_obstacles(py::class_<env::Scene>& scene) {
           [](env::Scene& s, const Eigen::Vector3d& center, double radius, double translucency,
              bool solid) {
             const env::Sphere sphere{center, radius, translucency, solid};
-            env::validate(sphere);
+            sphere.validate();
             s.spheres.push_back(sphere);
           },
           py::arg("center"), py::arg("radius"), py::arg("translucency") = 0.0,
@@ -144,7 +144,7 @@ void bind_scene_obstacles(py::class_<env::Scene>& scene) {
             env::Box b = env::Box::from_min_max(lo, hi);
             b.translucency = translucency;
             b.solid = solid;
-            env::validate(b);
+            b.validate();
             s.boxes.push_back(b);
           },
           py::arg("min"), py::arg("max"), py::arg("translucency") = 0.0, py::arg("solid") = true,
@@ -156,7 +156,7 @@ void bind_scene_obstacles(py::class_<env::Scene>& scene) {
              double thickness, double base, double translucency) {
             env::Box b = env::Box::wall(from, to, base, height, thickness);
             b.translucency = translucency;
-            env::validate(b);
+            b.validate();
             s.boxes.push_back(b);
           },
           py::arg("from_xy"), py::arg("to_xy"), py::arg("height"), py::arg("thickness") = 0.2,
@@ -168,7 +168,7 @@ void bind_scene_obstacles(py::class_<env::Scene>& scene) {
           "set_ground",
           [](env::Scene& s, double height, double translucency, bool solid) {
             const env::Ground ground{height, translucency, solid};
-            env::validate(ground);
+            ground.validate();
             s.ground = ground;
           },
           py::arg("height") = 0.0, py::arg("translucency") = 0.0, py::arg("solid") = true,
@@ -423,7 +423,7 @@ void bind_growth_params(py::module_& m) {
       .existing("marker_region_height_m")
       .finish(&growth_base);
   gp.def(
-      "validate", [](const env::GrowthParams& p) { env::validate(p); },
+      "validate", [](const env::GrowthParams& p) { p.validate(); },
       "Raises ParameterError naming the first parameter out of range");
 }
 
@@ -496,7 +496,7 @@ py::dict canopy_light(const TreeGraph& tree, const std::string& sky_file, int di
   const std::vector<env::Sphere> clusters = env::leaf_spheres(tree, sphere_of);
   env::Sky sky;
   sky.directions = directions;
-  env::validate(sky);
+  sky.validate();
   if (!sky_file.empty()) {
     env::apply_sky_distribution(sky, std::make_shared<const env::SkyDistribution>(
                                          env::sky_distribution(env::read_site_sky_file(sky_file))));

@@ -42,7 +42,7 @@ TEST(SolarPosition, RejectsBadInput) {
   EXPECT_THROW(solar_position({45.0, 0, 0, 0}, {2003, 13, 1}, 12.0), ValueError);
   RealSky sky;
   sky.first_hour = 14, sky.last_hour = 10;
-  EXPECT_THROW(validate(sky), ValueError);
+  EXPECT_THROW(sky.validate(), ValueError);
 }
 
 // Spitters et al. (1986) eq. 20: all diffuse below Sg/S0 = 0.22, the quadratic between 0.22 and
