@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "environment/sky_distribution.hpp"
 #include "fspm/error.hpp"
 
 namespace fspm::environment {
@@ -14,6 +15,15 @@ constexpr double kMargin_m = 0.5;
 std::vector<std::unique_ptr<ShadowGrid>>& grid_pool() {
   thread_local std::vector<std::unique_ptr<ShadowGrid>> pool;
   return pool;
+}
+
+// The grid's light direction d tilts from the lean's axis; combine_sky_and_grid adds its tilt to
+// the sky's mean direction, which already leans toward the sun, so the axis' own lean is taken
+// out: the same tilt (tangents per axis) about the zenith.
+Eigen::Vector3d tilt_about_zenith(const Eigen::Vector3d& d, const Eigen::Vector3d& axis) {
+  return Eigen::Vector3d(d.x() / d.z() - axis.x() / axis.z(), d.y() / d.z() - axis.y() / axis.z(),
+                         1.0)
+      .normalized();
 }
 
 }  // namespace
@@ -41,6 +51,12 @@ ClusterGridLight::ClusterGridLight(const ShadowGridParams& params, const Scene& 
     grid_ = std::move(pool.back());
     pool.pop_back();
     grid_->set_params(params);
+  }
+  // Under a real sky the pyramids lean along its PAR-weighted mean direction, as growth's do
+  // (growth_model.cpp), so an occluder shades the clusters on its side away from the sun.
+  if (scene.sky.distribution) {
+    grid_->set_light_direction(scene.sky.distribution->mean_direction());
+    leaning_ = true;
   }
 }
 
@@ -100,6 +116,7 @@ void ClusterGridLight::evaluate(std::span<const Eigen::Vector3d> buds,
       light[c] = grid_->spread_bud_light(centers[c]);
     }
     direction[c] = grid_->spread_light_direction(centers[c]);
+    if (leaning_) direction[c] = tilt_about_zenith(direction[c], grid_->light_axis());
   }
 }
 

@@ -6,6 +6,10 @@
 // zenith tilted toward the less shaded side (ShadowGrid::light_direction). Obstacles are voxels,
 // as in growth; the adaptation also takes the sky they hide from each cluster
 // (combine_sky_and_grid), which the grid's local shade alone would miss beyond q_max voxels.
+// Under a real sky (Scene::sky.distribution) the pyramids lean along the sky's PAR-weighted mean
+// direction as growth's do (ShadowGrid::set_light_direction), and a cluster's direction is its
+// tilt toward the less shaded side about the zenith, the lean being in the sky's direction that
+// combine_sky_and_grid adds it to.
 //
 // The grid is coarser than the growth model's so that it can be filled and propagated again at
 // every age level of an adaptation (see cluster_grid_params). Unlike growth, which places a bud
@@ -50,7 +54,8 @@ class ClusterGridLight {
   ClusterGridLight& operator=(const ClusterGridLight&) = delete;
 
   // Buds of cluster c: buds[bud_start[c] .. bud_start[c + 1]). Clusters with alive[c] == 0 cast
-  // no shade and keep their light. Writes light[c] in [0, 1] and the unit direction[c].
+  // no shade and keep their light. Writes light[c] in [0, 1] and the unit direction[c] (under a
+  // real sky the tilt about the zenith, see above).
   void evaluate(std::span<const Eigen::Vector3d> buds, std::span<const std::uint32_t> bud_start,
                 std::span<const Eigen::Vector3d> centers, std::span<const std::uint8_t> alive,
                 std::span<double> light, std::span<Eigen::Vector3d> direction);
@@ -63,6 +68,7 @@ class ClusterGridLight {
   std::unique_ptr<ShadowGrid> grid_;
   const Scene& scene_;
   bool sized_ = false;
+  bool leaning_ = false;  // the scene has a real sky: the pyramids lean along its mean direction
   std::vector<ShadowGrid::Corners> corners_;  // per bud, reused between evaluations
   std::vector<std::uint8_t> located_;
 };

@@ -3,10 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <memory>
 #include <random>
 #include <vector>
 
 #include "environment/plastic_adaptation.hpp"
+#include "environment/site_sky.hpp"
+#include "environment/sky_distribution.hpp"
 #include "environment/tree_analysis.hpp"
 #include "fspm/error.hpp"
 #include "fspm/tree_file.hpp"
@@ -190,6 +194,58 @@ TEST(ClusterGridLight, AdaptationUnderGridLightKeepsAnUnchangedTreeAndLeansAwayF
   // Two analyses with different light models cannot be adapted together.
   const TreeAnalysis sky = analyze_tree(tree);
   EXPECT_THROW(adapt_trees({&tree, &tree}, {&a, &sky}, scene), ValueError);
+}
+
+// Under the real sky of the equinox at 55 N the mean light direction leans about 38 degrees to the
+// south (y north), and the cluster light's pyramids lean along it as growth's do: an opaque ball
+// of radius 0.3 m two voxels (0.6 m) above a one-bud cluster and 0.45 m to its south shades it,
+// the same ball as far to its north hardly; under the scene's own (zenith) sky both shade it
+// alike, the vertical pyramid being symmetric. A cluster with nothing around it gets the zenith
+// as its grid direction under either sky, so that combine_sky_and_grid gives it the sky's own
+// mean direction, not that direction leaned a second time.
+TEST(ClusterGridLight, RealSkyLeansTheShadeAwayFromTheSun) {
+  SiteSky site;
+  site.sky.site = {55.0, 0.0, 0.0, 0.0};
+  site.sky.date = {2024, 3, 20};
+  const auto real = std::make_shared<const SkyDistribution>(sky_distribution(site));
+  const Eigen::Vector3d mean = real->mean_direction();
+  ASSERT_LT(mean.y(), -0.3);
+  const ShadowGridParams p = cluster_grid_params();
+  const Eigen::Vector3d bud(0.15, 0.15, 2.55);
+  // Light and grid direction of the one-bud cluster with the ball `ball_dy` to its north (y)
+  // and 0.6 m above, and of a budless cluster 5 m away.
+  const auto evaluate = [&](bool real_sky, double ball_dy, Eigen::Vector3d& open_direction) {
+    Scene scene;
+    scene.spheres.push_back({bud + Eigen::Vector3d(0.0, ball_dy, 0.6), 0.3, 0.0});
+    if (real_sky) scene.sky.distribution = real;
+    ClusterGridLight grid(p, scene);
+    const std::vector<Eigen::Vector3d> buds{bud};
+    const std::vector<Eigen::Vector3d> centers{bud, bud + Eigen::Vector3d(5.0, 0.0, 0.0)};
+    const std::vector<std::uint32_t> start{0, 1, 1};
+    const std::vector<std::uint8_t> alive{1, 1};
+    std::vector<double> light(2);
+    std::vector<Eigen::Vector3d> direction(2);
+    grid.evaluate(buds, start, centers, alive, light, direction);
+    EXPECT_NEAR(light[1], 1.0, 1e-12);
+    open_direction = direction[1];
+    return light[0];
+  };
+  Eigen::Vector3d open_real, open_zenith, unused;
+  const double real_south = evaluate(true, -0.45, open_real);
+  const double real_north = evaluate(true, 0.45, unused);
+  const double zenith_south = evaluate(false, -0.45, open_zenith);
+  const double zenith_north = evaluate(false, 0.45, unused);
+  std::printf("55 N: ball south %.3f north %.3f; zenith: south %.3f north %.3f\n", real_south,
+              real_north, zenith_south, zenith_north);
+  EXPECT_LT(real_south, real_north - 0.05);
+  EXPECT_LT(real_south, zenith_south);  // the ball is now up the light from the bud
+  EXPECT_NEAR(zenith_south, zenith_north, 1e-12);
+  EXPECT_LT(zenith_south, 1.0);
+  EXPECT_NEAR((open_real - Eigen::Vector3d::UnitZ()).norm(), 0.0, 1e-12);
+  EXPECT_EQ(open_zenith, Eigen::Vector3d::UnitZ());
+  double light = 1.0;
+  combine_sky_and_grid(1.0, mean, light, open_real);
+  EXPECT_NEAR((open_real - mean).norm(), 0.0, 1e-12);
 }
 
 }  // namespace
