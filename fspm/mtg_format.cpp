@@ -11,6 +11,7 @@
 
 #include "fspm/mtg_reader.hpp"
 #include "fspm/mtg_tree.hpp"
+#include "fspm/mtg_writer.hpp"
 #include "fspm/number_text.hpp"
 #include "fspm/warning.hpp"
 
@@ -71,6 +72,10 @@ void write_mtg(const TreeGraph& tree, std::ostream& out) {
     column[n] = column[p] + (successor(tree, p) == n ? 0 : 1);
     columns = std::max(columns, column[n] + 1);
   }
+  // Every line is padded to the deepest column before its features.
+  check_mtg_code_size(
+      static_cast<std::uint64_t>(tree.size()) * (static_cast<std::uint64_t>(columns) + 16),
+      columns);
   out << "\nMTG:\nENTITY-CODE";
   for (int c = 0; c < columns; ++c) out << '\t';
   out << "XX\tYY\tZZ\tLength\tRadius\tBirthTime\tOrder\tOrgan";

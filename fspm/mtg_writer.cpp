@@ -1,9 +1,12 @@
 #include "fspm/mtg_writer.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <ostream>
 #include <string>
 #include <vector>
+
+#include "fspm/error.hpp"
 
 namespace fspm {
 namespace {
@@ -30,6 +33,7 @@ class MtgWriter {
     for (MtgVertex v = 1; v < mtg_.size(); ++v) {
       if (mtg_.components(v).empty() && is_start(v)) walk(v);
     }
+    check_code_size();
     write_header(out);
     write_code(out);
   }
@@ -186,6 +190,16 @@ class MtgWriter {
     }
   }
 
+  void check_code_size() const {
+    const bool features = !mtg_.features().empty();
+    std::uint64_t bytes = 0;
+    for (const CodeLine& l : lines_) {
+      bytes += l.code.size() + 1 +
+               static_cast<std::uint64_t>(features ? std::max(columns_, 1) : l.column);
+    }
+    check_mtg_code_size(bytes, columns_);
+  }
+
   void write_code(std::ostream& out) const {
     const int columns = std::max(columns_, 1);
     out << "\nMTG:\nENTITY-CODE" << std::string(static_cast<std::size_t>(columns), '\t');
@@ -220,6 +234,15 @@ class MtgWriter {
 };
 
 }  // namespace
+
+void check_mtg_code_size(std::uint64_t bytes, int columns) {
+  constexpr std::uint64_t kMaxCodeBytes = std::uint64_t{256} << 20;
+  if (bytes <= kMaxCodeBytes) return;
+  throw ValueError("the MTG code would take more than 256 MiB: its branching nests " +
+                   std::to_string(columns) +
+                   " levels deep and MTG indents every level by a tab; write the tree as .tree "
+                   "or .treeb instead");
+}
 
 void write_mtg(const Mtg& mtg, std::ostream& out) { MtgWriter(mtg).write(out); }
 

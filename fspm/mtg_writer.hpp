@@ -4,6 +4,7 @@
 // per entity with its features. An axis stays in one column ('^<' continues it, '^/' descends
 // into the first component of the entity above); a branch ('+') opens the next column to the
 // right; dated repetitions follow their entity as '*' lines.
+#include <cstdint>
 #include <iosfwd>
 
 #include "fspm/mtg.hpp"
@@ -11,5 +12,11 @@
 namespace fspm {
 
 void write_mtg(const Mtg& mtg, std::ostream& out);
+
+// MTG indents every level of nested branching by one tab and starts the features after the
+// deepest level, so a chain of 200 000 branches on branches (50 bytes with the "+.+" notation)
+// would take tens of gigabytes: a code of more than 256 MiB is refused (ValueError) before
+// anything is written. `bytes` is the code's size, `columns` its deepest level.
+void check_mtg_code_size(std::uint64_t bytes, int columns);
 
 }  // namespace fspm

@@ -11,6 +11,7 @@
 
 #include "fspm/error.hpp"
 #include "fspm/mtg_reader.hpp"
+#include "fspm/mtg_tree.hpp"
 #include "fspm/mtg_writer.hpp"
 #include "tests/fspm/random_tree.hpp"
 
@@ -157,6 +158,19 @@ TEST(MtgRead, LeavesFlowersAndAttributes) {
   EXPECT_EQ(t.start(2), Eigen::Vector3d(0, 0, 1));
   EXPECT_DOUBLE_EQ(t.attribute("nitrogen")[2], 1.5);
   EXPECT_TRUE(std::isnan(t.attribute("nitrogen")[1]));
+}
+
+// 50 bytes of "+.+" notation make a chain of 210 010 branches on branches (a fuzzing finding):
+// written with one tab per level it would take about 44 GB, so the writer refuses it.
+TEST(MtgWrite, DeepBranchNestingIsRefusedBeforeWriting) {
+  const Mtg g = read_mtg("MTG:\nENTITY-CODE\n/I2+.+nnnnnnnPn210011\n", "deep.mtg");
+  ASSERT_GT(g.size(), 200000u);
+  std::ostringstream out;
+  EXPECT_THROW(write_mtg(g, out), ValueError);
+  EXPECT_LT(out.str().size(), 1000u);
+  std::ostringstream tree_out;  // the same chain as a TreeGraph (fspm tree convert to .mtg)
+  EXPECT_THROW(write_mtg(mtg_to_tree(g), tree_out), ValueError);
+  EXPECT_LT(tree_out.str().size(), 2000u);
 }
 
 TEST(MtgRead, MistakesNameTheLine) {
