@@ -68,6 +68,7 @@ nlohmann::json measurements_json(const scans::TreeMeasurements& m) {
           {"points_explained_fraction", m.points_explained_fraction},
           {"breast_height_points", m.breast_height_points},
           {"stems", m.stems},
+          {"breast_height_stems_m", m.breast_height_stems_m},
           {"cylinders", m.cylinders.size()},
           {"warnings", m.warnings}};
 }

@@ -218,6 +218,7 @@ py::dict measurements_dict(const scans::TreeMeasurements& t) {
   d["points_explained_fraction"] = t.points_explained_fraction;
   d["breast_height_points"] = t.breast_height_points;
   d["stems"] = t.stems;
+  d["breast_height_stems_m"] = t.breast_height_stems_m;
   d["tree_found"] = t.tree_found;
   d["warnings"] = t.warnings;
   d["cylinders"] = cylinder_rows(t.cylinders);

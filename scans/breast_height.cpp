@@ -1,8 +1,13 @@
 #include "scans/breast_height.hpp"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <map>
+#include <numbers>
 #include <numeric>
 #include <unordered_map>
 
@@ -42,23 +47,212 @@ std::vector<std::uint32_t> stem_labels(const std::vector<Eigen::Vector2d>& xy, d
   return cell_of;
 }
 
-}  // namespace
+std::vector<Eigen::Vector2d> horizontal(const std::vector<Eigen::Vector3d>& points) {
+  std::vector<Eigen::Vector2d> xy(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) xy[i] = points[i].head<2>();
+  return xy;
+}
 
-BreastHeightStem stem_slice(const PointSet& ps, const std::vector<char>& on_trunk, double ground_z,
-                            double low_m, double high_m, const BreastHeightOptions& o) {
-  BreastHeightStem out;
-  std::vector<Eigen::Vector2d> xy;
+struct StemAxis {
+  Eigen::Vector2d lean = Eigen::Vector2d::Zero();  // horizontal drift per metre of height
+  std::optional<Circle> mid;  // the horizontal circle at the points' mean height
+};
+
+// The stem's axis from the robust circles of the slice's lower and upper halves, whose centres
+// lie on the axis; the upper circle starts from the lower one, so that both follow the same stem
+// where a group holds two. No lean when a half has too few points for a circle.
+StemAxis stem_axis(const std::vector<Eigen::Vector3d>& points) {
+  double mid = 0.0;
+  for (const Eigen::Vector3d& p : points) mid += p.z();
+  mid /= static_cast<double>(points.size());
+  std::vector<Eigen::Vector3d> half[2];
+  for (const Eigen::Vector3d& p : points) half[p.z() >= mid].push_back(p);
+  constexpr std::size_t kMinHalf = 10;
+  StemAxis out;
+  if (half[0].size() < kMinHalf || half[1].size() < kMinHalf) return out;
+  std::optional<RobustCircle> c[2];
+  double z[2] = {0.0, 0.0};
+  for (int h = 0; h < 2; ++h) {
+    c[h] = fit_circle_robust(horizontal(half[h]), {},
+                             h ? std::optional<Circle>(c[0]->circle) : std::nullopt);
+    if (!c[h]) return out;
+    for (const Eigen::Vector3d& p : half[h]) z[h] += p.z();
+    z[h] /= static_cast<double>(half[h].size());
+  }
+  if (!(z[1] - z[0] > 1e-6)) return out;
+  out.lean = (c[1]->circle.centre - c[0]->circle.centre) / (z[1] - z[0]);
+  Circle m;
+  m.centre = c[0]->circle.centre + (mid - z[0]) * out.lean;
+  m.radius_m = 0.5 * (c[0]->circle.radius_m + c[1]->circle.radius_m);
+  out.mid = m;
+  return out;
+}
+
+// The points in the plane across the axis of direction (lean, 1) through their mean, in an
+// orthonormal basis of that plane whose origin is the mean; `mean` returns it.
+std::vector<Eigen::Vector2d> across_axis(const std::vector<Eigen::Vector3d>& points,
+                                         const Eigen::Vector2d& lean, Eigen::Vector3d& mean,
+                                         Eigen::Vector3d& e1, Eigen::Vector3d& e2) {
+  const Eigen::Vector3d a = Eigen::Vector3d(lean.x(), lean.y(), 1.0).normalized();
+  e1 = Eigen::Vector3d(a.z(), 0.0, -a.x()).normalized();  // a . e1 = 0
+  e2 = a.cross(e1);
+  mean = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& p : points) mean += p;
+  mean /= static_cast<double>(points.size());
+  std::vector<Eigen::Vector2d> q(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector3d d = points[i] - mean;
+    q[i] = Eigen::Vector2d(d.dot(e1), d.dot(e2));
+  }
+  return q;
+}
+
+bool is_compact(const StemSection& s, const BreastHeightOptions& o) {
+  if (!s.circle) return false;
+  const double r = s.circle->radius_m;
+  return s.median_residual_m <=
+             std::min(o.max_residual_share * r, o.max_residual_m) + o.residual_floor_m &&
+         static_cast<double>(s.inliers) >= o.min_inlier_share * static_cast<double>(s.points) &&
+         s.sectors >= o.min_sectors && 2.0 * r <= o.max_diameter_m && s.lean_deg <= o.max_lean_deg;
+}
+
+std::vector<Eigen::Vector3d> slice_of(const PointSet& ps, const std::vector<char>* mask,
+                                      double ground_z, double low_m, double high_m) {
+  std::vector<Eigen::Vector3d> out;
   for (std::size_t i = 0; i < ps.points.size(); ++i) {
     const double h = ps.points[i].z() - ground_z;
-    if (on_trunk[i] && h >= low_m && h <= high_m) {
-      xy.push_back(ps.points[i].head<2>());
+    if ((!mask || (*mask)[i]) && h >= low_m && h <= high_m) out.push_back(ps.points[i]);
+  }
+  return out;
+}
+
+// A section that overlaps a thicker one already kept is part of it (an inner arc of bark or a
+// misregistered scan, a branch's foot): two stems' sections are disjoint, up to a touch.
+bool overlaps(const StemSection& s, const std::vector<StemSection>& kept) {
+  for (const StemSection& k : kept) {
+    const double gap =
+        (s.circle->centre - k.circle->centre).norm() - k.circle->radius_m - s.circle->radius_m;
+    if (gap < -0.5 * std::min(s.circle->radius_m, k.circle->radius_m)) return true;
+  }
+  return false;
+}
+
+// The group split in two by 2-means on the horizontal positions (Lloyd 1982), started from its
+// two points farthest apart (the far sides of two touching stems).
+std::array<std::vector<Eigen::Vector3d>, 2> two_means(const std::vector<Eigen::Vector3d>& group) {
+  const auto farthest = [&](const Eigen::Vector2d& from) {
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < group.size(); ++i) {
+      if ((group[i].head<2>() - from).squaredNorm() >
+          (group[best].head<2>() - from).squaredNorm()) {
+        best = i;
+      }
+    }
+    return Eigen::Vector2d(group[best].head<2>());
+  };
+  Eigen::Vector2d c[2];
+  c[0] = farthest(group[0].head<2>());
+  c[1] = farthest(c[0]);
+  std::array<std::vector<Eigen::Vector3d>, 2> part;
+  constexpr int kRounds = 20;
+  for (int round = 0; round < kRounds; ++round) {
+    part[0].clear(), part[1].clear();
+    for (const Eigen::Vector3d& p : group) {
+      part[(p.head<2>() - c[1]).squaredNorm() < (p.head<2>() - c[0]).squaredNorm()].push_back(p);
+    }
+    for (int k = 0; k < 2; ++k) {
+      if (part[k].empty()) return part;
+      c[k].setZero();
+      for (const Eigen::Vector3d& p : part[k]) c[k] += p.head<2>();
+      c[k] /= static_cast<double>(part[k].size());
     }
   }
-  out.slice_points = xy.size();
-  if (xy.size() < o.min_points) return out;
-  out.circle = fit_circle_kasa(xy);
-  out.compact = out.circle && out.circle->rms_m <= 0.2 * out.circle->radius_m + 0.005 &&
-                2.0 * out.circle->radius_m <= o.max_diameter_m;
+  return part;
+}
+
+// The compact sections of one group of slice points: the group's and the one of the points off
+// it (a second stem beside the first); where the group is no stem, the sections of its two
+// halves by 2-means (two touching stems, on which one circle settles between the two).
+void group_sections(const std::vector<Eigen::Vector3d>& group, const BreastHeightOptions& o,
+                    std::vector<StemSection>& out) {
+  const StemSection s = stem_section(group, o);
+  if (!s.compact) {
+    for (const std::vector<Eigen::Vector3d>& part : two_means(group)) {
+      if (part.size() < o.min_points) continue;
+      const StemSection t = stem_section(part, o);
+      if (t.compact) out.push_back(t);
+    }
+    return;
+  }
+  out.push_back(s);
+  std::vector<Eigen::Vector3d> rest;
+  for (std::size_t i = 0; i < group.size(); ++i) {
+    if (!s.inlier[i]) rest.push_back(group[i]);
+  }
+  if (rest.size() < o.min_points || 10 * rest.size() < 3 * group.size()) return;
+  const StemSection t = stem_section(rest, o);
+  if (t.compact) out.push_back(t);
+}
+
+}  // namespace
+
+StemSection stem_section(const std::vector<Eigen::Vector3d>& points, const BreastHeightOptions& o) {
+  StemSection out;
+  out.points = points.size();
+  if (points.size() < 3) return out;
+  const StemAxis axis = stem_axis(points);
+  out.lean_deg = std::atan(axis.lean.norm()) * 180.0 / std::numbers::pi;
+  Eigen::Vector3d mean, e1, e2;
+  const std::vector<Eigen::Vector2d> q = across_axis(points, axis.lean, mean, e1, e2);
+  std::optional<Circle> start;
+  if (axis.mid) {  // the axis at the mean height lies in the plane across it through the mean
+    const Eigen::Vector3d d =
+        Eigen::Vector3d(axis.mid->centre.x(), axis.mid->centre.y(), mean.z()) - mean;
+    start = Circle{Eigen::Vector2d(d.dot(e1), d.dot(e2)), axis.mid->radius_m, 0.0};
+  }
+  const std::optional<RobustCircle> c = fit_circle_robust(q, {}, start);
+  if (!c) return out;
+  out.circle = c->circle;
+  const Eigen::Vector3d centre = mean + c->circle.centre.x() * e1 + c->circle.centre.y() * e2;
+  out.circle->centre = centre.head<2>();
+  out.inliers = c->inliers;
+  out.median_residual_m = c->median_residual_m;
+  out.sectors = angular_sectors(q, c->inlier, c->circle.centre);
+  out.inlier = c->inlier;
+  out.compact = is_compact(out, o);
+  return out;
+}
+
+StemSection stem_slice(const PointSet& ps, const std::vector<char>& on_trunk, double ground_z,
+                       double low_m, double high_m, const BreastHeightOptions& o) {
+  const std::vector<Eigen::Vector3d> pts = slice_of(ps, &on_trunk, ground_z, low_m, high_m);
+  if (pts.size() < o.min_points) {
+    StemSection out;
+    out.points = pts.size();
+    return out;
+  }
+  return stem_section(pts, o);
+}
+
+std::vector<StemSection> stems_at_breast_height(const PointSet& ps, double ground_z,
+                                                const BreastHeightOptions& o) {
+  const std::vector<Eigen::Vector3d> pts =
+      slice_of(ps, nullptr, ground_z, o.slice_low_m, o.slice_high_m);
+  const std::vector<std::uint32_t> label = stem_labels(horizontal(pts), o.slice_link_m);
+  std::map<std::uint32_t, std::vector<Eigen::Vector3d>> groups;  // ordered: reproducible
+  for (std::size_t i = 0; i < pts.size(); ++i) groups[label[i]].push_back(pts[i]);
+  std::vector<StemSection> found;
+  for (const auto& [l, g] : groups) {
+    if (g.size() >= o.min_points) group_sections(g, o, found);
+  }
+  std::sort(found.begin(), found.end(), [](const StemSection& a, const StemSection& b) {
+    return a.circle->radius_m > b.circle->radius_m;
+  });
+  std::vector<StemSection> out;
+  for (StemSection& s : found) {
+    if (!out.empty() && s.circle->radius_m < o.codominant_share * out[0].circle->radius_m) break;
+    if (!overlaps(s, out)) out.push_back(std::move(s));
+  }
   return out;
 }
 

@@ -3,6 +3,12 @@
 // sum (x^2 + y^2 + D x + E y + F)^2, a linear problem that tolerates the partial arcs a scanner
 // sees of a stem. The points are first centred on their mean, which keeps the squares small
 // (at projected coordinates of 10^6 m, x^2 would leave no digits for a radius of centimetres).
+//
+// The robust fit reweights the same problem (iteratively reweighted least squares with Tukey's
+// biweight, Beaton & Tukey 1974; scale from the median absolute deviation of the residuals), so
+// that points off the stem's ring in a breast-height slice (a branch's foot, leaves, a second
+// stem, a misregistered scan) stop pulling the circle: the practice of stem-diameter fits on
+// terrestrial scans (Pueschel et al. 2013, circle fits with outlier rejection).
 #include <Eigen/Core>
 #include <optional>
 #include <vector>
@@ -17,5 +23,31 @@ struct Circle {
 
 // Empty for fewer than 3 points, collinear points or a non-finite result.
 std::optional<Circle> fit_circle_kasa(const std::vector<Eigen::Vector2d>& points);
+
+struct RobustCircle {
+  Circle circle;             // rms_m over the inliers
+  std::vector<char> inlier;  // per point: within the inlier band of the circle
+  std::size_t inliers = 0;
+  double median_residual_m = 0.0;  // median |distance from the circle| over all points
+};
+
+struct RobustCircleOptions {
+  int iterations = 50;     // from a start pulled off by outliers it takes 10-20
+  double tukey_c = 4.685;  // biweight cut-off in robust standard deviations (95 % efficiency)
+  double inlier_sigmas = 3.0;
+  double min_scale_m = 0.002;  // the robust standard deviation is never taken below this
+};
+
+// Kasa's circle reweighted by Tukey's biweight, starting from `start` (Kasa's circle of all
+// points when empty: a start near one of two stems keeps the fit on that stem). Empty where the
+// Kasa fit is.
+std::optional<RobustCircle> fit_circle_robust(const std::vector<Eigen::Vector2d>& points,
+                                              const RobustCircleOptions& options = {},
+                                              const std::optional<Circle>& start = std::nullopt);
+
+// How many of `sectors` equal angular sectors about `centre` hold a point marked in `use`
+// (all points when `use` is empty): the arc of the circle the points cover.
+int angular_sectors(const std::vector<Eigen::Vector2d>& points, const std::vector<char>& use,
+                    const Eigen::Vector2d& centre, int sectors = 12);
 
 }  // namespace fspm::scans

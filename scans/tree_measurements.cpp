@@ -16,6 +16,51 @@ namespace {
 
 std::string metres(double v) { return fmt::format("{:.3f} m", v); }
 
+// Two or more separate codominant stems at breast height: no single DBH (foresters measure each
+// stem of a fork below breast height as a tree); their diameters are reported.
+bool fork_at_breast_height(const PointSet& ps, double z0, const BreastHeightOptions& b,
+                           TreeMeasurements& m) {
+  const std::vector<StemSection> stems = stems_at_breast_height(ps, z0, b);
+  if (stems.size() < 2) return false;
+  std::vector<std::string> d;
+  for (const StemSection& s : stems) {
+    m.breast_height_stems_m.push_back(2.0 * s.circle->radius_m);
+    d.push_back(metres(2.0 * s.circle->radius_m));
+  }
+  m.tree_found = true;
+  m.warnings.push_back(fmt::format(
+      "{} separate stems {:.1f}-{:.1f} m above the lowest point (diameters {}): the tree forks "
+      "below breast height, or the cloud holds several trees; no dbh; each stem is measured as "
+      "a tree (breast_height_stems_m)",
+      stems.size(), b.slice_low_m, b.slice_high_m, fmt::join(d, ", ")));
+  return true;
+}
+
+// The trunk points at breast height lie on no circle: a stem at the foot makes it a tree whose
+// stem the slice does not show as one circle; none, no tree.
+void not_a_stem(const PointSet& ps, const std::vector<char>& on_trunk, double z0,
+                const BreastHeightOptions& b, const StemSection& s, const std::string& slice,
+                TreeMeasurements& m) {
+  const StemSection foot = stem_slice(ps, on_trunk, z0, b.stem_low_m, b.stem_high_m, b);
+  m.tree_found = foot.compact;
+  const std::string fit =
+      s.circle ? fmt::format("median residual {} for a radius of {}, {} of 12 sectors covered",
+                             metres(s.median_residual_m), metres(s.circle->radius_m), s.sectors)
+               : std::string("no circle");
+  if (foot.compact) {
+    m.warnings.push_back(fmt::format(
+        "no single trunk at breast height: the {} {} do not lie on one circle ({}), but a stem "
+        "of {} stands {:.1f}-{:.1f} m above the lowest point: branches, leaves or a fork at "
+        "breast height; no dbh; check the slice or measure the stem",
+        s.points, slice, fit, metres(2.0 * foot.circle->radius_m), b.stem_low_m, b.stem_high_m));
+  } else {
+    m.warnings.push_back(fmt::format(
+        "no vertical trunk found: the {} {} do not lie on a circle of at most {} ({}), nor do "
+        "those {:.1f}-{:.1f} m above it (a wall, a hedge, a crown down to the ground?)",
+        s.points, slice, metres(b.max_diameter_m), fit, b.stem_low_m, b.stem_high_m));
+  }
+}
+
 void measure_stem(const PointSet& ps, const std::vector<char>& on_trunk, double z0,
                   const MeasureOptions& o, TreeMeasurements& m) {
   const BreastHeightOptions& b = o.breast_height;
@@ -28,32 +73,20 @@ void measure_stem(const PointSet& ps, const std::vector<char>& on_trunk, double 
         "tree",
         stems.size(), b.base_low_m, b.base_high_m, fmt::join(stems, ", ")));
   }
-  const BreastHeightStem s = stem_slice(ps, on_trunk, z0, b.slice_low_m, b.slice_high_m, b);
-  m.breast_height_points = s.slice_points;
+  const StemSection s = stem_slice(ps, on_trunk, z0, b.slice_low_m, b.slice_high_m, b);
+  m.breast_height_points = s.points;
   const std::string slice = fmt::format("trunk points {:.1f}-{:.1f} m above the lowest point",
                                         b.slice_low_m, b.slice_high_m);
-  if (s.slice_points < b.min_points) {
+  if (s.points < b.min_points) {
     m.tree_found = true;  // nothing to judge the stem by (an airborne scan, a short plant)
     m.warnings.push_back(fmt::format(
-        "only {} {} (at least {} needed): no trunk diameter; scan the stem or measure it",
-        s.slice_points, slice, b.min_points));
+        "only {} {} (at least {} needed): no trunk diameter; scan the stem or measure it", s.points,
+        slice, b.min_points));
     return;
   }
+  if (fork_at_breast_height(ps, z0, b, m)) return;
   if (!s.compact) {
-    const BreastHeightStem foot = stem_slice(ps, on_trunk, z0, b.stem_low_m, b.stem_high_m, b);
-    m.tree_found = foot.compact;
-    if (foot.compact) {
-      m.warnings.push_back(fmt::format(
-          "no single trunk at breast height: the {} {} do not lie on one circle, but a stem of "
-          "{} stands {:.1f}-{:.1f} m above the lowest point: the tree forks below breast height; "
-          "no dbh",
-          s.slice_points, slice, metres(2.0 * foot.circle->radius_m), b.stem_low_m, b.stem_high_m));
-    } else {
-      m.warnings.push_back(fmt::format(
-          "no vertical trunk found: the {} {} do not lie on a circle of at most {}, nor do those "
-          "{:.1f}-{:.1f} m above it (a wall, a hedge, a crown down to the ground?)",
-          s.slice_points, slice, metres(b.max_diameter_m), b.stem_low_m, b.stem_high_m));
-    }
+    not_a_stem(ps, on_trunk, z0, b, s, slice, m);
     return;
   }
   m.tree_found = true;

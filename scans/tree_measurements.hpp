@@ -47,6 +47,9 @@ struct TreeMeasurements {
   double points_explained_fraction = 0.0;
   std::size_t breast_height_points = 0;  // trunk points in the breast-height slice
   std::size_t stems = 0;                 // separated stems near the base
+  // The diameters of the separate stems at breast height when there are two or more (a fork
+  // below it, or several trees); dbh_m is then unset.
+  std::vector<double> breast_height_stems_m;
   bool tree_found = false;  // a compact stem at breast height, or too few points to tell
   std::vector<std::string> warnings;
   std::vector<QsmCylinder> cylinders;
