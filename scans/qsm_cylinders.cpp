@@ -108,17 +108,80 @@ void number_branches(const TreeGraph& t, std::vector<QsmCylinder>& cyl) {
   }
 }
 
+// Whether p lies inside the cylinder o (within its length and radius).
+bool contains(const QsmCylinder& o, const Eigen::Vector3d& p) {
+  const double t = (p - o.start).dot(o.axis);
+  return t > 0.0 && t < o.length_m && (p - o.start - t * o.axis).norm() < o.radius_m;
+}
+
+Eigen::Vector3d middle(const QsmCylinder& c) { return c.start + 0.5 * c.length_m * c.axis; }
+
 // Marks cylinders whose axis middle lies inside a wider one (equal radii: the later one).
 void mark_nested(std::vector<QsmCylinder>& cyl) {
   for (std::size_t i = 0; i < cyl.size(); ++i) {
-    const Eigen::Vector3d mid = cyl[i].start + 0.5 * cyl[i].length_m * cyl[i].axis;
+    const Eigen::Vector3d mid = middle(cyl[i]);
     for (std::size_t j = 0; j < cyl.size() && !cyl[i].nested; ++j) {
       const QsmCylinder& o = cyl[j];
       const bool wider = o.radius_m > cyl[i].radius_m || (o.radius_m == cyl[i].radius_m && j < i);
       if (j == i || !wider) continue;
-      const double t = (mid - o.start).dot(o.axis);  // inside o's length, and within its radius
-      cyl[i].nested = t > 0.0 && t < o.length_m && (mid - o.start - t * o.axis).norm() < o.radius_m;
+      cyl[i].nested = contains(o, mid);
     }
+  }
+}
+
+// Skeleton length of each node's subtree, its own segment included (parents precede children).
+std::vector<double> subtree_lengths(const TreeGraph& t) {
+  std::vector<double> l(t.size(), 0.0);
+  for (NodeId u = t.size(); u-- > 0;) {
+    l[u] += t.length(u);
+    if (t.parent(u) != kNoNode) l[t.parent(u)] += l[u];
+  }
+  return l;
+}
+
+// As in TreeQSM, a branch cylinder is never wider than its parent, nor is a trunk cylinder
+// without a circle fit (the scattered points of a crown's top).
+void cap_by_parent(const TreeGraph& t, NodeId u, bool fitted, std::vector<QsmCylinder>& cyl) {
+  const NodeId p = t.parent(u);
+  if (p != kNoNode && (cyl[u].order > 0 || !fitted)) {
+    cyl[u].radius_m = std::min(cyl[u].radius_m, cyl[p].radius_m);
+  }
+}
+
+// Whether the middle of cylinder u lies inside a fitted cylinder at least as wide: a short false
+// fork of the skeleton at a junction, which holds the stem's surface points.
+bool inside_fitted(const std::vector<QsmCylinder>& cyl, const std::vector<char>& fitted,
+                   std::size_t u) {
+  for (std::size_t j = 0; j < cyl.size(); ++j) {
+    if (j != u && fitted[j] && cyl[j].radius_m >= cyl[u].radius_m &&
+        contains(cyl[j], middle(cyl[u]))) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// The radius of a segment without a circle fit. The median distance of its points from the axis
+// measures the spread of what surrounds a branch in a crown (leaves, needles, twigs) as much as
+// the branch, and made the cylinders of leafy crowns as wide as their parents (a woody volume
+// four times TreeQSM's on a leafy tree). The pipe model (Shinozaki et al. 1964; area-preserving
+// branching, Leonardo's rule, Eloy 2011) carries the radius of the nearest fitted ancestor a
+// instead: the cross-section is proportional to what the branch carries, here its subtree's
+// skeleton length, r = r_a sqrt(L(u) / L(a)); the smaller of the two is kept. False forks inside
+// a fitted stem keep the median distance of the stem's points (they are left out as nested).
+void carry_pipe_radii(const TreeGraph& t, const std::vector<char>& fitted,
+                      std::vector<QsmCylinder>& cyl) {
+  const std::vector<double> carried = subtree_lengths(t);
+  std::vector<NodeId> anchor(t.size(), kNoNode);  // the nearest ancestor with a circle fit
+  for (NodeId u = 0; u < t.size(); ++u) {
+    const NodeId p = t.parent(u);
+    anchor[u] = fitted[u] ? u : p == kNoNode ? kNoNode : anchor[p];
+    const NodeId a = anchor[u];
+    if (!fitted[u] && a != kNoNode && carried[a] > 0.0 && !inside_fitted(cyl, fitted, u)) {
+      cyl[u].radius_m =
+          std::min(cyl[u].radius_m, cyl[a].radius_m * std::sqrt(carried[u] / carried[a]));
+    }
+    cap_by_parent(t, u, fitted[u], cyl);
   }
 }
 
@@ -133,6 +196,7 @@ QsmCylinders fit_qsm_cylinders(const PointSet& ps, const TreeGraph& t) {
     members[out.cylinder_of_point[i]].push_back(ps.points[i]);
   }
   out.cylinders.resize(t.size());
+  std::vector<char> fitted(t.size(), 0);
   for (NodeId u = 0; u < t.size(); ++u) {
     QsmCylinder& c = out.cylinders[u];
     c.start = t.start(u);
@@ -141,14 +205,13 @@ QsmCylinders fit_qsm_cylinders(const PointSet& ps, const TreeGraph& t) {
     c.parent = t.parent(u) == kNoNode ? -1 : static_cast<std::int64_t>(t.parent(u));
     c.order = t.order(u);
     const NodeId p = t.parent(u);
-    const bool fitted = fit_segment(p != kNoNode && t.order(p) < c.order
-                                        ? outside_parent(members[u], out.cylinders[p])
-                                        : members[u],
-                                    c);
-    if (p != kNoNode && (c.order > 0 || !fitted)) {
-      c.radius_m = std::min(c.radius_m, out.cylinders[t.parent(u)].radius_m);
-    }
+    fitted[u] = fit_segment(p != kNoNode && t.order(p) < c.order
+                                ? outside_parent(members[u], out.cylinders[p])
+                                : members[u],
+                            c);
+    cap_by_parent(t, u, fitted[u], out.cylinders);
   }
+  carry_pipe_radii(t, fitted, out.cylinders);
   number_branches(t, out.cylinders);
   mark_nested(out.cylinders);
   out.surface_distance_m.resize(ps.points.size());

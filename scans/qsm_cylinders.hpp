@@ -5,7 +5,10 @@
 // across its axis and a circle is fitted to them (Kasa 1976, scans/circle_fit.hpp), which gives
 // the radius and moves the axis from the centroid of the (often one-sided) surface points to the
 // circle's centre. A fit that is poor (rms above a sixth of the radius, fewer than 5 points) is
-// replaced by the median distance of the points from the axis. As in TreeQSM, a branch cylinder is
+// replaced by the smaller of the median distance of the points from the axis and the radius the
+// pipe model carries from the nearest fitted ancestor a, r_a sqrt(L(u) / L(a)) with L the
+// skeleton length a segment carries (Shinozaki et al. 1964): in a leafy crown the median
+// distance is the spread of the leaves. As in TreeQSM, a branch cylinder is
 // never wider than its parent (nor is a trunk cylinder without a circle fit: the scattered points
 // of a crown top), the first cylinder of a branch is fitted to its points off the parent's
 // surface, and one whose axis middle lies inside a wider cylinder is marked nested

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <random>
 
@@ -74,6 +75,13 @@ TEST(TreeMeasurements, SyntheticTreesWithinTheirKnownGeometry) {
       const TreeMeasurements m = measure_tree(scan, r.full_skeleton);
       SCOPED_TRACE("trunk " + std::to_string(options.trunk_length_m) + " m, seed " +
                    std::to_string(seed));
+      std::printf(
+          "%.0f m, %d | %zu | %.4f m (%.4f) | %.3f m (%.3f) | %.3f m3 (%.3f) | %.2f m (%.2f) | "
+          "%.2f | %zu\n",
+          options.trunk_length_m, static_cast<int>(seed), scan.points.size(), m.dbh_m.value_or(0.0),
+          truth.dbh_m, m.height_m, truth.height_m, m.woody_volume_m3, truth.volume_m3,
+          m.crown_base_m.value_or(0.0), truth.crown_base_m, m.points_explained_fraction,
+          m.cylinders.size());
       EXPECT_TRUE(m.tree_found);
       EXPECT_TRUE(m.warnings.empty()) << m.warnings.at(0);
       ASSERT_TRUE(m.dbh_m);
@@ -94,6 +102,40 @@ TEST(TreeMeasurements, SyntheticTreesWithinTheirKnownGeometry) {
       // Through bin centroids of surface points the skeleton runs longer than the axes.
       EXPECT_NEAR(total, truth.length_m, 0.35 * truth.length_m);
     }
+  }
+}
+
+// Leaves: a leafy crown scanned (leaf clumps of 0.3 m radius about the end of every branch and
+// twig internode, 300 points each: 16 800, a fifth of the points). The woody volume stays within
+// 25 % of the wood's: the clumps' points spread about a branch are no surface a circle fits,
+// and such a branch's radius comes from the pipe model, not from the spread of its leaves (with
+// the median distance of the points from the axis the volume came out 62-68 % too high).
+TEST(TreeMeasurements, LeavesAreNotWood) {
+  const TreeGraph tree = synthetic_tree();
+  const Truth truth = truth_of(tree);
+  for (std::uint64_t seed : {1, 2}) {
+    PointSet scan = scan_of(tree, seed);
+    std::mt19937_64 rng(seed + 100);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const std::size_t wood = scan.points.size();
+    for (NodeId n = 0; n < tree.size(); ++n) {
+      if (tree.order(n) == 0) continue;
+      for (int k = 0; k < 300;) {
+        const Eigen::Vector3d d(u(rng), u(rng), u(rng));
+        if (d.norm() > 1.0) continue;
+        scan.points.push_back(tree.end(n) + 0.3 * d);
+        ++k;
+      }
+    }
+    SCOPED_TRACE(seed);
+    ASSERT_GT(scan.points.size() - wood, 2000u);
+    const TreeMeasurements m = measure_tree(scan, encode_point_set(scan).full_skeleton);
+    std::printf("leafy, seed %d: %zu wood + %zu leaf points, volume %.3f m3 (%.3f)\n",
+                static_cast<int>(seed), wood, scan.points.size() - wood, m.woody_volume_m3,
+                truth.volume_m3);
+    EXPECT_NEAR(m.woody_volume_m3, truth.volume_m3, 0.25 * truth.volume_m3);
+    ASSERT_TRUE(m.dbh_m);
+    EXPECT_NEAR(*m.dbh_m, truth.dbh_m, 0.03 * truth.dbh_m);
   }
 }
 
