@@ -116,6 +116,34 @@ bool is_compact(const StemSection& s, const BreastHeightOptions& o) {
          s.sectors >= o.min_sectors && 2.0 * r <= o.max_diameter_m && s.lean_deg <= o.max_lean_deg;
 }
 
+// The section across the given axis: the points projected onto the plane across it and a
+// robust circle there, started from the axis's circle.
+StemSection section_across(const std::vector<Eigen::Vector3d>& points, const StemAxis& axis,
+                           const BreastHeightOptions& o) {
+  StemSection out;
+  out.points = points.size();
+  out.lean_deg = std::atan(axis.lean.norm()) * 180.0 / std::numbers::pi;
+  Eigen::Vector3d mean, e1, e2;
+  const std::vector<Eigen::Vector2d> q = across_axis(points, axis.lean, mean, e1, e2);
+  std::optional<Circle> start;
+  if (axis.mid) {  // the axis at the mean height lies in the plane across it through the mean
+    const Eigen::Vector3d d =
+        Eigen::Vector3d(axis.mid->centre.x(), axis.mid->centre.y(), mean.z()) - mean;
+    start = Circle{Eigen::Vector2d(d.dot(e1), d.dot(e2)), axis.mid->radius_m, 0.0};
+  }
+  const std::optional<RobustCircle> c = fit_circle_robust(q, {}, start);
+  if (!c) return out;
+  out.circle = c->circle;
+  const Eigen::Vector3d centre = mean + c->circle.centre.x() * e1 + c->circle.centre.y() * e2;
+  out.circle->centre = centre.head<2>();
+  out.inliers = c->inliers;
+  out.median_residual_m = c->median_residual_m;
+  out.sectors = angular_sectors(q, c->inlier, c->circle.centre);
+  out.inlier = c->inlier;
+  out.compact = is_compact(out, o);
+  return out;
+}
+
 std::vector<Eigen::Vector3d> slice_of(const PointSet& ps, const std::vector<char>* mask,
                                       double ground_z, double low_m, double high_m) {
   std::vector<Eigen::Vector3d> out;
@@ -197,30 +225,23 @@ void group_sections(const std::vector<Eigen::Vector3d>& group, const BreastHeigh
 }  // namespace
 
 StemSection stem_section(const std::vector<Eigen::Vector3d>& points, const BreastHeightOptions& o) {
-  StemSection out;
-  out.points = points.size();
-  if (points.size() < 3) return out;
-  const StemAxis axis = stem_axis(points);
-  out.lean_deg = std::atan(axis.lean.norm()) * 180.0 / std::numbers::pi;
-  Eigen::Vector3d mean, e1, e2;
-  const std::vector<Eigen::Vector2d> q = across_axis(points, axis.lean, mean, e1, e2);
-  std::optional<Circle> start;
-  if (axis.mid) {  // the axis at the mean height lies in the plane across it through the mean
-    const Eigen::Vector3d d =
-        Eigen::Vector3d(axis.mid->centre.x(), axis.mid->centre.y(), mean.z()) - mean;
-    start = Circle{Eigen::Vector2d(d.dot(e1), d.dot(e2)), axis.mid->radius_m, 0.0};
+  if (points.size() < 3) {
+    StemSection out;
+    out.points = points.size();
+    return out;
   }
-  const std::optional<RobustCircle> c = fit_circle_robust(q, {}, start);
-  if (!c) return out;
-  out.circle = c->circle;
-  const Eigen::Vector3d centre = mean + c->circle.centre.x() * e1 + c->circle.centre.y() * e2;
-  out.circle->centre = centre.head<2>();
-  out.inliers = c->inliers;
-  out.median_residual_m = c->median_residual_m;
-  out.sectors = angular_sectors(q, c->inlier, c->circle.centre);
-  out.inlier = c->inlier;
-  out.compact = is_compact(out, o);
-  return out;
+  // The lean from two half slices is only as good as their circles: on a sparse one-sided arc
+  // it is noise that tilts the plane and shrinks the circle. It is kept where it fits the points
+  // clearly better (median residual at most 90 % of the vertical axis's).
+  const StemAxis axis = stem_axis(points);
+  StemSection upright = section_across(points, StemAxis{Eigen::Vector2d::Zero(), axis.mid}, o);
+  if (axis.lean.isZero()) return upright;
+  StemSection leaning = section_across(points, axis, o);
+  constexpr double kBetter = 0.9;
+  const bool lean_fits =
+      leaning.circle &&
+      (!upright.circle || leaning.median_residual_m <= kBetter * upright.median_residual_m);
+  return lean_fits ? leaning : upright;
 }
 
 StemSection stem_slice(const PointSet& ps, const std::vector<char>& on_trunk, double ground_z,

@@ -10,7 +10,9 @@
 // A stem section (stem_section): the stem's lean from the circles of the slice's lower and upper
 // halves (their centres lie on the axis), the points projected onto the plane across that axis
 // (a horizontal slice of a leaning stem is an ellipse, and its points are smeared by the slice's
-// thickness times the lean), and a robust circle there (Kasa 1976 reweighted by Tukey's
+// thickness times the lean; the lean is kept where its section's median residual is at most 90 %
+// of a vertical axis's, since on a sparse one-sided arc the halves' circles are noise), and a
+// robust circle there (Kasa 1976 reweighted by Tukey's
 // biweight, scans/circle_fit.hpp; Pueschel et al. 2013 fit stem circles in such slices). The
 // section is compact, a stem, when its median |residual| is small beside its radius, at least
 // half its points are inliers, its inliers cover an arc of at least min_sectors of 12 sectors,

@@ -165,17 +165,19 @@ bool inside_fitted(const std::vector<QsmCylinder>& cyl, const std::vector<char>&
 // measures the spread of what surrounds a branch in a crown (leaves, needles, twigs) as much as
 // the branch, and made the cylinders of leafy crowns as wide as their parents (a woody volume
 // four times TreeQSM's on a leafy tree). The pipe model (Shinozaki et al. 1964; area-preserving
-// branching, Leonardo's rule, Eloy 2011) carries the radius of the nearest fitted ancestor a
-// instead: the cross-section is proportional to what the branch carries, here its subtree's
-// skeleton length, r = r_a sqrt(L(u) / L(a)); the smaller of the two is kept. False forks inside
-// a fitted stem keep the median distance of the stem's points (they are left out as nested).
+// branching, Leonardo's rule, Eloy 2011) carries the radius of the nearest fitted ancestor a (or
+// the root) instead: the cross-section is proportional to what the branch carries, here its
+// subtree's skeleton length, r = r_a sqrt(L(u) / L(a)); the smaller of the two is kept. False forks
+// inside a fitted stem keep the median distance of the stem's points (they are left out as nested).
 void carry_pipe_radii(const TreeGraph& t, const std::vector<char>& fitted,
                       std::vector<QsmCylinder>& cyl) {
   const std::vector<double> carried = subtree_lengths(t);
-  std::vector<NodeId> anchor(t.size(), kNoNode);  // the nearest ancestor with a circle fit
+  // The nearest ancestor with a circle fit, or the root: the stem's foot, whose points' median
+  // distance from the axis is its radius where noise or a misregistered scan fails the fit.
+  std::vector<NodeId> anchor(t.size(), kNoNode);
   for (NodeId u = 0; u < t.size(); ++u) {
     const NodeId p = t.parent(u);
-    anchor[u] = fitted[u] ? u : p == kNoNode ? kNoNode : anchor[p];
+    anchor[u] = fitted[u] || p == kNoNode ? u : anchor[p];
     const NodeId a = anchor[u];
     if (!fitted[u] && a != kNoNode && carried[a] > 0.0 && !inside_fitted(cyl, fitted, u)) {
       cyl[u].radius_m =
