@@ -55,7 +55,8 @@ std::vector<Eigen::Vector2d> horizontal(const std::vector<Eigen::Vector3d>& poin
 
 struct StemAxis {
   Eigen::Vector2d lean = Eigen::Vector2d::Zero();  // horizontal drift per metre of height
-  std::optional<Circle> mid;  // the horizontal circle at the points' mean height
+  std::optional<Circle> mid;                  // the horizontal circle at the points' mean height
+  std::optional<double> radius_change_per_m;  // from the lower half's circle to the upper's
 };
 
 // The stem's axis from the robust circles of the slice's lower and upper halves, whose centres
@@ -85,6 +86,7 @@ StemAxis stem_axis(const std::vector<Eigen::Vector3d>& points) {
   m.centre = c[0]->circle.centre + (mid - z[0]) * out.lean;
   m.radius_m = 0.5 * (c[0]->circle.radius_m + c[1]->circle.radius_m);
   out.mid = m;
+  out.radius_change_per_m = (c[1]->circle.radius_m - c[0]->circle.radius_m) / (z[1] - z[0]);
   return out;
 }
 
@@ -123,6 +125,7 @@ StemSection section_across(const std::vector<Eigen::Vector3d>& points, const Ste
   StemSection out;
   out.points = points.size();
   out.lean_deg = std::atan(axis.lean.norm()) * 180.0 / std::numbers::pi;
+  out.radius_change_per_m = axis.radius_change_per_m;
   Eigen::Vector3d mean, e1, e2;
   const std::vector<Eigen::Vector2d> q = across_axis(points, axis.lean, mean, e1, e2);
   std::optional<Circle> start;
@@ -139,6 +142,9 @@ StemSection section_across(const std::vector<Eigen::Vector3d>& points, const Ste
   out.inliers = c->inliers;
   out.median_residual_m = c->median_residual_m;
   out.sectors = angular_sectors(q, c->inlier, c->circle.centre);
+  constexpr int kArcSectors = 36;
+  out.longest_arc_deg =
+      360.0 / kArcSectors * longest_arc_sectors(q, c->inlier, c->circle.centre, kArcSectors);
   out.inlier = c->inlier;
   out.compact = is_compact(out, o);
   return out;
@@ -152,6 +158,15 @@ std::vector<Eigen::Vector3d> slice_of(const PointSet& ps, const std::vector<char
     if ((!mask || (*mask)[i]) && h >= low_m && h <= high_m) out.push_back(ps.points[i]);
   }
   return out;
+}
+
+// A stem keeps its girth over the slice's height; a ring of branches radiating from the stem
+// (a whorl cut by the slice) widens with height as fast as they lean out, and points in a
+// ring of a single height band fit no halves. Its surface is one unbroken arc, where branches
+// crossing the slice hit a circle at scattered angles.
+bool is_cylinder(const StemSection& s, const BreastHeightOptions& o) {
+  return s.radius_change_per_m && std::abs(*s.radius_change_per_m) <= o.max_radius_change &&
+         s.longest_arc_deg >= o.min_stem_arc_deg;
 }
 
 // A section that overlaps a thicker one already kept is part of it (an inner arc of bark or a
@@ -234,7 +249,8 @@ StemSection stem_section(const std::vector<Eigen::Vector3d>& points, const Breas
   // it is noise that tilts the plane and shrinks the circle. It is kept where it fits the points
   // clearly better (median residual at most 90 % of the vertical axis's).
   const StemAxis axis = stem_axis(points);
-  StemSection upright = section_across(points, StemAxis{Eigen::Vector2d::Zero(), axis.mid}, o);
+  StemSection upright = section_across(
+      points, StemAxis{Eigen::Vector2d::Zero(), axis.mid, axis.radius_change_per_m}, o);
   if (axis.lean.isZero()) return upright;
   StemSection leaning = section_across(points, axis, o);
   constexpr double kBetter = 0.9;
@@ -272,7 +288,7 @@ std::vector<StemSection> stems_at_breast_height(const PointSet& ps, double groun
   std::vector<StemSection> out;
   for (StemSection& s : found) {
     if (!out.empty() && s.circle->radius_m < o.codominant_share * out[0].circle->radius_m) break;
-    if (!overlaps(s, out)) out.push_back(std::move(s));
+    if (is_cylinder(s, o) && !overlaps(s, out)) out.push_back(std::move(s));
   }
   return out;
 }

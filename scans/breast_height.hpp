@@ -22,8 +22,10 @@
 // A fork below breast height (stems_at_breast_height): the slice's points (all of them, since the
 // skeleton's trunk follows one stem only) split into groups (single linkage, slice_link_m), a
 // section fitted to each group and, where a group holds two touching stems, to its outliers; the
-// compact sections that do not overlap a thicker one and are at least codominant_share of the
-// thickest one's diameter are separate stems (codominant stems, as foresters call the stems of
+// compact sections whose girth holds over the slice's height (max_radius_change), whose inliers
+// cover an unbroken arc of at least min_stem_arc_deg, that do not
+// overlap a thicker one and are at least codominant_share of the thickest one's diameter are
+// separate stems (codominant stems, as foresters call the stems of
 // a fork that are each measured as a tree).
 #include <cstddef>
 #include <optional>
@@ -56,15 +58,28 @@ struct BreastHeightOptions {
   double min_inlier_share = 0.5;
   double max_lean_deg = 45.0;
   double codominant_share = 0.5;  // of the thickest stem's diameter
+  // A separate stem's radius changes by at most this per metre of height between the circles of
+  // the slice's halves (a whorl of branches widens as fast as they lean out).
+  double max_radius_change = 0.1;
+  // ... and its inliers cover an unbroken arc of at least this (branches crossing the slice hit a
+  // circle at scattered angles).
+  double min_stem_arc_deg = 90.0;
+  // The stems of a fork carry no more wood than the stem below them (the pipe model: the sum of
+  // their squared diameters at most that of the foot's diameter times this, which leaves room for
+  // noise; a root flare only widens the foot).
+  double max_fork_to_foot = 1.25;
 };
 
 struct StemSection {
   std::size_t points = 0;        // in the slice
   std::optional<Circle> circle;  // across the axis; centre: the axis at the slice's mean height
   std::size_t inliers = 0;
-  int sectors = 0;  // of 12 holding inliers
+  int sectors = 0;               // of 12 holding inliers
+  double longest_arc_deg = 0.0;  // the longest unbroken arc of inliers (sectors of 10 degrees)
   double median_residual_m = 0.0;
   double lean_deg = 0.0;  // of the axis from the vertical
+  // From the circle of the slice's lower half to its upper half's; unset without them.
+  std::optional<double> radius_change_per_m;
   bool compact = false;
   std::vector<char> inlier;  // per point given
 };

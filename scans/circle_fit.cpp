@@ -105,8 +105,12 @@ std::optional<RobustCircle> fit_circle_robust(const std::vector<Eigen::Vector2d>
   return out;
 }
 
-int angular_sectors(const std::vector<Eigen::Vector2d>& points, const std::vector<char>& use,
-                    const Eigen::Vector2d& centre, int sectors) {
+namespace {
+
+// Whether each of `sectors` equal angular sectors about `centre` holds a point marked in `use`.
+std::vector<char> sector_hits(const std::vector<Eigen::Vector2d>& points,
+                              const std::vector<char>& use, const Eigen::Vector2d& centre,
+                              int sectors) {
   std::vector<char> hit(static_cast<std::size_t>(sectors), 0);
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!use.empty() && !use[i]) continue;
@@ -115,7 +119,26 @@ int angular_sectors(const std::vector<Eigen::Vector2d>& points, const std::vecto
     const auto s = static_cast<int>(a / (2.0 * std::numbers::pi) * sectors);
     hit[static_cast<std::size_t>(std::clamp(s, 0, sectors - 1))] = 1;
   }
+  return hit;
+}
+
+}  // namespace
+
+int angular_sectors(const std::vector<Eigen::Vector2d>& points, const std::vector<char>& use,
+                    const Eigen::Vector2d& centre, int sectors) {
+  const std::vector<char> hit = sector_hits(points, use, centre, sectors);
   return static_cast<int>(std::count(hit.begin(), hit.end(), 1));
+}
+
+int longest_arc_sectors(const std::vector<Eigen::Vector2d>& points, const std::vector<char>& use,
+                        const Eigen::Vector2d& centre, int sectors) {
+  const std::vector<char> hit = sector_hits(points, use, centre, sectors);
+  int best = 0, run = 0;
+  for (int k = 0; k < 2 * sectors; ++k) {  // twice around: runs that wrap
+    run = hit[static_cast<std::size_t>(k % sectors)] ? run + 1 : 0;
+    best = std::max(best, std::min(run, sectors));
+  }
+  return best;
 }
 
 }  // namespace fspm::scans

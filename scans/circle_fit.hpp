@@ -50,4 +50,10 @@ std::optional<RobustCircle> fit_circle_robust(const std::vector<Eigen::Vector2d>
 int angular_sectors(const std::vector<Eigen::Vector2d>& points, const std::vector<char>& use,
                     const Eigen::Vector2d& centre, int sectors = 12);
 
+// The longest run of consecutive sectors (of `sectors` about `centre`, wrapping around) that hold
+// a point marked in `use`: the longest unbroken arc. Branches crossing a slice about a stem hit a
+// circle at scattered angles; a stem's own surface is one arc.
+int longest_arc_sectors(const std::vector<Eigen::Vector2d>& points, const std::vector<char>& use,
+                        const Eigen::Vector2d& centre, int sectors = 36);
+
 }  // namespace fspm::scans

@@ -16,12 +16,22 @@ namespace {
 
 std::string metres(double v) { return fmt::format("{:.3f} m", v); }
 
-// Two or more separate codominant stems at breast height: no single DBH (foresters measure each
-// stem of a fork below breast height as a tree); their diameters are reported.
-bool fork_at_breast_height(const PointSet& ps, double z0, const BreastHeightOptions& b,
-                           TreeMeasurements& m) {
+// Two or more separate codominant stems at breast height, together no thicker than the stem at
+// the foot: no single DBH (foresters measure each stem of a fork below breast height as a tree);
+// their diameters are reported.
+bool fork_at_breast_height(const PointSet& ps, const std::vector<char>& on_trunk, double z0,
+                           const BreastHeightOptions& b, TreeMeasurements& m) {
   const std::vector<StemSection> stems = stems_at_breast_height(ps, z0, b);
   if (stems.size() < 2) return false;
+  // Stems thicker together than the stem at the foot are no fork of it (branches crossing the
+  // slice that happen to lie on circles; Shinozaki et al. 1964's pipe model).
+  const StemSection foot = stem_slice(ps, on_trunk, z0, b.stem_low_m, b.stem_high_m, b);
+  if (foot.compact) {
+    double area = 0.0;
+    for (const StemSection& s : stems) area += s.circle->radius_m * s.circle->radius_m;
+    const double limit = b.max_fork_to_foot * foot.circle->radius_m;
+    if (area > limit * limit) return false;
+  }
   std::vector<std::string> d;
   for (const StemSection& s : stems) {
     m.breast_height_stems_m.push_back(2.0 * s.circle->radius_m);
@@ -84,7 +94,7 @@ void measure_stem(const PointSet& ps, const std::vector<char>& on_trunk, double 
         slice, b.min_points));
     return;
   }
-  if (fork_at_breast_height(ps, z0, b, m)) return;
+  if (fork_at_breast_height(ps, on_trunk, z0, b, m)) return;
   if (!s.compact) {
     not_a_stem(ps, on_trunk, z0, b, s, slice, m);
     return;
