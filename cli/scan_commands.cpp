@@ -19,6 +19,7 @@
 #include "scans/clusters_file.hpp"
 #include "scans/cylinders_csv.hpp"
 #include "scans/encoder.hpp"
+#include "scans/isolated_points.hpp"
 #include "scans/point_set_file.hpp"
 #include "scans/point_set_writer.hpp"
 #include "scans/scan_simulator.hpp"
@@ -131,7 +132,9 @@ void run_encode(const EncodeCommand& o) {
   options.follow_main_axes = !o.pirk_split;
   if (o.main_branch_share) options.main_branch_share = *o.main_branch_share;
   if (o.main_branch_reach) options.main_branch_reach = *o.main_branch_reach;
-  const scans::PointSet points = load_input(o);
+  // Stray returns metres off the tree would be joined to it and widen its crown.
+  const scans::IsolatedPoints cleaned = scans::remove_isolated_points(load_input(o));
+  const scans::PointSet& points = cleaned.kept;
   const auto t0 = std::chrono::steady_clock::now();
   const scans::EncodeResult r = [&] {
     try {
@@ -156,6 +159,12 @@ void run_encode(const EncodeCommand& o) {
                     "lowest points, unconfirmed at breast height; give --root-diameter",
                     r.model.root_diameter_m));
   }
+  if (cleaned.removed > 0) {
+    m.warnings.push_back(fmt::format(
+        "{} isolated points left out (mean distance to their 8 nearest neighbours above {:.2f} m: "
+        "stray returns)",
+        cleaned.removed, cleaned.threshold_m));
+  }
   if (!r.gaps.empty()) m.warnings.push_back(gaps_warning(r));
   for (const std::string& w : m.warnings) spdlog::warn("{}: {}", o.input, w);
   nlohmann::json doc = {{"points", r.points},
@@ -171,6 +180,7 @@ void run_encode(const EncodeCommand& o) {
                         {"bridges", r.bridges},
                         {"gaps", gaps_json(r)},
                         {"ground_points", r.ground_points},
+                        {"isolated_points", cleaned.removed},
                         {"branch_skeleton_nodes", r.branch_skeleton.size()},
                         {"origin", {r.origin.x(), r.origin.y(), r.origin.z()}},
                         {"output", o.output}};

