@@ -2,7 +2,8 @@
 // Forest measurements of a scanned tree, as a quantitative structure model reports them (TreeQSM,
 // Raumonen et al. 2013), from its points and its skeleton:
 // - dbh_m: diameter of the circle fitted to the trunk points at breast height
-//   (scans/breast_height.hpp), unset when the slice has too few of them or no compact stem;
+//   (scans/breast_height.hpp), unset when the slice has too few of them, no compact stem, or
+//   two or more separate stems (a fork below breast height: breast_height_stems_m);
 // - height_m: highest minus lowest point;
 // - crown_base_m: height above the lowest point of the base of the lowest branch on the trunk
 //   that carries at least min_branch_length_m of skeleton (the lowest live branch's base:
