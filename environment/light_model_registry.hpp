@@ -63,7 +63,7 @@ std::unique_ptr<PlasticLight> make_sky_plastic_light(const AnalysisParams& param
 std::unique_ptr<PlasticLight> make_shadow_grid_plastic_light(const AnalysisParams& params);
 
 // The registry. The order is that of the help texts and of "expected ..." in messages.
-inline constexpr std::array<LightModelEntry, 4> kLightModels{{
+inline constexpr auto kLightModels = std::to_array<LightModelEntry>({
     {LightModelKind::kCanopy,
      "canopy",
      "the leaves as turbid media, through the canopy model",
@@ -84,7 +84,7 @@ inline constexpr std::array<LightModelEntry, 4> kLightModels{{
      "marker points and perception cones, Runions et al. 2007",
      {make_space_colonization_bud_light, {1.15, 1.80, 1.41}},
      nullptr},
-}};
+});
 
 constexpr bool lights_buds(const LightModelEntry& e) { return e.bud.make != nullptr; }
 constexpr bool lights_clusters(const LightModelEntry& e) { return e.plastic != nullptr; }
@@ -110,6 +110,18 @@ constexpr NameTable<LightModelKind, N> names() {
 }
 
 constexpr bool any(const LightModelEntry&) { return true; }
+
+// Each kind and each name in one row only.
+constexpr bool rows_are_distinct() {
+  for (std::size_t i = 0; i < kLightModels.size(); ++i) {
+    for (std::size_t j = i + 1; j < kLightModels.size(); ++j) {
+      if (kLightModels[i].kind == kLightModels[j].kind) return false;
+      if (kLightModels[i].name == kLightModels[j].name) return false;
+    }
+  }
+  return true;
+}
+static_assert(rows_are_distinct(), "a light model registered twice");
 
 }  // namespace light_model_detail
 
