@@ -1,9 +1,9 @@
 #pragma once
 // The bud light models of the growth model (Palubicki et al. 2009, step 1): each gives every live
 // bud its light Q and optimal growth direction V. One file per model (`sky_bud_light.cpp`,
-// `shadow_grid_bud_light.cpp`, `space_colonization_bud_light.cpp`), created through the one
-// registry `bud_light_registry.cpp` from the `BudLightModel` a parameter file names
-// (`kBudLightModelNames`, environment/growth_params.hpp).
+// `shadow_grid_bud_light.cpp`, `space_colonization_bud_light.cpp`), created through the registry
+// of light models shared with plastic adaptation (kLightModels, light_model_registry.hpp) from the
+// `BudLightModel` a parameter file names.
 #include <Eigen/Core>
 #include <memory>
 #include <random>
@@ -49,7 +49,7 @@ class BudLight {
   virtual void sense(const BudLightInput& in, BudLightOutput& out) = 0;
 };
 
-// The model `context.params.light_model` names.
+// The model `context.params.light_model` names; ValueError when it gives buds no light.
 std::unique_ptr<BudLight> make_bud_light(const BudLightContext& context);
 
 }  // namespace fspm::environment

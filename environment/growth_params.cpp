@@ -16,14 +16,6 @@
 
 namespace fspm::environment {
 
-std::string_view bud_light_model_name(BudLightModel model) {
-  return kBudLightModelNames.name(model);
-}
-
-BudLightModel bud_light_model_from_name(std::string_view name) {
-  return kBudLightModelNames.from_name(name);
-}
-
 std::string_view tropism_pairing_name(TropismPairing pairing) {
   return kTropismPairingNames.name(pairing);
 }
@@ -31,31 +23,6 @@ std::string_view tropism_pairing_name(TropismPairing pairing) {
 TropismPairing tropism_pairing_from_name(std::string_view name) {
   return kTropismPairingNames.from_name(name);
 }
-
-namespace {
-
-// Vigour alpha per tree type (A, B, C) and light model (sky, shadow grid, space colonization),
-// fitted so that the mean size of 20-cycle trees (seeds 1-8) is Pirk Table 4.2's 2 541
-// internodes (docs/environment.md, "Presets").
-constexpr double kFittedAlpha[3][3] = {
-    {1.42, 1.94, 1.15},  // A
-    {1.66, 2.20, 1.80},  // B
-    {1.22, 1.77, 1.41},  // C
-};
-
-int light_model_index(BudLightModel m) {
-  switch (m) {
-    case BudLightModel::kSky:
-      return 0;
-    case BudLightModel::kShadowGrid:
-      return 1;
-    case BudLightModel::kSpaceColonization:
-      return 2;
-  }
-  return 1;
-}
-
-}  // namespace
 
 GrowthParams growth_preset(std::string_view name, BudLightModel light_model,
                            TropismPairing pairing) {
@@ -81,7 +48,8 @@ GrowthParams growth_preset(std::string_view name, BudLightModel light_model,
   } else {
     throw ValueError("unknown preset \"" + std::string(name) + "\", expected A, B or C");
   }
-  p.alpha = kFittedAlpha[type][light_model_index(light_model)];
+  // The vigour fitted for the model (its row of light_model_registry.hpp).
+  p.alpha = bud_light_hook(light_model).preset_alpha[static_cast<std::size_t>(type)];
   return p;
 }
 
@@ -201,6 +169,7 @@ void GrowthParams::validate() const {
   check(p.light_directions >= 1, "light_directions", "an integer >= 1");
   check(p.light_significance >= 0 && p.light_significance < 1, "light_significance",
         "a number in [0, 1)");
+  bud_light_hook(p.light_model);  // a model that lights buds, or a ValueError naming it
   validate_light_model(p, check);
   check(p.tip_radius_m > 0 && std::isfinite(p.tip_radius_m), "tip_radius_m", "a positive length");
   check(p.pipe_exponent >= 1 && p.pipe_exponent <= 4, "pipe_exponent", "a number in [1, 4]");

@@ -9,30 +9,13 @@
 #include <string_view>
 #include <vector>
 
+#include "environment/light_model_registry.hpp"
 #include "environment/shadow_grid.hpp"
 #include "environment/site_sky.hpp"
 #include "environment/space_colonization.hpp"
 #include "fspm/name_table.hpp"
 
 namespace fspm::environment {
-
-// Where a bud's light Q and optimal growth direction V come from (Palubicki et al. 2009, 4.1).
-enum class BudLightModel {
-  kSky,                // the sky hemisphere of Pirk eq. 4.3, shaded by leaf clusters and occluders
-  kShadowGrid,         // Palubicki's shadow propagation in a voxel grid (local shade)
-  kSpaceColonization,  // marker points and perception cones (Runions et al. 2007)
-};
-// The names of parameter files and options, and what each means in --help.
-inline constexpr NameTable<BudLightModel, 3> kBudLightModelNames{
-    "light_model",
-    {{BudLightModel::kSky, "sky", "the sky hemisphere shaded by leaf clusters, Pirk eq. 4.3"},
-     {BudLightModel::kShadowGrid, "shadow_grid", "Palubicki's voxel shade"},
-     {BudLightModel::kSpaceColonization, "space_colonization",
-      "marker points and perception cones, Runions et al. 2007"}}};
-// The name used in parameter files ("sky", "shadow_grid", "space_colonization").
-std::string_view bud_light_model_name(BudLightModel model);
-// The model of a name; throws ValueError naming the three for an unknown one.
-BudLightModel bud_light_model_from_name(std::string_view name);
 
 inline constexpr int kMaxYears = 1000;  // growth cycles a simulation may run
 
@@ -71,7 +54,8 @@ struct GrowthParams {
   int leaf_years = 2;
   double cluster_radius_m = 0.3;
   double gamma0 = 0.5;
-  // Light at buds.
+  // Where a bud's light Q and optimal growth direction V come from (Palubicki et al. 2009, 4.1): a
+  // model of kBudLightModelNames (light_model_registry.hpp).
   BudLightModel light_model = BudLightModel::kShadowGrid;
   // Share of the open sky's light that reaches the stand (1: open site); scales every bud's Q.
   double sky_light_fraction = 1.0;

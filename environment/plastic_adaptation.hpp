@@ -11,12 +11,15 @@
 // eq. 4.14 or vanish; the leaf density follows the light (eq. 4.13); clusters that end up in a
 // solid obstacle are pushed out.
 //
-// Only the affected parts are recomputed (Pirk 4.6): light is evaluated per leaf cluster, starting
-// from the analysis' cache; a cluster is re-evaluated only when clusters in its shadow
-// neighbourhood moved relative to it by more than kDriftTolerance_m (and 15 % of their distance)
-// or vanished, enough to change its light by about 5 % (clusters carried by the same bent branch
-// keep their relative positions), when it turned by more than kTurnTolerance_rad against the sky,
-// or when its cached obstacle visibility changed.
+// The clusters' light comes from the light model the analysis used (AnalysisParams::light_model, a
+// PlasticLight of light_model_registry.hpp), told after every step which clusters moved and which
+// were pruned. Only the affected parts are recomputed (Pirk 4.6): light is evaluated per leaf
+// cluster, starting from the analysis' cache. The `canopy` and `shadow_grid` lights evaluate the
+// whole crown again after a step that moved or pruned something; with the `sky` light a cluster
+// is re-evaluated only when clusters in its shadow neighbourhood moved relative to it by more than
+// kDriftTolerance_m (and 15 % of their distance) or vanished, enough to change its light by about
+// 5 % (clusters carried by the same bent branch keep their relative positions), when it turned by
+// more than kTurnTolerance_rad against the sky, or when its cached obstacle visibility changed.
 #include <Eigen/Core>
 #include <cstddef>
 #include <vector>

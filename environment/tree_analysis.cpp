@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "environment/light_model.hpp"
+#include "environment/plastic_light.hpp"
 #include "fspm/error.hpp"
 
 namespace fspm::environment {
@@ -98,6 +99,8 @@ std::vector<Sphere> cluster_spheres(const std::vector<LeafCluster>& clusters) {
 }
 
 void AnalysisParams::validate() const {
+  // A model that lights leaf clusters, or a ValueError naming it.
+  plastic_light_factory(light_model, "plastic analysis");
   if (light_model == ClusterLightModel::kCanopy) {
     bool known = false;
     for (const LeafLightModelEntry& e : leaf_light_models())
@@ -130,14 +133,6 @@ void AnalysisParams::validate() const {
   }
 }
 
-ClusterLightModel cluster_light_model_from_name(const std::string& name) {
-  return kClusterLightModelNames.from_name(name, "plastic analysis");
-}
-
-std::string_view cluster_light_model_name(ClusterLightModel model) {
-  return kClusterLightModelNames.name(model);
-}
-
 void cluster_buds(const TreeGraph& t, const std::vector<LeafCluster>& clusters,
                   std::vector<Eigen::Vector3d>& buds, std::vector<std::uint32_t>& bud_start) {
   buds.clear();
@@ -150,62 +145,6 @@ void cluster_buds(const TreeGraph& t, const std::vector<LeafCluster>& clusters,
     bud_start.push_back(static_cast<std::uint32_t>(buds.size()));
   }
 }
-
-namespace {
-
-// The clusters alone under an open sky, one evaluation per cluster, with the neighbour lists the
-// adaptation starts from.
-void sky_light(TreeAnalysis& a, ClusterLightField& field) {
-  std::vector<Eigen::Vector3d> centers;
-  std::vector<double> radii, gammas;
-  for (const LeafCluster& c : a.clusters) {
-    centers.push_back(c.center);
-    radii.push_back(c.radius_m);
-    gammas.push_back(c.translucency);
-  }
-  field.set_clusters(centers, radii, gammas);
-  field.rebuild_grid();
-  for (std::uint32_t c = 0; c < a.clusters.size(); ++c) field.evaluate(c);
-  a.cluster_light.assign(field.lights().begin(), field.lights().end());
-  a.cluster_direction.assign(field.directions().begin(), field.directions().end());
-  a.cluster_neighbors = field.take_neighbor_lists();
-}
-
-// The clusters alone under an open sky through the leaf light model `canopy_model`.
-void canopy_light(const Sky& sky, TreeAnalysis& a) {
-  const std::size_t nc = a.clusters.size();
-  const std::vector<Sphere> spheres = cluster_spheres(a.clusters);
-  std::vector<LightSample> lit(nc);
-  make_leaf_light_model(a.params.canopy_model, sky)->evaluate(spheres, {}, lit);
-  a.cluster_light.resize(nc);
-  a.cluster_direction.resize(nc);
-  for (std::size_t c = 0; c < nc; ++c) {
-    a.cluster_light[c] = lit[c].light;
-    a.cluster_direction[c] = lit[c].direction;
-  }
-  a.cluster_neighbors.assign(nc, {});
-}
-
-// The clusters' buds alone in the shadow grid of an open scene.
-void grid_light(const TreeGraph& t, const Scene& open, const Eigen::Vector3d& sky_direction,
-                TreeAnalysis& a) {
-  const std::size_t nc = a.clusters.size();
-  std::vector<Eigen::Vector3d> buds, centers(nc);
-  std::vector<std::uint32_t> bud_start;
-  cluster_buds(t, a.clusters, buds, bud_start);
-  for (std::size_t c = 0; c < nc; ++c) centers[c] = a.clusters[c].center;
-  a.cluster_light.assign(nc, 1.0);
-  a.cluster_direction.assign(nc, Eigen::Vector3d::UnitZ());
-  a.cluster_neighbors.assign(nc, {});
-  ClusterGridLight light(a.params.shadow_grid, open);
-  light.evaluate(buds, bud_start, centers, std::vector<std::uint8_t>(nc, 1), a.cluster_light,
-                 a.cluster_direction);
-  for (std::size_t c = 0; c < nc; ++c) {
-    combine_sky_and_grid(1.0, sky_direction, a.cluster_light[c], a.cluster_direction[c]);
-  }
-}
-
-}  // namespace
 
 namespace {
 
@@ -498,19 +437,7 @@ TreeAnalysis analyze_tree(const TreeGraph& t, const AnalysisParams& params,
   scene.sky.validate();
   a.brightest = scene.sky.brightest;
   ClusterLightField field(params.light_directions, params.light_significance, a.brightest);
-  // One case per ClusterLightModel, as in the adaptation's Engine (plastic_adaptation.cpp): the
-  // compiler names a model missing from either.
-  switch (params.light_model) {
-    case ClusterLightModel::kShadowGrid:
-      grid_light(t, scene, field.open_direction(), a);
-      break;
-    case ClusterLightModel::kCanopy:
-      canopy_light(scene.sky, a);
-      break;
-    case ClusterLightModel::kSky:
-      sky_light(a, field);
-      break;
-  }
+  make_plastic_light(params, "plastic analysis")->analyse(t, scene, field, a);
 
   std::vector<Eigen::Vector3d> light_sum;
   std::vector<double> all;

@@ -22,31 +22,14 @@
 #include "environment/cluster_grid_light.hpp"
 #include "environment/cluster_light.hpp"
 #include "environment/leaf_light_model.hpp"
+#include "environment/light_model_registry.hpp"
 #include "environment/occluders.hpp"
 #include "environment/shadow_grid.hpp"
-#include "fspm/name_table.hpp"
 #include "fspm/tree_graph.hpp"
 
 namespace fspm::environment {
 
 inline constexpr std::uint32_t kNoCluster = std::numeric_limits<std::uint32_t>::max();
-
-// Which light the analysis and the adaptation give the leaf clusters: the crown's leaves as turbid
-// media through a leaf light model of the registry (leaf_light_model.hpp, `canopy_model`; the
-// whole crown evaluated again at every age level that moved or pruned something), the sky
-// hemisphere with the other clusters as caps (Pirk eq. 4.3; ClusterLightField, re-evaluated
-// cluster by cluster where the change reaches), or Palubicki's local shadow grid
-// (ClusterGridLight), the light the growth model's default trees grew under.
-enum class ClusterLightModel { kCanopy, kSky, kShadowGrid };
-inline constexpr NameTable<ClusterLightModel, 3> kClusterLightModelNames{
-    "light_model",
-    {{ClusterLightModel::kCanopy, "canopy", "the leaves as turbid media, through the canopy model"},
-     {ClusterLightModel::kSky, "sky", "hemisphere with the clusters as caps, Pirk eq. 4.3"},
-     {ClusterLightModel::kShadowGrid, "shadow_grid", "Palubicki's voxel shade"}}};
-
-// "canopy", "sky" or "shadow_grid"; throws ValueError naming the choices otherwise.
-ClusterLightModel cluster_light_model_from_name(const std::string& name);
-std::string_view cluster_light_model_name(ClusterLightModel model);
 
 struct AnalysisParams {
   // Internodes at least this thick belong to the skeleton; <= 0 picks 2.5 times the thinnest
@@ -66,6 +49,12 @@ struct AnalysisParams {
   double phototropism = 0.25;
   double gravitropism = 0.12;
   Eigen::Vector3d gravity_direction = -Eigen::Vector3d::UnitZ();
+  // Which light the analysis and the adaptation give the leaf clusters, a model of
+  // kClusterLightModelNames (light_model_registry.hpp): the crown's leaves as turbid media through
+  // a leaf light model (`canopy_model`; the whole crown evaluated again at every age level that
+  // moved or pruned something), the sky hemisphere with the other clusters as caps (Pirk eq. 4.3;
+  // ClusterLightField, re-evaluated cluster by cluster where the change reaches), or Palubicki's
+  // local shadow grid (ClusterGridLight), the light the growth model's default trees grew under.
   ClusterLightModel light_model = ClusterLightModel::kCanopy;
   // The leaf light model of light_model kCanopy (a name of leaf_light_models()).
   std::string canopy_model = kAdaptationLeafLightModel;
