@@ -49,7 +49,7 @@ graphics::WindOptions wind_options(const WindArguments& wind, double duration_s,
   o.duration_s = duration_s;
   o.direction = {wind.direction.at(0), wind.direction.at(1), 0.0};
   o.seed = seed;
-  graphics::validate(o);
+  o.validate();
   return o;
 }
 

@@ -798,7 +798,7 @@ Image render_scene(const InstancedMesh& scene, const RenderOptions& options) {
 
 Image render_lod_scene(const LodScene& scene, const LodOptions& lod, const RenderOptions& options,
                        std::size_t* triangles_drawn) {
-  validate(lod);
+  lod.validate();
   if (!options.color_by.empty()) {
     throw ValueError(
         "per-instance level of detail does not combine with colouring by an attribute");
