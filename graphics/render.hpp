@@ -57,6 +57,8 @@ double scale_bar_length(double height_m);
 
 // "WxH" -> width, height; throws ValueError.
 void parse_size(std::string_view text, int& width, int& height);
+// width, height -> "WxH", the inverse of parse_size.
+std::string size_text(int width, int height);
 
 // True when fspm was built with VTK (FSPM_WITH_VTK).
 bool render_available();
