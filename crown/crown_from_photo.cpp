@@ -31,6 +31,8 @@ void CrownOptions::validate() const {
   if (trunk_height_m < 0.0 || trunk_radius_m < 0.0) {
     throw ValueError("crown: trunk_height_m and trunk_radius_m must be >= 0");
   }
+  inflation.validate();
+  relief.validate();
 }
 namespace {
 

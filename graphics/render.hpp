@@ -43,6 +43,9 @@ struct RenderOptions {
   // into the rendered picture (relief_composite.hpp), lit by the key light without shadows; they
   // take part in the framing unless `frame` is given.
   std::vector<ReliefCrown> relief_crowns;
+
+  // Throws ValueError naming the first field out of range.
+  void validate() const;
 };
 
 // The height in metres a parallel projection along `view` needs to show all of the box [lo, hi]

@@ -9,6 +9,8 @@
 #include "graphics/foliage.hpp"
 #include "graphics/impostor.hpp"
 #include "graphics/instance_lod.hpp"
+#include "graphics/poisson_disk.hpp"
+#include "graphics/render.hpp"
 #include "graphics/tessellation_level.hpp"
 #include "graphics/tree_mesher.hpp"
 #include "graphics/wind_animation.hpp"
@@ -41,6 +43,7 @@ TEST(OptionsValidate, DefaultsPass) {
   EXPECT_NO_THROW(ImpostorViews{}.validate());
   EXPECT_NO_THROW(TessellationLimits{}.validate());
   EXPECT_NO_THROW(ChartOptions{}.validate());
+  EXPECT_NO_THROW(RenderOptions{}.validate());
 }
 
 TEST(OptionsValidate, EachRefusalNamesItsField) {
@@ -85,6 +88,16 @@ TEST(OptionsValidate, EachRefusalNamesItsField) {
   chart.x_ticks = {0.0, 1.0};
   chart.x_tick_labels = {"a"};
   EXPECT_REFUSED_NAMING(chart, "x_tick_labels");
+
+  RenderOptions render;
+  render.height = 0;
+  EXPECT_REFUSED_NAMING(render, "height");
+
+  PoissonDiskOptions disk;
+  disk.width_m = 10.0;
+  disk.depth_m = 10.0;
+  disk.min_distance_m = 0.0;
+  EXPECT_REFUSED_NAMING(disk, "min_distance_m");
 }
 
 }  // namespace

@@ -5,8 +5,10 @@
 #include <string>
 
 #include "fspm/error.hpp"
+#include "scans/cluster_split.hpp"
 #include "scans/encoder.hpp"
 #include "scans/scan_simulator.hpp"
+#include "scans/synthetic_tree.hpp"
 
 namespace fspm::scans {
 namespace {
@@ -38,6 +40,16 @@ TEST(OptionsValidate, DefaultsPassAndRefusalsNameTheField) {
   scan = {};
   scan.range_noise_m = -0.001;
   EXPECT_NE(refusal(scan).find("range_noise_m"), std::string::npos) << refusal(scan);
+
+  SplitOptions split;
+  EXPECT_NO_THROW(split.validate());
+  split.main_branch_reach = -0.1;
+  EXPECT_NE(refusal(split).find("main_branch_reach"), std::string::npos) << refusal(split);
+
+  SyntheticTreeOptions tree;
+  EXPECT_NO_THROW(tree.validate());
+  tree.twigs = -1;
+  EXPECT_NE(refusal(tree).find("twigs"), std::string::npos) << refusal(tree);
 }
 
 }  // namespace
