@@ -33,16 +33,11 @@ struct CrownCommand {
   std::string photo;
   std::string mask;
   std::string out;
-  double height_m = 0.0;
+  // The options bound straight into the crown's options, whose defaults are the options'.
+  crown::CrownOptions options;
+  bool height_given = false;  // --height-m on the command line
   double image_height_m = 0.0;
-  double depth_ratio = 1.0;
-  double relief = 0.15;
-  double k = 2.0;
-  int connectivity = 8;
-  int cubemap_size = 0;
-  double trunk_m = 0.0;
-  double trunk_radius_m = 0.0;
-  bool billboards = false;
+  int connectivity = options.inflation.connectivity == crown::Connectivity::kFour ? 4 : 8;
   std::string side_mask;
   std::string preview;
   bool keep_gaps = false;
@@ -133,11 +128,10 @@ void write_billboards(const std::vector<Eigen::Vector3f>& points, const std::str
 }
 
 crown::CrownOptions crown_options(const CrownCommand& c, const crown::Mask& mask) {
-  crown::CrownOptions o;
-  if (c.height_m > 0.0 && c.image_height_m > 0.0) {
+  crown::CrownOptions o = c.options;
+  if (c.height_given && c.image_height_m > 0.0) {
     throw ValueError("give --height-m (the crown's height) or --image-height-m, not both");
   }
-  o.height_m = c.height_m > 0.0 ? c.height_m : 10.0;
   if (c.image_height_m > 0.0) {  // the whole picture's height: scale the crown's rows by it
     int top = mask.height, bottom = -1;
     for (int y = 0; y < mask.height; ++y) {
@@ -147,15 +141,8 @@ crown::CrownOptions crown_options(const CrownCommand& c, const crown::Mask& mask
     }
     o.height_m = c.image_height_m * (bottom - top + 1) / mask.height;
   }
-  o.depth_ratio = c.depth_ratio;
-  o.relief_weight = c.relief;
-  o.inflation.k = c.k;
   o.inflation.connectivity =
       c.connectivity == 4 ? crown::Connectivity::kFour : crown::Connectivity::kEight;
-  o.cubemap_size = c.cubemap_size;
-  o.trunk_height_m = c.trunk_m;
-  o.trunk_radius_m = c.trunk_radius_m;
-  o.billboards = c.billboards;
   return o;
 }
 
@@ -179,8 +166,8 @@ void write_outputs(const CrownCommand& c, const OutputPaths& paths, const crown:
   crown::write_raster(crown::cubemap_strip(model.radius), paths.radius);
   write_crown_cubemaps(paths.cubemaps, model.centre, model.radius.size, paths.color, paths.radius);
   crown::write_raster(relief_picture(model.relief), paths.relief);
-  if (c.billboards) write_billboards(model.billboards, paths.billboards);
-  const double ground_row = lowest_row(mask) + c.trunk_m / model.metres_per_pixel;
+  if (c.options.billboards) write_billboards(model.billboards, paths.billboards);
+  const double ground_row = lowest_row(mask) + c.options.trunk_height_m / model.metres_per_pixel;
   if (!c.side_mask.empty()) {
     crown::write_mask(crown::side_silhouette(model.mesh, mask.width, mask.height,
                                              model.metres_per_pixel, ground_row),
@@ -231,8 +218,8 @@ void make_crown(const CrownCommand& c, const OutputPaths& paths) {
   nlohmann::json seconds = nlohmann::json::object();
   // The whole reconstruction's memory from the photograph's header, before a pixel is decoded.
   crown::CrownMemoryRequest need;
-  need.cubemap_size = c.cubemap_size;
-  need.working_pixels = crown::CrownOptions{}.working_pixels;
+  need.cubemap_size = c.options.cubemap_size;
+  need.working_pixels = c.options.working_pixels;
   need.preview = !c.preview.empty();
   need.side_mask = !c.side_mask.empty();
   crown::check_crown_memory(c.photo, need, c.mask);
@@ -263,7 +250,7 @@ void make_crown(const CrownCommand& c, const OutputPaths& paths) {
                           {"cubemaps", paths.cubemaps},
                           {"relief", paths.relief}};
   if (c.mask.empty()) files["mask"] = paths.mask;
-  if (c.billboards) files["billboards"] = paths.billboards;
+  if (c.options.billboards) files["billboards"] = paths.billboards;
   if (!c.side_mask.empty()) files["side_mask"] = c.side_mask;
   if (!c.preview.empty()) files["preview"] = c.preview;
   if (c.json) {
@@ -298,31 +285,37 @@ void add_crown_commands(CLI::App& app) {
                 "and ground beside the tree, written as OUT's _mask.png to check)");
   c->add_option("-o,--output", cmd->out, "Mesh (.glb, .obj, .ply, .vtp) or a directory")
       ->required();
-  c->add_option("--height-m", cmd->height_m, "Height of the crown in metres (default 10)")
-      ->check(positive_number(1e4));
+  CLI::Option* height =
+      c->add_option("--height-m", cmd->options.height_m, "Height of the crown in metres")
+          ->check(positive_number(1e4))
+          ->capture_default_str();
   c->add_option("--image-height-m", cmd->image_height_m,
                 "Height the whole picture spans in metres (a picture at a known scale)")
       ->check(positive_number(1e5));
-  c->add_option("--depth-ratio", cmd->depth_ratio, "Crown depth over width")
+  c->add_option("--depth-ratio", cmd->options.depth_ratio, "Crown depth over width")
       ->check(positive_number(10.0))
       ->capture_default_str();
-  c->add_option("--relief", cmd->relief, "Relief weight rho (Argudo 4.6), 0 for none")
+  c->add_option("--relief", cmd->options.relief_weight,
+                "Relief weight rho (Argudo 4.6), 0 for none")
       ->check(number_in(0.0, 1.0))
       ->capture_default_str();
-  c->add_option("--k", cmd->k, "Depth of the outer silhouette in the inflation, pixels")
+  c->add_option("--k", cmd->options.inflation.k,
+                "Depth of the outer silhouette in the inflation, pixels")
       ->check(positive_number(100.0))
       ->capture_default_str();
   c->add_option("--connectivity", cmd->connectivity, "Silhouette connectivity, 8 or 4")
       ->check(CLI::IsMember({4, 8}))
       ->capture_default_str();
-  c->add_option("--cubemap-size", cmd->cubemap_size, "Cubemap face side (default: from the crown)")
+  c->add_option("--cubemap-size", cmd->options.cubemap_size,
+                "Cubemap face side (default: from the crown)")
       ->check(CLI::Range(8, 2048));
-  c->add_option("--trunk-m", cmd->trunk_m, "Trunk height below the crown in metres (default none)")
+  c->add_option("--trunk-m", cmd->options.trunk_height_m,
+                "Trunk height below the crown in metres (default none)")
       ->check(number_in(0.0, 1e4));
-  c->add_option("--trunk-radius-m", cmd->trunk_radius_m,
+  c->add_option("--trunk-radius-m", cmd->options.trunk_radius_m,
                 "Trunk radius in metres (default 2 % of the crown height)")
       ->check(positive_number(1e3));
-  c->add_flag("--billboards", cmd->billboards,
+  c->add_flag("--billboards", cmd->options.billboards,
               "Also write about 300 blue-noise billboard centres inside the crown (Argudo 5.2)");
   c->add_option("--side-mask", cmd->side_mask,
                 "Also write the crown seen from the side (+x) as a mask at the photograph's scale");
@@ -336,7 +329,10 @@ void add_crown_commands(CLI::App& app) {
       ->check(number_in(0, kMaxSeed))
       ->capture_default_str();
   c->add_flag("--json", cmd->json, "Machine-readable JSON on stdout");
-  c->callback([cmd] { run_crown(*cmd); });
+  c->callback([cmd, height] {
+    cmd->height_given = height->count() > 0;
+    run_crown(*cmd);
+  });
 }
 
 }  // namespace fspm::cli

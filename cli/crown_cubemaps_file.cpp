@@ -110,7 +110,7 @@ graphics::ReliefCrown read_relief_crown(const std::string& mesh_path) {
   // Argudo 5.2's billboards for close views, the same for every reading (a fixed seed).
   std::mt19937_64 rng(kBillboardSeed);
   c.billboards_m = crown::billboard_centres(crown::cubemap_from_strip(radius), d.centre_m, rng);
-  graphics::validate(c);
+  c.validate();
   return c;
 }
 

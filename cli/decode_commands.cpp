@@ -27,12 +27,11 @@ namespace {
 struct DecodeCommand {
   std::string input;
   std::string output;
-  std::string species;
+  // The options bound straight into the decoder's options, whose defaults are the options'.
+  scan_decoding::DecodeOptions decode;
+  scan_decoding::DecodeMeshOptions mesh;
   std::optional<double> lod_distance_m;
-  double prune_distance_m = 20.0;
-  int branchlets = 8;
-  std::uint64_t seed = 1;
-  bool docking_only = false;
+  bool docking_only = false;  // the inverse of decode.texture.match_branch_length
   bool json = false;
 };
 
@@ -68,10 +67,7 @@ void run_decode(const DecodeCommand& o) {
   }
   const scans::ClusterModel model = scans::read_clusters_file(o.input);
   const auto t0 = std::chrono::steady_clock::now();
-  scan_decoding::DecodeOptions options;
-  options.species = o.species;
-  options.library.branchlets = o.branchlets;
-  options.seed = o.seed;
+  scan_decoding::DecodeOptions options = o.decode;
   options.texture.match_branch_length = !o.docking_only;
   const scan_decoding::Decoding decoding = scan_decoding::decode_clusters(model, options);
   nlohmann::json summary{{"clusters", model.clusters.size()},
@@ -83,9 +79,8 @@ void run_decode(const DecodeCommand& o) {
   const TreeGraph tree = scan_decoding::decoded_tree(model, decoding);
   summary["nodes"] = tree.size();
   if (mesh_output) {
-    scan_decoding::DecodeMeshOptions mesh_options;
-    mesh_options.seed = o.seed;
-    mesh_options.prune_distance_m = o.prune_distance_m;
+    scan_decoding::DecodeMeshOptions mesh_options = o.mesh;
+    mesh_options.seed = options.seed;  // --seed orders the leaves too
     if (o.lod_distance_m) mesh_options.camera_m = lod_camera(model, *o.lod_distance_m);
     const graphics::InstancedMesh mesh = scan_decoding::decoded_mesh(model, decoding, mesh_options);
     summary["seconds"] = seconds_since(t0);
@@ -114,21 +109,22 @@ void add_decode_commands(CLI::App& app) {
                 "Tree file (.tree, .treeb, .nwk, .mtg) or mesh (.glb with each patch stored once, "
                 ".obj, .ply, .vtp)")
       ->required();
-  d->add_option("--species", o->species,
+  d->add_option("--species", o->decode.species,
                 "Species library to texture with (Pirk Table 3.1 names; default: the model's)");
-  d->add_option("--branchlets", o->branchlets, "L-system branchlets in the species library")
+  d->add_option("--branchlets", o->decode.library.branchlets,
+                "L-system branchlets in the species library")
       ->check(number_in(1, 1000))
       ->capture_default_str();
   d->add_option("--lod", o->lod_distance_m,
                 "Mesh seen from this distance in m (in front of the tree): each patch draws a "
                 "prefix of its randomly ordered leaves, enlarged (stochastic pruning)")
       ->check(positive_number(1e9));
-  d->add_option("--prune-distance", o->prune_distance_m,
+  d->add_option("--prune-distance", o->mesh.prune_distance_m,
                 "With --lod: every leaf is drawn up to this distance in m, beyond it the share "
                 "(prune distance / distance)^2")
       ->check(positive_number(1e9))
       ->capture_default_str();
-  d->add_option("--seed", o->seed, "Seed of the patch choice, roll and leaf order")
+  d->add_option("--seed", o->decode.seed, "Seed of the patch choice, roll and leaf order")
       ->check(number_in(0, kMaxSeed))
       ->capture_default_str();
   d->add_flag("--docking-only", o->docking_only,

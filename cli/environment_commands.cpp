@@ -1,5 +1,6 @@
 // fspm light | grow: sky light at points through a scene's occluders (Pirk eq. 4.3) and the
 // self-organizing growth model (Palubicki et al. 2009) with Pirk's tree types A, B and C.
+#include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
@@ -11,6 +12,7 @@
 #include <optional>
 
 #include "cli/commands.hpp"
+#include "cli/enum_option.hpp"
 #include "cli/output.hpp"
 #include "environment/canopy_light.hpp"
 #include "environment/canopy_sweep.hpp"
@@ -36,13 +38,14 @@ struct LightOptions {
   std::string out;
   int directions = 0;
   bool json = false;
-  // A real sky (all optional; --latitude, --longitude and --date switch it on).
+  // A real sky (all optional; --latitude, --longitude and --date switch it on). The options
+  // bound straight into it take its defaults.
+  environment::RealSky sky;
   std::optional<double> latitude, longitude;
-  double elevation_m = 0.0, utc_offset_h = 0.0;
-  std::string date, hours = "0:24", diffuse = "overcast", split = "spitters";
+  std::string date;
+  std::string hours = fmt::format("{:g}:{:g}", sky.first_hour, sky.last_hour);
   std::optional<double> global_W_m2;
   std::string global_csv;
-  double transmittance = 0.75;
 };
 
 // The real sky of the options, or none when no site and date were given.
@@ -52,13 +55,11 @@ std::optional<environment::RealSky> real_sky(const LightOptions& o) {
   if (!o.latitude || !o.longitude || o.date.empty()) {
     throw ValueError("a real sky needs --latitude, --longitude and --date together");
   }
-  environment::RealSky sky;
-  sky.site = {*o.latitude, *o.longitude, o.elevation_m, o.utc_offset_h};
+  environment::RealSky sky = o.sky;
+  sky.site.latitude_deg = *o.latitude;
+  sky.site.longitude_deg = *o.longitude;
   sky.date = environment::parse_date(o.date);
   environment::parse_hours(o.hours, sky);
-  sky.diffuse = environment::diffuse_sky_from_name(o.diffuse);
-  sky.split = environment::diffuse_split_from_name(o.split);
-  sky.transmittance = o.transmittance;
   if (o.global_W_m2 && !o.global_csv.empty()) {
     throw ValueError("--global-radiation and --global-radiation-csv exclude each other");
   }
@@ -284,27 +285,28 @@ void add_environment_commands(CLI::App& app) {
                 "adds PAR columns par_umol_m2_s and daily_par_mol_m2");
   l->add_option("--longitude", light->longitude,
                 "Real sky: site longitude (degrees, east positive)");
-  l->add_option("--elevation", light->elevation_m, "Real sky: site elevation (m, default 0)");
-  l->add_option("--utc-offset", light->utc_offset_h,
-                "Real sky: local clock time minus UTC (hours, default 0)");
+  l->add_option("--elevation", light->sky.site.elevation_m, "Real sky: site elevation (m)")
+      ->capture_default_str();
+  l->add_option("--utc-offset", light->sky.site.utc_offset_h,
+                "Real sky: local clock time minus UTC (hours)")
+      ->capture_default_str();
   l->add_option("--date", light->date, "Real sky: date YYYY-MM-DD (1950-2050)");
   l->add_option("--hours", light->hours,
-                "Real sky: local hours FROM:TO integrated (default 0:24, the whole day)");
-  l->add_option("--diffuse-sky", light->diffuse,
-                "Real sky: diffuse radiance, " + environment::kDiffuseSkyNames.help())
+                "Real sky: local hours FROM:TO integrated (0:24: the whole day)")
       ->capture_default_str();
+  add_enum_option(l, "--diffuse-sky", light->sky.diffuse, environment::kDiffuseSkyNames,
+                  "Real sky: diffuse radiance");
   l->add_option("--global-radiation", light->global_W_m2,
                 "Real sky: global radiation on a horizontal plane (W m-2) held while the sun is "
                 "up (default: the clear sky of the site and date)");
   l->add_option("--global-radiation-csv", light->global_csv,
                 "Real sky: measured hourly global radiation, CSV hour,global_W_m2 (local hours "
                 "0-23)");
-  l->add_option("--split", light->split,
-                "Real sky: direct/diffuse split of the global radiation, " +
-                    environment::kDiffuseSplitNames.help())
+  add_enum_option(l, "--split", light->sky.split, environment::kDiffuseSplitNames,
+                  "Real sky: direct/diffuse split of the global radiation");
+  l->add_option("--transmittance", light->sky.transmittance,
+                "Real sky: clear-sky atmospheric transmittance")
       ->capture_default_str();
-  l->add_option("--transmittance", light->transmittance,
-                "Real sky: clear-sky atmospheric transmittance (default 0.75)");
   l->callback([light] { run_light(*light); });
 
   auto grow = std::make_shared<GrowOptions>();

@@ -38,7 +38,7 @@ struct TTestOptions {
   bool paired = false;
   std::string column;
   Alternative alternative = Alternative::kTwoSided;
-  double level = 0.95;
+  double level = kDefaultConfidenceLevel;
   bool json = false;
 };
 
@@ -53,7 +53,7 @@ struct MannWhitneyOptions {
 struct DescribeOptions {
   std::string file;
   std::string column;
-  double level = 0.95;
+  double level = kDefaultConfidenceLevel;
   bool json = false;
 };
 

@@ -75,9 +75,9 @@ struct RunOptions {
   bool json = false;
   bool emit_slurm = false;
   bool mpi = false;
-  std::size_t shards = 4;
+  // --shards and --slurm-time bound straight into the script's options, whose defaults are theirs.
+  ex::SlurmOptions slurm;
   std::string slurm_file;
-  std::string slurm_time = "24:00:00";
   std::size_t replicates = 0;  // 0: the file's
   bool grid_order = false;
 };
@@ -138,14 +138,12 @@ std::string default_out(const ex::Experiment& x) {
 }
 
 void emit_slurm(const RunOptions& o, const ex::Experiment& x) {
-  ex::SlurmOptions s;
+  ex::SlurmOptions s = o.slurm;
   s.fspm_executable = fs::read_symlink("/proc/self/exe").string();
   s.experiment_file = fs::absolute(o.experiment).lexically_normal().string();
   s.out_dir = fs::absolute(o.out.empty() ? default_out(x) : o.out).lexically_normal().string();
   s.job_name = x.name;
-  s.shards = o.shards;
   s.cpus_per_task = o.jobs == 0 ? 1 : o.jobs;
-  s.time_limit = o.slurm_time;
   s.script_path = o.slurm_file.empty() ? ex::file_stem_from_name(x.name) + ".slurm" : o.slurm_file;
   const std::string script = ex::slurm_script(s);
   write_file_atomically(s.script_path, [&](std::ostream& out) { out << script; });
@@ -487,10 +485,12 @@ void add_experiment_commands(CLI::App& app) {
   r->add_flag("--json", run->json, "Machine-readable JSON summary on stdout");
   r->add_flag("--mpi", run->mpi, "Spread the runs over the MPI ranks (under mpirun)");
   r->add_flag("--emit-slurm", run->emit_slurm, "Write a Slurm job-array script instead of running");
-  r->add_option("--shards", run->shards, "--emit-slurm: number of array tasks (default 4)")
-      ->check(number_in(1, 1e6));
+  r->add_option("--shards", run->slurm.shards, "--emit-slurm: number of array tasks")
+      ->check(number_in(1, 1e6))
+      ->capture_default_str();
   r->add_option("--slurm-file", run->slurm_file, "--emit-slurm: script path (default NAME.slurm)");
-  r->add_option("--slurm-time", run->slurm_time, "--emit-slurm: time limit of one task");
+  r->add_option("--slurm-time", run->slurm.time_limit, "--emit-slurm: time limit of one task")
+      ->capture_default_str();
   r->callback([run] { run_command(*run); });
 
   auto compare = std::make_shared<CompareOptions>();

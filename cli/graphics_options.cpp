@@ -8,6 +8,7 @@
 #ifdef FSPM_HAVE_CROWN
 #include "cli/crown_cubemaps_file.hpp"
 #endif
+#include "cli/enum_option.hpp"
 #include "cli/output.hpp"
 #include "fspm/error.hpp"
 #include "graphics/foliage.hpp"
@@ -17,14 +18,6 @@
 #include "io/placed_mesh.hpp"
 
 namespace fspm::cli {
-
-// Leaves on or off, and how leaf clusters are drawn (the name becomes an enum right away).
-void set_leaves(graphics::MeshOptions& options, bool leaves, const std::string& foliage,
-                std::uint64_t seed) {
-  options.leaves = leaves;
-  options.foliage.mode = graphics::foliage_mode_from_name(foliage);
-  options.foliage_seed = seed;
-}
 
 // --leaves that finds no leaf, polygon or leaf cluster says so instead of drawing nothing quietly.
 void report_missing_leaves(const graphics::InstancedMesh& mesh, const std::string& file) {
@@ -74,22 +67,21 @@ void check_graph_lod(const GraphLodArguments& arguments, const std::vector<std::
 }
 
 // --axis-subdivisions S of mesh, render and view (MeshOptions::axis_subdivisions).
-void add_axis_subdivisions_option(CLI::App* app, int& subdivisions) {
-  app->add_option("--axis-subdivisions", subdivisions,
+void add_axis_subdivisions_option(CLI::App* app, graphics::MeshOptions& options) {
+  app->add_option("--axis-subdivisions", options.axis_subdivisions,
                   "Rings per internode along each axis, on a cubic B-spline through the joints "
                   "(Pirk eq. 6.7): branches rounded at close range (separate junctions)")
       ->check(CLI::Range(1, graphics::kMaxAxisSubdivisions))
       ->capture_default_str();
 }
 
-// --foliage and --seed of the commands that draw leaf clusters.
-void add_foliage_options(CLI::App* command, std::string& foliage, std::uint64_t& seed) {
-  command
-      ->add_option("--foliage", foliage,
-                   "Leaf clusters of grown and adapted trees with --leaves: leaves (a cloud of "
-                   "small leaves) or volumes (translucent crown spheres)")
-      ->capture_default_str();
-  command->add_option("--seed", seed, "Seed of the leaf placement in clusters")
+// --leaves, --foliage and --seed of the commands that draw leaves and leaf clusters.
+void add_leaves_options(CLI::App* command, graphics::MeshOptions& options,
+                        const std::string& leaves_help) {
+  command->add_flag("--leaves", options.leaves, leaves_help);
+  add_enum_option(command, "--foliage", options.foliage.mode, graphics::kFoliageModeNames,
+                  "Leaf clusters of grown and adapted trees with --leaves");
+  command->add_option("--seed", options.foliage_seed, "Seed of the leaf placement in clusters")
       ->check(number_in(0, kMaxSeed))
       ->capture_default_str();
 }

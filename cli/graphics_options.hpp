@@ -2,7 +2,6 @@
 // What the graphics commands (mesh, render, view) share: the options they declare alike, the
 // checks of inputs they refuse alike, and the crowns drawn by ray casting.
 #include <CLI/CLI.hpp>
-#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -14,10 +13,6 @@
 #include "graphics/tree_mesher.hpp"
 
 namespace fspm::cli {
-
-// Leaves on or off, and how leaf clusters are drawn (the name becomes an enum right away).
-void set_leaves(graphics::MeshOptions& options, bool leaves, const std::string& foliage,
-                std::uint64_t seed);
 
 // --leaves that finds no leaf, polygon or leaf cluster says so instead of drawing nothing quietly.
 void report_missing_leaves(const graphics::InstancedMesh& mesh, const std::string& file);
@@ -37,9 +32,11 @@ void check_graph_lod(const GraphLodArguments& arguments, const std::vector<std::
                      bool per_plant_lod);
 
 // --axis-subdivisions S of mesh, render and view (MeshOptions::axis_subdivisions).
-void add_axis_subdivisions_option(CLI::App* app, int& subdivisions);
-// --foliage and --seed of the commands that draw leaf clusters.
-void add_foliage_options(CLI::App* command, std::string& foliage, std::uint64_t& seed);
+void add_axis_subdivisions_option(CLI::App* app, graphics::MeshOptions& options);
+// --leaves, --foliage and --seed of the commands that draw leaves and leaf clusters, bound into
+// the mesh options (their defaults are the options').
+void add_leaves_options(CLI::App* command, graphics::MeshOptions& options,
+                        const std::string& leaves_help);
 // --lod and --lod-distance of render and view.
 void add_lod_options(CLI::App* command, bool& lod, double& distance_m);
 // --ray-cast of render and view.

@@ -52,7 +52,7 @@ struct FitOptions {
   std::string params;
   std::string targets;
   std::string out;
-  int max_iterations = 200;
+  greenlab::FitOptions fit;  // --max-iterations bound into it, its default the option's
   bool json = false;
 };
 
@@ -134,9 +134,7 @@ void run_fit(const FitOptions& o) {
   const std::string text = read_input_file(o.params);
   const greenlab::PlantParams params = greenlab::parse_plant_params(text, o.params);
   const auto targets = greenlab::read_targets_csv(o.targets);
-  greenlab::FitOptions fo;
-  fo.max_iterations = o.max_iterations;
-  const greenlab::FitResult fit = greenlab::fit_gl1(params, targets, {}, fo);
+  const greenlab::FitResult fit = greenlab::fit_gl1(params, targets, {}, o.fit);
   const std::string toml = greenlab::fitted_toml(text, fit, o.params);
   write_file_atomically(o.out, [&](std::ostream& out) { out << toml; });
   nlohmann::json parameters = nlohmann::json::array();
@@ -204,8 +202,9 @@ void add_greenlab_commands(CLI::App& app) {
       ->required();
   f->add_option("TARGET", fit->targets, "Target data (CSV, see docs/greenlab.md)")->required();
   f->add_option("-o,--output", fit->out, "Fitted plant description (TOML)")->required();
-  f->add_option("--max-iterations", fit->max_iterations, "Solver iteration limit")
-      ->check(number_in(1, 1e6));
+  f->add_option("--max-iterations", fit->fit.max_iterations, "Solver iteration limit")
+      ->check(number_in(1, 1e6))
+      ->capture_default_str();
   f->add_flag("--json", fit->json, "Machine-readable JSON on stdout");
   f->callback([fit] { run_fit(*fit); });
 }

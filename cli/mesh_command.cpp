@@ -34,15 +34,9 @@ struct MeshCommand {
   std::string tree;
   std::string format;
   std::string out;
-  bool leaves = false;
   std::vector<double> ages;
-  double edge_length_m = 0.01;
-  int max_sides = 16;
-  int axis_subdivisions = 1;
-  std::string junctions = "separate";
-  bool reynolds_width = false;
-  std::string foliage = "leaves";
-  std::uint64_t seed = 1;
+  // The options bound straight into the mesh options, whose defaults are the options'.
+  graphics::MeshOptions mesh;
   std::string obstacles;
   bool skin = false;
   double animate_s = 0.0;
@@ -65,18 +59,6 @@ void check_skin_request(const MeshCommand& c, graphics::MeshFormat format, Input
   }
 }
 
-// The mesh options of the mesh command's flags.
-graphics::MeshOptions mesh_options(const MeshCommand& c) {
-  graphics::MeshOptions options;
-  set_leaves(options, c.leaves, c.foliage, c.seed);
-  options.edge_length_m = c.edge_length_m;
-  options.max_sides = c.max_sides;
-  options.axis_subdivisions = c.axis_subdivisions;
-  options.junctions = graphics::junction_mode_from_name(c.junctions);
-  options.reynolds_width = c.reynolds_width;
-  return options;
-}
-
 // Combinations of flags the mesh command refuses before reading anything.
 void check_mesh_request(const MeshCommand& c, graphics::MeshFormat format, InputKind kind) {
   if (c.animate_s > 0.0 && !c.skin) throw ValueError("--animate needs --skin");
@@ -96,7 +78,8 @@ void check_mesh_request(const MeshCommand& c, graphics::MeshFormat format, Input
 void write_skinned_mesh(const MeshCommand& c, const graphics::MeshOptions& options,
                         nlohmann::json& j) {
   const TreeGraph tree = read_tree_file(c.tree, c.format);
-  const SkinnedOutput out = write_wind_glb(tree, options, c.wind, c.animate_s, c.seed, c.out);
+  const SkinnedOutput out =
+      write_wind_glb(tree, options, c.wind, c.animate_s, options.foliage_seed, c.out);
   j["vertices"] = out.vertices;
   j["triangles"] = out.triangles;
   j["joints"] = out.joints;
@@ -150,7 +133,7 @@ void write_single_mesh(const MeshCommand& c, InputKind kind, const graphics::Mes
   } else {
     mesh = io::load_instanced(c.tree, c.format, options, false, c.graph_lod.lod());
   }
-  if (c.leaves) report_missing_leaves(mesh, c.tree);
+  if (c.mesh.leaves) report_missing_leaves(mesh, c.tree);
   if (!c.obstacles.empty()) {
     io::add_scene_obstacles(mesh, environment::read_scene_file(c.obstacles), c.obstacles, false);
   }
@@ -168,7 +151,7 @@ void run_mesh(MeshCommand c) {
   const graphics::MeshFormat format = graphics::mesh_format_for(c.out);
   const InputKind kind = input_kind(c.tree);
   check_mesh_request(c, format, kind);
-  const graphics::MeshOptions options = mesh_options(c);
+  const graphics::MeshOptions& options = c.mesh;
   nlohmann::json j = {{"file", c.tree}, {"output", c.out}};
   // The mesh and its companions (an .obj's .mtl, a .pvd's steps) all, or none of them.
   OutputTransaction outputs;
@@ -203,21 +186,22 @@ void add_mesh_command(CLI::App& app) {
                 "Output: .obj (+.mtl), .ply, .vtp, .pvd or .glb (.glb keeps the instancing)")
       ->required();
   add_input_format_option(m, mesh->format);
-  m->add_flag("--leaves", mesh->leaves, "Mesh leaf nodes as quads, leaf clusters as foliage");
-  add_foliage_options(m, mesh->foliage, mesh->seed);
+  add_leaves_options(m, mesh->mesh, "Mesh leaf nodes as quads, leaf clusters as foliage");
   m->add_option("--ages", mesh->ages,
                 "Ages of a .pvd growth sequence (default: the birth times, at most 20)")
       ->delimiter(',');
-  m->add_option("--edge-length", mesh->edge_length_m,
+  m->add_option("--edge-length", mesh->mesh.edge_length_m,
                 "Target ring edge length in m (ring resolution from radius)")
-      ->check(positive_number(1e6));
-  m->add_option("--max-sides", mesh->max_sides, "Most sides of a ring")->check(CLI::Range(3, 256));
-  add_axis_subdivisions_option(m, mesh->axis_subdivisions);
-  m->add_option("--junctions", mesh->junctions,
-                "separate (a closed tube per chain) or continuous (Reynolds: one surface through "
-                "branch points, bone weights per vertex)")
+      ->check(positive_number(1e6))
       ->capture_default_str();
-  m->add_flag("--reynolds-width", mesh->reynolds_width,
+  m->add_option("--max-sides", mesh->mesh.max_sides, "Most sides of a ring")
+      ->check(CLI::Range(3, 256))
+      ->capture_default_str();
+  add_axis_subdivisions_option(m, mesh->mesh);
+  add_enum_option(m, "--junctions", mesh->mesh.junctions, graphics::kJunctionModeNames,
+                  "How tubes meet at branch points (continuous, after Reynolds, carries bone "
+                  "weights per vertex)");
+  m->add_flag("--reynolds-width", mesh->mesh.reynolds_width,
               "Continuous mode: radius along each axis from Reynolds' expression 1");
   m->add_option("--obstacles", mesh->obstacles,
                 "Scene file (.json, docs/formats.md) whose walls, boxes, spheres and meshes are "

@@ -35,16 +35,11 @@ struct RenderCommand {
   std::string tree;
   std::string format;
   std::string out;
-  std::string color_by;
-  View view = View::kIso;
-  std::string size = "1024x768";
-  bool leaves = false;
-  std::string foliage = "leaves";
-  std::uint64_t seed = 1;
+  // The options bound straight into the render and mesh options, whose defaults are the options'.
+  graphics::RenderOptions render;
+  graphics::MeshOptions mesh;
+  std::string size = graphics::size_text(render.width, render.height);
   bool no_ground = false;
-  double edge_length_m = 0.01;
-  int axis_subdivisions = 1;
-  double ortho_height_m = 0.0;
   std::string frame;
   std::string obstacles;
   double wind_time_s = -1.0;
@@ -63,8 +58,8 @@ graphics::InstancedMesh wind_frame(const RenderCommand& c, const graphics::MeshO
   if (input_kind(c.tree) != InputKind::kTree) {
     throw ValueError("--wind-time needs one tree file (.tree, .treeb, .nwk, .mtg)", c.tree);
   }
-  WindFrame f =
-      posed_in_wind(read_tree_file(c.tree, c.format), options, c.wind, c.wind_time_s, c.seed);
+  WindFrame f = posed_in_wind(read_tree_file(c.tree, c.format), options, c.wind, c.wind_time_s,
+                              options.foliage_seed);
   render.frame = f.frame;
   return graphics::InstancedMesh::single(std::move(f.mesh));
 }
@@ -73,7 +68,7 @@ graphics::InstancedMesh wind_frame(const RenderCommand& c, const graphics::MeshO
 void run_lod_render(const RenderCommand& c, const graphics::MeshOptions& mesh_options,
                     const graphics::RenderOptions& options,
                     std::chrono::steady_clock::time_point t0) {
-  if (c.wind_time_s >= 0.0 || !c.color_by.empty() || !c.frame.empty()) {
+  if (c.wind_time_s >= 0.0 || !c.render.color_by.empty() || !c.frame.empty()) {
     throw ValueError("--lod does not combine with --wind-time, --color-by or --frame");
   }
   const graphics::LodScene scene =
@@ -101,20 +96,14 @@ void run_render(RenderCommand c) {
   c.tree = io::resolve_crown_folder(c.tree);
   refuse_overwriting_input(c.out, {c.tree, c.obstacles, c.frame});
   const auto t0 = std::chrono::steady_clock::now();
-  graphics::RenderOptions options;
-  options.view = c.view;
+  graphics::RenderOptions options = c.render;
   graphics::parse_size(c.size, options.width, options.height);
-  options.color_by = c.color_by;
   options.ground = !c.no_ground;
-  options.ortho_height_m = c.ortho_height_m;
   if (!graphics::render_available()) {
     throw ValueError("fspm was built without VTK (FSPM_WITH_VTK=OFF): rendering is not available");
   }
   graphics::check_image_path(c.out);
-  graphics::MeshOptions mesh_options;
-  set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
-  mesh_options.edge_length_m = c.edge_length_m;
-  mesh_options.axis_subdivisions = c.axis_subdivisions;
+  const graphics::MeshOptions& mesh_options = c.mesh;
   const bool lsystem = input_kind(c.tree) == InputKind::kLsystem;
   check_lsystem_draw_arguments(c.lsystem, {c.tree});
   check_graph_lod(c.graph_lod, {c.tree}, c.lod);
@@ -130,7 +119,7 @@ void run_render(RenderCommand c) {
   nlohmann::json lsystem_summary;
   graphics::InstancedMesh mesh;
   if (c.ray_cast) {
-    if (c.wind_time_s >= 0.0 || !c.color_by.empty()) {
+    if (c.wind_time_s >= 0.0 || !options.color_by.empty()) {
       throw ValueError("--ray-cast takes no --lod, --wind-time or --color-by");
     }
     RayCastInput in = load_ray_cast_input({c.tree}, mesh_options);
@@ -147,9 +136,9 @@ void run_render(RenderCommand c) {
     mesh = io::load_render_input(c.tree, c.format, mesh_options, c.graph_lod.lod());
   }
   if (!c.frame.empty()) options.frame = io::frame_of(c.frame, mesh_options);
-  if (c.leaves) report_missing_leaves(mesh, c.tree);
-  if (!c.color_by.empty()) {
-    for (const auto& m : mesh.meshes) (void)m.attribute(c.color_by);  // unknown: ValueError
+  if (mesh_options.leaves) report_missing_leaves(mesh, c.tree);
+  if (!options.color_by.empty()) {
+    for (const auto& m : mesh.meshes) (void)m.attribute(options.color_by);  // unknown: ValueError
   }
   // Obstacles take 0 for every attribute; the renderer draws them in stone all the same.
   if (!c.obstacles.empty()) {
@@ -191,18 +180,18 @@ void add_render_command(CLI::App& app) {
   add_lsystem_draw_options(r, render->lsystem);
   r->add_option("-o,--output", render->out, "Image: .png, .tif or .exr")->required();
   add_input_format_option(r, render->format);
-  r->add_option("--color-by", render->color_by,
+  r->add_option("--color-by", render->render.color_by,
                 "Colour by a vertex attribute (age, birth_time, order, physiological_age or a "
                 "tree attribute) with a scalar bar");
-  add_enum_option(r, "--view", render->view, kViews, view_name, "Camera direction");
+  add_enum_option(r, "--view", render->render.view, kViews, view_name, "Camera direction");
   r->add_option("--size", render->size, "WIDTHxHEIGHT in pixels")->capture_default_str();
-  r->add_flag("--leaves", render->leaves, "Show leaves and leaf clusters");
-  add_foliage_options(r, render->foliage, render->seed);
+  add_leaves_options(r, render->mesh, "Show leaves and leaf clusters");
   r->add_flag("--no-ground", render->no_ground, "Leave out the ground plane");
-  add_axis_subdivisions_option(r, render->axis_subdivisions);
-  r->add_option("--edge-length", render->edge_length_m, "Target ring edge length in m")
-      ->check(positive_number(1e6));
-  r->add_option("--ortho-height", render->ortho_height_m,
+  add_axis_subdivisions_option(r, render->mesh);
+  r->add_option("--edge-length", render->mesh.edge_length_m, "Target ring edge length in m")
+      ->check(positive_number(1e6))
+      ->capture_default_str();
+  r->add_option("--ortho-height", render->render.ortho_height_m,
                 "Parallel projection whose image height spans this many metres (a known scale)")
       ->check(positive_number(1e6));
   r->add_option("--frame", render->frame,

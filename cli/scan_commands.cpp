@@ -32,15 +32,14 @@ struct EncodeCommand {
   std::string input;
   std::string output;
   std::string species = "default";
-  std::optional<double> beta, gamma, f_s, root_diameter_m, bin_length_m;
+  // Over the species' values (Table 3.1).
+  std::optional<double> beta, gamma, f_s;
+  // The options bound straight into the encoder's options, whose defaults are the options'.
+  scans::EncodeOptions encode;
   std::string skeleton;
   std::string cylinders;
   std::string branch_skeleton;
-  int neighbours = 8;
-  bool keep_ground = false;
-  bool pirk_split = false;
-  std::optional<double> main_branch_share;
-  std::optional<double> main_branch_reach;
+  bool pirk_split = false;  // the inverse of encode.follow_main_axes
   std::uint64_t seed = 1;
   bool json = false;
 };
@@ -120,18 +119,12 @@ void run_encode(const EncodeCommand& o) {
       refuse_same_output(outputs[i].first, outputs[i].second, outputs[j].first, outputs[j].second);
     }
   }
-  scans::EncodeOptions options;
+  scans::EncodeOptions options = o.encode;
   options.species = scans::species_by_name(o.species);
   if (o.beta) options.species.beta = *o.beta;
   if (o.gamma) options.species.gamma = *o.gamma;
   if (o.f_s) options.species.f_s = *o.f_s;
-  options.root_diameter_m = o.root_diameter_m;
-  options.bin_length_m = o.bin_length_m.value_or(0.0);
-  options.neighbours = o.neighbours;
-  options.keep_ground = o.keep_ground;
   options.follow_main_axes = !o.pirk_split;
-  if (o.main_branch_share) options.main_branch_share = *o.main_branch_share;
-  if (o.main_branch_reach) options.main_branch_reach = *o.main_branch_reach;
   // Stray returns metres off the tree would be joined to it and widen its crown.
   const scans::IsolatedPoints cleaned = scans::remove_isolated_points(load_input(o));
   const scans::PointSet& points = cleaned.kept;
@@ -151,7 +144,7 @@ void run_encode(const EncodeCommand& o) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   scans::TreeMeasurements m = scans::measure_tree(points, r.full_skeleton);
-  if (!o.root_diameter_m && !m.dbh_m && m.tree_found) {
+  if (!options.root_diameter_m && !m.dbh_m && m.tree_found) {
     // d_root of eq. 3.1 comes from a circle through the lowest trunk points, which a trunk
     // without a breast-height diameter does not confirm (an airborne scan: a handful of points).
     m.warnings.push_back(
@@ -214,14 +207,16 @@ void add_encode_command(CLI::App& app) {
   e->add_option("--beta", o->beta, "Edge weight exponent |u-v|^beta")->check(positive_number(10));
   e->add_option("--gamma", o->gamma, "Allometric exponent of eq. 3.1")->check(number_in(0, 10));
   e->add_option("--fs", o->f_s, "Cluster factor f_s of eq. 3.2")->check(positive_number(10));
-  e->add_option("--root-diameter", o->root_diameter_m,
+  e->add_option("--root-diameter", o->encode.root_diameter_m,
                 "Trunk diameter d_root in m (default: fitted to the trunk points)")
       ->check(positive_number(100));
-  e->add_option("--bin-length", o->bin_length_m,
+  e->add_option("--bin-length", o->encode.bin_length_m,
                 "Skeleton node spacing in m (default: 1/40 "
                 "of the longest path)")
       ->check(positive_number(1000));
-  e->add_option("--neighbours", o->neighbours, "k of the neighbour graph")->check(number_in(1, 64));
+  e->add_option("--neighbours", o->encode.neighbours, "k of the neighbour graph")
+      ->check(number_in(1, 64))
+      ->capture_default_str();
   e->add_option("--skeleton", o->skeleton, "Also write the main skeleton as a tree file");
   e->add_option("--cylinders", o->cylinders,
                 "Also write the fitted cylinders as CSV with TreeQSM's columns (start, axis, "
@@ -229,19 +224,21 @@ void add_encode_command(CLI::App& app) {
   e->add_option("--branch-skeleton", o->branch_skeleton,
                 "Also write the skeleton of every branch the scan shows (before the cluster "
                 "split of eq. 3.2, short side tips removed) as a tree file");
-  e->add_flag("--keep-ground", o->keep_ground,
+  e->add_flag("--keep-ground", o->encode.keep_ground,
               "Keep points near the cloud's lower envelope (default: removed as ground)");
   e->add_flag("--pirk-split", o->pirk_split,
               "Main skeleton by eq. 3.2 alone, as Pirk (default: the trunk to the top and the "
               "main limbs to their tips, eq. 3.2 for the smaller branches)");
-  e->add_option("--main-branch-share", o->main_branch_share,
+  e->add_option("--main-branch-share", o->encode.main_branch_share,
                 "Share of the skeleton's length a limb must carry to stay in the main skeleton "
-                "without passing eq. 3.2 (default 0.05)")
-      ->check(number_in(0, 1));
-  e->add_option("--main-branch-reach", o->main_branch_reach,
+                "without passing eq. 3.2")
+      ->check(number_in(0, 1))
+      ->capture_default_str();
+  e->add_option("--main-branch-reach", o->encode.main_branch_reach,
                 "Share of the skeleton's longest path a limb must reach beyond its fork to stay "
-                "in the main skeleton without passing eq. 3.2 (default 0.1; 0: off)")
-      ->check(number_in(0, 1));
+                "in the main skeleton without passing eq. 3.2 (0: off)")
+      ->check(number_in(0, 1))
+      ->capture_default_str();
   e->add_option("--seed", o->seed, "Seed of the simulated scan of a tree model")
       ->check(number_in(0, kMaxSeed));
   e->add_flag("--json", o->json,
@@ -254,8 +251,9 @@ void add_encode_command(CLI::App& app) {
 struct ScanCommand {
   std::string tree;
   std::string output;
+  // The options bound straight into the simulator's options, whose defaults are the options'.
   scans::ScanOptions options;
-  double noise_mm = 3.0;
+  double noise_mm = options.range_noise_m * 1000.0;  // the range noise in mm
   std::uint64_t seed = 1;
   bool json = false;
 };
@@ -279,16 +277,20 @@ void add_scan_command(CLI::App& app) {
   s->add_option("TREE", o->tree, "The tree (.tree, .treeb, .nwk, .mtg)")->required();
   s->add_option("-o,--output", o->output, "Point set to write (.ply or .xyz)")->required();
   s->add_option("--scanners", o->options.scanners, "Scanner positions around the tree")
-      ->check(number_in(1, 64));
+      ->check(number_in(1, 64))
+      ->capture_default_str();
   s->add_option("--density", o->options.density_per_m2,
                 "Points per m^2 at the scanner distance and normal incidence")
-      ->check(positive_number(1e8));
+      ->check(positive_number(1e8))
+      ->capture_default_str();
   s->add_option("--noise-mm", o->noise_mm, "Standard deviation of the range error in mm")
-      ->check(number_in(0, 1000));
+      ->check(number_in(0, 1000))
+      ->capture_default_str();
   s->add_option("--min-radius", o->options.min_radius_m,
                 "Internodes thinner than this (m) are "
                 "not scanned")
-      ->check(number_in(0, 100));
+      ->check(number_in(0, 100))
+      ->capture_default_str();
   s->add_option("--seed", o->seed, "Seed of the random generator")->check(number_in(0, kMaxSeed));
   s->add_flag("--json", o->json, "One JSON object on stdout: points, output");
   s->callback([o] { run_scan(*o); });

@@ -33,18 +33,16 @@ struct StagesOptions {
   double at = -1.0;
   int steps = 0;
   int season_years = 0;
-  bool added = false;
-  bool added_overlap = false;
-  double added_gamma = 1.0;
-  stages::ProfileChoice growth_profiles = stages::ProfileChoice::kConstant;
-  bool shed_branches = false;
+  // The options bound straight into the model's and the mesh skeleton's parameters, whose
+  // defaults are the options'.
+  stages::StagesParams params;
+  stages::MeshSkeletonParams skeleton_params;
   double profile_m = 0.0;
   std::vector<std::string> age_branch;   // NODE:DT (Pirk 5.4.1)
   std::vector<std::string> copy_branch;  // FROM:TO
   bool json = false;
   // Mesh input (Pirk 5.2.1).
   std::string skeleton;
-  double join_distance_m = 0.0;
   bool uniform_laplacian = false;
 };
 
@@ -56,8 +54,7 @@ TreeGraph read_given_tree(const StagesOptions& o, nlohmann::json& info) {
   const scans::GroupedMesh m = scans::read_mesh_file(o.tree);
   const double read_seconds = seconds_since(t0);
   const auto t1 = std::chrono::steady_clock::now();
-  stages::MeshSkeletonParams params;
-  params.join_distance_m = o.join_distance_m;
+  stages::MeshSkeletonParams params = o.skeleton_params;
   if (o.uniform_laplacian) params.contraction.weights = stages::LaplacianWeights::kUniform;
   stages::MeshSkeleton s;
   try {
@@ -181,12 +178,8 @@ void run_stages(const StagesOptions& o) {
   nlohmann::json mesh_info;
   const TreeGraph tree = read_given_tree(o, mesh_info);
   auto t0 = std::chrono::steady_clock::now();
-  stages::StagesParams params;
-  params.added.enabled = o.added || o.added_overlap;
-  params.added.overlap = o.added_overlap;
-  params.added.gamma = o.added_gamma;
-  params.profiles = o.growth_profiles;
-  params.shed.enabled = o.shed_branches;
+  stages::StagesParams params = o.params;
+  params.added.enabled = params.added.enabled || params.added.overlap;  // --added-overlap: --added
   params.edits = branch_edits(o);
   const stages::DevelopmentalModel model(tree, params);
   const double analysis_seconds = seconds_since(t0);
@@ -201,7 +194,7 @@ void run_stages(const StagesOptions& o) {
   }
   std::size_t branches = 0;
   for (NodeId i = 0; i < tree.size(); ++i) branches += tree.kind(i) == OrganKind::kInternode;
-  if (o.shed_branches && model.shed_branch_count() == 0) {
+  if (params.shed.enabled && model.shed_branch_count() == 0) {
     spdlog::warn(
         "--shed-branches: no radius of {} holds more pipes than its branches need, so no shed "
         "branch was read back; a tree grown by fspm keeps them with --set keep_shed_pipes=true",
@@ -249,19 +242,20 @@ void add_stages_commands(CLI::App& app) {
   s->add_option("--season-years", o->season_years,
                 "Seasonal growth over N years (Pirk eq. 5.11, c = 1.2)")
       ->check(number_in(1, 10000));
-  s->add_flag("--added", o->added,
+  s->add_flag("--added", o->params.added.enabled,
               "Add the branches a young tree had below the crown and shed them as the crown "
               "ratio falls (Pirk 5.3.5-5.3.6, eq. 5.10)");
-  s->add_flag("--added-overlap", o->added_overlap,
+  s->add_flag("--added-overlap", o->params.added.overlap,
               "--added, and also fill the overlap region above the crown base where stratified "
               "clipping finds more tissue than main-axis cutting (Pirk 5.3.5)");
-  s->add_option("--added-gamma", o->added_gamma,
+  s->add_option("--added-gamma", o->params.added.gamma,
                 "gamma of eq. 5.10 for --added (1: the last stage is the given tree; < 1 keeps "
                 "some added branches, > 1 sheds them earlier)")
-      ->check(number_in(1e-6, 100.0));
-  add_enum_option(s, "--growth-profiles", o->growth_profiles, stages::kProfileChoiceNames,
+      ->check(number_in(1e-6, 100.0))
+      ->capture_default_str();
+  add_enum_option(s, "--growth-profiles", o->params.profiles, stages::kProfileChoiceNames,
                   "Growth-rate profiles of the chains (Pirk 5.3.1)");
-  s->add_flag("--shed-branches", o->shed_branches,
+  s->add_flag("--shed-branches", o->params.shed.enabled,
               "Stand a shed branch wherever a radius holds more pipes than its children need "
               "(pipe model, Shinozaki et al. 1964), grown as its closest lateral and shed when "
               "complete");
@@ -281,7 +275,7 @@ void add_stages_commands(CLI::App& app) {
       ->check(number_in(1e-3, 1000.0));
   s->add_option("--skeleton", o->skeleton,
                 "With a mesh: also write the skeleton found (the given tree) to this tree file");
-  s->add_option("--join-distance", o->join_distance_m,
+  s->add_option("--join-distance", o->skeleton_params.join_distance_m,
                 "With a mesh: t_dist of Pirk eq. 5.1 in metres, contracted vertices closer than "
                 "this are joined (default: the median distance a vertex moved, about the median "
                 "branch radius)")

@@ -44,31 +44,20 @@ struct ViewCommand {
   std::vector<std::string> trees;
   std::string format;
   std::vector<double> ages;
-  std::string color_by;
-  std::string screenshot;
-  std::string size = "1280x800";
+  // The options bound straight into the viewer and mesh options, whose defaults are the options'.
+  graphics::ViewerOptions viewer;
+  graphics::MeshOptions mesh;
+  std::string size = graphics::size_text(viewer.width, viewer.height);
   int frames = 0;  // 0: not given
-  bool leaves = false;
-  std::string foliage = "leaves";
-  std::uint64_t seed = 1;
   bool no_shadows = false;
   bool no_panel = false;
-  double pitch_deg = 20.0;
-  double yaw_deg = -51.56620156177409;  // ViewerOptions::yaw_deg
-  std::vector<double> look_at;          // empty or X, Y, Z
-  double distance_m = 0.0;
-  int shadow_cascades = 0;
+  std::vector<double> look_at;  // empty or X, Y, Z
   bool lod = false;
   double lod_distance_m = 0.0;
   bool no_impostors = false;
   bool no_ground = false;
   bool full_detail = false;  // no coarse meshes at any distance
-  int max_sides = 16;
-  int axis_subdivisions = 1;
-  double tessellate = 0.0;  // Reynolds' tessellation up to this level (0: none)
-  double tessellation_distance_m = 0.0;
-  bool tessellate_on_cpu = false;
-  int stages = 0;  // developmental stages per tree file (0: none)
+  int stages = 0;            // developmental stages per tree file (0: none)
   bool wind = false;
   WindArguments wind_args;
   bool ray_cast = false;
@@ -77,15 +66,24 @@ struct ViewCommand {
   bool json = false;
 };
 
+// The mesh options' defaults with the leaves of the command line (--leaves, --foliage, --seed):
+// the wind's and the ray-cast crowns' meshes take no other mesh option.
+graphics::MeshOptions leaves_options(const ViewCommand& c) {
+  graphics::MeshOptions options;
+  options.leaves = c.mesh.leaves;
+  options.foliage = c.mesh.foliage;
+  options.foliage_seed = c.mesh.foliage_seed;
+  return options;
+}
+
 // fspm view --lod: one scene (or tree, or plant) with its plants chosen per instance each frame.
 void run_lod_view(const ViewCommand& c, const graphics::ViewerOptions& options,
                   std::chrono::steady_clock::time_point t0) {
   if (c.trees.size() != 1 || !c.ages.empty()) {
     throw ValueError("--lod shows one scene, tree or plant file, without --ages");
   }
-  graphics::MeshOptions mesh_options;
-  set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
-  mesh_options.axis_subdivisions = c.axis_subdivisions;
+  graphics::MeshOptions mesh_options = leaves_options(c);
+  mesh_options.axis_subdivisions = c.mesh.axis_subdivisions;
   const graphics::LodScene scene =
       io::load_lod_scene(c.trees[0], c.format, mesh_options, graphics::LodOptions{}, true, "");
   graphics::LodOptions lod = io::lod_options(scene, c.lod_distance_m);
@@ -97,7 +95,7 @@ void run_lod_view(const ViewCommand& c, const graphics::ViewerOptions& options,
       read_scene_description(c.trees[0]).terrain.has_value()) {
     with_terrain.ground = false;
   }
-  if (!c.screenshot.empty()) rerun_under_xvfb_if_needed();
+  if (!options.screenshot.empty()) rerun_under_xvfb_if_needed();
   const graphics::ViewerStats stats = graphics::run_lod_viewer(scene, lod, with_terrain);
   if (c.json) {
     print_json({{"frames", stats.frames},
@@ -108,30 +106,21 @@ void run_lod_view(const ViewCommand& c, const graphics::ViewerOptions& options,
                 {"impostors", stats.impostors},
                 {"plants", scene.placements.size()},
                 {"lod_distance_m", lod.max_distance_m},
-                {"screenshot", c.screenshot},
+                {"screenshot", options.screenshot},
                 {"seconds", seconds_since(t0)}});
   }
 }
 
 graphics::ViewerOptions viewer_options(const ViewCommand& c) {
-  graphics::ViewerOptions options;
+  graphics::ViewerOptions options = c.viewer;
   graphics::parse_size(c.size, options.width, options.height);
-  options.color_by = c.color_by;
-  options.screenshot = c.screenshot;
   // --frames: before the screenshot, or, without one, before the window closes by itself.
   options.frames = c.frames > 0 ? c.frames : 1;
-  if (c.screenshot.empty()) options.close_after_frames = c.frames;
+  if (options.screenshot.empty()) options.close_after_frames = c.frames;
   options.shadows = !c.no_shadows;
   options.panel = !c.no_panel;
   options.ground = !c.no_ground;
-  options.pitch_deg = c.pitch_deg;
-  options.yaw_deg = c.yaw_deg;
   if (!c.look_at.empty()) options.look_at = {c.look_at[0], c.look_at[1], c.look_at[2]};
-  options.camera_distance_m = c.distance_m;
-  options.shadow_cascades = c.shadow_cascades;
-  options.tessellation_max_level = c.tessellate;
-  options.tessellation_distance_m = c.tessellation_distance_m;
-  options.tessellation_on_cpu = c.tessellate_on_cpu;
   return options;
 }
 
@@ -199,16 +188,13 @@ double mesh_view_steps(const ViewCommand& c, const std::vector<io::SteppedInput>
                        std::vector<graphics::InstancedMesh>& far) {
   if (ages.empty()) ages.push_back(std::numeric_limits<double>::infinity());
   std::sort(ages.begin(), ages.end());
-  graphics::MeshOptions mesh_options;
-  set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
-  mesh_options.max_sides = c.max_sides;
-  mesh_options.min_sides = std::min(mesh_options.min_sides, c.max_sides);
-  mesh_options.axis_subdivisions = c.axis_subdivisions;
+  graphics::MeshOptions mesh_options = c.mesh;
+  mesh_options.min_sides = std::min(mesh_options.min_sides, mesh_options.max_sides);
   steps = io::steps_side_by_side(sources, ages, mesh_options);
   graphics::MeshOptions coarse = mesh_options;
   coarse.axis_subdivisions = 1;  // far away: straight internodes
   coarse.edge_length_m *= 4.0;
-  coarse.max_sides = std::min(6, c.max_sides);
+  coarse.max_sides = std::min(6, mesh_options.max_sides);
   coarse.min_sides = 3;
   far = io::steps_side_by_side(sources, ages, coarse);
   return coarse.edge_length_m;
@@ -231,7 +217,7 @@ void print_view_json(const ViewCommand& c, const std::vector<graphics::Instanced
               {"steps", steps.size()},
               {"meshes", meshes},
               {"instances", instances},
-              {"screenshot", c.screenshot},
+              {"screenshot", c.viewer.screenshot},
               {"seconds", seconds_since(t0)}});
 }
 
@@ -247,16 +233,15 @@ void run_wind_view(const ViewCommand& c, graphics::ViewerOptions options,
     throw ValueError("--wind takes no --ages, --stages or --lod");
   }
   const TreeGraph tree = read_tree_file(c.trees[0], c.format);
-  graphics::MeshOptions mesh_options;
-  set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
+  const graphics::MeshOptions mesh_options = leaves_options(c);
   auto wind = std::make_shared<graphics::ViewerWind>();
   wind->mesh = skinnable_mesh(tree, mesh_options);
   wind->skin = graphics::skin_mesh(tree, wind->mesh);
-  wind->wind = wind_options(c.wind_args, c.wind_args.duration_s, c.seed);
-  if (!c.color_by.empty()) (void)wind->mesh.attribute(c.color_by);
+  wind->wind = wind_options(c.wind_args, c.wind_args.options.duration_s, mesh_options.foliage_seed);
+  if (!options.color_by.empty()) (void)wind->mesh.attribute(options.color_by);
   const std::vector<graphics::InstancedMesh> steps{graphics::InstancedMesh::single(wind->mesh)};
   options.wind = std::move(wind);
-  if (!c.screenshot.empty()) rerun_under_xvfb_if_needed();
+  if (!options.screenshot.empty()) rerun_under_xvfb_if_needed();
   const std::vector<double> ages{std::numeric_limits<double>::infinity()};
   const graphics::ViewerStats stats = graphics::run_instanced_viewer(steps, ages, options);
   if (c.json) print_view_json(c, steps, stats, t0);
@@ -269,12 +254,10 @@ void run_ray_cast_view(const ViewCommand& c, graphics::ViewerOptions options,
   if (!c.ages.empty() || c.stages > 0 || c.lod || c.wind) {
     throw ValueError("--ray-cast takes no --ages, --stages, --lod or --wind");
   }
-  graphics::MeshOptions mesh_options;
-  set_leaves(mesh_options, c.leaves, c.foliage, c.seed);
-  RayCastInput in = load_ray_cast_input(c.trees, mesh_options);
+  RayCastInput in = load_ray_cast_input(c.trees, leaves_options(c));
   options.relief_crowns = std::move(in.crowns);
   const std::vector<graphics::InstancedMesh> steps{std::move(in.meshes)};
-  if (!c.screenshot.empty()) rerun_under_xvfb_if_needed();
+  if (!options.screenshot.empty()) rerun_under_xvfb_if_needed();
   const std::vector<double> ages{std::numeric_limits<double>::infinity()};
   const graphics::ViewerStats stats = graphics::run_instanced_viewer(steps, ages, options);
   if (c.json) print_view_json(c, steps, stats, t0);
@@ -288,7 +271,7 @@ void run_view(ViewCommand c) {
   }
   graphics::ViewerOptions options = viewer_options(c);
   if (c.stages > 0) options.step_label = "time";
-  if (!c.screenshot.empty()) graphics::check_image_path(c.screenshot);
+  if (!options.screenshot.empty()) graphics::check_image_path(options.screenshot);
   check_lsystem_draw_arguments(c.lsystem, c.trees);
   check_graph_lod(c.graph_lod, c.trees, c.lod);
   if (c.wind) {
@@ -320,12 +303,12 @@ void run_view(ViewCommand c) {
       options.coarse_edge_m = 0.0;
     }
   }
-  if (!c.color_by.empty()) {
+  if (!options.color_by.empty()) {
     for (const auto& step : steps) {
-      for (const auto& m : step.meshes) (void)m.attribute(c.color_by);
+      for (const auto& m : step.meshes) (void)m.attribute(options.color_by);
     }
   }
-  if (!c.screenshot.empty()) rerun_under_xvfb_if_needed();
+  if (!options.screenshot.empty()) rerun_under_xvfb_if_needed();
   const graphics::ViewerStats stats = graphics::run_instanced_viewer(steps, ages, options, far);
   if (c.json) print_view_json(c, steps, stats, t0);
 }
@@ -345,30 +328,30 @@ void add_view_command(CLI::App& app) {
                 "Growth steps shown with [ and ]: plant ages of compressed graphs (default: each "
                 "cycle), latest birth times of trees")
       ->delimiter(',');
-  v->add_option("--color-by", view->color_by, "Colour by a vertex attribute");
-  v->add_flag("--leaves", view->leaves, "Show leaves and leaf clusters");
-  add_foliage_options(v, view->foliage, view->seed);
+  v->add_option("--color-by", view->viewer.color_by, "Colour by a vertex attribute");
+  add_leaves_options(v, view->mesh, "Show leaves and leaf clusters");
   v->add_flag("--no-shadows", view->no_shadows, "Start without shadows");
   v->add_flag("--no-panel", view->no_panel,
               "Hide the controls panel (growth step, shadows, level-of-detail distance, colour "
               "attribute, frame time and triangles)");
-  v->add_option("--pitch-deg", view->pitch_deg,
+  v->add_option("--pitch-deg", view->viewer.pitch_deg,
                 "Starting camera elevation above the horizontal, degrees (a few: a low view)")
       ->check(CLI::Range(-89.0, 89.0))
       ->capture_default_str();
-  v->add_option("--yaw-deg", view->yaw_deg,
+  v->add_option("--yaw-deg", view->viewer.yaw_deg,
                 "Starting camera azimuth, degrees counter-clockwise from +x (the eye's direction "
                 "from the point looked at)")
-      ->check(CLI::Range(-360.0, 360.0));
+      ->check(CLI::Range(-360.0, 360.0))
+      ->capture_default_str();
   v->add_option("--look-at", view->look_at,
                 "Starting point looked at, X,Y,Z in m (default: the centre of the scene)")
       ->delimiter(',')
       ->expected(3);
-  v->add_option("--distance", view->distance_m,
+  v->add_option("--distance", view->viewer.camera_distance_m,
                 "Starting camera distance from the point looked at, m (default: the whole scene "
                 "in view)")
       ->check(positive_number(1e9));
-  v->add_option("--shadow-cascades", view->shadow_cascades,
+  v->add_option("--shadow-cascades", view->viewer.shadow_cascades,
                 "Cascaded shadow maps: N maps over slices of the view up to three camera "
                 "distances away, nearest first, before the one map of the whole scene (sharp "
                 "shadows near the camera over a landscape; one redrawn a frame while the camera "
@@ -376,7 +359,7 @@ void add_view_command(CLI::App& app) {
       ->check(CLI::Range(0, 4))
       ->capture_default_str();
   v->add_option("--size", view->size, "Window WIDTHxHEIGHT")->capture_default_str();
-  v->add_option("--screenshot", view->screenshot,
+  v->add_option("--screenshot", view->viewer.screenshot,
                 "Render hidden, write this image after --frames frames and exit");
   v->add_option("--frames", view->frames,
                 "Frames before the screenshot (default 1); without --screenshot, the window "
@@ -408,14 +391,14 @@ void add_view_command(CLI::App& app) {
               "Never draw the coarse meshes (by default they take over where their ring edges "
               "span two pixels, or from 1.5 times the starting distance)")
       ->excludes(lod);
-  add_axis_subdivisions_option(v, view->axis_subdivisions);
-  v->add_option("--max-sides", view->max_sides,
+  add_axis_subdivisions_option(v, view->mesh);
+  v->add_option("--max-sides", view->mesh.max_sides,
                 "Most sides of a ring (4: Reynolds' coarse branch mesh, for --tessellate)")
       ->check(CLI::Range(3, 256))
       ->capture_default_str()
       ->excludes(lod);
   CLI::Option* tessellate =
-      v->add_option("--tessellate", view->tessellate,
+      v->add_option("--tessellate", view->viewer.tessellation_max_level,
                     "Tessellate the opaque triangles up to level L (Reynolds' expression 2: finer "
                     "near the camera and for edges longer on the screen), new vertices on curved "
                     "PN triangles; tessellation shaders where the context has them, else on the "
@@ -423,11 +406,11 @@ void add_view_command(CLI::App& app) {
           ->check(CLI::Range(1.0, 64.0))
           ->excludes(lod)
           ->excludes(v->get_option("--wind"));
-  v->add_option("--tessellation-distance", view->tessellation_distance_m,
+  v->add_option("--tessellation-distance", view->viewer.tessellation_distance_m,
                 "D_max of expression 2 in m (default 4 times the starting camera distance)")
       ->check(positive_number(1e9))
       ->needs(tessellate);
-  v->add_flag("--tessellate-on-cpu", view->tessellate_on_cpu,
+  v->add_flag("--tessellate-on-cpu", view->viewer.tessellation_on_cpu,
               "Tessellate on the CPU even where tessellation shaders exist (one level for the "
               "scene, from the starting camera distance)")
       ->needs(tessellate);

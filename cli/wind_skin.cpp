@@ -20,19 +20,21 @@ void add_wind_options(CLI::App* command, WindArguments& wind, bool frames) {
                    "square of their radius)")
       ->check(number_in(0.0, 90.0))
       ->capture_default_str();
-  command->add_option("--wind-frequency", wind.frequency_hz, "Sway frequency in Hz")
+  command->add_option("--wind-frequency", wind.options.frequency_hz, "Sway frequency in Hz")
       ->check(positive_number(100.0))
       ->capture_default_str();
   command->add_option("--wind-direction", wind.direction, "Wind direction X,Y (horizontal)")
       ->delimiter(',')
       ->expected(2);
   if (frames) {
-    command->add_option("--fps", wind.fps, "Keyframes per second of the wind animation")
+    command
+        ->add_option("--fps", wind.options.frames_per_second,
+                     "Keyframes per second of the wind animation")
         ->check(positive_number(1000.0))
         ->capture_default_str();
   } else {
     command
-        ->add_option("--wind-period", wind.duration_s,
+        ->add_option("--wind-period", wind.options.duration_s,
                      "Length of the looping wind clip the time falls in (as --animate of fspm "
                      "mesh), in s")
         ->check(positive_number(1e5))
@@ -42,14 +44,12 @@ void add_wind_options(CLI::App* command, WindArguments& wind, bool frames) {
 
 graphics::WindOptions wind_options(const WindArguments& wind, double duration_s,
                                    std::uint64_t seed) {
-  graphics::WindOptions o;
+  graphics::WindOptions o = wind.options;
   o.amplitude_rad = wind.amplitude_deg * kDegree;
-  o.frequency_hz = wind.frequency_hz;
-  o.frames_per_second = wind.fps;
   o.duration_s = duration_s;
-  o.direction = {wind.direction.at(0), wind.direction.at(1), 0.0};
+  if (!wind.direction.empty()) o.direction = {wind.direction.at(0), wind.direction.at(1), 0.0};
   o.seed = seed;
-  graphics::validate(o);
+  o.validate();
   return o;
 }
 
@@ -80,7 +80,7 @@ WindFrame posed_in_wind(const TreeGraph& tree, const graphics::MeshOptions& opti
   const graphics::TriangleMesh mesh = skinnable_mesh(tree, options);
   const graphics::Skin skin = graphics::skin_mesh(tree, mesh);
   const std::vector<Eigen::Quaternionf> rotations =
-      graphics::wind_pose(skin.skeleton, wind_options(wind, wind.duration_s, seed), t_s);
+      graphics::wind_pose(skin.skeleton, wind_options(wind, wind.options.duration_s, seed), t_s);
   WindFrame out;
   out.mesh =
       graphics::pose_mesh(mesh, skin, graphics::joint_world_matrices(skin.skeleton, rotations));

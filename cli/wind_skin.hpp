@@ -16,17 +16,18 @@
 namespace fspm::cli {
 
 struct WindArguments {
+  // --wind-frequency, --fps and --wind-period bound straight into the wind model's options, whose
+  // defaults are theirs.
+  graphics::WindOptions options;
+  // The sway in degrees on the command line (the model's own default is 0.12 rad, 6.9 degrees).
   double amplitude_deg = 7.0;
-  double frequency_hz = 0.5;
-  double fps = 24.0;
-  double duration_s = 4.0;
-  std::vector<double> direction{1.0, 0.0};
+  std::vector<double> direction;  // X, Y; empty: the model's (+x)
 };
 
 // --wind-amplitude, --wind-frequency, --wind-direction (and --fps when `frames`).
 void add_wind_options(CLI::App* command, WindArguments& wind, bool frames);
 
-// The wind model's options; the seed draws the phases.
+// The wind model's options for a clip `duration_s` long; the seed draws the phases.
 graphics::WindOptions wind_options(const WindArguments& wind, double duration_s,
                                    std::uint64_t seed);
 

@@ -13,6 +13,27 @@
 #include "fspm/error.hpp"
 
 namespace fspm::crown {
+
+void CrownOptions::validate() const {
+  if (!(height_m > 0.0) || !std::isfinite(height_m)) {
+    throw ValueError("crown: height_m must be > 0");
+  }
+  if (!(depth_ratio > 0.0) || !std::isfinite(depth_ratio)) {
+    throw ValueError("crown: depth_ratio must be > 0");
+  }
+  if (!(relief_weight >= 0.0 && relief_weight < 2.0)) {
+    throw ValueError("crown: relief_weight must be in [0, 2)");
+  }
+  if (cubemap_size < 0 || cubemap_size > 2048) {
+    throw ValueError("crown: cubemap_size must be 0..2048");
+  }
+  if (working_pixels < 16) throw ValueError("crown: working_pixels must be >= 16");
+  if (trunk_height_m < 0.0 || trunk_radius_m < 0.0) {
+    throw ValueError("crown: trunk_height_m and trunk_radius_m must be >= 0");
+  }
+  inflation.validate();
+  relief.validate();
+}
 namespace {
 
 // Pixel to metre frame: x right from the crown's centroid column, z up from the ground.
@@ -33,19 +54,7 @@ void check(const Raster& photo, const Mask& mask, const CrownOptions& o) {
                      std::to_string(photo.height) + " but the mask " + std::to_string(mask.width) +
                      "x" + std::to_string(mask.height) + ": they must be the same size");
   }
-  if (!(o.height_m > 0.0) || !std::isfinite(o.height_m))
-    throw ValueError("the crown height must be > 0 m");
-  if (!(o.depth_ratio > 0.0) || !std::isfinite(o.depth_ratio)) {
-    throw ValueError("the depth ratio must be > 0");
-  }
-  if (!(o.relief_weight >= 0.0 && o.relief_weight < 2.0)) {
-    throw ValueError("the relief weight must be in [0, 2)");
-  }
-  if (o.cubemap_size < 0 || o.cubemap_size > 2048) throw ValueError("cubemap size must be 0..2048");
-  if (o.working_pixels < 16) throw ValueError("the working resolution must be >= 16 pixels");
-  if (o.trunk_height_m < 0.0 || o.trunk_radius_m < 0.0) {
-    throw ValueError("trunk height and radius must be >= 0");
-  }
+  o.validate();
 }
 
 // The crown's extent is the base mesh's: its silhouette vertices lie on the mask's border, so the

@@ -33,6 +33,9 @@ struct CrownOptions {
   // The crown's bounding box is reduced to at most this many pixels on its longer side
   // (crown/working_resolution.hpp); its border keeps the photograph's resolution.
   int working_pixels = 512;
+
+  // Throws ValueError naming the first field out of range.
+  void validate() const;
 };
 
 struct CrownModel {

@@ -134,9 +134,13 @@ double bilaplacian_weight(int dx, int dy) {
   return 0.0;
 }
 
+void InflationOptions::validate() const {
+  if (!(k > 0.0)) throw ValueError("inflation: k (the outer silhouette's depth) must be > 0");
+}
+
 InflatedSheet inflate(const Mask& mask, const InflationOptions& options, const Raster& coverage) {
   if (mask.count() == 0) throw ValueError("the crown mask has no crown pixel");
-  if (!(options.k > 0.0)) throw ValueError("the outer silhouette depth k must be > 0");
+  options.validate();
   int unknowns = 0;
   InflatedSheet sheet = number_pixels(mask, options.connectivity, unknowns);
   if (unknowns > 0) solve(sheet, mask, options.k);  // else one or two pixels thick: flat

@@ -18,6 +18,9 @@ namespace fspm::crown {
 struct InflationOptions {
   double k = 2.0;  // depth of the outer silhouette, pixels (Argudo Fig. 4.13 uses 2 and 8)
   Connectivity connectivity = Connectivity::kEight;
+
+  // Throws ValueError naming the first field out of range.
+  void validate() const;
 };
 
 // The front half of the crown in pixel units: x = column, y = row (down), z >= 0 toward the

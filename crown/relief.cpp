@@ -10,8 +10,12 @@
 
 namespace fspm::crown {
 
+void ReliefOptions::validate() const {
+  if (levels < 1) throw ValueError("relief: levels (of the blur pyramid) must be >= 1");
+}
+
 Raster luminance_heightfield(const Raster& rgb, const Mask& mask, const ReliefOptions& options) {
-  if (options.levels < 1) throw ValueError("the relief needs at least one pyramid level");
+  options.validate();
   if (mask.count() == 0) throw ValueError("the crown mask has no crown pixel");
   Raster lum = luminance_of(rgb);
   float lo = 1.0f, hi = 0.0f;

@@ -13,6 +13,9 @@ namespace fspm::crown {
 struct ReliefOptions {
   int levels = 4;             // N, Argudo used 4 and 5
   double first_sigma_px = 1;  // blur of the finest level; each next level doubles it
+
+  // Throws ValueError naming the first field out of range.
+  void validate() const;
 };
 
 // The weighted sum of the blur pyramid of the crown's normalized luminance, in [0, 1] inside the

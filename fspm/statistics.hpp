@@ -37,8 +37,12 @@ double mean(std::span<const double> values);
 // there are fewer than two values.
 double variance(std::span<const double> values);
 double standard_deviation(std::span<const double> values);
+// The confidence level of intervals when none is asked for.
+inline constexpr double kDefaultConfidenceLevel = 0.95;
+
 // Student-t confidence interval of the mean at `level` (e.g. 0.95), two-sided.
-Interval mean_confidence_interval(std::span<const double> values, double level = 0.95);
+Interval mean_confidence_interval(std::span<const double> values,
+                                  double level = kDefaultConfidenceLevel);
 
 struct TTestResult {
   double t = 0.0;
@@ -55,13 +59,16 @@ struct TTestResult {
 
 // Two-sample t-test assuming equal variances (pooled variance, df = n_a + n_b - 2).
 TTestResult student_t_test(std::span<const double> a, std::span<const double> b,
-                           Alternative alternative = Alternative::kTwoSided, double level = 0.95);
+                           Alternative alternative = Alternative::kTwoSided,
+                           double level = kDefaultConfidenceLevel);
 // Welch's t-test (unequal variances, Welch-Satterthwaite degrees of freedom).
 TTestResult welch_t_test(std::span<const double> a, std::span<const double> b,
-                         Alternative alternative = Alternative::kTwoSided, double level = 0.95);
+                         Alternative alternative = Alternative::kTwoSided,
+                         double level = kDefaultConfidenceLevel);
 // Paired t-test on the differences a_i - b_i (same length, at least two pairs).
 TTestResult paired_t_test(std::span<const double> a, std::span<const double> b,
-                          Alternative alternative = Alternative::kTwoSided, double level = 0.95);
+                          Alternative alternative = Alternative::kTwoSided,
+                          double level = kDefaultConfidenceLevel);
 
 struct MannWhitneyResult {
   double u = 0.0;  // U of sample a: pairs with a > b, plus one half per tie (R's W)

@@ -3,10 +3,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "fspm/error.hpp"
 
 namespace fspm::graphics {
+
+void ChartOptions::validate() const {
+  if (width < 16 || height < 16 || width > 16384 || height > 16384) {
+    throw ValueError("chart: width and height must be 16..16384 pixels");
+  }
+  if (x_ticks.size() != x_tick_labels.size()) {
+    throw ValueError("chart: " + std::to_string(x_tick_labels.size()) + " x_tick_labels for " +
+                     std::to_string(x_ticks.size()) + " x_ticks");
+  }
+}
 
 std::array<unsigned char, 3> chart_color(std::size_t i) {
   static constexpr unsigned char kTableau10[10][3] = {

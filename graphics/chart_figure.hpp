@@ -32,6 +32,9 @@ struct ChartOptions {
   // text parameter placed at 0, 1, 2); empty: VTK's own ticks.
   std::vector<double> x_ticks;
   std::vector<std::string> x_tick_labels;
+
+  // Throws ValueError naming the field: a side outside 16..16384 pixels, or not one label per tick.
+  void validate() const;
 };
 
 // The value axis of a chart whose values are all equal to v (to within 1e-9 of |v|): v ± 10 % of

@@ -31,12 +31,6 @@
 namespace fspm::graphics {
 namespace {
 
-void check_size(const ChartOptions& o) {
-  if (o.width < 16 || o.height < 16 || o.width > 16384 || o.height > 16384) {
-    throw ValueError("chart size must be 16..16384 pixels on each side");
-  }
-}
-
 void check_finite(const std::vector<double>& v, const std::string& what) {
   for (double x : v) {
     if (!std::isfinite(x)) throw ValueError(what + " has a value that is not a finite number");
@@ -96,11 +90,7 @@ Image line_chart_image(const std::vector<ChartSeries>& series, const ChartOption
     check_finite(s.x, "series '" + s.name + "'");
     check_finite(s.y, "series '" + s.name + "'");
   }
-  if (o.x_ticks.size() != o.x_tick_labels.size()) {
-    throw ValueError("line chart: " + std::to_string(o.x_tick_labels.size()) + " tick labels for " +
-                     std::to_string(o.x_ticks.size()) + " ticks");
-  }
-  check_size(o);
+  o.validate();
   return render_chart(o, [&](vtkContextView* view) {
     vtkNew<vtkChartXY> chart;
     if (!o.x_ticks.empty()) {
@@ -169,7 +159,7 @@ Image box_plot_image(const std::vector<std::string>& group_names,
     if (groups[i].empty()) throw ValueError("box plot group '" + group_names[i] + "' is empty");
     check_finite(groups[i], "box plot group '" + group_names[i] + "'");
   }
-  check_size(o);
+  o.validate();
   // vtkChartBox draws columns of five rows: minimum, first quartile, median, third quartile,
   // maximum.
   vtkNew<vtkTable> quartiles;

@@ -11,15 +11,6 @@
 namespace fspm::graphics {
 namespace {
 
-constexpr NameTable<FoliageMode, 2> kFoliageModeNames{
-    "foliage",
-    {{FoliageMode::kLeaves, "leaves", "leaf quads in each cluster"},
-     {FoliageMode::kVolumes, "volumes", "one translucent sphere per cluster"}}};
-
-}  // namespace
-
-namespace {
-
 // Farthest point of a leaf quad from its base, as a fraction of the cluster radius.
 double leaf_reach_ratio(const FoliageOptions& o) {
   const double half_width = 0.5 * o.leaf_width_ratio;
@@ -109,16 +100,18 @@ FoliageMode foliage_mode_from_name(std::string_view name) {
   return kFoliageModeNames.from_name(name);
 }
 
-void validate_foliage(const FoliageOptions& o) {
-  if (o.leaves_per_cluster < 1) throw ValueError("foliage: at least 1 leaf per cluster");
-  if (!(o.leaf_length_ratio > 0.0) || !(o.leaf_width_ratio > 0.0)) {
-    throw ValueError("foliage: leaf length and width ratios must be > 0");
+void FoliageOptions::validate() const {
+  if (leaves_per_cluster < 1) throw ValueError("foliage: leaves_per_cluster must be >= 1");
+  if (!(leaf_length_ratio > 0.0) || !(leaf_width_ratio > 0.0)) {
+    throw ValueError("foliage: leaf_length_ratio and leaf_width_ratio must be > 0");
   }
-  if (leaf_reach_ratio(o) > 1.0) {
-    throw ValueError("foliage: leaves longer than their cluster's radius do not fit inside it");
+  if (leaf_reach_ratio(*this) > 1.0) {
+    throw ValueError(
+        "foliage: leaf_length_ratio too large: leaves longer than their cluster's radius do "
+        "not fit inside it");
   }
-  if (o.sphere_slices < 3 || o.sphere_stacks < 2) {
-    throw ValueError("foliage: a crown volume needs at least 3 slices and 2 stacks");
+  if (sphere_slices < 3 || sphere_stacks < 2) {
+    throw ValueError("foliage: sphere_slices must be >= 3 and sphere_stacks >= 2");
   }
 }
 

@@ -12,11 +12,17 @@
 #include <random>
 #include <string_view>
 
+#include "fspm/name_table.hpp"
 #include "graphics/triangle_mesh.hpp"
 
 namespace fspm::graphics {
 
 enum class FoliageMode : std::uint8_t { kLeaves, kVolumes };
+
+inline constexpr NameTable<FoliageMode, 2> kFoliageModeNames{
+    "foliage",
+    {{FoliageMode::kLeaves, "leaves", "leaf quads in each cluster"},
+     {FoliageMode::kVolumes, "volumes", "one translucent sphere per cluster"}}};
 
 // "leaves" or "volumes"; throws ValueError naming both.
 FoliageMode foliage_mode_from_name(std::string_view name);
@@ -28,6 +34,9 @@ struct FoliageOptions {
   double leaf_width_ratio = 0.5;    // leaf width / leaf length
   int sphere_slices = 12;           // meridians of a crown volume
   int sphere_stacks = 8;            // bands between its poles
+
+  // Throws ValueError for counts below 1 leaf, 3 slices, 2 stacks or ratios <= 0.
+  void validate() const;
 };
 
 struct FoliageCounts {
@@ -38,9 +47,6 @@ struct FoliageCounts {
 // Vertices and triangles of one cluster: kLeaves 4 n and 2 n (n leaves), kVolumes
 // (stacks + 1)(slices + 1) and 2 slices (stacks - 1) (one triangle per cell at the poles).
 FoliageCounts cluster_counts(const FoliageOptions& options);
-
-// Throws ValueError for counts below 1 leaf, 3 slices, 2 stacks or ratios <= 0.
-void validate_foliage(const FoliageOptions& options);
 
 // Writes one cluster at vertex `v` and triangle `t` of `mesh` (already sized; advances both):
 // positions, normals, uvs, triangles and materials (leaf or crown). Attributes are the caller's.

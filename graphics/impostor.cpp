@@ -52,12 +52,13 @@ void append_quad(const LodScene& scene, std::size_t i,
 
 }  // namespace
 
-void validate(const ImpostorViews& views) {
-  if (views.azimuths < 3) throw ValueError("impostors need at least 3 azimuths");
-  if (views.elevations_deg.empty()) throw ValueError("impostors need at least one elevation");
-  for (double e : views.elevations_deg) {
+void ImpostorViews::validate() const {
+  if (azimuths < 3) throw ValueError("impostor views: azimuths must be >= 3");
+  if (elevations_deg.empty())
+    throw ValueError("impostor views: elevations_deg needs at least one elevation");
+  for (double e : elevations_deg) {
     if (!(e >= -89.0 && e <= 89.0)) {
-      throw ValueError("impostor elevations must lie in [-89, 89] degrees");
+      throw ValueError("impostor views: elevations_deg must lie in [-89, 89] degrees");
     }
   }
 }

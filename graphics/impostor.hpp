@@ -21,10 +21,10 @@ namespace fspm::graphics {
 struct ImpostorViews {
   int azimuths = 8;
   std::vector<double> elevations_deg = {0.0, 35.0, 70.0};
-};
 
-// Throws ValueError for fewer than 3 azimuths, no elevation or one outside [-89, 89] degrees.
-void validate(const ImpostorViews& views);
+  // Throws ValueError for fewer than 3 azimuths, no elevation or one outside [-89, 89] degrees.
+  void validate() const;
+};
 
 int impostor_view_count(const ImpostorViews& views);
 

@@ -25,29 +25,30 @@ std::size_t share_for(const std::vector<double>& shares, double fraction) {
 
 }  // namespace
 
-void validate(const LodOptions& o) {
-  if (!(o.max_distance_m > 0.0) || !std::isfinite(o.max_distance_m) ||
-      !(o.prune_distance_m > 0.0) || !std::isfinite(o.prune_distance_m) ||
-      !(o.impostor_distance_m >= 0.0) || !std::isfinite(o.impostor_distance_m)) {
+void LodOptions::validate() const {
+  if (!(max_distance_m > 0.0) || !std::isfinite(max_distance_m) || !(prune_distance_m > 0.0) ||
+      !std::isfinite(prune_distance_m) || !(impostor_distance_m >= 0.0) ||
+      !std::isfinite(impostor_distance_m)) {
     throw ValueError(
-        "level-of-detail distances must be positive and finite (the impostor distance may be 0)");
+        "level of detail: max_distance_m and prune_distance_m must be positive and finite, "
+        "impostor_distance_m finite and >= 0");
   }
-  if (!(o.jitter >= 0.0 && o.jitter < 1.0)) {
-    throw ValueError("level-of-detail jitter must lie in [0, 1)");
+  if (!(jitter >= 0.0 && jitter < 1.0)) {
+    throw ValueError("level of detail: jitter must lie in [0, 1)");
   }
-  if (o.leaf_fractions.empty() || o.leaf_fractions.front() != 1.0) {
-    throw ValueError("leaf shares must start at 1");
+  if (leaf_fractions.empty() || leaf_fractions.front() != 1.0) {
+    throw ValueError("level of detail: leaf_fractions must start at 1");
   }
-  for (std::size_t k = 1; k < o.leaf_fractions.size(); ++k) {
-    if (!(o.leaf_fractions[k] > 0.0 && o.leaf_fractions[k] < o.leaf_fractions[k - 1])) {
-      throw ValueError("leaf shares must decrease strictly and stay above 0");
+  for (std::size_t k = 1; k < leaf_fractions.size(); ++k) {
+    if (!(leaf_fractions[k] > 0.0 && leaf_fractions[k] < leaf_fractions[k - 1])) {
+      throw ValueError("level of detail: leaf_fractions must decrease strictly and stay above 0");
     }
   }
 }
 
 LodPlant make_lod_plant(const std::vector<TriangleMesh>& resolutions, const LodOptions& options,
                         std::uint64_t seed) {
-  validate(options);
+  options.validate();
   if (resolutions.empty()) throw ValueError("a plant needs at least one resolution");
   LodPlant plant;
   plant.sphere = bounding_sphere(resolutions.front());
@@ -104,7 +105,7 @@ double lod_jitter(std::size_t instance) {
 std::vector<InstanceLod> select_lod(const LodScene& scene, const Eigen::Vector3d& eye_m,
                                     const Eigen::Matrix4d& view_projection,
                                     const LodOptions& options) {
-  validate(options);
+  options.validate();
   const Frustum frustum = frustum_from_matrix(view_projection);
   std::vector<BoundingSphere> spheres;
   double largest_area = 0.0;

@@ -35,10 +35,10 @@ struct LodOptions {
   // textured quad beyond this distance, a smaller one from proportionally nearer (the same
   // projected size); jittered as the switch distances. 0: never (renders without impostors).
   double impostor_distance_m = 0.0;
-};
 
-// Throws ValueError for non-positive distances, a jitter outside [0, 1) or bad leaf fractions.
-void validate(const LodOptions& options);
+  // Throws ValueError for non-positive distances, a jitter outside [0, 1) or bad leaf fractions.
+  void validate() const;
+};
 
 // One plant at a few resolutions (finest first), each with its leaves pruned to every share of
 // LodOptions::leaf_fractions: variants[r][k] is resolution r with leaf share k.

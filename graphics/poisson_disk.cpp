@@ -59,12 +59,16 @@ class DartGrid {
 
 }  // namespace
 
+void PoissonDiskOptions::validate() const {
+  if (!(width_m > 0.0) || !(depth_m > 0.0) || !(min_distance_m > 0.0)) {
+    throw ValueError("Poisson-disk sampling: width_m, depth_m and min_distance_m must be positive");
+  }
+}
+
 std::vector<Eigen::Vector2d> poisson_disk_points(
     const PoissonDiskOptions& options, std::mt19937_64& rng,
     const std::function<double(const Eigen::Vector2d&)>& probability) {
-  if (!(options.width_m > 0.0) || !(options.depth_m > 0.0) || !(options.min_distance_m > 0.0)) {
-    throw ValueError("Poisson-disk sampling needs a positive size and minimum distance");
-  }
+  options.validate();
   DartGrid grid(options);
   std::vector<Eigen::Vector2d> points;
   const double darts = options.darts_per_cell * static_cast<double>(grid.cell_count());

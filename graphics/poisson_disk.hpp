@@ -22,6 +22,9 @@ struct PoissonDiskOptions {
   // Darts per grid cell before stopping: enough to fill the rectangle nearly to saturation
   // (dart throwing's coverage grows slowly at the end; 30 per cell leaves few holes).
   double darts_per_cell = 30.0;
+
+  // Throws ValueError naming the first field out of range.
+  void validate() const;
 };
 
 // A uniform number in [0, 1) from the top 53 bits of one draw: the same on every platform, unlike

@@ -21,7 +21,7 @@ struct Placed {
 std::vector<Placed> placements(const std::vector<ReliefCrown>& crowns) {
   std::vector<Placed> out;
   for (const ReliefCrown& c : crowns) {
-    validate(c);
+    c.validate();
     const float bound = 1.01f * c.max_radius_m();
     for (const Eigen::Matrix4f& m : c.placements) {
       const float scale = std::cbrt(std::abs(m.block<3, 3>(0, 0).determinant()));

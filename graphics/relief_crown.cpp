@@ -71,28 +71,28 @@ Eigen::AlignedBox3f ReliefCrown::placed_bounds() const {
   return box;
 }
 
-void validate(const ReliefCrown& crown) {
-  const auto n = static_cast<std::size_t>(std::max(crown.face_size, 0));
-  if (crown.face_size < 1) throw ValueError("relief crown: expected a cubemap face size >= 1");
-  if (crown.radius_m.size() != 6 * n * n || crown.rgb.size() != 3 * 6 * n * n) {
-    throw ValueError(
-        "relief crown: expected cubemap strips of 6N x N texels (N = " + std::to_string(n) + ")");
+void ReliefCrown::validate() const {
+  const auto n = static_cast<std::size_t>(std::max(face_size, 0));
+  if (face_size < 1) throw ValueError("relief crown: expected a cubemap face_size >= 1");
+  if (radius_m.size() != 6 * n * n || rgb.size() != 3 * 6 * n * n) {
+    throw ValueError("relief crown: expected radius_m and rgb strips of 6N x N texels (N = " +
+                     std::to_string(n) + ")");
   }
-  for (float r : crown.radius_m) {
+  for (float r : radius_m) {
     if (!std::isfinite(r) || r < 0.0f) {
-      throw ValueError("relief crown: expected radii that are finite and >= 0");
+      throw ValueError("relief crown: expected radius_m values that are finite and >= 0");
     }
   }
-  if (!(crown.max_radius_m() > 0.0f) || !crown.centre_m.allFinite()) {
-    throw ValueError("relief crown: expected a finite centre and a radius above 0");
+  if (!(max_radius_m() > 0.0f) || !centre_m.allFinite()) {
+    throw ValueError("relief crown: expected a finite centre_m and a radius_m above 0");
   }
-  for (const Eigen::Matrix4f& m : crown.placements) {
+  for (const Eigen::Matrix4f& m : placements) {
     if (!m.allFinite() || std::abs(m.block<3, 3>(0, 0).determinant()) < 1e-12f) {
       throw ValueError("relief crown: expected finite, invertible placements");
     }
   }
-  for (const Eigen::Vector3f& b : crown.billboards_m) {
-    if (!b.allFinite()) throw ValueError("relief crown: expected finite billboard centres");
+  for (const Eigen::Vector3f& b : billboards_m) {
+    if (!b.allFinite()) throw ValueError("relief crown: expected finite billboards_m");
   }
 }
 

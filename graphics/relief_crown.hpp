@@ -34,12 +34,12 @@ struct ReliefCrown {
   float max_radius_m() const;
   // The world box around every placed copy's cube about that sphere (how pictures frame it).
   Eigen::AlignedBox3f placed_bounds() const;
-};
 
-// Throws ValueError unless face_size >= 1, both strips hold 6N x N texels (three bytes each for
-// the colour), every radius is finite and >= 0 with at least one above 0, and every placement is
-// finite with an invertible rotation-and-scale, and the billboard centres are finite.
-void validate(const ReliefCrown& crown);
+  // Throws ValueError unless face_size >= 1, both strips hold 6N x N texels (three bytes each for
+  // the colour), every radius is finite and >= 0 with at least one above 0, and every placement is
+  // finite with an invertible rotation-and-scale, and the billboard centres are finite.
+  void validate() const;
+};
 
 // R(d) for a direction d (not zero): the strip sampled bilinearly within d's face, clamped half a
 // texel from its edges, as the viewer's shader does.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <string>
 
 #include "fspm/error.hpp"
 
@@ -17,6 +18,16 @@ void parse_size(std::string_view text, int& width, int& height) {
   }
   width = size->width;
   height = size->height;
+}
+
+void RenderOptions::validate() const {
+  if (width < 1 || height < 1 || width > 16384 || height > 16384) {
+    throw ValueError("render: width and height must be 1..16384 pixels");
+  }
+}
+
+std::string size_text(int width, int height) {
+  return std::to_string(width) + "x" + std::to_string(height);
 }
 
 double scale_bar_length(double height_m) {

@@ -43,6 +43,9 @@ struct RenderOptions {
   // into the rendered picture (relief_composite.hpp), lit by the key light without shadows; they
   // take part in the framing unless `frame` is given.
   std::vector<ReliefCrown> relief_crowns;
+
+  // Throws ValueError naming the first field out of range.
+  void validate() const;
 };
 
 // The height in metres a parallel projection along `view` needs to show all of the box [lo, hi]
@@ -57,6 +60,8 @@ double scale_bar_length(double height_m);
 
 // "WxH" -> width, height; throws ValueError.
 void parse_size(std::string_view text, int& width, int& height);
+// width, height -> "WxH", the inverse of parse_size.
+std::string size_text(int width, int height);
 
 // True when fspm was built with VTK (FSPM_WITH_VTK).
 bool render_available();

@@ -391,9 +391,7 @@ template <typename AddActors>
 Image render_with(const RenderOptions& options, Eigen::Vector3f lo, Eigen::Vector3f hi,
                   AddActors&& add_actors) {
   if (!options.frame) frame_relief_crowns(options.relief_crowns, lo, hi);
-  if (options.width < 1 || options.height < 1 || options.width > 16384 || options.height > 16384) {
-    throw ValueError("image size must be 1..16384 pixels on each side");
-  }
+  options.validate();
   struct DisplayGuard {
     void* display = open_x_display();
     ~DisplayGuard() { close_x_display(display); }
@@ -798,7 +796,7 @@ Image render_scene(const InstancedMesh& scene, const RenderOptions& options) {
 
 Image render_lod_scene(const LodScene& scene, const LodOptions& lod, const RenderOptions& options,
                        std::size_t* triangles_drawn) {
-  validate(lod);
+  lod.validate();
   if (!options.color_by.empty()) {
     throw ValueError(
         "per-instance level of detail does not combine with colouring by an attribute");

@@ -5,21 +5,27 @@
 #include <algorithm>
 #include <cmath>
 #include <span>
+#include <string>
+#include <utility>
 
 #include "fspm/error.hpp"
 
 namespace fspm::graphics {
 
-void validate(const TessellationLimits& l) {
-  for (double x : {l.max_distance_m, l.max_face_area_m2, l.max_level}) {
+void TessellationLimits::validate() const {
+  const std::pair<const char*, double> fields[] = {{"max_distance_m", max_distance_m},
+                                                   {"max_face_area_m2", max_face_area_m2},
+                                                   {"max_level", max_level}};
+  for (const auto& [name, x] : fields) {
     if (!(x > 0.0) || !std::isfinite(x)) {
-      throw ValueError("tessellation limits (distance, face area, level) must be positive");
+      throw ValueError(std::string("tessellation limits: ") + name +
+                       " must be positive and finite");
     }
   }
 }
 
 double tessellation_level(double d, double area, const TessellationLimits& l) {
-  validate(l);
+  l.validate();
   if (!(d >= 0.0) || !(area >= 0.0)) {
     throw ValueError("face distance and area must be >= 0");
   }

@@ -17,10 +17,10 @@ struct TessellationLimits {
   double max_distance_m = 50.0;   // D_max
   double max_face_area_m2 = 1.0;  // A_max
   double max_level = 16.0;        // L_max
-};
 
-// Throws ValueError unless every limit is positive and finite.
-void validate(const TessellationLimits& limits);
+  // Throws ValueError unless every limit is positive and finite.
+  void validate() const;
+};
 
 // Expression 2 (clamped factors). Throws ValueError for a negative distance or area.
 double tessellation_level(double face_distance_m, double face_area_m2,

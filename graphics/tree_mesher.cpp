@@ -14,45 +14,39 @@
 #include "graphics/parallel_transport.hpp"
 
 namespace fspm::graphics {
-namespace {
-
-constexpr NameTable<JunctionMode, 2> kJunctionModeNames{
-    "junction mode",
-    {{JunctionMode::kSeparate, "separate", "one tube per chain, capped at forks"},
-     {JunctionMode::kContinuous, "continuous", "one closed skin through the branch points"}}};
-
-}  // namespace
-
 std::string_view junction_mode_name(JunctionMode mode) { return kJunctionModeNames.name(mode); }
 
 JunctionMode junction_mode_from_name(std::string_view name) {
   return kJunctionModeNames.from_name(name);
 }
+
+void MeshOptions::validate() const {
+  if (!(edge_length_m > 0.0)) throw ValueError("mesh: edge_length_m must be > 0");
+  if (min_sides < 3) throw ValueError("mesh: min_sides must be >= 3");
+  if (max_sides < min_sides) throw ValueError("mesh: max_sides must be >= min_sides");
+  if (!(min_radius_m > 0.0)) throw ValueError("mesh: min_radius_m must be > 0");
+  if (!(lod_distance_m > 0.0)) throw ValueError("mesh: lod_distance_m must be > 0");
+  if (!(leaf_width_ratio > 0.0)) throw ValueError("mesh: leaf_width_ratio must be > 0");
+  if (leaf_bend_segments < 1) throw ValueError("mesh: leaf_bend_segments must be >= 1");
+  if (std::isnan(max_birth_time)) throw ValueError("mesh: max_birth_time must be a number");
+  if (leaves) foliage.validate();
+  if (axis_subdivisions < 1 || axis_subdivisions > kMaxAxisSubdivisions) {
+    throw ValueError("mesh: axis_subdivisions must be 1 to " +
+                     std::to_string(kMaxAxisSubdivisions) + ", got " +
+                     std::to_string(axis_subdivisions));
+  }
+  if (axis_subdivisions > 1 && junctions == JunctionMode::kContinuous) {
+    throw ValueError(
+        "mesh: axis_subdivisions > 1 (B-spline axis refinement) needs separate junctions "
+        "(continuous tubes keep "
+        "their joints for the laterals' holes)");
+  }
+}
+
 namespace {
 
 constexpr double kMinSegmentM = 1e-9;
 constexpr double kTwoPi = 6.283185307179586;
-
-void validate(const MeshOptions& o) {
-  if (!(o.edge_length_m > 0.0)) throw ValueError("edge length must be > 0 m");
-  if (o.min_sides < 3) throw ValueError("min_sides must be >= 3");
-  if (o.max_sides < o.min_sides) throw ValueError("max_sides must be >= min_sides");
-  if (!(o.min_radius_m > 0.0)) throw ValueError("min_radius_m must be > 0");
-  if (!(o.lod_distance_m > 0.0)) throw ValueError("lod_distance_m must be > 0");
-  if (!(o.leaf_width_ratio > 0.0)) throw ValueError("leaf_width_ratio must be > 0");
-  if (o.leaf_bend_segments < 1) throw ValueError("leaf_bend_segments must be >= 1");
-  if (std::isnan(o.max_birth_time)) throw ValueError("max_birth_time must be a number");
-  if (o.leaves) validate_foliage(o.foliage);
-  if (o.axis_subdivisions < 1 || o.axis_subdivisions > kMaxAxisSubdivisions) {
-    throw ValueError("axis subdivisions must be 1 to " + std::to_string(kMaxAxisSubdivisions) +
-                     ", got " + std::to_string(o.axis_subdivisions));
-  }
-  if (o.axis_subdivisions > 1 && o.junctions == JunctionMode::kContinuous) {
-    throw ValueError(
-        "B-spline axis refinement needs separate junctions (continuous tubes keep "
-        "their joints for the laterals' holes)");
-  }
-}
 
 struct ChainPlan {
   std::size_t first = 0;  // into Plan::segments
@@ -206,7 +200,7 @@ void plan_foliage(const TreeGraph& tree, const MeshOptions& options, const std::
 }
 
 Plan make_plan(const TreeGraph& tree, const MeshOptions& options) {
-  validate(options);
+  options.validate();
   Plan plan;
   if (tree.size() == 0) return plan;
   bool all_internodes = true;
@@ -534,7 +528,7 @@ void BranchMeshWriter::write_leaf(NodeId id) {
 }  // namespace
 
 MeshCounts count_mesh(const TreeGraph& tree, const MeshOptions& options) {
-  validate(options);
+  options.validate();
   if (options.junctions == JunctionMode::kContinuous) {
     const TriangleMesh mesh = mesh_tree_continuous(tree, options);
     const MeshCounts organs = make_plan(tree, options).counts;
@@ -544,7 +538,7 @@ MeshCounts count_mesh(const TreeGraph& tree, const MeshOptions& options) {
 }
 
 TriangleMesh mesh_tree(const TreeGraph& tree, const MeshOptions& options) {
-  validate(options);
+  options.validate();
   if (options.junctions == JunctionMode::kContinuous) return mesh_tree_continuous(tree, options);
   const Plan plan = make_plan(tree, options);
   check_memory(mesh_bytes(plan.counts, tree.attribute_names().size()),

@@ -15,6 +15,7 @@
 #include <optional>
 #include <string_view>
 
+#include "fspm/name_table.hpp"
 #include "fspm/tree_graph.hpp"
 #include "graphics/foliage.hpp"
 #include "graphics/triangle_mesh.hpp"
@@ -32,6 +33,11 @@ namespace fspm::graphics {
 //     the vertices a lateral shares with its parent weigh both). Laterals whose quad is taken, that
 //     leave at a shallow angle or that hang from an axis tip fall back to separate tubes.
 enum class JunctionMode { kSeparate, kContinuous };
+
+inline constexpr NameTable<JunctionMode, 2> kJunctionModeNames{
+    "junction mode",
+    {{JunctionMode::kSeparate, "separate", "one tube per chain, capped at forks"},
+     {JunctionMode::kContinuous, "continuous", "one closed skin through the branch points"}}};
 
 // "separate" or "continuous", as the command line's --junctions and Python's MeshOptions name them.
 std::string_view junction_mode_name(JunctionMode mode);
@@ -85,6 +91,9 @@ struct MeshOptions {
   // internode at or above them, weight0 = 1), as the bark of continuous meshes does; set by the
   // continuous mesher so skins move the foliage with its branch.
   bool leaf_bones = false;
+
+  // Throws ValueError naming the first field out of range (the foliage's too, with leaves on).
+  void validate() const;
 };
 
 // Per-vertex attributes every mesh carries, followed by the tree's user attributes.

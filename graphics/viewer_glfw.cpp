@@ -625,7 +625,7 @@ void measure_values(const std::vector<StepRef>& steps, const std::string& color_
 
 // The corners of each placed copy's cube around the crown's bounding sphere.
 void relief_bounds(const ReliefCrown& crown, glm::vec3& lo, glm::vec3& hi) {
-  validate(crown);
+  crown.validate();
   const Eigen::AlignedBox3f box = crown.placed_bounds();
   if (box.isEmpty()) return;
   lo = glm::min(lo, glm::vec3(box.min().x(), box.min().y(), box.min().z()));
@@ -1420,7 +1420,7 @@ ViewerStats run_instanced_viewer(const std::vector<InstancedMesh>& steps,
 
 ViewerStats run_lod_viewer(const LodScene& scene, const LodOptions& lod_options,
                            const ViewerOptions& o) {
-  validate(lod_options);
+  lod_options.validate();
   const StepMaker make = [&](const std::string&, std::vector<StepRef>& refs,
                              std::vector<StepRef>& coarse) {
     refs = {step_ref(scene)};

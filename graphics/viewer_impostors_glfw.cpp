@@ -214,7 +214,7 @@ ImpostorRenderer::ImpostorRenderer(const LodScene& scene, const ImpostorViews& v
                                    const std::function<void(std::size_t plant)>& draw_plant,
                                    const std::string& shadow_glsl)
     : scene_(&scene), views_(views), gpu_(std::make_unique<Gpu>()) {
-  validate(views);
+  views.validate();
   Gpu& g = *gpu_;
   g.views_program = gl_program(kViewsVs, kViewsFs);
   const std::string header = std::string("#version 330 core\n") + kCoverageGlsl;

@@ -345,7 +345,7 @@ ReliefCrownRenderer::ReliefCrownRenderer(const std::vector<ReliefCrown>& crowns,
   upload_cube(gpu_->vao, gpu_->vbo, gpu_->ibo);
   gpu_->square_vbo = upload_square();
   for (const ReliefCrown& c : crowns) {
-    validate(c);
+    c.validate();
     GpuCrown g;
     const int n = c.face_size;
     g.radius_tex = texture_2d(GL_R32F, 6 * n, n, GL_RED, GL_FLOAT, c.radius_m.data());

@@ -22,7 +22,7 @@ Eigen::Vector3f sway_axis(const WindOptions& options) {
 
 std::vector<Eigen::Quaternionf> wind_pose(const Skeleton& skeleton, const WindOptions& options,
                                           double t_s) {
-  validate(options);
+  options.validate();
   std::mt19937_64 rng(options.seed);
   const std::vector<JointSway> sways = joint_sways(skeleton, options, rng);
   const Eigen::Vector3f axis = sway_axis(options);
@@ -32,22 +32,23 @@ std::vector<Eigen::Quaternionf> wind_pose(const Skeleton& skeleton, const WindOp
   return out;
 }
 
-void validate(const WindOptions& o) {
-  const Eigen::Vector2d horizontal = o.direction.head<2>();
-  if (!o.direction.allFinite() || horizontal.norm() < 1e-9) {
-    throw ValueError("the wind direction needs a horizontal component");
+void WindOptions::validate() const {
+  const Eigen::Vector2d horizontal = direction.head<2>();
+  if (!direction.allFinite() || horizontal.norm() < 1e-9) {
+    throw ValueError("wind: direction needs a horizontal component");
   }
-  if (!(o.amplitude_rad >= 0.0) || !std::isfinite(o.amplitude_rad)) {
-    throw ValueError("wind amplitude must be a finite angle >= 0");
+  if (!(amplitude_rad >= 0.0) || !std::isfinite(amplitude_rad)) {
+    throw ValueError("wind: amplitude_rad must be a finite angle >= 0");
   }
-  if (!(o.duration_s > 0.0 && o.frames_per_second > 0.0 && o.frequency_hz > 0.0) ||
-      !std::isfinite(o.duration_s * o.frames_per_second * o.frequency_hz)) {
-    throw ValueError("wind duration, frame rate and frequency must be positive");
+  if (!(duration_s > 0.0 && frames_per_second > 0.0 && frequency_hz > 0.0) ||
+      !std::isfinite(duration_s * frames_per_second * frequency_hz)) {
+    throw ValueError("wind: duration_s, frames_per_second and frequency_hz must be positive");
   }
-  if (o.duration_s * o.frames_per_second > 1e6) {
-    throw ValueError("more than a million wind keyframes: shorten the duration or the frame rate");
+  if (duration_s * frames_per_second > 1e6) {
+    throw ValueError(
+        "wind: more than a million keyframes: shorten duration_s or frames_per_second");
   }
-  if (!(o.bias >= 0.0 && o.bias <= 1.0)) throw ValueError("wind bias must lie in [0, 1]");
+  if (!(bias >= 0.0 && bias <= 1.0)) throw ValueError("wind: bias must lie in [0, 1]");
 }
 
 double looping_frequency_hz(const WindOptions& o) {
@@ -89,7 +90,7 @@ Eigen::Quaternionf sway_rotation(const JointSway& sway, const Eigen::Vector3f& a
 }
 
 WindAnimation wind_animation(const Skeleton& skeleton, const WindOptions& o) {
-  validate(o);
+  o.validate();
   std::mt19937_64 rng(o.seed);
   const std::vector<JointSway> sways = joint_sways(skeleton, o, rng);
   WindAnimation a;

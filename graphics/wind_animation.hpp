@@ -29,6 +29,10 @@ struct WindOptions {
   double duration_s = 4.0;
   double frames_per_second = 24.0;
   std::uint64_t seed = 1;
+
+  // Throws ValueError for a vertical or zero wind, non-positive duration, frame rate or
+  // frequency, or a negative amplitude.
+  void validate() const;
 };
 
 struct JointSway {
@@ -42,10 +46,6 @@ struct WindAnimation {
   std::vector<std::vector<Eigen::Quaternionf>> frames;  // frames[k][joint]
   Eigen::Vector3f axis = Eigen::Vector3f::UnitY();      // up x wind
 };
-
-// Throws ValueError for a vertical or zero wind, non-positive duration, frame rate or
-// frequency, or a negative amplitude.
-void validate(const WindOptions& options);
 
 // Amplitude and phases per joint.
 std::vector<JointSway> joint_sways(const Skeleton& skeleton, const WindOptions& options,

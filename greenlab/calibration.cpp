@@ -171,6 +171,13 @@ std::vector<double> predict_targets(const PlantParams& params, const std::vector
   return out;
 }
 
+void FitOptions::validate() const {
+  if (max_iterations < 1) {
+    throw ValueError("max_iterations: expected a count >= 1, got " +
+                     std::to_string(max_iterations));
+  }
+}
+
 FitResult fit_gl1(const PlantParams& params, const std::vector<Target>& targets,
                   const std::vector<std::string>& names_in, const FitOptions& options) {
   const std::vector<std::string> names =
@@ -178,10 +185,7 @@ FitResult fit_gl1(const PlantParams& params, const std::vector<Target>& targets,
   if (names.empty()) {
     throw ValueError("no parameters to fit: list them in [calibration] parameters = [...]");
   }
-  if (options.max_iterations < 1) {
-    throw ValueError("max_iterations: expected a count >= 1, got " +
-                     std::to_string(options.max_iterations));
-  }
+  options.validate();
   if (targets.size() < names.size()) {
     throw ValueError("fitting " + std::to_string(names.size()) + " parameters needs at least as " +
                      "many targets, got " + std::to_string(targets.size()));

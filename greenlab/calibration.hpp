@@ -27,6 +27,9 @@ std::vector<Target> read_targets_csv(const std::string& path);
 
 struct FitOptions {
   int max_iterations = 200;
+
+  // Throws ValueError naming the field out of range.
+  void validate() const;
 };
 
 struct FitResult {

@@ -65,7 +65,7 @@ void bind_mesh_options(py::module_& m) {
   mo.def_property(
       "foliage",
       [](const gr::MeshOptions& o) {
-        return o.foliage.mode == gr::FoliageMode::kVolumes ? "volumes" : "leaves";
+        return std::string(gr::kFoliageModeNames.name(o.foliage.mode));
       },
       [](gr::MeshOptions& o, const std::string& name) {
         o.foliage.mode = gr::foliage_mode_from_name(name);
@@ -110,6 +110,9 @@ void bind_mesh_options(py::module_& m) {
       .existing("junctions")
       .existing("foliage")
       .finish();
+  mo.def(
+      "validate", [](const gr::MeshOptions& o) { o.validate(); },
+      "Raises ParameterError naming the first field out of range (mesh_tree checks this too)");
 }
 
 using TM = gr::TriangleMesh;

@@ -11,28 +11,29 @@
 #include "scan_decoding/hull_geometry.hpp"
 
 namespace fspm::scan_decoding {
-namespace {
 
-void validate(const TextureOptions& o) {
-  if (!(o.max_thickness_ratio >= 1.0) || !std::isfinite(o.max_thickness_ratio)) {
-    throw ValueError("the thickness ratio of similar patches must be >= 1");
+void TextureOptions::validate() const {
+  if (!(max_thickness_ratio >= 1.0) || !std::isfinite(max_thickness_ratio)) {
+    throw ValueError("texturing: max_thickness_ratio (of similar patches) must be finite and >= 1");
   }
-  if (!(o.max_angle_deg > 0.0 && o.max_angle_deg <= 180.0)) {
-    throw ValueError("the angle of similar patches must be within (0, 180] degrees");
+  if (!(max_angle_deg > 0.0 && max_angle_deg <= 180.0)) {
+    throw ValueError("texturing: max_angle_deg (of similar patches) must be within (0, 180]");
   }
-  if (!(o.fit_tolerance >= 0.0) || !std::isfinite(o.fit_tolerance)) {
-    throw ValueError("the fit tolerance must be finite and >= 0");
+  if (!(fit_tolerance >= 0.0) || !std::isfinite(fit_tolerance)) {
+    throw ValueError("texturing: fit_tolerance must be finite and >= 0");
   }
-  if (o.max_depth < 0 || o.max_patches_per_cluster == 0) {
-    throw ValueError("texturing needs max_depth >= 0 and at least one patch per cluster");
+  if (max_depth < 0 || max_patches_per_cluster == 0) {
+    throw ValueError("texturing: max_depth must be >= 0 and max_patches_per_cluster >= 1");
   }
-  if (!(o.min_scale_ratio >= 0.0 && o.min_scale_ratio <= 1.0)) {
-    throw ValueError("the smallest scale ratio of a docked patch must be within [0, 1]");
+  if (!(min_scale_ratio >= 0.0 && min_scale_ratio <= 1.0)) {
+    throw ValueError("texturing: min_scale_ratio (of a docked patch) must be within [0, 1]");
   }
-  if (!(o.max_scale > 0.0)) {
-    throw ValueError("the largest patch scale must be positive");
+  if (!(max_scale > 0.0)) {
+    throw ValueError("texturing: max_scale must be positive");
   }
 }
+
+namespace {
 
 // Further seeds drawn in a row that place nothing before a cluster is left short of its length.
 constexpr int kMaxSeedMisses = 16;
@@ -295,7 +296,7 @@ std::vector<PlacedPatch> texture_cluster(const scans::ClusterModel& model, std::
 std::vector<PlacedPatch> texture_clusters(const scans::ClusterModel& model,
                                           const SpeciesLibrary& library,
                                           const TextureOptions& options, std::mt19937_64& rng) {
-  validate(options);
+  options.validate();
   if (library.patches.empty()) throw ValueError("the species library has no patches");
   std::vector<PlacedPatch> all;
   for (std::size_t c = 0; c < model.clusters.size(); ++c) {

@@ -38,6 +38,9 @@ struct TextureOptions {
   // short of it, start further branchlets at the seed point. Clusters without one, or false:
   // Pirk's texturing alone.
   bool match_branch_length = true;
+
+  // Throws ValueError naming the first field out of range.
+  void validate() const;
 };
 
 inline constexpr std::uint32_t kNoPlacement = std::numeric_limits<std::uint32_t>::max();

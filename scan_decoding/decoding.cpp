@@ -120,11 +120,16 @@ graphics::MeshOptions patch_mesh_options(const graphics::MeshOptions& bark) {
 
 }  // namespace
 
+void DecodeMeshOptions::validate() const {
+  if (!(prune_distance_m > 0.0)) {
+    throw ValueError(
+        "decoded mesh: prune_distance_m (up to which every leaf is drawn) must be positive");
+  }
+}
+
 graphics::InstancedMesh decoded_mesh(const scans::ClusterModel& model, const Decoding& decoding,
                                      const DecodeMeshOptions& options) {
-  if (!(options.prune_distance_m > 0.0)) {
-    throw ValueError("the distance up to which every leaf is drawn must be positive");
-  }
+  options.validate();
   graphics::MeshOptions skeleton_options = options.bark;
   skeleton_options.leaves = false;
   graphics::InstancedMesh out =

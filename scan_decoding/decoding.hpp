@@ -51,6 +51,9 @@ struct DecodeMeshOptions {
   std::optional<Eigen::Vector3d> camera_m;  // stochastic pruning of patch leaves from here
   double prune_distance_m = 20.0;           // every leaf drawn up to this distance
   std::uint64_t seed = 1;                   // order of the leaves in each patch's buffer
+
+  // Throws ValueError naming the first field out of range.
+  void validate() const;
 };
 
 inline constexpr int kPatchMaxSides = 6;

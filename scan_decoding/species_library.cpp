@@ -76,15 +76,21 @@ std::string branchlet_lsystem(std::string_view species) {
          "endlsystem\n";
 }
 
+void LibraryOptions::validate() const {
+  if (branchlets < 1 || branchlets > 1000) {
+    throw ValueError("species library: branchlets (per species) must be within [1, 1000], not " +
+                     std::to_string(branchlets));
+  }
+  if (steps < 1 || steps > 12) {
+    throw ValueError(
+        "species library: steps (of each branchlet's derivation) must be within "
+        "[1, 12], not " +
+        std::to_string(steps));
+  }
+}
+
 SpeciesLibrary make_species_library(std::string_view species, const LibraryOptions& options) {
-  if (options.branchlets < 1 || options.branchlets > 1000) {
-    throw ValueError("branchlets per species must be within [1, 1000], not " +
-                     std::to_string(options.branchlets));
-  }
-  if (options.steps < 1 || options.steps > 12) {
-    throw ValueError("branchlet derivation steps must be within [1, 12], not " +
-                     std::to_string(options.steps));
-  }
+  options.validate();
   const lsystem::LSystem system =
       lsystem::parse_lsystem(branchlet_lsystem(species), std::string(species) + " branchlets");
   lsystem::TurtleSettings view;

@@ -45,6 +45,9 @@ struct LibraryOptions {
   int branchlets = 8;  // seeded variants per species (Pirk uses 20-30)
   int steps = 6;       // derivation steps of each branchlet
   std::uint64_t seed = 1;
+
+  // Throws ValueError naming the first field out of range.
+  void validate() const;
 };
 
 // The sizes of a species' shoots, in metres: the branchlets of the library are derived at this

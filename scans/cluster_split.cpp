@@ -93,10 +93,18 @@ std::vector<std::uint8_t> main_axis_nodes(const TreeGraph& t, const SplitOptions
 
 }  // namespace
 
+void SplitOptions::validate() const {
+  if (!(f_s > 0.0)) throw ValueError("cluster split: f_s must be positive");
+  if (!(main_branch_share >= 0.0)) {
+    throw ValueError("cluster split: main_branch_share must not be negative");
+  }
+  if (!(main_branch_reach >= 0.0)) {
+    throw ValueError("cluster split: main_branch_reach must not be negative");
+  }
+}
+
 ClusterSplit split_clusters(const PointSet& ps, const PointSkeleton& s, const SplitOptions& o) {
-  if (!(o.f_s > 0.0)) throw ValueError("f_s must be positive");
-  if (!(o.main_branch_share >= 0.0)) throw ValueError("the main branch share must not be negative");
-  if (!(o.main_branch_reach >= 0.0)) throw ValueError("the main branch reach must not be negative");
+  o.validate();
   const TreeGraph& t = s.tree;
   const std::vector<std::uint8_t> main_axis = main_axis_nodes(t, o);
   ClusterSplit out;

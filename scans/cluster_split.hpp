@@ -51,6 +51,9 @@ struct SplitOptions {
   // Side tips shorter than this (scans/tip_pruning.hpp: split rings, leaf tufts, noise) are left
   // out of the lengths the main axes are chosen by; 0 counts every node.
   double spur_length_m = 0.0;
+
+  // Throws ValueError naming the first field out of range.
+  void validate() const;
 };
 
 // Needs the radii of eq. 3.1 set on skeleton.tree; f_s > 0.

@@ -15,22 +15,22 @@
 #include <algorithm>
 
 namespace fspm::scans {
+
+void EncodeOptions::validate() const {
+  if (!(species.beta > 0.0) || !(species.gamma >= 0.0) || !(species.f_s > 0.0)) {
+    throw ValueError("encoding: expected species beta > 0, gamma >= 0 and f_s > 0");
+  }
+  if (root_diameter_m && !(*root_diameter_m > 0.0)) {
+    throw ValueError("encoding: root_diameter_m must be positive");
+  }
+  if (!(bin_length_m >= 0.0)) throw ValueError("encoding: bin_length_m must not be negative");
+}
+
 namespace {
 
 // Side tips shorter than this many bins are spurs of the binning, not branches
 // (scans/tip_pruning.hpp).
 constexpr double kSpurBins = 4.0;
-
-void check_options(const EncodeOptions& o) {
-  const SpeciesParameters& s = o.species;
-  if (!(s.beta > 0.0) || !(s.gamma >= 0.0) || !(s.f_s > 0.0)) {
-    throw ValueError("expected beta > 0, gamma >= 0 and f_s > 0");
-  }
-  if (o.root_diameter_m && !(*o.root_diameter_m > 0.0)) {
-    throw ValueError("the root diameter must be positive");
-  }
-  if (!(o.bin_length_m >= 0.0)) throw ValueError("the bin length must not be negative");
-}
 
 std::vector<ClusterHull> hulls(const ThinnedPoints& thin, const std::vector<PointCluster>& clusters,
                                const AlphaHullOptions& options) {
@@ -78,7 +78,7 @@ ThinnedPoints without_ground(ThinnedPoints thin, std::size_t& removed) {
 }  // namespace
 
 EncodeResult encode_point_set(const PointSet& absolute, const EncodeOptions& o) {
-  check_options(o);
+  o.validate();
   if (absolute.points.empty()) throw ValueError("the point set is empty");
   // The recentred copy and the voxel thinning (a point and a count per occupied voxel, a hash
   // entry while counting) hold up to three times the points at once.

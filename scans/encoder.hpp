@@ -33,6 +33,9 @@ struct EncodeOptions {
   bool follow_main_axes = true;
   double main_branch_share = 0.05;
   double main_branch_reach = 0.1;
+
+  // Throws ValueError naming the first field out of range.
+  void validate() const;
 };
 
 // An occlusion gap the neighbour graph bridged (scans/neighbour_graph.hpp): a bridge longer than

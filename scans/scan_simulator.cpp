@@ -147,11 +147,16 @@ std::vector<Eigen::Vector3d> scanner_positions(const TreeGraph& t, const ScanOpt
   return out;
 }
 
-PointSet simulate_scan(const TreeGraph& t, const ScanOptions& o, std::mt19937_64& rng) {
-  if (o.scanners < 1) throw ValueError("at least one scanner position is needed");
-  if (!(o.density_per_m2 > 0.0) || !(o.range_noise_m >= 0.0) || !(o.distance_factor > 0.0)) {
-    throw ValueError("expected a positive density and distance factor and a non-negative noise");
+void ScanOptions::validate() const {
+  if (scanners < 1) throw ValueError("scan: scanners must be >= 1 (one scanner position at least)");
+  if (!(density_per_m2 > 0.0) || !(distance_factor > 0.0)) {
+    throw ValueError("scan: density_per_m2 and distance_factor must be positive");
   }
+  if (!(range_noise_m >= 0.0)) throw ValueError("scan: range_noise_m must not be negative");
+}
+
+PointSet simulate_scan(const TreeGraph& t, const ScanOptions& o, std::mt19937_64& rng) {
+  o.validate();
   PointSet out;
   const std::vector<Eigen::Vector3d> scanners = scanner_positions(t, o);
   check_scan_memory(t, scanners, o);

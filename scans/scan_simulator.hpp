@@ -21,9 +21,12 @@ struct ScanOptions {
   double density_per_m2 = 20000.0;  // at the circle radius and normal incidence
   double range_noise_m = 0.003;
   double min_radius_m = 0.0;  // thinner internodes are not scanned
+
+  // Throws ValueError naming the first field out of range.
+  void validate() const;
 };
 
-// Throws ValueError for scanners < 1 or negative values. Draws from `rng` only.
+// Throws ValueError for options out of range (ScanOptions::validate). Draws from `rng` only.
 PointSet simulate_scan(const TreeGraph& tree, const ScanOptions& options, std::mt19937_64& rng);
 
 // Scanner positions the simulation uses (for documentation and tests).

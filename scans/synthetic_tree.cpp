@@ -35,10 +35,17 @@ Eigen::Vector3d heading(double azimuth, double from_vertical) {
 
 }  // namespace
 
-TreeGraph synthetic_tree(const SyntheticTreeOptions& o) {
-  if (!(o.trunk_length_m > 0) || !(o.internode_length_m > 0) || o.branches < 0 || o.twigs < 0) {
-    throw ValueError("the synthetic tree needs positive lengths and non-negative counts");
+void SyntheticTreeOptions::validate() const {
+  if (!(trunk_length_m > 0) || !(internode_length_m > 0)) {
+    throw ValueError("synthetic tree: trunk_length_m and internode_length_m must be positive");
   }
+  if (branches < 0 || twigs < 0) {
+    throw ValueError("synthetic tree: branches and twigs must not be negative");
+  }
+}
+
+TreeGraph synthetic_tree(const SyntheticTreeOptions& o) {
+  o.validate();
   constexpr double kDeg = std::numbers::pi / 180.0;
   TreeGraph t;
   const std::vector<NodeId> trunk =

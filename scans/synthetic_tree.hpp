@@ -17,6 +17,9 @@ struct SyntheticTreeOptions {
   double internode_length_m = 0.25;
   double root_diameter_m = 0.3;
   double gamma = 1.5;
+
+  // Throws ValueError naming the first field out of range.
+  void validate() const;
 };
 
 TreeGraph synthetic_tree(const SyntheticTreeOptions& options = {});

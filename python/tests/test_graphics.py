@@ -78,6 +78,12 @@ def test_leaf_clusters_become_foliage():
         fspm.MeshOptions(foliage="fog")
 
 
+def test_mesh_options_validate_names_the_field():
+    fspm.MeshOptions().validate()
+    with pytest.raises(fspm.ParameterError, match="max_sides"):
+        fspm.MeshOptions(min_sides=8, max_sides=4).validate()
+
+
 def test_mesh_views_keep_the_mesh_alive():
     mesh = fspm.mesh_tree(chain_tree(2, 0.01))
     positions = mesh.positions

@@ -42,12 +42,12 @@ TEST(Impostor, NearestViewByAngle) {
 TEST(Impostor, RejectsTooFewViews) {
   ImpostorViews v;
   v.azimuths = 2;
-  EXPECT_THROW(validate(v), ValueError);
+  EXPECT_THROW(v.validate(), ValueError);
   v = ImpostorViews{};
   v.elevations_deg.clear();
-  EXPECT_THROW(validate(v), ValueError);
+  EXPECT_THROW(v.validate(), ValueError);
   v.elevations_deg = {95.0};
-  EXPECT_THROW(validate(v), ValueError);
+  EXPECT_THROW(v.validate(), ValueError);
 }
 
 // One plant whose bounding sphere has centre (0, 0, 1) and radius 1, placed twice: turned by 90

@@ -236,15 +236,15 @@ TEST(InstanceLod, ImpostorsFromTheDistanceOfEqualProjectedSize) {
 TEST(InstanceLod, RejectsBadOptions) {
   LodOptions o;
   o.leaf_fractions = {0.5, 0.25};
-  EXPECT_THROW(validate(o), ValueError);
+  EXPECT_THROW(o.validate(), ValueError);
   o.leaf_fractions = {1.0, 1.0};
-  EXPECT_THROW(validate(o), ValueError);
+  EXPECT_THROW(o.validate(), ValueError);
   o = LodOptions{};
   o.jitter = 1.0;
-  EXPECT_THROW(validate(o), ValueError);
+  EXPECT_THROW(o.validate(), ValueError);
   o = LodOptions{};
   o.impostor_distance_m = -1.0;
-  EXPECT_THROW(validate(o), ValueError);
+  EXPECT_THROW(o.validate(), ValueError);
   EXPECT_THROW(make_lod_plant({}, LodOptions{}, 1), ValueError);
 }
 

@@ -70,17 +70,17 @@ TEST(ReliefCrown, RadiusLookupFollowsTheCubemapLayout) {
 }
 
 TEST(ReliefCrown, RefusesWhatCannotBeDrawn) {
-  EXPECT_NO_THROW(validate(crown_of(4, lopsided_radius)));
+  EXPECT_NO_THROW(crown_of(4, lopsided_radius).validate());
   ReliefCrown c = crown_of(4, lopsided_radius);
   c.radius_m.pop_back();
-  EXPECT_THROW(validate(c), ValueError);
+  EXPECT_THROW(c.validate(), ValueError);
   c = crown_of(4, lopsided_radius);
   c.radius_m[5] = std::nanf("");
-  EXPECT_THROW(validate(c), ValueError);
+  EXPECT_THROW(c.validate(), ValueError);
   c = crown_of(4, lopsided_radius);
   c.placements.front()(0, 0) = 0.0f;
   c.placements.front()(1, 1) = 0.0f;
-  EXPECT_THROW(validate(c), ValueError);
+  EXPECT_THROW(c.validate(), ValueError);
 }
 
 // The lopsided surface as triangles: a latitude-longitude sphere around the centre with each
