@@ -19,10 +19,10 @@
 #include "scans/clusters_file.hpp"
 #include "scans/cylinders_csv.hpp"
 #include "scans/encoder.hpp"
-#include "scans/isolated_points.hpp"
 #include "scans/point_set_file.hpp"
 #include "scans/point_set_writer.hpp"
 #include "scans/scan_simulator.hpp"
+#include "scans/scanned_tree.hpp"
 #include "scans/tree_measurements.hpp"
 
 namespace fspm::cli {
@@ -75,21 +75,6 @@ nlohmann::json measurements_json(const scans::TreeMeasurements& m) {
 
 // Occlusion gaps the neighbour graph bridged, where (the middle of each bridge, in the input's
 // coordinates) and how long: the skeleton there rests on a guess.
-std::string gaps_warning(const scans::EncodeResult& r) {
-  constexpr std::size_t kListed = 5;
-  std::string where;
-  for (std::size_t k = 0; k < r.gaps.size() && k < kListed; ++k) {
-    const Eigen::Vector3d mid = 0.5 * (r.gaps[k].from + r.gaps[k].to);
-    where += fmt::format("{}({:.2f}, {:.2f}, {:.2f}) over {:.2f} m", k > 0 ? "; " : "", mid.x(),
-                         mid.y(), mid.z(), r.gaps[k].length_m);
-  }
-  if (r.gaps.size() > kListed) where += fmt::format("; and {} more", r.gaps.size() - kListed);
-  return fmt::format(
-      "{} occlusion gap{} (longer than {:.3f} m) bridged along the branch's direction or by the "
-      "shortest edge, at {}; check the skeleton there",
-      r.gaps.size(), r.gaps.size() == 1 ? "" : "s", r.gap_m, where);
-}
-
 nlohmann::json gaps_json(const scans::EncodeResult& r) {
   nlohmann::json out = nlohmann::json::array();
   for (const scans::BridgedGap& g : r.gaps) {
@@ -125,13 +110,11 @@ void run_encode(const EncodeCommand& o) {
   if (o.gamma) options.species.gamma = *o.gamma;
   if (o.f_s) options.species.f_s = *o.f_s;
   options.follow_main_axes = !o.pirk_split;
-  // Stray returns metres off the tree would be joined to it and widen its crown.
-  const scans::IsolatedPoints cleaned = scans::remove_isolated_points(load_input(o));
-  const scans::PointSet& points = cleaned.kept;
+  const scans::PointSet points = load_input(o);
   const auto t0 = std::chrono::steady_clock::now();
-  const scans::EncodeResult r = [&] {
+  scans::ScannedTree tree = [&] {
     try {
-      return scans::encode_point_set(points, options);
+      return scans::encode_and_measure(points, options);
     } catch (const MemoryLimitError& e) {
       if (!e.file().empty()) throw;
       throw MemoryLimitError(e.message(), o.input);  // which input was too large
@@ -140,25 +123,11 @@ void run_encode(const EncodeCommand& o) {
       throw ValueError(e.message(), o.input);  // "no trunk diameter could be fitted": in which
     }
   }();
+  const scans::EncodeResult& r = tree.encoding;
+  const scans::TreeMeasurements& m = tree.measurements;
   const std::string bytes = scans::clusters_bytes(r.model);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  scans::TreeMeasurements m = scans::measure_tree(points, r.full_skeleton);
-  if (!options.root_diameter_m && !m.dbh_m && m.tree_found) {
-    // d_root of eq. 3.1 comes from a circle through the lowest trunk points, which a trunk
-    // without a breast-height diameter does not confirm (an airborne scan: a handful of points).
-    m.warnings.push_back(
-        fmt::format("the radii of eq. 3.1 scale with a root diameter of {:.3f} m fitted to the "
-                    "lowest points, unconfirmed at breast height; give --root-diameter",
-                    r.model.root_diameter_m));
-  }
-  if (cleaned.removed > 0) {
-    m.warnings.push_back(fmt::format(
-        "{} isolated points left out (mean distance to their 8 nearest neighbours above {:.2f} m: "
-        "stray returns)",
-        cleaned.removed, cleaned.threshold_m));
-  }
-  if (!r.gaps.empty()) m.warnings.push_back(gaps_warning(r));
   for (const std::string& w : m.warnings) spdlog::warn("{}: {}", o.input, w);
   nlohmann::json doc = {{"points", r.points},
                         {"skeleton_nodes", r.model.skeleton.size()},
@@ -173,7 +142,7 @@ void run_encode(const EncodeCommand& o) {
                         {"bridges", r.bridges},
                         {"gaps", gaps_json(r)},
                         {"ground_points", r.ground_points},
-                        {"isolated_points", cleaned.removed},
+                        {"isolated_points", tree.isolated_points},
                         {"branch_skeleton_nodes", r.branch_skeleton.size()},
                         {"origin", {r.origin.x(), r.origin.y(), r.origin.z()}},
                         {"output", o.output}};

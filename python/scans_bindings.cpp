@@ -16,6 +16,7 @@
 #include "scans/encoder.hpp"
 #include "scans/point_set_file.hpp"
 #include "scans/scan_simulator.hpp"
+#include "scans/scanned_tree.hpp"
 #include "scans/species.hpp"
 #include "scans/tree_measurements.hpp"
 
@@ -236,19 +237,22 @@ void bind_measurements(py::module_& m) {
         scans::EncodeOptions o;
         o.species = scans::species_by_name(species);
         o.root_diameter_m = root_diameter;
-        scans::TreeMeasurements t;
+        scans::ScannedTree tree;
         {
           py::gil_scoped_release release;
-          t = scans::measure_tree(set, scans::encode_point_set(set, o).full_skeleton);
+          tree = scans::encode_and_measure(set, o);
         }
-        return measurements_dict(t);
+        py::dict d = measurements_dict(tree.measurements);
+        d["isolated_points"] = tree.isolated_points;
+        return d;
       },
       py::arg("points"), py::arg("species") = "default", py::arg("root_diameter") = py::none(),
       "Measurements of a scanned tree as fspm encode --json reports them (docs/scans.md): "
       "encodes the (N, 3) points (m, z up) and returns a dict with dbh_m (None without a "
       "compact trunk at 1.2-1.4 m), height_m, crown_width_m, crown_base_m (None without a fork), "
       "woody_volume_m3, branches_per_order, branch_length_per_order_m, "
-      "points_explained_fraction, breast_height_points, stems, tree_found, warnings and "
+      "points_explained_fraction, breast_height_points, stems, isolated_points (stray returns left "
+      "out first), tree_found, warnings and "
       "cylinders, an (N, 12) array: start x y z, axis x y z, length, radius, parent, branch, "
       "order (TreeQSM's columns, numbered from 1) and nested");
 }

@@ -152,6 +152,15 @@ def test_a_cylinder_measures_to_its_diameter_height_and_volume():
     assert m["cylinders"][0, 8] == 0  # TreeQSM numbering: no parent for the first
 
 
+def test_a_stray_return_is_left_out_as_fspm_encode_does():
+    # One return 20 m beside a 3 m trunk: kept, it would widen the crown to about 10 m.
+    stray = np.vstack([cylinder_points(), [[20.0, 0.0, 2.5]]])
+    m = fspm.measure_points(stray)
+    assert m["isolated_points"] == 1
+    assert m["crown_width_m"] < 1.0
+    assert any("isolated points" in w for w in m["warnings"])
+
+
 def test_projected_coordinates_measure_the_same():
     near = fspm.measure_points(cylinder_points())
     far = fspm.measure_points(cylinder_points() + np.array([500000.0, 5800000.0, 300.0]))
