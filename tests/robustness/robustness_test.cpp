@@ -1244,6 +1244,22 @@ std::vector<Case> budget_cases() {
        {"s.xyz"},
        {},
        100},
+      // Two runs of about 70 MiB each (the turtle's tree of 2^19 internodes) under a limit of
+      // 100 MiB: with --jobs 2 they share the limit, so the second waits for the first instead
+      // of doubling the peak (each alone peaks near 150 MB with the program; both at once near
+      // 250 MB), and both succeed as with --jobs 1.
+      {"RunJobsShareTheMemoryLimit",
+       {{"t.l", "derivation length: 19\nAxiom: A\nA --> F[+A][-A]\n"},
+        {"e.toml",
+         "[experiment]\nname = \"m\"\nreplicates = 2\n[model]\nkind = \"lsystem\"\nfile = "
+         "\"t.l\"\n[outputs]\nmetrics = [\"nodes\"]\n"}},
+       {},
+       "--memory-limit 100M run {dir}/e.toml --out {dir}/out --jobs 2",
+       0,
+       "progress: 2/2 runs \\(100%\\), 0 failed",
+       {},
+       {},
+       200},
       // Stages are made one at a time into one tree: a long sequence holds no more than one.
       {"ThousandStagesWithinASmallLimit",
        {},
