@@ -210,7 +210,9 @@ double mesh_view_steps(const ViewCommand& c, const std::vector<io::SteppedInput>
   coarse.edge_length_m *= 4.0;
   coarse.max_sides = std::min(6, c.max_sides);
   coarse.min_sides = 3;
-  far = io::steps_side_by_side(sources, ages, coarse);
+  double held_bytes = 0.0;
+  for (const auto& step : steps) held_bytes += io::stored_bytes(step);
+  far = io::steps_side_by_side(sources, ages, coarse, held_bytes);
   return coarse.edge_length_m;
 }
 
