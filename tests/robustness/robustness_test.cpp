@@ -176,6 +176,25 @@ std::vector<Case> output_cases() {
        "m.obj: cannot write: " + kFull,
        {"m.mtl"},
        "ln -s /dev/full {dir}/m.obj; "},
+      // The crown's cubemaps description (read by view --ray-cast) took the last of a key given
+      // twice.
+      {"CrownCubemapsKeyGivenTwice",
+       {},
+       {"crown " + kExamples + "/crown/tree_front.png -o {dir}/c"},
+       "view {dir}/c/crown.glb --ray-cast --frames 1 --size 64x64 --screenshot {dir}/o.png",
+       1,
+       "crown_cubemaps.json:[0-9]+:[0-9]+: duplicate key 'cubemap_size'",
+       {"o.png"},
+       "sed -i 's/\"cubemap_size\": \\([0-9]*\\),/\"cubemap_size\": \\1, \"cubemap_size\": 8,/' "
+       "{dir}/c/crown_cubemaps.json; "},
+      {"InterpretedObjAndItsMtlOnAFullDisk",
+       {},
+       {},
+       "lsystem interpret " + kGrammar + " -o {dir}/m.obj",
+       1,
+       "m.obj: cannot write: " + kFull,
+       {"m.mtl"},
+       "ln -s /dev/full {dir}/m.obj; "},
       {"CrownWithPreviewOnAFullDisk",
        {},
        {},
@@ -706,6 +725,28 @@ std::vector<Case> memory_cases() {
 std::vector<Case> option_cases() {
   const std::string scan = "scan " + kTree + " -o {dir}/p.ply";
   return {
+      // Without a display the render runs again under xvfb-run and reads its input a second
+      // time: a FIFO, drained by the first read, blocked it for ever.
+      {"RenderOfAFifoWithoutADisplay",
+       {},
+       {"scan " + kExamples + "/trees/open_a12.treeb -o {dir}/v.xyz --density 2000"},
+       "render {dir}/p.xyz -o {dir}/o.png",
+       1,
+       "p.xyz: not a regular file \\(a pipe or device\\): without an X display the command runs "
+       "again under xvfb-run",
+       {"o.png"},
+       "mkfifo {dir}/p.xyz; (timeout 20 sh -c 'cat {dir}/v.xyz > {dir}/p.xyz' >/dev/null 2>&1 &); "
+       "timeout 60 env -u DISPLAY -u WAYLAND_DISPLAY "},
+      // A joining distance of a denormal is raised to a millionth of the mesh's extent; the
+      // linking of its parts then searched a grid of such cells for gaps a million times wider.
+      {"StagesJoinDistanceOfADenormal",
+       {},
+       {},
+       "stages " + kExamples + "/trees/y_tubes.obj --at 0.5 -o {dir}/o.tree --join-distance 1e-320",
+       0,
+       "",
+       {},
+       "timeout 60 "},
       {"GlobalJsonOnACommandWithout",
        {},
        {},
@@ -1286,6 +1327,18 @@ std::vector<Case> budget_cases() {
        {"v.png"},
        {},
        300},
+      // A GLB chunk whose length lies (2 GiB declared, a kilobyte present) had the decoder
+      // allocate the declared length: 2 GB of resident memory before it noticed.
+      {"GlbChunkLengthLies",
+       {},
+       {"mesh " + kTree + " -o {dir}/v.glb"},
+       "--memory-limit 64M encode {dir}/bad.glb -o {dir}/o.clusters",
+       1,
+       "bad.glb: GLB chunk 0 declares 2147483647 bytes, but only [0-9]+ follow its header",
+       {"o.clusters"},
+       "{ head -c 12 {dir}/v.glb; printf '\\377\\377\\377\\177'; tail -c +17 {dir}/v.glb; } > "
+       "{dir}/bad.glb; ",
+       100},
       // Stages are made one at a time into one tree: a long sequence holds no more than one.
       {"ThousandStagesWithinASmallLimit",
        {},
