@@ -1201,7 +1201,8 @@ std::vector<Case> budget_cases() {
        {},
        "--memory-limit 64M render {dir}/cloud.xyz -o {dir}/cloud.png",
        1,
-       "drawing 100000 points as spheres \\(the mesh and the renderer's copy\\) needs about "
+       "drawing 100000 points as spheres \\(the mesh and the renderer's copies and buffers\\) "
+       "needs about "
        "[0-9.]+ MiB, above the memory limit of 64 MiB \\(--memory-limit\\)",
        {"cloud.png"},
        {},
