@@ -12,6 +12,7 @@
 #include "fspm/atomic_file.hpp"
 #include "fspm/error.hpp"
 #include "fspm/input_file.hpp"
+#include "fspm/json_fields.hpp"
 
 namespace fspm::cli {
 namespace {
@@ -39,13 +40,8 @@ struct Description {
 };
 
 Description read_description(const std::string& path) {
-  const auto in = open_input_file(path);
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(*in);
-  } catch (const nlohmann::json::exception& e) {
-    throw ParseError(std::string("not a crown cubemaps description: ") + e.what(), path);
-  }
+  // Through the one JSON reader: a key given twice is refused, not taken at its last value.
+  const nlohmann::json j = parse_json_text(read_text_input_file(path), path);
   const char* expected =
       "a crown cubemaps description (fspm_crown_cubemaps, centre_m, cubemap_size, color_cubemap, "
       "radius_cubemap)";

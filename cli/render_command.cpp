@@ -95,6 +95,7 @@ void run_lod_render(const RenderCommand& c, const graphics::MeshOptions& mesh_op
 void run_render(RenderCommand c) {
   c.tree = io::resolve_crown_folder(c.tree);
   refuse_overwriting_input(c.out, {c.tree, c.obstacles, c.frame});
+  check_inputs_readable_twice({c.tree, c.obstacles, c.frame});
   const auto t0 = std::chrono::steady_clock::now();
   graphics::RenderOptions options = c.render;
   graphics::parse_size(c.size, options.width, options.height);

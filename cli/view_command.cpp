@@ -196,7 +196,9 @@ double mesh_view_steps(const ViewCommand& c, const std::vector<io::SteppedInput>
   coarse.edge_length_m *= 4.0;
   coarse.max_sides = std::min(6, mesh_options.max_sides);
   coarse.min_sides = 3;
-  far = io::steps_side_by_side(sources, ages, coarse);
+  double held_bytes = 0.0;
+  for (const auto& step : steps) held_bytes += io::stored_bytes(step);
+  far = io::steps_side_by_side(sources, ages, coarse, held_bytes);
   return coarse.edge_length_m;
 }
 
@@ -269,6 +271,7 @@ void run_view(ViewCommand c) {
   if (!graphics::viewer_available()) {
     throw ValueError("fspm was built without the viewer (FSPM_WITH_VIEWER=OFF)");
   }
+  if (!c.screenshot.empty()) check_inputs_readable_twice(c.trees);
   graphics::ViewerOptions options = viewer_options(c);
   if (c.stages > 0) options.step_label = "time";
   if (!options.screenshot.empty()) graphics::check_image_path(options.screenshot);

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "fspm/error.hpp"
 #include "fspm/signal_cleanup.hpp"
 #include "graphics/render.hpp"
 
@@ -73,6 +74,35 @@ void stop_with_xvfb_run() {
 }
 
 }  // namespace
+
+namespace {
+
+// Whether rerun_under_xvfb_if_needed() would start the command again.
+bool will_rerun_under_xvfb() {
+  return std::getenv("FSPM_UNDER_XVFB") == nullptr && !graphics::display_available() &&
+         std::filesystem::exists("/usr/bin/xvfb-run");
+}
+
+}  // namespace
+
+void check_inputs_readable_twice(const std::vector<std::string>& paths) {
+  bool rerun_known = false, rerun = false;
+  for (const std::string& path : paths) {
+    if (path.empty()) continue;
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (ec || !std::filesystem::exists(status) || std::filesystem::is_regular_file(status) ||
+        std::filesystem::is_directory(status)) {
+      continue;
+    }
+    if (!rerun_known) rerun = will_rerun_under_xvfb(), rerun_known = true;
+    if (!rerun) return;
+    throw IoError(
+        "not a regular file (a pipe or device): without an X display the command runs again "
+        "under xvfb-run and reads its inputs twice; expected a file on disk",
+        path);
+  }
+}
 
 void rerun_under_xvfb_if_needed() {
   if (std::getenv("FSPM_UNDER_XVFB") != nullptr) {

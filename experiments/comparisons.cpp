@@ -23,6 +23,7 @@
 #include "fspm/error.hpp"
 #include "fspm/file_kind.hpp"
 #include "fspm/input_file.hpp"
+#include "fspm/memory_account.hpp"
 #include "fspm/nesting_depth.hpp"
 #include "fspm/number_text.hpp"
 #include "fspm/p_value_text.hpp"
@@ -183,6 +184,8 @@ ComparisonResults run_comparisons(const Experiment& x, const std::vector<RunReco
   std::vector<std::string> errors(jobs_list.size());
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, jobs_list.size(), [&](std::size_t i) {
+      // The pairs computed at once share the one memory limit (fspm/memory_account.hpp).
+      const MemoryAccount account;
       try {
         const TreeGraph a =
             read_tree_file((fs::path(out_dir) / *tree_file(*jobs_list[i].a)).string());

@@ -17,6 +17,7 @@
 #include "experiments/run_execution.hpp"
 #include "experiments/run_order.hpp"
 #include "experiments/run_plan.hpp"
+#include "fspm/memory_account.hpp"
 #include "fspm/memory_budget.hpp"
 #include "fspm/tree_file.hpp"
 
@@ -184,7 +185,12 @@ RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
       if (interrupted()) break;
       const std::size_t k = next.fetch_add(1);
       if (k >= pending.size()) break;
-      std::optional<RunRecord> record = execute_run(model, plan.run(pending[k]), settings);
+      std::optional<RunRecord> record;
+      {
+        // The workers share the one memory limit: each run reserves what it checks.
+        const MemoryAccount account;
+        record = execute_run(model, plan.run(pending[k]), settings);
+      }
       if (!record) continue;
       mailbox.put(std::move(*record));
     }

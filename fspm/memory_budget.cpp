@@ -11,6 +11,7 @@
 #include <cstdio>
 
 #include "fspm/error.hpp"
+#include "fspm/memory_account.hpp"
 
 namespace fspm {
 namespace {
@@ -114,7 +115,14 @@ std::string precise_memory_text(double bytes) {
 
 void check_memory(double bytes, std::string_view what, const std::string& file) {
   const auto limit = static_cast<double>(memory_limit_bytes());
-  if (bytes <= limit) return;  // false for NaN: an overflowed estimate fails too
+  if (bytes <= limit) {  // false for NaN: an overflowed estimate fails too
+    // A job of several (fspm/memory_account.hpp) takes its share of the one limit.
+    if (bytes > 0) {
+      MemoryAccount::reserve_on_this_thread(static_cast<std::uint64_t>(std::ceil(bytes)), what,
+                                            file);
+    }
+    return;
+  }
   std::string need = memory_text(bytes);
   // Just above the limit both may round alike ("1 GiB, above the memory limit of 1 GiB").
   if (need == memory_text(limit)) need = precise_memory_text(bytes);

@@ -25,7 +25,8 @@ void set_memory_limit_bytes(std::uint64_t bytes);
 
 // Throws MemoryLimitError "WHAT needs about 3.2 GiB, above the memory limit of 2 GiB
 // (--memory-limit)" when `bytes` (an estimate; may be huge, infinite or NaN from an overflowing
-// product) exceeds the limit. `file` becomes the error's file when given.
+// product) exceeds the limit. `file` becomes the error's file when given. On the thread of a job
+// (fspm/memory_account.hpp) the estimate is also reserved out of the limit the jobs share.
 void check_memory(double bytes, std::string_view what, const std::string& file = {});
 
 // Byte count in a short human form: "512 bytes", "1.5 KiB", "3.2 GiB".

@@ -19,7 +19,7 @@
 
 namespace fspm {
 
-void write_mtg(const TreeGraph& tree, std::ostream& out);
+void write_mtg(const TreeGraph& tree, std::ostream& out, const std::string& path = {});
 
 // Throws ParseError naming `file`, the line and what was expected.
 TreeGraph parse_mtg(std::string_view text, const std::string& file = "<mtg>");

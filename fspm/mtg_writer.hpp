@@ -6,17 +6,20 @@
 // right; dated repetitions follow their entity as '*' lines.
 #include <cstdint>
 #include <iosfwd>
+#include <string>
 
 #include "fspm/mtg.hpp"
 
 namespace fspm {
 
-void write_mtg(const Mtg& mtg, std::ostream& out);
+// `path` names the output in errors.
+void write_mtg(const Mtg& mtg, std::ostream& out, const std::string& path = {});
 
 // MTG indents every level of nested branching by one tab and starts the features after the
 // deepest level, so a chain of 200 000 branches on branches (50 bytes with the "+.+" notation)
-// would take tens of gigabytes: a code of more than 256 MiB is refused (ValueError) before
-// anything is written. `bytes` is the code's size, `columns` its deepest level.
-void check_mtg_code_size(std::uint64_t bytes, int columns);
+// would take tens of gigabytes: a code of more than 256 MiB is refused (ValueError naming `path`,
+// the output, and the size) before anything is written. `bytes` is the code's size, `columns`
+// its deepest level.
+void check_mtg_code_size(std::uint64_t bytes, int columns, const std::string& path);
 
 }  // namespace fspm

@@ -103,7 +103,7 @@ void write_tree_format(const TreeGraph& tree, std::span<const std::string> names
             out << to_newick_named(tree, names) << '\n';
             break;
           case TreeFormat::kMtg:
-            write_mtg(tree, out);
+            write_mtg(tree, out, path);
             break;
         }
       },

@@ -62,6 +62,8 @@ void write_obj(const TriangleMesh& mesh, const std::string& path) {
   mtl.replace_extension(".mtl");
   std::map<float, std::string> translucent;
   const std::vector<std::string> names = triangle_material_names(mesh, translucent);
+  // The .obj and its .mtl both, or neither (a full disk on the .obj must not leave the .mtl).
+  OutputTransaction both;
   write_mtl(mtl.string(), translucent);
   write_file_atomically(path, [&](std::ostream& out) {
     fmt::memory_buffer buf;
@@ -96,6 +98,7 @@ void write_obj(const TriangleMesh& mesh, const std::string& path) {
     }
     flush();
   });
+  both.commit();
 }
 
 }  // namespace fspm::graphics

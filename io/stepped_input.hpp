@@ -35,9 +35,15 @@ struct SteppedInput {
 };
 
 // Every input meshed at every age (instanced), placed side by side along x with a gap of a
-// tenth of the widest.
+// tenth of the widest. All the steps are held at once, so before each is made the steps so far,
+// `held_bytes` the caller already holds (the detailed steps, when these are the far ones) and the
+// bound of one more (the inputs' full meshes) are checked against the memory limit.
 std::vector<graphics::InstancedMesh> steps_side_by_side(const std::vector<SteppedInput>& inputs,
                                                         const std::vector<double>& ages,
-                                                        const graphics::MeshOptions& options);
+                                                        const graphics::MeshOptions& options,
+                                                        double held_bytes = 0.0);
+
+// The bytes an instanced mesh holds: its shared meshes and its instances.
+double stored_bytes(const graphics::InstancedMesh& mesh);
 
 }  // namespace fspm::io

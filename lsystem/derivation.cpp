@@ -6,6 +6,7 @@
 #include <string>
 
 #include "fspm/error.hpp"
+#include "fspm/memory_account.hpp"
 #include "fspm/memory_budget.hpp"
 #include "fspm/number_text.hpp"
 #include "lsystem/query_pass.hpp"
@@ -83,7 +84,7 @@ Derivation::Derivation(const LSystem& system, const DeriveOptions& options)
     for (const Expression& e : t.arguments) args_.push_back(e.evaluate(state));
     current_.push_back(t.symbol, args_);
   }
-  check_budget(current_.size());
+  check_budget(current_.size(), true);
   apply_group_repeatedly(system.decomposition, current_);
   if (has_cut_) apply_cut(current_);
   if (has_queries_) update_queries();
@@ -132,7 +133,7 @@ void Derivation::interpret_module(SymbolId symbol, std::span<const double> param
   apply_group_repeatedly(sys_.homomorphism, out);
 }
 
-void Derivation::check_budget(std::size_t size) const {
+void Derivation::check_budget(std::size_t size, bool reserve) const {
   if (size > options_.module_budget) {
     throw ValueError("the string grows past the module budget of " +
                          std::to_string(options_.module_budget) + " modules at derivation step " +
@@ -140,7 +141,7 @@ void Derivation::check_budget(std::size_t size) const {
                          " (an exploding grammar? fewer steps or a larger budget)",
                      sys_.file);
   }
-  if (size > memory_cap_) {
+  if (size > memory_cap_ || reserve) {
     check_memory(input_bytes_ + static_cast<double>(size) * bytes_per_module_,
                  "the L-system string at derivation step " + std::to_string(steps_done_ + 1),
                  sys_.file);
@@ -157,7 +158,7 @@ void Derivation::plan_memory(const ModuleString& in) {
     bytes_per_module_ += sizeof(std::uint32_t) + sizeof(double) * std::max(1.0, mean);
   }
   input_bytes_ = static_cast<double>(in.memory_bytes());
-  const double room = static_cast<double>(memory_limit_bytes()) - input_bytes_;
+  const double room = static_cast<double>(memory_room_bytes()) - input_bytes_;
   memory_cap_ = room <= 0.0 ? 0 : static_cast<std::size_t>(room / bytes_per_module_);
 }
 
@@ -173,7 +174,7 @@ bool Derivation::rewrite_fast(const ModuleString& in, ModuleString& out) {
   std::size_t total = 0;
   for (SymbolId s : src) total += length[s];
   plan_memory(in);
-  check_budget(total);
+  check_budget(total, true);
   std::vector<SymbolId>& dst = out.symbols();
   dst.resize(total);
   SymbolId* o = dst.data();
@@ -380,7 +381,7 @@ bool Derivation::rewrite(const ProductionGroup& group, const ModuleString& in, M
       out.push_back_from(in, i);
     }
   }
-  check_budget(out.size());
+  check_budget(out.size(), true);
   if (&group != &sys_.productions) return changed;  // decomposition passes barely grow
   if (!in.empty()) {
     growth_ = std::max(1.0, static_cast<double>(out.size()) / static_cast<double>(in.size()));

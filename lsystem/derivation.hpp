@@ -84,8 +84,12 @@ class Derivation {
                    std::size_t i);
   void bind(const ModulePattern& pattern, const ModuleString& in, std::size_t i);
   void emit(const Production& p, ModuleString& out);
-  void check_budget(std::size_t size) const;
-  // Sets the largest output string the memory limit allows next to the string `in`.
+  // Refuses a string of `size` modules above the module budget or the memory limit; `reserve`
+  // also reserves its bytes for the job sharing the limit (fspm/memory_account.hpp), as a
+  // finished string does, where one still being written is checked only past memory_cap_.
+  void check_budget(std::size_t size, bool reserve = false) const;
+  // Sets the largest output string the memory limit (less what other jobs hold) allows next to
+  // the string `in`.
   void plan_memory(const ModuleString& in);
 
   const LSystem& sys_;

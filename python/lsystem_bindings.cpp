@@ -7,6 +7,7 @@
 
 #include "fspm/compressed_tree_graph.hpp"
 #include "fspm/instanced_ctree.hpp"
+#include "fspm/saturating.hpp"
 #include "lsystem/derivation.hpp"
 #include "lsystem/instanced_interpretation.hpp"
 #include "lsystem/lsystem.hpp"
@@ -21,6 +22,13 @@ namespace {
 fspm::lsystem::LSystem load_lsystem(const std::string& path,
                                     const std::map<std::string, std::string>& defines) {
   return fspm::lsystem::parse_lsystem_file(path, defines);
+}
+
+// A count as Python gives it: an int, or None where it saturated at 2^64 - 1 (more than 10^19;
+// fspm/saturating.hpp), so no caller computes with 18446744073709551615 as if it were the count.
+py::object count_object(std::uint64_t count) {
+  if (count == kSaturated) return py::none();
+  return py::int_(count);
 }
 
 fspm::lsystem::DeriveOptions derive_options(std::optional<int> steps,
@@ -67,19 +75,22 @@ void bind_lsystem_derivation(py::module_& m) {
           }
         }
         py::dict symbols;
+        bool saturated = modules == kSaturated || explicit_bytes == kSaturated;
         for (std::size_t i = 0; i < per_symbol.size(); ++i) {
           if (per_symbol[i] != 0) {
             symbols[py::str(sys.symbols.name(static_cast<fspm::lsystem::SymbolId>(i)))] =
-                per_symbol[i];
+                count_object(per_symbol[i]);
+            saturated = saturated || per_symbol[i] == kSaturated;
           }
         }
         d["steps"] = done;
-        d["modules"] = modules;
+        d["modules"] = count_object(modules);
         d["symbols"] = symbols;
+        d["saturated"] = saturated;
         if (compressed) {
           d["graph_nodes"] = graph_nodes;
           d["graph_bytes"] = graph_bytes;
-          d["explicit_bytes"] = explicit_bytes;
+          d["explicit_bytes"] = count_object(explicit_bytes);
           d["compression"] = static_cast<double>(explicit_bytes) /
                              static_cast<double>(std::max<std::size_t>(graph_bytes, 1));
         }
@@ -90,7 +101,11 @@ void bind_lsystem_derivation(py::module_& m) {
       "Derive an L-system file: steps, modules and the count of each module name; "
       "compressed=True derives into shared substructures (context-free L-systems only, "
       "docs/lsystem-language.md) and adds graph_nodes, graph_bytes, explicit_bytes and "
-      "compression (explicit_bytes / graph_bytes); lsystem_plant gives the drawn plant");
+      "compression (explicit_bytes / graph_bytes); lsystem_plant gives the drawn plant.\n\n"
+      "A count of the compressed derivation can pass 2^64 - 1 (more than 10^19 modules; ABOP "
+      "Fig. 1.24a at 28 steps): such a count (modules, a value of symbols, explicit_bytes) is "
+      "None and saturated is True, so no arithmetic goes on with a wrong number; compression "
+      "is then a lower bound. saturated is False when every count is exact.");
 }
 
 void bind_lsystem_drawing(py::module_& m) {

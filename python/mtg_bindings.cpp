@@ -128,7 +128,7 @@ void bind_mtg(py::module_& m) {
       .def(
           "write",
           [](const PyMtg& g, const std::string& path) {
-            write_file_atomically(path, [&](std::ostream& out) { write_mtg(g.mtg, out); });
+            write_file_atomically(path, [&](std::ostream& out) { write_mtg(g.mtg, out, path); });
           },
           py::arg("path"), "Write the graph as an MTG file (scales and features kept)");
   m.def(

@@ -81,6 +81,39 @@ void append_subtree(const aiScene& scene, const aiNode& node, const aiMatrix4x4&
   }
 }
 
+// The chunks after the GLB header (glTF 2.0 spec, "Chunks"): each an 8-byte header (length, type)
+// and its data, the first of type JSON, together exactly the rest of the file. The decoder
+// allocates a chunk from its declared length before reading it: a length past the end of the
+// file (4 GB from 4 bytes) is refused here, where only the chunk headers are read.
+void check_glb_chunks(std::ifstream& in, const std::string& path, std::uint64_t file_bytes) {
+  constexpr std::uint32_t kJson = 0x4E4F534A;  // "JSON", little-endian
+  std::uint64_t at = 12;
+  for (int chunk = 0; at < file_bytes; ++chunk) {
+    unsigned char h[8] = {};
+    in.seekg(static_cast<std::streamoff>(at));
+    if (file_bytes - at < 8 || !in.read(reinterpret_cast<char*>(h), sizeof h)) {
+      throw ParseError("GLB chunk " + std::to_string(chunk) + " at byte " + std::to_string(at) +
+                           ": its 8-byte header is cut off by the end of the file",
+                       path);
+    }
+    const std::uint64_t length = std::uint64_t{h[0]} | std::uint64_t{h[1]} << 8 |
+                                 std::uint64_t{h[2]} << 16 | std::uint64_t{h[3]} << 24;
+    const std::uint32_t type = std::uint32_t{h[4]} | std::uint32_t{h[5]} << 8 |
+                               std::uint32_t{h[6]} << 16 | std::uint32_t{h[7]} << 24;
+    if (chunk == 0 && type != kJson) {
+      throw ParseError("the first GLB chunk is not JSON, expected the glTF's JSON first", path);
+    }
+    if (length > file_bytes - at - 8) {
+      throw ParseError("GLB chunk " + std::to_string(chunk) + " declares " +
+                           std::to_string(length) + " bytes, but only " +
+                           std::to_string(file_bytes - at - 8) + " follow its header",
+                       path);
+    }
+    at += 8 + length;
+  }
+  if (at == 12) throw ParseError("a GLB file without chunks, expected its JSON chunk", path);
+}
+
 // The 12-byte header of a binary glTF (glTF 2.0 spec, "GLB File Format Specification"): magic
 // "glTF", version 2, and the total length, which must be the file's size (a lying length would
 // have the decoder read past the data or ignore part of it).
@@ -104,6 +137,7 @@ void check_glb_header(const std::string& path, std::uint64_t file_bytes) {
                          " bytes, the file has " + std::to_string(file_bytes),
                      path);
   }
+  check_glb_chunks(in, path, file_bytes);
 }
 
 }  // namespace

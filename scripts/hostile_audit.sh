@@ -9,6 +9,11 @@
 #   - nothing left behind: a failed command leaves no new file and no temporary;
 #   - messages: a failure prints one line "fspm: error: ..." naming the input or output at fault;
 #     no count is printed as the 18446744073709551615 of a saturated 64-bit count.
+# The cases: every input kind broken in fifteen ways through each command that reads it, FIFOs
+# where secondary inputs go, a key given twice in each TOML and JSON kind, headers that lie (PLY,
+# PCD, LAS, glTF, GLB, images, tree files), growth past any memory, every writer and standard
+# output on /dev/full, wrong options and every numeric option at 1e308, 1e-320 and 2^63, jobs
+# sharing the memory limit, and signals in mid-run.
 #
 # Usage: scripts/hostile_audit.sh [FSPM]   (default build/bin/fspm; env LIMIT_MIB, SLACK_MIB,
 # TIMEOUT, KEEP=1 keeps the scratch folder, VERBOSE=1 prints every case's exit, memory and
@@ -173,6 +178,17 @@ q scan "$v/v.treeb" -o "$v/v.xyz" --density 2000
 q mesh "$v/v.nwk" -o "$v/v.glb"
 q encode "$v/v.treeb" -o "$v/v.clusters"
 q run "$v/experiment.toml" --out "$v/results"
+{ pcd_n=$(grep -c '' "$v/v.xyz")
+  printf 'VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH %s\nHEIGHT 1\nPOINTS %s\nDATA ascii\n' "$pcd_n" "$pcd_n"
+  cat "$v/v.xyz"; } >"$v/v.pcd"
+# A glTF of one triangle, its buffer inline.
+printf '%s' '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,1]}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0}' >"$v/v.gltf"
+q tree convert "$v/v.nwk" "$v/v2.mtg"
+cp "$ex/lsystems/monopodial_tree.l" "$v/m.l"
+cp "$ex/lsystems/monopodial_tree.v" "$v/m.v" 2>/dev/null || printf 'angle factor: 30\n' >"$v/m.v"
+# An experiment whose runs keep their trees and compare them, for fspm compare.
+printf '[experiment]\nname = "c"\nreplicates = 3\n[model]\nkind = "synthetic"\n[sweep]\nnodes = [2, 6]\n[outputs]\nkeep = ["tree"]\n[[comparison]]\nname = "2-6"\na = { nodes = 2 }\nb = { nodes = 6 }\n' >"$v/compare.toml"
+q run "$v/compare.toml" --out "$v/cmp"
 
 # --- hostile variants of each input kind, through each command that reads it ---------------
 # input_cases NAME FILE EXT CMD: CMD holds @IN where the input goes. A text format cut in half
@@ -234,6 +250,25 @@ input_cases mesh-treeb "$v/v.treeb" treeb "mesh @IN -o out.obj"
 input_cases mesh-scene "$v/scene.json" json "mesh @IN -o out.glb"
 input_cases crown-png "$v/v.png" png "crown @IN -o out"
 input_cases ttest-csv "$v/a.csv" csv "stats ttest @IN $v/a.csv"
+input_cases encode-pcd "$v/v.pcd" pcd "encode @IN -o out.clusters"
+input_cases encode-gltf "$v/v.gltf" gltf "encode @IN -o out.clusters"
+input_cases render-xyz "$v/v.xyz" xyz "render @IN -o out.png"
+input_cases mesh-ctree "$v/v.ctree" ctree "mesh @IN -o out.glb"
+input_cases mesh-l "$v/v.l" l "mesh @IN -o out.glb"
+input_cases tree-convert-mtg "$v/v2.mtg" mtg "tree convert @IN out.tree"
+input_cases distance-second-treeb "$v/v.treeb" treeb "distance $v/v.nwk @IN"
+input_cases adapt-scene "$v/scene.json" json "adapt $v/v.treeb --scene @IN -o out.tree"
+input_cases grow-scene "$v/scene.json" json "grow $v/growth.toml --scene @IN -o out.tree"
+input_cases crown-mask "$v/v.png" png "crown $v/v.png --mask @IN -o out"
+# A view file is read leniently (docs: unknown keys are ignored, cpfg has many display settings),
+# so only what cannot be a view file's text is expected refused.
+for kind in "missing:" "directory:mkdir in.v" "device:ln -s /dev/zero in.v" "link-loop:ln -s in.v in.v" \
+  "binary:head -c 3000 /bin/ls > in.v" "nul-bytes:head -c 4096 /dev/zero > in.v"; do
+  run_case "interpret-view/${kind%%:*}" fail in.v "${kind#*:}" "lsystem interpret $v/m.l --view in.v -o out.tree"
+done
+run_case interpret-view/bad-number fail in.v "printf 'angle factor: x\n' > in.v" "lsystem interpret $v/m.l --view in.v -o out.tree"
+run_case interpret-view/angle-factor-0 fail in.v "printf 'angle factor: 0\n' > in.v" "lsystem interpret $v/m.l --view in.v -o out.tree"
+input_cases describe-csv "$v/a.csv" csv "stats describe @IN"
 
 # --- headers that declare far more than the file holds ---------------------------------------
 ply_header() {  # COUNT FORMAT
@@ -387,6 +422,191 @@ run_case option/missing-output-folder fail "" ":" "mesh $v/v.nwk -o nowhere/m.ob
 run_case option/encode-text-ext fail "" ":" "encode $v/v.treeb -o out.txt"
 run_case option/no-command fail "" ":" ""
 run_case option/unknown-command fail "" ":" "frobnicate"
+
+# --- a key given twice, in every TOML and JSON input kind ---------------------------------------
+# The last value would silently win: each is refused with the file named.
+dup_toml() {  # NAME FILE ARGS: appends a second [TABLE] key to a copy of FILE
+  run_case "duplicate/$1" fail "in.toml" "$2" "$3"
+}
+dup_toml plant-key "sed 's/^cycles = 12$/cycles = 12\\ncycles = 3/' $v/plant.toml > in.toml" \
+  "greenlab simulate in.toml -o out.ctree"
+dup_toml growth-key "sed 's/^years = 20$/years = 20\\nyears = 2/' $v/growth.toml > in.toml" "grow in.toml -o out.tree"
+dup_toml plant-table "cp $v/plant.toml in.toml; grep -m 1 '^\[' $v/plant.toml >> in.toml" "greenlab simulate in.toml -o out.ctree"
+dup_toml growth-key-at-end "cp $v/growth.toml in.toml; echo 'preset = \"B\"' >> in.toml" "grow in.toml -o out.tree"
+dup_toml experiment-key "printf '[experiment]\nname = \"s\"\nname = \"t\"\n[model]\nkind = \"synthetic\"\n' > in.toml" "run in.toml --out out"
+dup_toml experiment-table "printf '[experiment]\nname = \"s\"\n[model]\nkind = \"synthetic\"\n[model]\nkind = \"lsystem\"\n' > in.toml" "run in.toml --out out"
+dup_toml experiment-sweep-key "printf '[experiment]\nname = \"s\"\n[model]\nkind = \"synthetic\"\n[sweep]\nnodes = [2]\nnodes = [3]\n' > in.toml" "run in.toml --out out"
+dup_toml experiment-dotted "printf '[experiment]\nname = \"s\"\nexperiment.name = \"t\"\n[model]\nkind = \"synthetic\"\n' > in.toml" "run in.toml --out out"
+run_case duplicate/scene-top fail in.json \
+  "printf '{\"fspm_scene\": 2, \"fspm_scene\": 2, \"obstacles\": []}' > in.json" "mesh in.json -o out.glb"
+run_case duplicate/scene-obstacle fail in.json \
+  "printf '{\"fspm_scene\": 2, \"obstacles\": [{\"type\": \"box\", \"type\": \"sphere\", \"center\": [0,0,0], \"size\": [1,1,1]}]}' > in.json" \
+  "light --scene in.json --points $v/points.csv"
+run_case duplicate/scene-terrain fail in.json \
+  "printf '{\"fspm_scene\": 2, \"terrain\": {\"heightfield\": \"a.png\", \"heightfield\": \"b.png\", \"metres_per_pixel\": 1}}' > in.json" \
+  "mesh in.json -o out.glb"
+run_case duplicate/scene-for-grow fail in.json \
+  "printf '{\"fspm_scene\": 2, \"obstacles\": [], \"obstacles\": []}' > in.json" "grow $v/growth.toml --scene in.json -o out.tree"
+run_case duplicate/gltf-asset any "" \
+  "sed 's/\"asset\":{/\"asset\":{\"version\":\"1.0\",/' $v/v.gltf > in.gltf" "encode in.gltf -o out.clusters"
+run_case duplicate/crown-cubemaps-json fail crown_cubemaps.json \
+  "\"$FSPM\" -q crown $v/v.png -o c; sed -i 's/\"cubemap_size\": \\([0-9]*\\),/\"cubemap_size\": \\1, \"cubemap_size\": 8,/' c/crown_cubemaps.json" \
+  "view c/crown.glb --ray-cast --frames 1 --size 64x64 --screenshot v.png"
+
+# --- headers that lie about what follows: LAS, PCD, glTF -----------------------------------------
+las_patch() {  # OFFSET BYTES (printf escapes): a copy of the valid LAS with BYTES at OFFSET
+  echo "cp $v/v.las in.las; printf '$2' | dd of=in.las bs=1 seek=$1 conv=notrunc 2>/dev/null"
+}
+run_case header/las-offset-past-end fail in.las "$(las_patch 96 '\377\377\377\177')" "encode in.las -o out.clusters"
+run_case header/las-offset-in-header fail in.las "$(las_patch 96 '\010\000\000\000')" "encode in.las -o out.clusters"
+run_case header/las-record-length-0 fail in.las "$(las_patch 105 '\000\000')" "encode in.las -o out.clusters"
+run_case header/las-record-length-1 fail in.las "$(las_patch 105 '\001\000')" "encode in.las -o out.clusters"
+run_case header/las-format-99 fail in.las "$(las_patch 104 '\143')" "encode in.las -o out.clusters"
+run_case header/las-scale-zero any "" "$(las_patch 131 '\000\000\000\000\000\000\000\000')" "encode in.las -o out.clusters"
+run_case header/las-scale-nan fail in.las "$(las_patch 131 '\000\000\000\000\000\000\370\177')" "encode in.las -o out.clusters"
+run_case header/las-header-size-huge fail in.las "$(las_patch 94 '\377\377')" "encode in.las -o out.clusters"
+run_case header/las-vlr-count-huge any in.las "$(las_patch 100 '\377\377\377\377')" "encode in.las -o out.clusters"
+run_case header/las-count-zero fail in.las "$(las_patch 107 '\000\000\000\000')" "encode in.las -o out.clusters"
+run_case header/las-truncated-header fail in.las "head -c 200 $v/v.las > in.las" "encode in.las -o out.clusters"
+run_case header/las-version-9 fail in.las "$(las_patch 24 '\011\011')" "encode in.las -o out.clusters"
+pcd() {  # FIELDS SIZE TYPE COUNT WIDTH HEIGHT POINTS DATA: a PCD header
+  printf 'VERSION .7\nFIELDS %s\nSIZE %s\nTYPE %s\nCOUNT %s\nWIDTH %s\nHEIGHT %s\nPOINTS %s\nDATA %s\n' "$@"
+}
+pcd_case() {  # NAME SETUP-TAIL HEADER-ARGS...
+  local name=$1 tail=$2
+  shift 2
+  run_case "header/pcd-$name" fail in.pcd "$(declare -f pcd); pcd $(printf "'%s' " "$@") > in.pcd; $tail" \
+    "encode in.pcd -o out.clusters"
+}
+pcd_case points-not-width "printf '0 0 0\n1 1 1\n' >> in.pcd" "x y z" "4 4 4" "F F F" "1 1 1" 2 1 5 ascii
+pcd_case width-times-height "head -c 24 /dev/zero >> in.pcd" "x y z" "4 4 4" "F F F" "1 1 1" 65536 65536 2 binary
+pcd_case size-zero "head -c 24 /dev/zero >> in.pcd" "x y z" "0 0 0" "F F F" "1 1 1" 2 1 2 binary
+pcd_case size-mismatch "head -c 24 /dev/zero >> in.pcd" "x y z" "4 4" "F F F" "1 1 1" 2 1 2 binary
+pcd_case no-x "printf '0 0\n' >> in.pcd" "a b" "4 4" "F F" "1 1" 1 1 1 ascii
+pcd_case count-huge "head -c 24 /dev/zero >> in.pcd" "x y z" "4 4 4" "F F F" "1 1 1000000000" 2 1 2 binary
+pcd_case type-unknown "head -c 24 /dev/zero >> in.pcd" "x y z" "4 4 4" "Q Q Q" "1 1 1" 2 1 2 binary
+pcd_case size-3 "head -c 24 /dev/zero >> in.pcd" "x y z" "3 3 3" "F F F" "1 1 1" 2 1 2 binary
+pcd_case compressed-lying "printf '\377\377\377\177\377\377\377\177' >> in.pcd; head -c 16 /dev/zero >> in.pcd" "x y z" "4 4 4" "F F F" "1 1 1" 2 1 2 binary_compressed
+pcd_case negative-points "printf '0 0 0\n' >> in.pcd" "x y z" "4 4 4" "F F F" "1 1 1" -1 1 -1 ascii
+gltf_case() {  # NAME JSON (the glTF text; expected refused)
+  run_case "header/gltf-$1" fail in.gltf "printf '%s' '$2' > in.gltf" "encode in.gltf -o out.clusters"
+}
+b64='AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA'
+gl_head='{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,'$b64'"}]'
+gl_tail=',"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0}'
+gltf_case view-past-buffer "$gl_head"',"bufferViews":[{"buffer":0,"byteLength":36000000}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,1]}]'"$gl_tail"
+gltf_case view-offset-past-buffer "$gl_head"',"bufferViews":[{"buffer":0,"byteOffset":4000000000,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,1]}]'"$gl_tail"
+gltf_case accessor-offset "$gl_head"',"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"byteOffset":30,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,1]}]'"$gl_tail"
+gltf_case stride-huge "$gl_head"',"bufferViews":[{"buffer":0,"byteLength":36,"byteStride":252}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,1]}]'"$gl_tail"
+gltf_case missing-buffer-file '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"nowhere.bin"}],"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,1]}]'"$gl_tail"
+gltf_case buffer-uri-escapes '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"../../../../../../etc/hostname"}],"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,1]}]'"$gl_tail"
+gltf_case buffer-length-lies '{"asset":{"version":"2.0"},"buffers":[{"byteLength":4000000000,"uri":"data:application/octet-stream;base64,'$b64'"}],"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,1]}]'"$gl_tail"
+gltf_case index-out-of-range "$gl_head"',"bufferViews":[{"buffer":0,"byteLength":36},{"buffer":0,"byteLength":12}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,1]},{"bufferView":1,"componentType":5125,"count":3,"type":"SCALAR"}],"meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0}'
+gltf_case accessor-missing "$gl_head"',"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[]'"$gl_tail"
+gltf_case node-cycle "$gl_head"',"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,1]}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0,"children":[1]},{"children":[0]}],"scenes":[{"nodes":[0]}],"scene":0}'
+run_case header/glb-chunk-length fail in.glb "head -c 12 $v/v.glb > in.glb; printf '\377\377\377\177' >> in.glb; tail -c +17 $v/v.glb >> in.glb" \
+  "encode in.glb -o out.clusters"
+run_case header/glb-version-9 fail in.glb "head -c 4 $v/v.glb > in.glb; printf '\011\000\000\000' >> in.glb; tail -c +9 $v/v.glb >> in.glb" \
+  "encode in.glb -o out.clusters"
+run_case header/ply-stray-bytes fail in.ply "$(declare -f ply_header); { ply_header 2 binary_little_endian; head -c 28 /dev/zero; } > in.ply" \
+  "encode in.ply -o out.clusters"
+run_case header/ply-fewer-lines fail in.ply "$(declare -f ply_header); { ply_header 5 ascii; echo 0 0 0; echo 1 1 1; } > in.ply" \
+  "encode in.ply -o out.clusters"
+
+# --- FIFOs given where a secondary input goes --------------------------------------------------
+fifo_case() {  # NAME VALID FILE ARGS [SETUP]: FILE is a FIFO fed with VALID
+  run_case "fifo/$1" any "" "${5:-:}; mkfifo $3; (timeout 20 sh -c 'cat $2 > $3' &)" "$4"
+}
+fifo_case light-points "$v/points.csv" p.csv "light --scene $v/scene.json --points p.csv"
+fifo_case light-scene "$v/scene.json" s.json "light --scene s.json --points $v/points.csv"
+fifo_case grow-scene "$v/scene.json" s.json "grow $v/growth.toml --scene s.json -o out.tree"
+fifo_case adapt-scene "$v/scene.json" s.json "adapt $v/v.treeb --scene s.json -o out.tree"
+fifo_case crown-mask "$v/v.png" m.png "crown $v/v.png --mask m.png -o out"
+fifo_case view-file "$v/m.v" f.v "lsystem interpret $v/m.l --view f.v -o out.tree"
+fifo_case distance-second "$v/v.nwk" b.nwk "distance $v/v.nwk b.nwk"
+fifo_case ttest-second "$v/a.csv" b.csv "stats ttest $v/a.csv b.csv"
+fifo_case heightfield "$v/v.png" h.png "mesh t.json -o out.glb" \
+  "printf '{\"fspm_scene\": 2, \"terrain\": {\"heightfield\": \"h.png\", \"metres_per_pixel\": 1}}' > t.json"
+fifo_case experiment-model "$v/v.l" m.l "run e.toml --out out" \
+  "printf '[experiment]\\nname = \"m\"\\n[model]\\nkind = \"lsystem\"\\nfile = \"m.l\"\\n' > e.toml"
+fifo_case scene-info "$v/scene.json" s.json "scene info s.json"
+fifo_case mesh-obj "$v/v.obj" m.obj "mesh m.obj -o out.glb"
+fifo_case render-ply "$v/v.ply" p.ply "render p.ply -o out.png"
+fifo_case decode-clusters "$v/v.clusters" c.clusters "decode c.clusters -o out.tree"
+fifo_case mtg-convert "$v/v.mtg" t.mtg "tree convert t.mtg out.tree"
+
+# --- more outputs on a full disk ---------------------------------------------------------------
+full_case tree-convert-mtg out.mtg "tree convert $v/v.nwk out.mtg"
+full_case tree-convert-nwk out.nwk "tree convert $v/v.treeb out.nwk"
+full_case interpret-glb out.glb "lsystem interpret $v/v.l -o out.glb"
+full_case interpret-obj out.obj "lsystem interpret $v/v.l -o out.obj"
+full_case scan-ply out.ply "scan $v/v.treeb -o out.ply"
+full_case stages-skeleton sk.tree "stages $v/v.obj --at 0.5 -o out.tree --skeleton sk.tree"
+full_case reconstruct-glb out.glb "greenlab reconstruct $v/v.ctree -o out.glb"
+full_case decode-glb out.glb "decode $v/v.clusters -o out.glb"
+full_case mesh-skin out.glb "mesh $v/v.treeb -o out.glb --skin"
+full_case render-jpg out.jpg "render $v/v.nwk -o out.jpg"
+full_case export-json out.json "results export $v/results --json -o out.json"
+run_case full/crown-folder-glb fail crown.glb "mkdir out; ln -s /dev/full out/crown.glb" "crown $v/v.png -o out"
+run_case full/report-md fail "report.md" "cp -r $v/results r; ln -s /dev/full r/report.md" "report r --no-figures"
+run_case full/compare-pairs fail "pairs.csv" "cp -r $v/cmp r; rm -f r/pairs.csv; ln -s /dev/full r/pairs.csv" "compare r"
+run_case full/stages-steps fail "" "mkdir out; ln -s /dev/full out/stage_001.treeb" "stages $v/v.treeb --steps 3 -o out"
+for cmd in "tree info $v/v.mtg --json" "stats ttest $v/a.csv $v/a.csv" "results show $v/results" \
+  "results export $v/results --json" "lsystem derive $v/v.l --compressed --steps 40 --json" \
+  "light --scene $v/scene.json --points $v/points.csv --json" "distance $v/v.nwk $v/v.treeb --json"; do
+  run_case "full/stdout-${cmd%% *}-${cmd##* }" fail "standard output" ":" "$cmd >/dev/full"
+done
+
+# --- numeric options at the edges of what a double or a 64-bit count holds ---------------------
+# A value in range may still ask for the impossible (1e-320 m between rings): it must end within
+# the time limit and the memory budget, or be refused.
+absurd() {  # BASE OPTION...: each OPTION with each absurd value
+  local base=$1
+  shift
+  local opt val
+  for opt in "$@"; do
+    for val in 1e308 1e-320 9223372036854775808; do
+      run_case "absurd/${base%% *} $opt $val" any "" "cp -r $v/cmp r 2>/dev/null" "$base $opt $val"
+    done
+  done
+}
+absurd "light --scene $v/scene.json --points $v/points.csv" --directions --global-radiation --transmittance
+absurd "light --scene $v/scene.json --points $v/points.csv --global-radiation 500" --latitude --utc-offset
+absurd "grow $v/growth.toml -o out.tree" --years --max-internodes --seed
+absurd "lsystem derive $v/v.l" --steps --budget
+absurd "lsystem derive $v/v.l --compressed" --variants
+absurd "lsystem interpret $v/v.l -o out.tree" --detail
+absurd "greenlab simulate $v/plant.toml -o out.ctree" --cycles
+absurd "greenlab reconstruct $v/v.ctree -o out.tree" --age --max-order
+absurd "distance $v/v.nwk $v/v.treeb" --main-skeleton
+absurd "stats describe $v/a.csv" --level
+absurd "adapt $v/v.treeb --scene $v/scene.json -o out.tree" --skeleton-radius --pruning-strength --phototropism
+absurd "stages $v/v.treeb --at 0.5 -o out.tree" --season-years --added-gamma --profile
+absurd "stages $v/v.treeb -o out" --steps
+absurd "stages $v/v.obj --at 0.5 -o out.tree" --join-distance
+absurd "encode $v/v.xyz -o out.clusters" --beta --fs --root-diameter --bin-length --neighbours
+absurd "scan $v/v.treeb -o out.xyz" --scanners --density --noise-mm
+absurd "run $v/experiment.toml --out out" --jobs --time-limit --replicates --shards
+absurd "compare r" --jobs
+absurd "mesh $v/v.treeb -o out.obj" --edge-length --max-sides
+absurd "mesh $v/v.treeb -o out.glb --skin" --animate --fps
+absurd "render $v/v.nwk -o out.png" --ortho-height --wind-time --lod-distance
+absurd "decode $v/v.clusters -o out.tree" --branchlets --lod --prune-distance
+absurd "crown $v/v.png -o out" --height-m --depth-ratio --k --trunk-radius-m
+
+# --- jobs sharing the memory limit, stages kept for the viewer, MTG code too large --------------
+run_case limits/run-jobs-share ok "" \
+  "printf 'derivation length: 19\nAxiom: A\nA --> F[+A][-A]\n' > t.l; printf '[experiment]\nname = \"m\"\nreplicates = 4\n[model]\nkind = \"lsystem\"\nfile = \"t.l\"\n' > e.toml" \
+  "run e.toml --out out --jobs 4"
+run_case limits/run-jobs-each-over any "" \
+  "printf 'derivation length: 24\nAxiom: A\nA --> F[+A][-A]\n' > t.l; printf '[experiment]\nname = \"m\"\nreplicates = 2\n[model]\nkind = \"lsystem\"\nfile = \"t.l\"\n' > e.toml" \
+  "run e.toml --out out --jobs 2"
+run_case limits/compare-jobs ok "" "cp -r $v/cmp r" "compare r --jobs 8"
+run_case limits/view-stages fail "" ":" "view $v/v.treeb --stages 2000 --frames 1 --screenshot v.png"
+run_case limits/view-ages fail "" ":" "view $v/v.ctree --ages $(seq -s, 1 400) --frames 1 --screenshot v.png"
+run_case limits/mtg-deep-convert fail out.mtg "printf 'MTG:\nENTITY-CODE\n/I2+.+nnnnnnnPn210011\n' > d.mtg" "tree convert d.mtg out.mtg"
+run_case limits/mtg-deep-interpret fail out.mtg "printf 'derivation length: 17000\nAxiom: A\nA --> F[+A]\n' > d.l" "lsystem interpret d.l -o out.mtg"
+run_case limits/derive-saturated-json ok "" ":" "lsystem derive $v/v.l --compressed --steps 28 --json"
 
 # --- signals: stopped cleanly, nothing half written -------------------------------------------
 run_signal signal/grow-term TERM 143 out.tree "grow $v/growth.toml --years 60 -o out.tree"

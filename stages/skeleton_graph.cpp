@@ -98,11 +98,13 @@ std::pair<std::uint32_t, std::size_t> largest_part(DisjointSets& sets, std::size
 
 // Links parts within `radius`, then, while parts are still apart, within twice the radius, and
 // so on: each round joins every part to its nearest neighbours within reach (Kruskal over the
-// candidates, so the shortest links win).
+// candidates, so the shortest links win). Each round's grid has cells of its radius, so a search
+// visits a few cells: with the first round's cells, a gap of a million radii (a joining distance
+// of 1e-320 m) would have each search visit 10^18 of them.
 void link_parts(const JoinedVertices& j, DisjointSets& sets, double radius,
                 std::vector<SkeletonEdge>& tree) {
-  const PointGrid grid(j.positions, radius);
   for (auto [largest, parts] = largest_part(sets, j.positions.size()); parts > 1; radius *= 2.0) {
+    const PointGrid grid(j.positions, radius);
     add_spanning(near_links(j, grid, sets, radius, largest), sets, tree);
     std::tie(largest, parts) = largest_part(sets, j.positions.size());
   }

@@ -128,6 +128,28 @@ def test_lsystem_derive_compressed_counts_what_cannot_be_held():
                             compressed=True)
 
 
+def test_lsystem_derive_reports_counts_past_64_bits_as_saturated():
+    # ABOP Fig. 1.24a after n steps: 5^n F, (5^n - 1) / 4 each of +, -, [ and ] twice that, so
+    # 5^n + 6 (5^n - 1) / 4 modules: about 3.7e18 at n = 26, 1.9e19 > 2^64 - 1 at n = 27, where
+    # 5^27 F still fit.
+    path = str(ROOT / "examples/lsystems/abop_1_24a.l")
+    exact = fspm.lsystem_derive(path, steps=26, compressed=True)
+    assert exact["saturated"] is False
+    assert exact["modules"] == 5 ** 26 + 6 * (5 ** 26 - 1) // 4
+    past = fspm.lsystem_derive(path, steps=27, compressed=True)
+    assert 5 ** 27 + 6 * (5 ** 27 - 1) // 4 > 2 ** 64 - 1
+    assert past["saturated"] is True
+    assert past["modules"] is None
+    assert past["symbols"]["F"] == 5 ** 27
+    assert past["explicit_bytes"] is None
+    assert past["compression"] > 1e15  # a lower bound
+    far = fspm.lsystem_derive(path, steps=40, compressed=True)
+    assert far["saturated"] is True
+    assert far["symbols"]["F"] is None and far["symbols"]["+"] is None
+    assert fspm.lsystem_derive(path, steps=3)["saturated"] is False
+    assert "None" in fspm.lsystem_derive.__doc__ and "saturated" in fspm.lsystem_derive.__doc__
+
+
 def abop_1_24_counts(n, f_per_x, x_per_x):
     """F and X counts after n steps of X -> (f_per_x F's, x_per_x X's), F -> FF, axiom X,
     by the recurrence of the productions: x' = x_per_x x, f' = 2 f + f_per_x x."""
