@@ -271,7 +271,7 @@ void run_view(ViewCommand c) {
   if (!graphics::viewer_available()) {
     throw ValueError("fspm was built without the viewer (FSPM_WITH_VIEWER=OFF)");
   }
-  if (!c.screenshot.empty()) check_inputs_readable_twice(c.trees);
+  if (!c.viewer.screenshot.empty()) check_inputs_readable_twice(c.trees);
   graphics::ViewerOptions options = viewer_options(c);
   if (c.stages > 0) options.step_label = "time";
   if (!options.screenshot.empty()) graphics::check_image_path(options.screenshot);
