@@ -10,6 +10,7 @@
 #include "scans/crown_base.hpp"
 #include "scans/point_origin.hpp"
 #include "scans/segment_distance.hpp"
+#include "scans/vertical_plane.hpp"
 
 namespace fspm::scans {
 namespace {
@@ -161,6 +162,27 @@ std::vector<std::uint32_t> measure_cylinders(const PointSet& ps, const TreeGraph
   return std::move(q.cylinder_of_point);
 }
 
+// A flat vertical surface of many square metres is a wall or a facade (scans/vertical_plane.hpp):
+// without a stem at breast height the scan is a building, not a tree; with one, a building stands
+// beside the tree and widens its crown.
+void judge_walls(const PointSet& ps, const MeasureOptions& o, TreeMeasurements& m) {
+  const std::optional<VerticalPlane> wall = largest_vertical_plane(ps, o.wall);
+  if (!wall || wall->area_m2 < o.min_wall_area_m2) return;
+  const std::string what = fmt::format(
+      "{:.0f} m2 of the points lie on one flat vertical surface (a wall or a facade; a tree's "
+      "largest is a few m2)",
+      wall->area_m2);
+  if (m.dbh_m) {
+    m.warnings.push_back(what + ": cut the building out of the scan before measuring the crown");
+    return;
+  }
+  m.tree_found = false;
+  m.warnings.insert(m.warnings.begin(),
+                    what +
+                        " and no stem stands at breast height: a building, not a tree; cut "
+                        "the tree out of the scan");
+}
+
 }  // namespace
 
 TreeMeasurements measure_tree(const PointSet& absolute, const TreeGraph& skeleton,
@@ -192,6 +214,7 @@ TreeMeasurements measure_tree(const PointSet& absolute, const TreeGraph& skeleto
         "check the breast-height slice for branches, leaves or other objects",
         metres(*m.dbh_m), metres(m.height_m), 100.0 * o.max_dbh_per_height));
   }
+  judge_walls(ps, o, m);
   return m;
 }
 

@@ -15,7 +15,8 @@
 // - points_explained_fraction: share of points within explained_tolerance_m of the surface of
 //   their nearest cylinder.
 // Warnings (text that says what was found and what to do) for too few trunk points at breast
-// height, no compact stem there (no tree found: a wall, a hedge), several stems near the base,
+// height, no compact stem there (no tree found: a wall, a hedge), a flat vertical surface of many
+// square metres (a building: no tree found without a stem), several stems near the base,
 // and a diameter implausible for the height. Projected coordinates are recentred internally;
 // cylinders come back in the input's coordinates.
 #include <optional>
@@ -26,6 +27,7 @@
 #include "scans/breast_height.hpp"
 #include "scans/point_set.hpp"
 #include "scans/qsm_cylinders.hpp"
+#include "scans/vertical_plane.hpp"
 
 namespace fspm::scans {
 
@@ -35,6 +37,10 @@ struct MeasureOptions {
   double min_branch_length_m = 0.5;
   // A dbh above this fraction of the height is reported as implausible.
   double max_dbh_per_height = 0.2;
+  // A flat vertical surface this large is a wall (scans/vertical_plane.hpp); the trees of the
+  // public scans checked (docs/scans.md) have at most 6 m2, a house's wall 20 m2.
+  VerticalPlaneOptions wall;
+  double min_wall_area_m2 = 12.0;
 };
 
 struct TreeMeasurements {

@@ -10,6 +10,7 @@
 #include "scans/circle_fit.hpp"
 #include "scans/encoder.hpp"
 #include "scans/scan_simulator.hpp"
+#include "scans/scanned_tree.hpp"
 #include "scans/synthetic_tree.hpp"
 #include "scans/tree_measurements.hpp"
 
@@ -195,6 +196,50 @@ TEST(TreeMeasurements, AHouseIsNoTree) {
   EXPECT_FALSE(m.tree_found);
   EXPECT_FALSE(m.dbh_m);
   EXPECT_TRUE(has_warning(m, "no vertical trunk")) << m.warnings.size();
+}
+
+// The house with a gable roof (ridge 5 m high), the ground about it every 0.1 m and a post of
+// 0.14 m beside it, 0.3 m high (a public scan of a house has one): the post stands as a stem at
+// the foot, but the walls are 24 m2 of flat vertical surface.
+TEST(TreeMeasurements, AHouseWithARoofAndAPostIsABuilding) {
+  PointSet ps = house();
+  for (double s = 0.0; s < 8.0; s += 0.05) {
+    for (double t = 0.0; t <= 3.0; t += 0.05) {
+      ps.points.emplace_back(s, t, 3.0 + 2.0 * t / 3.0);
+      ps.points.emplace_back(s, 6.0 - t, 3.0 + 2.0 * t / 3.0);
+    }
+  }
+  for (double x = -3.0; x < 11.0; x += 0.1) {
+    for (double y = -3.0; y < 9.0; y += 0.1) ps.points.emplace_back(x, y, 0.0);
+  }
+  for (double z = 0.0; z < 0.3; z += 0.01) {
+    for (int k = 0; k < 24; ++k) {
+      const double a = 2.0 * std::numbers::pi * k / 24.0;
+      ps.points.emplace_back(-1.0 + 0.07 * std::cos(a), 3.0 + 0.07 * std::sin(a), z);
+    }
+  }
+  const ScannedTree t = encode_and_measure(ps, with_root_diameter());
+  EXPECT_FALSE(t.measurements.tree_found);
+  ASSERT_FALSE(t.measurements.warnings.empty());
+  EXPECT_NE(t.measurements.warnings.front().find("a building, not a tree"), std::string::npos)
+      << t.measurements.warnings.front();
+}
+
+// A scanned tree 3 m from the 8 m wall of a building whose ground floor the scan does not see
+// (the wall from 2 m to 5 m): still a tree, with its diameter, and a warning that the building is
+// in the scan. (A wall down to the ground takes the trunk's place in the skeleton: cut it out.)
+TEST(TreeMeasurements, ATreeBesideAWallKeepsItsDiameter) {
+  const TreeGraph tree = synthetic_tree(SyntheticTreeOptions{});
+  PointSet ps = scan_of(tree, 1);
+  const double x0 = tree.start(0).x() + 3.0;
+  for (double z = 2.0; z <= 5.0; z += 0.05) {
+    for (double y = -4.0; y < 4.0; y += 0.05) ps.points.emplace_back(x0, tree.start(0).y() + y, z);
+  }
+  const TreeMeasurements m = measure_tree(ps, encode_point_set(ps).full_skeleton);
+  EXPECT_TRUE(m.tree_found);
+  ASSERT_TRUE(m.dbh_m);
+  EXPECT_NEAR(*m.dbh_m, truth_of(tree).dbh_m, 0.03 * truth_of(tree).dbh_m);
+  EXPECT_TRUE(has_warning(m, "cut the building out")) << m.warnings.size();
 }
 
 TEST(TreeMeasurements, TwoTreesAreSeveralStems) {
