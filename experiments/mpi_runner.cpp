@@ -72,9 +72,7 @@ RunnerSummary root(const Experiment& experiment, const Model& model, const Runne
   std::vector<std::size_t> pending;
   std::unique_ptr<ResultsDb> db;
   try {
-    if (options.shard_count == 0 || options.shard_index >= options.shard_count) {
-      throw ValueError("--shard: expected I/N with 0 <= I < N");
-    }
+    options.validate();
     check_run_file_writers(experiment, options.file_writers);
     check_run_list_memory(experiment, experiment.runs(), options);
     db = std::make_unique<ResultsDb>(

@@ -134,14 +134,18 @@ void check_run_list_memory(const Experiment& experiment, std::size_t runs,
                "the list of " + std::to_string(runs) + " runs", experiment.path);
 }
 
+void RunnerOptions::validate() const {
+  if (shard_count == 0 || shard_index >= shard_count) {
+    throw ValueError("runner: shard_index/shard_count " + std::to_string(shard_index) + "/" +
+                     std::to_string(shard_count) +
+                     " does not exist (expected I/N with 0 <= I < N, --shard)");
+  }
+}
+
 RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
                              const RunnerOptions& options) {
   const Clock::time_point start = Clock::now();
-  if (options.shard_count == 0 || options.shard_index >= options.shard_count) {
-    throw ValueError("shard " + std::to_string(options.shard_index) + "/" +
-                     std::to_string(options.shard_count) +
-                     " does not exist (expected I/N with 0 <= I < N)");
-  }
+  options.validate();
   check_run_file_writers(experiment, options.file_writers);
   const RunPlan plan(experiment);
   check_run_list_memory(experiment, plan.size(), options);

@@ -37,6 +37,9 @@ struct RunnerOptions {
   // Writers of the kept kinds other than "tree" (run_files.hpp); a kept kind without one is an
   // error before any run.
   RunFileWriters file_writers;
+
+  // Throws ValueError naming the field: a shard that does not exist (shard_index >= shard_count).
+  void validate() const;
 };
 
 struct RunnerSummary {

@@ -7,20 +7,25 @@
 
 namespace fspm::experiments {
 
-std::string slurm_script(const SlurmOptions& o) {
-  if (o.shards == 0) throw ValueError("--shards must be at least 1");
-  if (o.cpus_per_task == 0) throw ValueError("--jobs must be at least 1");
+void SlurmOptions::validate() const {
+  if (shards == 0) throw ValueError("slurm: shards (--shards) must be at least 1");
+  if (cpus_per_task == 0) throw ValueError("slurm: cpus_per_task (--jobs) must be at least 1");
   // sbatch reads its directives up to the line's end and honours only double quotes; the
   // comments name the script and the folder, so neither may break a line.
-  for (const auto& [option, path] : {std::pair<const char*, const std::string&>{"--out", o.out_dir},
-                                     {"--slurm-file", o.script_path}}) {
+  for (const auto& [option, path] :
+       {std::pair<const char*, const std::string&>{"out_dir (--out)", out_dir},
+        {"script_path (--slurm-file)", script_path}}) {
     if (path.find_first_of("\"\n\r") != std::string::npos) {
-      throw ValueError(std::string(option) +
+      throw ValueError("slurm: " + std::string(option) +
                        ": a Slurm script cannot name a path with a double quote or a line break "
                        "in it, got '" +
                        path + "'");
     }
   }
+}
+
+std::string slurm_script(const SlurmOptions& o) {
+  o.validate();
   return fmt::format(
       "#!/bin/bash\n"
       "# Written by `fspm run --emit-slurm`: runs the experiment as {shards} shards, one Slurm\n"

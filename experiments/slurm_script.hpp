@@ -15,6 +15,10 @@ struct SlurmOptions {
   std::size_t shards = 4;
   std::size_t cpus_per_task = 1;
   std::string time_limit = "24:00:00";  // Slurm --time of one array task
+
+  // Throws ValueError naming the field (and its fspm run option): no shard, no CPU, a folder or
+  // script path with a double quote or a line break (sbatch cannot read it).
+  void validate() const;
 };
 
 std::string slurm_script(const SlurmOptions& options);

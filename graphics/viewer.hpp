@@ -42,6 +42,9 @@ struct ViewerControls {
   double wind_strength = 1.0;  // with ViewerOptions::wind: the swing's scale (0: at rest)
 };
 
+// Most cascaded shadow maps before the whole scene's map (ViewerOptions::shadow_cascades).
+inline constexpr int kMaxShadowCascades = 4;
+
 struct ViewerOptions {
   int width = 1280;
   int height = 800;
@@ -102,6 +105,10 @@ struct ViewerOptions {
   // Test hook: called before every frame with the frame's number (from 0) and the controls,
   // which it may change as the panel would.
   std::function<void(int frame, ViewerControls& controls)> before_frame;
+
+  // Throws ValueError naming the field: a size or frame count below 1, shadow_cascades outside
+  // 0 to kMaxShadowCascades, a negative or non-finite camera distance.
+  void validate() const;
 };
 
 // The CPU path's budget: a mesh tessellated on the CPU keeps at most this many triangles.

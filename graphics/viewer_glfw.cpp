@@ -646,14 +646,8 @@ Scene check_and_measure(const std::vector<StepRef>& steps, const ViewerOptions& 
     }
   }
   if (!o.screenshot.empty()) check_image_path(o.screenshot);
-  if (o.width < 1 || o.height < 1 || o.frames < 1) throw ValueError("bad viewer size or frames");
-  if (o.shadow_cascades < 0 || o.shadow_cascades >= kMaxShadowLayers) {
-    throw ValueError("shadow cascades: expected 0 to " + std::to_string(kMaxShadowLayers - 1) +
-                     ", got " + std::to_string(o.shadow_cascades));
-  }
-  if (o.camera_distance_m < 0.0 || !std::isfinite(o.camera_distance_m)) {
-    throw ValueError("camera distance: expected a finite distance >= 0 m");
-  }
+  o.validate();
+  static_assert(kMaxShadowLayers == kMaxShadowCascades + 1, "the cascades and the whole scene");
   Scene scene;
   scene.lo = glm::vec3(1e30f);
   scene.hi = glm::vec3(-1e30f);

@@ -13,6 +13,7 @@
 #include "graphics/render.hpp"
 #include "graphics/tessellation_level.hpp"
 #include "graphics/tree_mesher.hpp"
+#include "graphics/viewer.hpp"
 #include "graphics/wind_animation.hpp"
 
 namespace fspm::graphics {
@@ -98,6 +99,23 @@ TEST(OptionsValidate, EachRefusalNamesItsField) {
   disk.depth_m = 10.0;
   disk.min_distance_m = 0.0;
   EXPECT_REFUSED_NAMING(disk, "min_distance_m");
+}
+
+TEST(OptionsValidate, ViewerOptionsNameTheField) {
+  EXPECT_NO_THROW(ViewerOptions{}.validate());
+  ViewerOptions o;
+  o.height = 0;
+  EXPECT_REFUSED_NAMING(o, "height");
+  o = ViewerOptions{};
+  o.frames = 0;
+  EXPECT_REFUSED_NAMING(o, "frames");
+  o = ViewerOptions{};
+  o.shadow_cascades = kMaxShadowCascades + 1;
+  EXPECT_REFUSED_NAMING(o, "shadow_cascades");
+  o.shadow_cascades = kMaxShadowCascades;
+  EXPECT_NO_THROW(o.validate());
+  o.camera_distance_m = -1.0;
+  EXPECT_REFUSED_NAMING(o, "camera_distance_m");
 }
 
 }  // namespace
