@@ -47,7 +47,8 @@ bool derived_from_mtg(const std::string& name) {
 
 }  // namespace
 
-void write_mtg(const TreeGraph& tree, std::ostream& out, const std::string& path) {
+void write_mtg(const TreeGraph& tree, std::ostream& out, const std::string& path,
+               std::uint64_t max_code_bytes) {
   std::vector<std::string> names = tree.attribute_names();
   std::erase_if(names, derived_from_mtg);
   out << "CODE:\tFORM-A\n\nCLASSES:\nSYMBOL\tSCALE\tDECOMPOSITION\tINDEXATION\tDEFINITION\n"
@@ -75,7 +76,7 @@ void write_mtg(const TreeGraph& tree, std::ostream& out, const std::string& path
   // Every line is padded to the deepest column before its features.
   check_mtg_code_size(
       static_cast<std::uint64_t>(tree.size()) * (static_cast<std::uint64_t>(columns) + 16), columns,
-      path);
+      path, max_code_bytes);
   out << "\nMTG:\nENTITY-CODE";
   for (int c = 0; c < columns; ++c) out << '\t';
   out << "XX\tYY\tZZ\tLength\tRadius\tBirthTime\tOrder\tOrgan";

@@ -15,11 +15,13 @@
 #include <string_view>
 
 #include "fspm/mtg_tree.hpp"
+#include "fspm/mtg_writer.hpp"
 #include "fspm/tree_graph.hpp"
 
 namespace fspm {
 
-void write_mtg(const TreeGraph& tree, std::ostream& out, const std::string& path = {});
+void write_mtg(const TreeGraph& tree, std::ostream& out, const std::string& path = {},
+               std::uint64_t max_code_bytes = kMaxMtgCodeBytes);
 
 // Throws ParseError naming `file`, the line and what was expected.
 TreeGraph parse_mtg(std::string_view text, const std::string& file = "<mtg>");

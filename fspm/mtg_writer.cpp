@@ -29,12 +29,12 @@ class MtgWriter {
     }
   }
 
-  void write(std::ostream& out, const std::string& path) {
+  void write(std::ostream& out, const std::string& path, std::uint64_t max_code_bytes) {
     attach_coarse_entities();
     for (MtgVertex v = 1; v < mtg_.size(); ++v) {
       if (mtg_.components(v).empty() && is_start(v)) walk(v);
     }
-    check_code_size(path);
+    check_code_size(path, max_code_bytes);
     write_header(out);
     write_code(out);
   }
@@ -191,14 +191,14 @@ class MtgWriter {
     }
   }
 
-  void check_code_size(const std::string& path) const {
+  void check_code_size(const std::string& path, std::uint64_t max_bytes) const {
     const bool features = !mtg_.features().empty();
     std::uint64_t bytes = 0;
     for (const CodeLine& l : lines_) {
       bytes += l.code.size() + 1 +
                static_cast<std::uint64_t>(features ? std::max(columns_, 1) : l.column);
     }
-    check_mtg_code_size(bytes, columns_, path);
+    check_mtg_code_size(bytes, columns_, path, max_bytes);
   }
 
   void write_code(std::ostream& out) const {
@@ -236,19 +236,20 @@ class MtgWriter {
 
 }  // namespace
 
-void check_mtg_code_size(std::uint64_t bytes, int columns, const std::string& path) {
-  constexpr std::uint64_t kMaxCodeBytes = std::uint64_t{256} << 20;
-  if (bytes <= kMaxCodeBytes) return;
+void check_mtg_code_size(std::uint64_t bytes, int columns, const std::string& path,
+                         std::uint64_t max_bytes) {
+  if (bytes <= max_bytes) return;
   throw ValueError("the MTG code would take about " + memory_text(static_cast<double>(bytes)) +
-                       ", expected at most 256 MiB: its branching nests " +
-                       std::to_string(columns) +
+                       ", expected at most " + memory_text(static_cast<double>(max_bytes)) +
+                       ": its branching nests " + std::to_string(columns) +
                        " levels deep and MTG indents every level by a tab; write the tree as "
                        ".tree or .treeb instead",
                    path);
 }
 
-void write_mtg(const Mtg& mtg, std::ostream& out, const std::string& path) {
-  MtgWriter(mtg).write(out, path);
+void write_mtg(const Mtg& mtg, std::ostream& out, const std::string& path,
+               std::uint64_t max_code_bytes) {
+  MtgWriter(mtg).write(out, path, max_code_bytes);
 }
 
 }  // namespace fspm

@@ -13,6 +13,10 @@
 #include "fspm/mtg_writer.hpp"
 #include "fspm/warning.hpp"
 
+// Codes up to 1 MiB: the 256 MiB the writers allow would make a few hundred bytes of deep "+.+"
+// nesting cost a second each, and the refusal above 1 MiB is the same code path.
+constexpr std::uint64_t kFuzzCodeBytes = std::uint64_t{1} << 20;
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const bool quiet = (fspm::set_warning_handler([](const std::string&) {}), true);
   (void)quiet;
@@ -20,14 +24,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const fspm::Mtg g =
         fspm::read_mtg(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz");
     std::ostringstream again;
-    fspm::write_mtg(g, again);
+    fspm::write_mtg(g, again, "again", kFuzzCodeBytes);
     try {
       (void)fspm::read_mtg(again.str(), "again");
     } catch (const fspm::Error&) {
     }
     const fspm::TreeGraph t = fspm::mtg_to_tree(g);
     std::ostringstream out;
-    fspm::write_mtg(t, out);
+    fspm::write_mtg(t, out, "out", kFuzzCodeBytes);
   } catch (const fspm::Error&) {
   }
   return 0;
