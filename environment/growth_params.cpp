@@ -86,7 +86,7 @@ GrowthParams preset_from_table(const toml::table& table, const toml::node& prese
   // The name as a string, or "" (refused below) for another type.
   auto text_of = [](const toml::node& n) { return n.value<std::string>().value_or(""); };
   BudLightModel model = GrowthParams{}.light_model;
-  TropismPairing pairing = TropismPairing::kText;
+  TropismPairing pairing = kDefaultTropismPairing;
   const toml::node* at = nullptr;
   try {
     if ((at = table.get("light_model"))) model = bud_light_model_from_name(text_of(*at));

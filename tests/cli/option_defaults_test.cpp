@@ -12,6 +12,9 @@
 #include <string>
 
 #include "environment/daylight.hpp"
+#include "environment/growth_params.hpp"
+#include "environment/light_model_registry.hpp"
+#include "environment/sky.hpp"
 #include "environment/sky_radiation.hpp"
 #include "experiments/slurm_script.hpp"
 #include "fspm/image_request.hpp"
@@ -81,6 +84,38 @@ void expect_number(const std::string& command_path, const std::string& option, d
   const double parsed = std::stod(shown);
   EXPECT_NEAR(parsed, value, 1e-5 * std::max(1.0, std::abs(value)))
       << command_path << " " << option << " shows " << shown;
+}
+
+// The description of `option` of `command_path` in --help (on the entry's line, or on the next
+// line when the option's names and type fill the first column), or "" when there is none.
+std::string description_of(const std::string& command_path, const std::string& option) {
+  std::istringstream in(help_of(command_path));
+  std::string line;
+  bool found = false;
+  while (std::getline(in, line)) {
+    if (found) return line;  // the continuation line of a long entry
+    if (line.size() < 3 || line[0] != ' ' || line[2] == ' ') continue;  // not an entry
+    std::istringstream words(line);
+    std::string names;
+    words >> names;
+    std::istringstream each(names);
+    for (std::string name; std::getline(each, name, ',');) found = found || name == option;
+    if (!found) continue;
+    const std::size_t text = line.find("  ", 2 + names.size());
+    if (text != std::string::npos && line.find_first_not_of(' ', text) != std::string::npos) {
+      return line;
+    }
+  }
+  if (!found) ADD_FAILURE() << command_path << ": no option " << option;
+  return {};
+}
+
+// An option whose default comes from an input file states the library's default in its text.
+void expect_stated(const std::string& command_path, const std::string& option,
+                   const std::string& stated) {
+  const std::string text = description_of(command_path, option);
+  EXPECT_NE(text.find(stated), std::string::npos)
+      << command_path << " " << option << ": expected \"" << stated << "\" in: " << text;
 }
 
 void expect_text(const std::string& command_path, const std::string& option,
@@ -164,6 +199,17 @@ TEST(OptionDefaults, LightStagesAndTheRestShowTheLibraryDefaults) {
   expect_text("light", "--diffuse-sky",
               std::string(environment::kDiffuseSkyNames.name(sky.diffuse)));
   expect_text("light", "--split", std::string(environment::kDiffuseSplitNames.name(sky.split)));
+
+  expect_stated("light", "--directions",
+                "sky.directions, " + std::to_string(environment::Sky{}.directions) + ")");
+  const environment::GrowthParams grow;
+  expect_stated("grow", "--max-internodes",
+                "max_internodes of the parameters, " + std::to_string(grow.max_internodes) + ")");
+  expect_stated("grow", "--light-model",
+                "; default " + std::string(environment::bud_light_model_name(grow.light_model)));
+  expect_stated("grow", "--tropisms",
+                "; default " + std::string(environment::tropism_pairing_name(
+                                   environment::kDefaultTropismPairing)));
 
   const stages::StagesParams st;
   expect_number("stages", "--added-gamma", st.added.gamma);
