@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <numbers>
 #include <sstream>
 #include <string>
 
@@ -139,6 +140,9 @@ TEST(OptionDefaults, MeshRenderAndViewShowTheLibraryDefaults) {
   expect_number("mesh", "--max-sides", m.max_sides);
   expect_text("mesh", "--junctions", std::string(graphics::junction_mode_name(m.junctions)));
   expect_number("mesh", "--wind-frequency", w.frequency_hz);
+  for (const char* command : {"mesh", "render", "view"}) {
+    expect_number(command, "--wind-amplitude", w.amplitude_rad * 180.0 / std::numbers::pi);
+  }
   expect_number("mesh", "--fps", w.frames_per_second);
 
   const graphics::RenderOptions r;
