@@ -12,6 +12,8 @@
 #include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <type_traits>
 
 #include "cli/commands.hpp"
 #include "cli/cpu_time.hpp"
@@ -242,6 +244,29 @@ void run_adapt(const AdaptOptions& o) {
 
 }  // namespace
 
+// --light-model: the models of adaptation, as add_enum_option shows them; a model of growth only
+// (space_colonization) is refused by the registry's message, which names the use.
+void add_cluster_light_model_option(CLI::App* app, environment::ClusterLightModel& value) {
+  const auto& table = environment::kClusterLightModelNames;
+  std::string choices;
+  for (const NamedValue<environment::ClusterLightModel>& e : table.entries()) {
+    choices += (choices.empty() ? "" : ", ") + std::string(e.name);
+  }
+  app->add_option("--light-model", value, "Cluster light: " + table.help())
+      ->transform(CLI::Validator(
+          [](std::string& input) -> std::string {
+            try {
+              const auto model = environment::cluster_light_model_from_name(input);
+              input = std::to_string(static_cast<std::underlying_type_t<decltype(model)>>(model));
+              return {};
+            } catch (const ValueError& e) {
+              return e.message();
+            }
+          },
+          "one of: " + choices))
+      ->default_str(std::string(table.name(value)));
+}
+
 void add_adapt_commands(CLI::App& app) {
   auto opt = std::make_shared<AdaptOptions>();
   CLI::App* a = app.add_subcommand(
@@ -280,8 +305,7 @@ void add_adapt_commands(CLI::App& app) {
               "Pruning thresholds over all earlier growth stages (eq. 4.5), not the final one");
   a->add_flag("--absolute-pruning", opt->absolute_pruning,
               "Pirk's eq. 4.12 thresholds as analysed, not scaled with the crown's resources");
-  add_enum_option(a, "--light-model", opt->analysis.light_model,
-                  environment::kClusterLightModelNames, "Cluster light");
+  add_cluster_light_model_option(a, opt->analysis.light_model);
   a->add_option(
        "--canopy-model", opt->analysis.canopy_model,
        "Leaf light model of --light-model canopy: " + environment::leaf_light_model_names())

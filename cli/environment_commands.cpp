@@ -127,7 +127,7 @@ struct GrowOptions {
   int years = -1;
   std::int64_t seed = -1;
   std::vector<std::string> settings;  // --set NAME=VALUE
-  std::int64_t max_internodes = -1;   // -1: from the parameters (1 000 000 by default)
+  std::int64_t max_internodes = -1;   // -1: from the parameters
   bool json = false;
 };
 
@@ -208,7 +208,7 @@ environment::GrowthParams grow_params(const GrowOptions& o) {
     const auto model = o.light_model.empty()
                            ? environment::GrowthParams{}.light_model
                            : environment::bud_light_model_from_name(o.light_model);
-    const auto pairing = o.tropisms.empty() ? environment::TropismPairing::kText
+    const auto pairing = o.tropisms.empty() ? environment::kDefaultTropismPairing
                                             : environment::tropism_pairing_from_name(o.tropisms);
     params = environment::growth_preset(o.preset, model, pairing);
     if (!o.settings.empty()) {
@@ -274,7 +274,8 @@ void add_environment_commands(CLI::App& app) {
                 "Instead of --points: a tree file whose leaf clusters get the mean light of their "
                 "leaves through the crown (one row per cluster, at its centre)");
   l->add_option("--directions", light->directions,
-                "Stratified sky directions (default: the scene's sky.directions, 256)")
+                fmt::format("Stratified sky directions (default: the scene's sky.directions, {})",
+                            environment::Sky{}.directions))
       ->check(number_in(1, kMaxSkyDirections));
   l->add_option("-o,--output", light->out, "Output CSV x,y,z,light,dx,dy,dz (default: stdout)");
   l->add_flag("--json", light->json,
@@ -318,9 +319,11 @@ void add_environment_commands(CLI::App& app) {
       "--light-model", grow->light_model,
       "With --preset: " + environment::kBudLightModelNames.help() + "; default " +
           std::string(environment::bud_light_model_name(environment::GrowthParams{}.light_model)));
-  g->add_option("--tropisms", grow->tropisms,
-                "With --preset: Pirk's tropism pairing, " +
-                    environment::kTropismPairingNames.help() + "; default text");
+  g->add_option(
+      "--tropisms", grow->tropisms,
+      "With --preset: Pirk's tropism pairing, " + environment::kTropismPairingNames.help() +
+          "; default " +
+          std::string(environment::tropism_pairing_name(environment::kDefaultTropismPairing)));
   g->add_option("--scene", grow->scene, "Scene with obstacles and sky (JSON, see docs/formats.md)");
   g->add_option("--years", grow->years, "Growth cycles (default: from the parameters)")
       ->check(number_in(0, environment::kMaxYears));
@@ -330,8 +333,9 @@ void add_environment_commands(CLI::App& app) {
                 "NAME=VALUE: any parameter of docs/environment.md over the preset or PARAMS "
                 "(repeatable), e.g. --set apical_control=0.6");
   g->add_option("--max-internodes", grow->max_internodes,
-                "Stop with a message when the tree has more internodes than this (default: "
-                "max_internodes of the parameters, 1000000)")
+                fmt::format("Stop with a message when the tree has more internodes than this "
+                            "(default: max_internodes of the parameters, {})",
+                            environment::GrowthParams{}.max_internodes))
       ->check(number_in(1, 9e18));
   g->add_option("-o,--output", grow->out, "Output tree file (.tree, .treeb, .nwk, .mtg)")
       ->required();

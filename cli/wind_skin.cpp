@@ -2,6 +2,7 @@
 #include "cli/wind_skin.hpp"
 
 #include <cmath>
+#include <numbers>
 
 #include "cli/output.hpp"
 #include "fspm/error.hpp"
@@ -10,7 +11,7 @@
 
 namespace fspm::cli {
 namespace {
-constexpr double kDegree = 0.017453292519943295;
+constexpr double kDegree = std::numbers::pi / 180.0;
 }  // namespace
 
 void add_wind_options(CLI::App* command, WindArguments& wind, bool frames) {

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -19,8 +20,8 @@ struct WindArguments {
   // --wind-frequency, --fps and --wind-period bound straight into the wind model's options, whose
   // defaults are theirs.
   graphics::WindOptions options;
-  // The sway in degrees on the command line (the model's own default is 0.12 rad, 6.9 degrees).
-  double amplitude_deg = 7.0;
+  // The sway in degrees on the command line; its default is the model's.
+  double amplitude_deg = options.amplitude_rad * 180.0 / std::numbers::pi;
   std::vector<double> direction;  // X, Y; empty: the model's (+x)
 };
 

@@ -69,7 +69,8 @@ void RealSky::validate() const {
     throw ValueError("hourly global radiation needs 24 values (hours 0-23), got " +
                      std::to_string(sky.hourly_global_W_m2.size()));
   }
-  solar_position(sky.site, sky.date, 12.0);  // validates the site and the date
+  sky.site.validate();
+  sky.date.validate();
 }
 
 std::vector<SkyStep> sky_steps(const RealSky& sky) {

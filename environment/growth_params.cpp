@@ -86,7 +86,7 @@ GrowthParams preset_from_table(const toml::table& table, const toml::node& prese
   // The name as a string, or "" (refused below) for another type.
   auto text_of = [](const toml::node& n) { return n.value<std::string>().value_or(""); };
   BudLightModel model = GrowthParams{}.light_model;
-  TropismPairing pairing = TropismPairing::kText;
+  TropismPairing pairing = kDefaultTropismPairing;
   const toml::node* at = nullptr;
   try {
     if ((at = table.get("light_model"))) model = bud_light_model_from_name(text_of(*at));
@@ -274,9 +274,10 @@ void add_light_keys(KeyTable& keys, GrowthParams& p, const std::string& file_nam
        {positive_or_inf(p.light_half_saturation), "a positive number or inf"}},
       {"light_model",
        {[&p](const toml::node& n) {
-          const auto model = kBudLightModelNames.find(n.value<std::string>().value_or(""));
-          if (model) p.light_model = *model;
-          return model.has_value();
+          const std::string name = n.value<std::string>().value_or("");
+          // A model of adaptation only (canopy) is refused by the registry, which names its use.
+          if (kLightModelNames.find(name)) p.light_model = bud_light_model_from_name(name);
+          return kBudLightModelNames.find(name).has_value();
         },
         kBudLightModelNames.expected()}},
       {"voxel_size_m", {real(p.shadow_grid.voxel_size_m, 1e-3, kBig), "a length >= 0.001"}},
@@ -351,7 +352,14 @@ void apply_keys(const toml::table& table, const KeyTable& keys,
       if (set) throw ValueError("--set " + what);
       throw ValueError(what, file_name, line, column);
     }
-    if (!it->second.first(node)) {
+    bool ok = false;
+    try {
+      ok = it->second.first(node);
+    } catch (const ValueError& e) {  // a setter's own refusal, placed at the key
+      if (set) throw ValueError("--set " + name + ": " + e.message());
+      throw ValueError(e.message(), file_name, line, column);
+    }
+    if (!ok) {
       if (set) throw ValueError("--set " + name + ": expected " + it->second.second);
       throw ValueError(name + ": expected " + it->second.second, file_name, line, column);
     }

@@ -92,6 +92,8 @@ inline constexpr NameTable<TropismPairing, 2> kTropismPairingNames{
     "preset_tropisms",
     {{TropismPairing::kText, "text", "the pairing of Pirk's text, 4.5.4"},
      {TropismPairing::kAppendix, "appendix", "the pairing of the appendix tables' captions"}}};
+// The pairing of a preset that names none (preset_tropisms, fspm grow --tropisms).
+inline constexpr TropismPairing kDefaultTropismPairing = TropismPairing::kText;
 std::string_view tropism_pairing_name(TropismPairing pairing);  // "text", "appendix"
 // Throws ValueError for a name other than "text" and "appendix".
 TropismPairing tropism_pairing_from_name(std::string_view name);
@@ -101,7 +103,7 @@ TropismPairing tropism_pairing_from_name(std::string_view name);
 // Table 4.2's sizes. Throws ValueError for another name.
 GrowthParams growth_preset(std::string_view name,
                            BudLightModel light_model = BudLightModel::kShadowGrid,
-                           TropismPairing pairing = TropismPairing::kText);
+                           TropismPairing pairing = kDefaultTropismPairing);
 
 // Reads a TOML parameter file; `preset = "A"` starts from a preset (fitted for the file's
 // `light_model` and `preset_tropisms`), other keys override it.

@@ -18,26 +18,30 @@ double wrap360(double a) {
   return a < 0.0 ? a + 360.0 : a;
 }
 
-void validate(const Site& site, const CalendarDate& date) {
-  if (!(std::abs(site.latitude_deg) <= 90.0)) {
-    throw ValueError("site latitude must be in [-90, 90] degrees, got " +
-                     std::to_string(site.latitude_deg));
+}  // namespace
+
+void Site::validate() const {
+  if (!(std::abs(latitude_deg) <= 90.0)) {
+    throw ValueError("site: latitude_deg must be in [-90, 90], got " +
+                     std::to_string(latitude_deg));
   }
-  if (!std::isfinite(site.longitude_deg) || !std::isfinite(site.elevation_m) ||
-      !std::isfinite(site.utc_offset_h)) {
-    throw ValueError("site longitude, elevation and UTC offset must be finite");
-  }
-  if (date.year < 1950 || date.year > 2050) {
-    throw ValueError("the solar position is valid for the years 1950-2050 (Michalsky 1988), got " +
-                     std::to_string(date.year));
-  }
-  if (date.month < 1 || date.month > 12 || date.day < 1 || date.day > 31) {
-    throw ValueError("expected a date with month 1-12 and day 1-31, got " +
-                     std::to_string(date.month) + "-" + std::to_string(date.day));
-  }
+  if (!std::isfinite(longitude_deg)) throw ValueError("site: longitude_deg must be finite");
+  if (!std::isfinite(elevation_m)) throw ValueError("site: elevation_m must be finite");
+  if (!std::isfinite(utc_offset_h)) throw ValueError("site: utc_offset_h must be finite");
 }
 
-}  // namespace
+void CalendarDate::validate() const {
+  if (year < 1950 || year > 2050) {
+    throw ValueError(
+        "date: year must be in 1950-2050 (the solar position's range, Michalsky 1988), got " +
+        std::to_string(year));
+  }
+  if (month < 1 || month > 12) {
+    throw ValueError("date: month must be in 1-12, got " + std::to_string(month));
+  }
+  if (day < 1 || day > 31)
+    throw ValueError("date: day must be in 1-31, got " + std::to_string(day));
+}
 
 Eigen::Vector3d SolarPosition::direction() const {
   const double z = zenith_deg * kDeg, a = azimuth_deg * kDeg;
@@ -65,7 +69,8 @@ double julian_day(const CalendarDate& date, double hour_ut) {
 
 SolarPosition solar_position(const Site& site, const CalendarDate& date, double local_hour,
                              double pressure_hpa, double temperature_c) {
-  validate(site, date);
+  site.validate();
+  date.validate();
   const double hour_ut = local_hour - site.utc_offset_h;
   // Michalsky (1988): ecliptic coordinates from the days since J2000.0 (n, fraction included).
   const double n = julian_day(date, hour_ut) - 2451545.0;

@@ -12,12 +12,17 @@ struct Site {
   double longitude_deg = 0.0;  // east positive
   double elevation_m = 0.0;    // above sea level
   double utc_offset_h = 0.0;   // local clock time minus UTC (Golden, Colorado: -7)
+  // Throws ValueError naming the field: a latitude beyond +-90, a non-finite value.
+  void validate() const;
 };
 
 struct CalendarDate {
   int year = 2000;
   int month = 1;  // 1..12
   int day = 1;    // 1..31
+  // Throws ValueError naming the field: a year outside 1950-2050 (the solar position's range),
+  // a month outside 1-12 or a day outside 1-31.
+  void validate() const;
 };
 
 struct SolarPosition {

@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <numbers>
 #include <random>
 #include <vector>
 
@@ -22,7 +23,8 @@ namespace fspm::graphics {
 
 struct WindOptions {
   Eigen::Vector3d direction = Eigen::Vector3d::UnitX();  // horizontal part is used
-  double amplitude_rad = 0.12;  // swing of the thinnest joint of mean length
+  // Swing of the thinnest joint of mean length: 7 degrees.
+  double amplitude_rad = 7.0 * std::numbers::pi / 180.0;
   double stiffness_exponent = 2.0;
   double bias = 0.3;  // share of the swing spent leaning with the wind
   double frequency_hz = 0.5;

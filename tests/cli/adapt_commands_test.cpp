@@ -185,6 +185,16 @@ TEST(AdaptCli, LightModelAndPruningRuleAreChosenOnTheCommandLine) {
   EXPECT_NE(bad.err.find("sunny"), std::string::npos) << bad.err;
   EXPECT_NE(bad.err.find("shadow_grid"), std::string::npos) << bad.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "b.tree"));
+  // A model of growth only: the library's refusal, naming the use and adaptation's models.
+  const auto growth_only =
+      run_fspm(base + (dir / "c.tree").string() + " --light-model space_colonization");
+  EXPECT_EQ(growth_only.exit_code, 1);
+  EXPECT_NE(growth_only.err.find("light_model 'space_colonization' gives no light to leaf "
+                                 "clusters (plastic adaptation): expected canopy, sky or "
+                                 "shadow_grid"),
+            std::string::npos)
+      << growth_only.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "c.tree"));
 }
 
 }  // namespace

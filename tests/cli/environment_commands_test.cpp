@@ -198,6 +198,15 @@ TEST(EnvironmentCli, GrowChoosesTheLightModelOfAPreset) {
   r = run_fspm("grow " + (dir / "p.toml").string() + " --light-model sky" + out);
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("light_model"), std::string::npos) << r.err;
+  // A model of adaptation only in a file: the registry's refusal naming the use, at its line.
+  write_text(dir / "c.toml", "years = 3\nlight_model = \"canopy\"\n");
+  r = run_fspm("grow " + (dir / "c.toml").string() + out);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("c.toml:2:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("light_model 'canopy' gives no light to buds (growth): expected sky, "
+                       "shadow_grid or space_colonization"),
+            std::string::npos)
+      << r.err;
 }
 
 TEST(EnvironmentCli, GrowBadInput) {

@@ -8,10 +8,14 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <numbers>
 #include <sstream>
 #include <string>
 
 #include "environment/daylight.hpp"
+#include "environment/growth_params.hpp"
+#include "environment/light_model_registry.hpp"
+#include "environment/sky.hpp"
 #include "environment/sky_radiation.hpp"
 #include "experiments/slurm_script.hpp"
 #include "fspm/image_request.hpp"
@@ -83,6 +87,38 @@ void expect_number(const std::string& command_path, const std::string& option, d
       << command_path << " " << option << " shows " << shown;
 }
 
+// The description of `option` of `command_path` in --help (on the entry's line, or on the next
+// line when the option's names and type fill the first column), or "" when there is none.
+std::string description_of(const std::string& command_path, const std::string& option) {
+  std::istringstream in(help_of(command_path));
+  std::string line;
+  bool found = false;
+  while (std::getline(in, line)) {
+    if (found) return line;  // the continuation line of a long entry
+    if (line.size() < 3 || line[0] != ' ' || line[2] == ' ') continue;  // not an entry
+    std::istringstream words(line);
+    std::string names;
+    words >> names;
+    std::istringstream each(names);
+    for (std::string name; std::getline(each, name, ',');) found = found || name == option;
+    if (!found) continue;
+    const std::size_t text = line.find("  ", 2 + names.size());
+    if (text != std::string::npos && line.find_first_not_of(' ', text) != std::string::npos) {
+      return line;
+    }
+  }
+  if (!found) ADD_FAILURE() << command_path << ": no option " << option;
+  return {};
+}
+
+// An option whose default comes from an input file states the library's default in its text.
+void expect_stated(const std::string& command_path, const std::string& option,
+                   const std::string& stated) {
+  const std::string text = description_of(command_path, option);
+  EXPECT_NE(text.find(stated), std::string::npos)
+      << command_path << " " << option << ": expected \"" << stated << "\" in: " << text;
+}
+
 void expect_text(const std::string& command_path, const std::string& option,
                  const std::string& value) {
   EXPECT_EQ(shown_default(command_path, option), value) << command_path << " " << option;
@@ -104,6 +140,9 @@ TEST(OptionDefaults, MeshRenderAndViewShowTheLibraryDefaults) {
   expect_number("mesh", "--max-sides", m.max_sides);
   expect_text("mesh", "--junctions", std::string(graphics::junction_mode_name(m.junctions)));
   expect_number("mesh", "--wind-frequency", w.frequency_hz);
+  for (const char* command : {"mesh", "render", "view"}) {
+    expect_number(command, "--wind-amplitude", w.amplitude_rad * 180.0 / std::numbers::pi);
+  }
   expect_number("mesh", "--fps", w.frames_per_second);
 
   const graphics::RenderOptions r;
@@ -164,6 +203,17 @@ TEST(OptionDefaults, LightStagesAndTheRestShowTheLibraryDefaults) {
   expect_text("light", "--diffuse-sky",
               std::string(environment::kDiffuseSkyNames.name(sky.diffuse)));
   expect_text("light", "--split", std::string(environment::kDiffuseSplitNames.name(sky.split)));
+
+  expect_stated("light", "--directions",
+                "sky.directions, " + std::to_string(environment::Sky{}.directions) + ")");
+  const environment::GrowthParams grow;
+  expect_stated("grow", "--max-internodes",
+                "max_internodes of the parameters, " + std::to_string(grow.max_internodes) + ")");
+  expect_stated("grow", "--light-model",
+                "; default " + std::string(environment::bud_light_model_name(grow.light_model)));
+  expect_stated("grow", "--tropisms",
+                "; default " + std::string(environment::tropism_pairing_name(
+                                   environment::kDefaultTropismPairing)));
 
   const stages::StagesParams st;
   expect_number("stages", "--added-gamma", st.added.gamma);

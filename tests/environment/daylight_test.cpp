@@ -41,8 +41,32 @@ TEST(SolarPosition, RejectsBadInput) {
   EXPECT_THROW(solar_position({45.0, 0, 0, 0}, {1900, 1, 1}, 12.0), ValueError);
   EXPECT_THROW(solar_position({45.0, 0, 0, 0}, {2003, 13, 1}, 12.0), ValueError);
   RealSky sky;
+  sky.date.day = 32;
+  EXPECT_THROW(sky.validate(), ValueError);
+  sky.date.day = 1;
   sky.first_hour = 14, sky.last_hour = 10;
   EXPECT_THROW(sky.validate(), ValueError);
+}
+
+// Each refusal names the field it refuses; valid values pass.
+TEST(SolarPosition, ValidateNamesTheField) {
+  const auto message = [](const auto& value) {
+    try {
+      value.validate();
+    } catch (const ValueError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(message(Site{39.7, -105.2, 1830.0, -7.0}), "");
+  EXPECT_EQ(message(CalendarDate{2003, 10, 17}), "");
+  EXPECT_NE(message(Site{95.0, 0, 0, 0}).find("latitude_deg"), std::string::npos);
+  EXPECT_NE(message(Site{45.0, NAN, 0, 0}).find("longitude_deg"), std::string::npos);
+  EXPECT_NE(message(Site{45.0, 0, INFINITY, 0}).find("elevation_m"), std::string::npos);
+  EXPECT_NE(message(Site{45.0, 0, 0, NAN}).find("utc_offset_h"), std::string::npos);
+  EXPECT_NE(message(CalendarDate{1900, 1, 1}).find("date: year"), std::string::npos);
+  EXPECT_NE(message(CalendarDate{2003, 13, 1}).find("date: month"), std::string::npos);
+  EXPECT_NE(message(CalendarDate{2003, 1, 0}).find("date: day"), std::string::npos);
 }
 
 // Spitters et al. (1986) eq. 20: all diffuse below Sg/S0 = 0.22, the quadratic between 0.22 and

@@ -71,6 +71,15 @@ TEST(EnvironmentNames, ParameterFileLightModel) {
         << e.what();
     EXPECT_EQ(e.line(), 2);
   }
+  // A model of adaptation only: the registry's refusal naming the use, at the key's line.
+  try {
+    parse_growth_params("years = 3\nlight_model = \"canopy\"\n", "p.toml");
+    FAIL() << "no error";
+  } catch (const ValueError& e) {
+    EXPECT_EQ(e.message(), "light_model 'canopy' gives no light to buds (growth): expected " +
+                               kBudLightModelNames.expected());
+    EXPECT_EQ(e.line(), 2);
+  }
 }
 
 }  // namespace
