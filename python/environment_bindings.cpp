@@ -36,7 +36,7 @@ env::GrowthParams growth_base(py::dict& values) {
   if (values.contains("light_model")) {
     model = env::bud_light_model_from_name(std::string(py::str(values["light_model"])));
   }
-  env::TropismPairing pairing = env::TropismPairing::kText;
+  env::TropismPairing pairing = env::kDefaultTropismPairing;
   if (values.contains("preset_tropisms")) {
     const std::string t = py::str(values["preset_tropisms"]);
     PyDict_DelItemString(values.ptr(), "preset_tropisms");
