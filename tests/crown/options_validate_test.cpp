@@ -8,19 +8,12 @@
 #include "crown/inflation.hpp"
 #include "crown/relief.hpp"
 #include "fspm/error.hpp"
+#include "tests/validate_refusal.hpp"
 
 namespace fspm::crown {
 namespace {
 
-template <typename Options>
-std::string refusal(const Options& options) {
-  try {
-    options.validate();
-  } catch (const ValueError& e) {
-    return e.what();
-  }
-  return {};
-}
+using test_support::refusal;
 
 TEST(OptionsValidate, DefaultsPassAndRefusalsNameTheField) {
   EXPECT_NO_THROW(CrownOptions{}.validate());

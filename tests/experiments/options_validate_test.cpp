@@ -7,19 +7,12 @@
 #include "experiments/runner.hpp"
 #include "experiments/slurm_script.hpp"
 #include "fspm/error.hpp"
+#include "tests/validate_refusal.hpp"
 
 namespace fspm::experiments {
 namespace {
 
-template <typename Options>
-std::string refusal(const Options& options) {
-  try {
-    options.validate();
-  } catch (const ValueError& e) {
-    return e.what();
-  }
-  return {};
-}
+using test_support::refusal;
 
 TEST(ExperimentOptionsValidate, RunnerShardsNameTheField) {
   EXPECT_NO_THROW(RunnerOptions{}.validate());

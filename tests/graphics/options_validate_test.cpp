@@ -15,20 +15,12 @@
 #include "graphics/tree_mesher.hpp"
 #include "graphics/viewer.hpp"
 #include "graphics/wind_animation.hpp"
+#include "tests/validate_refusal.hpp"
 
 namespace fspm::graphics {
 namespace {
 
-// The message of the ValueError `options.validate()` throws ("" when it throws none).
-template <typename Options>
-std::string refusal(const Options& options) {
-  try {
-    options.validate();
-  } catch (const ValueError& e) {
-    return e.what();
-  }
-  return {};
-}
+using test_support::refusal;
 
 #define EXPECT_REFUSED_NAMING(options, field)                                   \
   do {                                                                          \

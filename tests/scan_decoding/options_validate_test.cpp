@@ -8,19 +8,12 @@
 #include "scan_decoding/cluster_texturing.hpp"
 #include "scan_decoding/decoding.hpp"
 #include "scan_decoding/species_library.hpp"
+#include "tests/validate_refusal.hpp"
 
 namespace fspm::scan_decoding {
 namespace {
 
-template <typename Options>
-std::string refusal(const Options& options) {
-  try {
-    options.validate();
-  } catch (const ValueError& e) {
-    return e.what();
-  }
-  return {};
-}
+using test_support::refusal;
 
 TEST(OptionsValidate, DefaultsPassAndRefusalsNameTheField) {
   EXPECT_NO_THROW(TextureOptions{}.validate());

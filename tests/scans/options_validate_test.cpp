@@ -9,19 +9,12 @@
 #include "scans/encoder.hpp"
 #include "scans/scan_simulator.hpp"
 #include "scans/synthetic_tree.hpp"
+#include "tests/validate_refusal.hpp"
 
 namespace fspm::scans {
 namespace {
 
-template <typename Options>
-std::string refusal(const Options& options) {
-  try {
-    options.validate();
-  } catch (const ValueError& e) {
-    return e.what();
-  }
-  return {};
-}
+using test_support::refusal;
 
 TEST(OptionsValidate, DefaultsPassAndRefusalsNameTheField) {
   EXPECT_NO_THROW(EncodeOptions{}.validate());
