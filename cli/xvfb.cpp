@@ -125,7 +125,10 @@ void rerun_under_xvfb_if_needed() {
   const std::string self = std::filesystem::read_symlink("/proc/self/exe", ec).string();
   if (ec || args.empty()) return;
   spdlog::info("no X display: rendering under xvfb-run");
-  std::vector<std::string> words = {xvfb_run, "-a", "-s", "-screen 0 1280x1024x24", self};
+  // -noreset: without it the server resets when this command disconnects and signals the script
+  // (SIGUSR1), which, arriving while the script removes its authority folder, made xvfb-run end
+  // with its own status 5 in place of the command's (one failed write in five).
+  std::vector<std::string> words = {xvfb_run, "-a", "-s", "-screen 0 1280x1024x24 -noreset", self};
   words.insert(words.end(), args.begin() + 1, args.end());
   std::vector<char*> argv;
   for (auto& w : words) argv.push_back(w.data());
