@@ -53,6 +53,8 @@ void JsonFields::fail(const std::string& path, const std::string& expected, cons
 void JsonFields::check_keys(const json& obj, const std::string& path,
                             std::initializer_list<const char*> allowed) const {
   const std::vector<std::string> known(allowed.begin(), allowed.end());
+  // A number or a list where an object belongs has no keys to check (nor to read).
+  if (!obj.is_object()) fail(path.empty() ? "/" : path, "an object", &obj);
   for (auto it = obj.begin(); it != obj.end(); ++it) {
     if (std::find(known.begin(), known.end(), it.key()) != known.end()) continue;
     const std::string key_path = path + "/" + it.key();

@@ -174,6 +174,18 @@ TEST(SceneReader, ErrorsNameFileLinePathAndExpectation) {
   EXPECT_THROW(parse_scene_description("{\n\"sky\": {,}}", "s.json"), ParseError);
 }
 
+// A value that is not an object where one belongs (a fuzzing finding: {"ground":1} ended the
+// process in the key check): refused, naming the path.
+TEST(SceneReader, ANumberWhereAnObjectBelongsIsRefused) {
+  for (const char* text : {R"({"ground": 1})", R"({"sky": [1]})", R"({"sky": {"sun": 2}})",
+                           R"({"obstacles": [3]})", R"({"plants": ["a"]})", "[1]", "7"}) {
+    SCOPED_TRACE(text);
+    const Error e = error_of(text);
+    EXPECT_NE(e.message().find("expected "), std::string::npos) << e.what();
+    EXPECT_NE(e.message().find(" object"), std::string::npos) << e.what();
+  }
+}
+
 TEST(SceneReader, ExampleScenesReadWithTheirPlantFiles) {
   const std::string examples = std::string(FSPM_SOURCE_DIR) + "/examples/";
   const SceneDescription site = read_scene_description(examples + "environment/site_scene.json");
