@@ -320,7 +320,7 @@ void add_adapt_commands(CLI::App& app) {
               "Drop pruned nodes (the default; kept for compatibility)")
       ->excludes("--keep-pruned");
   a->add_flag("--json", opt->json, "Machine-readable JSON on stdout");
-  a->callback([opt] { run_adapt(*opt); });
+  a->callback([opt] { run_reporting_command([&] { run_adapt(*opt); }); });
 }
 
 }  // namespace fspm::cli

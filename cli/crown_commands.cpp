@@ -193,7 +193,8 @@ void write_outputs(const CrownCommand& c, const OutputPaths& paths, const crown:
 void make_crown(const CrownCommand& c, const OutputPaths& paths);
 
 // Every output or none (OutputTransaction): a failure on the way (a full disk, a photograph too
-// large) leaves no file, and no output directory this run created.
+// large, a report that cannot be printed) leaves no file, and no output directory this run
+// created.
 void run_crown(const CrownCommand& c) {
   refuse_overwriting_input(c.out, {c.photo, c.mask});
   refuse_overwriting_input(c.side_mask, {c.photo, c.mask});
@@ -242,7 +243,6 @@ void make_crown(const CrownCommand& c, const OutputPaths& paths) {
   for (const auto& [stage, s] : model.seconds) seconds[stage] = s;
   t0 = std::chrono::steady_clock::now();
   write_outputs(c, paths, model, mask);
-  outputs.commit();
   seconds["writing"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   nlohmann::json files = {{"mesh", paths.mesh},
                           {"color_cubemap", paths.color},
@@ -271,6 +271,9 @@ void make_crown(const CrownCommand& c, const OutputPaths& paths) {
               << model.mesh.triangle_count() << " triangles, crown " << model.volume_m3
               << " m3) and its cubemaps\n";
   }
+  // The files go into place once the report is out: a report that cannot be written leaves none.
+  finish_standard_output();
+  outputs.commit();
 }
 
 }  // namespace

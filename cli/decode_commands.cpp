@@ -133,7 +133,7 @@ void add_decode_commands(CLI::App& app) {
   d->add_flag("--json", o->json,
               "One JSON object on stdout: nodes, triangles, instances, branch_length_m, "
               "scanned_branch_length_m, seconds, ...");
-  d->callback([o] { run_decode(*o); });
+  d->callback([o] { run_reporting_command([&] { run_decode(*o); }); });
 }
 
 }  // namespace fspm::cli

@@ -308,7 +308,7 @@ void add_environment_commands(CLI::App& app) {
   l->add_option("--transmittance", light->sky.transmittance,
                 "Real sky: clear-sky atmospheric transmittance")
       ->capture_default_str();
-  l->callback([light] { run_light(*light); });
+  l->callback([light] { run_reporting_command([&] { run_light(*light); }); });
 
   auto grow = std::make_shared<GrowOptions>();
   CLI::App* g = app.add_subcommand(
@@ -341,7 +341,7 @@ void add_environment_commands(CLI::App& app) {
       ->required();
   g->add_option("--format", grow->format, "Output format (default: from the extension)");
   g->add_flag("--json", grow->json, "Machine-readable JSON on stdout");
-  g->callback([grow] { run_grow(*grow); });
+  g->callback([grow] { run_reporting_command([&] { run_grow(*grow); }); });
 }
 
 }  // namespace fspm::cli

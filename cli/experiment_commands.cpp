@@ -527,7 +527,7 @@ void add_experiment_commands(CLI::App& app) {
   e->add_flag("--csv", exp->csv, "CSV: run, seed, status, seconds, parameters, metrics");
   e->add_flag("--json", exp->json, "JSON: every column of every run");
   e->add_option("-o,--output", exp->output, "File to write (default: stdout)");
-  e->callback([exp] { export_command(*exp); });
+  e->callback([exp] { run_reporting_command([&] { export_command(*exp); }); });
 
   auto show = std::make_shared<ShowOptions>();
   CLI::App* s = results->add_subcommand("show", "Summary of a result database");

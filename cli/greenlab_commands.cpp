@@ -65,7 +65,7 @@ void run_simulate(const SimulateOptions& o) {
   const CompressedTreeGraph g = greenlab::simulate_compressed(params);
   const double seconds = seconds_since(t0);
   write_ctree_file(g, o.out);
-  const auto bytes = std::filesystem::file_size(o.out);
+  const auto bytes = std::filesystem::file_size(written_file(o.out));
   const greenlab::OrganCounts c = greenlab::count_organs(g);
   nlohmann::json by_age = nlohmann::json::object();
   for (const auto& [age, n] : c.metamers_by_age) by_age[std::to_string(age)] = n;
@@ -178,7 +178,7 @@ void add_greenlab_commands(CLI::App& app) {
       ->check(number_in(0, kMaxSeed));
   s->add_option("-o,--output", sim->out, "Output .ctree file")->required();
   s->add_flag("--json", sim->json, "Machine-readable JSON on stdout");
-  s->callback([sim] { run_simulate(*sim); });
+  s->callback([sim] { run_reporting_command([&] { run_simulate(*sim); }); });
 
   auto rec = std::make_shared<ReconstructOptions>();
   CLI::App* r = gl->add_subcommand(
@@ -192,7 +192,7 @@ void add_greenlab_commands(CLI::App& app) {
   r->add_flag("--no-leaves", rec->no_leaves, "Leave the leaves out");
   add_graph_lod_options(r, rec->lod);
   r->add_flag("--json", rec->json, "Machine-readable JSON on stdout");
-  r->callback([rec] { run_reconstruct(*rec); });
+  r->callback([rec] { run_reporting_command([&] { run_reconstruct(*rec); }); });
 
   auto fit = std::make_shared<FitOptions>();
   CLI::App* f = gl->add_subcommand(
@@ -206,7 +206,7 @@ void add_greenlab_commands(CLI::App& app) {
       ->check(number_in(1, 1e6))
       ->capture_default_str();
   f->add_flag("--json", fit->json, "Machine-readable JSON on stdout");
-  f->callback([fit] { run_fit(*fit); });
+  f->callback([fit] { run_reporting_command([&] { run_fit(*fit); }); });
 }
 
 }  // namespace fspm::cli

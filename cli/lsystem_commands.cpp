@@ -264,7 +264,7 @@ void add_lsystem_commands(CLI::App& app) {
                      "ctree_records, ctree_organs and ctree_bytes");
   derive->add_option("--view", derive_opts->view,
                      "With -o: view file (.v; default: the .v beside FILE)");
-  derive->callback([derive_opts] { run_derive(*derive_opts); });
+  derive->callback([derive_opts] { run_reporting_command([&] { run_derive(*derive_opts); }); });
 
   auto interp_opts = std::make_shared<LsystemOptions>();
   auto* interp = group->add_subcommand("interpret", "Derive and draw into a tree graph file");
@@ -287,7 +287,7 @@ void add_lsystem_commands(CLI::App& app) {
                    "units, box diagonal) as one internode (0: exact)")
       ->check(number_in(0.0, 1e300));
   interp->add_flag("--json", interp_opts->json, "Print a JSON summary");
-  interp->callback([interp_opts] { run_interpret(*interp_opts); });
+  interp->callback([interp_opts] { run_reporting_command([&] { run_interpret(*interp_opts); }); });
 }
 
 }  // namespace fspm::cli

@@ -218,7 +218,7 @@ void add_mesh_command(CLI::App& app) {
   add_lsystem_draw_options(m, mesh->lsystem);
   add_graph_lod_options(m, mesh->graph_lod);
   m->add_flag("--json", mesh->json, "Machine-readable JSON on stdout");
-  m->callback([mesh] { run_mesh(*mesh); });
+  m->callback([mesh] { run_reporting_command([&] { run_mesh(*mesh); }); });
 }
 
 }  // namespace fspm::cli

@@ -14,6 +14,7 @@
 #include <streambuf>
 #include <system_error>
 
+#include "fspm/atomic_file.hpp"
 #include "fspm/error.hpp"
 #include "fspm/number_text.hpp"
 
@@ -164,6 +165,13 @@ void finish_standard_output() {
   throw IoError(
       "cannot write: " + (reason != 0 ? std::generic_category().message(reason) : "write failed"),
       "standard output");
+}
+
+void run_reporting_command(const std::function<void()>& command) {
+  OutputTransaction files;
+  command();
+  finish_standard_output();
+  files.commit();
 }
 
 void set_verbosity(int level) {

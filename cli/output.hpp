@@ -1,6 +1,7 @@
 #pragma once
 // Shared helpers of the subcommands: machine-readable output on stdout, logs on stderr.
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
@@ -30,6 +31,13 @@ std::string human_text(const nlohmann::json& value);
 // once, where the command line starts and ends, rather than after each print.
 void use_checked_standard_output();
 void finish_standard_output();
+
+// Runs a command whose files and printed report are one result: the files it writes stay in
+// temporaries (fspm::OutputTransaction) until its report has gone out on standard output, so a
+// report that cannot be written (`--json >/dev/full`, a closed stdout) fails the command and leaves
+// none of its files. Not for commands that keep the finished parts of a long job (run, stages) or
+// read back what they wrote (report).
+void run_reporting_command(const std::function<void()>& command);
 
 // Throws ValueError naming `output` when it is, or resolves to (a link, "./", ".."), one of
 // `inputs`: the command would replace a file it reads. Empty names are skipped.

@@ -211,7 +211,7 @@ void add_render_command(CLI::App& app) {
   add_graph_lod_options(r, render->graph_lod);
   add_ray_cast_flag(r, render->ray_cast);
   r->add_flag("--json", render->json, "Machine-readable JSON on stdout");
-  r->callback([render] { run_render(*render); });
+  r->callback([render] { run_reporting_command([&] { run_render(*render); }); });
 }
 
 }  // namespace fspm::cli

@@ -214,7 +214,7 @@ void add_encode_command(CLI::App& app) {
               "One JSON object on stdout: points, skeleton_nodes, clusters, bytes, seconds, "
               "and the measurements (dbh_m, height_m, crown_width_m, crown_base_m, "
               "woody_volume_m3, ..., warnings)");
-  e->callback([o] { run_encode(*o); });
+  e->callback([o] { run_reporting_command([&] { run_encode(*o); }); });
 }
 
 struct ScanCommand {
@@ -262,7 +262,7 @@ void add_scan_command(CLI::App& app) {
       ->capture_default_str();
   s->add_option("--seed", o->seed, "Seed of the random generator")->check(number_in(0, kMaxSeed));
   s->add_flag("--json", o->json, "One JSON object on stdout: points, output");
-  s->callback([o] { run_scan(*o); });
+  s->callback([o] { run_reporting_command([&] { run_scan(*o); }); });
 }
 
 }  // namespace

@@ -62,7 +62,7 @@ void add_scene_commands(CLI::App& app) {
   u->add_option("-o,--output", upgrade->out, "The upgraded scene (.json, not SCENE itself)")
       ->required();
   u->add_flag("--json", upgrade->json, "Machine-readable JSON on stdout");
-  u->callback([upgrade] { run_upgrade(*upgrade); });
+  u->callback([upgrade] { run_reporting_command([&] { run_upgrade(*upgrade); }); });
 }
 
 }  // namespace fspm::cli

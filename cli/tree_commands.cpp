@@ -276,7 +276,7 @@ void add_tree_commands(CLI::App& app) {
   c->add_option("OUT", conv->out, "Output tree file (.tree, .treeb, .nwk, .mtg)")->required();
   c->add_option("--from", conv->from, "Input format: " + formats + ", or obj, ply, gltf, glb");
   c->add_option("--format,--to", conv->to, "Output format: " + formats);
-  c->callback([conv] { run_convert(*conv); });
+  c->callback([conv] { run_reporting_command([&] { run_convert(*conv); }); });
 }
 
 }  // namespace fspm::cli

@@ -102,6 +102,19 @@ OutputTransaction::~OutputTransaction() {
 
 OutputTransaction* OutputTransaction::current() { return t_current; }
 
+std::string OutputTransaction::temporary_of(const std::string& target) const {
+  for (auto p = pending_.rbegin(); p != pending_.rend(); ++p) {
+    if (p->target == target) return p->temporary;
+  }
+  return outer_ != nullptr ? outer_->temporary_of(target) : std::string();
+}
+
+std::string written_file(const std::string& path) {
+  const OutputTransaction* t = OutputTransaction::current();
+  const std::string temporary = t != nullptr ? t->temporary_of(path) : std::string();
+  return temporary.empty() ? path : temporary;
+}
+
 void OutputTransaction::add(std::string temporary, std::string target, int cleanup) {
   pending_.push_back({std::move(temporary), std::move(target), cleanup});
 }

@@ -16,6 +16,11 @@ namespace fspm {
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,
                            bool binary = false);
 
+// Where the bytes last written to `path` are now: the temporary file an open OutputTransaction on
+// this thread holds back for it, else `path` itself. For a command that reads back what it wrote
+// (the size of its output) before its transaction commits.
+std::string written_file(const std::string& path);
+
 // All of a command's outputs or none: while an OutputTransaction lives, write_file_atomically on
 // its thread leaves each output in its temporary file; commit() renames them all into place at
 // the end, and a transaction destroyed without commit() (an exception on the way: a full disk, a
@@ -39,6 +44,10 @@ class OutputTransaction {
 
   // The thread's innermost open transaction, or nullptr.
   static OutputTransaction* current();
+
+  // The temporary held back for `target` here or in an outer transaction (the latest written),
+  // or an empty string.
+  std::string temporary_of(const std::string& target) const;
 
  private:
   OutputTransaction* outer_;

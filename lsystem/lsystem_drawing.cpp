@@ -3,6 +3,7 @@
 #include <chrono>
 #include <filesystem>
 
+#include "fspm/atomic_file.hpp"
 #include "fspm/compressed_tree_graph.hpp"
 #include "fspm/count_json.hpp"
 #include "fspm/elapsed.hpp"
@@ -139,7 +140,7 @@ void write_lsystem_ctree(const LsystemDrawing& drawing, const std::string& path,
   write_ctree_file(graph, path);
   summary["ctree_records"] = graph.size();
   summary["ctree_organs"] = count_json(geometry_organ_count(graph));
-  summary["ctree_bytes"] = std::filesystem::file_size(path);
+  summary["ctree_bytes"] = std::filesystem::file_size(written_file(path));
 }
 
 }  // namespace fspm::lsystem

@@ -117,13 +117,31 @@ std::vector<Case> output_cases() {
        "tree info " + kTree + " >&-",
        1,
        "standard output: cannot write: Bad file descriptor"},
-      // The output file opened while stdout is closed must not take its descriptor.
+      // The output file opened while stdout is closed must not take its descriptor, and a
+      // command whose report fails keeps none of its files.
       {"SimulateJsonToClosedStdout",
        {},
        {},
        "greenlab simulate " + kPlant + " -o {dir}/p.ctree --json >&-",
        1,
-       "standard output: cannot write: Bad file descriptor"},
+       "standard output: cannot write: Bad file descriptor",
+       {"p.ctree"}},
+      {"GrowJsonToFullStdoutKeepsNoTree",
+       {},
+       {},
+       "grow " + kGrowth + " --years 2 -o {dir}/t.tree --json >/dev/full",
+       1,
+       "standard output: cannot write: " + kFull,
+       {"t.tree"}},
+      {"EncodeJsonToFullStdoutKeepsNoOutput",
+       {},
+       {},
+       "encode " + kExamples +
+           "/trees/open_a12.treeb -o {dir}/c.clusters --skeleton {dir}/s.tree "
+           "--json >/dev/full",
+       1,
+       "standard output: cannot write: " + kFull,
+       {"c.clusters", "s.tree"}},
       {"HelpToFullStdout", {}, {}, "--help >/dev/full", 1, "standard output: cannot write"},
       // A device is written in place, never replaced by a renamed file; the link keeps the
       // device safe should that ever regress.
