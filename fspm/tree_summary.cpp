@@ -5,8 +5,12 @@
 #include <boost/geometry/geometries/point_xy.hpp>
 #include <boost/geometry/geometries/polygon.hpp>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
+
+#include "fspm/memory_budget.hpp"
 
 namespace fspm {
 namespace {
@@ -16,11 +20,15 @@ using Point2 = bg::model::d2::point_xy<double>;
 
 // Largest distance between two points of the ground projection: the diameter of its convex hull,
 // found by comparing every pair of hull vertices (hulls of trees have few vertices).
+// A node that starts where its parent ends adds only its end.
 double projection_diameter(const TreeGraph& tree) {
   bg::model::multi_point<Point2> points;
-  points.reserve(tree.size() * 2);
+  points.reserve(tree.size() + 1);
   for (NodeId n = 0; n < tree.size(); ++n) {
-    points.emplace_back(tree.start(n).x(), tree.start(n).y());
+    const NodeId p = tree.parent(n);
+    if (p == kNoNode || tree.start(n) != tree.end(p)) {
+      points.emplace_back(tree.start(n).x(), tree.start(n).y());
+    }
     points.emplace_back(tree.end(n).x(), tree.end(n).y());
   }
   bg::model::polygon<Point2> hull;
@@ -49,15 +57,24 @@ double crown_depth(const TreeGraph& tree) {
   return std::isfinite(base) ? top - base : 0.0;
 }
 
+// Scratch bytes per node: a node's depth, its end in the ground projection and the convex hull's
+// sorted copy of it.
+constexpr double kSummaryBytesPerNode = sizeof(std::uint32_t) + 2.0 * sizeof(Point2);
+
 }  // namespace
 
 TreeSummary summarize(const TreeGraph& tree) {
   TreeSummary s;
   s.nodes = tree.size();
   if (tree.empty()) return s;
+  // The tree is held while its summary is made: both count against the memory limit.
+  check_memory(
+      static_cast<double>(tree.size()) *
+          (TreeGraph::bytes_per_node(tree.attribute_names().size()) + kSummaryBytesPerNode),
+      "the summary of a tree of " + std::to_string(tree.size()) + " nodes");
   s.bbox_min = tree.start(0);
   s.bbox_max = tree.start(0);
-  std::vector<std::size_t> depth(tree.size(), 0);
+  std::vector<std::uint32_t> depth(tree.size(), 0);
   double max_z = tree.start(0).z();
   for (NodeId n = 0; n < tree.size(); ++n) {
     switch (tree.kind(n)) {
@@ -78,7 +95,7 @@ TreeSummary summarize(const TreeGraph& tree) {
     if (tree.is_tip(n)) ++s.tips;
     s.max_order = std::max<std::size_t>(s.max_order, tree.order(n));
     if (tree.parent(n) != kNoNode) depth[n] = depth[tree.parent(n)] + 1;
-    s.max_depth = std::max(s.max_depth, depth[n]);
+    s.max_depth = std::max<std::size_t>(s.max_depth, depth[n]);
     for (const Eigen::Vector3d& p : {tree.start(n), tree.end(n)}) {
       s.bbox_min = s.bbox_min.cwiseMin(p);
       s.bbox_max = s.bbox_max.cwiseMax(p);

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <random>
 
+#include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 #include "fspm/tree_summary.hpp"
 #include "tests/fspm/random_tree.hpp"
 
@@ -102,6 +104,30 @@ TEST(Summary, CountsAndExtentsOfSample) {
   EXPECT_DOUBLE_EQ(s.crown_width_m, std::sqrt(4.25));
   EXPECT_DOUBLE_EQ(s.crown_depth_m, 2.0);  // top 4 m, lowest lateral start 2 m
   EXPECT_EQ(s.branches_per_order, (std::vector<std::size_t>{1, 1}));  // the leaf is no axis
+}
+
+TEST(Summary, ANodeStartingAwayFromItsParentWidensTheCrown) {
+  TreeGraph t = sample();
+  NodeData d;
+  d.start = {-3, 0, 1};  // starts 3 m off the trunk, ends next to it
+  d.end = {0, 0, 1.5};
+  d.order = 1;
+  t.add_node(0, d);
+  EXPECT_DOUBLE_EQ(summarize(t).crown_width_m, 5.0);  // (-3, 0) to (2, 0)
+}
+
+// The summary's scratch (depths, the ground projection and its hull) is counted with the tree it
+// summarizes: a limit that holds the tree alone refuses it, one with room for both does not.
+TEST(Summary, ItsScratchCountsAgainstTheMemoryLimit) {
+  std::mt19937_64 rng(5);
+  const TreeGraph t = testing::random_tree(rng, 20000, 0);
+  const double tree_bytes =
+      static_cast<double>(t.size()) * TreeGraph::bytes_per_node(t.attribute_names().size());
+  set_memory_limit_bytes(static_cast<std::uint64_t>(1.05 * tree_bytes));
+  EXPECT_THROW(summarize(t), MemoryLimitError);
+  set_memory_limit_bytes(static_cast<std::uint64_t>(1.5 * tree_bytes));
+  EXPECT_EQ(summarize(t).nodes, t.size());
+  set_memory_limit_bytes(0);
 }
 
 }  // namespace
