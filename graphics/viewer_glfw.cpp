@@ -20,11 +20,13 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 #include "graphics/gl_shader.hpp"
 #include "graphics/image.hpp"
 #include "graphics/pn_triangles.hpp"
@@ -713,8 +715,33 @@ struct GpuScene {
   float tessellation_distance = 1.0f, max_level = 1.0f;
 };
 
+// The steps' meshes as held, and as uploaded (upload_raw): 10 floats a vertex (position, normal,
+// colour), 3 indices a triangle and a matrix an instance, which the driver keeps beside the meshes
+// (a software renderer in system memory). Both must fit the memory limit before the upload.
+void check_upload_memory(const std::vector<StepRef>& steps, const std::vector<StepRef>& coarse) {
+  double held = 0.0, uploaded = 0.0;
+  std::set<const TriangleMesh*> counted;
+  for (const std::vector<StepRef>* list : {&steps, &coarse}) {
+    for (const StepRef& step : *list) {
+      for (std::size_t k = 0; k < step.meshes.size(); ++k) {
+        const TriangleMesh& m = *step.meshes[k];
+        if (counted.insert(&m).second) {
+          held +=
+              TriangleMesh::bytes_for(m.vertex_count(), m.triangle_count(), m.attributes.size());
+        }
+        uploaded += static_cast<double>(m.vertex_count()) * 10.0 * sizeof(float) +
+                    static_cast<double>(m.triangle_count()) * 3.0 * sizeof(std::uint32_t) +
+                    static_cast<double>(step.models[k].size()) * sizeof(glm::mat4);
+      }
+    }
+  }
+  check_memory(held + uploaded, "drawing " + std::to_string(steps.size()) +
+                                    " steps (their meshes and the copies uploaded for drawing)");
+}
+
 void upload_scene(GpuScene& g, const std::vector<StepRef>& steps,
                   const std::vector<StepRef>& coarse, const ViewerOptions& o, const Scene& scene) {
+  check_upload_memory(steps, coarse);
   g.scene_program = program(kSceneVs, kSceneFs, true);
   for (const auto& step : steps) g.steps.push_back(upload(step, o, scene));
   for (const auto& step : coarse) g.coarse.push_back(upload(step, o, scene));

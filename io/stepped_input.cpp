@@ -62,8 +62,8 @@ std::vector<graphics::InstancedMesh> steps_side_by_side(const std::vector<Steppe
     // The viewer keeps every step: the ones made so far, and this one twice while its parts are
     // placed, must fit the limit before it is made.
     check_memory(held_bytes + 2.0 * step_bound,
-                 "the meshes of steps 1 to " + std::to_string(steps.size() + 1) + " of " +
-                     std::to_string(ages.size()) + " (every step is kept for the viewer)");
+                 "keeping the meshes of steps 1 to " + std::to_string(steps.size() + 1) + " of " +
+                     std::to_string(ages.size()) + " for the viewer");
     std::vector<graphics::InstancedMesh> parts;
     for (const auto& s : inputs) parts.push_back(s.at(age, options));
     steps.push_back(graphics::place_parts(parts, placements));
