@@ -100,12 +100,16 @@ SiteSky parse_site_sky(const toml::node& node, const std::string& file) {
   return out;
 }
 
-SiteSky read_site_sky_file(const std::string& path) {
-  const toml::table table = parse_toml_text(read_text_input_file(path), path);
-  refuse_unknown(table, "", {"sky"}, path);
+SiteSky parse_site_sky_text(std::string_view text, const std::string& file) {
+  const toml::table table = parse_toml_text(text, file);
+  refuse_unknown(table, "", {"sky"}, file);
   const toml::node* sky = table.get("sky");
-  if (sky == nullptr) throw ValueError("expected a table sky = { site = {...}, date, ... }", path);
-  return parse_site_sky(*sky, path);
+  if (sky == nullptr) throw ValueError("expected a table sky = { site = {...}, date, ... }", file);
+  return parse_site_sky(*sky, file);
+}
+
+SiteSky read_site_sky_file(const std::string& path) {
+  return parse_site_sky_text(read_text_input_file(path), path);
 }
 
 }  // namespace fspm::environment

@@ -13,6 +13,7 @@
 #include <toml++/toml.h>
 #include <Eigen/Core>
 #include <string>
+#include <string_view>
 
 #include "environment/daylight.hpp"
 
@@ -34,5 +35,7 @@ SiteSky parse_site_sky(const toml::node& node, const std::string& file);
 // A TOML file holding only that table (`sky = { ... }`, or a [sky] section); throws IoError or
 // ValueError naming the file.
 SiteSky read_site_sky_file(const std::string& path);
+// The same from the file's text, `file` naming it in messages.
+SiteSky parse_site_sky_text(std::string_view text, const std::string& file);
 
 }  // namespace fspm::environment
