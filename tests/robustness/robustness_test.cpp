@@ -1382,6 +1382,79 @@ std::vector<Case> budget_cases() {
   };
 }
 
+// Cases of a second hostile audit: counts in plant files far past any memory, job threads the
+// system refuses, file names that hold control characters.
+std::vector<Case> audit_cases() {
+  const std::string plant = "[plant]\ncycles = 5\n[[age]]\nindex = 1\nduration = 5\nnext_age = 0\n";
+  const std::string limit = "above the memory limit of 256 MiB \\(--memory-limit\\)";
+  return {
+      // 10^9 metamers in one growth unit: 56 GB of records before anything else saw them.
+      {"GreenlabUnitCountOverTheMemoryLimit",
+       {{"p.toml", plant + "units = [ { count = 1000000000 } ]\n"}},
+       {},
+       "--memory-limit 256M greenlab simulate {dir}/p.toml -o {dir}/p.ctree",
+       1,
+       "the compressed plant of 1000000000 records and 0 axillary references needs about "
+       "[0-9.]+ GiB, " +
+           limit,
+       {"p.ctree"},
+       {},
+       100},
+      // One metamer bearing 10^9 buds of its own age: as many axillary references.
+      {"GreenlabBudCountOverTheMemoryLimit",
+       {{"p.toml", plant + "branching_delay = 1\nunits = [ { count = 1, axillary = [ { age = 1, "
+                           "count = 1000000000 } ] } ]\n"}},
+       {},
+       "--memory-limit 256M greenlab simulate {dir}/p.toml -o {dir}/p.ctree",
+       1,
+       "the compressed plant of 1 records and 1000000000 axillary references needs about "
+       "[0-9.]+ GiB, " +
+           limit,
+       {"p.ctree"},
+       {},
+       100},
+      // The beta law is tabulated over the whole expansion: 10^8 cycles took 800 MB, exit 0.
+      {"GreenlabExpansionLongerThanAnySimulation",
+       {{"p.toml", plant + "units = [ { count = 1 } ]\nleaf_expansion = 100000000\n"}},
+       {},
+       "--memory-limit 256M greenlab simulate {dir}/p.toml -o {dir}/p.ctree",
+       1,
+       "p.toml:8:[0-9]+: key 'age\\[0\\].leaf_expansion' is 100000000 cycles, expected at most "
+       "10000",
+       {"p.ctree"},
+       {},
+       100},
+      // Under an address-space limit the system starts about a hundred of 4096 job threads;
+      // the runs go on with those (a refused thread used to leave the started ones waiting for
+      // ever, deaf to SIGTERM). The timeout turns a hang into a failure.
+      {"JobThreadsRefusedBySystem",
+       {{"e.toml", kSynthetic}},
+       {},
+       "run {dir}/e.toml --out {dir}/out --jobs 4096 --replicates 3000",
+       0,
+       "--jobs: the system started only [0-9]+ of 3000 job threads \\(.*\\): running with "
+       "[0-9]+; "
+       "give a lower --jobs(.|\\n)*progress: 3000/3000 runs \\(100%\\), 0 failed",
+       {},
+       "ulimit -s 8192; ulimit -v 1500000; timeout -s KILL 120 "},
+      // A newline in a file name stays inside the one line of the message.
+      {"NewlineInAFileName",
+       {},
+       {},
+       "tree info '{dir}/no\nsuch.nwk'",
+       1,
+       "^fspm: error: [^\\n]*/no\\\\nsuch\\.nwk: cannot open for reading: No such file or "
+       "directory\\n$"},
+      // An escape sequence in a file name is printed as text, never sent to the terminal.
+      {"EscapeSequenceInAFileName",
+       {{"e\x1b[2Jsc.nwk", "((a,b)c"}},
+       {},
+       "tree info '{dir}/e\x1b[2Jsc.nwk'",
+       1,
+       "^fspm: error: [^\\n\\x1b]*/e\\\\x1b\\[2Jsc\\.nwk:1:[0-9]+: [^\\n\\x1b]*\\n$"},
+  };
+}
+
 // Test names in ctest and failure reports show the case's name, not its bytes.
 void PrintTo(const Case& c, std::ostream* out) { *out << c.name; }
 
@@ -1588,6 +1661,7 @@ INSTANTIATE_TEST_SUITE_P(NamedInput, Robustness, ::testing::ValuesIn(named_input
                          case_name);
 INSTANTIATE_TEST_SUITE_P(Images, Robustness, ::testing::ValuesIn(image_cases()), case_name);
 INSTANTIATE_TEST_SUITE_P(Budget, Robustness, ::testing::ValuesIn(budget_cases()), case_name);
+INSTANTIATE_TEST_SUITE_P(Audit, Robustness, ::testing::ValuesIn(audit_cases()), case_name);
 INSTANTIATE_TEST_SUITE_P(Options, GlobalOption, ::testing::ValuesIn(spellings()), spelling_name);
 
 }  // namespace
