@@ -1385,6 +1385,12 @@ std::vector<Case> budget_cases() {
 // Cases of a second hostile audit: counts in plant files far past any memory, job threads the
 // system refuses, file names that hold control characters.
 std::vector<Case> audit_cases() {
+  // Plants P of internodes E with a length and a diameter; the code starts on line 13.
+  const std::string kMtgWithFeatures =
+      "CODE:\tFORM-A\nCLASSES:\nSYMBOL\tSCALE\tDECOMPOSITION\tINDEXATION\tDEFINITION\n$"
+      "\t0\tFREE\tFREE\tIMPLICIT\nP\t1\tFREE\tFREE\tIMPLICIT\nE\t2\tFREE\tFREE\tIMPLICIT\n"
+      "FEATURES:\nNAME\tTYPE\nLength\tREAL\nDiameter\tREAL\nMTG:\nENTITY-CODE\t\tLength\t"
+      "Diameter\n";
   const std::string plant = "[plant]\ncycles = 5\n[[age]]\nindex = 1\nduration = 5\nnext_age = 0\n";
   const std::string limit = "above the memory limit of 256 MiB \\(--memory-limit\\)";
   return {
@@ -1437,6 +1443,21 @@ std::vector<Case> audit_cases() {
        "give a lower --jobs(.|\\n)*progress: 3000/3000 runs \\(100%\\), 0 failed",
        {},
        "ulimit -s 8192; ulimit -v 1500000; timeout -s KILL 120 "},
+      // "nan" reads as a number: a length of nan made the whole plant's geometry nan (tree info
+      // printed it, exit 0; tree convert blamed the output file).
+      {"MtgLengthNan",
+       {{"h.mtg", kMtgWithFeatures + "/P1/E1\t\t10\t1\n^<E2\t\tnan\t1\n"}},
+       {},
+       "tree info {dir}/h.mtg",
+       1,
+       "h.mtg:14: feature Length: 'nan', expected a finite number >= 0"},
+      {"MtgDiameterNegative",
+       {{"h.mtg", kMtgWithFeatures + "/P1/E1\t\t10\t-1\n"}},
+       {},
+       "tree convert {dir}/h.mtg {dir}/t.tree",
+       1,
+       "h.mtg:13: feature Diameter: '-1', expected a finite number >= 0",
+       {"t.tree"}},
       // A newline in a file name stays inside the one line of the message.
       {"NewlineInAFileName",
        {},
