@@ -175,7 +175,7 @@ q tree convert "$v/v.nwk" "$v/v.tree"
 q greenlab simulate "$v/plant.toml" -o "$v/v.ctree"
 q scan "$v/v.treeb" -o "$v/v.ply" --density 2000
 q scan "$v/v.treeb" -o "$v/v.xyz" --density 2000
-q mesh "$v/v.nwk" -o "$v/v.glb"
+q mesh "$v/v.mtg" -o "$v/v.glb"  # a Newick without branch lengths draws nothing
 q encode "$v/v.treeb" -o "$v/v.clusters"
 q run "$v/experiment.toml" --out "$v/results"
 { pcd_n=$(grep -c '' "$v/v.xyz")
@@ -418,7 +418,7 @@ for opt in "--memory-limit 0" "--memory-limit -1G" "--memory-limit 1X" "--memory
 done
 run_case option/same-file fail "" "cp $v/v.nwk t.nwk" "tree convert t.nwk t.nwk"
 run_case option/same-output fail "" ":" "stages $v/v.treeb --at 0.5 --skeleton o.tree -o ./o.tree"
-run_case option/missing-output-folder fail "" ":" "mesh $v/v.nwk -o nowhere/m.obj"
+run_case option/missing-output-folder fail "" ":" "mesh $v/v.treeb -o nowhere/m.obj"
 run_case option/encode-text-ext fail "" ":" "encode $v/v.treeb -o out.txt"
 run_case option/no-command fail "" ":" ""
 run_case option/unknown-command fail "" ":" "frobnicate"

@@ -979,7 +979,7 @@ std::vector<Case> named_input_cases() {
       // Bytes 8-11 of a GLB hold its total length, here 16 bytes short of the file's.
       {"GlbWhoseHeaderLengthLies",
        {},
-       {"mesh " + kTree + " -o {dir}/t.glb"},
+       {"mesh " + kExamples + "/trees/growth_units.mtg -o {dir}/t.glb"},
        "encode {dir}/t.glb -o {dir}/c.clusters",
        1,
        "t.glb: the GLB header gives a length of [0-9]+ bytes, the file has [0-9]+",
@@ -1350,7 +1350,7 @@ std::vector<Case> budget_cases() {
       // allocate the declared length: 2 GB of resident memory before it noticed.
       {"GlbChunkLengthLies",
        {},
-       {"mesh " + kTree + " -o {dir}/v.glb"},
+       {"mesh " + kExamples + "/trees/growth_units.mtg -o {dir}/v.glb"},
        "--memory-limit 64M encode {dir}/bad.glb -o {dir}/o.clusters",
        1,
        "bad.glb: GLB chunk 0 declares 2147483647 bytes, but only [0-9]+ follow its header",
@@ -1458,6 +1458,32 @@ std::vector<Case> audit_cases() {
        1,
        "h.mtg:13: feature Diameter: '-1', expected a finite number >= 0",
        {"t.tree"}},
+      // Nothing to mesh: "wrote z.glb (0 vertices, 0 triangles)", exit 0, where a tree file of
+      // the same drawing was refused.
+      {"MeshOfZeroLengthInternodes",
+       {{"z.l", "Axiom: F(0)\n"}},
+       {},
+       "mesh {dir}/z.l -o {dir}/z.glb",
+       1,
+       "z.glb: no triangle to write: the input draws no surface",
+       {"z.glb"}},
+      // An infinite length (1e308 squared) left out by the mesher: an empty OBJ and its MTL.
+      {"InterpretInfiniteLengthToObj",
+       {{"i.l", "derivation length: 1\nAxiom: F(1)\nF(x) --> F(x*1e308*1e308)\n"}},
+       {},
+       "lsystem interpret {dir}/i.l -o {dir}/i.obj",
+       1,
+       "i.obj: no triangle to write: the input draws no surface",
+       {"i.obj", "i.mtl"}},
+      // A scan that sees nothing wrote an empty file ("0 points", exit 0) that every point
+      // reader refuses.
+      {"ScanOfZeroLengthInternodes",
+       {{"z.l", "Axiom: F(0)\n"}},
+       {"lsystem interpret {dir}/z.l -o {dir}/z.tree"},
+       "scan {dir}/z.tree -o {dir}/z.xyz",
+       1,
+       "z.xyz: no point to write: the point set is empty",
+       {"z.xyz"}},
       // A newline in a file name stays inside the one line of the message.
       {"NewlineInAFileName",
        {},
