@@ -1385,6 +1385,15 @@ std::vector<Case> budget_cases() {
 // Cases of a second hostile audit: counts in plant files far past any memory, job threads the
 // system refuses, file names that hold control characters.
 std::vector<Case> audit_cases() {
+  // A 32 x 32 PNG of one green (RGB 40, 120, 40).
+  static constexpr char kUniformPng[] =
+      "\x89\x50\x4e\x47\x0d\x0a\x1a\x0a\x00\x00\x00\x0d\x49\x48\x44\x52"
+      "\x00\x00\x00\x20\x00\x00\x00\x20\x08\x02\x00\x00\x00\xfc\x18\xed"
+      "\xa3\x00\x00\x00\x29\x49\x44\x41\x54\x78\xda\xed\xcd\x31\x0d\x00"
+      "\x00\x08\x03\xb0\xc9\x99\x44\xe4\xa3\x82\x83\xa4\x49\xff\xa6\xd3"
+      "\x53\x11\x08\x04\x02\x81\x40\x20\x10\x08\x04\x5f\x82\x05\x28\x5d"
+      "\x20\x2e\x55\xbc\xe6\x36\x00\x00\x00\x00\x49\x45\x4e\x44\xae\x42"
+      "\x60\x82";
   // Plants P of internodes E with a length and a diameter; the code starts on line 13.
   const std::string kMtgWithFeatures =
       "CODE:\tFORM-A\nCLASSES:\nSYMBOL\tSCALE\tDECOMPOSITION\tINDEXATION\tDEFINITION\n$"
@@ -1473,8 +1482,16 @@ std::vector<Case> audit_cases() {
        {},
        "lsystem interpret {dir}/i.l -o {dir}/i.obj",
        1,
-       "i.obj: no triangle to write: the input draws no surface",
+       "cannot mesh node [0-9]+: its (end|length|direction) is nan or infinite",
        {"i.obj", "i.mtl"}},
+      // A nan width: "mesh would have 18446744065119617028 vertices ...; raise the edge length".
+      {"InterpretNanWidthToGlb",
+       {{"w.l", "Axiom: !(sqrt(-1))F(1)\n"}},
+       {},
+       "lsystem interpret {dir}/w.l -o {dir}/w.glb",
+       1,
+       "cannot mesh node [0-9]+: its radius is nan or infinite",
+       {"w.glb"}},
       // A scan that sees nothing wrote an empty file ("0 points", exit 0) that every point
       // reader refuses.
       {"ScanOfZeroLengthInternodes",
@@ -1484,6 +1501,30 @@ std::vector<Case> audit_cases() {
        1,
        "z.xyz: no point to write: the point set is empty",
        {"z.xyz"}},
+      // A photograph of one colour: the message named no file.
+      {"CrownOfAUniformPhotoNamesIt",
+       {{"g.png", std::string(kUniformPng, sizeof kUniformPng - 1)}},
+       {},
+       "crown {dir}/g.png -o {dir}/out",
+       1,
+       "g.png: no crown found: nothing differs from the sky and ground beside it",
+       {"out"}},
+      // A view file's numbers go through strtod, which reads 1e309 as inf and "nan" as nan: the
+      // error came from the tree writer, naming the output, or an empty mesh was written.
+      {"ViewFileAngleOverflowing",
+       {{"t.v", "angle increment: 1e309\n"}},
+       {},
+       "lsystem interpret " + kExamples + "/lsystems/abop_1_24a.l --view {dir}/t.v -o {dir}/t.tree",
+       1,
+       "t.v:1:[0-9]+: expected a finite number, got '1e309'",
+       {"t.tree"}},
+      {"ViewFileLineWidthNan",
+       {{"t.v", "initial line width: nan\n"}},
+       {},
+       "lsystem interpret " + kExamples + "/lsystems/abop_1_24a.l --view {dir}/t.v -o {dir}/t.glb",
+       1,
+       "t.v:1:[0-9]+: expected a line width",
+       {"t.glb"}},
       // A newline in a file name stays inside the one line of the message.
       {"NewlineInAFileName",
        {},
