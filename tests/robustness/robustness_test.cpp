@@ -1525,6 +1525,16 @@ std::vector<Case> audit_cases() {
        1,
        "t.v:1:[0-9]+: expected a line width",
        {"t.glb"}},
+      // An experiment named "-rf" wrote "-rf.slurm" and printed "sbatch '-rf.slurm'", which
+      // sbatch (or rm) reads as options however it is quoted.
+      {"SlurmScriptOfANameWithALeadingDash",
+       {{"e.toml", "[experiment]\nname = \"-rf\"\n[model]\nkind = \"synthetic\"\n"}},
+       {},
+       "run e.toml --out o --emit-slurm",
+       0,
+       "",
+       {"-rf.slurm", "-rf-results"},
+       "cd {dir} && "},
       // A newline in a file name stays inside the one line of the message.
       {"NewlineInAFileName",
        {},
