@@ -1535,6 +1535,15 @@ std::vector<Case> audit_cases() {
        "",
        {"-rf.slurm", "-rf-results"},
        "cd {dir} && "},
+      // A render size within 16384 x 16384 but above the budget: 2.8 GB, exit 0.
+      {"RenderSizeOverTheMemoryLimit",
+       {},
+       {},
+       "--memory-limit 256M render " + kExamples + "/trees/open_a12.treeb -o {dir}/r.png --size " +
+           "8192x8192",
+       1,
+       "a render of 8192x8192 needs about 2.5 GiB, " + limit,
+       {"r.png"}},
       // A newline in a file name stays inside the one line of the message.
       {"NewlineInAFileName",
        {},
