@@ -1544,6 +1544,15 @@ std::vector<Case> audit_cases() {
        1,
        "a render of 8192x8192 needs about 2.5 GiB, " + limit,
        {"r.png"}},
+      // Its pipe-model power overflowed: the tree writer refused an infinite radius, naming the
+      // output.
+      {"GrowthTipRadiusOverflowNamesItsKey",
+       {{"g.toml", "years = 3\ntip_radius_m = 1e300\n"}},
+       {},
+       "grow {dir}/g.toml -o {dir}/t.tree",
+       1,
+       "g.toml:2:[0-9]+: tip_radius_m: expected a positive length up to 1 m",
+       {"t.tree"}},
       // A newline in a file name stays inside the one line of the message.
       {"NewlineInAFileName",
        {},
