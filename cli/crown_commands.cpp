@@ -227,7 +227,7 @@ void make_crown(const CrownCommand& c, const OutputPaths& paths) {
   const crown::Raster photo = crown::read_rgb(c.photo);
   crown::Mask mask;
   if (c.mask.empty()) {
-    mask = crown::auto_mask(photo, {});
+    mask = crown::auto_mask(photo, {}, c.photo);
     crown::write_mask(mask, paths.mask);
   } else {
     mask = crown::read_mask(c.mask);

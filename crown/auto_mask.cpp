@@ -45,7 +45,7 @@ Mask foreground(const Raster& rgb, float threshold) {
   return raw;
 }
 
-Mask auto_mask(const Raster& rgb, const AutoMaskOptions& options) {
+Mask auto_mask(const Raster& rgb, const AutoMaskOptions& options, const std::string& source) {
   const Mask raw = foreground(rgb, options.threshold);
   const int open = options.open_px > 0 ? options.open_px : std::max(1, rgb.height / 100);
   const int close = options.close_px > 0 ? options.close_px : std::max(1, rgb.height / 50);
@@ -54,7 +54,7 @@ Mask auto_mask(const Raster& rgb, const AutoMaskOptions& options) {
   m = large_pieces(fill_holes(m), 0.1);
   if (m.count() == 0) {
     throw ValueError(
-        "no crown found: nothing differs from the sky and ground beside it (give --mask)");
+        "no crown found: nothing differs from the sky and ground beside it (give --mask)", source);
   }
   return m;
 }

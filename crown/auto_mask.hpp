@@ -6,6 +6,8 @@
 // holes are filled and the pieces of at least a tenth of the largest one's area are kept. Write the
 // mask out and check it: a tree touching the image's sides or a background that changes along a row
 // defeats it.
+#include <string>
+
 #include "crown/raster.hpp"
 
 namespace fspm::crown {
@@ -16,8 +18,9 @@ struct AutoMaskOptions {
   int close_px = 0;         // 0: 2 % of the image height, at least 1
 };
 
-// Throws ValueError when nothing differs from the background.
-Mask auto_mask(const Raster& rgb, const AutoMaskOptions& options);
+// Throws ValueError naming `source` (the photograph's file, when given) when nothing differs
+// from the background.
+Mask auto_mask(const Raster& rgb, const AutoMaskOptions& options, const std::string& source = {});
 
 // The pixels that differ from their row's background (foliage, branches), before any clean-up:
 // inside the crown mask the others are sky seen through gaps in the foliage.

@@ -55,6 +55,9 @@ GrowthParams growth_preset(std::string_view name, BudLightModel light_model,
 
 namespace {
 
+// The largest tip radius: pipe-model sums of its power stay finite for any tree that fits memory.
+constexpr double kMaxTipRadiusM = 1.0;
+
 template <typename Check>
 void validate_light_model(const GrowthParams& p, const Check& check) {
   const ShadowGridParams& g = p.shadow_grid;
@@ -171,7 +174,10 @@ void GrowthParams::validate() const {
         "a number in [0, 1)");
   bud_light_hook(p.light_model);  // a model that lights buds, or a ValueError naming it
   validate_light_model(p, check);
-  check(p.tip_radius_m > 0 && std::isfinite(p.tip_radius_m), "tip_radius_m", "a positive length");
+  // A shoot tip is millimetres thick; above a metre its pipe-model powers overflow (1e300 made
+  // every radius infinite, refused only by the tree writer, which named the output).
+  check(p.tip_radius_m > 0 && p.tip_radius_m <= kMaxTipRadiusM, "tip_radius_m",
+        "a positive length up to 1 m");
   check(p.pipe_exponent >= 1 && p.pipe_exponent <= 4, "pipe_exponent", "a number in [1, 4]");
 }
 
@@ -245,7 +251,8 @@ KeyTable growth_keys(GrowthParams& p) {
       {"pruning_factor", {real(p.pruning_factor, 0, kBig), "a non-negative number"}},
       {"leaf_years", {integer(p.leaf_years, 1, 1000), "an integer in [1, 1000]"}},
       {"cluster_radius_m", {real(p.cluster_radius_m, 1e-12, kBig), "a positive length"}},
-      {"tip_radius_m", {real(p.tip_radius_m, 1e-12, kBig), "a positive length"}},
+      {"tip_radius_m",
+       {real(p.tip_radius_m, 1e-12, kMaxTipRadiusM), "a positive length up to 1 m"}},
       {"pipe_exponent", {real(p.pipe_exponent, 1, 4), "a number in [1, 4]"}},
       {"keep_shed_pipes", {boolean(p.keep_shed_pipes), "true or false"}},
       {"min_shoot_vigour", {real(p.min_shoot_vigour, 0, kBig), "a non-negative number"}},

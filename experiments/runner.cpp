@@ -8,6 +8,7 @@
 #include <deque>
 #include <filesystem>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -20,6 +21,7 @@
 #include "fspm/memory_account.hpp"
 #include "fspm/memory_budget.hpp"
 #include "fspm/tree_file.hpp"
+#include "fspm/warning.hpp"
 
 namespace fspm::experiments {
 namespace {
@@ -95,6 +97,33 @@ class StopOnExit {
   Mailbox& mailbox_;
   std::atomic<bool>& stop_;
 };
+
+// Starts up to `workers` threads running `work`. When the system refuses a thread (an
+// address-space limit, a cap on processes), the jobs already started carry on alone, with a
+// warning: a worker left waiting for a writer that never comes would hang the process, even
+// against SIGTERM. Throws IoError when not even one thread starts.
+template <class Work>
+std::vector<std::jthread> start_workers(std::size_t workers, Work& work, Mailbox& mailbox,
+                                        std::atomic<bool>& stop_all) {
+  std::vector<std::jthread> pool;
+  pool.reserve(workers);
+  try {
+    for (std::size_t w = 0; w < workers; ++w) pool.emplace_back(work);
+  } catch (const std::system_error& e) {
+    if (pool.empty()) {
+      throw IoError(std::string("--jobs: cannot start a job thread: ") + e.what());
+    }
+    warn("--jobs: the system started only " + std::to_string(pool.size()) + " of " +
+         std::to_string(workers) + " job threads (" + e.what() + "): running with " +
+         std::to_string(pool.size()) + "; give a lower --jobs");
+  } catch (...) {
+    // Anything else: stop the started workers before they are joined.
+    stop_all = true;
+    mailbox.close();
+    throw;
+  }
+  return pool;
+}
 
 }  // namespace
 
@@ -201,9 +230,8 @@ RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
     mailbox.worker_done();
   };
 
-  std::vector<std::jthread> pool;
-  pool.reserve(workers);
-  for (std::size_t w = 0; w < workers; ++w) pool.emplace_back(work);
+  std::vector<std::jthread> pool = start_workers(workers, work, mailbox, stop_all);
+  const std::size_t started = pool.size();
   const StopOnExit stop_on_exit(mailbox, stop_all);
 
   // This thread is the only writer: it commits whatever finished, in one transaction per batch,
@@ -212,7 +240,7 @@ RunnerSummary run_experiment(const Experiment& experiment, const Model& model,
                             options.progress_interval_s);
   std::vector<RunRecord> batch;
   std::exception_ptr write_error;
-  while (mailbox.take(batch, workers, std::chrono::milliseconds(100))) {
+  while (mailbox.take(batch, started, std::chrono::milliseconds(100))) {
     if (batch.empty() || write_error) {
       batch.clear();
       continue;

@@ -21,7 +21,7 @@ std::string file_stem_from_name(const std::string& name) {
   out.reserve(name.size());
   for (char c : name) out += kept_in_file_name(c) ? c : '_';
   if (out.empty()) return "experiment";
-  if (out.front() == '.') out.front() = '_';
+  if (out.front() == '.' || out.front() == '-') out.front() = '_';
   return out;
 }
 

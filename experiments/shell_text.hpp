@@ -10,7 +10,8 @@ std::string shell_quote(const std::string& text);
 
 // A file name made from `name` that stays in the current folder: letters, digits, '.', '-', '_'
 // and '+' kept, every other byte ('/', spaces, control characters, ...) replaced by '_', and a
-// leading '.' replaced too, so "../escaped" gives "_._escaped" and never "." or "..".
+// leading '.' replaced too, so "../escaped" gives "_._escaped" and never "." or "..". A leading
+// '-' is replaced as well: "-rf" gives "_rf", never a name that sbatch or rm reads as an option.
 std::string file_stem_from_name(const std::string& name);
 
 }  // namespace fspm::experiments

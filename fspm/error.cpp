@@ -1,5 +1,7 @@
 #include "fspm/error.hpp"
 
+#include "fspm/one_line.hpp"
+
 namespace fspm {
 namespace {
 
@@ -28,9 +30,10 @@ std::string bounded(const std::string& text) {
 }  // namespace
 
 Error::Error(const std::string& message, std::string file, int line, int column)
-    : std::runtime_error(format_location(bounded(message), bounded(file), line, column)),
-      message_(bounded(message)),
-      file_(bounded(file)),
+    : std::runtime_error(
+          format_location(bounded(one_line(message)), bounded(one_line(file)), line, column)),
+      message_(bounded(one_line(message))),
+      file_(bounded(one_line(file))),
       line_(line),
       column_(column) {}
 

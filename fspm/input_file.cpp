@@ -33,13 +33,22 @@ std::string size_text(std::uint64_t bytes) {
 // A file descriptor closed on every path out.
 class Descriptor {
  public:
-  explicit Descriptor(const std::string& path) : fd_(::open(path.c_str(), O_RDONLY | O_CLOEXEC)) {
+  explicit Descriptor(const std::string& path) : fd_(::open(checked(path), O_RDONLY | O_CLOEXEC)) {
     if (fd_ < 0 && errno == ENOENT) {
       throw FileNotFoundError("cannot open for reading: " + reason(errno), path);
     }
     if (fd_ < 0) throw IoError("cannot open for reading: " + reason(errno), path);
   }
   ~Descriptor() { ::close(fd_); }
+
+  // The path as the system reads it: a NUL byte (possible from Python or a library call) would
+  // cut it short and open another file, as Python's own open() refuses it.
+  static const char* checked(const std::string& path) {
+    if (path.find('\0') != std::string::npos) {
+      throw ValueError("the file name holds a NUL byte", path);
+    }
+    return path.c_str();
+  }
   Descriptor(const Descriptor&) = delete;
   Descriptor& operator=(const Descriptor&) = delete;
   int get() const { return fd_; }

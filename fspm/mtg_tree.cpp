@@ -63,7 +63,7 @@ Roles feature_roles(const Mtg& mtg) {
 // A length for a message, in whole metres ("1e+300" beyond what a long holds).
 std::string metres_text(double m) {
   char text[32];
-  std::snprintf(text, sizeof(text), "%.0f", m);
+  std::snprintf(text, sizeof(text), std::abs(m) < 1e15 ? "%.0f" : "%.3g", m);
   return text;
 }
 
@@ -173,6 +173,21 @@ class TreeBuilder {
     return mtg_.feature_number(v, *f);
   }
 
+  // A feature that places or sizes an entity: a finite number ("nan" and "inf" read as numbers
+  // would make the whole plant's geometry non-finite), not negative for a size. Refused with
+  // the entity's line, since the tree built from it could not be drawn or written.
+  std::optional<double> geometry(MtgVertex v, const std::optional<std::size_t>& f,
+                                 bool size = false) const {
+    const std::optional<double> n = number(v, f);
+    if (n && (!std::isfinite(*n) || (size && *n < 0.0))) {
+      throw ParseError("feature " + mtg_.features()[*f].name + ": '" +
+                           std::string(mtg_.feature_text(v, *f)) + "', expected a " +
+                           (size ? "finite number >= 0" : "finite number"),
+                       file_, mtg_.line(v));
+    }
+    return n;
+  }
+
   std::vector<FrameEntity> measured_entities() const {
     std::vector<FrameEntity> out(order_.size());
     for (std::size_t i = 0; i < order_.size(); ++i) {
@@ -181,16 +196,16 @@ class TreeBuilder {
       const MtgVertex p = mtg_.parent(v);
       if (p != kNoMtgVertex && position_[p] != kNoFrameParent) e.parent = position_[p];
       e.branch = mtg_.edge(v) == MtgEdge::kBranch;
-      const auto x = number(v, roles_.x), y = number(v, roles_.y), z = number(v, roles_.z);
+      const auto x = geometry(v, roles_.x), y = geometry(v, roles_.y), z = geometry(v, roles_.z);
       if (x && y && z) e.top = Eigen::Vector3d(*x, *y, *z) * length_factor_;
-      if (const auto l = number(v, roles_.length)) e.length_m = *l * length_factor_;
-      if (const auto r = number(v, roles_.radius)) {
+      if (const auto l = geometry(v, roles_.length, true)) e.length_m = *l * length_factor_;
+      if (const auto r = geometry(v, roles_.radius, true)) {
         e.radius_m = *r * diameter_factor_;
-      } else if (const auto d = number(v, roles_.diameter)) {
+      } else if (const auto d = geometry(v, roles_.diameter, true)) {
         e.radius_m = 0.5 * *d * diameter_factor_;
       }
-      e.insertion_deg = number(v, roles_.insertion);
-      e.azimuth_deg = number(v, roles_.azimuth);
+      e.insertion_deg = geometry(v, roles_.insertion);
+      e.azimuth_deg = geometry(v, roles_.azimuth);
     }
     return out;
   }
@@ -294,7 +309,7 @@ TreeGraph TreeBuilder::make_tree(const std::vector<FrameEntity>& e,
     if (const auto o = number(v, roles_.order); o && *o >= 0 && *o <= 65535) {
       d.order = static_cast<std::uint16_t>(*o);
     }
-    if (const auto b = number(v, roles_.birth)) d.birth_time = *b;
+    if (const auto b = geometry(v, roles_.birth)) d.birth_time = *b;
     if (roles_.organ) d.kind = organ_kind(mtg_.feature_text(v, *roles_.organ));
     tree.add_node(parent, d);
   }

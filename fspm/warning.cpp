@@ -1,5 +1,7 @@
 #include "fspm/warning.hpp"
 
+#include "fspm/one_line.hpp"
+
 #include <iostream>
 #include <mutex>
 #include <utility>
@@ -24,7 +26,8 @@ WarningHandler set_warning_handler(WarningHandler h) {
   return std::exchange(handler(), std::move(h));
 }
 
-void warn(const std::string& message) {
+void warn(const std::string& text) {
+  const std::string message = one_line(text);  // a file name's newline cannot split it
   WarningHandler h;
   {
     const std::lock_guard<std::mutex> lock(handler_mutex());

@@ -25,6 +25,14 @@ void write_mesh(const TriangleMesh& mesh, const std::string& path) {
 
 void write_mesh(const InstancedMesh& scene, const std::string& path) {
   const MeshFormat format = mesh_format_for(path);
+  // A tree whose internodes all have zero length (or non-finite geometry, which the mesher
+  // leaves out) gives no surface: an empty file would pass for a result.
+  if (scene.triangle_count() == 0) {
+    throw ValueError(
+        "no triangle to write: the input draws no surface (every internode of zero length or "
+        "radius, or not finite, and no leaf)",
+        path);
+  }
   if (format == MeshFormat::kGlb) {
     write_glb(scene, path);
   } else if (format == MeshFormat::kPvd) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fspm/error.hpp"
+#include "fspm/finite_geometry.hpp"
 #include "fspm/memory_budget.hpp"
 #include "fspm/name_table.hpp"
 #include "fspm/tree_traversal.hpp"
@@ -199,10 +200,23 @@ void plan_foliage(const TreeGraph& tree, const MeshOptions& options, const std::
       plan.leaves.size() * 2 * segs + plan.clusters.size() * per_cluster.triangles;
 }
 
+// A nan radius made the ring count a cast of nan ("mesh would have 18446744065119617028
+// vertices"), a nan or infinite end a tube left out without a word: the geometry is refused,
+// as the tree writers refuse it (fspm/finite_geometry.hpp).
+void require_finite(const TreeGraph& tree) {
+  for (NodeId id = 0; id < tree.size(); ++id) {
+    if (const char* field = non_finite_geometry(tree, id)) {
+      throw ValueError("cannot mesh node " + std::to_string(id) + ": its " + field +
+                       " is nan or infinite (a mesh holds finite geometry only)");
+    }
+  }
+}
+
 Plan make_plan(const TreeGraph& tree, const MeshOptions& options) {
   options.validate();
   Plan plan;
   if (tree.size() == 0) return plan;
+  require_finite(tree);
   bool all_internodes = true;
   const std::vector<char> kept = kept_nodes(tree, options, plan, all_internodes);
   std::vector<NodeId> nearest;

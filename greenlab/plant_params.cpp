@@ -69,6 +69,20 @@ class TableReader {
     return static_cast<int>(v);
   }
 
+  // An expansion time in cycles: at most the longest simulation, since the beta law of
+  // functional.cpp is tabulated over the whole expansion (10^8 cycles would take 800 MB).
+  int get_expansion(std::string_view key) {
+    const int v = get_int(key, 1, 1);
+    if (v > kMaxCycles) {
+      const toml::node& node = *table_.get(key);
+      throw ParseError("key '" + key_name(key) + "' is " + std::to_string(v) +
+                           " cycles, expected at most " + std::to_string(kMaxCycles) +
+                           " (plant.cycles is at most that)",
+                       file_, line_of(node), column_of(node));
+    }
+    return v;
+  }
+
   double get_double(std::string_view key, double fallback, double lo, double hi,
                     const char* expected) {
     const toml::node* node = find(key);
@@ -230,8 +244,8 @@ AgeParams read_age(const toml::table& table, const std::string& path, const std:
   auto& f = a.functional;
   f.leaf_sink = r.get_nonnegative("leaf_sink", 1.0);
   f.internode_sink = r.get_nonnegative("internode_sink", 1.0);
-  f.leaf_expansion = r.get_int("leaf_expansion", 1, 1);
-  f.internode_expansion = r.get_int("internode_expansion", 1, 1);
+  f.leaf_expansion = r.get_expansion("leaf_expansion");
+  f.internode_expansion = r.get_expansion("internode_expansion");
   f.leaf_beta_a = r.get_positive("leaf_beta_a", 2.0);
   f.leaf_beta_b = r.get_positive("leaf_beta_b", 2.0);
   f.internode_beta_a = r.get_positive("internode_beta_a", 2.0);
@@ -286,6 +300,12 @@ void PlantParams::validate() const {
   const int p = static_cast<int>(ages.size());
   for (const auto& a : ages) {
     const std::string where = "age " + std::to_string(a.index);
+    for (const int t : {a.functional.leaf_expansion, a.functional.internode_expansion}) {
+      if (t < 1 || t > kMaxCycles) {
+        throw ValueError(where + ": an expansion of " + std::to_string(t) +
+                         " cycles, expected 1 to " + std::to_string(kMaxCycles));
+      }
+    }
     if (a.next_age != 0 && (a.next_age < a.index || a.next_age > p)) {
       throw ValueError(where + ": next_age " + std::to_string(a.next_age) +
                        " must be 0 or an age in [" + std::to_string(a.index) + ", " +

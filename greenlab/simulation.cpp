@@ -1,10 +1,14 @@
 #include "greenlab/simulation.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <string>
 #include <unordered_map>
 
 #include "fspm/dcheck.hpp"
 #include "fspm/error.hpp"
+#include "fspm/memory_budget.hpp"
 #include "greenlab/expand.hpp"
 #include "greenlab/functional.hpp"
 
@@ -19,6 +23,9 @@ struct Start {
   RecordId first = kNoRecord;
   ApexState state = ApexState::kNone;
 };
+
+// Record ids and axillary offsets are 32-bit (fspm/compressed_tree_graph.hpp), metamer ranks int.
+constexpr std::uint64_t kMaxRecords = std::numeric_limits<std::int32_t>::max();
 
 class Factorizer {
  public:
@@ -72,9 +79,16 @@ class Factorizer {
   // Appends the metamers of one growth unit of age p born in cycle c to the chain first..last.
   void grow_metamers(const AgeParams& a, int p, int c, RecordId& first, RecordId& last) {
     std::vector<RecordId> refs;
-    int n = 0;
-    for (const auto& run : a.units) n += run.count;
-    int rank = 0;  // metamers of the unit so far
+    std::uint64_t metamers = 0;
+    std::uint64_t buds = 0;  // at most: every bud grows
+    for (const auto& run : a.units) {
+      const auto count = static_cast<std::uint64_t>(run.count);
+      metamers += count;
+      for (const auto& b : run.axillary) buds += count * static_cast<std::uint64_t>(b.count);
+    }
+    check_unit_memory(metamers, buds);
+    const auto n = static_cast<int>(metamers);  // below kMaxRecords
+    int rank = 0;                               // metamers of the unit so far
     for (const auto& run : a.units) {
       for (int m = 0; m < run.count; ++m) {
         ++rank;
@@ -99,6 +113,27 @@ class Factorizer {
         last = id;
       }
     }
+  }
+
+  // A growth unit of 10^9 metamers, or of as many buds, would take tens of GiB before anything
+  // else sees the graph: its records and references are checked against the memory budget
+  // before they are added. At its peak the graph is held about three times over (a vector
+  // doubling its capacity, then the renumbered copy of renumber()).
+  void check_unit_memory(std::uint64_t metamers, std::uint64_t buds) const {
+    const double records = static_cast<double>(graph_.size()) + static_cast<double>(metamers);
+    const double refs =
+        static_cast<double>(graph_.axillary_refs().size()) + static_cast<double>(buds);
+    const std::string what = "the compressed plant of " + count_text(records) + " records and " +
+                             count_text(refs) + " axillary references";
+    check_memory(3.0 * (records * sizeof(CompressedRecord) + refs * sizeof(RecordId)), what);
+    if (records > kMaxRecords || refs > kMaxRecords) {
+      throw ValueError(what + ": more than the " + std::to_string(kMaxRecords) +
+                       " a compressed plant holds (unit counts too large)");
+    }
+  }
+
+  static std::string count_text(double n) {
+    return std::to_string(static_cast<std::uint64_t>(std::min(n, 1e19)));
   }
 
   // What follows the last growth unit at age p when the apex leaves it at cycle c.

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -36,13 +37,17 @@ std::vector<double> numbers(std::string_view text, const std::string& file, int 
   for (;;) {
     while (*p == ' ' || *p == '\t') ++p;
     if (!*p) break;
+    // Trailing words such as units ("pixels", "p") end the list; strtod would read "nan",
+    // "inf" (and the start of "nanometres") as numbers.
+    if (std::isalpha(static_cast<unsigned char>(*p))) break;
     char* end = nullptr;
     const double v = std::strtod(p, &end);
-    if (end == p) {
-      // Trailing words such as units ("pixels", "p") end the list.
-      if (std::isalpha(static_cast<unsigned char>(*p))) break;
-      throw ParseError("expected a number", file, line,
-                       column + static_cast<int>(p - buffer.c_str()));
+    const int at = column + static_cast<int>(p - buffer.c_str());
+    if (end == p) throw ParseError("expected a number", file, line, at);
+    if (!std::isfinite(v)) {
+      throw ParseError("expected a finite number, got '" +
+                           std::string(p, static_cast<std::size_t>(end - p)) + "'",
+                       file, line, at);
     }
     out.push_back(v);
     p = end;

@@ -22,7 +22,8 @@ crown::CrownModel reconstruct(const std::string& photo_path,
                               const std::optional<std::string>& mask_path, double height_m,
                               double depth_ratio, double relief, std::uint64_t seed) {
   const crown::Raster photo = crown::read_rgb(photo_path);
-  const crown::Mask mask = mask_path ? crown::read_mask(*mask_path) : crown::auto_mask(photo, {});
+  const crown::Mask mask =
+      mask_path ? crown::read_mask(*mask_path) : crown::auto_mask(photo, {}, photo_path);
   const crown::Mask foliage = crown::foreground(photo, crown::AutoMaskOptions{}.threshold);
   crown::CrownOptions options;
   options.height_m = height_m;

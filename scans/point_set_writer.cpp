@@ -12,6 +12,13 @@
 namespace fspm::scans {
 
 void write_point_set(const PointSet& ps, const std::string& path) {
+  // The point readers refuse an empty file, so an empty one would be a result no one can read.
+  if (ps.points.empty()) {
+    throw ValueError(
+        "no point to write: the point set is empty (a scan of a tree with no visible surface, "
+        "or too low a density)",
+        path);
+  }
   // By kind (fspm/file_kind.hpp); of the XYZ kind's extensions only .xyz, written space-separated.
   const FileKind kind = file_kind_by_extension(path);
   if (kind == FileKind::kPly) {

@@ -3,7 +3,7 @@
 // beyond kPlyFloatLimitM of zero, where a float would keep only centimetres to decimetres) or
 // .xyz (text, one point a line, full precision), chosen by extension; atomic (no half-written
 // file on failure). Throws ValueError for another
-// extension, IoError when writing fails.
+// extension or an empty point set, IoError when writing fails.
 #include <string>
 
 #include "scans/point_set.hpp"

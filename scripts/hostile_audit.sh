@@ -13,7 +13,8 @@
 # where secondary inputs go, a key given twice in each TOML and JSON kind, headers that lie (PLY,
 # PCD, LAS, glTF, GLB, images, tree files), growth past any memory, every writer and standard
 # output on /dev/full, wrong options and every numeric option at 1e308, 1e-320 and 2^63, jobs
-# sharing the memory limit, and signals in mid-run.
+# sharing the memory limit, counts in plant files past any memory, nan and 1e309 in view and MTG
+# files, inputs that draw nothing, control characters in file names, and signals in mid-run.
 #
 # Usage: scripts/hostile_audit.sh [FSPM]   (default build/bin/fspm; env LIMIT_MIB, SLACK_MIB,
 # TIMEOUT, KEEP=1 keeps the scratch folder, VERBOSE=1 prints every case's exit, memory and
@@ -175,7 +176,7 @@ q tree convert "$v/v.nwk" "$v/v.tree"
 q greenlab simulate "$v/plant.toml" -o "$v/v.ctree"
 q scan "$v/v.treeb" -o "$v/v.ply" --density 2000
 q scan "$v/v.treeb" -o "$v/v.xyz" --density 2000
-q mesh "$v/v.nwk" -o "$v/v.glb"
+q mesh "$v/v.mtg" -o "$v/v.glb"  # a Newick without branch lengths draws nothing
 q encode "$v/v.treeb" -o "$v/v.clusters"
 q run "$v/experiment.toml" --out "$v/results"
 { pcd_n=$(grep -c '' "$v/v.xyz")
@@ -418,7 +419,7 @@ for opt in "--memory-limit 0" "--memory-limit -1G" "--memory-limit 1X" "--memory
 done
 run_case option/same-file fail "" "cp $v/v.nwk t.nwk" "tree convert t.nwk t.nwk"
 run_case option/same-output fail "" ":" "stages $v/v.treeb --at 0.5 --skeleton o.tree -o ./o.tree"
-run_case option/missing-output-folder fail "" ":" "mesh $v/v.nwk -o nowhere/m.obj"
+run_case option/missing-output-folder fail "" ":" "mesh $v/v.treeb -o nowhere/m.obj"
 run_case option/encode-text-ext fail "" ":" "encode $v/v.treeb -o out.txt"
 run_case option/no-command fail "" ":" ""
 run_case option/unknown-command fail "" ":" "frobnicate"
@@ -607,6 +608,29 @@ run_case limits/view-ages fail "" ":" "view $v/v.ctree --ages $(seq -s, 1 400) -
 run_case limits/mtg-deep-convert fail out.mtg "printf 'MTG:\nENTITY-CODE\n/I2+.+nnnnnnnPn210011\n' > d.mtg" "tree convert d.mtg out.mtg"
 run_case limits/mtg-deep-interpret fail out.mtg "printf 'derivation length: 17000\nAxiom: A\nA --> F[+A]\n' > d.l" "lsystem interpret d.l -o out.mtg"
 run_case limits/derive-saturated-json ok "" ":" "lsystem derive $v/v.l --compressed --steps 28 --json"
+
+# --- counts in plant files, numbers strtod reads as nan, inputs that draw nothing ---------------
+plant_head='[plant]\ncycles = 5\n[[age]]\nindex = 1\nduration = 5\nnext_age = 0\n'
+run_case plant/unit-count fail "" "printf '${plant_head}units = [ { count = 1000000000 } ]\n' > p.toml" \
+  "greenlab simulate p.toml -o out.ctree"
+run_case plant/bud-count fail "" \
+  "printf '${plant_head}branching_delay = 1\nunits = [ { count = 1, axillary = [ { age = 1, count = 1000000000 } ] } ]\n' > p.toml" \
+  "greenlab simulate p.toml -o out.ctree"
+run_case plant/expansion fail p.toml "printf '${plant_head}units = [ { count = 1 } ]\nleaf_expansion = 100000000\n' > p.toml" \
+  "greenlab simulate p.toml -o out.ctree"
+for val in nan inf 1e309; do
+  run_case "view/angle-$val" fail in.v "printf 'angle increment: $val\n' > in.v" "lsystem interpret $v/v.l --view in.v -o out.glb"
+  run_case "mtg/length-$val" any "" "sed 's|^/P1/U1/E1\t\t\t10|/P1/U1/E1\t\t\t$val|' $v/v.mtg > in.mtg" "tree convert in.mtg out.tree"
+done
+run_case mtg/length-nan-info fail in.mtg "sed 's|^/P1/U1/E1\t\t\t10|/P1/U1/E1\t\t\tnan|' $v/v.mtg > in.mtg" "tree info in.mtg"
+run_case mtg/diameter-negative fail in.mtg "sed 's|^/P1/U1/E1\t\t\t10\t2|/P1/U1/E1\t\t\t10\t-2|' $v/v.mtg > in.mtg" "tree convert in.mtg out.tree"
+run_case draws-nothing/mesh-nwk fail out.glb ":" "mesh $v/v.nwk -o out.glb"
+run_case draws-nothing/interpret-f0 fail out.obj "printf 'Axiom: F(0)\n' > z.l" "lsystem interpret z.l -o out.obj"
+run_case draws-nothing/interpret-inf fail "" "printf 'Axiom: F(1e308*1e308)\n' > z.l" "lsystem interpret z.l -o out.glb"
+run_case draws-nothing/interpret-nan-width fail "" "printf 'Axiom: !(sqrt(-1))F(1)\n' > z.l" "lsystem interpret z.l -o out.ply"
+run_case draws-nothing/scan fail out.xyz "printf 'Axiom: F(0)\n' > z.l; \"$FSPM\" -q lsystem interpret z.l -o z.tree" "scan z.tree -o out.xyz"
+run_case names/newline fail 'no\nsuch' ":" "tree info \$'no\\nsuch.nwk'"
+run_case names/escape fail 'e\x1b' "printf '((' > \$'e\\033[2Jsc.nwk'" "tree info \$'e\\033[2Jsc.nwk'"
 
 # --- signals: stopped cleanly, nothing half written -------------------------------------------
 run_signal signal/grow-term TERM 143 out.tree "grow $v/growth.toml --years 60 -o out.tree"

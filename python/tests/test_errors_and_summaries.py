@@ -97,3 +97,10 @@ def test_distance_has_a_scale():
     assert fspm.distance(a, a)["normalized_distance"] == 0.0
     # A chain of 2 against one of 6, topological: 4 / (2 + 6).
     assert fspm.distance(chain_tree(2, 0.1), chain_tree(6, 0.1))["normalized_distance"] == 0.5
+
+
+def test_a_nul_byte_in_a_path_is_a_value_error(tmp_path):
+    # As Python's open(): the system would read the path only up to the NUL, another file.
+    (tmp_path / "t").write_text("(a,b)c;")
+    with pytest.raises(builtins.ValueError, match="NUL byte"):
+        fspm.read_tree(str(tmp_path / "t") + "\0.nwk")

@@ -57,6 +57,20 @@ TEST(InputFile, SaysWhatIsWrongWithThePath) {
   fs::remove_all(dir);
 }
 
+// A NUL byte in a path (from Python or a library call) would cut it short at the system call
+// and open another file: "ten\0.tree" must not read "ten". Control characters of the name are
+// escaped in the message, which stays one line.
+TEST(InputFile, PathWithANulByteIsRefused) {
+  const fs::path dir = scratch("nul");
+  std::ofstream(dir / "ten") << "0123456789";
+  const std::string path = (dir / "ten").string() + std::string(1, '\0') + ".tree";
+  EXPECT_THROW(read_input_file(path), ValueError);
+  EXPECT_THROW(open_input_file(path), ValueError);
+  EXPECT_EQ(message_of([&] { read_text_input_file(path); }),
+            (dir / "ten").string() + "\\x00.tree: the file name holds a NUL byte");
+  fs::remove_all(dir);
+}
+
 // A text reader refuses a NUL byte where it is read: /dev/zero at once, not after a gigabyte.
 TEST(InputFile, TextReaderRefusesBinaryData) {
   const fs::path dir = scratch("text");

@@ -979,7 +979,7 @@ std::vector<Case> named_input_cases() {
       // Bytes 8-11 of a GLB hold its total length, here 16 bytes short of the file's.
       {"GlbWhoseHeaderLengthLies",
        {},
-       {"mesh " + kTree + " -o {dir}/t.glb"},
+       {"mesh " + kExamples + "/trees/growth_units.mtg -o {dir}/t.glb"},
        "encode {dir}/t.glb -o {dir}/c.clusters",
        1,
        "t.glb: the GLB header gives a length of [0-9]+ bytes, the file has [0-9]+",
@@ -1360,7 +1360,7 @@ std::vector<Case> budget_cases() {
       // allocate the declared length: 2 GB of resident memory before it noticed.
       {"GlbChunkLengthLies",
        {},
-       {"mesh " + kTree + " -o {dir}/v.glb"},
+       {"mesh " + kExamples + "/trees/growth_units.mtg -o {dir}/v.glb"},
        "--memory-limit 64M encode {dir}/bad.glb -o {dir}/o.clusters",
        1,
        "bad.glb: GLB chunk 0 declares 2147483647 bytes, but only [0-9]+ follow its header",
@@ -1389,6 +1389,195 @@ std::vector<Case> budget_cases() {
        "population.min_distance_m 0.000100 m over a terrain of 768.0+ x 768.0+ m: the minimum "
        "distance is too small for the area",
        {"p.glb"}},
+  };
+}
+
+// Cases of a second hostile audit: counts in plant files far past any memory, job threads the
+// system refuses, file names that hold control characters.
+std::vector<Case> audit_cases() {
+  // A 32 x 32 PNG of one green (RGB 40, 120, 40).
+  static constexpr char kUniformPng[] =
+      "\x89\x50\x4e\x47\x0d\x0a\x1a\x0a\x00\x00\x00\x0d\x49\x48\x44\x52"
+      "\x00\x00\x00\x20\x00\x00\x00\x20\x08\x02\x00\x00\x00\xfc\x18\xed"
+      "\xa3\x00\x00\x00\x29\x49\x44\x41\x54\x78\xda\xed\xcd\x31\x0d\x00"
+      "\x00\x08\x03\xb0\xc9\x99\x44\xe4\xa3\x82\x83\xa4\x49\xff\xa6\xd3"
+      "\x53\x11\x08\x04\x02\x81\x40\x20\x10\x08\x04\x5f\x82\x05\x28\x5d"
+      "\x20\x2e\x55\xbc\xe6\x36\x00\x00\x00\x00\x49\x45\x4e\x44\xae\x42"
+      "\x60\x82";
+  // Plants P of internodes E with a length and a diameter; the code starts on line 13.
+  const std::string kMtgWithFeatures =
+      "CODE:\tFORM-A\nCLASSES:\nSYMBOL\tSCALE\tDECOMPOSITION\tINDEXATION\tDEFINITION\n$"
+      "\t0\tFREE\tFREE\tIMPLICIT\nP\t1\tFREE\tFREE\tIMPLICIT\nE\t2\tFREE\tFREE\tIMPLICIT\n"
+      "FEATURES:\nNAME\tTYPE\nLength\tREAL\nDiameter\tREAL\nMTG:\nENTITY-CODE\t\tLength\t"
+      "Diameter\n";
+  const std::string plant = "[plant]\ncycles = 5\n[[age]]\nindex = 1\nduration = 5\nnext_age = 0\n";
+  const std::string limit = "above the memory limit of 256 MiB \\(--memory-limit\\)";
+  return {
+      // 10^9 metamers in one growth unit: 56 GB of records before anything else saw them.
+      {"GreenlabUnitCountOverTheMemoryLimit",
+       {{"p.toml", plant + "units = [ { count = 1000000000 } ]\n"}},
+       {},
+       "--memory-limit 256M greenlab simulate {dir}/p.toml -o {dir}/p.ctree",
+       1,
+       "the compressed plant of 1000000000 records and 0 axillary references needs about "
+       "[0-9.]+ GiB, " +
+           limit,
+       {"p.ctree"},
+       {},
+       100},
+      // One metamer bearing 10^9 buds of its own age: as many axillary references.
+      {"GreenlabBudCountOverTheMemoryLimit",
+       {{"p.toml", plant + "branching_delay = 1\nunits = [ { count = 1, axillary = [ { age = 1, "
+                           "count = 1000000000 } ] } ]\n"}},
+       {},
+       "--memory-limit 256M greenlab simulate {dir}/p.toml -o {dir}/p.ctree",
+       1,
+       "the compressed plant of 1 records and 1000000000 axillary references needs about "
+       "[0-9.]+ GiB, " +
+           limit,
+       {"p.ctree"},
+       {},
+       100},
+      // The beta law is tabulated over the whole expansion: 10^8 cycles took 800 MB, exit 0.
+      {"GreenlabExpansionLongerThanAnySimulation",
+       {{"p.toml", plant + "units = [ { count = 1 } ]\nleaf_expansion = 100000000\n"}},
+       {},
+       "--memory-limit 256M greenlab simulate {dir}/p.toml -o {dir}/p.ctree",
+       1,
+       "p.toml:8:[0-9]+: key 'age\\[0\\].leaf_expansion' is 100000000 cycles, expected at most "
+       "10000",
+       {"p.ctree"},
+       {},
+       100},
+      // Under an address-space limit the system starts about a hundred of 4096 job threads;
+      // the runs go on with those (a refused thread used to leave the started ones waiting for
+      // ever, deaf to SIGTERM). The timeout turns a hang into a failure.
+      {"JobThreadsRefusedBySystem",
+       {{"e.toml", kSynthetic}},
+       {},
+       "run {dir}/e.toml --out {dir}/out --jobs 4096 --replicates 3000",
+       0,
+       "--jobs: the system started only [0-9]+ of 3000 job threads \\(.*\\): running with "
+       "[0-9]+; "
+       "give a lower --jobs(.|\\n)*progress: 3000/3000 runs \\(100%\\), 0 failed",
+       {},
+       "ulimit -s 8192; ulimit -v 1500000; timeout -s KILL 120 "},
+      // "nan" reads as a number: a length of nan made the whole plant's geometry nan (tree info
+      // printed it, exit 0; tree convert blamed the output file).
+      {"MtgLengthNan",
+       {{"h.mtg", kMtgWithFeatures + "/P1/E1\t\t10\t1\n^<E2\t\tnan\t1\n"}},
+       {},
+       "tree info {dir}/h.mtg",
+       1,
+       "h.mtg:14: feature Length: 'nan', expected a finite number >= 0"},
+      {"MtgDiameterNegative",
+       {{"h.mtg", kMtgWithFeatures + "/P1/E1\t\t10\t-1\n"}},
+       {},
+       "tree convert {dir}/h.mtg {dir}/t.tree",
+       1,
+       "h.mtg:13: feature Diameter: '-1', expected a finite number >= 0",
+       {"t.tree"}},
+      // Nothing to mesh: "wrote z.glb (0 vertices, 0 triangles)", exit 0, where a tree file of
+      // the same drawing was refused.
+      {"MeshOfZeroLengthInternodes",
+       {{"z.l", "Axiom: F(0)\n"}},
+       {},
+       "mesh {dir}/z.l -o {dir}/z.glb",
+       1,
+       "z.glb: no triangle to write: the input draws no surface",
+       {"z.glb"}},
+      // An infinite length (1e308 squared) left out by the mesher: an empty OBJ and its MTL.
+      {"InterpretInfiniteLengthToObj",
+       {{"i.l", "derivation length: 1\nAxiom: F(1)\nF(x) --> F(x*1e308*1e308)\n"}},
+       {},
+       "lsystem interpret {dir}/i.l -o {dir}/i.obj",
+       1,
+       "cannot mesh node [0-9]+: its (end|length|direction) is nan or infinite",
+       {"i.obj", "i.mtl"}},
+      // A nan width: "mesh would have 18446744065119617028 vertices ...; raise the edge length".
+      {"InterpretNanWidthToGlb",
+       {{"w.l", "Axiom: !(sqrt(-1))F(1)\n"}},
+       {},
+       "lsystem interpret {dir}/w.l -o {dir}/w.glb",
+       1,
+       "cannot mesh node [0-9]+: its radius is nan or infinite",
+       {"w.glb"}},
+      // A scan that sees nothing wrote an empty file ("0 points", exit 0) that every point
+      // reader refuses.
+      {"ScanOfZeroLengthInternodes",
+       {{"z.l", "Axiom: F(0)\n"}},
+       {"lsystem interpret {dir}/z.l -o {dir}/z.tree"},
+       "scan {dir}/z.tree -o {dir}/z.xyz",
+       1,
+       "z.xyz: no point to write: the point set is empty",
+       {"z.xyz"}},
+      // A photograph of one colour: the message named no file.
+      {"CrownOfAUniformPhotoNamesIt",
+       {{"g.png", std::string(kUniformPng, sizeof kUniformPng - 1)}},
+       {},
+       "crown {dir}/g.png -o {dir}/out",
+       1,
+       "g.png: no crown found: nothing differs from the sky and ground beside it",
+       {"out"}},
+      // A view file's numbers go through strtod, which reads 1e309 as inf and "nan" as nan: the
+      // error came from the tree writer, naming the output, or an empty mesh was written.
+      {"ViewFileAngleOverflowing",
+       {{"t.v", "angle increment: 1e309\n"}},
+       {},
+       "lsystem interpret " + kExamples + "/lsystems/abop_1_24a.l --view {dir}/t.v -o {dir}/t.tree",
+       1,
+       "t.v:1:[0-9]+: expected a finite number, got '1e309'",
+       {"t.tree"}},
+      {"ViewFileLineWidthNan",
+       {{"t.v", "initial line width: nan\n"}},
+       {},
+       "lsystem interpret " + kExamples + "/lsystems/abop_1_24a.l --view {dir}/t.v -o {dir}/t.glb",
+       1,
+       "t.v:1:[0-9]+: expected a line width",
+       {"t.glb"}},
+      // An experiment named "-rf" wrote "-rf.slurm" and printed "sbatch '-rf.slurm'", which
+      // sbatch (or rm) reads as options however it is quoted.
+      {"SlurmScriptOfANameWithALeadingDash",
+       {{"e.toml", "[experiment]\nname = \"-rf\"\n[model]\nkind = \"synthetic\"\n"}},
+       {},
+       "run e.toml --out o --emit-slurm",
+       0,
+       "",
+       {"-rf.slurm", "-rf-results"},
+       "cd {dir} && "},
+      // A render size within 16384 x 16384 but above the budget: 2.8 GB, exit 0.
+      {"RenderSizeOverTheMemoryLimit",
+       {},
+       {},
+       "--memory-limit 256M render " + kExamples + "/trees/open_a12.treeb -o {dir}/r.png --size " +
+           "8192x8192",
+       1,
+       "a render of 8192x8192 needs about 2.5 GiB, " + limit,
+       {"r.png"}},
+      // Its pipe-model power overflowed: the tree writer refused an infinite radius, naming the
+      // output.
+      {"GrowthTipRadiusOverflowNamesItsKey",
+       {{"g.toml", "years = 3\ntip_radius_m = 1e300\n"}},
+       {},
+       "grow {dir}/g.toml -o {dir}/t.tree",
+       1,
+       "g.toml:2:[0-9]+: tip_radius_m: expected a positive length up to 1 m",
+       {"t.tree"}},
+      // A newline in a file name stays inside the one line of the message.
+      {"NewlineInAFileName",
+       {},
+       {},
+       "tree info '{dir}/no\nsuch.nwk'",
+       1,
+       "^fspm: error: [^\\n]*/no\\\\nsuch\\.nwk: cannot open for reading: No such file or "
+       "directory\\n$"},
+      // An escape sequence in a file name is printed as text, never sent to the terminal.
+      {"EscapeSequenceInAFileName",
+       {{"e\x1b[2Jsc.nwk", "((a,b)c"}},
+       {},
+       "tree info '{dir}/e\x1b[2Jsc.nwk'",
+       1,
+       "^fspm: error: [^\\n\\x1b]*/e\\\\x1b\\[2Jsc\\.nwk:1:[0-9]+: [^\\n\\x1b]*\\n$"},
   };
 }
 
@@ -1598,6 +1787,7 @@ INSTANTIATE_TEST_SUITE_P(NamedInput, Robustness, ::testing::ValuesIn(named_input
                          case_name);
 INSTANTIATE_TEST_SUITE_P(Images, Robustness, ::testing::ValuesIn(image_cases()), case_name);
 INSTANTIATE_TEST_SUITE_P(Budget, Robustness, ::testing::ValuesIn(budget_cases()), case_name);
+INSTANTIATE_TEST_SUITE_P(Audit, Robustness, ::testing::ValuesIn(audit_cases()), case_name);
 INSTANTIATE_TEST_SUITE_P(Options, GlobalOption, ::testing::ValuesIn(spellings()), spelling_name);
 
 }  // namespace
