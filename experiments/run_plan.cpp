@@ -28,15 +28,14 @@ ParameterValue map_unit(const SampledParameter& p, double u) {
 
 }  // namespace
 
-std::vector<std::vector<ParameterValue>> draw_samples(const Sampling& sampling) {
+std::vector<ParameterValue> draw_samples(const Sampling& sampling) {
   const std::size_t n = sampling.samples;
   const std::size_t d = sampling.parameters.size();
   std::mt19937_64 rng(sampling.seed);
-  std::vector<std::vector<double>> unit(n, std::vector<double>(d));
+  // Flat, sample-major: one block for millions of samples, not a vector each.
+  std::vector<double> unit(n * d);
   if (sampling.method == SamplingMethod::kRandom) {
-    for (auto& row : unit) {
-      for (double& u : row) u = uniform01(rng);
-    }
+    for (double& u : unit) u = uniform01(rng);
   } else {
     std::vector<std::size_t> strata(n);
     for (std::size_t j = 0; j < d; ++j) {
@@ -47,15 +46,15 @@ std::vector<std::vector<ParameterValue>> draw_samples(const Sampling& sampling) 
         std::swap(strata[i - 1], strata[std::min(k, i - 1)]);
       }
       for (std::size_t i = 0; i < n; ++i) {
-        unit[i][j] = (static_cast<double>(strata[i]) + uniform01(rng)) / static_cast<double>(n);
+        unit[i * d + j] =
+            (static_cast<double>(strata[i]) + uniform01(rng)) / static_cast<double>(n);
       }
     }
   }
-  std::vector<std::vector<ParameterValue>> values(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j = 0; j < d; ++j) {
-      values[i].push_back(map_unit(sampling.parameters[j], unit[i][j]));
-    }
+  std::vector<ParameterValue> values;
+  values.reserve(n * d);
+  for (std::size_t i = 0; i < n * d; ++i) {
+    values.push_back(map_unit(sampling.parameters[i % d], unit[i]));
   }
   return values;
 }
@@ -74,7 +73,7 @@ RunPlan::RunPlan(const Experiment& experiment)
                      static_cast<double>(sampling.samples) * 2 * sizeof(std::size_t),
                  "sampling " + std::to_string(sampling.samples) + " points", experiment.path);
     samples_ = draw_samples(sampling);
-    per_grid_ = samples_.size();
+    per_grid_ = sampling.samples;
     for (const SampledParameter& p : sampling.parameters) sampled_names_.push_back(p.name);
   }
   points_ = experiment.grid_points() * per_grid_;
@@ -91,8 +90,9 @@ ParameterSet RunPlan::point_parameters(std::size_t point) const {
     rest /= axis.values.size();
   }
   if (!samples_.empty()) {
-    const std::vector<ParameterValue>& sample = samples_[point % per_grid_];
-    for (std::size_t j = 0; j < sampled_names_.size(); ++j) p[sampled_names_[j]] = sample[j];
+    const std::size_t d = sampled_names_.size();
+    const ParameterValue* sample = samples_.data() + (point % per_grid_) * d;
+    for (std::size_t j = 0; j < d; ++j) p[sampled_names_[j]] = sample[j];
   }
   return p;
 }
@@ -100,8 +100,7 @@ ParameterSet RunPlan::point_parameters(std::size_t point) const {
 std::size_t RunPlan::memory_bytes() const {
   std::size_t bytes = sizeof(RunPlan);
   for (const SweepAxis& axis : sweep_) bytes += axis.values.capacity() * sizeof(ParameterValue);
-  for (const auto& row : samples_) bytes += row.capacity() * sizeof(ParameterValue);
-  return bytes + samples_.capacity() * sizeof(samples_.front());
+  return bytes + samples_.capacity() * sizeof(ParameterValue);
 }
 
 RunSpec RunPlan::run(std::size_t index) const {

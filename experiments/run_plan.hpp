@@ -22,10 +22,11 @@ struct RunSpec {
   ParameterSet parameters;  // fixed, swept and sampled
 };
 
-// The sampled values, samples x parameters, in the order of Sampling::parameters. Random: each
-// value independent; Latin hypercube (McKay, Beckman & Conover 1979): per parameter, one value in
-// each of the `samples` equal-probability strata, strata shuffled independently per parameter.
-std::vector<std::vector<ParameterValue>> draw_samples(const Sampling& sampling);
+// The sampled values, samples x parameters, sample-major: sample i's value of parameter j (in the
+// order of Sampling::parameters) at i * parameters + j. Random: each value independent; Latin
+// hypercube (McKay, Beckman & Conover 1979): per parameter, one value in each of the `samples`
+// equal-probability strata, strata shuffled independently per parameter.
+std::vector<ParameterValue> draw_samples(const Sampling& sampling);
 
 class RunPlan {
  public:
@@ -50,7 +51,7 @@ class RunPlan {
   ParameterSet fixed_;
   std::vector<SweepAxis> sweep_;
   std::vector<std::string> sampled_names_;
-  std::vector<std::vector<ParameterValue>> samples_;  // samples x sampled_names_
+  std::vector<ParameterValue> samples_;  // draw_samples: samples x sampled_names_, sample-major
 };
 
 }  // namespace fspm::experiments

@@ -1378,6 +1378,19 @@ std::vector<Case> budget_cases() {
        {},
        {},
        100},
+      // Four million Latin-hypercube samples within the limit: the plan holds them in one block
+      // (a vector per sample took 534 MB where the estimate said 240 MiB).
+      {"SamplingWithinTheMemoryLimit",
+       {{"e.toml",
+         "[experiment]\nname = \"s\"\n[model]\nkind = \"synthetic\"\n[sampling]\n"
+         "samples = 3956852\n[sampling.parameters]\n\"x.u\" = { uniform = [0, 1] }\n"}},
+       {},
+       "--memory-limit 256M run {dir}/e.toml --emit-slurm --slurm-file {dir}/s.slurm --out {dir}/r",
+       0,
+       "",
+       {},
+       {},
+       300},
       {"PopulationDistanceTooSmallNamesItsKey",
        {{"p.json", terrain +
                        ", \"population\": {\"min_distance_m\": 0.0001, \"classes\": "
