@@ -295,9 +295,12 @@ glm::vec4 bounding_sphere(const std::vector<float>& v, std::size_t stride) {
   return glm::vec4(c, r);
 }
 
+// A vertex as uploaded: position, normal and colour (RGBA), interleaved.
+constexpr std::size_t kFloatsPerVertex = 10;
+
 GpuMesh upload_raw(const std::vector<float>& v, const std::vector<std::uint32_t>& idx,
                    std::size_t opaque_indices, const std::vector<glm::mat4>& models) {
-  constexpr GLsizei kStride = 10 * sizeof(float);
+  constexpr GLsizei kStride = kFloatsPerVertex * sizeof(float);
   GpuMesh g;
   glGenVertexArrays(1, &g.vao);
   glBindVertexArray(g.vao);
@@ -404,7 +407,7 @@ BlendedPart blended_part(const TriangleMesh& mesh, const std::vector<glm::vec4>&
 GpuMesh upload(const TriangleMesh& mesh, const std::vector<glm::mat4>& models,
                const std::vector<glm::vec4>& colors) {
   std::vector<float> v;
-  v.reserve(mesh.vertex_count() * 10);
+  v.reserve(mesh.vertex_count() * kFloatsPerVertex);
   for (std::size_t i = 0; i < mesh.vertex_count(); ++i) {
     const auto& p = mesh.positions[i];
     const auto& n = mesh.normals[i];
@@ -715,8 +718,8 @@ struct GpuScene {
   float tessellation_distance = 1.0f, max_level = 1.0f;
 };
 
-// The steps' meshes as held, and as uploaded (upload_raw): 10 floats a vertex (position, normal,
-// colour), 3 indices a triangle and a matrix an instance, which the driver keeps beside the meshes
+// The steps' meshes as held, and as uploaded (upload_raw): kFloatsPerVertex floats a vertex, 3
+// indices a triangle and a matrix an instance, which the driver keeps beside the meshes
 // (a software renderer in system memory). Both must fit the memory limit before the upload.
 void check_upload_memory(const std::vector<StepRef>& steps, const std::vector<StepRef>& coarse) {
   double held = 0.0, uploaded = 0.0;
@@ -729,7 +732,7 @@ void check_upload_memory(const std::vector<StepRef>& steps, const std::vector<St
           held +=
               TriangleMesh::bytes_for(m.vertex_count(), m.triangle_count(), m.attributes.size());
         }
-        uploaded += static_cast<double>(m.vertex_count()) * 10.0 * sizeof(float) +
+        uploaded += static_cast<double>(m.vertex_count() * kFloatsPerVertex) * sizeof(float) +
                     static_cast<double>(m.triangle_count()) * 3.0 * sizeof(std::uint32_t) +
                     static_cast<double>(step.models[k].size()) * sizeof(glm::mat4);
       }
@@ -1132,16 +1135,16 @@ void sway_blended(GpuStep& g, const TriangleMesh& mesh, const WindBuffer& w) {
 void sway(GpuStep& g, WindBuffer& w, const ViewerWind& wind, double t_s, double strength) {
   const GpuMesh& m = g.meshes.front();
   const std::size_t n = wind.mesh.vertex_count();
-  const auto bytes = static_cast<GLsizeiptr>(n * 10 * sizeof(float));
+  const auto bytes = static_cast<GLsizeiptr>(n * kFloatsPerVertex * sizeof(float));
   glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
   if (w.vbo != m.vbo) {
-    w.interleaved.resize(n * 10);
+    w.interleaved.resize(n * kFloatsPerVertex);
     glGetBufferSubData(GL_ARRAY_BUFFER, 0, bytes, w.interleaved.data());
     w.vbo = m.vbo;
   }
   wind.pose(t_s, strength, w.positions, w.normals);
   for (std::size_t i = 0; i < n; ++i) {
-    float* v = w.interleaved.data() + 10 * i;  // position, normal, colour (upload_raw)
+    float* v = w.interleaved.data() + kFloatsPerVertex * i;  // as upload_raw lays it out
     std::copy_n(w.positions[i].data(), 3, v);
     std::copy_n(w.normals[i].data(), 3, v + 3);
   }
